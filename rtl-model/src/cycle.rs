@@ -1,0 +1,429 @@
+//! The `cycle` model: the array clock by clock, bit-serial and bit-sliced.
+//!
+//! Every register is a set of bit-planes: plane `k` of register A holds bit `k` of A for every
+//! pixel, 64 pixels to a `u64`. One clock of the hardware moves every pixel by one bit: TRANSD
+//! writes bit `k` of the register the last select code targets, DEPGEN delivers bit `k` of the
+//! new plane into A, and the comparator takes bit `k` of both operands. Here one clock for 64
+//! pixels is a handful of word operations.
+//!
+//! Pixels never talk to each other, so the order in which lanes are visited is free: the array
+//! is swept in chunks of rows, each chunk through all N_D clocks of a window before the next,
+//! which keeps a chunk's bit-planes in cache. Every clock is still simulated for every pixel;
+//! the clock count is the number of clocks a window takes, DEPGEN's fill included.
+//!
+//! Layout: a row occupies `ceil(width/64)` words (lanes past the width are padding and are
+//! never read out); plane `k` of a register is the slice `[k·words .. (k+1)·words]`.
+
+use std::ops::Range;
+
+use crate::array::{Array, Sequencer};
+use crate::comparator::{BitRole, Comparator, FlagBits};
+use crate::depgen::{pixel_add, DepGen, LineBits};
+use crate::probe::Recorder;
+use crate::program::{ActionMasks, Decide, Op, ProgramError, Reg, Transfer, Window};
+use crate::select::sop::Var;
+use crate::select::EquationSet;
+use crate::state::{ArchState, ArrayConfig, Pixel};
+
+/// Words of pixels swept through a window before moving on (about 64, whole rows).
+const CHUNK_WORDS: usize = 64;
+
+/// The array as bit-planes.
+pub struct CycleArray {
+    cfg: ArrayConfig,
+    set: EquationSet,
+    depgen: DepGen,
+    /// Words per row and per plane.
+    wpr: usize,
+    nw: usize,
+    /// Depth registers A, F, B, C: N_D planes each.
+    depth: [Vec<u64>; 4],
+    /// Colour registers D, E, G: `colour_bits` planes each.
+    colour: [Vec<u64>; 3],
+    /// Latched select code: S1 (or S3) and S2 (or S4).
+    sel: [Vec<u64>; 2],
+    /// Comparator flip-flops.
+    cmp: Cmp,
+    /// The pixel adder's carry.
+    carry: Vec<u64>,
+    /// Clipping stack, `stack_depth` planes.
+    stack: Vec<u64>,
+    seq: Sequencer,
+    ops: usize,
+    probe: Option<Recorder>,
+}
+
+#[derive(Clone, Debug)]
+struct Cmp {
+    lt: Vec<u64>,
+    eq: Vec<u64>,
+    ovf: Vec<u64>,
+    sign: Vec<u64>,
+}
+
+impl Cmp {
+    fn get(&self, w: usize) -> Comparator {
+        Comparator {
+            lt: self.lt[w],
+            eq: self.eq[w],
+            ovf: self.ovf[w],
+            sign: self.sign[w],
+        }
+    }
+}
+
+/// What one window does, in the order a clock does it.
+struct Plan<'a> {
+    transfer: Option<Transfer>,
+    lines: Option<LineBits>,
+    colour: Option<u32>,
+    compare: Option<(Reg, Reg)>,
+    decide: Option<&'a Decide>,
+    /// Clock number of bit 0 of the window.
+    start: u64,
+    position: u8,
+}
+
+fn bcast(v: u64, k: usize) -> u64 {
+    0u64.wrapping_sub(v >> k & 1)
+}
+
+impl CycleArray {
+    pub fn new(cfg: ArrayConfig, set: EquationSet) -> CycleArray {
+        let wpr = cfg.width.div_ceil(64);
+        let nw = wpr * cfg.height;
+        let nd = cfg.fmt.bits() as usize;
+        let ones = |planes: usize, bits: u64| -> Vec<u64> {
+            (0..planes)
+                .flat_map(|k| std::iter::repeat_n(bcast(bits, k), nw))
+                .collect()
+        };
+        let max = cfg.fmt.max_word() as u64;
+        let cb = cfg.colour_bits as usize;
+        CycleArray {
+            depgen: DepGen::new(cfg.width, cfg.height, cfg.fmt),
+            wpr,
+            nw,
+            depth: std::array::from_fn(|_| ones(nd, max)),
+            colour: std::array::from_fn(|_| ones(cb, 0)),
+            sel: [vec![0; nw], vec![!0; nw]],
+            cmp: Cmp {
+                lt: vec![0; nw],
+                eq: vec![!0; nw],
+                ovf: vec![0; nw],
+                sign: vec![0; nw],
+            },
+            carry: vec![0; nw],
+            stack: vec![0; cfg.stack_depth * nw],
+            seq: Sequencer::default(),
+            ops: 0,
+            probe: None,
+            cfg,
+            set,
+        }
+    }
+
+    fn nd(&self) -> usize {
+        self.cfg.fmt.bits() as usize
+    }
+
+    fn chunk_rows(&self) -> usize {
+        (CHUNK_WORDS / self.wpr).max(1)
+    }
+
+    fn window(&mut self, w: &Window) {
+        let clocks = self.seq.window_clocks(&self.cfg, w);
+        let plan = Plan {
+            transfer: self.seq.pending.take(),
+            lines: w.stream.map(|(c, _)| self.depgen.stream(&c)),
+            colour: w.stream.and_then(|s| s.1),
+            compare: Some((w.lhs, w.rhs)),
+            decide: Some(&w.decide),
+            start: self.seq.cycles + clocks - self.nd() as u64,
+            position: w.position,
+        };
+        self.sweep(&plan);
+        self.seq.cycles += clocks;
+        if matches!(w.decide, Decide::Push(_)) {
+            self.seq.sp += 1;
+        }
+        self.seq.pending = w.transfer;
+    }
+
+    /// Run a window's clocks over the whole array, chunk by chunk.
+    fn sweep(&mut self, plan: &Plan) {
+        let rows_per = self.chunk_rows();
+        let mut masks = Vec::with_capacity(rows_per * self.wpr);
+        for y0 in (0..self.cfg.height).step_by(rows_per) {
+            let rows = y0..(y0 + rows_per).min(self.cfg.height);
+            let words = rows.start * self.wpr..rows.end * self.wpr;
+            if let Some(t) = &plan.transfer {
+                masks.clear();
+                masks.extend(
+                    words
+                        .clone()
+                        .map(|i| t.decode.masks(self.sel[0][i], self.sel[1][i])),
+                );
+            }
+            if plan.compare.is_some() {
+                for i in words.clone() {
+                    let c = Comparator::RESET;
+                    (
+                        self.cmp.lt[i],
+                        self.cmp.eq[i],
+                        self.cmp.ovf[i],
+                        self.cmp.sign[i],
+                    ) = (c.lt, c.eq, c.ovf, c.sign);
+                }
+            }
+            self.carry[words.clone()].fill(0);
+            for k in 0..self.nd() {
+                if let Some(t) = &plan.transfer {
+                    self.transfer_bit(t, k, words.clone(), &masks);
+                }
+                if let Some(lines) = &plan.lines {
+                    self.stream_bit(k, lines, plan.colour, rows.clone());
+                }
+                if let Some((lhs, rhs)) = plan.compare {
+                    self.compare_bit(k, lhs, rhs, words.clone());
+                }
+                self.sample(plan, k, rows.clone());
+            }
+            if let Some(d) = plan.decide {
+                self.decide(d, words);
+            }
+        }
+        let nd = self.nd();
+        if let Some(rec) = &mut self.probe {
+            for k in 0..nd {
+                rec.global(plan.start + k as u64 + 1, plan.position, k as u32);
+            }
+        }
+    }
+
+    /// TRANSD (and TRANSC) for bit `k`: the latched code picks source, keep, 0 or 1.
+    fn transfer_bit(&mut self, t: &Transfer, k: usize, words: Range<usize>, masks: &[ActionMasks]) {
+        let nw = self.nw;
+        let one = if k == self.cfg.fmt.sign_bit() as usize {
+            0
+        } else {
+            !0
+        };
+        let plane = k * nw + words.start..k * nw + words.end;
+        let [dst, src] = self
+            .depth
+            .get_disjoint_mut([t.dst as usize, t.src as usize])
+            .expect("transfer source and destination differ");
+        for ((d, s), m) in dst[plane.clone()]
+            .iter_mut()
+            .zip(&src[plane.clone()])
+            .zip(masks)
+        {
+            *d = (m.put_src & s) | (m.keep & *d) | (m.put1 & one);
+        }
+        if let Some((cd, cs)) = t.colour {
+            if k < self.cfg.colour_bits as usize {
+                let int = bcast(t.interior as u64, k);
+                let [dst, src] = self
+                    .colour
+                    .get_disjoint_mut([cd as usize, cs as usize])
+                    .expect("colour source and destination differ");
+                for ((d, s), m) in dst[plane.clone()].iter_mut().zip(&src[plane]).zip(masks) {
+                    *d = (m.put_src & s) | (m.keep & *d) | (m.put0 & int);
+                }
+            }
+        }
+    }
+
+    /// DEPGEN's bit `k` into A (and MEM D's colour bit into D).
+    fn stream_bit(&mut self, k: usize, lines: &LineBits, colour: Option<u32>, rows: Range<usize>) {
+        let (nw, wpr) = (self.nw, self.wpr);
+        let a = &mut self.depth[Reg::A as usize][k * nw..(k + 1) * nw];
+        let cols = &lines.col[k * wpr..(k + 1) * wpr];
+        for y in rows.clone() {
+            let row = lines.row_mask(k, y);
+            let (a, carry) = (
+                &mut a[y * wpr..(y + 1) * wpr],
+                &mut self.carry[y * wpr..(y + 1) * wpr],
+            );
+            for ((a, cy), col) in a.iter_mut().zip(carry.iter_mut()).zip(cols) {
+                *a = pixel_add(*col, row, cy);
+            }
+        }
+        if let Some(c) = colour.filter(|_| k < self.cfg.colour_bits as usize) {
+            let d = &mut self.colour[0][k * nw..(k + 1) * nw];
+            d[rows.start * wpr..rows.end * wpr].fill(bcast(c as u64, k));
+        }
+    }
+
+    /// The comparator's clock `k`.
+    fn compare_bit(&mut self, k: usize, lhs: Reg, rhs: Reg, words: Range<usize>) {
+        let role = BitRole::of(&self.cfg.fmt, k as u32);
+        let nw = self.nw;
+        let a = &self.depth[lhs as usize][k * nw..(k + 1) * nw];
+        let r = &self.depth[rhs as usize][k * nw..(k + 1) * nw];
+        let c = &mut self.cmp;
+        for i in words {
+            let mut cmp = c.get(i);
+            cmp.step(a[i], r[i], role);
+            (c.lt[i], c.eq[i], c.ovf[i], c.sign[i]) = (cmp.lt, cmp.eq, cmp.ovf, cmp.sign);
+        }
+    }
+
+    /// SGENE at the end of a window: latch the code or push LL.
+    fn decide(&mut self, d: &Decide, words: Range<usize>) {
+        let sp = self.seq.sp;
+        for i in words {
+            let f = self.cmp.get(i).flags();
+            let mut vars = [0u64; 10];
+            vars[Var::N as usize] = f.n;
+            vars[Var::J as usize] = f.j;
+            vars[Var::T as usize] = f.t;
+            vars[Var::M as usize] = f.m;
+            match d {
+                Decide::Latch(hi, lo) => {
+                    self.sel[0][i] = hi.eval(&vars);
+                    self.sel[1][i] = lo.eval(&vars);
+                }
+                Decide::Push(ll) => self.stack[sp * self.nw + i] = ll.eval(&vars),
+            }
+        }
+    }
+
+    /// Postfix operators and the clipping result: one clock, whole planes at once.
+    fn stack_op(&mut self, op: &Op) {
+        let (sp, nw) = (self.seq.sp, self.nw);
+        let level = |l: usize| l * nw..(l + 1) * nw;
+        match op {
+            Op::ClipAnd | Op::ClipOr => {
+                let (lo, hi) = self.stack.split_at_mut((sp - 1) * nw);
+                let (under, top) = (&mut lo[level(sp - 2)], &hi[..nw]);
+                for (u, t) in under.iter_mut().zip(top) {
+                    *u = if matches!(op, Op::ClipAnd) {
+                        *u & t
+                    } else {
+                        *u | t
+                    };
+                }
+            }
+            Op::ClipNot => self.stack[level(sp - 1)].iter_mut().for_each(|v| *v = !*v),
+            Op::ClipApply => {
+                for (i, ll) in self.stack[level(sp - 1)].iter().enumerate() {
+                    self.sel[0][i] = !ll;
+                    self.sel[1][i] = !0;
+                }
+                self.seq.pending = Some(Transfer::clip_apply());
+            }
+            _ => {}
+        }
+        let (pop, push) = crate::program::stack_effect(op);
+        self.seq.sp = sp - pop + push;
+        self.seq.cycles += 1;
+        self.sample_all_probes();
+    }
+
+    /// One pixel's registers gathered from the bit-planes.
+    pub fn pixel(&self, x: usize, y: usize) -> Pixel {
+        let (w, lane) = (y * self.wpr + x / 64, x % 64);
+        let bit = |v: &[u64], k: usize| v[k * self.nw + w] >> lane & 1;
+        let word = |v: &[u64], n: usize| (0..n).fold(0u64, |acc, k| acc | bit(v, k) << k);
+        let nd = self.nd();
+        let f = self.cmp.get(w).flags();
+        let cb = self.cfg.colour_bits as usize;
+        Pixel {
+            depth: std::array::from_fn(|r| self.cfg.fmt.wrap(word(&self.depth[r], nd) as i64)),
+            colour: std::array::from_fn(|r| word(&self.colour[r], cb) as u32),
+            sel: (bit(&self.sel[0], 0) == 1, bit(&self.sel[1], 0) == 1),
+            flags: FlagBits {
+                n: f.n >> lane & 1 == 1,
+                j: f.j >> lane & 1 == 1,
+                t: f.t >> lane & 1 == 1,
+                m: f.m >> lane & 1 == 1,
+            },
+            stack: word(&self.stack, self.cfg.stack_depth),
+        }
+    }
+
+    fn sample(&mut self, plan: &Plan, k: usize, rows: Range<usize>) {
+        let Some(rec) = &self.probe else { return };
+        let hits: Vec<(usize, usize, usize)> = rec
+            .probes()
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| rows.contains(&p.1))
+            .map(|(i, p)| (i, p.0, p.1))
+            .collect();
+        let t = plan.start + k as u64 + 1;
+        for (i, x, y) in hits {
+            let px = self.pixel(x, y);
+            self.probe.as_mut().unwrap().sample(t, i, px);
+        }
+    }
+
+    fn sample_all_probes(&mut self) {
+        let Some(rec) = &self.probe else { return };
+        let t = self.seq.cycles;
+        let pts: Vec<(usize, usize)> = rec.probes().to_vec();
+        let pxs: Vec<Pixel> = pts.iter().map(|&(x, y)| self.pixel(x, y)).collect();
+        let rec = self.probe.as_mut().unwrap();
+        for (i, px) in pxs.into_iter().enumerate() {
+            rec.sample(t, i, px);
+        }
+        rec.global(t, 1, 0);
+    }
+}
+
+impl Array for CycleArray {
+    fn config(&self) -> &ArrayConfig {
+        &self.cfg
+    }
+
+    fn step(&mut self, op: &Op) -> Result<(), ProgramError> {
+        self.seq.admit(op, self.ops, self.cfg.stack_depth)?;
+        self.ops += 1;
+        match Window::of(op, &self.set) {
+            Some(w) => self.window(&w),
+            None => self.stack_op(op),
+        }
+        Ok(())
+    }
+
+    fn finish(&mut self) {
+        let Some(t) = self.seq.pending.take() else {
+            return;
+        };
+        let plan = Plan {
+            transfer: Some(t),
+            lines: None,
+            colour: None,
+            compare: None,
+            decide: None,
+            start: self.seq.cycles,
+            position: 0,
+        };
+        self.sweep(&plan);
+        self.seq.cycles += self.nd() as u64;
+    }
+
+    fn cycles(&self) -> u64 {
+        self.seq.cycles
+    }
+
+    fn attach_probe(&mut self, rec: Recorder) {
+        self.probe = Some(rec);
+    }
+
+    fn take_probe(&mut self) -> Option<Recorder> {
+        self.probe.take()
+    }
+
+    fn state(&self) -> ArchState {
+        let (w, h) = (self.cfg.width, self.cfg.height);
+        ArchState {
+            width: w,
+            height: h,
+            pixels: (0..w * h).map(|i| self.pixel(i % w, i / w)).collect(),
+            sp: self.seq.sp,
+        }
+    }
+}

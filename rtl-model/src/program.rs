@@ -1,0 +1,300 @@
+//! The controller's view: what the array is told to do, one operation at a time, and what the
+//! stage selector (§2.4) connects for each.
+//!
+//! An [`Op`] that streams (a plane, a clipping plane, closing an object, composing it) takes one
+//! window of N_D clocks. During a window the comparator sees the A-side word against a stored
+//! register; at its end SGENE latches a 2-bit select code per pixel. That code is carried out
+//! by TRANSD/TRANSC during the *next* window, bit k at clock k, in lockstep with the next
+//! comparison (Figure 2.11: "the selector has decided … while the next plane is ready to be
+//! downloaded"). [`Window::of`] is the one place that maps an operation to this wiring; both
+//! models follow it.
+
+use serde::Serialize;
+
+use crate::select::sop::{Sop, Var};
+use crate::select::{EquationSet, Signal};
+
+/// Plane coefficients as raw depth words: value at pixel (x, y) = `c0 + x·dx + y·dy`, modulo
+/// 2^N_D (eq. 2.1 for Z, eq. 2.2 for K). Each is an N_D-bit two's-complement word with F
+/// fraction bits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Coeffs {
+    pub c0: i64,
+    pub dx: i64,
+    pub dy: i64,
+}
+
+/// One instruction of the array.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub enum Op {
+    /// A plane of an object: stage position 1 when front or perpendicular (H or Y), else 2.
+    /// `interior` is the object's internal colour, written by Put 0.
+    Plane {
+        coeffs: Coeffs,
+        colour: u32,
+        interior: u32,
+        l: bool,
+        s: bool,
+        h: bool,
+        y: bool,
+    },
+    /// Stage position 3: compare B with F and keep the visible part of the object in F.
+    Close {
+        l: bool,
+    },
+    /// A clipping plane (§2.3.4): LL of A against F is pushed on every pixel's stack.
+    ClipPlane {
+        coeffs: Coeffs,
+        h: bool,
+        y: bool,
+        x: bool,
+    },
+    /// Postfix operators on the clipping stack, one clock each.
+    ClipAnd,
+    ClipOr,
+    ClipNot,
+    /// Pop LL' (one clock): the next window keeps F where LL' = 1 and puts 1 where LL' = 0.
+    ClipApply,
+    /// Stage position 4 (§2.3.5): compose F (colour E) into C (colour G); P = 1 initialises C.
+    Compose {
+        p: bool,
+    },
+}
+
+/// Depth registers of a pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum Reg {
+    A = 0,
+    F = 1,
+    B = 2,
+    C = 3,
+}
+
+/// Colour registers of a pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum CReg {
+    D = 0,
+    E = 1,
+    G = 2,
+}
+
+/// How a latched 2-bit code is read by TRANSD/TRANSC.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Decode {
+    /// Positions 1-3 and the clipping result: (S1,S2) 00 Put A, 10 Put 0, 01 Keep, 11 Put 1.
+    Sel,
+    /// Position 4: (S3,S4) 00 Put 1, 01 Put F, 1- Keep C.
+    Compose,
+}
+
+/// Per-pixel action masks a code decodes to (each a bit per lane).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ActionMasks {
+    pub put_src: u64,
+    pub put0: u64,
+    pub keep: u64,
+    pub put1: u64,
+}
+
+impl Decode {
+    /// Decode the latched code (`hi` = S1 or S3, `lo` = S2 or S4) of 64 lanes.
+    #[inline(always)]
+    pub fn masks(self, hi: u64, lo: u64) -> ActionMasks {
+        match self {
+            Decode::Sel => ActionMasks {
+                put_src: !hi & !lo,
+                put0: hi & !lo,
+                keep: !hi & lo,
+                put1: hi & lo,
+            },
+            Decode::Compose => ActionMasks {
+                put_src: !hi & lo,
+                put0: 0,
+                keep: hi,
+                put1: !hi & !lo,
+            },
+        }
+    }
+}
+
+/// What the latched code will do to the registers in the next window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Transfer {
+    pub dst: Reg,
+    pub src: Reg,
+    /// Colour register written and its source (none for back planes).
+    pub colour: Option<(CReg, CReg)>,
+    pub decode: Decode,
+    /// Colour that Put 0 writes (the object's internal colour).
+    pub interior: u32,
+}
+
+/// What SGENE produces at the end of a window.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Decide {
+    /// Latch (hi, lo) as the select code, equations already specialized to the externals.
+    Latch(Sop, Sop),
+    /// Push LL on the clipping stack.
+    Push(Sop),
+}
+
+/// The wiring of one streaming window (the stage selector position and what flows where).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Window {
+    /// Stage selector position 1-4.
+    pub position: u8,
+    /// Coefficients DEPGEN streams into A, and the colour MEM D loads into D, if any.
+    pub stream: Option<(Coeffs, Option<u32>)>,
+    /// Comparator operands: the A side and the stored register.
+    pub lhs: Reg,
+    pub rhs: Reg,
+    pub decide: Decide,
+    /// What the code latched at the end of this window does in the next one.
+    pub transfer: Option<Transfer>,
+}
+
+fn spec(set: &EquationSet, s: Signal, ext: &[(Var, bool)]) -> Sop {
+    let fixed = ext.iter().fold(0, |m, (v, _)| m | v.bit());
+    let value = ext.iter().fold(0, |m, (v, b)| m | (*b as u32) * v.bit());
+    set.sop(s).specialize(fixed, value)
+}
+
+impl Window {
+    /// The window of a streaming op, or `None` for the one-clock stack operations.
+    pub fn of(op: &Op, set: &EquationSet) -> Option<Window> {
+        use Signal::*;
+        let sel =
+            |hi, lo, ext: &[(Var, bool)]| Decide::Latch(spec(set, hi, ext), spec(set, lo, ext));
+        Some(match *op {
+            Op::Plane {
+                coeffs,
+                colour,
+                interior,
+                l,
+                s,
+                h,
+                y,
+            } if h || y => Window {
+                position: 1,
+                stream: Some((coeffs, Some(colour))),
+                lhs: Reg::A,
+                rhs: Reg::F,
+                decide: sel(FrontS1, FrontS2, &[(Var::L, l), (Var::S, s), (Var::Y, y)]),
+                transfer: Some(Transfer {
+                    dst: Reg::F,
+                    src: Reg::A,
+                    colour: Some((CReg::E, CReg::D)),
+                    decode: Decode::Sel,
+                    interior,
+                }),
+            },
+            Op::Plane { coeffs, l, s, .. } => Window {
+                position: 2,
+                stream: Some((coeffs, None)),
+                lhs: Reg::A,
+                rhs: Reg::B,
+                decide: sel(BackS1, BackS2, &[(Var::L, l), (Var::S, s)]),
+                transfer: Some(Transfer {
+                    dst: Reg::B,
+                    src: Reg::A,
+                    colour: None,
+                    decode: Decode::Sel,
+                    interior: 0,
+                }),
+            },
+            Op::Close { l } => Window {
+                position: 3,
+                stream: None,
+                lhs: Reg::B,
+                rhs: Reg::F,
+                decide: sel(CloseS1, CloseS2, &[(Var::L, l)]),
+                transfer: Some(Transfer::clip_apply()),
+            },
+            Op::ClipPlane { coeffs, h, y, x } => Window {
+                position: 1,
+                stream: Some((coeffs, None)),
+                lhs: Reg::A,
+                rhs: Reg::F,
+                decide: Decide::Push(spec(set, LL, &[(Var::H, h), (Var::Y, y), (Var::X, x)])),
+                transfer: None,
+            },
+            Op::Compose { p } => Window {
+                position: 4,
+                stream: None,
+                lhs: Reg::F,
+                rhs: Reg::C,
+                decide: sel(S3, S4, &[(Var::P, p)]),
+                transfer: Some(Transfer {
+                    dst: Reg::C,
+                    src: Reg::F,
+                    colour: Some((CReg::G, CReg::E)),
+                    decode: Decode::Compose,
+                    interior: 0,
+                }),
+            },
+            Op::ClipAnd | Op::ClipOr | Op::ClipNot | Op::ClipApply => return None,
+        })
+    }
+}
+
+impl Transfer {
+    /// Keep F or put 1 into it (stage 3 and the clipping result), colour kept or background.
+    pub fn clip_apply() -> Transfer {
+        Transfer {
+            dst: Reg::F,
+            src: Reg::B,
+            colour: Some((CReg::E, CReg::D)),
+            decode: Decode::Sel,
+            interior: 0,
+        }
+    }
+}
+
+/// The stack effect of an operation: (pops, pushes).
+pub fn stack_effect(op: &Op) -> (usize, usize) {
+    match op {
+        Op::ClipPlane { .. } => (0, 1),
+        Op::ClipAnd | Op::ClipOr => (2, 1),
+        Op::ClipNot => (1, 1),
+        Op::ClipApply => (1, 0),
+        _ => (0, 0),
+    }
+}
+
+/// Why a program cannot run on an array.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ProgramError {
+    StackOverflow {
+        op: usize,
+        depth: usize,
+    },
+    StackUnderflow {
+        op: usize,
+    },
+    /// `ClipApply` right after a window whose select code has not been carried out yet.
+    LatchBusy {
+        op: usize,
+    },
+}
+
+impl std::fmt::Display for ProgramError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ProgramError::StackOverflow { op, depth } => write!(
+                f,
+                "operation {op} needs more than the {depth} levels of the clipping stack \
+                 (raise --stack-depth)"
+            ),
+            ProgramError::StackUnderflow { op } => {
+                write!(f, "operation {op} pops an empty clipping stack")
+            }
+            ProgramError::LatchBusy { op } => write!(
+                f,
+                "operation {op} (apply clipping) must follow a clipping plane: the select code \
+                 of the window before it has not been carried out"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ProgramError {}

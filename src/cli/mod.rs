@@ -1,0 +1,62 @@
+//! Subcommands. Each returns its exit code, or an error message (exit status 2).
+
+mod gen_vectors;
+mod render;
+mod verify_select;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use rtl_model::Equations;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "csgpix",
+    version,
+    about = "Cycle-accurate simulator of the 2D CSG pixel-processor array (2005 thesis, Ch. 2)",
+    after_help = "Examples:\n  \
+        csgpix render vectors/thesis/cube.dl -o cube.png\n  \
+        csgpix verify-select --equations printed\n  \
+        csgpix gen-vectors --check"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub cmd: Cmd,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Cmd {
+    /// Write the golden select-logic vectors (Espresso PLA) and the derived equations.
+    GenVectors(gen_vectors::Args),
+    /// Check an equation set against every row of the golden vectors.
+    VerifySelect(verify_select::Args),
+    /// Run display lists through the array and write the image.
+    Render(render::Args),
+}
+
+/// Which equation set SGENE uses.
+#[derive(ValueEnum, Clone, Copy, Debug, Default)]
+pub enum EquationsArg {
+    /// Minimized from the golden vectors (default).
+    #[default]
+    Derived,
+    /// Exactly the thesis text, faults included.
+    Printed,
+}
+
+impl From<EquationsArg> for Equations {
+    fn from(e: EquationsArg) -> Equations {
+        match e {
+            EquationsArg::Derived => Equations::Derived,
+            EquationsArg::Printed => Equations::Printed,
+        }
+    }
+}
+
+pub fn run(cli: Cli) -> Result<ExitCode, String> {
+    match cli.cmd {
+        Cmd::GenVectors(a) => gen_vectors::run(a),
+        Cmd::VerifySelect(a) => verify_select::run(a),
+        Cmd::Render(a) => render::run(a),
+    }
+}

@@ -1,0 +1,96 @@
+//! `csgpix verify-select`: every equation on every golden vector row.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use rtl_model::select::pla::Pla;
+use rtl_model::select::verify::{verify_table, SignalReport};
+use rtl_model::select::{Table, GOLDEN};
+use rtl_model::Equations;
+
+use super::EquationsArg;
+
+#[derive(clap::Args, Debug)]
+#[command(
+    after_help = "Exit status: 0 when every care row matches, 1 on any mismatch, 2 on bad input.\n\n\
+    Examples:\n  csgpix verify-select\n  csgpix verify-select --equations printed --json"
+)]
+pub struct Args {
+    /// Equation set to check.
+    #[arg(long, value_enum, default_value_t)]
+    equations: EquationsArg,
+    /// Read the PLA files from this directory instead of the built-in golden vectors.
+    #[arg(long)]
+    vectors: Option<PathBuf>,
+    /// Print a JSON array of {signal, rows, mismatches}.
+    #[arg(long)]
+    json: bool,
+}
+
+fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> Result<Pla, String> {
+    let (name, text) = match dir {
+        Some(d) => {
+            let p = d.join(format!("{}.pla", t.name()));
+            let text = std::fs::read_to_string(&p).map_err(|e| format!("{}: {e}", p.display()))?;
+            (p.display().to_string(), text)
+        }
+        None => (
+            format!("vectors/select/{}.pla", t.name()),
+            builtin.to_string(),
+        ),
+    };
+    Pla::parse(&text).map_err(|e| format!("{name}:{e}"))
+}
+
+pub fn run(a: Args) -> Result<ExitCode, String> {
+    let eq: Equations = a.equations.into();
+    let set = eq.set();
+    let mut reports: Vec<SignalReport> = vec![];
+    for (t, text) in GOLDEN {
+        let pla = load(&a.vectors, t, text)?;
+        reports.extend(verify_table(&set, t, &pla).map_err(|e| e.to_string())?);
+    }
+    let bad: usize = reports.iter().map(|r| r.mismatches.len()).sum();
+    if a.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&reports).map_err(|e| e.to_string())?
+        );
+    } else {
+        print_text(eq, &reports);
+    }
+    Ok(if bad == 0 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+fn print_text(eq: Equations, reports: &[SignalReport]) {
+    println!("equation set: {}", eq.name());
+    for r in reports {
+        let verdict = if r.mismatches.is_empty() {
+            "ok"
+        } else {
+            "MISMATCH"
+        };
+        println!(
+            "{:<10} {:>4} rows  {:>3} mismatches  {verdict}",
+            r.signal,
+            r.rows,
+            r.mismatches.len()
+        );
+        for m in &r.mismatches {
+            println!(
+                "    {}  expected {} got {}   [{}]",
+                m.inputs, m.expected as u8, m.got as u8, m.case
+            );
+        }
+    }
+    let bad: usize = reports.iter().map(|r| r.mismatches.len()).sum();
+    let rows: usize = reports.iter().map(|r| r.rows).sum();
+    println!(
+        "{} signals, {rows} rows checked, {bad} mismatches",
+        reports.len()
+    );
+}

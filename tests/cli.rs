@@ -1,0 +1,171 @@
+//! The `csgpix` binary end to end.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn csgpix(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run csgpix")
+}
+
+fn tmp() -> tempfile::TempDir {
+    tempfile::tempdir().unwrap()
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+#[test]
+fn checked_in_vectors_are_what_the_generator_writes() {
+    let out = csgpix(&["gen-vectors", "--check"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+}
+
+#[test]
+fn derived_equations_pass_the_verifier() {
+    let out = csgpix(&["verify-select", "--json"]);
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let sigs = v.as_array().unwrap();
+    assert_eq!(sigs.len(), 9);
+    for s in sigs {
+        assert!(s["rows"].as_u64().unwrap() > 0);
+        assert_eq!(s["mismatches"].as_array().unwrap().len(), 0, "{s}");
+    }
+}
+
+#[test]
+fn printed_equations_fail_the_verifier_with_rows_named() {
+    let out = csgpix(&["verify-select", "--equations", "printed", "--json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let bad: Vec<&serde_json::Value> = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| !s["mismatches"].as_array().unwrap().is_empty())
+        .collect();
+    assert!(!bad.is_empty());
+    let m = &bad[0]["mismatches"][0];
+    assert!(m["inputs"].as_str().unwrap().contains("N="));
+    assert_ne!(m["expected"], m["got"]);
+}
+
+#[test]
+fn verify_select_reports_a_broken_vector_file_with_line_and_column() {
+    let d = tmp();
+    for t in ["front", "back", "close", "clip", "second"] {
+        let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("vectors/select/{t}.pla"));
+        std::fs::copy(src, d.path().join(format!("{t}.pla"))).unwrap();
+    }
+    let p = d.path().join("back.pla");
+    let text = std::fs::read_to_string(&p)
+        .unwrap()
+        .replacen("\n000000 ", "\n0x0000 ", 1);
+    std::fs::write(&p, text).unwrap();
+    let out = csgpix(&["verify-select", "--vectors", s(d.path())]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("back.pla:") && err.contains(":2:"), "{err}");
+}
+
+#[test]
+fn render_cube_in_both_models_gives_the_same_image_and_cycles() {
+    let d = tmp();
+    let (a, b) = (d.path().join("c.png"), d.path().join("w.png"));
+    let mut reports = vec![];
+    for (model, out) in [("cycle", &a), ("word", &b)] {
+        let o = csgpix(&[
+            "render",
+            "vectors/thesis/cube.dl",
+            "--model",
+            model,
+            "--json",
+            "-o",
+            s(out),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        reports.push(serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap());
+    }
+    let (ia, ib) = (
+        image::open(&a).unwrap().to_rgb8(),
+        image::open(&b).unwrap().to_rgb8(),
+    );
+    assert_eq!(ia, ib);
+    assert_eq!(reports[0]["cycles"], reports[1]["cycles"]);
+    // The cube covers part of the window and leaves background elsewhere.
+    let lit = ia.pixels().filter(|p| p.0 != [0, 0, 0]).count();
+    assert!(lit > 1000 && lit < 250 * 250, "lit pixels {lit}");
+}
+
+#[test]
+fn bad_display_list_gives_file_line_col_exit_2_and_no_output() {
+    let d = tmp();
+    let bad = d.path().join("bad.dl");
+    std::fs::write(&bad, "1 2 3 4\n1 0 x\n0 0 0 1234\n").unwrap();
+    let out_png = d.path().join("out.png");
+    let o = csgpix(&["render", s(&bad), "-o", s(&out_png)]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("bad.dl:2:5"), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(!out_png.exists());
+}
+
+#[test]
+fn vcd_probe_records_the_first_plane_arriving_in_a() {
+    let d = tmp();
+    let vcd_path = d.path().join("cube.vcd");
+    let (x, y) = (120usize, 100usize);
+    let o = csgpix(&[
+        "render",
+        "vectors/thesis/cube.dl",
+        "--vcd",
+        s(&vcd_path),
+        "--probe",
+        &format!("{x},{y};3,4"),
+        "-o",
+        s(&d.path().join("c.png")),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let f = std::fs::File::open(&vcd_path).unwrap();
+    let mut parser = vcd::Parser::new(std::io::BufReader::new(f));
+    let header = parser.parse_header().unwrap();
+    let a = header
+        .find_var(&[format!("px_{x}_{y}"), "A".to_string()])
+        .unwrap()
+        .code;
+    // The first plane of the cube (§5.2): 46.06 - 1.0·x + 1.18·y, coefficients rounded to
+    // 1/1024. DEPGEN's fill on a 250x250 array is 8 + 1 clocks; A holds the whole word after
+    // the 32nd clock of the first window.
+    let q = |v: f64| (v * 1024.0).round() as i64;
+    let want = q(46.06) + x as i64 * q(-1.0) + y as i64 * q(1.18);
+    let t_full = 9 + 32;
+    let mut now = 0u64;
+    let mut changes = vec![];
+    for cmd in parser {
+        match cmd.unwrap() {
+            vcd::Command::Timestamp(t) => now = t,
+            vcd::Command::ChangeVector(id, v) if id == a && now <= t_full => {
+                let raw = v
+                    .iter()
+                    .fold(0i64, |acc, b| acc << 1 | (b == vcd::Value::V1) as i64);
+                changes.push((now, (raw << 32) >> 32));
+            }
+            _ => {}
+        }
+    }
+    // Bit-serial arrival: A changes clock by clock, starting after DEPGEN's fill, and holds
+    // the plane's depth once the window's last bit is in.
+    assert!(changes.len() > 2, "{changes:?}");
+    assert!(changes[0].0 > 9, "{changes:?}");
+    assert_eq!(changes.last().unwrap().1, want, "{changes:?}");
+}
