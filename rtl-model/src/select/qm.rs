@@ -122,14 +122,6 @@ fn and<'a>(a: &'a [u64], b: &'a [u64]) -> impl Iterator<Item = u64> + 'a {
     a.iter().zip(b).map(|(x, y)| x & y)
 }
 
-/// Whether `a ∩ within ⊆ b`.
-fn subset_within(a: &[u64], b: &[u64], within: &[u64]) -> bool {
-    a.iter()
-        .zip(b)
-        .zip(within)
-        .all(|((x, y), w)| x & w & !y == 0)
-}
-
 fn count(set: &[u64]) -> u32 {
     set.iter().map(|w| w.count_ones()).sum()
 }
@@ -153,12 +145,45 @@ impl BitRows {
         &self.data[i * self.words..(i + 1) * self.words]
     }
 
+    fn row_mut(&mut self, i: usize) -> &mut [u64] {
+        &mut self.data[i * self.words..(i + 1) * self.words]
+    }
+
     fn insert(&mut self, i: usize, bit: usize) {
         self.data[i * self.words + bit / 64] |= 1 << (bit % 64);
     }
 }
 
 pub static NODES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// The first `n` rows of a [`BitRows`], with summaries that reject most subset tests fast.
+struct Subsets<'a> {
+    sets: &'a BitRows,
+    count: Vec<u32>,
+    /// All words of a set ORed together.
+    fold: Vec<u64>,
+}
+
+impl Subsets<'_> {
+    fn new(sets: &BitRows, n: usize) -> Subsets<'_> {
+        Subsets {
+            sets,
+            count: (0..n).map(|i| count(sets.row(i))).collect(),
+            fold: (0..n)
+                .map(|i| sets.row(i).iter().fold(0, |f, w| f | w))
+                .collect(),
+        }
+    }
+
+    /// Whether set `a` is a subset of set `b`.
+    fn subset(&self, a: usize, b: usize) -> bool {
+        self.count[a] <= self.count[b]
+            && self.fold[a] & !self.fold[b] == 0
+            && (self.sets.row(a).iter())
+                .zip(self.sets.row(b))
+                .all(|(x, y)| x & !y == 0)
+    }
+}
 
 /// Subgradient steps per lower bound.
 const BOUND_STEPS: usize = 30;
@@ -416,19 +441,26 @@ impl<'a> Search<'a> {
     /// A row covering no more open columns than another row, at no lower weight, can be
     /// swapped for that row in any cover: remove it. Returns whether any row was removed.
     fn drop_dominated_rows(&self, live: &mut Vec<usize>, open: &[u64]) -> bool {
-        let (covers, weights) = (&self.table.covers, self.weights);
+        let mut covers = BitRows::new(live.len(), self.table.columns);
+        for (i, &r) in live.iter().enumerate() {
+            let row = and(self.table.covers.row(r), open);
+            covers.row_mut(i).iter_mut().zip(row).for_each(|(d, w)| *d = w);
+        }
+        let sets = Subsets::new(&covers, live.len());
+        let w = |i: usize| self.weights[live[i]];
         let dominated = |a: usize| {
-            let (ca, wa) = (covers.row(a), weights[a]);
-            and(ca, open).all(|w| w == 0)
-                || live.iter().any(|&b| {
-                    let (cb, wb) = (covers.row(b), weights[b]);
+            sets.count[a] == 0
+                || (0..live.len()).any(|b| {
                     b != a
-                        && wb <= wa
-                        && subset_within(ca, cb, open)
-                        && (b < a || wb < wa || !subset_within(cb, ca, open))
+                        && w(b) <= w(a)
+                        && sets.subset(a, b)
+                        && (b < a || w(b) < w(a) || sets.count[a] != sets.count[b])
                 })
         };
-        let kept: Vec<usize> = live.iter().copied().filter(|&a| !dominated(a)).collect();
+        let kept: Vec<usize> = (0..live.len())
+            .filter(|&a| !dominated(a))
+            .map(|a| live[a])
+            .collect();
         let changed = kept.len() != live.len();
         *live = kept;
         changed
@@ -533,13 +565,13 @@ impl<'a> Search<'a> {
 /// is: stop tracking it. Returns whether any column was dropped.
 fn drop_dominated_columns(view: &View, open: &mut [u64]) -> bool {
     let n = view.cols.len();
-    let subset = |a: usize, b: usize| {
-        let (ra, rb) = (view.rows.row(a), view.rows.row(b));
-        ra.iter().zip(rb).all(|(x, y)| x & !y == 0)
-    };
+    let sets = Subsets::new(&view.rows, n);
     let mut changed = false;
     for a in 0..n {
-        if (0..n).any(|b| b != a && subset(b, a) && (b < a || !subset(a, b))) {
+        let dominated = (0..n).any(|b| {
+            b != a && sets.subset(b, a) && (b < a || sets.count[a] != sets.count[b])
+        });
+        if dominated {
             let j = view.cols[a];
             open[j / 64] &= !(1 << (j % 64));
             changed = true;
