@@ -57,7 +57,7 @@ pub struct Args {
     vcd: Option<PathBuf>,
     /// Pixels to probe: "x,y;x,y".
     #[arg(long, value_parser = parse_probes, requires = "vcd")]
-    probe: Option<Vec<(usize, usize)>>,
+    probe: Option<Probes>,
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
@@ -84,8 +84,13 @@ pub fn parse_word(s: &str) -> Result<WordFormat, String> {
     WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| e.to_string())
 }
 
-pub fn parse_probes(s: &str) -> Result<Vec<(usize, usize)>, String> {
-    s.split(';')
+/// Probed pixels, as given to `--probe`.
+#[derive(Clone, Debug)]
+pub struct Probes(pub Vec<(usize, usize)>);
+
+pub fn parse_probes(s: &str) -> Result<Probes, String> {
+    let v = s
+        .split(';')
         .filter(|p| !p.trim().is_empty())
         .map(|p| {
             let (x, y) = p
@@ -94,7 +99,11 @@ pub fn parse_probes(s: &str) -> Result<Vec<(usize, usize)>, String> {
             let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
             Ok((n(x)?, n(y)?))
         })
-        .collect()
+        .collect::<Result<Vec<_>, String>>()?;
+    if v.is_empty() {
+        return Err("expected at least one x,y".into());
+    }
+    Ok(Probes(v))
 }
 
 #[derive(Serialize)]
@@ -135,7 +144,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let eq: Equations = a.equations.into();
     let mut arr = build(a.model, cfg, eq);
     if let Some(p) = &a.probe {
-        arr.attach_probe(Recorder::new(cfg, p.clone())?);
+        arr.attach_probe(Recorder::new(cfg, p.0.clone())?);
     }
     let t0 = Instant::now();
     arr.run(&ops).map_err(|e| e.to_string())?;
