@@ -155,7 +155,7 @@ pub struct Window {
 
 fn spec(set: &EquationSet, s: Signal, ext: &[(Var, bool)]) -> Sop {
     let fixed = ext.iter().fold(0, |m, (v, _)| m | v.bit());
-    let value = ext.iter().fold(0, |m, (v, b)| m | (*b as u32) * v.bit());
+    let value = ext.iter().fold(0, |m, (v, b)| m | ((*b as u32) * v.bit()));
     set.sop(s).specialize(fixed, value)
 }
 

@@ -5,12 +5,12 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::ValueEnum;
-use csgpix::compile::scene_ops;
+use csgpix::compile::object_ops;
 use csgpix::display_list::DisplayList;
 use csgpix::output::write_atomic;
 use csgpix::palette::rgb;
 use rtl_model::probe::Recorder;
-use rtl_model::program::CReg;
+use rtl_model::program::{CReg, Op};
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray, WordFormat};
 use serde::Serialize;
 
@@ -139,8 +139,14 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     cfg.fmt = a.word;
     cfg.stack_depth = a.stack_depth;
     cfg.check()?;
-    let objects = scene_ops(&lists, &cfg.fmt, cfg.colour_bits).map_err(|e| format!("{}", e))?;
-    let ops: Vec<_> = objects.into_iter().flatten().collect();
+    let mut ops = vec![];
+    for (dl, path) in lists.iter().zip(&a.scenes) {
+        ops.extend(
+            object_ops(dl, &cfg.fmt, cfg.colour_bits)
+                .map_err(|e| format!("{}: {e}", path.display()))?,
+        );
+        ops.push(Op::Compose { p: false });
+    }
     let eq: Equations = a.equations.into();
     let mut arr = build(a.model, cfg, eq);
     if let Some(p) = &a.probe {

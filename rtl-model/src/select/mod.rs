@@ -197,7 +197,7 @@ pub const PRINTED_TEXT: &str = include_str!("printed.eqn");
 pub const DERIVED_TEXT: &str = include_str!("../../../vectors/select/derived.eqn");
 
 /// Undefined letters in the printed text and what they are read as (docs/select-logic.md).
-pub const PRINTED_ALIASES: &[(char, Var)] = &[('K', Var::T)];
+pub const PRINTED_ALIASES: &[(char, Var)] = &[('K', Var::N)];
 
 impl EquationSet {
     /// Exactly the thesis text. It has no equation for stage position 3 (closing the object),
@@ -300,6 +300,30 @@ fn parse_partial(text: &str, alias: &[(char, Var)]) -> Result<[Option<Sop>; 9], 
     Ok(set)
 }
 
+/// The checked-in golden vectors, `vectors/select/*.pla`, as built into the binary.
+pub const GOLDEN: [(Table, &str); 5] = [
+    (
+        Table::Front,
+        include_str!("../../../vectors/select/front.pla"),
+    ),
+    (
+        Table::Back,
+        include_str!("../../../vectors/select/back.pla"),
+    ),
+    (
+        Table::Close,
+        include_str!("../../../vectors/select/close.pla"),
+    ),
+    (
+        Table::Clip,
+        include_str!("../../../vectors/select/clip.pla"),
+    ),
+    (
+        Table::Second,
+        include_str!("../../../vectors/select/second.pla"),
+    ),
+];
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -327,27 +351,3 @@ mod tests {
         assert!(e.msg.contains("no equation for front.S2"));
     }
 }
-
-/// The checked-in golden vectors, `vectors/select/*.pla`, as built into the binary.
-pub const GOLDEN: [(Table, &str); 5] = [
-    (
-        Table::Front,
-        include_str!("../../../vectors/select/front.pla"),
-    ),
-    (
-        Table::Back,
-        include_str!("../../../vectors/select/back.pla"),
-    ),
-    (
-        Table::Close,
-        include_str!("../../../vectors/select/close.pla"),
-    ),
-    (
-        Table::Clip,
-        include_str!("../../../vectors/select/clip.pla"),
-    ),
-    (
-        Table::Second,
-        include_str!("../../../vectors/select/second.pla"),
-    ),
-];

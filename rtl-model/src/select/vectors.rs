@@ -291,7 +291,7 @@ impl TruthTable {
             };
             if why != unreachable {
                 care += 1;
-                ties += outs.iter().any(|o| *o == Out::DontCare) as usize;
+                ties += outs.contains(&Out::DontCare) as usize;
             }
             let comments = if why != last {
                 vec![why.to_string()]
