@@ -12,11 +12,7 @@ use rtl_model::{Array, ArrayConfig, CycleArray, Equations, Op, WordArray};
 fn program(cfg: &ArrayConfig) -> Vec<Op> {
     let dl = DisplayList::parse(include_str!("../vectors/thesis/cube.dl"), "cube.dl").unwrap();
     let lists = vec![dl; 4];
-    scene_ops(&lists, &cfg.fmt, cfg.colour_bits)
-        .unwrap()
-        .into_iter()
-        .flatten()
-        .collect()
+    scene_ops(&lists, &cfg.fmt, cfg.colour_bits).unwrap()
 }
 
 fn streamed_windows(ops: &[Op]) -> u64 {

@@ -16,28 +16,54 @@ use crate::display_list::DisplayList;
 /// Code 7 is light grey in the palette (docs/formats.md).
 pub const INTERIOR_COLOUR: u32 = 7;
 
-/// Quantize one plane's coefficients to raw depth words.
-pub fn coeffs(fmt: &WordFormat, z0: f64, dzx: f64, dzy: f64) -> Result<Coeffs, String> {
-    let q = |v: f64, what: &str| fmt.quantize(v).map_err(|e| format!("{what}: {e}"));
+/// A plane the array cannot take, located by plane index (0-based) and field (0-based: Z0,
+/// dZx, dZy, colour) so the caller can point at the file position.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CompileError {
+    pub plane: usize,
+    pub field: usize,
+    pub msg: String,
+}
+
+impl std::fmt::Display for CompileError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "plane {}: {}", self.plane + 1, self.msg)
+    }
+}
+
+/// Quantize one plane's coefficients to raw depth words; `Err` names the field (0, 1, 2).
+pub fn coeffs(fmt: &WordFormat, z0: f64, dzx: f64, dzy: f64) -> Result<Coeffs, (usize, String)> {
+    let names = ["Z0", "dZx", "dZy"];
+    let q = |i: usize, v: f64| {
+        fmt.quantize(v)
+            .map_err(|e| (i, format!("{}: {e}", names[i])))
+    };
     Ok(Coeffs {
-        c0: q(z0, "Z0")?,
-        dx: q(dzx, "dZx")?,
-        dy: q(dzy, "dZy")?,
+        c0: q(0, z0)?,
+        dx: q(1, dzx)?,
+        dy: q(2, dzy)?,
     })
 }
 
 /// The operations that draw one object into F (not yet composed).
-pub fn object_ops(dl: &DisplayList, fmt: &WordFormat, colour_bits: u32) -> Result<Vec<Op>, String> {
+pub fn object_ops(
+    dl: &DisplayList,
+    fmt: &WordFormat,
+    colour_bits: u32,
+) -> Result<Vec<Op>, CompileError> {
     let max_colour = (1u64 << colour_bits) - 1;
     let (mut front_seen, mut back_seen) = (false, false);
     let mut ops = Vec::with_capacity(dl.planes.len() + 1);
     for (i, p) in dl.planes.iter().enumerate() {
         if p.colour as u64 > max_colour {
-            return Err(format!(
-                "plane {}: colour {} does not fit {colour_bits}-bit colour registers",
-                i + 1,
-                p.colour
-            ));
+            return Err(CompileError {
+                plane: i,
+                field: 3,
+                msg: format!(
+                    "colour {} does not fit {colour_bits}-bit colour registers",
+                    p.colour
+                ),
+            });
         }
         let front = p.h || p.y;
         let seen = if front {
@@ -48,7 +74,11 @@ pub fn object_ops(dl: &DisplayList, fmt: &WordFormat, colour_bits: u32) -> Resul
         let s = !*seen;
         *seen = true;
         ops.push(Op::Plane {
-            coeffs: coeffs(fmt, p.z0, p.dzx, p.dzy).map_err(|e| format!("plane {}: {e}", i + 1))?,
+            coeffs: coeffs(fmt, p.z0, p.dzx, p.dzy).map_err(|(field, msg)| CompileError {
+                plane: i,
+                field,
+                msg,
+            })?,
             colour: p.colour,
             interior: INTERIOR_COLOUR,
             l: p.l,
@@ -63,18 +93,17 @@ pub fn object_ops(dl: &DisplayList, fmt: &WordFormat, colour_bits: u32) -> Resul
     Ok(ops)
 }
 
-/// Draw every object and compose each into the scene (second stage, P = 0).
+/// Draw every object and compose each into the scene (second stage, P = 0). An error names
+/// the list it came from.
 pub fn scene_ops(
     lists: &[DisplayList],
     fmt: &WordFormat,
     colour_bits: u32,
-) -> Result<Vec<Vec<Op>>, String> {
-    lists
-        .iter()
-        .map(|dl| {
-            let mut ops = object_ops(dl, fmt, colour_bits)?;
-            ops.push(Op::Compose { p: false });
-            Ok(ops)
-        })
-        .collect()
+) -> Result<Vec<Op>, (usize, CompileError)> {
+    let mut ops = vec![];
+    for (i, dl) in lists.iter().enumerate() {
+        ops.extend(object_ops(dl, fmt, colour_bits).map_err(|e| (i, e))?);
+        ops.push(Op::Compose { p: false });
+    }
+    Ok(ops)
 }

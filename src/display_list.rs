@@ -76,6 +76,30 @@ impl Display for ParseError {
 
 impl std::error::Error for ParseError {}
 
+/// 1-based (line, column) of field `field` (0-based) of the first row of plane `plane`
+/// (0-based) in display-list text: each plane is two data rows, blank and `#` lines skipped.
+pub fn field_position(text: &str, plane: usize, field: usize) -> Option<(usize, usize)> {
+    let (line_no, line) = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+        .nth(2 * plane)?;
+    let mut in_field = false;
+    let mut n = 0;
+    for (col, ch) in line.chars().enumerate() {
+        if ch.is_whitespace() {
+            in_field = false;
+        } else if !in_field {
+            if n == field {
+                return Some((line_no + 1, col + 1));
+            }
+            in_field = true;
+            n += 1;
+        }
+    }
+    None
+}
+
 impl DisplayList {
     /// Parses the §5.2 text format; `file` only names the source in errors.
     ///

@@ -427,3 +427,13 @@ impl Array for CycleArray {
         }
     }
 }
+
+impl CycleArray {
+    /// Bytes the bit-planes of a `cfg` array take: depth and colour registers, select latch,
+    /// comparator, carry and stack, one bit each per (padded) pixel.
+    pub fn memory_bytes(cfg: &ArrayConfig) -> u64 {
+        let words = (cfg.width.div_ceil(64) * cfg.height) as u64;
+        let planes = 4 * cfg.fmt.bits() as u64 + 3 * cfg.colour_bits as u64 + 2 + 4 + 1;
+        words * 8 * (planes + cfg.stack_depth as u64)
+    }
+}

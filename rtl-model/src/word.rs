@@ -211,3 +211,10 @@ impl Array for WordArray {
         }
     }
 }
+
+impl WordArray {
+    /// Bytes the pixels of a `cfg` array take.
+    pub fn memory_bytes(cfg: &ArrayConfig) -> u64 {
+        (cfg.pixels() * std::mem::size_of::<Pixel>()) as u64
+    }
+}

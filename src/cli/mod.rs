@@ -1,5 +1,6 @@
 //! Subcommands. Each returns its exit code, or an error message (exit status 2).
 
+mod array_args;
 mod gen_vectors;
 mod render;
 mod verify_select;

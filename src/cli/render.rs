@@ -4,26 +4,15 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
-use clap::ValueEnum;
-use csgpix::compile::object_ops;
-use csgpix::display_list::DisplayList;
+use csgpix::compile::scene_ops;
+use csgpix::display_list::{field_position, DisplayList};
 use csgpix::output::write_atomic;
 use csgpix::palette::rgb;
-use rtl_model::probe::Recorder;
-use rtl_model::program::{CReg, Op};
-use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray, WordFormat};
+use rtl_model::program::CReg;
+
 use serde::Serialize;
 
-use super::EquationsArg;
-
-#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
-pub enum Model {
-    /// Bit-serial, clock by clock, bit-sliced.
-    #[default]
-    Cycle,
-    /// One word per pixel, no clock.
-    Word,
-}
+use super::array_args::ArrayArgs;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -37,79 +26,17 @@ pub struct Args {
     /// Output PNG.
     #[arg(short = 'o', long)]
     out: PathBuf,
-    /// Array size WIDTHxHEIGHT (the thesis window is 250x250).
-    #[arg(long, default_value = "250x250", value_parser = parse_size)]
-    size: (usize, usize),
-    /// Processor model.
-    #[arg(long, value_enum, default_value_t)]
-    model: Model,
-    /// Select equations.
-    #[arg(long, value_enum, default_value_t)]
-    equations: EquationsArg,
-    /// Depth word FRACTION/INTEGER/OVERFLOW bits (thesis 10/10/11).
-    #[arg(long, default_value = "10/10/11", value_parser = parse_word)]
-    word: WordFormat,
-    /// Levels of the per-pixel clipping stack.
-    #[arg(long, default_value_t = 8)]
-    stack_depth: usize,
-    /// Write a VCD waveform of the probed pixels.
-    #[arg(long, requires = "probe")]
-    vcd: Option<PathBuf>,
-    /// Pixels to probe: "x,y;x,y".
-    #[arg(long, value_parser = parse_probes, requires = "vcd")]
-    probe: Option<Probes>,
+    #[command(flatten)]
+    array: ArrayArgs,
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
 }
 
-pub fn parse_size(s: &str) -> Result<(usize, usize), String> {
-    let (w, h) = s
-        .split_once(['x', 'X'])
-        .ok_or("expected WIDTHxHEIGHT, e.g. 250x250")?;
-    let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
-    let (w, h) = (n(w)?, n(h)?);
-    if w == 0 || h == 0 || w > 16384 || h > 16384 {
-        return Err(format!("{w}x{h}: each side must be 1..=16384"));
-    }
-    Ok((w, h))
-}
-
-pub fn parse_word(s: &str) -> Result<WordFormat, String> {
-    let f: Vec<&str> = s.split('/').collect();
-    let [fr, i, o] = f[..] else {
-        return Err("expected FRACTION/INTEGER/OVERFLOW, e.g. 10/10/11".into());
-    };
-    let n = |v: &str| v.trim().parse::<u32>().map_err(|e| format!("{v:?}: {e}"));
-    WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| e.to_string())
-}
-
-/// Probed pixels, as given to `--probe`.
-#[derive(Clone, Debug)]
-pub struct Probes(pub Vec<(usize, usize)>);
-
-pub fn parse_probes(s: &str) -> Result<Probes, String> {
-    let v = s
-        .split(';')
-        .filter(|p| !p.trim().is_empty())
-        .map(|p| {
-            let (x, y) = p
-                .split_once(',')
-                .ok_or_else(|| format!("{p:?}: expected x,y"))?;
-            let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
-            Ok((n(x)?, n(y)?))
-        })
-        .collect::<Result<Vec<_>, String>>()?;
-    if v.is_empty() {
-        return Err("expected at least one x,y".into());
-    }
-    Ok(Probes(v))
-}
-
 #[derive(Serialize)]
 struct Report {
     model: &'static str,
-    equations: &'static str,
+    equations: String,
     width: usize,
     height: usize,
     objects: usize,
@@ -121,51 +48,28 @@ struct Report {
     wall_seconds: f64,
 }
 
-/// Build the chosen model.
-pub fn build(model: Model, cfg: ArrayConfig, eq: Equations) -> Box<dyn Array> {
-    match model {
-        Model::Cycle => Box::new(CycleArray::new(cfg, eq.set())),
-        Model::Word => Box::new(WordArray::new(cfg, eq.set())),
-    }
-}
-
 pub fn run(a: Args) -> Result<ExitCode, String> {
-    let lists: Vec<DisplayList> = a
-        .scenes
-        .iter()
-        .map(|p| DisplayList::read(p).map_err(|e| e.to_string()))
-        .collect::<Result<_, _>>()?;
-    let mut cfg = ArrayConfig::new(a.size.0, a.size.1);
-    cfg.fmt = a.word;
-    cfg.stack_depth = a.stack_depth;
-    cfg.check()?;
-    let mut ops = vec![];
-    for (dl, path) in lists.iter().zip(&a.scenes) {
-        ops.extend(
-            object_ops(dl, &cfg.fmt, cfg.colour_bits)
-                .map_err(|e| format!("{}: {e}", path.display()))?,
-        );
-        ops.push(Op::Compose { p: false });
+    let mut lists = vec![];
+    let mut texts = vec![];
+    for p in &a.scenes {
+        let text = std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?;
+        lists.push(DisplayList::parse(&text, &p.display().to_string()).map_err(|e| e.to_string())?);
+        texts.push(text);
     }
-    let eq: Equations = a.equations.into();
-    let mut arr = build(a.model, cfg, eq);
-    if let Some(p) = &a.probe {
-        arr.attach_probe(Recorder::new(cfg, p.0.clone())?);
-    }
+    let cfg = a.array.config()?;
+    let ops = scene_ops(&lists, &cfg.fmt, cfg.colour_bits).map_err(|(i, e)| {
+        let (line, col) = field_position(&texts[i], e.plane, e.field).unwrap_or((0, 0));
+        format!("{}:{line}:{col}: {}", a.scenes[i].display(), e.msg)
+    })?;
+    let mut arr = a.array.build()?;
     let t0 = Instant::now();
     arr.run(&ops).map_err(|e| e.to_string())?;
     let wall = t0.elapsed().as_secs_f64();
     write_png(&a.out, &arr.state())?;
-    if let (Some(path), Some(rec)) = (&a.vcd, arr.take_probe()) {
-        write_atomic(path, |w| rec.write_vcd(w))?;
-    }
+    a.array.write_vcd(arr.as_mut())?;
     let report = Report {
-        model: if a.model == Model::Cycle {
-            "cycle"
-        } else {
-            "word"
-        },
-        equations: eq.name(),
+        model: a.array.model.name(),
+        equations: a.array.equations()?.name,
         width: cfg.width,
         height: cfg.height,
         objects: lists.len(),

@@ -122,8 +122,9 @@ fn and<'a>(a: &'a [u64], b: &'a [u64]) -> impl Iterator<Item = u64> + 'a {
     a.iter().zip(b).map(|(x, y)| x & y)
 }
 
-fn count(set: &[u64]) -> u32 {
-    set.iter().map(|w| w.count_ones()).sum()
+/// Whether `a ⊆ b`.
+fn subset(a: &[u64], b: &[u64]) -> bool {
+    a.iter().zip(b).all(|(x, y)| x & !y == 0)
 }
 
 /// Equal-width bit sets stored in one allocation.
@@ -145,48 +146,22 @@ impl BitRows {
         &self.data[i * self.words..(i + 1) * self.words]
     }
 
-    fn row_mut(&mut self, i: usize) -> &mut [u64] {
-        &mut self.data[i * self.words..(i + 1) * self.words]
-    }
-
     fn insert(&mut self, i: usize, bit: usize) {
         self.data[i * self.words + bit / 64] |= 1 << (bit % 64);
+    }
+
+    fn ones(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
+        ones(self.row(i).iter().copied())
+    }
+
+    fn counts(&self, n: usize) -> Vec<u32> {
+        (0..n)
+            .map(|i| self.row(i).iter().map(|w| w.count_ones()).sum())
+            .collect()
     }
 }
 
 pub static NODES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-
-/// The first `n` rows of a [`BitRows`], with summaries that reject most subset tests fast.
-struct Subsets<'a> {
-    sets: &'a BitRows,
-    count: Vec<u32>,
-    /// All words of a set ORed together.
-    fold: Vec<u64>,
-}
-
-impl Subsets<'_> {
-    fn new(sets: &BitRows, n: usize) -> Subsets<'_> {
-        Subsets {
-            sets,
-            count: (0..n).map(|i| count(sets.row(i))).collect(),
-            fold: (0..n)
-                .map(|i| sets.row(i).iter().fold(0, |f, w| f | w))
-                .collect(),
-        }
-    }
-
-    /// Whether set `a` is a subset of set `b`.
-    fn subset(&self, a: usize, b: usize) -> bool {
-        self.count[a] <= self.count[b]
-            && self.fold[a] & !self.fold[b] == 0
-            && (self.sets.row(a).iter())
-                .zip(self.sets.row(b))
-                .all(|(x, y)| x & !y == 0)
-    }
-}
-
-/// Subgradient steps per lower bound.
-const BOUND_STEPS: usize = 30;
 
 /// The covering problem: rows are the useful primes, columns the on-set minterms.
 struct Table {
@@ -232,7 +207,7 @@ impl Table {
         for k in 1..=self.columns {
             let mut fewest = Search::new(self, &unit, k as u64 + 1, k, Vec::new());
             fewest.first_only = true;
-            fewest.run(live.clone(), open.clone(), &mut Vec::new());
+            fewest.run(live.clone(), open.clone(), &mut Vec::new(), &[vec![], vec![]]);
             if fewest.best.is_empty() {
                 continue;
             }
@@ -246,53 +221,136 @@ impl Table {
             let lits: Vec<u64> = self.cubes.iter().map(|c| c.literals().into()).collect();
             let limit = fewest.best.iter().map(|&r| lits[r]).sum();
             let mut shortest = Search::new(self, &lits, limit, k, fewest.best);
-            shortest.run(live, open, &mut Vec::new());
+            shortest.count_bound = true;
+            shortest.run(live, open, &mut Vec::new(), &[vec![], vec![]]);
             return shortest.best;
         }
         live // Not reached: one prime per on minterm always covers.
     }
 }
 
-/// The open columns of a search node and, for each, the live rows covering it.
+/// The table at one search node: the open columns and live rows, and which covers which,
+/// both ways round and by position in `cols` and `rows`.
 struct View {
+    /// Open column indices, ascending.
     cols: Vec<usize>,
-    rows: BitRows,
-}
-
-/// The live rows of a search node and the open columns (positions in the [`View`]) each
-/// covers, in compressed sparse form.
-struct Incidence {
+    /// Live row indices, ascending.
     rows: Vec<usize>,
-    start: Vec<usize>,
-    cols: Vec<usize>,
+    /// For each column, the rows covering it.
+    col_rows: BitRows,
+    /// For each row, the columns it covers.
+    row_cols: BitRows,
 }
 
-impl Incidence {
-    fn cols_of(&self, i: usize) -> &[usize] {
-        &self.cols[self.start[i]..self.start[i + 1]]
+impl View {
+    fn new(table: &Table, live: &[usize], open: &[u64]) -> View {
+        let cols: Vec<usize> = ones(open.iter().copied()).collect();
+        let mut at = vec![0; table.columns];
+        cols.iter().enumerate().for_each(|(k, &j)| at[j] = k);
+        let mut col_rows = BitRows::new(cols.len(), live.len());
+        let mut row_cols = BitRows::new(live.len(), cols.len());
+        for (i, &r) in live.iter().enumerate() {
+            for j in ones(and(table.covers.row(r), open)) {
+                col_rows.insert(at[j], i);
+                row_cols.insert(i, at[j]);
+            }
+        }
+        View {
+            cols,
+            rows: live.to_vec(),
+            col_rows,
+            row_cols,
+        }
     }
 
-    /// Lower bound on the weight still needed to cover the open columns, and each live row's
-    /// reduced cost (indexed like `self.rows`). `weights` is indexed by row.
+    /// Columns covered whenever another column is, because each row covering the other
+    /// covers them too (of equal columns all but the first). Returns column indices.
+    fn implied_columns(&self) -> Vec<usize> {
+        let n = self.cols.len();
+        let row_size = self.row_cols.counts(self.rows.len());
+        let col_size = self.col_rows.counts(n);
+        let mut implied = vec![false; n];
+        for b in 0..n {
+            // Columns whose rows include b's rows are all covered by b's smallest row.
+            let Some(pivot) = self.col_rows.ones(b).min_by_key(|&i| (row_size[i], i)) else {
+                continue;
+            };
+            for a in self.row_cols.ones(pivot) {
+                if a != b
+                    && (b < a || col_size[b] < col_size[a])
+                    && subset(self.col_rows.row(b), self.col_rows.row(a))
+                {
+                    implied[a] = true;
+                }
+            }
+        }
+        (0..n)
+            .filter(|&a| implied[a])
+            .map(|a| self.cols[a])
+            .collect()
+    }
+
+    /// For each row, whether another row covers all its columns at no higher `weight` (of
+    /// equal rows all but the first), or it covers no column: such rows can be dropped.
+    fn dominated_rows(&self, weight: impl Fn(usize) -> u64) -> Vec<bool> {
+        let m = self.rows.len();
+        let row_size = self.row_cols.counts(m);
+        let col_size = self.col_rows.counts(self.cols.len());
+        let w: Vec<u64> = self.rows.iter().map(|&r| weight(r)).collect();
+        let dominated = |a: usize| {
+            // Rows covering all of a's columns include a's column with fewest rows.
+            let Some(pivot) = self.row_cols.ones(a).min_by_key(|&k| (col_size[k], k)) else {
+                return true;
+            };
+            self.col_rows.ones(pivot).any(|b| {
+                b != a
+                    && w[b] <= w[a]
+                    && (b < a || w[b] < w[a] || row_size[a] < row_size[b])
+                    && subset(self.row_cols.row(a), self.row_cols.row(b))
+            })
+        };
+        (0..m).map(dominated).collect()
+    }
+
+    /// Lagrangian lower bound on the weight still needed to cover the open columns, and
+    /// each row's reduced weight. `weights` is by row position.
     ///
-    /// The bound is Lagrangian: given a price `u_k >= 0` per open column, every cover costs at
-    /// least `sum(u) + sum(min(0, c_r))`, where the reduced cost `c_r` of a row is its weight
-    /// minus the prices of its columns. Prices start from a feasible dual solution and improve
-    /// by subgradient steps, aiming at `budget`, the most a useful completion may cost.
-    fn lower_bound(&self, view: &View, weights: &[u64], budget: f64) -> (f64, Vec<f64>) {
-        let w: Vec<f64> = self.rows.iter().map(|&r| weights[r] as f64).collect();
+    /// Given a price `u_k >= 0` per column, every cover weighs at least
+    /// `sum(u) + sum(min(0, c_r))`, where the reduced weight `c_r` of a row is its weight
+    /// minus the prices of its columns. Prices start from a feasible dual solution and
+    /// improve by subgradient steps, aiming at `budget`, the most a useful completion may
+    /// weigh.
+    fn lower_bound(&self, weights: &[f64], budget: f64, warm: &[f64]) -> (f64, Vec<f64>, Vec<f64>) {
+        let mut start = vec![0];
+        let mut cols = Vec::new();
+        for i in 0..self.rows.len() {
+            cols.extend(self.row_cols.ones(i));
+            start.push(cols.len());
+        }
+        let cols_of = |i: usize| &cols[start[i]..start[i + 1]];
         let reduced = |u: &[f64]| -> Vec<f64> {
-            (0..w.len())
-                .map(|i| w[i] - self.cols_of(i).iter().map(|&k| u[k]).sum::<f64>())
-                .collect()
+            let price = |i: usize| cols_of(i).iter().map(|&k| u[k]).sum::<f64>();
+            (0..weights.len()).map(|i| weights[i] - price(i)).collect()
         };
         let value = |u: &[f64], c: &[f64]| {
             u.iter().sum::<f64>() + c.iter().map(|c| c.min(0.0)).sum::<f64>()
         };
-        let mut u = greedy_prices(view, weights);
+        let mut u = self.greedy_prices(weights);
         let mut best = (value(&u, &reduced(&u)), u.clone());
+        if !warm.is_empty() {
+            let w: Vec<f64> = self.cols.iter().map(|&j| warm[j]).collect();
+            let v = value(&w, &reduced(&w));
+            if v > best.0 {
+                best = (v, w.clone());
+                u = w;
+            }
+        }
         let (mut scale, mut stall) = (1.0, 0);
-        for _ in 0..BOUND_STEPS {
+        for _ in 0..std::env::var("QMIT")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(BOUND_STEPS)
+        {
             if best.0 > budget {
                 break;
             }
@@ -311,7 +369,7 @@ impl Incidence {
             // Subgradient: 1 minus the number of negative-cost rows covering each column.
             let mut g = vec![1.0; u.len()];
             for i in (0..c.len()).filter(|&i| c[i] < 0.0) {
-                self.cols_of(i).iter().for_each(|&k| g[k] -= 1.0);
+                cols_of(i).iter().for_each(|&k| g[k] -= 1.0);
             }
             let norm: f64 = g.iter().map(|x| x * x).sum();
             if norm == 0.0 {
@@ -323,28 +381,33 @@ impl Incidence {
                 .for_each(|(y, d)| *y = (*y + step * d).max(0.0));
         }
         let c = reduced(&best.1);
-        (best.0, c)
+        (best.0, c, best.1)
+    }
+
+    /// A feasible dual solution: raise each column's price, fewest rows first, until one of
+    /// its rows is fully paid.
+    fn greedy_prices(&self, weights: &[f64]) -> Vec<f64> {
+        let n = self.cols.len();
+        let size = self.col_rows.counts(n);
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_by_key(|&k| (size[k], k));
+        let mut residual = weights.to_vec();
+        let mut u = vec![0.0; n];
+        for k in order {
+            let y = (self.col_rows.ones(k))
+                .map(|i| residual[i])
+                .fold(f64::INFINITY, f64::min);
+            if y > 0.0 && y.is_finite() {
+                self.col_rows.ones(k).for_each(|i| residual[i] -= y);
+                u[k] = y;
+            }
+        }
+        u
     }
 }
 
-/// A feasible dual solution: raise each column's price, fewest rows first, until one of its
-/// rows is fully paid.
-fn greedy_prices(view: &View, weights: &[u64]) -> Vec<f64> {
-    let n = view.cols.len();
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by_key(|&k| (count(view.rows.row(k)), k));
-    let mut residual: Vec<f64> = weights.iter().map(|&w| w as f64).collect();
-    let mut u = vec![0.0; n];
-    for k in order {
-        let rows = || ones(view.rows.row(k).iter().copied());
-        let y = rows().map(|r| residual[r]).fold(f64::INFINITY, f64::min);
-        if y > 0.0 && y.is_finite() {
-            rows().for_each(|r| residual[r] -= y);
-            u[k] = y;
-        }
-    }
-    u
-}
+/// Subgradient steps per lower bound.
+const BOUND_STEPS: usize = 60;
 
 /// Branch-and-bound search for a cheapest cover under one weighting of the rows.
 struct Search<'a> {
@@ -355,6 +418,8 @@ struct Search<'a> {
     limit: u64,
     /// Covers may use at most this many rows.
     max_rows: usize,
+    /// Also bound the number of rows, not only the weight.
+    count_bound: bool,
     /// Stop at the first cover found.
     first_only: bool,
     best: Vec<usize>,
@@ -373,24 +438,25 @@ impl<'a> Search<'a> {
             weights,
             limit,
             max_rows,
+            count_bound: false,
             first_only: false,
             best,
         }
     }
 
-    /// Cover the `open` columns with `live` rows (sorted), extending `chosen`, which is left
-    /// as it was found.
-    fn run(&mut self, mut live: Vec<usize>, mut open: Vec<u64>, chosen: &mut Vec<usize>) {
+    /// Cover the `open` columns with `live` rows (ascending), extending `chosen`, which is
+    /// left as it was found.
+    fn run(&mut self, mut live: Vec<usize>, mut open: Vec<u64>, chosen: &mut Vec<usize>, warm: &[Vec<f64>; 2]) {
         NODES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let depth = chosen.len();
         if let Some(view) = self.reduce(&mut live, &mut open, chosen) {
-            self.branch(&live, &open, &view, chosen);
+            self.branch(&view, &open, chosen, warm);
         }
         chosen.truncate(depth);
     }
 
-    /// Take essential rows and drop dominated columns and rows until nothing changes.
-    /// Returns the final view, or `None` when some open column can no longer be covered.
+    /// Take essential rows, close implied columns and drop dominated rows until nothing
+    /// changes. Returns the final view, or `None` when some column can no longer be covered.
     fn reduce(
         &self,
         live: &mut Vec<usize>,
@@ -398,16 +464,15 @@ impl<'a> Search<'a> {
         chosen: &mut Vec<usize>,
     ) -> Option<View> {
         loop {
-            let view = self.view(live, open);
-            let counts: Vec<u32> = (0..view.cols.len())
-                .map(|k| count(view.rows.row(k)))
-                .collect();
-            if counts.contains(&0) {
+            let view = View::new(self.table, live, open);
+            let size = view.col_rows.counts(view.cols.len());
+            if size.contains(&0) {
                 return None;
             }
             let essential: BTreeSet<usize> = (0..view.cols.len())
-                .filter(|&k| counts[k] == 1)
-                .flat_map(|k| ones(view.rows.row(k).iter().copied()))
+                .filter(|&k| size[k] == 1)
+                .flat_map(|k| view.col_rows.ones(k))
+                .map(|i| view.rows[i])
                 .collect();
             if !essential.is_empty() {
                 for &r in &essential {
@@ -418,116 +483,61 @@ impl<'a> Search<'a> {
                 live.retain(|r| !essential.contains(r));
                 continue;
             }
-            if !drop_dominated_columns(&view, open) && !self.drop_dominated_rows(live, open) {
+            let implied = view.implied_columns();
+            if !implied.is_empty() {
+                implied
+                    .iter()
+                    .for_each(|j| open[j / 64] &= !(1 << (j % 64)));
+                continue;
+            }
+            let dominated = view.dominated_rows(|r| self.weights[r]);
+            if !dominated.contains(&true) {
                 return Some(view);
             }
+            live.clear();
+            live.extend(
+                (0..view.rows.len())
+                    .filter(|&i| !dominated[i])
+                    .map(|i| view.rows[i]),
+            );
         }
     }
 
-    /// The open columns and the live rows covering each.
-    fn view(&self, live: &[usize], open: &[u64]) -> View {
-        let cols: Vec<usize> = ones(open.iter().copied()).collect();
-        let mut at = vec![0; self.table.columns];
-        cols.iter().enumerate().for_each(|(k, &j)| at[j] = k);
-        let mut rows = BitRows::new(cols.len(), self.table.cubes.len());
-        for &r in live {
-            for j in ones(and(self.table.covers.row(r), open)) {
-                rows.insert(at[j], r);
-            }
-        }
-        View { cols, rows }
-    }
-
-    /// A row covering no more open columns than another row, at no lower weight, can be
-    /// swapped for that row in any cover: remove it. Returns whether any row was removed.
-    fn drop_dominated_rows(&self, live: &mut Vec<usize>, open: &[u64]) -> bool {
-        let mut covers = BitRows::new(live.len(), self.table.columns);
-        for (i, &r) in live.iter().enumerate() {
-            let row = and(self.table.covers.row(r), open);
-            covers
-                .row_mut(i)
-                .iter_mut()
-                .zip(row)
-                .for_each(|(d, w)| *d = w);
-        }
-        let sets = Subsets::new(&covers, live.len());
-        let w = |i: usize| self.weights[live[i]];
-        let dominated = |a: usize| {
-            sets.count[a] == 0
-                || (0..live.len()).any(|b| {
-                    b != a
-                        && w(b) <= w(a)
-                        && sets.subset(a, b)
-                        && (b < a || w(b) < w(a) || sets.count[a] != sets.count[b])
-                })
-        };
-        let kept: Vec<usize> = (0..live.len())
-            .filter(|&a| !dominated(a))
-            .map(|a| live[a])
-            .collect();
-        let changed = kept.len() != live.len();
-        *live = kept;
-        changed
-    }
-
-    /// The live rows and the open columns each covers.
-    fn incidence(&self, live: &[usize], view: &View, open: &[u64]) -> Incidence {
-        let mut at = vec![0; self.table.columns];
-        view.cols.iter().enumerate().for_each(|(k, &j)| at[j] = k);
-        let mut inc = Incidence {
-            rows: live.to_vec(),
-            start: vec![0],
-            cols: Vec::new(),
-        };
-        for &r in live {
-            let cols = ones(and(self.table.covers.row(r), open)).map(|j| at[j]);
-            inc.cols.extend(cols);
-            inc.start.push(inc.cols.len());
-        }
-        inc
-    }
-
-    /// Check the node against the Lagrangian bounds on weight and, when rows are weighted
-    /// otherwise, on their number. Returns `None` when no completion can be useful, else the
-    /// live rows that still can be part of one and their reduced weights.
-    fn bound(
-        &self,
-        live: &[usize],
-        open: &[u64],
-        view: &View,
-        chosen: &[usize],
-    ) -> Option<(Vec<usize>, Vec<f64>)> {
-        let inc = self.incidence(live, view, open);
+    /// Check the node against the Lagrangian bounds on weight and, with `count_bound`, on
+    /// the number of rows. Returns `None` when no completion can be useful, else which rows
+    /// still can be part of one, and the reduced weights (both by row position).
+    fn bound(&self, view: &View, chosen: &[usize], warm: &[Vec<f64>; 2]) -> Option<(Vec<bool>, Vec<f64>, [Vec<f64>; 2])> {
         let cost: u64 = chosen.iter().map(|&r| self.weights[r]).sum();
+        let weights: Vec<f64> = view.rows.iter().map(|&r| self.weights[r] as f64).collect();
         // Weights are whole numbers; the epsilon absorbs rounding in the bound.
         let budget = (self.limit - cost - 1) as f64 + 1e-6;
-        let (lb, reduced) = inc.lower_bound(view, self.weights, budget);
-        // A row whose reduced weight alone lifts the bound past the budget is useless here.
-        let mut useful: Vec<bool> = reduced.iter().map(|c| lb + c.max(0.0) <= budget).collect();
-        if self.weights.iter().any(|&w| w != 1) {
-            let budget = (self.max_rows - chosen.len()) as f64 + 1e-6;
-            let unit = vec![1; self.weights.len()];
-            let (lb_rows, reduced_rows) = inc.lower_bound(view, &unit, budget);
-            if lb_rows > budget {
-                return None;
-            }
-            for (u, c) in useful.iter_mut().zip(&reduced_rows) {
-                *u &= lb_rows + c.max(0.0) <= budget;
-            }
-        }
+        let (lb, reduced, u0) = view.lower_bound(&weights, budget, &warm[0]);
+        let mut next = [vec![0.0; self.table.columns], vec![]];
+        view.cols.iter().zip(&u0).for_each(|(&j, &y)| next[0][j] = y);
         if lb > budget {
             return None;
         }
-        let rows = live
-            .iter()
-            .zip(&useful)
-            .filter(|(_, &u)| u)
-            .map(|(&r, _)| r);
-        Some((rows.collect(), reduced))
+        // A row whose reduced weight alone lifts the bound past the budget is useless here.
+        let mut useful: Vec<bool> = reduced.iter().map(|c| lb + c.max(0.0) <= budget).collect();
+        if self.count_bound {
+            let budget = (self.max_rows - chosen.len()) as f64 + 1e-6;
+            let (lb, reduced, u1) = view.lower_bound(&vec![1.0; weights.len()], budget, &warm[1]);
+            next[1] = vec![0.0; self.table.columns];
+            view.cols.iter().zip(&u1).for_each(|(&j, &y)| next[1][j] = y);
+            if lb > budget {
+                return None;
+            }
+            for (u, c) in useful.iter_mut().zip(&reduced) {
+                *u &= lb + c.max(0.0) <= budget;
+            }
+        }
+        Some((useful, reduced, next))
     }
 
-    /// Record a complete cover, or prune, or split on the open column with fewest rows.
-    fn branch(&mut self, live: &[usize], open: &[u64], view: &View, chosen: &mut Vec<usize>) {
+    /// Record a complete cover, or prune, or split on the column with fewest rows: one
+    /// branch per row covering it, cheapest reduced weight first, each excluding the rows
+    /// tried before it.
+    fn branch(&mut self, view: &View, open: &[u64], chosen: &mut Vec<usize>, warm: &[Vec<f64>; 2]) {
         let cost: u64 = chosen.iter().map(|&r| self.weights[r]).sum();
         if cost >= self.limit || chosen.len() > self.max_rows {
             return;
@@ -537,50 +547,32 @@ impl<'a> Search<'a> {
             self.best.clone_from(chosen);
             return;
         }
-        let Some((useful, reduced)) = self.bound(live, open, view, chosen) else {
+        let Some((useful, reduced, warm)) = self.bound(view, chosen, warm) else {
             return;
         };
-        if useful.len() < live.len() {
-            return self.run(useful, open.to_vec(), chosen);
+        if useful.contains(&false) {
+            let live = (0..view.rows.len()).filter(|&i| useful[i]);
+            let live = live.map(|i| view.rows[i]).collect();
+            return self.run(live, open.to_vec(), chosen, &warm);
         }
-        let k = (0..view.cols.len())
-            .min_by_key(|&k| (count(view.rows.row(k)), k))
-            .unwrap_or(0);
-        let mut candidates: Vec<(f64, usize)> = ones(view.rows.row(k).iter().copied())
-            .map(|r| (live.binary_search(&r).map_or(0.0, |i| reduced[i]), r))
-            .collect();
-        candidates.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let mut rest = live.to_vec();
-        for (_, r) in candidates {
+        let size = view.col_rows.counts(view.cols.len());
+        let k = (0..size.len()).min_by_key(|&k| (size[k], k)).unwrap_or(0);
+        let mut candidates: Vec<usize> = view.col_rows.ones(k).collect();
+        candidates.sort_by(|&a, &b| reduced[a].total_cmp(&reduced[b]).then(a.cmp(&b)));
+        let mut rest = view.rows.clone();
+        for i in candidates {
             if self.first_only && !self.best.is_empty() {
                 return;
             }
+            let r = view.rows[i];
             rest.retain(|&x| x != r);
             let cover = self.table.covers.row(r);
             let next: Vec<u64> = open.iter().zip(cover).map(|(o, c)| o & !c).collect();
             chosen.push(r);
-            self.run(rest.clone(), next, chosen);
+            self.run(rest.clone(), next, chosen, &warm);
             chosen.pop();
         }
     }
-}
-
-/// A column whose rows include all rows of another open column is covered whenever that one
-/// is: stop tracking it. Returns whether any column was dropped.
-fn drop_dominated_columns(view: &View, open: &mut [u64]) -> bool {
-    let n = view.cols.len();
-    let sets = Subsets::new(&view.rows, n);
-    let mut changed = false;
-    for a in 0..n {
-        let dominated = (0..n)
-            .any(|b| b != a && sets.subset(b, a) && (b < a || sets.count[a] != sets.count[b]));
-        if dominated {
-            let j = view.cols[a];
-            open[j / 64] &= !(1 << (j % 64));
-            changed = true;
-        }
-    }
-    changed
 }
 
 #[cfg(test)]
@@ -769,10 +761,10 @@ pub fn __timing() {
             .wrapping_add(1442695040888963407);
         (seed >> 33) as u32
     };
-    for (n, on_pct, dc_pct) in [(8, 75, 10)] {
+    for (n, on_pct, dc_pct) in [(8,50,25),(8,50,0),(8,25,25),(8,25,50),(8,10,30),(8,75,10),(8,40,40),(8,90,0),(8,60,30)] {
         let mut worst = std::time::Duration::ZERO;
         let mut tot = std::time::Duration::ZERO;
-        for _ in 0..4 {
+        for _ in 0..10 {
             let (mut on, mut dc) = (Vec::new(), Vec::new());
             for m in 0..1u32 << n {
                 let x = lcg() % 100;
@@ -796,7 +788,7 @@ pub fn __timing() {
         }
         eprintln!("random n={n} on={on_pct}% dc={dc_pct}%: worst {worst:?} total {tot:?}");
     }
-    for n in [8usize, 10] {
+    for n in [8usize, 10, 12] {
         let mut worst = std::time::Duration::ZERO;
         let mut tot = std::time::Duration::ZERO;
         let mut maxc = 0;

@@ -398,6 +398,46 @@ pub fn derive(tables: &[TruthTable]) -> EquationSet {
     EquationSet::from_cubes("derived", cubes)
 }
 
+/// How the derived equations settle the ties §2.3.3 leaves "up to the user" (A = F on front
+/// planes, A = B on back planes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Ties {
+    /// Whatever the minimum cover does with the don't-cares (the checked-in `derived.eqn`).
+    #[default]
+    Minimal,
+    /// Keep the register (and colour): the earlier plane wins.
+    Keep,
+    /// Put A (and D): the later plane wins.
+    Put,
+}
+
+/// The derived equations with the user's ties fixed: the tie rows become care rows with the
+/// chosen action's code and the tables are minimized again.
+pub fn derive_with_ties(ties: Ties) -> Result<EquationSet, String> {
+    let mut tables = all_tables()?;
+    let code = match ties {
+        Ties::Minimal => return Ok(EquationSet::derived()),
+        Ties::Keep => Action::Keep.code(),
+        Ties::Put => Action::PutA.code(),
+    };
+    for t in tables
+        .iter_mut()
+        .filter(|t| matches!(t.table, Table::Front | Table::Back))
+    {
+        for (outs, why) in t.rows.values_mut() {
+            if why.ends_with("(user)") {
+                *outs = vec![out_of(code.0, code.0), out_of(code.1, code.1)];
+            }
+        }
+    }
+    let mut set = derive(&tables);
+    set.name = format!(
+        "derived, ties {}",
+        if ties == Ties::Keep { "keep" } else { "put" }
+    );
+    Ok(set)
+}
+
 /// The files `gen-vectors` writes, as (file name, text).
 pub fn generate() -> Result<Vec<(String, String)>, String> {
     let tables = all_tables()?;
@@ -454,6 +494,44 @@ mod tests {
         // A anything, F in [0, maxdepth) or the Put-1 word: N=1 forces J=1 T=0 M=0;
         // N=0 M=0 and N=0 M=1 each allow (J,T) in {00, 10, 11}.
         assert_eq!(front.rows.len(), 8 * 7);
+    }
+
+    #[test]
+    fn tie_policies_decide_the_tie_rows_and_nothing_else() {
+        let tables = all_tables().unwrap();
+        for (ties, want) in [(Ties::Keep, Action::Keep), (Ties::Put, Action::PutA)] {
+            let set = derive_with_ties(ties).unwrap();
+            for tt in tables
+                .iter()
+                .filter(|t| matches!(t.table, Table::Front | Table::Back))
+            {
+                let sig = tt.table.signals();
+                let mut ties_seen = 0;
+                for (m, (outs, why)) in &tt.rows {
+                    let mut vars = [false; 10];
+                    for (i, v) in tt.table.inputs().into_iter().enumerate() {
+                        vars[v as usize] = m >> i & 1 == 1;
+                    }
+                    let got = (
+                        set.sop(sig[0]).eval_bits(&vars),
+                        set.sop(sig[1]).eval_bits(&vars),
+                    );
+                    if why.ends_with("(user)") {
+                        ties_seen += 1;
+                        assert_eq!(Action::from_code(got.0, got.1), want, "{why}");
+                    } else {
+                        let code = [got.0, got.1];
+                        for j in 0..2 {
+                            assert!(
+                                outs[j] == Out::DontCare || (outs[j] == Out::One) == code[j],
+                                "{why}"
+                            );
+                        }
+                    }
+                }
+                assert!(ties_seen > 0, "{}", tt.table.name());
+            }
+        }
     }
 
     #[test]

@@ -1,0 +1,177 @@
+//! Options every command that runs the array shares: size, model, equations, word format,
+//! stack depth, memory limit, waveform probes.
+
+use std::path::PathBuf;
+
+use clap::ValueEnum;
+use csgpix::output::write_atomic;
+use rtl_model::probe::Recorder;
+use rtl_model::select::vectors::{derive_with_ties, Ties};
+use rtl_model::{Array, ArrayConfig, CycleArray, EquationSet, Equations, WordArray, WordFormat};
+
+use super::EquationsArg;
+
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
+pub enum Model {
+    /// Bit-serial, clock by clock, bit-sliced.
+    #[default]
+    Cycle,
+    /// One word per pixel, no clock.
+    Word,
+}
+
+impl Model {
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Cycle => "cycle",
+            Model::Word => "word",
+        }
+    }
+}
+
+/// How the `derived` equations settle the ties the thesis leaves to the user.
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
+pub enum TiesArg {
+    /// Whatever the minimum cover does (derived.eqn; see docs/select-logic.md).
+    #[default]
+    Minimal,
+    /// A = F or A = B keeps the register: the earlier plane wins.
+    Keep,
+    /// A = F or A = B puts A: the later plane wins.
+    Put,
+}
+
+#[derive(clap::Args, Debug, Clone)]
+pub struct ArrayArgs {
+    /// Array size WIDTHxHEIGHT (the thesis window is 250x250).
+    #[arg(long, default_value = "250x250", value_parser = parse_size)]
+    pub size: (usize, usize),
+    /// Processor model.
+    #[arg(long, value_enum, default_value_t)]
+    pub model: Model,
+    /// Select equations.
+    #[arg(long, value_enum, default_value_t)]
+    pub equations: EquationsArg,
+    /// Tie policy of the derived equations (A = F, A = B).
+    #[arg(long, value_enum, default_value_t)]
+    pub ties: TiesArg,
+    /// Depth word FRACTION/INTEGER/OVERFLOW bits (thesis 10/10/11).
+    #[arg(long, default_value = "10/10/11", value_parser = parse_word)]
+    pub word: WordFormat,
+    /// Levels of the per-pixel clipping stack.
+    #[arg(long, default_value_t = 8)]
+    pub stack_depth: usize,
+    /// Refuse to build an array needing more memory than this many MiB.
+    #[arg(long, default_value_t = 4096)]
+    pub max_memory: u64,
+    /// Write a VCD waveform of the probed pixels.
+    #[arg(long, requires = "probe")]
+    pub vcd: Option<PathBuf>,
+    /// Pixels to probe: "x,y;x,y".
+    #[arg(long, value_parser = parse_probes, requires = "vcd")]
+    pub probe: Option<Probes>,
+}
+
+/// Probed pixels, as given to `--probe`.
+#[derive(Clone, Debug)]
+pub struct Probes(pub Vec<(usize, usize)>);
+
+pub fn parse_size(s: &str) -> Result<(usize, usize), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or("expected WIDTHxHEIGHT, e.g. 250x250")?;
+    let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
+    let (w, h) = (n(w)?, n(h)?);
+    if w == 0 || h == 0 || w > 65536 || h > 65536 {
+        return Err(format!("{w}x{h}: each side must be 1..=65536"));
+    }
+    Ok((w, h))
+}
+
+pub fn parse_word(s: &str) -> Result<WordFormat, String> {
+    let f: Vec<&str> = s.split('/').collect();
+    let [fr, i, o] = f[..] else {
+        return Err("expected FRACTION/INTEGER/OVERFLOW, e.g. 10/10/11".into());
+    };
+    let n = |v: &str| v.trim().parse::<u32>().map_err(|e| format!("{v:?}: {e}"));
+    WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| e.to_string())
+}
+
+pub fn parse_probes(s: &str) -> Result<Probes, String> {
+    let v = s
+        .split(';')
+        .filter(|p| !p.trim().is_empty())
+        .map(|p| {
+            let (x, y) = p
+                .split_once(',')
+                .ok_or_else(|| format!("{p:?}: expected x,y"))?;
+            let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
+            Ok((n(x)?, n(y)?))
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    if v.is_empty() {
+        return Err("expected at least one x,y".into());
+    }
+    Ok(Probes(v))
+}
+
+impl ArrayArgs {
+    /// The array's configuration, checked.
+    pub fn config(&self) -> Result<ArrayConfig, String> {
+        let mut cfg = ArrayConfig::new(self.size.0, self.size.1);
+        cfg.fmt = self.word;
+        cfg.stack_depth = self.stack_depth;
+        cfg.check()?;
+        Ok(cfg)
+    }
+
+    /// The equation set SGENE is built from.
+    pub fn equations(&self) -> Result<EquationSet, String> {
+        let eq: Equations = self.equations.into();
+        match (eq, self.ties) {
+            (_, TiesArg::Minimal) => Ok(eq.set()),
+            (Equations::Printed, _) => Err(
+                "--ties applies to the derived equations; the printed ones fix their own ties"
+                    .into(),
+            ),
+            (Equations::Derived, TiesArg::Keep) => derive_with_ties(Ties::Keep),
+            (Equations::Derived, TiesArg::Put) => derive_with_ties(Ties::Put),
+        }
+    }
+
+    /// Build the chosen model, after checking its memory estimate against `--max-memory`.
+    pub fn build(&self) -> Result<Box<dyn Array>, String> {
+        let cfg = self.config()?;
+        let need = match self.model {
+            Model::Cycle => CycleArray::memory_bytes(&cfg),
+            Model::Word => WordArray::memory_bytes(&cfg),
+        };
+        let mib = need.div_ceil(1 << 20);
+        if mib > self.max_memory {
+            return Err(format!(
+                "a {}x{} {} array needs about {mib} MiB, over the limit of {} MiB (raise --max-memory)",
+                cfg.width,
+                cfg.height,
+                self.model.name(),
+                self.max_memory
+            ));
+        }
+        let set = self.equations()?;
+        let mut arr: Box<dyn Array> = match self.model {
+            Model::Cycle => Box::new(CycleArray::new(cfg, set)),
+            Model::Word => Box::new(WordArray::new(cfg, set)),
+        };
+        if let Some(p) = &self.probe {
+            arr.attach_probe(Recorder::new(cfg, p.0.clone())?);
+        }
+        Ok(arr)
+    }
+
+    /// Write the VCD if one was asked for.
+    pub fn write_vcd(&self, arr: &mut dyn Array) -> Result<(), String> {
+        if let (Some(path), Some(rec)) = (&self.vcd, arr.take_probe()) {
+            write_atomic(path, |w| rec.write_vcd(w))?;
+        }
+        Ok(())
+    }
+}
