@@ -174,7 +174,11 @@ fn vcd_probe_records_the_first_plane_arriving_in_a() {
 fn coefficient_outside_the_word_is_located_and_refused() {
     let d = tmp();
     let dl = d.path().join("far.dl");
-    std::fs::write(&dl, "# far plane\n1 2 3 4\n1 0 0\n\n5 1 5e7 2\n0 0 0\n0 0 0 1234\n").unwrap();
+    std::fs::write(
+        &dl,
+        "# far plane\n1 2 3 4\n1 0 0\n\n5 1 5e7 2\n0 0 0\n0 0 0 1234\n",
+    )
+    .unwrap();
     let png = d.path().join("far.png");
     let o = csgpix(&["render", s(&dl), "-o", s(&png)]);
     assert_eq!(o.status.code(), Some(2));
@@ -187,7 +191,14 @@ fn coefficient_outside_the_word_is_located_and_refused() {
 fn arrays_over_the_memory_limit_are_refused_before_allocation() {
     let d = tmp();
     let png = d.path().join("big.png");
-    let o = csgpix(&["render", "vectors/thesis/cube.dl", "--size", "40000x40000", "-o", s(&png)]);
+    let o = csgpix(&[
+        "render",
+        "vectors/thesis/cube.dl",
+        "--size",
+        "40000x40000",
+        "-o",
+        s(&png),
+    ]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--max-memory"));
     assert!(!png.exists());
@@ -198,7 +209,16 @@ fn probes_outside_the_array_are_refused() {
     let d = tmp();
     let png = d.path().join("p.png");
     let vcd = d.path().join("p.vcd");
-    let o = csgpix(&["render", "vectors/thesis/cube.dl", "--vcd", s(&vcd), "--probe", "250,0", "-o", s(&png)]);
+    let o = csgpix(&[
+        "render",
+        "vectors/thesis/cube.dl",
+        "--vcd",
+        s(&vcd),
+        "--probe",
+        "250,0",
+        "-o",
+        s(&png),
+    ]);
     assert_eq!(o.status.code(), Some(2));
     assert!(!png.exists() && !vcd.exists());
 }
@@ -209,13 +229,30 @@ fn tie_policy_changes_which_plane_colour_wins_on_an_exact_tie() {
     // every pixel A = F on the second plane, so the tie policy alone picks the colour.
     let d = tmp();
     let dl = d.path().join("tie.dl");
-    std::fs::write(&dl, "10 0 0 2\n1 0 0\n10 0 0 4\n1 0 0\n500 0 0 1\n0 0 0\n0 0 0 1234\n").unwrap();
+    std::fs::write(
+        &dl,
+        "10 0 0 2\n1 0 0\n10 0 0 4\n1 0 0\n500 0 0 1\n0 0 0\n0 0 0 1234\n",
+    )
+    .unwrap();
     let mut colours = vec![];
     for ties in ["keep", "put"] {
         let png = d.path().join(format!("{ties}.png"));
-        let o = csgpix(&["render", s(&dl), "--ties", ties, "--size", "8x8", "-o", s(&png)]);
+        let o = csgpix(&[
+            "render",
+            s(&dl),
+            "--ties",
+            ties,
+            "--size",
+            "8x8",
+            "-o",
+            s(&png),
+        ]);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         colours.push(image::open(&png).unwrap().to_rgb8().get_pixel(3, 3).0);
     }
-    assert_eq!(colours, vec![[0, 170, 0], [170, 0, 0]], "keep: first plane (2, green); put: second (4, red)");
+    assert_eq!(
+        colours,
+        vec![[0, 170, 0], [170, 0, 0]],
+        "keep: first plane (2, green); put: second (4, red)"
+    );
 }
