@@ -8,7 +8,10 @@ use csgpix::compile::scene_ops;
 use csgpix::display_list::{field_position, DisplayList};
 use csgpix::output::write_atomic;
 use csgpix::palette::rgb;
-use rtl_model::program::CReg;
+use indicatif::{ProgressBar, ProgressStyle};
+use rtl_model::array::check_program;
+use rtl_model::program::{CReg, Op};
+use rtl_model::Array;
 
 use serde::Serialize;
 
@@ -63,7 +66,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     })?;
     let mut arr = a.array.build()?;
     let t0 = Instant::now();
-    arr.run(&ops).map_err(|e| e.to_string())?;
+    run_with_progress(arr.as_mut(), &ops)?;
     let wall = t0.elapsed().as_secs_f64();
     write_png(&a.out, &arr.state())?;
     a.array.write_vcd(arr.as_mut())?;
@@ -96,6 +99,28 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Run a program, with a progress bar on a terminal when it is long enough to wait for.
+pub fn run_with_progress(arr: &mut dyn Array, ops: &[Op]) -> Result<(), String> {
+    check_program(ops, arr.config().stack_depth).map_err(|e| e.to_string())?;
+    let work = ops.len() as u64 * arr.config().pixels() as u64;
+    let bar = if work > 50_000_000 {
+        ProgressBar::new(ops.len() as u64)
+    } else {
+        ProgressBar::hidden()
+    };
+    bar.set_style(
+        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} operations")
+            .map_err(|e| e.to_string())?,
+    );
+    for op in ops {
+        arr.step(op).map_err(|e| e.to_string())?;
+        bar.inc(1);
+    }
+    arr.finish();
+    bar.finish_and_clear();
+    Ok(())
 }
 
 /// The scene colour register G of every pixel, through the palette.
