@@ -20,6 +20,13 @@ pub fn write_atomic(
         fill(&mut buf).map_err(err)?;
         buf.flush().map_err(err)?;
     }
+    // A temporary file is created private; the output is an ordinary file.
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = std::fs::Permissions::from_mode(0o644);
+        tmp.as_file().set_permissions(mode).map_err(err)?;
+    }
     tmp.persist(path).map_err(|e| err(e.error))?;
     Ok(())
 }

@@ -155,3 +155,137 @@ impl Recorder {
         w.flush()
     }
 }
+
+/// One row of the SVG timing diagram: its label, bit width and (time, value) changes.
+struct Trace {
+    name: String,
+    width: u32,
+    changes: Vec<(u64, u64)>,
+}
+
+impl Recorder {
+    fn traces(&self, probe: usize) -> Vec<Trace> {
+        let sigs = pixel_signals(&self.cfg);
+        let mut rows: Vec<Trace> = [("stage", 3u32), ("bit", 6)]
+            .iter()
+            .map(|(n, w)| Trace {
+                name: n.to_string(),
+                width: *w,
+                changes: vec![],
+            })
+            .chain(sigs.iter().map(|(n, w)| Trace {
+                name: n.to_string(),
+                width: *w,
+                changes: vec![],
+            }))
+            .collect();
+        let push = |t: &mut Trace, at: u64, v: u64| {
+            if t.changes.last().is_none_or(|l| l.1 != v) {
+                t.changes.push((at, v));
+            }
+        };
+        for (t, s, b) in &self.globals {
+            push(&mut rows[0], *t, *s as u64);
+            push(&mut rows[1], *t, *b as u64);
+        }
+        for (t, _, p) in self.samples.iter().filter(|s| s.1 == probe) {
+            for (j, v) in pixel_values(p).into_iter().enumerate() {
+                push(&mut rows[2 + j], *t, v);
+            }
+        }
+        rows
+    }
+
+    /// A timing diagram of probe `probe` over clocks `t0..=t1` as SVG: one row per signal,
+    /// one-bit signals as waves, wider ones as buses labelled where there is room.
+    pub fn write_svg<W: Write>(
+        &self,
+        mut out: W,
+        probe: usize,
+        t0: u64,
+        t1: u64,
+    ) -> io::Result<()> {
+        let (label, px, row_h) = (70.0, 10.0, 26.0);
+        let rows = self.traces(probe);
+        let width = label + (t1 - t0 + 1) as f64 * px + 10.0;
+        let height = rows.len() as f64 * row_h + 44.0;
+        let x = |t: u64| label + (t.clamp(t0, t1 + 1) - t0) as f64 * px;
+        let (xp, yp) = self.probes.get(probe).copied().unwrap_or((0, 0));
+        writeln!(
+            out,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width:.0}\" height=\"{height:.0}\" \
+             font-family=\"monospace\" font-size=\"10\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n\
+             <text x=\"4\" y=\"14\">pixel ({xp},{yp}), clocks {t0}..{t1}</text>"
+        )?;
+        for t in (t0..=t1).filter(|t| t % 8 == 0) {
+            writeln!(
+                out,
+                "<line x1=\"{0:.1}\" y1=\"20\" x2=\"{0:.1}\" y2=\"{1:.0}\" stroke=\"#eee\"/>",
+                x(t),
+                height - 14.0
+            )?;
+            if t % 32 == 0 {
+                let (tx, ty) = (x(t) - 4.0, height - 3.0);
+                writeln!(out, "<text x=\"{tx:.1}\" y=\"{ty:.0}\">{t}</text>")?;
+            }
+        }
+        for (i, r) in rows.iter().enumerate() {
+            let (top, bot) = (
+                24.0 + i as f64 * row_h,
+                24.0 + i as f64 * row_h + row_h - 8.0,
+            );
+            writeln!(
+                out,
+                "<text x=\"4\" y=\"{:.1}\">{}</text>",
+                bot - 4.0,
+                r.name
+            )?;
+            let spans: Vec<(u64, u64, u64)> = r
+                .changes
+                .iter()
+                .enumerate()
+                .map(|(k, (t, v))| (*t, r.changes.get(k + 1).map_or(t1 + 1, |n| n.0), *v))
+                .filter(|(a, b, _)| *b > t0 && *a <= t1)
+                .collect();
+            for (a, b, v) in spans {
+                let (xa, xb) = (x(a), x(b));
+                if r.width == 1 {
+                    let y = if v == 1 { top } else { bot };
+                    writeln!(out, "<line x1=\"{xa:.1}\" y1=\"{y}\" x2=\"{xb:.1}\" y2=\"{y}\" stroke=\"#06c\"/>")?;
+                    writeln!(out, "<line x1=\"{xa:.1}\" y1=\"{top}\" x2=\"{xa:.1}\" y2=\"{bot}\" stroke=\"#06c\" stroke-width=\"0.3\"/>")?;
+                } else {
+                    writeln!(
+                        out,
+                        "<rect x=\"{xa:.1}\" y=\"{top}\" width=\"{:.1}\" height=\"{:.1}\" fill=\"#f4f8ff\" stroke=\"#06c\" stroke-width=\"0.6\"/>",
+                        xb - xa,
+                        bot - top
+                    )?;
+                    let text = self.show(&r.name, v);
+                    if (xb - xa) > 7.0 * text.len() as f64 {
+                        writeln!(
+                            out,
+                            "<text x=\"{:.1}\" y=\"{:.1}\">{text}</text>",
+                            xa + 2.0,
+                            bot - 5.0
+                        )?;
+                    }
+                }
+            }
+        }
+        writeln!(out, "</svg>")
+    }
+
+    /// A value as a reader wants it: depth registers in depth units, others in decimal.
+    fn show(&self, name: &str, v: u64) -> String {
+        let fmt = self.cfg.fmt;
+        if !["A", "F", "B", "C"].contains(&name) {
+            return v.to_string();
+        }
+        let raw = fmt.wrap(v as i64);
+        if raw == fmt.max_word() {
+            "max".into()
+        } else {
+            format!("{:.2}", fmt.to_real(raw))
+        }
+    }
+}

@@ -68,8 +68,14 @@ pub struct ArrayArgs {
     #[arg(long, requires = "probe")]
     pub vcd: Option<PathBuf>,
     /// Pixels to probe: "x,y;x,y".
-    #[arg(long, value_parser = parse_probes, requires = "vcd")]
+    #[arg(long, value_parser = parse_probes)]
     pub probe: Option<Probes>,
+    /// Write an SVG timing diagram of the first probed pixel.
+    #[arg(long, requires = "probe")]
+    pub wave: Option<PathBuf>,
+    /// Clocks the timing diagram shows, FIRST..LAST.
+    #[arg(long, default_value = "0..120", value_parser = parse_range)]
+    pub wave_clocks: (u64, u64),
 }
 
 /// Probed pixels, as given to `--probe`.
@@ -95,6 +101,20 @@ pub fn parse_word(s: &str) -> Result<WordFormat, String> {
     };
     let n = |v: &str| v.trim().parse::<u32>().map_err(|e| format!("{v:?}: {e}"));
     WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| e.to_string())
+}
+
+pub fn parse_range(s: &str) -> Result<(u64, u64), String> {
+    let (a, b) = s
+        .split_once("..")
+        .ok_or("expected FIRST..LAST, e.g. 0..120")?;
+    let n = |v: &str| v.trim().parse::<u64>().map_err(|e| format!("{v:?}: {e}"));
+    let (a, b) = (n(a)?, n(b)?);
+    if a > b || b - a > 100_000 {
+        return Err(format!(
+            "{a}..{b}: need FIRST <= LAST and at most 100000 clocks"
+        ));
+    }
+    Ok((a, b))
 }
 
 pub fn parse_probes(s: &str) -> Result<Probes, String> {
@@ -167,10 +187,17 @@ impl ArrayArgs {
         Ok(arr)
     }
 
-    /// Write the VCD if one was asked for.
-    pub fn write_vcd(&self, arr: &mut dyn Array) -> Result<(), String> {
-        if let (Some(path), Some(rec)) = (&self.vcd, arr.take_probe()) {
+    /// Write the VCD and the SVG timing diagram, if asked for.
+    pub fn write_waves(&self, arr: &mut dyn Array) -> Result<(), String> {
+        let Some(rec) = arr.take_probe() else {
+            return Ok(());
+        };
+        if let Some(path) = &self.vcd {
             write_atomic(path, |w| rec.write_vcd(w))?;
+        }
+        if let Some(path) = &self.wave {
+            let (t0, t1) = self.wave_clocks;
+            write_atomic(path, |w| rec.write_svg(w, 0, t0, t1))?;
         }
         Ok(())
     }

@@ -21,7 +21,8 @@ use super::array_args::ArrayArgs;
 #[command(after_help = "Examples:\n  \
     csgpix render vectors/thesis/cube.dl -o cube.png\n  \
     csgpix render vectors/thesis/box1.dl vectors/thesis/box2.dl --model word --json -o boxes.png\n  \
-    csgpix render vectors/thesis/cube.dl --vcd cube.vcd --probe '120,100;10,10' -o cube.png")]
+    csgpix render vectors/thesis/cube.dl --vcd cube.vcd --probe '120,100;10,10' -o cube.png\n  \
+    csgpix render vectors/thesis/cube.dl --probe 120,100 --wave cube.svg --wave-clocks 0..120 -o cube.png")]
 pub struct Args {
     /// Display-list files (thesis §5.2); several objects are composed by the second stage.
     #[arg(required = true)]
@@ -69,7 +70,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     run_with_progress(arr.as_mut(), &ops)?;
     let wall = t0.elapsed().as_secs_f64();
     write_png(&a.out, &arr.state())?;
-    a.array.write_vcd(arr.as_mut())?;
+    a.array.write_waves(arr.as_mut())?;
     let report = Report {
         model: a.array.model.name(),
         equations: a.array.equations()?.name,
