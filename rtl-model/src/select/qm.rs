@@ -4,11 +4,11 @@
 //! module is the machine check: [`minimize`] computes a minimum sum-of-products cover of a
 //! truth table with don't-cares, so the printed equations can be compared with a true optimum.
 //!
-//! The method is the textbook one. All prime implicants of on ∪ dc come from repeatedly
-//! merging cubes that differ in one literal. A cheapest set of primes covering the on-set is
-//! then found by branch and bound: essential primes and row/column dominance shrink the table,
-//! a Lagrangian lower bound prunes and orders the branches. Every container is ordered, so the
-//! result is fully deterministic.
+//! The prime implicants of on ∪ dc come from the classic tabular method: repeatedly merge
+//! cubes that differ in one literal. A cheapest set of primes covering the on-set is then
+//! found exactly by branch and bound: essential primes and row/column dominance shrink the
+//! table, a Lagrangian lower bound prunes and orders the branches. Every container is ordered
+//! and every tie broken by index, so the result is fully deterministic.
 
 use std::collections::BTreeSet;
 
@@ -22,9 +22,9 @@ use super::sop::Cube;
 /// (deterministic) search order picks one. The cubes come sorted by `(care, value)`. An empty
 /// vector is the constant 0, a single cube with `care == 0` the constant 1.
 ///
-/// Intended for `n <= 12`. Exact covering is exponential in the worst case; functions of up
-/// to 8 variables with structure take milliseconds, random ones up to about a second. Never
-/// panics.
+/// Intended for `n <= 12`; never panics. Exact covering is exponential in the worst case:
+/// structured functions of up to 8 variables take milliseconds, but random ones with a dense
+/// on-set (75% and more of the minterms) can take seconds.
 pub fn minimize(n: usize, on: &[u32], dc: &[u32]) -> Vec<Cube> {
     let mask = var_mask(n);
     let on: Vec<u32> = on
@@ -161,8 +161,6 @@ impl BitRows {
     }
 }
 
-pub static NODES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-
 /// The covering problem: rows are the useful primes, columns the on-set minterms.
 struct Table {
     cubes: Vec<Cube>,
@@ -204,30 +202,19 @@ impl Table {
         (0..self.columns).for_each(|j| open[j / 64] |= 1 << (j % 64));
         let live: Vec<usize> = (0..self.cubes.len()).collect();
         let unit = vec![1; self.cubes.len()];
+        let none = Prices::default();
         for k in 1..=self.columns {
             let mut fewest = Search::new(self, &unit, k as u64 + 1, k, Vec::new());
             fewest.first_only = true;
-            fewest.run(
-                live.clone(),
-                open.clone(),
-                &mut Vec::new(),
-                &[vec![], vec![]],
-            );
+            fewest.run(live.clone(), open.clone(), &mut Vec::new(), &none);
             if fewest.best.is_empty() {
                 continue;
-            }
-            if std::env::var("QMDBG").is_ok() {
-                eprintln!(
-                    "  phase1 k {} nodes {}",
-                    k,
-                    NODES.load(std::sync::atomic::Ordering::Relaxed)
-                );
             }
             let lits: Vec<u64> = self.cubes.iter().map(|c| c.literals().into()).collect();
             let limit = fewest.best.iter().map(|&r| lits[r]).sum();
             let mut shortest = Search::new(self, &lits, limit, k, fewest.best);
             shortest.count_bound = true;
-            shortest.run(live, open, &mut Vec::new(), &[vec![], vec![]]);
+            shortest.run(live, open, &mut Vec::new(), &none);
             return shortest.best;
         }
         live // Not reached: one prime per on minterm always covers.
@@ -245,6 +232,8 @@ struct View {
     col_rows: BitRows,
     /// For each row, the columns it covers.
     row_cols: BitRows,
+    /// Number of columns of the whole table.
+    width: usize,
 }
 
 impl View {
@@ -265,6 +254,7 @@ impl View {
             rows: live.to_vec(),
             col_rows,
             row_cols,
+            width: table.columns,
         }
     }
 
@@ -317,15 +307,15 @@ impl View {
         (0..m).map(dominated).collect()
     }
 
-    /// Lagrangian lower bound on the weight still needed to cover the open columns, and
-    /// each row's reduced weight. `weights` is by row position.
+    /// Lagrangian lower bound on the weight still needed to cover the open columns, with
+    /// row `i` weighing `weights[i]`.
     ///
     /// Given a price `u_k >= 0` per column, every cover weighs at least
     /// `sum(u) + sum(min(0, c_r))`, where the reduced weight `c_r` of a row is its weight
-    /// minus the prices of its columns. Prices start from a feasible dual solution and
-    /// improve by subgradient steps, aiming at `budget`, the most a useful completion may
-    /// weigh.
-    fn lower_bound(&self, weights: &[f64], budget: f64, warm: &[f64]) -> (f64, Vec<f64>, Vec<f64>) {
+    /// minus the prices of its columns. Prices start from the better of a feasible dual
+    /// solution and the `warm` prices (by column index; may be empty), then improve by
+    /// subgradient steps aiming at `budget`, the most a useful completion may weigh.
+    fn lower_bound(&self, weights: &[f64], budget: f64, warm: &[f64]) -> Bound {
         let mut start = vec![0];
         let mut cols = Vec::new();
         for i in 0..self.rows.len() {
@@ -351,11 +341,7 @@ impl View {
             }
         }
         let (mut scale, mut stall) = (1.0, 0);
-        for _ in 0..std::env::var("QMIT")
-            .ok()
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(BOUND_STEPS)
-        {
+        for _ in 0..BOUND_STEPS {
             if best.0 > budget {
                 break;
             }
@@ -385,8 +371,16 @@ impl View {
                 .zip(&g)
                 .for_each(|(y, d)| *y = (*y + step * d).max(0.0));
         }
-        let c = reduced(&best.1);
-        (best.0, c, best.1)
+        let mut prices = vec![0.0; self.width];
+        self.cols
+            .iter()
+            .zip(&best.1)
+            .for_each(|(&j, &y)| prices[j] = y);
+        Bound {
+            value: best.0,
+            reduced: reduced(&best.1),
+            prices,
+        }
     }
 
     /// A feasible dual solution: raise each column's price, fewest rows first, until one of
@@ -413,6 +407,31 @@ impl View {
 
 /// Subgradient steps per lower bound.
 const BOUND_STEPS: usize = 60;
+
+/// A Lagrangian lower bound at one search node.
+struct Bound {
+    value: f64,
+    /// Reduced weight of each row (by position in the view).
+    reduced: Vec<f64>,
+    /// The column prices that give it, by column index.
+    prices: Vec<f64>,
+}
+
+impl Bound {
+    /// Which rows can be part of a completion weighing at most `budget`: forcing a row in
+    /// adds its reduced weight to the bound.
+    fn useful(&self, budget: f64) -> impl Iterator<Item = bool> + '_ {
+        (self.reduced.iter()).map(move |c| self.value + c.max(0.0) <= budget)
+    }
+}
+
+/// Column prices of a node's bounds, handed to its children to start theirs from: a child's
+/// table is part of its parent's, so the prices stay good. Empty when there are none yet.
+#[derive(Default)]
+struct Prices {
+    weight: Vec<f64>,
+    rows: Vec<f64>,
+}
 
 /// Branch-and-bound search for a cheapest cover under one weighting of the rows.
 struct Search<'a> {
@@ -456,12 +475,17 @@ impl<'a> Search<'a> {
         mut live: Vec<usize>,
         mut open: Vec<u64>,
         chosen: &mut Vec<usize>,
-        warm: &[Vec<f64>; 2],
+        warm: &Prices,
     ) {
-        NODES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let depth = chosen.len();
-        if let Some(view) = self.reduce(&mut live, &mut open, chosen) {
-            self.branch(&view, &open, chosen, warm);
+        let mut narrowed: Option<Prices> = None;
+        while let Some(view) = self.reduce(&mut live, &mut open, chosen) {
+            let warm = narrowed.as_ref().unwrap_or(warm);
+            let Some((rows, prices)) = self.branch(&view, &open, chosen, warm) else {
+                break;
+            };
+            live = rows;
+            narrowed = Some(prices);
         }
         chosen.truncate(depth);
     }
@@ -516,66 +540,65 @@ impl<'a> Search<'a> {
 
     /// Check the node against the Lagrangian bounds on weight and, with `count_bound`, on
     /// the number of rows. Returns `None` when no completion can be useful, else which rows
-    /// still can be part of one, and the reduced weights (both by row position).
+    /// can still be part of one, the reduced weights (both by row position) and the prices
+    /// for the children.
     fn bound(
         &self,
         view: &View,
         chosen: &[usize],
-        warm: &[Vec<f64>; 2],
-    ) -> Option<(Vec<bool>, Vec<f64>, [Vec<f64>; 2])> {
+        warm: &Prices,
+    ) -> Option<(Vec<bool>, Vec<f64>, Prices)> {
         let cost: u64 = chosen.iter().map(|&r| self.weights[r]).sum();
         let weights: Vec<f64> = view.rows.iter().map(|&r| self.weights[r] as f64).collect();
         // Weights are whole numbers; the epsilon absorbs rounding in the bound.
         let budget = (self.limit - cost - 1) as f64 + 1e-6;
-        let (lb, reduced, u0) = view.lower_bound(&weights, budget, &warm[0]);
-        let mut next = [vec![0.0; self.table.columns], vec![]];
-        view.cols
-            .iter()
-            .zip(&u0)
-            .for_each(|(&j, &y)| next[0][j] = y);
-        if lb > budget {
+        let by_weight = view.lower_bound(&weights, budget, &warm.weight);
+        if by_weight.value > budget {
             return None;
         }
-        // A row whose reduced weight alone lifts the bound past the budget is useless here.
-        let mut useful: Vec<bool> = reduced.iter().map(|c| lb + c.max(0.0) <= budget).collect();
+        let mut useful: Vec<bool> = by_weight.useful(budget).collect();
+        let mut prices = Prices {
+            weight: by_weight.prices,
+            rows: Vec::new(),
+        };
         if self.count_bound {
             let budget = (self.max_rows - chosen.len()) as f64 + 1e-6;
-            let (lb, reduced, u1) = view.lower_bound(&vec![1.0; weights.len()], budget, &warm[1]);
-            next[1] = vec![0.0; self.table.columns];
-            view.cols
-                .iter()
-                .zip(&u1)
-                .for_each(|(&j, &y)| next[1][j] = y);
-            if lb > budget {
+            let by_rows = view.lower_bound(&vec![1.0; weights.len()], budget, &warm.rows);
+            if by_rows.value > budget {
                 return None;
             }
-            for (u, c) in useful.iter_mut().zip(&reduced) {
-                *u &= lb + c.max(0.0) <= budget;
-            }
+            (useful.iter_mut())
+                .zip(by_rows.useful(budget))
+                .for_each(|(u, v)| *u &= v);
+            prices.rows = by_rows.prices;
         }
-        Some((useful, reduced, next))
+        Some((useful, by_weight.reduced, prices))
     }
 
     /// Record a complete cover, or prune, or split on the column with fewest rows: one
     /// branch per row covering it, cheapest reduced weight first, each excluding the rows
-    /// tried before it.
-    fn branch(&mut self, view: &View, open: &[u64], chosen: &mut Vec<usize>, warm: &[Vec<f64>; 2]) {
+    /// tried before it. When the bound shows some rows useless, instead returns the others
+    /// (and the prices found), to reduce the node again.
+    fn branch(
+        &mut self,
+        view: &View,
+        open: &[u64],
+        chosen: &mut Vec<usize>,
+        warm: &Prices,
+    ) -> Option<(Vec<usize>, Prices)> {
         let cost: u64 = chosen.iter().map(|&r| self.weights[r]).sum();
         if cost >= self.limit || chosen.len() > self.max_rows {
-            return;
+            return None;
         }
         if view.cols.is_empty() {
             self.limit = cost;
             self.best.clone_from(chosen);
-            return;
+            return None;
         }
-        let Some((useful, reduced, warm)) = self.bound(view, chosen, warm) else {
-            return;
-        };
+        let (useful, reduced, prices) = self.bound(view, chosen, warm)?;
         if useful.contains(&false) {
             let live = (0..view.rows.len()).filter(|&i| useful[i]);
-            let live = live.map(|i| view.rows[i]).collect();
-            return self.run(live, open.to_vec(), chosen, &warm);
+            return Some((live.map(|i| view.rows[i]).collect(), prices));
         }
         let size = view.col_rows.counts(view.cols.len());
         let k = (0..size.len()).min_by_key(|&k| (size[k], k)).unwrap_or(0);
@@ -584,16 +607,17 @@ impl<'a> Search<'a> {
         let mut rest = view.rows.clone();
         for i in candidates {
             if self.first_only && !self.best.is_empty() {
-                return;
+                break;
             }
             let r = view.rows[i];
             rest.retain(|&x| x != r);
             let cover = self.table.covers.row(r);
             let next: Vec<u64> = open.iter().zip(cover).map(|(o, c)| o & !c).collect();
             chosen.push(r);
-            self.run(rest.clone(), next, chosen, &warm);
+            self.run(rest.clone(), next, chosen, &prices);
             chosen.pop();
         }
+        None
     }
 }
 
@@ -772,85 +796,5 @@ mod tests {
                 prop_assert_eq!(got, brute_min_cost(&useful, &on));
             }
         }
-    }
-}
-#[doc(hidden)]
-pub fn __timing() {
-    let mut seed: u64 = 7;
-    let mut lcg = || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 33) as u32
-    };
-    for (n, on_pct, dc_pct) in [
-        (8, 50, 25),
-        (8, 50, 0),
-        (8, 25, 25),
-        (8, 25, 50),
-        (8, 10, 30),
-        (8, 75, 10),
-        (8, 40, 40),
-        (8, 90, 0),
-    ] {
-        let mut worst = std::time::Duration::ZERO;
-        let mut tot = std::time::Duration::ZERO;
-        for _ in 0..10 {
-            let (mut on, mut dc) = (Vec::new(), Vec::new());
-            for m in 0..1u32 << n {
-                let x = lcg() % 100;
-                if x < on_pct {
-                    on.push(m)
-                } else if x < on_pct + dc_pct {
-                    dc.push(m)
-                }
-            }
-            let t = std::time::Instant::now();
-            let c = minimize(n, &on, &dc);
-            let e = t.elapsed();
-            worst = worst.max(e);
-            tot += e;
-            eprintln!(
-                "{:?} {} nodes {}",
-                e,
-                c.len(),
-                NODES.swap(0, std::sync::atomic::Ordering::Relaxed)
-            );
-        }
-        eprintln!("random n={n} on={on_pct}% dc={dc_pct}%: worst {worst:?} total {tot:?}");
-    }
-    return;
-    for n in [8usize, 10, 12] {
-        let mut worst = std::time::Duration::ZERO;
-        let mut tot = std::time::Duration::ZERO;
-        let mut maxc = 0;
-        for _ in 0..20 {
-            let k = 2 + lcg() % 6;
-            let mask = (1u32 << n) - 1;
-            let cubes: Vec<Cube> = (0..k)
-                .map(|_| {
-                    let care = lcg() & lcg() & mask | (1 << (lcg() % n as u32));
-                    Cube {
-                        care,
-                        value: lcg() & care,
-                    }
-                })
-                .collect();
-            let (mut on, mut dc) = (Vec::new(), Vec::new());
-            for m in 0..1u32 << n {
-                if cubes.iter().any(|c| c.contains(m)) {
-                    on.push(m)
-                } else if lcg() % 10 == 0 {
-                    dc.push(m)
-                }
-            }
-            let t = std::time::Instant::now();
-            let c = minimize(n, &on, &dc);
-            let e = t.elapsed();
-            worst = worst.max(e);
-            tot += e;
-            maxc = maxc.max(c.len());
-        }
-        eprintln!("structured n={n}: worst {worst:?} total {tot:?} max cubes {maxc}");
     }
 }

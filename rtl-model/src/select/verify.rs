@@ -2,7 +2,7 @@
 
 use serde::Serialize;
 
-use super::pla::{Out, Pla};
+use super::pla::{expand, Out, Pla};
 use super::sop::Var;
 use super::{EquationSet, Signal, Table};
 
@@ -87,16 +87,11 @@ fn verify_signal(set: &EquationSet, s: Signal, vars: &[Var], pla: &Pla, j: usize
             Out::DontCare => continue,
         };
         rep.rows += 1;
-        let mut env = [false; 10];
-        for (v, b) in vars.iter().zip(&row.inputs) {
-            env[*v as usize] = b.unwrap_or(false);
-        }
         // A '-' input in a care row means both values: check each.
         for m in expand(&row.inputs) {
+            let mut env = [false; 10];
             for (i, v) in vars.iter().enumerate() {
-                if row.inputs[i].is_none() {
-                    env[*v as usize] = m >> i & 1 == 1;
-                }
+                env[*v as usize] = m >> i & 1 == 1;
             }
             let got = set.sop(s).eval_bits(&env);
             if got != expected {
@@ -115,16 +110,4 @@ fn verify_signal(set: &EquationSet, s: Signal, vars: &[Var], pla: &Pla, j: usize
         }
     }
     rep
-}
-
-/// The assignments of the `-` inputs of a row, as bit patterns over input positions.
-fn expand(inputs: &[Option<bool>]) -> Vec<u32> {
-    let free: Vec<usize> = (0..inputs.len()).filter(|&i| inputs[i].is_none()).collect();
-    (0..1u32 << free.len())
-        .map(|k| {
-            free.iter()
-                .enumerate()
-                .fold(0, |m, (b, &i)| m | (k >> b & 1) << i)
-        })
-        .collect()
 }
