@@ -13,7 +13,7 @@ use rtl_model::WordFormat;
 use crate::display_list::DisplayList;
 
 /// The colour Put 0 writes when a front plane is clipped by the screen: the object's inside.
-/// Code 7 is light grey in the palette (docs/formats.md).
+/// Code 7 is light grey in the palette (`src/palette.rs`).
 pub const INTERIOR_COLOUR: u32 = 7;
 
 /// A plane the array cannot take, located by plane index (0-based) and field (0-based: Z0,

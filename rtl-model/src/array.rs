@@ -49,21 +49,9 @@ pub struct Sequencer {
 }
 
 impl Sequencer {
-    /// Validate `op` against the stack and the latch; returns the stack slot it touches.
+    /// Validate `op` against the stack and the latch.
     pub fn admit(&self, op: &Op, index: usize, depth: usize) -> Result<(), ProgramError> {
-        let (pop, push) = stack_effect(op);
-        let after = self
-            .sp
-            .checked_sub(pop)
-            .ok_or(ProgramError::StackUnderflow { op: index })?
-            + push;
-        if after > depth {
-            return Err(ProgramError::StackOverflow { op: index, depth });
-        }
-        if matches!(op, Op::ClipApply) && self.pending.is_some() {
-            return Err(ProgramError::LatchBusy { op: index });
-        }
-        Ok(())
+        admit(self.sp, self.pending.is_some(), op, index, depth).map(|_| ())
     }
 
     /// Clocks of a streaming window: N_D, plus DEPGEN's fill before the first one that streams.
@@ -77,22 +65,87 @@ impl Sequencer {
     }
 }
 
+/// The stack pointer after `op`, or why `op` cannot run: it would pop an empty stack, push
+/// past `depth`, or (`ClipApply`) overwrite a select code still waiting to be carried out.
+fn admit(
+    sp: usize,
+    busy: bool,
+    op: &Op,
+    index: usize,
+    depth: usize,
+) -> Result<usize, ProgramError> {
+    let (pop, push) = stack_effect(op);
+    let after = sp
+        .checked_sub(pop)
+        .ok_or(ProgramError::StackUnderflow { op: index })?
+        + push;
+    if after > depth {
+        return Err(ProgramError::StackOverflow { op: index, depth });
+    }
+    if matches!(op, Op::ClipApply) && busy {
+        return Err(ProgramError::LatchBusy { op: index });
+    }
+    Ok(after)
+}
+
 /// Check a whole program before running it: the stack stays within `depth` and `ClipApply`
 /// never overwrites a select code still waiting to be carried out. Returns the stack depth used.
 pub fn check_program(ops: &[Op], depth: usize) -> Result<usize, ProgramError> {
-    let mut seq = Sequencer::default();
-    let mut need = 0;
+    let (mut sp, mut busy, mut need) = (0, false, 0);
     for (i, op) in ops.iter().enumerate() {
-        seq.admit(op, i, depth)?;
-        let (pop, push) = stack_effect(op);
-        seq.sp = seq.sp - pop + push;
-        need = need.max(seq.sp);
-        seq.pending = match op {
-            Op::ClipApply => Some(crate::program::Transfer::clip_apply()),
-            Op::ClipAnd | Op::ClipOr | Op::ClipNot => seq.pending,
-            Op::ClipPlane { .. } => None,
-            _ => Some(crate::program::Transfer::clip_apply()),
+        sp = admit(sp, busy, op, i, depth)?;
+        need = need.max(sp);
+        // Windows that latch a code leave it waiting; a clipping plane's window carries the
+        // previous one out and latches none; the stack operators leave the latch alone.
+        busy = match op {
+            Op::ClipAnd | Op::ClipOr | Op::ClipNot => busy,
+            Op::ClipPlane { .. } => false,
+            _ => true,
         };
     }
     Ok(need)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::program::Coeffs;
+
+    fn clip() -> Op {
+        Op::ClipPlane {
+            coeffs: Coeffs {
+                c0: 0,
+                dx: 0,
+                dy: 0,
+            },
+            h: true,
+            y: false,
+            x: false,
+        }
+    }
+
+    #[test]
+    fn programs_that_break_the_stack_or_the_latch_are_refused() {
+        let close = Op::Close { l: false };
+        assert_eq!(
+            check_program(&[clip(), clip(), Op::ClipAnd, Op::ClipApply], 2),
+            Ok(2)
+        );
+        assert_eq!(
+            check_program(&[clip(), clip(), clip()], 2),
+            Err(ProgramError::StackOverflow { op: 2, depth: 2 })
+        );
+        assert_eq!(
+            check_program(&[clip(), Op::ClipOr], 4),
+            Err(ProgramError::StackUnderflow { op: 1 })
+        );
+        assert_eq!(
+            check_program(&[clip(), close, Op::ClipApply], 4),
+            Err(ProgramError::LatchBusy { op: 2 })
+        );
+        assert_eq!(
+            check_program(&[close, clip(), Op::ClipNot, Op::ClipApply], 4),
+            Ok(1)
+        );
+    }
 }

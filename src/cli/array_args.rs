@@ -140,6 +140,8 @@ impl ArrayArgs {
     pub fn config(&self) -> Result<ArrayConfig, String> {
         let mut cfg = ArrayConfig::new(self.size.0, self.size.1);
         cfg.fmt = self.word;
+        // Colour registers move within a window, so a very short word narrows them too.
+        cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
         cfg.stack_depth = self.stack_depth;
         cfg.check()?;
         Ok(cfg)
@@ -156,6 +158,16 @@ impl ArrayArgs {
             ),
             (Equations::Derived, TiesArg::Keep) => derive_with_ties(Ties::Keep),
             (Equations::Derived, TiesArg::Put) => derive_with_ties(Ties::Put),
+        }
+    }
+
+    /// The name of the equation set [`ArrayArgs::equations`] builds.
+    pub fn equations_name(&self) -> String {
+        let eq: Equations = self.equations.into();
+        match self.ties {
+            TiesArg::Minimal => eq.name().into(),
+            TiesArg::Keep => format!("{}, ties keep", eq.name()),
+            TiesArg::Put => format!("{}, ties put", eq.name()),
         }
     }
 

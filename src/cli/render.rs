@@ -73,7 +73,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     a.array.write_waves(arr.as_mut())?;
     let report = Report {
         model: a.array.model.name(),
-        equations: a.array.equations()?.name,
+        equations: a.array.equations_name(),
         width: cfg.width,
         height: cfg.height,
         objects: lists.len(),
