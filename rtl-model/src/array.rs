@@ -140,7 +140,7 @@ mod tests {
             Err(ProgramError::StackUnderflow { op: 1 })
         );
         assert_eq!(
-            check_program(&[clip(), close, Op::ClipApply], 4),
+            check_program(&[clip(), close.clone(), Op::ClipApply], 4),
             Err(ProgramError::LatchBusy { op: 2 })
         );
         assert_eq!(
