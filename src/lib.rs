@@ -1,5 +1,6 @@
 //! csgpix: scenes, formats and studies around the pixel-processor array of `rtl-model`.
 
+pub mod clip_expr;
 pub mod compile;
 pub mod display_list;
 pub mod output;
