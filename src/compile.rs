@@ -10,7 +10,8 @@
 use rtl_model::program::{Coeffs, Op};
 use rtl_model::WordFormat;
 
-use crate::display_list::DisplayList;
+use crate::clip_expr::Clip;
+use crate::display_list::{DisplayList, DlPlane};
 
 /// The colour Put 0 writes when a front plane is clipped by the screen: the object's inside.
 /// Code 7 is light grey in the palette (`src/palette.rs`).
@@ -104,6 +105,126 @@ pub fn scene_ops(
     for (i, dl) in lists.iter().enumerate() {
         ops.extend(object_ops(dl, fmt, colour_bits).map_err(|e| (i, e))?);
         ops.push(Op::Compose { p: false });
+    }
+    Ok(ops)
+}
+
+/// The planes of an object, or of its complement: the complement of a convex object is a
+/// concave hole whose front faces are the object's back faces, so H and L flip, and a
+/// perpendicular plane's inside (K ≥ 0) becomes its outside (K negated).
+fn planes(dl: &DisplayList, neg: bool) -> impl Iterator<Item = (usize, DlPlane)> + '_ {
+    dl.planes
+        .iter()
+        .cloned()
+        .enumerate()
+        .map(move |(i, mut p)| {
+            if neg {
+                p.l = !p.l;
+                if p.y {
+                    (p.z0, p.dzx, p.dzy) = (-p.z0, -p.dzx, -p.dzy);
+                } else {
+                    p.h = !p.h;
+                }
+            }
+            (i, p)
+        })
+}
+
+/// Draw one literal of a clipping function into F (first stage and close).
+fn literal_ops(
+    dl: &DisplayList,
+    neg: bool,
+    fmt: &WordFormat,
+    colour_bits: u32,
+) -> Result<Vec<Op>, CompileError> {
+    let flipped = DisplayList {
+        planes: planes(dl, neg).map(|p| p.1).collect(),
+        terminator: dl.terminator,
+    };
+    object_ops(&flipped, fmt, colour_bits)
+}
+
+/// Push "inside the literal's volume" on the clipping stack: the AND of its planes' partial
+/// answers (a convex object is the intersection of its half-spaces), negated for a complement.
+fn volume_ops(
+    dl: &DisplayList,
+    neg: bool,
+    fmt: &WordFormat,
+    ops: &mut Vec<Op>,
+) -> Result<(), CompileError> {
+    for (i, p) in dl.planes.iter().enumerate() {
+        let coeffs = coeffs(fmt, p.z0, p.dzx, p.dzy).map_err(|(field, msg)| CompileError {
+            plane: i,
+            field,
+            msg,
+        })?;
+        ops.push(Op::ClipPlane {
+            coeffs,
+            h: p.h,
+            y: p.y,
+            x: false,
+        });
+        if i > 0 {
+            ops.push(Op::ClipAnd);
+        }
+    }
+    if neg {
+        ops.push(Op::ClipNot);
+    }
+    Ok(())
+}
+
+/// The thesis evaluation of a clipping function (§5.2.1): for every literal of every product
+/// of its sum-of-products form, draw the literal, clip it by the other literals of the product
+/// and compose it into the scene. Errors name the list they came from.
+pub fn clip_scene_ops(
+    lists: &[DisplayList],
+    expr: &Clip,
+    fmt: &WordFormat,
+    colour_bits: u32,
+) -> Result<Vec<Op>, (usize, CompileError)> {
+    if let Some(i) = lists.iter().position(|l| l.is_concave()) {
+        let msg = "a concave display list cannot be a clipping volume".to_string();
+        return Err((
+            i,
+            CompileError {
+                plane: 0,
+                field: 4,
+                msg,
+            },
+        ));
+    }
+    let products = expr.products().map_err(|msg| {
+        (
+            0,
+            CompileError {
+                plane: 0,
+                field: 0,
+                msg,
+            },
+        )
+    })?;
+    let mut ops = vec![];
+    for prod in &products {
+        for (k, &(obj, neg)) in prod.iter().enumerate() {
+            ops.extend(literal_ops(&lists[obj], neg, fmt, colour_bits).map_err(|e| (obj, e))?);
+            let others: Vec<&(usize, bool)> = prod
+                .iter()
+                .enumerate()
+                .filter(|(j, _)| *j != k)
+                .map(|x| x.1)
+                .collect();
+            for (n, &&(o, ng)) in others.iter().enumerate() {
+                volume_ops(&lists[o], ng, fmt, &mut ops).map_err(|e| (o, e))?;
+                if n > 0 {
+                    ops.push(Op::ClipAnd);
+                }
+            }
+            if !others.is_empty() {
+                ops.push(Op::ClipApply);
+            }
+            ops.push(Op::Compose { p: false });
+        }
     }
     Ok(ops)
 }

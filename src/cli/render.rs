@@ -4,7 +4,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
-use csgpix::compile::scene_ops;
+use csgpix::clip_expr::Clip;
+use csgpix::compile::{clip_scene_ops, scene_ops};
 use csgpix::display_list::{field_position, DisplayList};
 use csgpix::output::write_atomic;
 use csgpix::palette::rgb;
@@ -21,6 +22,7 @@ use super::array_args::ArrayArgs;
 #[command(after_help = "Examples:\n  \
     csgpix render vectors/thesis/cube.dl -o cube.png\n  \
     csgpix render vectors/thesis/box1.dl vectors/thesis/box2.dl --model word --json -o boxes.png\n  \
+    csgpix render vectors/thesis/box1.dl vectors/thesis/box2.dl --clip 'A.!B' -o fig5-1e.png\n  \
     csgpix render vectors/thesis/cube.dl --vcd cube.vcd --probe '120,100;10,10' -o cube.png\n  \
     csgpix render vectors/thesis/cube.dl --probe 120,100 --wave cube.svg --wave-clocks 0..120 -o cube.png")]
 pub struct Args {
@@ -32,6 +34,10 @@ pub struct Args {
     out: PathBuf,
     #[command(flatten)]
     array: ArrayArgs,
+    /// Clipping function over the objects, named A, B, … in the order given (§5.2.1), e.g.
+    /// "A.!B"; each literal is drawn, clipped by the rest of its product and composed.
+    #[arg(long)]
+    clip: Option<String>,
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
@@ -61,8 +67,17 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         texts.push(text);
     }
     let cfg = a.array.config()?;
-    let ops = scene_ops(&lists, &cfg.fmt, cfg.colour_bits).map_err(|(i, e)| {
-        let (line, col) = field_position(&texts[i], e.plane, e.field).unwrap_or((0, 0));
+    let compiled = match &a.clip {
+        None => scene_ops(&lists, &cfg.fmt, cfg.colour_bits),
+        Some(text) => {
+            let names: Vec<String> = (0..lists.len()).map(object_name).collect();
+            let expr =
+                Clip::parse(text, &names).map_err(|e| format!("--clip:1:{}: {}", e.col, e.msg))?;
+            clip_scene_ops(&lists, &expr, &cfg.fmt, cfg.colour_bits)
+        }
+    };
+    let ops = compiled.map_err(|(i, e)| {
+        let (line, col) = field_position(&texts[i], e.plane, e.field).unwrap_or((1, 1));
         format!("{}:{line}:{col}: {}", a.scenes[i].display(), e.msg)
     })?;
     let mut arr = a.array.build()?;
@@ -100,6 +115,14 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The name `--clip` uses for the `i`-th object: A … Z, then O26, O27, …
+pub fn object_name(i: usize) -> String {
+    match u8::try_from(i) {
+        Ok(n) if n < 26 => ((b'A' + n) as char).to_string(),
+        _ => format!("O{i}"),
+    }
 }
 
 /// Run a program, with a progress bar on a terminal when it is long enough to wait for.
