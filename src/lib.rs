@@ -5,3 +5,4 @@ pub mod compile;
 pub mod display_list;
 pub mod output;
 pub mod palette;
+pub mod solid;

@@ -1,0 +1,34 @@
+//! Scenes as CSG trees over convex solids: what the `.csg` reader produces and what projection
+//! turns into planes for the array.
+
+/// A convex polyhedron in scene coordinates.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConvexSolid {
+    pub vertices: Vec<[f64; 3]>,
+    /// Faces as vertex indices, counter-clockwise seen from outside (outward normals by the
+    /// right-hand rule).
+    pub faces: Vec<Vec<usize>>,
+    /// RGBA from `color(...)`, if any.
+    pub colour: Option<[f64; 4]>,
+    /// 1-based line of the node that made it, for messages.
+    pub line: usize,
+}
+
+/// A CSG tree whose leaves index [`CsgScene::solids`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum CsgNode {
+    Solid(usize),
+    Union(Vec<CsgNode>),
+    Intersection(Vec<CsgNode>),
+    /// The first child minus all the others.
+    Difference(Vec<CsgNode>),
+    /// Nothing (an empty group).
+    Empty,
+}
+
+/// A whole scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CsgScene {
+    pub solids: Vec<ConvexSolid>,
+    pub root: CsgNode,
+}
