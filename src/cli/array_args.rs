@@ -18,6 +18,8 @@ pub enum Model {
     Cycle,
     /// One word per pixel, no clock.
     Word,
+    /// Exact f64 ray casting of the same planes: the reference, not hardware.
+    Float,
 }
 
 impl Model {
@@ -25,6 +27,7 @@ impl Model {
         match self {
             Model::Cycle => "cycle",
             Model::Word => "word",
+            Model::Float => "float",
         }
     }
 }
@@ -177,6 +180,9 @@ impl ArrayArgs {
         let need = match self.model {
             Model::Cycle => CycleArray::memory_bytes(&cfg),
             Model::Word => WordArray::memory_bytes(&cfg),
+            Model::Float => {
+                return Err("the float model is not an array: it has no registers or clock".into())
+            }
         };
         let mib = need.div_ceil(1 << 20);
         if mib > self.max_memory {
@@ -190,8 +196,8 @@ impl ArrayArgs {
         }
         let set = self.equations()?;
         let mut arr: Box<dyn Array> = match self.model {
-            Model::Cycle => Box::new(CycleArray::new(cfg, set)),
             Model::Word => Box::new(WordArray::new(cfg, set)),
+            _ => Box::new(CycleArray::new(cfg, set)),
         };
         if let Some(p) = &self.probe {
             arr.attach_probe(Recorder::new(cfg, p.0.clone())?);

@@ -16,7 +16,8 @@ use rtl_model::Array;
 
 use serde::Serialize;
 
-use super::array_args::ArrayArgs;
+use super::array_args::{ArrayArgs, Model};
+use csgpix::float;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -67,25 +68,34 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         texts.push(text);
     }
     let cfg = a.array.config()?;
-    let compiled = match &a.clip {
+    let compiled = match clip_expr(&a, &lists)? {
         None => scene_ops(&lists, &cfg.fmt, cfg.colour_bits),
-        Some(text) => {
-            let names: Vec<String> = (0..lists.len()).map(object_name).collect();
-            let expr =
-                Clip::parse(text, &names).map_err(|e| format!("--clip:1:{}: {}", e.col, e.msg))?;
-            clip_scene_ops(&lists, &expr, &cfg.fmt, cfg.colour_bits)
-        }
+        Some(expr) => clip_scene_ops(&lists, &expr, &cfg.fmt, cfg.colour_bits),
     };
     let ops = compiled.map_err(|(i, e)| {
         let (line, col) = field_position(&texts[i], e.plane, e.field).unwrap_or((1, 1));
         format!("{}:{line}:{col}: {}", a.scenes[i].display(), e.msg)
     })?;
-    let mut arr = a.array.build()?;
     let t0 = Instant::now();
-    run_with_progress(arr.as_mut(), &ops)?;
+    let (image, cycles) = if a.array.model == Model::Float {
+        if a.array.probe.is_some() {
+            return Err("--probe needs an array model (cycle or word)".into());
+        }
+        let expr = clip_expr(&a, &lists)?;
+        let f = float::render(&lists, expr.as_ref(), cfg.width, cfg.height, &cfg.fmt);
+        (f.colour, 0)
+    } else {
+        let mut arr = a.array.build()?;
+        run_with_progress(arr.as_mut(), &ops)?;
+        a.array.write_waves(arr.as_mut())?;
+        let st = arr.state();
+        (
+            st.pixels.iter().map(|p| p.creg(CReg::G)).collect(),
+            arr.cycles(),
+        )
+    };
     let wall = t0.elapsed().as_secs_f64();
-    write_png(&a.out, &arr.state())?;
-    a.array.write_waves(arr.as_mut())?;
+    write_png(&a.out, cfg.width, cfg.height, &image)?;
     let report = Report {
         model: a.array.model.name(),
         equations: a.array.equations_name(),
@@ -94,8 +104,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         objects: lists.len(),
         planes: lists.iter().map(|l| l.planes.len()).sum(),
         operations: ops.len(),
-        cycles: arr.cycles(),
-        hardware_seconds: arr.cycles() as f64 * 1e-7,
+        cycles,
+        hardware_seconds: cycles as f64 * 1e-7,
         wall_seconds: wall,
     };
     if a.json {
@@ -115,6 +125,14 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The parsed `--clip` function, if any.
+fn clip_expr(a: &Args, lists: &[DisplayList]) -> Result<Option<Clip>, String> {
+    let Some(text) = &a.clip else { return Ok(None) };
+    let names: Vec<String> = (0..lists.len()).map(object_name).collect();
+    let expr = Clip::parse(text, &names).map_err(|e| format!("--clip:1:{}: {}", e.col, e.msg))?;
+    Ok(Some(expr))
 }
 
 /// The name `--clip` uses for the `i`-th object: A … Z, then O26, O27, …
@@ -147,12 +165,11 @@ pub fn run_with_progress(arr: &mut dyn Array, ops: &[Op]) -> Result<(), String> 
     Ok(())
 }
 
-/// The scene colour register G of every pixel, through the palette.
-fn write_png(path: &Path, st: &rtl_model::ArchState) -> Result<(), String> {
-    let mut img = image::RgbImage::new(st.width as u32, st.height as u32);
-    for (i, p) in st.pixels.iter().enumerate() {
-        let (x, y) = ((i % st.width) as u32, (i / st.width) as u32);
-        img.put_pixel(x, y, image::Rgb(rgb(p.creg(CReg::G))));
+/// Colour codes of every pixel, through the palette.
+fn write_png(path: &Path, width: usize, height: usize, codes: &[u32]) -> Result<(), String> {
+    let mut img = image::RgbImage::new(width as u32, height as u32);
+    for (i, c) in codes.iter().enumerate() {
+        img.put_pixel((i % width) as u32, (i / width) as u32, image::Rgb(rgb(*c)));
     }
     write_atomic(path, |w| {
         let mut buf = std::io::Cursor::new(Vec::new());
