@@ -43,8 +43,18 @@ fn value(p: &crate::display_list::DlPlane, x: f64, y: f64) -> f64 {
     p.z0 + x * p.dzx + y * p.dzy
 }
 
+/// How a back plane in front of the screen (Z < 0) is treated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ScreenRule {
+    /// Geometry: the solid ends there, so nothing of it lies behind the screen.
+    Exact,
+    /// §2.3.3 as printed: "A < 0 ≤ B: Put 1" puts maxdepth into B, so the back envelope is
+    /// the smallest back plane after the last negative one in list order (infinite if none).
+    Thesis,
+}
+
 /// The convex set a list's planes bound along one ray, with H flipped when `flip`.
-fn convex_span(dl: &DisplayList, obj: usize, x: f64, y: f64, flip: bool) -> Span {
+fn convex_span(dl: &DisplayList, obj: usize, x: f64, y: f64, flip: bool, rule: ScreenRule) -> Span {
     let (mut lo, mut lo_t, mut hi, mut hi_t) = (f64::NEG_INFINITY, None, f64::INFINITY, None);
     for (i, p) in dl.planes.iter().enumerate() {
         let v = value(p, x, y);
@@ -58,6 +68,8 @@ fn convex_span(dl: &DisplayList, obj: usize, x: f64, y: f64, flip: bool) -> Span
             if v > lo {
                 (lo, lo_t) = (v, Some((obj, i)));
             }
+        } else if rule == ScreenRule::Thesis && v < 0.0 {
+            (hi, hi_t) = (f64::INFINITY, None);
         } else if v < hi {
             (hi, hi_t) = (v, Some((obj, i)));
         }
@@ -104,11 +116,11 @@ fn union(a: &Span, b: &Span) -> Span {
 }
 
 /// The region of one object along the ray.
-fn object_span(dl: &DisplayList, obj: usize, x: f64, y: f64) -> Span {
+fn object_span(dl: &DisplayList, obj: usize, x: f64, y: f64, rule: ScreenRule) -> Span {
     if dl.is_concave() {
-        complement(&convex_span(dl, obj, x, y, true))
+        complement(&convex_span(dl, obj, x, y, true, ScreenRule::Exact))
     } else {
-        convex_span(dl, obj, x, y, false)
+        convex_span(dl, obj, x, y, false, rule)
     }
 }
 
@@ -128,6 +140,7 @@ pub fn render(
     width: usize,
     height: usize,
     fmt: &WordFormat,
+    rule: ScreenRule,
 ) -> FloatImage {
     let md = fmt.to_real(fmt.maxdepth());
     let n = width * height;
@@ -144,7 +157,7 @@ pub fn render(
         let spans: Vec<Span> = lists
             .iter()
             .enumerate()
-            .map(|(o, dl)| object_span(dl, o, x, y))
+            .map(|(o, dl)| object_span(dl, o, x, y, rule))
             .collect();
         let scene = match clip {
             Some(e) => eval(e, &spans),

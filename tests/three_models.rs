@@ -1,12 +1,13 @@
 //! The thesis's own scenes in all three models (§5.2, §5.2.1), 250×250: `cycle` and `word`
 //! give identical images; every pixel where `word` differs from `float` is one where the
 //! hardware compares two quantities closer than the rounding bound of docs/depth-word.md, or
-//! one where the thesis's screen rule for back planes applies (docs/select-logic.md).
+//! one where the thesis's screen rule for back planes applies (docs/select-logic.md) and the
+//! float model with that rule (`ScreenRule::Thesis`) gives what the hardware shows.
 
 use csgpix::clip_expr::Clip;
 use csgpix::compile::{clip_scene_ops, scene_ops};
 use csgpix::display_list::DisplayList;
-use csgpix::float::{self, rounding_bound};
+use csgpix::float::{self, rounding_bound, ScreenRule};
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 
@@ -31,7 +32,15 @@ fn check(names: &[&str], clip: Option<&str>) -> (usize, usize, usize) {
     wrd.run(&ops).unwrap();
     let (sc, sw) = (cyc.state(), wrd.state());
     assert_eq!(sc, sw, "cycle and word differ on {names:?} {clip:?}");
-    let f = float::render(&lists, expr.as_ref(), 250, 250, &cfg.fmt);
+    let f = float::render(&lists, expr.as_ref(), 250, 250, &cfg.fmt, ScreenRule::Exact);
+    let ft = float::render(
+        &lists,
+        expr.as_ref(),
+        250,
+        250,
+        &cfg.fmt,
+        ScreenRule::Thesis,
+    );
     let (mut diff, mut tie, mut rule) = (0, 0, 0);
     for (i, p) in sw.pixels.iter().enumerate() {
         if p.creg(CReg::G) == f.colour[i] {
@@ -41,7 +50,13 @@ fn check(names: &[&str], clip: Option<&str>) -> (usize, usize, usize) {
         let bound = rounding_bound(&cfg.fmt, i % 250, i / 250);
         if f.margin[i] < 2.0 * bound {
             tie += 1;
-        } else if f.screen_rule[i] {
+        } else if f.screen_rule[i]
+            && (clip.is_some() || p.creg(CReg::G) == ft.colour[i] || ft.margin[i] < 2.0 * bound)
+        {
+            // The thesis's own rule, computed exactly, gives what the hardware shows. With a
+            // clipping function the rule acts on the drawn literal but not on the clipping
+            // volumes, which the float model's thesis mode does not imitate: there the pixel
+            // is only required to lie where the rule applies.
             rule += 1;
         } else {
             panic!(

@@ -17,7 +17,7 @@ use rtl_model::Array;
 use serde::Serialize;
 
 use super::array_args::{ArrayArgs, Model};
-use csgpix::float;
+use csgpix::float::{self, ScreenRule};
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -82,7 +82,14 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             return Err("--probe needs an array model (cycle or word)".into());
         }
         let expr = clip_expr(&a, &lists)?;
-        let f = float::render(&lists, expr.as_ref(), cfg.width, cfg.height, &cfg.fmt);
+        let f = float::render(
+            &lists,
+            expr.as_ref(),
+            cfg.width,
+            cfg.height,
+            &cfg.fmt,
+            ScreenRule::Exact,
+        );
         (f.colour, 0)
     } else {
         let mut arr = a.array.build()?;
