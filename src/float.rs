@@ -4,15 +4,17 @@
 //! Along the ray of pixel (x, y) (depth z from the screen, §2.3.1), a convex display list
 //! (L = 0) is the intersection of its half-spaces: behind every front plane (z ≥ Z), in front
 //! of every back plane (z ≤ Z), on the inner side of every perpendicular plane (K ≥ 0). A
-//! concave list (L = 1) is a hole: the complement of the convex set its planes bound with
-//! the roles of front and back exchanged (its front faces are the far side of the solid it
-//! cuts away, §2.3.2). A scene is the union of its objects, or the clipping function over
-//! them. The visible point is the first z ≥ 0 inside the scene, if below maxdepth: z = 0
-//! (the screen, interior colour) when the ray starts inside.
+//! concave list (L = 1) is a void: the convex set its planes bound with the roles of front and
+//! back exchanged, and what the array draws of it is its far wall, where the void ends in
+//! material (§2.3.2, Figure 2.3). Objects are composed as the second stage does: the nearest
+//! surface wins. A clipping function is evaluated as §5.2.1 defines its image, in exact
+//! arithmetic: each literal's surface, kept inside the rest of its product, nearest wins. A
+//! convex solid that contains the screen shows the screen (z = 0, interior colour). Nothing at
+//! or beyond maxdepth is shown.
 
 use rtl_model::WordFormat;
 
-use crate::clip_expr::Clip;
+use crate::clip_expr::{Clip, Literal};
 use crate::compile::INTERIOR_COLOUR;
 use crate::display_list::DisplayList;
 
@@ -34,8 +36,10 @@ pub struct FloatImage {
     /// between a plane value and 0 or maxdepth: below twice the rounding bound the word model
     /// may decide a comparison the other way.
     pub margin: Vec<f64>,
-    /// A convex object has a back plane in front of the screen here: the thesis's rule
-    /// "A < 0 ≤ B: Put 1" (§2.3.3) then keeps the object where the geometry has none.
+    /// A face plane lies in front of the screen (Z < 0) here, so the rows of §2.3.3 for
+    /// A < 0 decide. Some of them differ from the geometry: "A < 0 ≤ B: Put 1" on a convex
+    /// back plane keeps the object where it has none, and a first back plane of a concave
+    /// object (a complemented literal's front face) at Z < 0 puts 1 and hides the void.
     pub screen_rule: Vec<bool>,
 }
 
@@ -81,56 +85,89 @@ fn convex_span(dl: &DisplayList, obj: usize, x: f64, y: f64, flip: bool, rule: S
     }
 }
 
-fn complement(s: &Span) -> Span {
-    let mut out = vec![];
-    let (mut lo, mut lo_t) = (f64::NEG_INFINITY, None);
-    for &(a, at, b, bt) in s {
-        if a > lo {
-            out.push((lo, lo_t, a, at));
-        }
-        (lo, lo_t) = (b, bt);
-    }
-    if lo < f64::INFINITY {
-        out.push((lo, lo_t, f64::INFINITY, None));
-    }
-    out
+/// The first point at or behind the screen inside a region: its depth and face (none when the
+/// ray starts inside, at the screen).
+fn first_inside(region: &Span) -> Option<(f64, Tag)> {
+    let &(lo, lo_t, _, _) = region.iter().find(|s| s.2 > 0.0)?;
+    Some(if lo >= 0.0 { (lo, lo_t) } else { (0.0, None) })
 }
 
-fn intersect(a: &Span, b: &Span) -> Span {
-    let mut out = vec![];
-    for &(a0, a0t, a1, a1t) in a {
-        for &(b0, b0t, b1, b1t) in b {
-            let (lo, lo_t) = if a0 >= b0 { (a0, a0t) } else { (b0, b0t) };
-            let (hi, hi_t) = if a1 <= b1 { (a1, a1t) } else { (b1, b1t) };
-            if lo < hi {
-                out.push((lo, lo_t, hi, hi_t));
+/// The surface the array draws for one object: a convex solid's first point behind the
+/// screen; a concave list (a void, §2.3.2) its far wall, where the void ends in material.
+fn surface(dl: &DisplayList, obj: usize, x: f64, y: f64, rule: ScreenRule) -> Option<(f64, Tag)> {
+    if dl.is_concave() {
+        let &(_, _, hi, hi_t) = convex_span(dl, obj, x, y, true, ScreenRule::Exact).first()?;
+        (hi >= 0.0).then_some((hi, hi_t))
+    } else {
+        first_inside(&convex_span(dl, obj, x, y, false, rule))
+    }
+}
+
+/// Is the point at depth `z` inside list `dl`'s convex solid (on a face counts as inside, as
+/// the clipping test keeps ties with X = 0, §2.3.4)?
+fn inside(dl: &DisplayList, x: f64, y: f64, z: f64) -> bool {
+    dl.planes.iter().all(|p| {
+        let v = value(p, x, y);
+        match (p.y, p.h) {
+            (true, _) => v >= 0.0,
+            (false, true) => z >= v,
+            (false, false) => z <= v,
+        }
+    })
+}
+
+/// A clipping function the thesis way (§5.2.1), in exact arithmetic: every literal's surface
+/// (a complemented convex object is drawn as the void it leaves, whose far wall is the
+/// object's back), kept where it lies inside the other literals of its product; the nearest
+/// kept surface wins.
+fn clipped_surface(
+    lists: &[DisplayList],
+    prods: &[Vec<Literal>],
+    x: f64,
+    y: f64,
+    rule: ScreenRule,
+) -> Option<(f64, Tag)> {
+    let mut best: Option<(f64, Tag)> = None;
+    for prod in prods {
+        for (k, &(o, neg)) in prod.iter().enumerate() {
+            let span = convex_span(
+                &lists[o],
+                o,
+                x,
+                y,
+                false,
+                if neg { ScreenRule::Exact } else { rule },
+            );
+            let s = match neg {
+                false => first_inside(&span),
+                true => span
+                    .first()
+                    .and_then(|&(_, _, hi, hi_t)| (hi >= 0.0).then_some((hi, hi_t))),
+            };
+            let Some(s) = s else { continue };
+            let kept = prod
+                .iter()
+                .enumerate()
+                .all(|(j, &(m, ng))| j == k || inside(&lists[m], x, y, s.0) != ng);
+            if kept && best.is_none_or(|b| s.0 <= b.0) {
+                best = Some(s);
             }
         }
     }
-    out.sort_by(|p, q| p.0.total_cmp(&q.0));
-    out
+    best
 }
 
-fn union(a: &Span, b: &Span) -> Span {
-    complement(&intersect(&complement(a), &complement(b)))
-}
-
-/// The region of one object along the ray.
-fn object_span(dl: &DisplayList, obj: usize, x: f64, y: f64, rule: ScreenRule) -> Span {
-    if dl.is_concave() {
-        complement(&convex_span(dl, obj, x, y, true, ScreenRule::Exact))
-    } else {
-        convex_span(dl, obj, x, y, false, rule)
+/// Objects composed by the second stage: the nearest surface wins, a later object on a tie.
+fn nearest_surface(lists: &[DisplayList], x: f64, y: f64, rule: ScreenRule) -> Option<(f64, Tag)> {
+    let mut best: Option<(f64, Tag)> = None;
+    for (o, dl) in lists.iter().enumerate() {
+        if let Some(s) = surface(dl, o, x, y, rule) {
+            if best.is_none_or(|b| s.0 <= b.0) {
+                best = Some(s);
+            }
+        }
     }
-}
-
-fn eval(e: &Clip, spans: &[Span]) -> Span {
-    match e {
-        Clip::Obj(i) => spans[*i].clone(),
-        Clip::Not(a) => complement(&eval(a, spans)),
-        Clip::And(a, b) => intersect(&eval(a, spans), &eval(b, spans)),
-        Clip::Or(a, b) => union(&eval(a, spans), &eval(b, spans)),
-    }
+    best
 }
 
 /// Ray-cast the scene on a `width`×`height` window.
@@ -152,38 +189,25 @@ pub fn render(
         margin: vec![f64::INFINITY; n],
         screen_rule: vec![false; n],
     };
+    let products = clip.map(|e| e.products().unwrap_or_default());
     for i in 0..n {
         let (x, y) = ((i % width) as f64, (i / width) as f64);
-        let spans: Vec<Span> = lists
-            .iter()
-            .enumerate()
-            .map(|(o, dl)| object_span(dl, o, x, y, rule))
-            .collect();
-        let scene = match clip {
-            Some(e) => eval(e, &spans),
-            None => spans.iter().fold(vec![], |acc, s| union(&acc, s)),
+        let visible = match &products {
+            Some(prods) => clipped_surface(lists, prods, x, y, rule),
+            None => nearest_surface(lists, x, y, rule),
         };
-        if let Some(&(lo, lo_t, _, _)) = scene.iter().find(|s| s.2 > 0.0) {
-            let (z, c) = match lo_t {
-                Some((o, p)) if lo >= 0.0 => (lo, lists[o].planes[p].colour),
-                _ => (0.0, INTERIOR_COLOUR),
-            };
-            if z < md {
-                (img.depth[i], img.colour[i]) = (Some(z), c);
-            }
+        if let Some((z, tag)) = visible.filter(|v| v.0 < md) {
+            let c = tag.map_or(INTERIOR_COLOUR, |(o, p)| lists[o].planes[p].colour);
+            (img.depth[i], img.colour[i]) = (Some(z), c);
         }
         let values: Vec<f64> = lists
             .iter()
             .flat_map(|dl| dl.planes.iter().map(|p| value(p, x, y)))
             .collect();
         img.margin[i] = margin(&values, md);
-        img.screen_rule[i] = lists.iter().any(|dl| {
-            !dl.is_concave()
-                && dl
-                    .planes
-                    .iter()
-                    .any(|p| !p.h && !p.y && value(p, x, y) < 0.0)
-        });
+        img.screen_rule[i] = lists
+            .iter()
+            .any(|dl| dl.planes.iter().any(|p| !p.y && value(p, x, y) < 0.0));
     }
     img
 }
