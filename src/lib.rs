@@ -6,4 +6,5 @@ pub mod display_list;
 pub mod float;
 pub mod output;
 pub mod palette;
+pub mod project;
 pub mod solid;

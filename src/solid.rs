@@ -32,3 +32,20 @@ pub struct CsgScene {
     pub solids: Vec<ConvexSolid>,
     pub root: CsgNode,
 }
+
+impl Drop for CsgNode {
+    /// Dropping a tree as deep as a file can make must not recurse once per level.
+    fn drop(&mut self) {
+        let mut stack: Vec<CsgNode> = match self {
+            CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
+                std::mem::take(c)
+            }
+            _ => return,
+        };
+        while let Some(mut n) = stack.pop() {
+            if let CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) = &mut n {
+                stack.append(c);
+            }
+        }
+    }
+}

@@ -1,0 +1,320 @@
+//! Projection: a CSG scene of convex solids, seen orthographically, becomes display lists
+//! (one per solid, §5.2) and a clipping function over them (§5.2.1).
+//!
+//! The view maps scene coordinates to (u, v, w): u to the right, v down the screen, w into
+//! the screen. The scene's bounds are scaled uniformly to fill the array, one depth unit per
+//! pixel, with the nearest point of the scene at depth [`DEPTH_MARGIN`]. A face with outward
+//! normal n and plane n·p = d has depth `w(u, v) = (d − n_u·u − n_v·v) / n_w`, so per pixel
+//! `Z0`, `dZx = −n_u/n_w`, `dZy = −n_v/n_w`; it is a front face (H = 1) when n_w < 0 (it faces
+//! the viewer).
+//!
+//! Near-perpendicular faces: as n_w → 0 the slopes grow without bound. A face whose slope
+//! exceeds [`max_slope`] (maxdepth per pixel) crosses the whole depth range within one pixel,
+//! so it is drawn as a perpendicular plane (Y = 1) with `K` = the signed distance in pixels
+//! from its trace (K ≥ 0 inside), which moves its silhouette by less than one pixel and never
+//! overflows the coefficient words.
+
+use glam::{DMat3, DVec3};
+
+use crate::clip_expr::Clip;
+use crate::display_list::{DisplayList, DlPlane};
+use crate::solid::{ConvexSolid, CsgNode, CsgScene};
+
+/// Depth of the scene's nearest point, in depth units (pixels).
+pub const DEPTH_MARGIN: f64 = 4.0;
+
+/// A named view direction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum View {
+    /// Looking down the scene's −Z axis (x right, y up the screen).
+    Top,
+    /// Looking along +Y (x right, z up).
+    Front,
+    /// Isometric from (+1, −1, +1) towards the origin.
+    #[default]
+    Iso,
+}
+
+impl View {
+    /// Rows: the scene directions of screen u (right), v (down) and w (into the screen).
+    fn basis(self) -> DMat3 {
+        let (u, v, w) = match self {
+            View::Top => (DVec3::X, DVec3::NEG_Y, DVec3::NEG_Z),
+            View::Front => (DVec3::X, DVec3::NEG_Z, DVec3::Y),
+            View::Iso => {
+                let w = DVec3::new(-1.0, 1.0, -1.0).normalize();
+                let u = DVec3::new(1.0, 1.0, 0.0).normalize();
+                (u, w.cross(u).normalize(), w)
+            }
+        };
+        DMat3::from_cols(u, v, w).transpose()
+    }
+}
+
+/// The largest |dZ| per pixel drawn as a sloped plane: maxdepth depth units.
+pub fn max_slope(maxdepth: f64) -> f64 {
+    maxdepth
+}
+
+/// Where the scene lands on the array.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Frame {
+    pub basis: DMat3,
+    /// Minimum (u, v, w) of the scene in view coordinates.
+    pub min: DVec3,
+    /// Pixels per scene unit.
+    pub scale: f64,
+}
+
+impl Frame {
+    /// Fit `scene` into a `width`×`height` array.
+    pub fn fit(scene: &CsgScene, view: View, width: usize, height: usize) -> Result<Frame, String> {
+        let basis = view.basis();
+        let pts = scene
+            .solids
+            .iter()
+            .flat_map(|s| s.vertices.iter())
+            .map(|p| basis * DVec3::from(*p));
+        let (min, max) = pts.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), p| {
+            (a.min(p), b.max(p))
+        });
+        if !min.is_finite() {
+            return Err("the scene has no solids".into());
+        }
+        let ext = (max - min).max(DVec3::splat(1e-9));
+        let scale = ((width.max(2) - 1) as f64 / ext.x).min((height.max(2) - 1) as f64 / ext.y);
+        Ok(Frame { basis, min, scale })
+    }
+
+    /// Pixel coordinates (x, y) and depth of a scene point.
+    pub fn to_pixel(&self, p: DVec3) -> DVec3 {
+        let q = (self.basis * p - self.min) * self.scale;
+        DVec3::new(q.x, q.y, q.z + DEPTH_MARGIN)
+    }
+}
+
+/// The display-list plane of one face (vertices `f` of solid `s`).
+fn face_plane(
+    frame: &Frame,
+    s: &ConvexSolid,
+    f: &[usize],
+    colour: u32,
+    slope_limit: f64,
+) -> Option<DlPlane> {
+    let p: Vec<DVec3> = f
+        .iter()
+        .map(|&i| frame.to_pixel(DVec3::from(s.vertices[i])))
+        .collect();
+    // Newell's normal: robust for any planar polygon; outward for counter-clockwise faces.
+    let mut n = DVec3::ZERO;
+    for (a, b) in p.iter().zip(p.iter().cycle().skip(1)) {
+        n += DVec3::new(
+            (a.y - b.y) * (a.z + b.z),
+            (a.z - b.z) * (a.x + b.x),
+            (a.x - b.x) * (a.y + b.y),
+        );
+    }
+    // Every view basis is a rotation (det +1), so counter-clockwise still means outward.
+    if n.length() < 1e-12 {
+        return None;
+    }
+    let c = p.iter().copied().sum::<DVec3>() / p.len() as f64;
+    let d = n.dot(c);
+    let plane = |z0: f64, dzx: f64, dzy: f64, h: bool, y: bool| DlPlane {
+        z0,
+        dzx,
+        dzy,
+        colour,
+        h,
+        y,
+        l: false,
+    };
+    let (nu, nv, nw) = (n.x, n.y, n.z);
+    if nu.abs().max(nv.abs()) > slope_limit * nw.abs() {
+        let len = (nu * nu + nv * nv).sqrt();
+        return Some(plane(d / len, -nu / len, -nv / len, false, true));
+    }
+    Some(plane(d / nw, -nu / nw, -nv / nw, nw < 0.0, false))
+}
+
+/// Nearest palette code (1..=15) to an RGBA colour.
+pub fn colour_code(rgba: [f64; 4]) -> u32 {
+    (1..16u32)
+        .min_by(|&a, &b| {
+            let dist = |c: u32| {
+                let p = crate::palette::rgb(c);
+                (0..3)
+                    .map(|k| (p[k] as f64 / 255.0 - rgba[k]).powi(2))
+                    .sum::<f64>()
+            };
+            dist(a).total_cmp(&dist(b))
+        })
+        .unwrap_or(7)
+}
+
+/// One display list per solid; solids without a colour take codes 1..6 in turn.
+pub fn display_lists(scene: &CsgScene, frame: &Frame, maxdepth: f64) -> Vec<DisplayList> {
+    scene
+        .solids
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let colour = s.colour.map_or(1 + (i % 6) as u32, colour_code);
+            let planes = s
+                .faces
+                .iter()
+                .filter_map(|f| face_plane(frame, s, f, colour, max_slope(maxdepth)))
+                .collect();
+            DisplayList {
+                planes,
+                terminator: 1234,
+            }
+        })
+        .collect()
+}
+
+/// The scene's CSG tree as a clipping function over the solids (None for an empty scene).
+/// Walks with an explicit stack, so deep trees cannot overflow it.
+pub fn clip_of(root: &CsgNode) -> Option<Clip> {
+    enum Task<'a> {
+        Visit(&'a CsgNode),
+        Build(&'a CsgNode, usize),
+    }
+    let mut tasks = vec![Task::Visit(root)];
+    let mut out: Vec<Option<Clip>> = vec![];
+    while let Some(t) = tasks.pop() {
+        match t {
+            Task::Visit(n) => match n {
+                CsgNode::Solid(i) => out.push(Some(Clip::Obj(*i))),
+                CsgNode::Empty => out.push(None),
+                CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
+                    tasks.push(Task::Build(n, c.len()));
+                    tasks.extend(c.iter().rev().map(Task::Visit));
+                }
+            },
+            Task::Build(n, k) => {
+                let kids = out.split_off(out.len() - k);
+                out.push(combine(n, kids));
+            }
+        }
+    }
+    out.pop().flatten()
+}
+
+fn combine(n: &CsgNode, kids: Vec<Option<Clip>>) -> Option<Clip> {
+    let and = |a: Clip, b: Clip| Clip::And(Box::new(a), Box::new(b));
+    match n {
+        CsgNode::Union(_) => kids
+            .into_iter()
+            .flatten()
+            .reduce(|a, b| Clip::Or(Box::new(a), Box::new(b))),
+        // An empty operand makes an intersection empty.
+        CsgNode::Intersection(_) => kids
+            .into_iter()
+            .collect::<Option<Vec<_>>>()?
+            .into_iter()
+            .reduce(and),
+        CsgNode::Difference(_) => {
+            let mut it = kids.into_iter();
+            let first = it.next().flatten()?;
+            Some(
+                it.flatten()
+                    .fold(first, |a, b| and(a, Clip::Not(Box::new(b)))),
+            )
+        }
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cube(lo: f64, hi: f64) -> ConvexSolid {
+        let v = |x: bool, y: bool, z: bool| {
+            [
+                [lo, hi][x as usize],
+                [lo, hi][y as usize],
+                [lo, hi][z as usize],
+            ]
+        };
+        let vertices: Vec<[f64; 3]> = (0..8)
+            .map(|i| v(i & 1 == 1, i & 2 == 2, i & 4 == 4))
+            .collect();
+        // Counter-clockwise seen from outside.
+        let faces = vec![
+            vec![0, 2, 3, 1],
+            vec![4, 5, 7, 6],
+            vec![0, 1, 5, 4],
+            vec![2, 6, 7, 3],
+            vec![0, 4, 6, 2],
+            vec![1, 3, 7, 5],
+        ];
+        ConvexSolid {
+            vertices,
+            faces,
+            colour: None,
+            line: 1,
+        }
+    }
+
+    #[test]
+    fn top_view_of_a_cube_has_one_front_one_back_and_four_perpendicular_faces() {
+        let scene = CsgScene {
+            solids: vec![cube(0.0, 10.0)],
+            root: CsgNode::Solid(0),
+        };
+        let frame = Frame::fit(&scene, View::Top, 11, 11).unwrap();
+        let dl = &display_lists(&scene, &frame, 1024.0)[0];
+        let fronts: Vec<&DlPlane> = dl.planes.iter().filter(|p| p.h && !p.y).collect();
+        let backs: Vec<&DlPlane> = dl.planes.iter().filter(|p| !p.h && !p.y).collect();
+        assert_eq!((fronts.len(), backs.len()), (1, 1));
+        assert_eq!(dl.planes.iter().filter(|p| p.y).count(), 4);
+        assert!((fronts[0].z0 - DEPTH_MARGIN).abs() < 1e-9, "{dl:?}");
+        assert!(fronts[0].dzx.abs() < 1e-12 && fronts[0].dzy.abs() < 1e-12);
+        assert!((backs[0].z0 - DEPTH_MARGIN - 10.0).abs() < 1e-9);
+        // Every perpendicular plane is non-negative at the centre pixel (inside).
+        for p in dl.planes.iter().filter(|p| p.y) {
+            assert!(p.z0 + 5.0 * p.dzx + 5.0 * p.dzy > 0.0, "{p:?}");
+        }
+    }
+
+    #[test]
+    fn iso_view_faces_split_three_and_three() {
+        let scene = CsgScene {
+            solids: vec![cube(-1.0, 1.0)],
+            root: CsgNode::Solid(0),
+        };
+        let frame = Frame::fit(&scene, View::Iso, 64, 64).unwrap();
+        let dl = &display_lists(&scene, &frame, 1024.0)[0];
+        assert_eq!(dl.planes.iter().filter(|p| p.h).count(), 3);
+        assert_eq!(dl.planes.iter().filter(|p| !p.h && !p.y).count(), 3);
+    }
+
+    #[test]
+    fn csg_tree_becomes_a_clipping_function() {
+        let t = CsgNode::Difference(vec![
+            CsgNode::Union(vec![CsgNode::Solid(0), CsgNode::Solid(1)]),
+            CsgNode::Solid(2),
+            CsgNode::Empty,
+        ]);
+        let e = clip_of(&t).unwrap();
+        let prods = e.products().unwrap();
+        assert_eq!(
+            prods,
+            vec![vec![(0, false), (2, true)], vec![(1, false), (2, true)]]
+        );
+        assert_eq!(
+            clip_of(&CsgNode::Intersection(vec![
+                CsgNode::Solid(0),
+                CsgNode::Empty
+            ])),
+            None
+        );
+        let mut deep = CsgNode::Solid(0);
+        for _ in 0..100_000 {
+            deep = CsgNode::Union(vec![deep]);
+        }
+        assert_eq!(clip_of(&deep), Some(Clip::Obj(0)));
+    }
+}
