@@ -6,5 +6,6 @@ pub mod display_list;
 pub mod float;
 pub mod output;
 pub mod palette;
+pub mod polygon;
 pub mod project;
 pub mod solid;
