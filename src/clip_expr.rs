@@ -288,3 +288,22 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod fuzz {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+        /// Any text either parses or gives an error with a column inside it (or just past it).
+        #[test]
+        fn parser_never_panics(text in "[AB!().+ x]{0,40}|\\PC{0,40}") {
+            let names = vec!["A".to_string(), "B".to_string()];
+            match Clip::parse(&text, &names) {
+                Ok(e) => { e.products().ok(); }
+                Err(err) => prop_assert!(err.col >= 1 && err.col <= text.chars().count() + 1),
+            }
+        }
+    }
+}

@@ -256,3 +256,69 @@ fn tie_policy_changes_which_plane_colour_wins_on_an_exact_tie() {
         "keep: first plane (2, green); put: second (4, red)"
     );
 }
+
+#[test]
+fn clip_function_renders_and_bad_ones_are_located() {
+    let d = tmp();
+    let png = d.path().join("amb.png");
+    let args = [
+        "render",
+        "vectors/thesis/box1-corrected.dl",
+        "vectors/thesis/box2.dl",
+        "--clip",
+    ];
+    let o = csgpix(&[&args[..], &["A.!B", "-o", s(&png)]].concat());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let plain = d.path().join("plain.png");
+    let o = csgpix(&[
+        "render",
+        "vectors/thesis/box1-corrected.dl",
+        "-o",
+        s(&plain),
+    ]);
+    assert!(o.status.success());
+    // Clipping by the complement of box2 cuts box1: the images differ.
+    assert_ne!(
+        image::open(&png).unwrap().to_rgb8(),
+        image::open(&plain).unwrap().to_rgb8()
+    );
+    let bad = d.path().join("bad.png");
+    let o = csgpix(&[&args[..], &["A.!(B", "-o", s(&bad)]].concat());
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("--clip:1:6"), "{err}");
+    assert!(!bad.exists());
+}
+
+#[test]
+fn float_model_renders_without_clocks() {
+    let d = tmp();
+    let png = d.path().join("f.png");
+    let o = csgpix(&[
+        "render",
+        "vectors/thesis/cube.dl",
+        "--model",
+        "float",
+        "--json",
+        "-o",
+        s(&png),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["cycles"], 0);
+    assert_eq!(v["model"], "float");
+    let vcd = d.path().join("f.vcd");
+    let o = csgpix(&[
+        "render",
+        "vectors/thesis/cube.dl",
+        "--model",
+        "float",
+        "--vcd",
+        s(&vcd),
+        "--probe",
+        "1,1",
+        "-o",
+        s(&png),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+}

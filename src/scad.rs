@@ -1,0 +1,1743 @@
+//! Reader for the OpenSCAD `.csg` subset that describes convex solids under CSG operations:
+//! what OpenSCAD writes with File → Export → Export as CSG.
+//!
+//! # What is read
+//!
+//! Statements `name(args);`, `name(args) child` and `name(args) { children }`, `//` and `/* */`
+//! comments, numbers, `true`, `false`, `undef`, strings and (nested) vectors, positional and
+//! named arguments (`$fn = 0`). The nodes:
+//!
+//! * `group()`, `union()` → [`CsgNode::Union`]; `render(convexity = …)` is read as a group
+//!   (it only asks OpenSCAD to cache the geometry, so ignoring it is harmless).
+//! * `intersection()` → [`CsgNode::Intersection`], `difference()` → [`CsgNode::Difference`]
+//!   (the first child minus the others).
+//! * `multmatrix(m = 4×4)` transforms the solids below it (nested transforms compose). As in
+//!   OpenSCAD's `builtin_multmatrix` (`src/core/TransformNode.cc`) a matrix whose `m[3][3]` is
+//!   not 1 is divided by it; a projective or singular matrix is refused. A matrix with a
+//!   negative determinant (a mirror) reverses the winding of every face so faces stay outward.
+//! * `color([r, g, b, a])` / `color(c = [r, g, b], alpha = a)` colours the solids below it,
+//!   the innermost colour winning. Named and hex colours (`color("red")`) are refused: the CSG
+//!   export always writes the vector form.
+//! * `cube`, `sphere`, `cylinder` are tessellated exactly as OpenSCAD does (see below), and
+//!   `polyhedron` is accepted when it is closed and convex.
+//! * The modifiers `%` (background) and `*` (disable) drop the statement, as OpenSCAD leaves
+//!   such nodes out of the rendered result; `#` (highlight) is ignored; `!` is refused.
+//!
+//! Anything else (`linear_extrude`, `hull`, `import`, 2D shapes, …) is refused with an error
+//! naming the node, its line and column.
+//!
+//! The tree is simplified without changing the solid it describes: a union or group with one
+//! child is that child, unions inside unions (and intersections inside intersections) are
+//! flattened, empty children are dropped from unions and from the subtracted part of a
+//! difference, and an intersection with an empty child, or a difference whose first child is
+//! empty, is [`CsgNode::Empty`]. This is the meaning OpenSCAD gives empty children when it
+//! renders (F6); its preview (F5) skips empty children of an intersection instead.
+//!
+//! # Following OpenSCAD
+//!
+//! The tessellation follows OpenSCAD's source (read, not copied):
+//!
+//! * fragment count: `Calc::get_fragments_from_r` in `src/utils/calc.cc`, with `GRID_FINE`
+//!   from `src/geometry/Grid.h` and the clamping of `$fa`/`$fs` to `F_MINIMUM = 0.01` from
+//!   `set_fragments` in `src/core/primitives.cc`;
+//! * vertex and face layout: `CubeNode::createGeometry`, `SphereNode::createGeometry`,
+//!   `CylinderNode::createGeometry` and `generate_circle` in `src/core/primitives.cc` (the
+//!   current layout with quads between sphere rings and a single apex for cones);
+//! * angles: `sin_degrees`/`cos_degrees` in `src/utils/degree_trig.cc`, which are exact at
+//!   multiples of 30° and 45°.
+//!
+//! # Limits
+//!
+//! Every error names the line and column (1-based, counted in characters) of the offending
+//! token. Statements nest at most [`MAX_NESTING`] deep and vectors [`MAX_VECTOR_NESTING`]
+//! deep, so neither the reader nor code walking the tree recursively can overflow the stack;
+//! a circle has at most [`MAX_FRAGMENTS`] fragments and a scene at most
+//! [`MAX_SCENE_VERTICES`] vertices.
+
+use std::collections::{HashMap, VecDeque};
+use std::f64::consts::{FRAC_1_SQRT_2, PI};
+use std::fmt;
+
+use crate::solid::{ConvexSolid, CsgNode, CsgScene};
+
+/// Deepest nesting of statements accepted (a leaf inside 1000 groups is the limit).
+pub const MAX_NESTING: usize = 1_000;
+
+/// Deepest nesting of vectors accepted (matrices, points and faces need 2).
+pub const MAX_VECTOR_NESTING: usize = 64;
+
+/// Most fragments (points on a circle) a sphere or cylinder may have.
+pub const MAX_FRAGMENTS: usize = 10_000;
+
+/// Most vertices a whole scene may have (a sphere with `$fn = 1414` alone has about that).
+pub const MAX_SCENE_VERTICES: usize = 1_000_000;
+
+/// OpenSCAD's `GRID_FINE` (`src/geometry/Grid.h`): below this radius a circle has 3 fragments.
+const GRID_FINE: f64 = 0.000_000_953_674_316_406_25;
+
+/// OpenSCAD's `F_MINIMUM` (`src/core/primitives.cc`): `$fa` and `$fs` are clamped up to it.
+const F_MINIMUM: f64 = 0.01;
+
+/// How far (relative to the largest coordinate) a polyhedron point may lie outside a face
+/// plane. OpenSCAD writes polyhedron coordinates with 6 significant digits, so faces of a
+/// convex polyhedron can be that far from flat in an exported file.
+const CONVEXITY_TOLERANCE: f64 = 1e-5;
+
+/// The nodes this reader understands, for messages.
+const NODE_LIST: &str =
+    "group, union, difference, intersection, multmatrix, color, render, cube, sphere, cylinder, \
+     polyhedron";
+
+/// A problem in a `.csg` file, with its position (1-based line and column, in characters).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ScadError {
+    pub file: String,
+    pub line: usize,
+    pub col: usize,
+    pub msg: String,
+}
+
+impl fmt::Display for ScadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}:{}: {}", self.file, self.line, self.col, self.msg)
+    }
+}
+
+impl std::error::Error for ScadError {}
+
+/// Reads a `.csg` file's text into a scene; `file` is only used in error messages.
+pub fn parse_csg(text: &str, file: &str) -> Result<CsgScene, ScadError> {
+    Reader::new(text).run().map_err(|fail| ScadError {
+        file: file.to_string(),
+        line: fail.pos.line,
+        col: fail.pos.col,
+        msg: fail.msg,
+    })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tokens
+
+/// A 1-based line and column.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Pos {
+    line: usize,
+    col: usize,
+}
+
+impl fmt::Display for Pos {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}", self.line, self.col)
+    }
+}
+
+/// An error before the file name is attached.
+#[derive(Debug)]
+struct Fail {
+    pos: Pos,
+    msg: String,
+}
+
+fn fail<T>(pos: Pos, msg: impl Into<String>) -> Result<T, Fail> {
+    Err(Fail {
+        pos,
+        msg: msg.into(),
+    })
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Tok {
+    Ident(String),
+    Num(f64),
+    Str(String),
+    /// One of `( ) [ ] { } , ; = - + % # ! *`.
+    Sym(u8),
+    Eof,
+}
+
+impl Tok {
+    fn describe(&self) -> String {
+        match self {
+            Tok::Ident(name) => format!("`{name}`"),
+            Tok::Num(_) => "a number".to_string(),
+            Tok::Str(_) => "a string".to_string(),
+            Tok::Sym(c) => format!("'{}'", *c as char),
+            Tok::Eof => "end of file".to_string(),
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+struct Token {
+    tok: Tok,
+    pos: Pos,
+}
+
+/// Splits the text into tokens, skipping white space and comments.
+struct Lexer<'a> {
+    text: &'a str,
+    at: usize,
+    pos: Pos,
+}
+
+impl<'a> Lexer<'a> {
+    fn new(text: &'a str) -> Self {
+        let at = if text.starts_with('\u{feff}') { 3 } else { 0 };
+        Lexer {
+            text,
+            at,
+            pos: Pos { line: 1, col: 1 },
+        }
+    }
+
+    fn byte(&self, ahead: usize) -> Option<u8> {
+        self.text.as_bytes().get(self.at + ahead).copied()
+    }
+
+    /// Moves past one byte; columns count characters, not UTF-8 continuation bytes.
+    fn bump(&mut self) {
+        if let Some(b) = self.byte(0) {
+            self.at += 1;
+            if b == b'\n' {
+                self.pos.line += 1;
+                self.pos.col = 1;
+            } else if b & 0xC0 != 0x80 {
+                self.pos.col += 1;
+            }
+        }
+    }
+
+    fn bump_while(&mut self, pred: impl Fn(u8) -> bool) -> usize {
+        let start = self.at;
+        while self.byte(0).is_some_and(&pred) {
+            self.bump();
+        }
+        self.at - start
+    }
+
+    fn next_token(&mut self) -> Result<Token, Fail> {
+        self.skip_trivia()?;
+        let pos = self.pos;
+        let tok = match self.byte(0) {
+            None => Tok::Eof,
+            Some(b) if b.is_ascii_alphabetic() || b == b'_' || b == b'$' => self.ident(),
+            Some(b) if b.is_ascii_digit() => self.number(pos)?,
+            Some(b'.') if self.byte(1).is_some_and(|b| b.is_ascii_digit()) => self.number(pos)?,
+            Some(b'"') => self.string(pos)?,
+            Some(b) if b"()[]{},;=-+%#!*".contains(&b) => {
+                self.bump();
+                Tok::Sym(b)
+            }
+            Some(_) => {
+                let c = self.text.get(self.at..).and_then(|s| s.chars().next());
+                return fail(pos, format!("unexpected character {:?}", c.unwrap_or('?')));
+            }
+        };
+        Ok(Token { tok, pos })
+    }
+
+    fn skip_trivia(&mut self) -> Result<(), Fail> {
+        loop {
+            match (self.byte(0), self.byte(1)) {
+                (Some(b' ' | b'\t' | b'\r' | b'\n' | 0x0c), _) => self.bump(),
+                (Some(b'/'), Some(b'/')) => {
+                    self.bump_while(|b| b != b'\n');
+                }
+                (Some(b'/'), Some(b'*')) => self.block_comment()?,
+                _ => return Ok(()),
+            }
+        }
+    }
+
+    fn block_comment(&mut self) -> Result<(), Fail> {
+        let start = self.pos;
+        self.bump();
+        self.bump();
+        loop {
+            match (self.byte(0), self.byte(1)) {
+                (Some(b'*'), Some(b'/')) => {
+                    self.bump();
+                    self.bump();
+                    return Ok(());
+                }
+                (Some(_), _) => self.bump(),
+                (None, _) => return fail(start, "unterminated comment (missing `*/`)"),
+            }
+        }
+    }
+
+    fn ident(&mut self) -> Tok {
+        let start = self.at;
+        self.bump();
+        self.bump_while(|b| b.is_ascii_alphanumeric() || b == b'_');
+        Tok::Ident(self.text[start..self.at].to_string())
+    }
+
+    /// `12`, `-` is a separate token, `1.5`, `.5`, `5.`, `1e-3`, `2.5E+10`.
+    fn number(&mut self, pos: Pos) -> Result<Tok, Fail> {
+        let start = self.at;
+        self.bump_while(|b| b.is_ascii_digit());
+        if self.byte(0) == Some(b'.') {
+            self.bump();
+            self.bump_while(|b| b.is_ascii_digit());
+        }
+        if matches!(self.byte(0), Some(b'e' | b'E')) {
+            self.bump();
+            if matches!(self.byte(0), Some(b'+' | b'-')) {
+                self.bump();
+            }
+            if self.bump_while(|b| b.is_ascii_digit()) == 0 {
+                return self.bad_number(start, pos);
+            }
+        }
+        if self.byte(0).is_some_and(continues_number) {
+            return self.bad_number(start, pos);
+        }
+        let text = &self.text[start..self.at];
+        match text.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(Tok::Num(v)),
+            Ok(_) => fail(pos, format!("number `{text}` is out of range")),
+            Err(_) => self.bad_number(start, pos),
+        }
+    }
+
+    fn bad_number(&mut self, start: usize, pos: Pos) -> Result<Tok, Fail> {
+        self.bump_while(continues_number);
+        fail(
+            pos,
+            format!("malformed number `{}`", &self.text[start..self.at]),
+        )
+    }
+
+    fn string(&mut self, pos: Pos) -> Result<Tok, Fail> {
+        self.bump();
+        let mut bytes = Vec::new();
+        loop {
+            let Some(b) = self.byte(0) else {
+                return fail(pos, "unterminated string (missing `\"`)");
+            };
+            self.bump();
+            match b {
+                b'"' => return Ok(Tok::Str(String::from_utf8_lossy(&bytes).into_owned())),
+                b'\\' => {
+                    let escaped = self.byte(0).unwrap_or(b'\\');
+                    self.bump();
+                    bytes.push(match escaped {
+                        b'n' => b'\n',
+                        b't' => b'\t',
+                        b'r' => b'\r',
+                        other => other,
+                    });
+                }
+                other => bytes.push(other),
+            }
+        }
+    }
+}
+
+fn continues_number(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || matches!(b, b'_' | b'.' | b'$')
+}
+
+// ---------------------------------------------------------------------------------------------
+// Values and arguments
+
+#[derive(Clone, Debug, PartialEq)]
+enum Kind {
+    Num(f64),
+    Bool(bool),
+    Undef,
+    Str(String),
+    List(Vec<Value>),
+}
+
+/// A value and where it starts.
+#[derive(Clone, Debug, PartialEq)]
+struct Value {
+    kind: Kind,
+    pos: Pos,
+}
+
+impl Value {
+    fn number(&self, what: &str) -> Result<f64, Fail> {
+        match self.kind {
+            Kind::Num(v) => Ok(v),
+            _ => fail(self.pos, format!("{what} must be a number")),
+        }
+    }
+
+    fn list(&self, what: &str) -> Result<&[Value], Fail> {
+        match &self.kind {
+            Kind::List(items) => Ok(items),
+            _ => fail(self.pos, format!("{what} must be a vector")),
+        }
+    }
+
+    fn vec3(&self, what: &str) -> Result<Vec3, Fail> {
+        match self.list(what)? {
+            [x, y, z] => Ok([x.number(what)?, y.number(what)?, z.number(what)?]),
+            _ => fail(self.pos, format!("{what} must be [x, y, z]")),
+        }
+    }
+}
+
+/// One argument of a node: `name = value` or a positional value.
+struct Arg {
+    name: Option<(String, Pos)>,
+    value: Value,
+}
+
+/// Tokens with look-ahead, and the values and argument lists made of them.
+struct Parser<'a> {
+    lexer: Lexer<'a>,
+    ahead: VecDeque<Token>,
+}
+
+impl<'a> Parser<'a> {
+    fn new(text: &'a str) -> Self {
+        Parser {
+            lexer: Lexer::new(text),
+            ahead: VecDeque::new(),
+        }
+    }
+
+    fn peek_nth(&mut self, n: usize) -> Result<&Token, Fail> {
+        while self.ahead.len() <= n {
+            let token = self.lexer.next_token()?;
+            self.ahead.push_back(token);
+        }
+        Ok(&self.ahead[n])
+    }
+
+    fn peek(&mut self) -> Result<&Token, Fail> {
+        self.peek_nth(0)
+    }
+
+    fn next(&mut self) -> Result<Token, Fail> {
+        match self.ahead.pop_front() {
+            Some(token) => Ok(token),
+            None => self.lexer.next_token(),
+        }
+    }
+
+    fn at_sym(&mut self, c: u8) -> Result<bool, Fail> {
+        Ok(self.peek()?.tok == Tok::Sym(c))
+    }
+
+    /// Consumes the symbol `c` if it comes next; returns its position.
+    fn eat_sym(&mut self, c: u8) -> Result<Option<Pos>, Fail> {
+        if self.at_sym(c)? {
+            Ok(Some(self.next()?.pos))
+        } else {
+            Ok(None)
+        }
+    }
+
+    fn expect_sym(&mut self, c: u8, context: &str) -> Result<Pos, Fail> {
+        let token = self.next()?;
+        if token.tok == Tok::Sym(c) {
+            Ok(token.pos)
+        } else {
+            let found = token.tok.describe();
+            fail(
+                token.pos,
+                format!("expected '{}' {context}, found {found}", c as char),
+            )
+        }
+    }
+
+    /// `( [name =] value, … )`
+    fn args(&mut self, node: &str) -> Result<Vec<Arg>, Fail> {
+        self.expect_sym(b'(', &format!("after `{node}`"))?;
+        let mut args = Vec::new();
+        loop {
+            if self.eat_sym(b')')?.is_some() {
+                return Ok(args);
+            }
+            let name = self.arg_name()?;
+            let value = self.value()?;
+            args.push(Arg { name, value });
+            let token = self.next()?;
+            match token.tok {
+                Tok::Sym(b',') => {}
+                Tok::Sym(b')') => return Ok(args),
+                other => {
+                    let msg = format!(
+                        "expected ',' or ')' in the arguments of `{node}`, found {}",
+                        other.describe()
+                    );
+                    return fail(token.pos, msg);
+                }
+            }
+        }
+    }
+
+    /// The `name =` of a named argument, if the next two tokens are one.
+    fn arg_name(&mut self) -> Result<Option<(String, Pos)>, Fail> {
+        let Tok::Ident(name) = &self.peek()?.tok else {
+            return Ok(None);
+        };
+        let name = name.clone();
+        if self.peek_nth(1)?.tok != Tok::Sym(b'=') {
+            return Ok(None);
+        }
+        let pos = self.next()?.pos;
+        self.next()?;
+        Ok(Some((name, pos)))
+    }
+
+    /// A value, vectors included; nested vectors are read with an explicit stack.
+    fn value(&mut self) -> Result<Value, Fail> {
+        let mut open: Vec<(Pos, Vec<Value>)> = Vec::new();
+        loop {
+            let token = self.next()?;
+            if token.tok == Tok::Sym(b'[') && !self.at_sym(b']')? {
+                if open.len() >= MAX_VECTOR_NESTING {
+                    let msg = format!("vectors nested deeper than {MAX_VECTOR_NESTING} levels");
+                    return fail(token.pos, msg);
+                }
+                open.push((token.pos, Vec::new()));
+                continue;
+            }
+            let mut done = self.scalar_or_empty(token)?;
+            // Attach the finished value to the open vectors, closing those that end here.
+            loop {
+                let Some((pos, mut items)) = open.pop() else {
+                    return Ok(done);
+                };
+                items.push(done);
+                let token = self.next()?;
+                let closed = match token.tok {
+                    Tok::Sym(b',') => self.eat_sym(b']')?.is_some(),
+                    Tok::Sym(b']') => true,
+                    other => {
+                        let found = other.describe();
+                        return fail(
+                            token.pos,
+                            format!("expected ',' or ']' in a vector, found {found}"),
+                        );
+                    }
+                };
+                if !closed {
+                    open.push((pos, items));
+                    break;
+                }
+                done = Value {
+                    kind: Kind::List(items),
+                    pos,
+                };
+            }
+        }
+    }
+
+    /// A number, boolean, `undef`, string or `[]`, starting with `token`.
+    fn scalar_or_empty(&mut self, token: Token) -> Result<Value, Fail> {
+        let pos = token.pos;
+        let kind = match token.tok {
+            Tok::Num(v) => Kind::Num(v),
+            Tok::Str(s) => Kind::Str(s),
+            Tok::Sym(b'[') => {
+                self.next()?; // the ']'
+                Kind::List(Vec::new())
+            }
+            Tok::Sym(sign @ (b'-' | b'+')) => {
+                let token = self.next()?;
+                match token.tok {
+                    Tok::Num(v) if sign == b'-' => Kind::Num(-v),
+                    Tok::Num(v) => Kind::Num(v),
+                    other => {
+                        let msg = format!(
+                            "expected a number after '{}', found {}",
+                            sign as char,
+                            other.describe()
+                        );
+                        return fail(token.pos, msg);
+                    }
+                }
+            }
+            Tok::Ident(name) => match name.as_str() {
+                "true" => Kind::Bool(true),
+                "false" => Kind::Bool(false),
+                "undef" => Kind::Undef,
+                "inf" | "nan" => {
+                    return fail(pos, format!("numbers must be finite, found `{name}`"))
+                }
+                _ => {
+                    let msg = format!(
+                        "expected a value, found `{name}` (csgpix reads numbers, true, false, \
+                         undef, strings and vectors, not expressions)"
+                    );
+                    return fail(pos, msg);
+                }
+            },
+            other => return fail(pos, format!("expected a value, found {}", other.describe())),
+        };
+        Ok(Value { kind, pos })
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Nodes and their parameters
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum NodeKind {
+    Group,
+    Union,
+    Difference,
+    Intersection,
+    Render,
+    Multmatrix,
+    Color,
+    Cube,
+    Sphere,
+    Cylinder,
+    Polyhedron,
+}
+
+/// How the children of an operation combine.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Op {
+    Union,
+    Intersection,
+    Difference,
+}
+
+const FRAGMENT_PARAMS: [&str; 3] = ["$fn", "$fa", "$fs"];
+
+impl NodeKind {
+    fn from_name(name: &str) -> Option<Self> {
+        Some(match name {
+            "group" => NodeKind::Group,
+            "union" => NodeKind::Union,
+            "difference" => NodeKind::Difference,
+            "intersection" => NodeKind::Intersection,
+            "render" => NodeKind::Render,
+            "multmatrix" => NodeKind::Multmatrix,
+            "color" => NodeKind::Color,
+            "cube" => NodeKind::Cube,
+            "sphere" => NodeKind::Sphere,
+            "cylinder" => NodeKind::Cylinder,
+            "polyhedron" => NodeKind::Polyhedron,
+            _ => return None,
+        })
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            NodeKind::Group => "group",
+            NodeKind::Union => "union",
+            NodeKind::Difference => "difference",
+            NodeKind::Intersection => "intersection",
+            NodeKind::Render => "render",
+            NodeKind::Multmatrix => "multmatrix",
+            NodeKind::Color => "color",
+            NodeKind::Cube => "cube",
+            NodeKind::Sphere => "sphere",
+            NodeKind::Cylinder => "cylinder",
+            NodeKind::Polyhedron => "polyhedron",
+        }
+    }
+
+    /// Parameters taken by position (in OpenSCAD's order), then those taken only by name.
+    fn parameters(self) -> (&'static [&'static str], &'static [&'static str]) {
+        match self {
+            NodeKind::Group | NodeKind::Union | NodeKind::Difference | NodeKind::Intersection => {
+                (&[], &[])
+            }
+            NodeKind::Render => (&["convexity"], &[]),
+            NodeKind::Multmatrix => (&["m"], &[]),
+            NodeKind::Color => (&["c", "alpha"], &[]),
+            NodeKind::Cube => (&["size", "center"], &[]),
+            NodeKind::Sphere => (&["r"], &["d", "$fn", "$fa", "$fs"]),
+            NodeKind::Cylinder => (
+                &["h", "r1", "r2", "center"],
+                &["r", "d", "d1", "d2", "$fn", "$fa", "$fs"],
+            ),
+            NodeKind::Polyhedron => (&["points", "faces", "convexity"], &["triangles"]),
+        }
+    }
+
+    fn is_leaf(self) -> bool {
+        matches!(
+            self,
+            NodeKind::Cube | NodeKind::Sphere | NodeKind::Cylinder | NodeKind::Polyhedron
+        )
+    }
+
+    fn op(self) -> Op {
+        match self {
+            NodeKind::Difference => Op::Difference,
+            NodeKind::Intersection => Op::Intersection,
+            _ => Op::Union,
+        }
+    }
+}
+
+/// A node's arguments bound to its parameter names.
+struct Params {
+    node: NodeKind,
+    pos: Pos,
+    values: Vec<(&'static str, Value)>,
+}
+
+impl Params {
+    /// Binds arguments as OpenSCAD's `Parameters::parse` does: positional ones in order,
+    /// named ones by name; unknown names and repeated parameters are refused.
+    fn bind(node: NodeKind, pos: Pos, args: Vec<Arg>) -> Result<Self, Fail> {
+        let (positional, named) = node.parameters();
+        let mut values: Vec<(&'static str, Value)> = Vec::new();
+        let mut next_positional = positional.iter();
+        for arg in args {
+            let (name, at) = match &arg.name {
+                Some((name, at)) => {
+                    let known = positional.iter().chain(named).find(|p| **p == name);
+                    let Some(&known) = known else {
+                        return fail(*at, Self::unknown(node, name));
+                    };
+                    (known, *at)
+                }
+                None => match next_positional.next() {
+                    Some(&name) => (name, arg.value.pos),
+                    None => {
+                        let msg = format!("too many positional arguments for `{}`", node.name());
+                        return fail(arg.value.pos, msg);
+                    }
+                },
+            };
+            if values.iter().any(|(n, _)| *n == name) {
+                return fail(at, format!("argument `{name}` given twice"));
+            }
+            values.push((name, arg.value));
+        }
+        Ok(Params { node, pos, values })
+    }
+
+    fn unknown(node: NodeKind, name: &str) -> String {
+        let (positional, named) = node.parameters();
+        let all: Vec<&str> = positional.iter().chain(named).copied().collect();
+        if all.is_empty() {
+            format!("`{}` takes no arguments, found `{name}`", node.name())
+        } else {
+            let list = all.join(", ");
+            format!(
+                "`{}` has no parameter `{name}` (it takes {list})",
+                node.name()
+            )
+        }
+    }
+
+    /// The value of a parameter; `undef` counts as not given.
+    fn get(&self, name: &str) -> Option<&Value> {
+        self.values
+            .iter()
+            .find(|(n, v)| *n == name && v.kind != Kind::Undef)
+            .map(|(_, v)| v)
+    }
+
+    fn number(&self, name: &str) -> Result<Option<(f64, Pos)>, Fail> {
+        match self.get(name) {
+            None => Ok(None),
+            Some(v) => Ok(Some((v.number(&format!("`{name}`"))?, v.pos))),
+        }
+    }
+
+    fn boolean(&self, name: &str) -> Result<bool, Fail> {
+        match self.get(name) {
+            None => Ok(false),
+            Some(Value {
+                kind: Kind::Bool(b),
+                ..
+            }) => Ok(*b),
+            Some(v) => fail(v.pos, format!("`{name}` must be true or false")),
+        }
+    }
+
+    fn require(&self, name: &str, usage: &str) -> Result<&Value, Fail> {
+        self.get(name).ok_or_else(|| Fail {
+            pos: self.pos,
+            msg: format!("`{}` needs {usage}", self.node.name()),
+        })
+    }
+}
+
+/// A statement up to its children: modifiers, node name and arguments.
+struct Head {
+    kind: NodeKind,
+    pos: Pos,
+    params: Params,
+    /// `%` or `*`: the statement is left out of the result.
+    skip: bool,
+}
+
+// ---------------------------------------------------------------------------------------------
+// Statements, read with an explicit stack of open nodes
+
+/// What the solids below a node inherit.
+#[derive(Clone, Debug, Default)]
+struct Ctx {
+    /// `None` is the identity.
+    matrix: Option<Mat4>,
+    colour: Option<[f64; 4]>,
+    skip: bool,
+}
+
+/// How an open operation's children end.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Closer {
+    /// `{ … }`, opened at this position.
+    Brace(Pos),
+    /// A single child statement: `multmatrix(…) cube(…);`
+    Single,
+}
+
+/// An operation whose children are being read.
+struct Frame {
+    kind: NodeKind,
+    closer: Closer,
+    ctx: Ctx,
+    children: Vec<CsgNode>,
+}
+
+impl Frame {
+    fn finish(self) -> Option<CsgNode> {
+        (!self.ctx.skip).then(|| combine(self.kind.op(), self.children))
+    }
+}
+
+/// What comes next at a statement position.
+enum Next {
+    Eof,
+    CloseBrace,
+    Semicolon,
+    Statement,
+}
+
+struct Reader<'a> {
+    parser: Parser<'a>,
+    solids: Vec<ConvexSolid>,
+    vertices: usize,
+    open: Vec<Frame>,
+    top: Vec<CsgNode>,
+}
+
+impl<'a> Reader<'a> {
+    fn new(text: &'a str) -> Self {
+        Reader {
+            parser: Parser::new(text),
+            solids: Vec::new(),
+            vertices: 0,
+            open: Vec::new(),
+            top: Vec::new(),
+        }
+    }
+
+    fn run(mut self) -> Result<CsgScene, Fail> {
+        loop {
+            let token = self.parser.peek()?;
+            let pos = token.pos;
+            let next = match token.tok {
+                Tok::Eof => Next::Eof,
+                Tok::Sym(b'}') => Next::CloseBrace,
+                Tok::Sym(b';') => Next::Semicolon,
+                _ => Next::Statement,
+            };
+            match next {
+                Next::Eof => return self.end(pos),
+                Next::CloseBrace => self.close_brace(pos)?,
+                Next::Semicolon => {
+                    self.parser.next()?;
+                    self.empty_statement();
+                }
+                Next::Statement => self.statement(pos)?,
+            }
+        }
+    }
+
+    fn end(mut self, pos: Pos) -> Result<CsgScene, Fail> {
+        match self.open.pop() {
+            None => Ok(CsgScene {
+                solids: self.solids,
+                root: combine(Op::Union, self.top),
+            }),
+            Some(frame) => fail(pos, unclosed(&frame, "end of file")),
+        }
+    }
+
+    fn close_brace(&mut self, pos: Pos) -> Result<(), Fail> {
+        match self.open.last() {
+            None => fail(pos, "unexpected '}' (no '{' is open)"),
+            Some(frame) if frame.closer == Closer::Single => fail(pos, unclosed(frame, "'}'")),
+            Some(_) => {
+                self.parser.next()?;
+                let node = self.open.pop().and_then(Frame::finish);
+                self.deliver(node);
+                Ok(())
+            }
+        }
+    }
+
+    /// A lone `;`: nothing inside braces, no children after `group()`.
+    fn empty_statement(&mut self) {
+        if self.open.last().is_some_and(|f| f.closer == Closer::Single) {
+            let node = self.open.pop().and_then(Frame::finish);
+            self.deliver(node);
+        }
+    }
+
+    fn statement(&mut self, pos: Pos) -> Result<(), Fail> {
+        if self.open.len() >= MAX_NESTING {
+            return fail(
+                pos,
+                format!("statements nested deeper than {MAX_NESTING} levels"),
+            );
+        }
+        let head = self.head()?;
+        let parent = self.open.last().map(|f| f.ctx.clone()).unwrap_or_default();
+        let ctx = child_ctx(&parent, &head)?;
+        if head.kind.is_leaf() {
+            let context = format!("after `{}(…)` (it takes no children)", head.kind.name());
+            self.parser.expect_sym(b';', &context)?;
+            let node = self.leaf(&head, &ctx)?;
+            self.deliver(node);
+            return Ok(());
+        }
+        let closer = match self.parser.eat_sym(b'{')? {
+            Some(brace) => Closer::Brace(brace),
+            None => Closer::Single,
+        };
+        self.open.push(Frame {
+            kind: head.kind,
+            closer,
+            ctx,
+            children: Vec::new(),
+        });
+        Ok(())
+    }
+
+    /// Modifiers, name and arguments of a statement.
+    fn head(&mut self) -> Result<Head, Fail> {
+        let mut skip = false;
+        let token = loop {
+            let token = self.parser.next()?;
+            match token.tok {
+                Tok::Sym(b'%' | b'*') => skip = true,
+                Tok::Sym(b'#') => {}
+                Tok::Sym(b'!') => return fail(token.pos, "the root modifier '!' is not supported"),
+                _ => break token,
+            }
+        };
+        let Tok::Ident(name) = &token.tok else {
+            let found = token.tok.describe();
+            return fail(
+                token.pos,
+                format!("expected a statement such as `group() {{`, found {found}"),
+            );
+        };
+        let Some(kind) = NodeKind::from_name(name) else {
+            return fail(
+                token.pos,
+                format!("unsupported node `{name}` (csgpix reads {NODE_LIST})"),
+            );
+        };
+        let args = self.parser.args(name)?;
+        let params = Params::bind(kind, token.pos, args)?;
+        Ok(Head {
+            kind,
+            pos: token.pos,
+            params,
+            skip,
+        })
+    }
+
+    /// Hands a finished node (or nothing, for a skipped one) to the open operation, closing
+    /// the single-child operations it completes.
+    fn deliver(&mut self, mut node: Option<CsgNode>) {
+        loop {
+            let Some(frame) = self.open.last_mut() else {
+                self.top.extend(node);
+                return;
+            };
+            frame.children.extend(node);
+            if frame.closer != Closer::Single {
+                return;
+            }
+            node = self.open.pop().and_then(Frame::finish);
+        }
+    }
+
+    fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<CsgNode>, Fail> {
+        let budget = MAX_SCENE_VERTICES - self.vertices;
+        let shape = match head.kind {
+            NodeKind::Cube => cube(&head.params)?,
+            NodeKind::Sphere => sphere(&head.params, budget)?,
+            NodeKind::Cylinder => cylinder(&head.params, budget)?,
+            _ => polyhedron(&head.params, budget)?,
+        };
+        if ctx.skip {
+            return Ok(None);
+        }
+        let solid = place(shape, ctx, head.pos)?;
+        self.vertices += solid.vertices.len();
+        self.solids.push(solid);
+        Ok(Some(CsgNode::Solid(self.solids.len() - 1)))
+    }
+}
+
+fn unclosed(frame: &Frame, found: &str) -> String {
+    let name = frame.kind.name();
+    match frame.closer {
+        Closer::Brace(at) => {
+            format!("expected '}}' to close `{name}` opened at {at}, found {found}")
+        }
+        Closer::Single => {
+            format!("expected a child statement or ';' after `{name}(…)`, found {found}")
+        }
+    }
+}
+
+/// The context of the children of `head` (or of `head` itself, for a leaf).
+fn child_ctx(parent: &Ctx, head: &Head) -> Result<Ctx, Fail> {
+    let mut ctx = parent.clone();
+    ctx.skip |= head.skip;
+    match head.kind {
+        NodeKind::Multmatrix => {
+            if let Some(m) = matrix(&head.params)? {
+                ctx.matrix = Some(match &parent.matrix {
+                    Some(outer) => mat_mul(outer, &m),
+                    None => m,
+                });
+            }
+        }
+        NodeKind::Color => ctx.colour = Some(colour(&head.params)?),
+        _ => {}
+    }
+    Ok(ctx)
+}
+
+// ---------------------------------------------------------------------------------------------
+// CSG tree
+
+fn combine(op: Op, children: Vec<CsgNode>) -> CsgNode {
+    match op {
+        Op::Union => union(children),
+        Op::Intersection => intersection(children),
+        Op::Difference => difference(children),
+    }
+}
+
+fn union(children: Vec<CsgNode>) -> CsgNode {
+    let mut parts = Vec::with_capacity(children.len());
+    for child in children {
+        match child {
+            CsgNode::Empty => {}
+            CsgNode::Union(inner) => parts.extend(inner),
+            other => parts.push(other),
+        }
+    }
+    one_or(parts, CsgNode::Union)
+}
+
+fn intersection(children: Vec<CsgNode>) -> CsgNode {
+    if children.iter().any(|c| matches!(c, CsgNode::Empty)) {
+        return CsgNode::Empty;
+    }
+    let mut parts = Vec::with_capacity(children.len());
+    for child in children {
+        match child {
+            CsgNode::Intersection(inner) => parts.extend(inner),
+            other => parts.push(other),
+        }
+    }
+    one_or(parts, CsgNode::Intersection)
+}
+
+fn difference(children: Vec<CsgNode>) -> CsgNode {
+    let mut children = children.into_iter();
+    let first = match children.next() {
+        None | Some(CsgNode::Empty) => return CsgNode::Empty,
+        Some(first) => first,
+    };
+    let mut parts = vec![first];
+    parts.extend(children.filter(|c| !matches!(c, CsgNode::Empty)));
+    one_or(parts, CsgNode::Difference)
+}
+
+fn one_or(mut parts: Vec<CsgNode>, many: fn(Vec<CsgNode>) -> CsgNode) -> CsgNode {
+    match parts.len() {
+        0 => CsgNode::Empty,
+        1 => parts.pop().unwrap_or(CsgNode::Empty),
+        _ => many(parts),
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Transforms and colours
+
+type Vec3 = [f64; 3];
+type Mat4 = [[f64; 4]; 4];
+
+const IDENTITY: Mat4 = [
+    [1.0, 0.0, 0.0, 0.0],
+    [0.0, 1.0, 0.0, 0.0],
+    [0.0, 0.0, 1.0, 0.0],
+    [0.0, 0.0, 0.0, 1.0],
+];
+
+/// `multmatrix(m)`: 3 or 4 rows of 4 numbers, the last row `[0, 0, 0, w]` with the matrix
+/// divided by `w` as OpenSCAD does; a singular linear part is refused.
+fn matrix(params: &Params) -> Result<Option<Mat4>, Fail> {
+    let Some(value) = params.get("m") else {
+        return Ok(None);
+    };
+    let rows = value.list("`m`")?;
+    if !(3..=4).contains(&rows.len()) {
+        return fail(value.pos, "`m` must have 4 rows of 4 numbers");
+    }
+    let mut m = IDENTITY;
+    for (row, cells) in m.iter_mut().zip(rows) {
+        let [a, b, c, d] = cells.list("a row of `m`")? else {
+            return fail(cells.pos, "a row of `m` must have 4 numbers");
+        };
+        let entry = "an entry of `m`";
+        *row = [
+            a.number(entry)?,
+            b.number(entry)?,
+            c.number(entry)?,
+            d.number(entry)?,
+        ];
+    }
+    normalise(m, value.pos).map(Some)
+}
+
+/// Divides by `m[3][3]` and checks the matrix is affine and invertible.
+fn normalise(mut m: Mat4, pos: Pos) -> Result<Mat4, Fail> {
+    if m[3][..3].iter().any(|&v| v != 0.0) {
+        return fail(
+            pos,
+            "projective matrices are not supported: the last row of `m` must be [0, 0, 0, w]",
+        );
+    }
+    let w = m[3][3];
+    if w == 0.0 {
+        return fail(pos, "the last entry of `m` must not be 0");
+    }
+    if w != 1.0 {
+        m = m.map(|row| row.map(|v| v / w));
+    }
+    let size = m[..3]
+        .iter()
+        .flat_map(|row| &row[..3])
+        .fold(0.0_f64, |a, v| a.max(v.abs()));
+    let det = det3(&m);
+    let invertible = det.abs() > 1e-12 * size * size * size;
+    if !invertible {
+        return fail(
+            pos,
+            format!("singular matrix (determinant {det:e}): it flattens the solids"),
+        );
+    }
+    Ok(m)
+}
+
+fn mat_mul(a: &Mat4, b: &Mat4) -> Mat4 {
+    let mut out = [[0.0; 4]; 4];
+    for (i, row) in out.iter_mut().enumerate() {
+        for (j, cell) in row.iter_mut().enumerate() {
+            *cell = (0..4).map(|k| a[i][k] * b[k][j]).sum();
+        }
+    }
+    out
+}
+
+fn det3(m: &Mat4) -> f64 {
+    m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+}
+
+fn transform_point(m: &Mat4, p: Vec3) -> Vec3 {
+    let row = |r: &[f64; 4]| r[0] * p[0] + r[1] * p[1] + r[2] * p[2] + r[3];
+    [row(&m[0]), row(&m[1]), row(&m[2])]
+}
+
+/// `color(c, alpha)`: `c` is `[r, g, b]` or `[r, g, b, a]` (alpha 1 if missing, as in
+/// OpenSCAD's `builtin_color`), components in 0..1; `alpha` overrides the fourth.
+fn colour(params: &Params) -> Result<[f64; 4], Fail> {
+    let c = params.require("c", "a colour [r, g, b, a]")?;
+    let items = match &c.kind {
+        Kind::Str(name) => {
+            let msg = format!(
+                "colour \"{name}\" is not supported: give it as color([r, g, b, a]), \
+                 as OpenSCAD's CSG export writes it"
+            );
+            return fail(c.pos, msg);
+        }
+        Kind::List(items) if (3..=4).contains(&items.len()) => items,
+        _ => return fail(c.pos, "`c` must be [r, g, b] or [r, g, b, a]"),
+    };
+    let mut rgba = [1.0; 4];
+    for (slot, item) in rgba.iter_mut().zip(items) {
+        *slot = unit(item.number("a colour component")?, item.pos)?;
+    }
+    if let Some((alpha, pos)) = params.number("alpha")? {
+        rgba[3] = unit(alpha, pos)?;
+    }
+    Ok(rgba)
+}
+
+fn unit(v: f64, pos: Pos) -> Result<f64, Fail> {
+    if (0.0..=1.0).contains(&v) {
+        Ok(v)
+    } else {
+        fail(
+            pos,
+            format!("colour components must be between 0 and 1, found {v}"),
+        )
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Primitives
+
+/// A convex solid in its own coordinates, faces counter-clockwise seen from outside.
+#[derive(Clone, Debug, PartialEq)]
+struct Shape {
+    vertices: Vec<Vec3>,
+    faces: Vec<Vec<usize>>,
+}
+
+/// Moves a shape into the scene: transform, keep faces outward, colour.
+fn place(shape: Shape, ctx: &Ctx, pos: Pos) -> Result<ConvexSolid, Fail> {
+    let Shape {
+        mut vertices,
+        mut faces,
+    } = shape;
+    if let Some(m) = &ctx.matrix {
+        for v in &mut vertices {
+            *v = transform_point(m, *v);
+        }
+        if det3(m) < 0.0 {
+            faces.iter_mut().for_each(|f| f.reverse());
+        }
+    }
+    if vertices.iter().flatten().any(|c| !c.is_finite()) {
+        return fail(pos, "coordinates overflow after transformation");
+    }
+    Ok(ConvexSolid {
+        vertices,
+        faces,
+        colour: ctx.colour,
+        line: pos.line,
+    })
+}
+
+fn check_budget(vertices: usize, budget: usize, pos: Pos) -> Result<(), Fail> {
+    if vertices > budget {
+        let msg = format!("the scene would have more than {MAX_SCENE_VERTICES} vertices");
+        return fail(pos, msg);
+    }
+    Ok(())
+}
+
+fn positive(v: (f64, Pos), what: &str) -> Result<f64, Fail> {
+    if v.0 > 0.0 {
+        Ok(v.0)
+    } else {
+        fail(v.1, format!("{what} must be positive, found {}", v.0))
+    }
+}
+
+/// `cube(size, center)`: size a number or `[x, y, z]`, default 1. Vertex `i` is at
+/// `(i&1 ? x2 : x1, i&2 ? y2 : y1, i&4 ? z2 : z1)` and the faces are those of
+/// `CubeNode::createGeometry`.
+fn cube(params: &Params) -> Result<Shape, Fail> {
+    let size = match params.get("size") {
+        None => [1.0; 3],
+        Some(v) => {
+            let size = match v.kind {
+                Kind::Num(s) => [s; 3],
+                _ => v.vec3("`size`")?,
+            };
+            if size.iter().any(|&s| s <= 0.0) {
+                return fail(v.pos, "`size` must be positive");
+            }
+            size
+        }
+    };
+    let (lo, hi) = if params.boolean("center")? {
+        (size.map(|s| -s / 2.0), size.map(|s| s / 2.0))
+    } else {
+        ([0.0; 3], size)
+    };
+    let vertices = (0..8)
+        .map(|i| {
+            let pick = |bit: usize, axis: usize| if i & bit != 0 { hi[axis] } else { lo[axis] };
+            [pick(1, 0), pick(2, 1), pick(4, 2)]
+        })
+        .collect();
+    let faces = [
+        [4, 5, 7, 6], // top
+        [2, 3, 1, 0], // bottom
+        [0, 1, 5, 4], // front
+        [1, 3, 7, 5], // right
+        [3, 2, 6, 7], // back
+        [2, 0, 4, 6], // left
+    ];
+    Ok(Shape {
+        vertices,
+        faces: faces.iter().map(|f| f.to_vec()).collect(),
+    })
+}
+
+/// `$fn`, `$fa`, `$fs` of a sphere or cylinder.
+struct Resolution {
+    fn_: f64,
+    fa: f64,
+    fs: f64,
+}
+
+impl Resolution {
+    /// OpenSCAD's defaults are `$fn = 0, $fa = 12, $fs = 2`; `set_fragments` clamps `$fa` and
+    /// `$fs` up to 0.01. Negative values are refused.
+    fn from(params: &Params) -> Result<Self, Fail> {
+        let get = |name: &str, default: f64| match params.number(name)? {
+            None => Ok(default),
+            Some((v, pos)) if v < 0.0 => fail(pos, format!("`{name}` must not be negative")),
+            Some((v, _)) => Ok(v),
+        };
+        Ok(Resolution {
+            fn_: get(FRAGMENT_PARAMS[0], 0.0)?,
+            fa: get(FRAGMENT_PARAMS[1], 12.0)?.max(F_MINIMUM),
+            fs: get(FRAGMENT_PARAMS[2], 2.0)?.max(F_MINIMUM),
+        })
+    }
+
+    /// OpenSCAD's `Calc::get_fragments_from_r` (`src/utils/calc.cc`), as a float so a huge
+    /// count can be refused before it is converted.
+    fn fragments_from_r(&self, r: f64) -> f64 {
+        if r < GRID_FINE {
+            return 3.0;
+        }
+        if self.fn_ > 0.0 {
+            return if self.fn_ >= 3.0 {
+                self.fn_.trunc()
+            } else {
+                3.0
+            };
+        }
+        (360.0 / self.fa)
+            .min(r * 2.0 * PI / self.fs)
+            .max(5.0)
+            .ceil()
+    }
+
+    fn fragments(&self, r: f64, pos: Pos) -> Result<usize, Fail> {
+        let n = self.fragments_from_r(r);
+        if n > MAX_FRAGMENTS as f64 {
+            let msg = format!("{n} fragments (from $fn, $fa, $fs) is more than the {MAX_FRAGMENTS} csgpix accepts");
+            return fail(pos, msg);
+        }
+        Ok(n as usize)
+    }
+}
+
+/// A radius given as a diameter `d` or a radius `r`; the diameter wins, as in OpenSCAD's
+/// `lookup_radius`.
+fn radius(params: &Params, d: &str, r: &str) -> Result<Option<(f64, Pos)>, Fail> {
+    if let Some((diameter, pos)) = params.number(d)? {
+        return Ok(Some((diameter / 2.0, pos)));
+    }
+    params.number(r)
+}
+
+/// `sphere(r | d, $fn, $fa, $fs)` as `SphereNode::createGeometry`: `(fragments + 1) / 2` rings
+/// at polar angles `180 (i + 0.5) / rings`, ring 0 at the top, each a circle of `fragments`
+/// points; the top and bottom rings are polygon faces and neighbouring rings are joined by
+/// quads.
+fn sphere(params: &Params, budget: usize) -> Result<Shape, Fail> {
+    let r = match radius(params, "d", "r")? {
+        Some(r) => positive(r, "the radius")?,
+        None => 1.0,
+    };
+    let fragments = Resolution::from(params)?.fragments(r, params.pos)?;
+    let rings = fragments.div_ceil(2); // OpenSCAD's (fragments + 1) / 2
+    check_budget(rings * fragments, budget, params.pos)?;
+    let mut vertices = Vec::with_capacity(rings * fragments);
+    for i in 0..rings {
+        let phi = (180.0 * (i as f64 + 0.5)) / rings as f64;
+        circle(
+            &mut vertices,
+            r * sin_degrees(phi),
+            r * cos_degrees(phi),
+            fragments,
+        );
+    }
+    let at = |ring: usize, j: usize| ring * fragments + j % fragments;
+    let mut faces = Vec::with_capacity(2 + (rings - 1) * fragments);
+    faces.push((0..fragments).collect());
+    for i in 0..rings - 1 {
+        for j in 0..fragments {
+            faces.push(vec![at(i, j + 1), at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+        }
+    }
+    faces.push((0..fragments).map(|j| rings * fragments - j - 1).collect());
+    Ok(Shape { vertices, faces })
+}
+
+/// `cylinder(h, r1, r2, center, r, d, d1, d2, $fn, $fa, $fs)` as `CylinderNode::createGeometry`:
+/// defaults `h = 1, r = 1`; `r` sets both radii, `r1`/`r2` override it, diameters override
+/// radii. A zero radius makes that end a single apex vertex.
+fn cylinder(params: &Params, budget: usize) -> Result<Shape, Fail> {
+    let h = match params.number("h")? {
+        Some(h) => positive(h, "`h`")?,
+        None => 1.0,
+    };
+    let (mut r1, mut r2) = ((1.0, params.pos), (1.0, params.pos));
+    if let Some(r) = radius(params, "d", "r")? {
+        (r1, r2) = (r, r);
+    }
+    if let Some(r) = radius(params, "d1", "r1")? {
+        r1 = r;
+    }
+    if let Some(r) = radius(params, "d2", "r2")? {
+        r2 = r;
+    }
+    for (r, pos) in [r1, r2] {
+        if r < 0.0 {
+            return fail(
+                pos,
+                format!("a cylinder radius must not be negative, found {r}"),
+            );
+        }
+    }
+    let (r1, r2) = (r1.0, r2.0);
+    if r1 == 0.0 && r2 == 0.0 {
+        return fail(
+            params.pos,
+            "a cylinder needs a positive radius at one end at least",
+        );
+    }
+    let fragments = Resolution::from(params)?.fragments(r1.max(r2), params.pos)?;
+    check_budget(2 * fragments, budget, params.pos)?;
+    let (z1, z2) = if params.boolean("center")? {
+        (-h / 2.0, h / 2.0)
+    } else {
+        (0.0, h)
+    };
+    Ok(cylinder_shape(r1, r2, z1, z2, fragments))
+}
+
+fn cylinder_shape(r1: f64, r2: f64, z1: f64, z2: f64, n: usize) -> Shape {
+    let cone = r2 == 0.0;
+    let inverted_cone = r1 == 0.0;
+    let mut vertices = Vec::with_capacity(2 * n);
+    if inverted_cone {
+        vertices.push([0.0, 0.0, z1]);
+    } else {
+        circle(&mut vertices, r1, z1, n);
+    }
+    if cone {
+        vertices.push([0.0, 0.0, z2]);
+    } else {
+        circle(&mut vertices, r2, z2, n);
+    }
+    let mut faces: Vec<Vec<usize>> = (0..n)
+        .map(|i| {
+            let j = (i + 1) % n;
+            if cone {
+                vec![i, j, n]
+            } else if inverted_cone {
+                vec![0, j + 1, i + 1]
+            } else {
+                vec![i, j, j + n, i + n]
+            }
+        })
+        .collect();
+    if !inverted_cone {
+        faces.push((0..n).rev().collect());
+    }
+    if !cone {
+        let offset = if inverted_cone { 1 } else { n };
+        faces.push((offset..offset + n).collect());
+    }
+    Shape { vertices, faces }
+}
+
+/// OpenSCAD's `generate_circle`: point `i` at angle `360 i / fragments`, counter-clockwise from
+/// +x seen from +z.
+fn circle(out: &mut Vec<Vec3>, r: f64, z: f64, fragments: usize) {
+    for i in 0..fragments {
+        let phi = (360.0 * i as f64) / fragments as f64;
+        out.push([r * cos_degrees(phi), r * sin_degrees(phi), z]);
+    }
+}
+
+/// `polyhedron(points, faces | triangles)`. OpenSCAD lists each face clockwise seen from
+/// outside and `PolyhedronNode::createGeometry` reverses them; so does this. The result must
+/// be closed (every edge shared by two faces, once in each direction) and convex. Points no
+/// face uses are dropped.
+fn polyhedron(params: &Params, budget: usize) -> Result<Shape, Fail> {
+    let points = params.require("points", "points = [[x, y, z], …]")?;
+    let points = points
+        .list("`points`")?
+        .iter()
+        .map(|p| p.vec3("a point"))
+        .collect::<Result<Vec<_>, _>>()?;
+    check_budget(points.len(), budget, params.pos)?;
+    let faces = match params.get("faces") {
+        Some(faces) => faces,
+        None => params.require("triangles", "faces = [[i, j, k, …], …]")?,
+    };
+    let faces = faces
+        .list("`faces`")?
+        .iter()
+        .map(|f| face_indices(f, points.len()))
+        .collect::<Result<Vec<_>, _>>()?;
+    check_convex_closed(&points, &faces).map_err(|msg| Fail {
+        pos: params.pos,
+        msg: format!("polyhedron refused: {msg}"),
+    })?;
+    Ok(compact(points, faces))
+}
+
+/// One face's point indices, reversed to counter-clockwise.
+fn face_indices(face: &Value, points: usize) -> Result<Vec<usize>, Fail> {
+    let items = face.list("a face")?;
+    if items.len() < 3 {
+        return fail(face.pos, "a face needs 3 points at least");
+    }
+    let mut indices = Vec::with_capacity(items.len());
+    for item in items.iter().rev() {
+        let v = item.number("a point index")?;
+        if v.fract() != 0.0 || v < 0.0 || v >= points as f64 {
+            let msg = format!("point index {v} is not one of the {points} points");
+            return fail(item.pos, msg);
+        }
+        let i = v as usize;
+        if indices.contains(&i) {
+            return fail(item.pos, format!("point {i} appears twice in one face"));
+        }
+        indices.push(i);
+    }
+    Ok(indices)
+}
+
+/// Keeps only the points some face uses.
+fn compact(points: Vec<Vec3>, mut faces: Vec<Vec<usize>>) -> Shape {
+    let mut new_index = vec![usize::MAX; points.len()];
+    let mut vertices = Vec::new();
+    for i in faces.iter_mut().flatten() {
+        if new_index[*i] == usize::MAX {
+            new_index[*i] = vertices.len();
+            vertices.push(points[*i]);
+        }
+        *i = new_index[*i];
+    }
+    Shape { vertices, faces }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checks of polyhedra
+
+/// Checks that faces (counter-clockwise seen from outside) close a convex solid: every
+/// directed edge once and its reverse once, no degenerate face, positive volume, and no used
+/// point outside any face plane by more than [`CONVEXITY_TOLERANCE`].
+fn check_convex_closed(vertices: &[Vec3], faces: &[Vec<usize>]) -> Result<(), String> {
+    check_closed(faces)?;
+    let used: Vec<usize> = {
+        let mut used: Vec<usize> = faces.iter().flatten().copied().collect();
+        used.sort_unstable();
+        used.dedup();
+        used
+    };
+    let (extent, magnitude) = scale(vertices, &used);
+    let mut volume = 0.0;
+    for (k, face) in faces.iter().enumerate() {
+        let n = newell(vertices, face);
+        let area2 = norm(n);
+        let has_area = area2 > 1e-12 * extent * extent;
+        if !has_area {
+            return Err(format!("face {k} has no area"));
+        }
+        let centre = centroid(vertices, face);
+        volume += dot(centre, n) / 6.0;
+        let unit = n.map(|c| c / area2);
+        let tolerance = CONVEXITY_TOLERANCE * magnitude;
+        for &i in &used {
+            let d = dot(unit, sub(vertices[i], centre));
+            if d > tolerance {
+                return Err(format!(
+                    "not convex: point {i} lies {d:.3e} outside the plane of face {k}"
+                ));
+            }
+        }
+    }
+    let has_volume = volume > 1e-12 * extent * extent * extent;
+    if !has_volume {
+        return Err(
+            "the faces wind the wrong way round (OpenSCAD lists each face clockwise \
+                    seen from outside) or enclose no volume"
+                .to_string(),
+        );
+    }
+    Ok(())
+}
+
+fn check_closed(faces: &[Vec<usize>]) -> Result<(), String> {
+    let mut edges: HashMap<(usize, usize), usize> = HashMap::new();
+    for (k, face) in faces.iter().enumerate() {
+        for edge in ring_edges(face) {
+            if let Some(j) = edges.insert(edge, k) {
+                return Err(format!(
+                    "faces {j} and {k} both run from point {} to point {} (the surface \
+                     is not closed and consistently wound)",
+                    edge.1, edge.0
+                ));
+            }
+        }
+    }
+    for (k, face) in faces.iter().enumerate() {
+        for (a, b) in ring_edges(face) {
+            if !edges.contains_key(&(b, a)) {
+                return Err(format!(
+                    "not closed: the edge between points {a} and {b} of face {k} has no \
+                     neighbouring face"
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The directed edges of a face, closing the loop.
+fn ring_edges(face: &[usize]) -> impl Iterator<Item = (usize, usize)> + '_ {
+    face.iter()
+        .zip(face.iter().cycle().skip(1))
+        .map(|(&a, &b)| (a, b))
+}
+
+/// The bounding-box diagonal and the largest absolute coordinate of the used points.
+fn scale(vertices: &[Vec3], used: &[usize]) -> (f64, f64) {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let mut magnitude = 0.0_f64;
+    for &i in used {
+        for axis in 0..3 {
+            let c = vertices[i][axis];
+            lo[axis] = lo[axis].min(c);
+            hi[axis] = hi[axis].max(c);
+            magnitude = magnitude.max(c.abs());
+        }
+    }
+    (norm(sub(hi, lo)), magnitude)
+}
+
+/// Newell's normal: the polygon's unit normal (right-hand rule) times twice its area.
+fn newell(vertices: &[Vec3], face: &[usize]) -> Vec3 {
+    let mut n = [0.0; 3];
+    for (a, b) in ring_edges(face) {
+        let (a, b) = (vertices[a], vertices[b]);
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    n
+}
+
+fn centroid(vertices: &[Vec3], face: &[usize]) -> Vec3 {
+    let mut c = [0.0; 3];
+    for &i in face {
+        for axis in 0..3 {
+            c[axis] += vertices[i][axis];
+        }
+    }
+    c.map(|v| v / face.len() as f64)
+}
+
+fn sub(a: Vec3, b: Vec3) -> Vec3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn dot(a: Vec3, b: Vec3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn norm(a: Vec3) -> f64 {
+    dot(a, a).sqrt()
+}
+
+// ---------------------------------------------------------------------------------------------
+// Trigonometry in degrees, as OpenSCAD's `src/utils/degree_trig.cc`
+
+/// `sqrt(3) / 2`, OpenSCAD's `M_SQRT3_4`.
+const SQRT3_4: f64 = 0.866_025_403_784_438_6;
+
+/// Reduces to `[0, 360)`.
+fn reduce_degrees(x: f64) -> f64 {
+    if (0.0..360.0).contains(&x) {
+        x
+    } else {
+        x - 360.0 * (x / 360.0).floor()
+    }
+}
+
+/// `sin_degrees`: exact at multiples of 30° and 45°.
+fn sin_degrees(x: f64) -> f64 {
+    let mut x = reduce_degrees(x);
+    let oppose = x >= 180.0;
+    if oppose {
+        x -= 180.0;
+    }
+    if x > 90.0 {
+        x = 180.0 - x;
+    }
+    let s = if x < 45.0 {
+        if x == 30.0 {
+            0.5
+        } else {
+            x.to_radians().sin()
+        }
+    } else if x == 45.0 {
+        FRAC_1_SQRT_2
+    } else if x == 60.0 {
+        SQRT3_4
+    } else {
+        (90.0 - x).to_radians().cos()
+    };
+    if oppose {
+        -s
+    } else {
+        s
+    }
+}
+
+/// `cos_degrees`: exact at multiples of 30° and 45°.
+fn cos_degrees(x: f64) -> f64 {
+    let mut x = reduce_degrees(x);
+    let mut oppose = x >= 180.0;
+    if oppose {
+        x -= 180.0;
+    }
+    if x > 90.0 {
+        x = 180.0 - x;
+        oppose = !oppose;
+    }
+    let c = if x > 45.0 {
+        if x == 60.0 {
+            0.5
+        } else {
+            (90.0 - x).to_radians().sin()
+        }
+    } else if x == 45.0 {
+        FRAC_1_SQRT_2
+    } else if x == 30.0 {
+        SQRT3_4
+    } else {
+        x.to_radians().cos()
+    };
+    if oppose {
+        -c
+    } else {
+        c
+    }
+}
