@@ -8,4 +8,5 @@ pub mod output;
 pub mod palette;
 pub mod polygon;
 pub mod project;
+pub mod scad;
 pub mod solid;

@@ -12,7 +12,7 @@
 //! * `intersection()` → [`CsgNode::Intersection`], `difference()` → [`CsgNode::Difference`]
 //!   (the first child minus the others).
 //! * `multmatrix(m = 4×4)` transforms the solids below it (nested transforms compose). As in
-//!   OpenSCAD's `builtin_multmatrix` (`src/core/TransformNode.cc`) a matrix whose `m[3][3]` is
+//!   OpenSCAD's `multmatrix` module (`src/core/TransformNode.cc`) a matrix whose `m[3][3]` is
 //!   not 1 is divided by it; a projective or singular matrix is refused. A matrix with a
 //!   negative determinant (a mirror) reverses the winding of every face so faces stay outward.
 //! * `color([r, g, b, a])` / `color(c = [r, g, b], alpha = a)` colours the solids below it,
@@ -46,13 +46,24 @@
 //! * angles: `sin_degrees`/`cos_degrees` in `src/utils/degree_trig.cc`, which are exact at
 //!   multiples of 30° and 45°.
 //!
+//! OpenSCAD versions differ in details, and this reader picks one:
+//!
+//! * a fractional `$fn` is truncated (`get_fragments_from_r`, release 2021.01); the newer
+//!   `CurveDiscretizer::getCircularSegmentCount` (`src/core/CurveDiscretizer.cc`) rounds it
+//!   up instead;
+//! * release 2021.01 splits the band between two sphere rings into triangles where newer
+//!   versions use one quad per fragment, as here; the vertices are the same;
+//! * away from multiples of 30° and 45°, angles are converted as `x * (π / 180)`; 2021.01
+//!   computes `x * π / 180`, which can differ in the last bit.
+//!
 //! # Limits
 //!
 //! Every error names the line and column (1-based, counted in characters) of the offending
 //! token. Statements nest at most [`MAX_NESTING`] deep and vectors [`MAX_VECTOR_NESTING`]
 //! deep, so neither the reader nor code walking the tree recursively can overflow the stack;
-//! a circle has at most [`MAX_FRAGMENTS`] fragments and a scene at most
-//! [`MAX_SCENE_VERTICES`] vertices.
+//! a circle has at most [`MAX_FRAGMENTS`] fragments, a polyhedron at most
+//! [`MAX_POLYHEDRON_POINTS`] points, a scene at most [`MAX_SCENE_VERTICES`] vertices, and no
+//! coordinate may exceed [`MAX_COORDINATE`] in size.
 
 use std::collections::{HashMap, VecDeque};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
@@ -60,7 +71,8 @@ use std::fmt;
 
 use crate::solid::{ConvexSolid, CsgNode, CsgScene};
 
-/// Deepest nesting of statements accepted (a leaf inside 1000 groups is the limit).
+/// Deepest nesting of statements accepted: a top-level statement is at depth 1, so a cube may
+/// sit inside at most 999 groups.
 pub const MAX_NESTING: usize = 1_000;
 
 /// Deepest nesting of vectors accepted (matrices, points and faces need 2).
@@ -72,6 +84,12 @@ pub const MAX_FRAGMENTS: usize = 10_000;
 /// Most vertices a whole scene may have (a sphere with `$fn = 1414` alone has about that).
 pub const MAX_SCENE_VERTICES: usize = 1_000_000;
 
+/// Most points a polyhedron may have (its convexity check takes points × faces steps).
+pub const MAX_POLYHEDRON_POINTS: usize = 10_000;
+
+/// Largest absolute coordinate of a placed solid, so that areas and volumes stay finite.
+pub const MAX_COORDINATE: f64 = 1e12;
+
 /// OpenSCAD's `GRID_FINE` (`src/geometry/Grid.h`): below this radius a circle has 3 fragments.
 const GRID_FINE: f64 = 0.000_000_953_674_316_406_25;
 
@@ -82,11 +100,6 @@ const F_MINIMUM: f64 = 0.01;
 /// plane. OpenSCAD writes polyhedron coordinates with 6 significant digits, so faces of a
 /// convex polyhedron can be that far from flat in an exported file.
 const CONVEXITY_TOLERANCE: f64 = 1e-5;
-
-/// The nodes this reader understands, for messages.
-const NODE_LIST: &str =
-    "group, union, difference, intersection, multmatrix, color, render, cube, sphere, cylinder, \
-     polyhedron";
 
 /// A problem in a `.csg` file, with its position (1-based line and column, in characters).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -499,35 +512,42 @@ impl<'a> Parser<'a> {
                 open.push((token.pos, Vec::new()));
                 continue;
             }
-            let mut done = self.scalar_or_empty(token)?;
-            // Attach the finished value to the open vectors, closing those that end here.
-            loop {
-                let Some((pos, mut items)) = open.pop() else {
-                    return Ok(done);
-                };
-                items.push(done);
-                let token = self.next()?;
-                let closed = match token.tok {
-                    Tok::Sym(b',') => self.eat_sym(b']')?.is_some(),
-                    Tok::Sym(b']') => true,
-                    other => {
-                        let found = other.describe();
-                        return fail(
-                            token.pos,
-                            format!("expected ',' or ']' in a vector, found {found}"),
-                        );
-                    }
-                };
-                if !closed {
-                    open.push((pos, items));
-                    break;
-                }
-                done = Value {
-                    kind: Kind::List(items),
-                    pos,
-                };
+            let element = self.scalar_or_empty(token)?;
+            if let Some(value) = self.attach(&mut open, element)? {
+                return Ok(value);
             }
         }
+    }
+
+    /// Adds a finished element to the innermost open vector, closing the vectors that end after
+    /// it; returns the whole value once nothing is left open.
+    fn attach(
+        &mut self,
+        open: &mut Vec<(Pos, Vec<Value>)>,
+        mut done: Value,
+    ) -> Result<Option<Value>, Fail> {
+        while let Some((pos, mut items)) = open.pop() {
+            items.push(done);
+            let token = self.next()?;
+            let closed = match token.tok {
+                Tok::Sym(b',') => self.eat_sym(b']')?.is_some(),
+                Tok::Sym(b']') => true,
+                other => {
+                    let found = other.describe();
+                    let msg = format!("expected ',' or ']' in a vector, found {found}");
+                    return fail(token.pos, msg);
+                }
+            };
+            if !closed {
+                open.push((pos, items));
+                return Ok(None);
+            }
+            done = Value {
+                kind: Kind::List(items),
+                pos,
+            };
+        }
+        Ok(Some(done))
     }
 
     /// A number, boolean, `undef`, string or `[]`, starting with `token`.
@@ -602,40 +622,34 @@ enum Op {
     Difference,
 }
 
-const FRAGMENT_PARAMS: [&str; 3] = ["$fn", "$fa", "$fs"];
+/// Every node this reader understands, by name.
+const NODES: [(&str, NodeKind); 11] = [
+    ("group", NodeKind::Group),
+    ("union", NodeKind::Union),
+    ("difference", NodeKind::Difference),
+    ("intersection", NodeKind::Intersection),
+    ("multmatrix", NodeKind::Multmatrix),
+    ("color", NodeKind::Color),
+    ("render", NodeKind::Render),
+    ("cube", NodeKind::Cube),
+    ("sphere", NodeKind::Sphere),
+    ("cylinder", NodeKind::Cylinder),
+    ("polyhedron", NodeKind::Polyhedron),
+];
 
 impl NodeKind {
     fn from_name(name: &str) -> Option<Self> {
-        Some(match name {
-            "group" => NodeKind::Group,
-            "union" => NodeKind::Union,
-            "difference" => NodeKind::Difference,
-            "intersection" => NodeKind::Intersection,
-            "render" => NodeKind::Render,
-            "multmatrix" => NodeKind::Multmatrix,
-            "color" => NodeKind::Color,
-            "cube" => NodeKind::Cube,
-            "sphere" => NodeKind::Sphere,
-            "cylinder" => NodeKind::Cylinder,
-            "polyhedron" => NodeKind::Polyhedron,
-            _ => return None,
-        })
+        NODES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, kind)| kind)
     }
 
     fn name(self) -> &'static str {
-        match self {
-            NodeKind::Group => "group",
-            NodeKind::Union => "union",
-            NodeKind::Difference => "difference",
-            NodeKind::Intersection => "intersection",
-            NodeKind::Render => "render",
-            NodeKind::Multmatrix => "multmatrix",
-            NodeKind::Color => "color",
-            NodeKind::Cube => "cube",
-            NodeKind::Sphere => "sphere",
-            NodeKind::Cylinder => "cylinder",
-            NodeKind::Polyhedron => "polyhedron",
-        }
+        NODES
+            .iter()
+            .find(|(_, kind)| *kind == self)
+            .map_or("?", |(name, _)| name)
     }
 
     /// Parameters taken by position (in OpenSCAD's order), then those taken only by name.
@@ -934,10 +948,7 @@ impl<'a> Reader<'a> {
             );
         };
         let Some(kind) = NodeKind::from_name(name) else {
-            return fail(
-                token.pos,
-                format!("unsupported node `{name}` (csgpix reads {NODE_LIST})"),
-            );
+            return fail(token.pos, unsupported(name));
         };
         let args = self.parser.args(name)?;
         let params = Params::bind(kind, token.pos, args)?;
@@ -966,13 +977,14 @@ impl<'a> Reader<'a> {
     }
 
     fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<CsgNode>, Fail> {
-        let budget = MAX_SCENE_VERTICES - self.vertices;
+        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
         let shape = match head.kind {
             NodeKind::Cube => cube(&head.params)?,
             NodeKind::Sphere => sphere(&head.params, budget)?,
             NodeKind::Cylinder => cylinder(&head.params, budget)?,
             _ => polyhedron(&head.params, budget)?,
         };
+        check_budget(shape.vertices.len(), budget, head.pos)?;
         if ctx.skip {
             return Ok(None);
         }
@@ -981,6 +993,14 @@ impl<'a> Reader<'a> {
         self.solids.push(solid);
         Ok(Some(CsgNode::Solid(self.solids.len() - 1)))
     }
+}
+
+fn unsupported(name: &str) -> String {
+    let known: Vec<&str> = NODES.iter().map(|(n, _)| *n).collect();
+    format!(
+        "unsupported node `{name}` (csgpix reads {})",
+        known.join(", ")
+    )
 }
 
 fn unclosed(frame: &Frame, found: &str) -> String {
@@ -1017,6 +1037,7 @@ fn child_ctx(parent: &Ctx, head: &Head) -> Result<Ctx, Fail> {
 // ---------------------------------------------------------------------------------------------
 // CSG tree
 
+/// The node an operation makes of its children, simplified as the module documentation says.
 fn combine(op: Op, children: Vec<CsgNode>) -> CsgNode {
     match op {
         Op::Union => union(children),
@@ -1025,32 +1046,35 @@ fn combine(op: Op, children: Vec<CsgNode>) -> CsgNode {
     }
 }
 
+/// Empty children dropped, unions flattened.
 fn union(children: Vec<CsgNode>) -> CsgNode {
     let mut parts = Vec::with_capacity(children.len());
-    for child in children {
-        match child {
+    for mut child in children {
+        match &mut child {
             CsgNode::Empty => {}
-            CsgNode::Union(inner) => parts.extend(inner),
-            other => parts.push(other),
+            CsgNode::Union(inner) => parts.append(inner),
+            _ => parts.push(child),
         }
     }
     one_or(parts, CsgNode::Union)
 }
 
+/// Empty if any child is, intersections flattened.
 fn intersection(children: Vec<CsgNode>) -> CsgNode {
     if children.iter().any(|c| matches!(c, CsgNode::Empty)) {
         return CsgNode::Empty;
     }
     let mut parts = Vec::with_capacity(children.len());
-    for child in children {
-        match child {
-            CsgNode::Intersection(inner) => parts.extend(inner),
-            other => parts.push(other),
+    for mut child in children {
+        match &mut child {
+            CsgNode::Intersection(inner) => parts.append(inner),
+            _ => parts.push(child),
         }
     }
     one_or(parts, CsgNode::Intersection)
 }
 
+/// Empty if the first child is; empty subtracted children dropped.
 fn difference(children: Vec<CsgNode>) -> CsgNode {
     let mut children = children.into_iter();
     let first = match children.next() {
@@ -1062,6 +1086,7 @@ fn difference(children: Vec<CsgNode>) -> CsgNode {
     one_or(parts, CsgNode::Difference)
 }
 
+/// No part is empty, one part is itself, more make a `many` node.
 fn one_or(mut parts: Vec<CsgNode>, many: fn(Vec<CsgNode>) -> CsgNode) -> CsgNode {
     match parts.len() {
         0 => CsgNode::Empty,
@@ -1220,8 +1245,9 @@ fn place(shape: Shape, ctx: &Ctx, pos: Pos) -> Result<ConvexSolid, Fail> {
             faces.iter_mut().for_each(|f| f.reverse());
         }
     }
-    if vertices.iter().flatten().any(|c| !c.is_finite()) {
-        return fail(pos, "coordinates overflow after transformation");
+    if vertices.iter().flatten().any(|&c| too_large(c)) {
+        let msg = format!("a coordinate exceeds {MAX_COORDINATE:e} in size");
+        return fail(pos, msg);
     }
     Ok(ConvexSolid {
         vertices,
@@ -1229,6 +1255,11 @@ fn place(shape: Shape, ctx: &Ctx, pos: Pos) -> Result<ConvexSolid, Fail> {
         colour: ctx.colour,
         line: pos.line,
     })
+}
+
+/// Beyond [`MAX_COORDINATE`], or not a number at all.
+fn too_large(c: f64) -> bool {
+    c.is_nan() || c.abs() > MAX_COORDINATE
 }
 
 fn check_budget(vertices: usize, budget: usize, pos: Pos) -> Result<(), Fail> {
@@ -1239,11 +1270,11 @@ fn check_budget(vertices: usize, budget: usize, pos: Pos) -> Result<(), Fail> {
     Ok(())
 }
 
-fn positive(v: (f64, Pos), what: &str) -> Result<f64, Fail> {
-    if v.0 > 0.0 {
-        Ok(v.0)
+fn positive((v, pos): (f64, Pos), what: &str) -> Result<f64, Fail> {
+    if v > 0.0 {
+        Ok(v)
     } else {
-        fail(v.1, format!("{what} must be positive, found {}", v.0))
+        fail(pos, format!("{what} must be positive, found {v}"))
     }
 }
 
@@ -1299,16 +1330,16 @@ struct Resolution {
 impl Resolution {
     /// OpenSCAD's defaults are `$fn = 0, $fa = 12, $fs = 2`; `set_fragments` clamps `$fa` and
     /// `$fs` up to 0.01. Negative values are refused.
-    fn from(params: &Params) -> Result<Self, Fail> {
+    fn read(params: &Params) -> Result<Self, Fail> {
         let get = |name: &str, default: f64| match params.number(name)? {
             None => Ok(default),
             Some((v, pos)) if v < 0.0 => fail(pos, format!("`{name}` must not be negative")),
             Some((v, _)) => Ok(v),
         };
         Ok(Resolution {
-            fn_: get(FRAGMENT_PARAMS[0], 0.0)?,
-            fa: get(FRAGMENT_PARAMS[1], 12.0)?.max(F_MINIMUM),
-            fs: get(FRAGMENT_PARAMS[2], 2.0)?.max(F_MINIMUM),
+            fn_: get("$fn", 0.0)?,
+            fa: get("$fa", 12.0)?.max(F_MINIMUM),
+            fs: get("$fs", 2.0)?.max(F_MINIMUM),
         })
     }
 
@@ -1334,7 +1365,9 @@ impl Resolution {
     fn fragments(&self, r: f64, pos: Pos) -> Result<usize, Fail> {
         let n = self.fragments_from_r(r);
         if n > MAX_FRAGMENTS as f64 {
-            let msg = format!("{n} fragments (from $fn, $fa, $fs) is more than the {MAX_FRAGMENTS} csgpix accepts");
+            let msg = format!(
+                "{n} fragments (from $fn, $fa, $fs) is more than the {MAX_FRAGMENTS} csgpix accepts"
+            );
             return fail(pos, msg);
         }
         Ok(n as usize)
@@ -1359,7 +1392,7 @@ fn sphere(params: &Params, budget: usize) -> Result<Shape, Fail> {
         Some(r) => positive(r, "the radius")?,
         None => 1.0,
     };
-    let fragments = Resolution::from(params)?.fragments(r, params.pos)?;
+    let fragments = Resolution::read(params)?.fragments(r, params.pos)?;
     let rings = fragments.div_ceil(2); // OpenSCAD's (fragments + 1) / 2
     check_budget(rings * fragments, budget, params.pos)?;
     let mut vertices = Vec::with_capacity(rings * fragments);
@@ -1417,7 +1450,7 @@ fn cylinder(params: &Params, budget: usize) -> Result<Shape, Fail> {
             "a cylinder needs a positive radius at one end at least",
         );
     }
-    let fragments = Resolution::from(params)?.fragments(r1.max(r2), params.pos)?;
+    let fragments = Resolution::read(params)?.fragments(r1.max(r2), params.pos)?;
     check_budget(2 * fragments, budget, params.pos)?;
     let (z1, z2) = if params.boolean("center")? {
         (-h / 2.0, h / 2.0)
@@ -1484,6 +1517,14 @@ fn polyhedron(params: &Params, budget: usize) -> Result<Shape, Fail> {
         .map(|p| p.vec3("a point"))
         .collect::<Result<Vec<_>, _>>()?;
     check_budget(points.len(), budget, params.pos)?;
+    if points.len() > MAX_POLYHEDRON_POINTS {
+        let msg = format!("a polyhedron may have at most {MAX_POLYHEDRON_POINTS} points");
+        return fail(params.pos, msg);
+    }
+    if let Some(p) = points.iter().flatten().find(|&&c| too_large(c)) {
+        let msg = format!("coordinate {p} exceeds {MAX_COORDINATE:e} in size");
+        return fail(params.pos, msg);
+    }
     let faces = match params.get("faces") {
         Some(faces) => faces,
         None => params.require("triangles", "faces = [[i, j, k, …], …]")?,
@@ -1522,17 +1563,19 @@ fn face_indices(face: &Value, points: usize) -> Result<Vec<usize>, Fail> {
     Ok(indices)
 }
 
-/// Keeps only the points some face uses.
+/// Keeps only the points some face uses, in their order.
 fn compact(points: Vec<Vec3>, mut faces: Vec<Vec<usize>>) -> Shape {
-    let mut new_index = vec![usize::MAX; points.len()];
-    let mut vertices = Vec::new();
-    for i in faces.iter_mut().flatten() {
-        if new_index[*i] == usize::MAX {
-            new_index[*i] = vertices.len();
-            vertices.push(points[*i]);
+    let mut used = vec![false; points.len()];
+    faces.iter().flatten().for_each(|&i| used[i] = true);
+    let mut new_index = vec![0; points.len()];
+    let mut vertices = Vec::with_capacity(points.len());
+    for (i, point) in points.into_iter().enumerate() {
+        if used[i] {
+            new_index[i] = vertices.len();
+            vertices.push(point);
         }
-        *i = new_index[*i];
     }
+    faces.iter_mut().flatten().for_each(|i| *i = new_index[*i]);
     Shape { vertices, faces }
 }
 
@@ -1544,34 +1587,12 @@ fn compact(points: Vec<Vec3>, mut faces: Vec<Vec<usize>>) -> Shape {
 /// point outside any face plane by more than [`CONVEXITY_TOLERANCE`].
 fn check_convex_closed(vertices: &[Vec3], faces: &[Vec<usize>]) -> Result<(), String> {
     check_closed(faces)?;
-    let used: Vec<usize> = {
-        let mut used: Vec<usize> = faces.iter().flatten().copied().collect();
-        used.sort_unstable();
-        used.dedup();
-        used
-    };
+    let mut used: Vec<usize> = faces.iter().flatten().copied().collect();
+    used.sort_unstable();
+    used.dedup();
     let (extent, magnitude) = scale(vertices, &used);
-    let mut volume = 0.0;
-    for (k, face) in faces.iter().enumerate() {
-        let n = newell(vertices, face);
-        let area2 = norm(n);
-        let has_area = area2 > 1e-12 * extent * extent;
-        if !has_area {
-            return Err(format!("face {k} has no area"));
-        }
-        let centre = centroid(vertices, face);
-        volume += dot(centre, n) / 6.0;
-        let unit = n.map(|c| c / area2);
-        let tolerance = CONVEXITY_TOLERANCE * magnitude;
-        for &i in &used {
-            let d = dot(unit, sub(vertices[i], centre));
-            if d > tolerance {
-                return Err(format!(
-                    "not convex: point {i} lies {d:.3e} outside the plane of face {k}"
-                ));
-            }
-        }
-    }
+    let planes = face_planes(vertices, faces, extent)?;
+    let volume: f64 = planes.iter().map(|p| dot(p.centre, p.normal) / 6.0).sum();
     let has_volume = volume > 1e-12 * extent * extent * extent;
     if !has_volume {
         return Err(
@@ -1580,7 +1601,41 @@ fn check_convex_closed(vertices: &[Vec3], faces: &[Vec<usize>]) -> Result<(), St
                 .to_string(),
         );
     }
+    let tolerance = CONVEXITY_TOLERANCE * magnitude;
+    for (k, plane) in planes.iter().enumerate() {
+        let unit = plane.normal.map(|c| c / norm(plane.normal));
+        for &i in &used {
+            let d = dot(unit, sub(vertices[i], plane.centre));
+            if d > tolerance {
+                return Err(format!(
+                    "not convex: point {i} lies {d:.3e} outside the plane of face {k}"
+                ));
+            }
+        }
+    }
     Ok(())
+}
+
+/// A face's Newell normal (twice its area long) and its centroid.
+struct Plane {
+    normal: Vec3,
+    centre: Vec3,
+}
+
+fn face_planes(vertices: &[Vec3], faces: &[Vec<usize>], extent: f64) -> Result<Vec<Plane>, String> {
+    faces
+        .iter()
+        .enumerate()
+        .map(|(k, face)| {
+            let normal = newell(vertices, face);
+            let has_area = norm(normal) > 1e-12 * extent * extent;
+            if !has_area {
+                return Err(format!("face {k} has no area"));
+            }
+            let centre = centroid(vertices, face);
+            Ok(Plane { normal, centre })
+        })
+        .collect()
 }
 
 fn check_closed(faces: &[Vec<usize>]) -> Result<(), String> {
@@ -1739,5 +1794,567 @@ fn cos_degrees(x: f64) -> f64 {
         -c
     } else {
         c
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    const EXAMPLE: &str = include_str!("../vectors/scenes/cube-minus-cylinder.csg");
+
+    /// Every node kind, for the mutation fuzzing.
+    const ALL_NODES: &str = "group() {\n\
+        \tunion() { cube(size = [1, 2, 3], center = false); sphere($fn = 6, r = 2); }\n\
+        \tintersection() {\n\
+        \t\tmultmatrix([[-1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 2, 0], [0, 0, 0, 1]]) {\n\
+        \t\t\tcolor(c = [0, 0.5, 1], alpha = 0.5) cylinder(h = 2, r1 = 1, r2 = 0, $fn = 5);\n\
+        \t\t}\n\
+        \t\trender(convexity = 2) %cube(2);\n\
+        \t\tpolyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
+        faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]], convexity = 1);\n\
+        \t}\n\
+        \tdifference() { cube(1); /* c */ cylinder(h = 1, d = 1, center = true); } // end\n\
+        }\n";
+
+    fn parse(text: &str) -> CsgScene {
+        parse_csg(text, "test.csg").unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// Checks the error's position and that its message contains `part`.
+    fn assert_err(text: &str, line: usize, col: usize, part: &str) {
+        let e = parse_csg(text, "test.csg").expect_err("should be refused");
+        assert_eq!((e.line, e.col), (line, col), "{e}");
+        assert!(e.msg.contains(part), "{e}");
+    }
+
+    fn only_solid(text: &str) -> ConvexSolid {
+        let scene = parse(text);
+        assert_eq!(scene.root, CsgNode::Solid(0));
+        assert_eq!(scene.solids.len(), 1);
+        scene.solids.into_iter().next().unwrap()
+    }
+
+    /// Closed, convex, and every face normal points away from the centroid.
+    fn assert_outward(solid: &ConvexSolid) {
+        let n = solid.vertices.len() as f64;
+        let centre = solid
+            .vertices
+            .iter()
+            .fold([0.0; 3], |c, v| [c[0] + v[0], c[1] + v[1], c[2] + v[2]])
+            .map(|c| c / n);
+        for face in &solid.faces {
+            let normal = newell(&solid.vertices, face);
+            let out = sub(centroid(&solid.vertices, face), centre);
+            assert!(dot(normal, out) > 0.0, "face {face:?} points inward");
+        }
+        check_convex_closed(&solid.vertices, &solid.faces).unwrap();
+    }
+
+    fn bounds(solid: &ConvexSolid) -> [[f64; 2]; 3] {
+        let mut b = [[f64::INFINITY, f64::NEG_INFINITY]; 3];
+        for v in &solid.vertices {
+            for axis in 0..3 {
+                b[axis] = [b[axis][0].min(v[axis]), b[axis][1].max(v[axis])];
+            }
+        }
+        b
+    }
+
+    fn close(a: Vec3, b: Vec3) -> bool {
+        (0..3).all(|i| (a[i] - b[i]).abs() < 1e-12)
+    }
+
+    // --- primitives ---
+
+    #[test]
+    fn cube_uncentred() {
+        let cube = only_solid("cube(size = [1, 2, 3], center = false);");
+        assert_eq!((cube.vertices.len(), cube.faces.len()), (8, 6));
+        assert!(cube.faces.iter().all(|f| f.len() == 4));
+        assert_eq!(bounds(&cube), [[0.0, 1.0], [0.0, 2.0], [0.0, 3.0]]);
+        assert_eq!(cube.vertices[6], [0.0, 2.0, 3.0]);
+        assert_outward(&cube);
+        let scalar = only_solid("cube(2);");
+        assert_eq!(bounds(&scalar), [[0.0, 2.0]; 3]);
+    }
+
+    #[test]
+    fn cube_centred() {
+        let cube = only_solid("cube(size = [20, 20, 20], center = true);");
+        assert_eq!((cube.vertices.len(), cube.faces.len()), (8, 6));
+        assert_eq!(bounds(&cube), [[-10.0, 10.0]; 3]);
+        assert_outward(&cube);
+        assert_eq!(only_solid("cube();").vertices[7], [1.0; 3]);
+    }
+
+    #[test]
+    fn sphere_fn_8() {
+        let sphere = only_solid("sphere($fn = 8, $fa = 12, $fs = 2, r = 10);");
+        // 8 fragments, (8 + 1) / 2 = 4 rings at 22.5°, 67.5°, 112.5°, 157.5°.
+        assert_eq!(sphere.vertices.len(), 8 * 4);
+        assert_eq!(sphere.faces.len(), 2 + 3 * 8);
+        let (radius, z) = (
+            10.0 * 22.5_f64.to_radians().sin(),
+            10.0 * 22.5_f64.to_radians().cos(),
+        );
+        assert!(close(sphere.vertices[0], [radius, 0.0, z]));
+        // 90° is exact in OpenSCAD's degree trigonometry: x is 0, not 6e-17.
+        assert_eq!(sphere.vertices[2][0], 0.0);
+        assert!(close(sphere.vertices[2], [0.0, radius, z]));
+        assert!(close(sphere.vertices[4], [-radius, 0.0, z]));
+        assert!(close(
+            sphere.vertices[31],
+            [radius * 0.5_f64.sqrt(), -radius * 0.5_f64.sqrt(), -z]
+        ));
+        assert_eq!(sphere.faces[0], (0..8).collect::<Vec<_>>());
+        assert_outward(&sphere);
+    }
+
+    #[test]
+    fn sphere_fa_fs() {
+        let sphere = only_solid("sphere($fn = 0, $fa = 12, $fs = 2, r = 10);");
+        // ceil(max(min(360 / 12, 10 * 2π / 2), 5)) = 30 fragments, 15 rings.
+        assert_eq!(sphere.vertices.len(), 30 * 15);
+        assert_eq!(sphere.faces.len(), 2 + 14 * 30);
+        // Ring 7 is at exactly 90°: the equator, exact in OpenSCAD's degree trigonometry.
+        assert_eq!(sphere.vertices[7 * 30], [10.0, 0.0, 0.0]);
+        assert_eq!(sphere.vertices[7 * 30 + 5], [5.0, 10.0 * SQRT3_4, 0.0]);
+        let phi = 180.0 * 0.5 / 15.0_f64;
+        let top = [
+            10.0 * phi.to_radians().sin(),
+            0.0,
+            10.0 * phi.to_radians().cos(),
+        ];
+        assert!(close(sphere.vertices[0], top));
+        assert_outward(&sphere);
+    }
+
+    #[test]
+    fn fragment_rules() {
+        let count = |text: &str| only_solid(text).vertices.len();
+        // Small radius: at least 5 fragments (3 rings).
+        assert_eq!(count("sphere(r = 1);"), 5 * 3);
+        // $fn below 3 means 3; a fractional $fn is truncated; d is a diameter.
+        assert_eq!(count("sphere(d = 4, $fn = 2);"), 3 * 2);
+        assert_eq!(count("sphere(r = 1, $fn = 7.9);"), 7 * 4);
+        // $fa and $fs are clamped up to 0.01: 360 / 0.01 = 36000 > 10 * 2π / 0.05.
+        assert_eq!(count("cylinder(r = 10, $fa = 0, $fs = 0.05);"), 2 * 1257);
+        // A cylinder's fragments come from its larger radius.
+        assert_eq!(count("cylinder(h = 1, r1 = 1, r2 = 10);"), 2 * 30);
+        assert_eq!(
+            Resolution {
+                fn_: 0.0,
+                fa: 12.0,
+                fs: 2.0
+            }
+            .fragments_from_r(1e-7),
+            3.0
+        );
+    }
+
+    #[test]
+    fn cylinder_fn_6_centred() {
+        let cyl = only_solid(
+            "cylinder($fn = 6, $fa = 12, $fs = 2, h = 10, r1 = 3, r2 = 3, center = true);",
+        );
+        assert_eq!((cyl.vertices.len(), cyl.faces.len()), (12, 8));
+        assert_eq!(bounds(&cyl)[2], [-5.0, 5.0]);
+        assert_eq!(cyl.vertices[1], [1.5, 3.0 * SQRT3_4, -5.0]);
+        assert_eq!(cyl.vertices[10], [-1.5, -3.0 * SQRT3_4, 5.0]);
+        assert_outward(&cyl);
+    }
+
+    #[test]
+    fn cones_have_one_apex() {
+        let cone = only_solid("cylinder($fn = 6, h = 10, r1 = 3, r2 = 0, center = true);");
+        assert_eq!((cone.vertices.len(), cone.faces.len()), (7, 7));
+        assert_eq!(cone.vertices[6], [0.0, 0.0, 5.0]);
+        assert_eq!(cone.faces.iter().filter(|f| f.len() == 3).count(), 6);
+        assert_outward(&cone);
+        let inverted = only_solid("cylinder($fn = 6, h = 10, r1 = 0, r2 = 3, center = true);");
+        assert_eq!((inverted.vertices.len(), inverted.faces.len()), (7, 7));
+        assert_eq!(inverted.vertices[0], [0.0, 0.0, -5.0]);
+        assert_outward(&inverted);
+        let frustum = only_solid("cylinder(h = 2, d1 = 4, r2 = 1, $fn = 5);");
+        assert_eq!(bounds(&frustum)[0][1], 2.0);
+        assert_outward(&frustum);
+    }
+
+    const TETRAHEDRON: &str = "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
+                               faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]], convexity = 1);";
+
+    #[test]
+    fn polyhedron_clockwise_tetrahedron() {
+        let tet = only_solid(TETRAHEDRON);
+        assert_eq!(tet.faces[0], vec![2, 1, 0]);
+        assert_outward(&tet);
+        let old = only_solid(&TETRAHEDRON.replace("faces", "triangles"));
+        assert_eq!(old, tet);
+    }
+
+    #[test]
+    fn polyhedron_refusals() {
+        let dented = "\n  polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.2, 0.2, 0.2]], \
+                      faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [4, 2, 1], [4, 3, 2], [4, 1, 3]]);";
+        assert_err(dented, 2, 3, "not convex");
+        let open = "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
+                    faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3]]);";
+        assert_err(open, 1, 1, "not closed");
+        let ccw = TETRAHEDRON.replace(
+            "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]",
+            "[[2, 1, 0], [1, 3, 0], [3, 2, 0], [2, 3, 1]]",
+        );
+        assert_err(&ccw, 1, 1, "wrong way round");
+        let bad_index = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 3, 4]]");
+        assert_err(&bad_index, 1, 116, "point index 4");
+    }
+
+    #[test]
+    fn polyhedron_drops_unused_points() {
+        let text = TETRAHEDRON.replace("[0, 0, 1]]", "[0, 0, 1], [9, 9, 9]]");
+        assert_eq!(only_solid(&text).vertices.len(), 4);
+    }
+
+    // --- transforms and colours ---
+
+    #[test]
+    fn multmatrix_translation() {
+        let cube = only_solid(
+            "multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, -2], [0, 0, 0, 1]]) cube(1);",
+        );
+        assert_eq!(bounds(&cube), [[5.0, 6.0], [0.0, 1.0], [-2.0, -1.0]]);
+        assert_outward(&cube);
+    }
+
+    #[test]
+    fn multmatrix_mirror_keeps_faces_outward() {
+        let plain = only_solid("cylinder(h = 3, r1 = 2, r2 = 1, $fn = 7);");
+        let mirrored = only_solid(
+            "multmatrix(m = [[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\
+             \tcylinder(h = 3, r1 = 2, r2 = 1, $fn = 7);\n}",
+        );
+        assert_eq!(mirrored.vertices[0], [-2.0, 0.0, 0.0]);
+        let reversed: Vec<Vec<usize>> = plain
+            .faces
+            .iter()
+            .map(|f| f.iter().rev().copied().collect())
+            .collect();
+        assert_eq!(mirrored.faces, reversed);
+        assert_outward(&mirrored);
+    }
+
+    #[test]
+    fn nested_multmatrix_composes() {
+        let cube = only_solid(
+            "multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n\
+             multmatrix([[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 2, 0], [0, 0, 0, 1]]) cube(1);",
+        );
+        assert_eq!(bounds(&cube), [[1.0, 3.0], [0.0, 2.0], [0.0, 2.0]]);
+        // m[3][3] = 2 divides the matrix, as OpenSCAD does.
+        let halved = only_solid(
+            "multmatrix([[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 2, 0], [0, 0, 0, 2]]) cube(1);",
+        );
+        assert_eq!(bounds(&halved), [[0.0, 1.0]; 3]);
+    }
+
+    #[test]
+    fn multmatrix_refusals() {
+        assert_err(
+            "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) cube(1);",
+            1,
+            12,
+            "singular",
+        );
+        assert_err(
+            "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [1, 0, 0, 1]]) cube(1);",
+            1,
+            12,
+            "projective",
+        );
+        assert_err(
+            "multmatrix([[1, 0, 0], [0, 1, 0], [0, 0, 1]]) cube(1);",
+            1,
+            13,
+            "4 numbers",
+        );
+    }
+
+    #[test]
+    fn colours_innermost_wins() {
+        let scene = parse(
+            "color([1, 0, 0, 1]) {\n\tcube(1);\n\tcolor([0, 0, 1, 0.5]) sphere(1);\n}\ncube(3);",
+        );
+        assert_eq!(scene.solids[0].colour, Some([1.0, 0.0, 0.0, 1.0]));
+        assert_eq!(scene.solids[1].colour, Some([0.0, 0.0, 1.0, 0.5]));
+        assert_eq!(scene.solids[2].colour, None);
+        assert_eq!(
+            scene.solids.iter().map(|s| s.line).collect::<Vec<_>>(),
+            [2, 3, 5]
+        );
+        let named_args = only_solid("color(c = [0, 1, 0], alpha = 0.25) cube(1);");
+        assert_eq!(named_args.colour, Some([0.0, 1.0, 0.0, 0.25]));
+        assert_err(
+            "color(\"red\") cube(1);",
+            1,
+            7,
+            "colour \"red\" is not supported",
+        );
+        assert_err("color([2, 0, 0]) cube(1);", 1, 8, "between 0 and 1");
+    }
+
+    // --- tree shapes ---
+
+    #[test]
+    fn tree_shapes() {
+        use CsgNode::{Difference, Empty, Intersection, Solid, Union};
+        let root = |text: &str| parse(text).root;
+        assert_eq!(
+            root("difference() { cube(1); sphere(1); cylinder(h = 1, r = 1); }"),
+            Difference(vec![Solid(0), Solid(1), Solid(2)])
+        );
+        assert_eq!(
+            root("intersection() { cube(1); sphere(1); }"),
+            Intersection(vec![Solid(0), Solid(1)])
+        );
+        assert_eq!(
+            root("union() { cube(1); sphere(1); }"),
+            Union(vec![Solid(0), Solid(1)])
+        );
+        assert_eq!(root("cube(1); sphere(1);"), Union(vec![Solid(0), Solid(1)]));
+        assert_eq!(root("group() { cube(1); }"), Solid(0));
+        assert_eq!(root("render(convexity = 2) { cube(1); }"), Solid(0));
+        assert_eq!(
+            root("group() { group() { cube(1); cube(2); } cube(3); }"),
+            Union(vec![Solid(0), Solid(1), Solid(2)])
+        );
+        assert_eq!(
+            root("group() { difference() { cube(1); sphere(1); } cube(3); }"),
+            Union(vec![Difference(vec![Solid(0), Solid(1)]), Solid(2)])
+        );
+        for empty in [
+            "",
+            "// nothing\n/* at all */",
+            "group();",
+            "group() {}",
+            "union() { group(); }",
+            "difference() { group(); cube(1); }",
+            "intersection() { cube(1); group(); }",
+        ] {
+            assert_eq!(root(empty), Empty, "{empty}");
+        }
+        assert_eq!(root("difference() { cube(1); group(); }"), Solid(0));
+    }
+
+    #[test]
+    fn modifiers() {
+        use CsgNode::{Difference, Solid};
+        let scene = parse("difference() { %cube(1); #sphere(1); *group() { cube(5); } cube(2); }");
+        assert_eq!(scene.root, Difference(vec![Solid(0), Solid(1)]));
+        assert_eq!(scene.solids.len(), 2);
+        assert_eq!(scene.solids[1].vertices[7], [2.0; 3]);
+        assert_err("!cube(1);", 1, 1, "root modifier");
+    }
+
+    #[test]
+    fn example_scene() {
+        let scene = parse(EXAMPLE);
+        assert_eq!(
+            scene.root,
+            CsgNode::Difference(vec![CsgNode::Solid(0), CsgNode::Solid(1)])
+        );
+        let [cube, cylinder] = &scene.solids[..] else {
+            panic!("two solids")
+        };
+        assert_eq!((cube.vertices.len(), cube.colour, cube.line), (8, None, 2));
+        assert_eq!(cylinder.vertices.len(), 48);
+        assert_eq!(cylinder.colour, Some([1.0, 0.0, 0.0, 1.0]));
+        assert_eq!(bounds(cylinder)[2], [-15.0, 15.0]);
+        assert_outward(cube);
+        assert_outward(cylinder);
+    }
+
+    // --- syntax and errors ---
+
+    #[test]
+    fn syntax_accepted() {
+        let text = "/* header */ group() { // a comment\n\
+                    \tcube(size = [.5, 5., 1e-1], center = false) ;\n\
+                    \tsphere(r = +2.5E+0, $fn = 0, $fa = 12, $fs = 2,);\n\
+                    \tcylinder(h = 1, r1 = 1, r2 = undef, center = false);\n}\n";
+        let scene = parse(text);
+        assert_eq!(scene.solids.len(), 3);
+        assert_eq!(
+            bounds(&scene.solids[0]),
+            [[0.0, 0.5], [0.0, 5.0], [0.0, 0.1]]
+        );
+        // r2 = undef falls back to the default radius of 1, like OpenSCAD.
+        assert_eq!(bounds(&scene.solids[2])[0][1], 1.0);
+    }
+
+    #[test]
+    fn errors_name_line_and_column() {
+        assert_err(
+            "group() {\n  linear_extrude(height = 10) square(1);\n}",
+            2,
+            3,
+            "unsupported node `linear_extrude` (csgpix reads group",
+        );
+        assert_err("hull() { cube(1); }", 1, 1, "unsupported node `hull`");
+        assert_err("cube(size = 1.2.3);", 1, 13, "malformed number `1.2.3`");
+        assert_err("cube(size = 1e);", 1, 13, "malformed number `1e`");
+        assert_err("cube(size = 1e999);", 1, 13, "out of range");
+        assert_err("cube(size = inf);", 1, 13, "finite");
+        assert_err("cube(size = 1;\n", 1, 14, "expected ',' or ')'");
+        assert_err(
+            "group() {\n\tcube(1);\n",
+            3,
+            1,
+            "expected '}' to close `group` opened at 1:9",
+        );
+        assert_err(
+            "group() {\n  cube(1)\n}",
+            3,
+            1,
+            "expected ';' after `cube(…)`",
+        );
+        assert_err("cube(1) sphere(1);", 1, 9, "expected ';' after `cube(…)`");
+        assert_err(
+            "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])",
+            1,
+            69,
+            "child statement or ';'",
+        );
+        assert_err("cube(1);\n}", 2, 1, "unexpected '}'");
+        assert_err("cube(sise = 1);", 1, 6, "no parameter `sise`");
+        assert_err("cube(1, true, 3);", 1, 15, "too many positional");
+        assert_err("cube(size = 1, size = 2);", 1, 16, "given twice");
+        assert_err("sphere(r = -1);", 1, 12, "must be positive");
+        assert_err("cylinder(h = 0, r = 1);", 1, 14, "must be positive");
+        assert_err("cylinder(h = 1, r1 = 0, r2 = 0);", 1, 1, "positive radius");
+        assert_err("sphere($fn = -3, r = 1);", 1, 14, "must not be negative");
+        assert_err("sphere($fn = 20000, r = 1);", 1, 1, "more than the 10000");
+        assert_err("sphere($fn = 2000, r = 1);", 1, 1, "vertices");
+        assert_err("cube(size = [1, 2]);", 1, 13, "[x, y, z]");
+        assert_err("cube(center = 1);", 1, 15, "true or false");
+        assert_err("cube(size = [1, 2 3]);", 1, 19, "expected ',' or ']'");
+        assert_err("/* é */ foo();", 1, 9, "unsupported node `foo`");
+        assert_err("cube(1); /* open", 1, 10, "unterminated comment");
+        assert_err("color(\"red) cube(1);", 1, 7, "unterminated string");
+        assert_err("cube(1) @", 1, 9, "unexpected character '@'");
+        assert_err("x = 3;", 1, 1, "unsupported node `x`");
+    }
+
+    #[test]
+    fn display_format() {
+        let e = parse_csg("cube(size = 1.2.3);", "dir/a.csg").unwrap_err();
+        assert_eq!(e.to_string(), "dir/a.csg:1:13: malformed number `1.2.3`");
+    }
+
+    // --- robustness ---
+
+    #[test]
+    fn deep_nesting_is_refused_not_a_crash() {
+        let text = "group() {\n".repeat(100_000) + "cube(1);" + &"}".repeat(100_000);
+        assert_err(&text, MAX_NESTING + 1, 1, "nested deeper than 1000");
+        let single = "group() ".repeat(100_000) + "cube(1);";
+        assert_err(&single, 1, 8 * MAX_NESTING + 1, "nested deeper");
+        let vectors = "cube(size = ".to_string() + &"[".repeat(100_000);
+        assert_err(
+            &vectors,
+            1,
+            13 + MAX_VECTOR_NESTING,
+            "vectors nested deeper than 64",
+        );
+    }
+
+    #[test]
+    fn size_limits() {
+        assert_err("cube(1e13);", 1, 1, "exceeds");
+        let far =
+            "multmatrix([[1, 0, 0, 1e12], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(1);";
+        assert_err(far, 1, 73, "exceeds");
+        assert_err(
+            &TETRAHEDRON.replace("[0, 0, 1]]", "[0, 0, 1e13]]"),
+            1,
+            1,
+            "exceeds",
+        );
+        let cubes = "cube(1);".repeat(MAX_SCENE_VERTICES / 8 + 1);
+        assert_err(&cubes, 1, 8 * (MAX_SCENE_VERTICES / 8) + 1, "vertices");
+    }
+
+    #[test]
+    fn all_nodes_seed_parses() {
+        let scene = parse(ALL_NODES);
+        assert_eq!(scene.solids.len(), 6); // the `%cube` is left out
+        scene.solids.iter().for_each(assert_outward);
+    }
+
+    #[test]
+    fn deepest_accepted_nesting() {
+        let groups =
+            "group() {\n".repeat(MAX_NESTING - 1) + "cube(1);" + &"}".repeat(MAX_NESTING - 1);
+        assert_eq!(parse(&groups).root, CsgNode::Solid(0));
+        // A tree as deep as the limit allows, built and dropped on a test thread's stack.
+        let deep = "difference() { cube(1);\n".repeat(MAX_NESTING - 1)
+            + "cube(1);"
+            + &"}".repeat(MAX_NESTING - 1);
+        let scene = parse(&deep);
+        assert_eq!(scene.solids.len(), MAX_NESTING);
+        drop(scene);
+    }
+
+    /// Ok scenes are well formed; errors point inside the text.
+    fn check_outcome(text: &str) {
+        match parse_csg(text, "fuzz.csg") {
+            Ok(scene) => {
+                let mut pending = vec![&scene.root];
+                while let Some(node) = pending.pop() {
+                    match node {
+                        CsgNode::Solid(i) => assert!(*i < scene.solids.len()),
+                        CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
+                            pending.extend(c)
+                        }
+                        CsgNode::Empty => {}
+                    }
+                }
+                scene.solids.iter().for_each(assert_outward);
+            }
+            Err(e) => {
+                assert!(e.line >= 1 && e.col >= 1, "{e}");
+                assert!(e.line <= text.lines().count() + 1, "{e}");
+            }
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn random_text_never_panics(text in "\\PC{0,300}") {
+            check_outcome(&text);
+        }
+
+        #[test]
+        fn csg_like_text_never_panics(text in "[a-z$ (){}\\[\\];,=0-9.e+\\-\"/*%#\n]{0,300}") {
+            check_outcome(&text);
+        }
+
+        #[test]
+        fn mutated_files_never_panic(
+            seed in prop::sample::select(vec![EXAMPLE, ALL_NODES]),
+            edits in prop::collection::vec((any::<prop::sample::Index>(), any::<u8>(), 0..3u8), 1..6)
+        ) {
+            let mut bytes = seed.as_bytes().to_vec();
+            for (at, byte, how) in edits {
+                let i = at.index(bytes.len() + 1);
+                match how {
+                    0 if i < bytes.len() => bytes[i] = byte,
+                    1 if i < bytes.len() => { bytes.remove(i); }
+                    _ => bytes.insert(i, byte),
+                }
+            }
+            check_outcome(&String::from_utf8_lossy(&bytes));
+        }
     }
 }
