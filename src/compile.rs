@@ -137,11 +137,34 @@ fn literal_ops(
     fmt: &WordFormat,
     colour_bits: u32,
 ) -> Result<Vec<Op>, CompileError> {
-    let flipped = DisplayList {
+    let mut flipped = DisplayList {
         planes: planes(dl, neg).map(|p| p.1).collect(),
         terminator: dl.terminator,
     };
-    object_ops(&flipped, fmt, colour_bits)
+    if neg {
+        flipped.planes.insert(0, screen_plane(dl));
+    }
+    object_ops(&flipped, fmt, colour_bits).map_err(|mut e| {
+        e.plane = e.plane.saturating_sub(neg as usize);
+        e
+    })
+}
+
+/// The first back plane of a complemented literal: the screen itself (Z = 0 everywhere). A
+/// void cannot begin in front of the screen, so the geometry is unchanged; but the row "S = 1,
+/// A < 0: Put 1" of the concave back-plane table (§2.3.3) would otherwise hide the whole void
+/// wherever the first of the solid's front faces lies in front of the screen
+/// (docs/rendering.md, "Where word may differ from float").
+fn screen_plane(dl: &DisplayList) -> DlPlane {
+    DlPlane {
+        z0: 0.0,
+        dzx: 0.0,
+        dzy: 0.0,
+        colour: dl.planes.first().map_or(1, |p| p.colour),
+        h: false,
+        y: false,
+        l: true,
+    }
 }
 
 /// Push "inside the literal's volume" on the clipping stack: the AND of its planes' partial

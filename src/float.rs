@@ -212,19 +212,115 @@ pub fn render(
     img
 }
 
-fn margin(values: &[f64], md: f64) -> f64 {
-    let mut m = f64::INFINITY;
-    for (i, a) in values.iter().enumerate() {
-        m = m.min(a.abs()).min((a - md).abs());
-        for b in &values[i + 1..] {
-            m = m.min((a - b).abs());
+/// Why an array pixel's colour is what it is, measured against the float model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// The same colour as the exact float model.
+    Equal,
+    /// Different, but two quantities the array compares are closer than twice the rounding
+    /// bound ([`rounding_bound`]), so the word model may decide either way.
+    NearTie,
+    /// Different where a face lies in front of the screen and the thesis's rows for A < 0
+    /// decide: the float model with [`ScreenRule::Thesis`] gives the array's colour (or is
+    /// itself near a tie), or, under a clipping function, the rule acts on a literal.
+    ScreenRule,
+    /// Different, and neither explains it: a fault.
+    Unexplained,
+}
+
+/// Counts of each [`Verdict`] over an image, and the unexplained pixels (index y·W + x).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Agreement {
+    pub equal: usize,
+    pub near_tie: usize,
+    pub screen_rule: usize,
+    pub unexplained: Vec<usize>,
+}
+
+impl Agreement {
+    /// Pixels whose colour differs from the exact float model.
+    pub fn differ(&self) -> usize {
+        self.near_tie + self.screen_rule + self.unexplained.len()
+    }
+}
+
+/// Compare an array's colours (G of every pixel) with the float model of the same scene.
+pub fn agreement(
+    colours: &[u32],
+    lists: &[DisplayList],
+    clip: Option<&Clip>,
+    width: usize,
+    height: usize,
+    fmt: &WordFormat,
+) -> Agreement {
+    let exact = render(lists, clip, width, height, fmt, ScreenRule::Exact);
+    let thesis = render(lists, clip, width, height, fmt, ScreenRule::Thesis);
+    let mut a = Agreement::default();
+    for (i, &g) in colours.iter().enumerate() {
+        let bound = 2.0 * rounding_bound(fmt, i % width, i / width);
+        let verdict = if g == exact.colour[i] {
+            Verdict::Equal
+        } else if exact.margin[i] < bound {
+            Verdict::NearTie
+        } else if exact.screen_rule[i]
+            && (clip.is_some() || g == thesis.colour[i] || thesis.margin[i] < bound)
+        {
+            Verdict::ScreenRule
+        } else {
+            Verdict::Unexplained
+        };
+        match verdict {
+            Verdict::Equal => a.equal += 1,
+            Verdict::NearTie => a.near_tie += 1,
+            Verdict::ScreenRule => a.screen_rule += 1,
+            Verdict::Unexplained => a.unexplained.push(i),
         }
     }
-    m
+    a
+}
+
+/// The smallest gap between any two plane values, or between one and 0 or maxdepth: the
+/// smallest gap of the sorted values, so O(n log n) for lists of hundreds of faces.
+fn margin(values: &[f64], md: f64) -> f64 {
+    // (value, is a plane value): the gap between 0 and maxdepth themselves does not count.
+    let mut v: Vec<(f64, bool)> = values.iter().map(|&x| (x, true)).collect();
+    v.extend([(0.0, false), (md, false)]);
+    v.sort_by(|a, b| a.0.total_cmp(&b.0));
+    v.windows(2)
+        .filter(|w| w[0].1 || w[1].1)
+        .map(|w| w[1].0 - w[0].0)
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// The rounding bound of docs/depth-word.md at pixel (x, y): each of Z0, dZx, dZy is within
 /// half a unit in the last place, so a plane's word is within 2^-(F+1)·(1 + x + y).
 pub fn rounding_bound(fmt: &WordFormat, x: usize, y: usize) -> f64 {
     0.5 / (1u64 << fmt.frac) as f64 * (1 + x + y) as f64
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Every pair, directly: the definition [`margin`] must match.
+    fn margin_pairs(values: &[f64], md: f64) -> f64 {
+        let mut m = f64::INFINITY;
+        for (i, a) in values.iter().enumerate() {
+            m = m.min(a.abs()).min((a - md).abs());
+            for b in &values[i + 1..] {
+                m = m.min((a - b).abs());
+            }
+        }
+        m
+    }
+
+    proptest! {
+        #[test]
+        fn margin_is_the_smallest_pairwise_gap(
+            values in prop::collection::vec(-3000.0..3000.0f64, 0..40),
+        ) {
+            prop_assert_eq!(margin(&values, 1024.0), margin_pairs(&values, 1024.0));
+        }
+    }
 }

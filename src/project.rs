@@ -9,16 +9,19 @@
 //! the viewer).
 //!
 //! Near-perpendicular faces: as n_w → 0 the slopes grow without bound. A face whose slope
-//! exceeds [`max_slope`] (maxdepth per pixel) crosses the whole depth range within one pixel,
-//! so it is drawn as a perpendicular plane (Y = 1) with `K` = the signed distance in pixels
-//! from its trace (K ≥ 0 inside), which moves its silhouette by less than one pixel and never
-//! overflows the coefficient words.
+//! exceeds [`max_slope`] is drawn as a perpendicular plane (Y = 1) with `K` = the signed
+//! distance in pixels from its trace (K ≥ 0 inside). The limit is maxdepth per pixel (such a
+//! face crosses the whole depth range within one pixel, so its silhouette moves by less than
+//! one pixel), lowered on large arrays so that no coefficient and no DEPGEN sum anywhere on
+//! the array leaves the word: a face whose depth is in [0, maxdepth] somewhere on the array has
+//! |Z0 + x·dZx + y·dZy| ≤ maxdepth + slope·(W + H) at every pixel (docs/rendering.md).
 
 use glam::{DMat3, DVec3};
 
 use crate::clip_expr::Clip;
 use crate::display_list::{DisplayList, DlPlane};
 use crate::solid::{ConvexSolid, CsgNode, CsgScene};
+use rtl_model::WordFormat;
 
 /// Depth of the scene's nearest point, in depth units (pixels).
 pub const DEPTH_MARGIN: f64 = 4.0;
@@ -51,9 +54,12 @@ impl View {
     }
 }
 
-/// The largest |dZ| per pixel drawn as a sloped plane: maxdepth depth units.
-pub fn max_slope(maxdepth: f64) -> f64 {
-    maxdepth
+/// The largest |dZx|, |dZy| drawn as a sloped plane on a `width`×`height` array: maxdepth
+/// depth units per pixel, or less where the word could not hold maxdepth + slope·(W + H).
+pub fn max_slope(fmt: &WordFormat, width: usize, height: usize) -> f64 {
+    let maxdepth = fmt.to_real(fmt.maxdepth());
+    let headroom = fmt.to_real(fmt.max_word()) - maxdepth;
+    maxdepth.min(headroom / (width + height) as f64).max(0.0)
 }
 
 /// Where the scene lands on the array.
@@ -84,6 +90,16 @@ impl Frame {
         let ext = (max - min).max(DVec3::splat(1e-9));
         let scale = ((width.max(2) - 1) as f64 / ext.x).min((height.max(2) - 1) as f64 / ext.y);
         Ok(Frame { basis, min, scale })
+    }
+
+    /// The greatest depth of any vertex of the scene, in depth units.
+    pub fn deepest(&self, scene: &CsgScene) -> f64 {
+        scene
+            .solids
+            .iter()
+            .flat_map(|s| s.vertices.iter())
+            .map(|p| self.to_pixel(DVec3::from(*p)).z)
+            .fold(f64::NEG_INFINITY, f64::max)
     }
 
     /// Pixel coordinates (x, y) and depth of a scene point.
@@ -152,8 +168,9 @@ pub fn colour_code(rgba: [f64; 4]) -> u32 {
         .unwrap_or(7)
 }
 
-/// One display list per solid; solids without a colour take codes 1..6 in turn.
-pub fn display_lists(scene: &CsgScene, frame: &Frame, maxdepth: f64) -> Vec<DisplayList> {
+/// One display list per solid; solids without a colour take codes 1..6 in turn. `slope_limit`
+/// is [`max_slope`] for the array the lists are for.
+pub fn display_lists(scene: &CsgScene, frame: &Frame, slope_limit: f64) -> Vec<DisplayList> {
     scene
         .solids
         .iter()
@@ -163,7 +180,7 @@ pub fn display_lists(scene: &CsgScene, frame: &Frame, maxdepth: f64) -> Vec<Disp
             let planes = s
                 .faces
                 .iter()
-                .filter_map(|f| face_plane(frame, s, f, colour, max_slope(maxdepth)))
+                .filter_map(|f| face_plane(frame, s, f, colour, slope_limit))
                 .collect();
             DisplayList {
                 planes,
@@ -171,6 +188,44 @@ pub fn display_lists(scene: &CsgScene, frame: &Frame, maxdepth: f64) -> Vec<Disp
             }
         })
         .collect()
+}
+
+/// A scene projected for one array: a display list per solid and the clipping function of
+/// its tree (None when the tree is empty: nothing is drawn).
+#[derive(Clone, Debug)]
+pub struct Projected {
+    pub lists: Vec<DisplayList>,
+    pub clip: Option<Clip>,
+}
+
+/// Project `scene` in `view` onto a `width`×`height` array with word format `fmt`: the bounds
+/// fill the array, and the scene must fit in depth (nearest point at [`DEPTH_MARGIN`], deepest
+/// under maxdepth).
+pub fn project(
+    scene: &CsgScene,
+    view: View,
+    width: usize,
+    height: usize,
+    fmt: &WordFormat,
+) -> Result<Projected, String> {
+    let clip = clip_of(&scene.root);
+    if clip.is_none() || scene.solids.is_empty() {
+        return Ok(Projected {
+            lists: vec![],
+            clip: None,
+        });
+    }
+    let frame = Frame::fit(scene, view, width, height)?;
+    let maxdepth = fmt.to_real(fmt.maxdepth());
+    let deepest = frame.deepest(scene);
+    if deepest >= maxdepth {
+        return Err(format!(
+            "the scene is {deepest:.0} depth units deep on a {width}x{height} array, beyond \
+             maxdepth {maxdepth}: use a smaller --size or more integer bits in --word"
+        ));
+    }
+    let lists = display_lists(scene, &frame, max_slope(fmt, width, height));
+    Ok(Projected { lists, clip })
 }
 
 /// The scene's CSG tree as a clipping function over the solids (None for an empty scene).
@@ -289,6 +344,45 @@ mod tests {
         let dl = &display_lists(&scene, &frame, 1024.0)[0];
         assert_eq!(dl.planes.iter().filter(|p| p.h).count(), 3);
         assert_eq!(dl.planes.iter().filter(|p| !p.h && !p.y).count(), 3);
+    }
+
+    #[test]
+    fn slope_limit_keeps_every_sum_in_the_word() {
+        let thesis = WordFormat::THESIS;
+        assert_eq!(max_slope(&thesis, 250, 250), 1024.0);
+        for (w, h) in [(1024, 1024), (4096, 4096), (65536, 1)] {
+            let s = max_slope(&thesis, w, h);
+            let worst = 1024.0 + s * (w + h) as f64;
+            assert!(
+                s > 0.0 && worst <= thesis.to_real(thesis.max_word()),
+                "{w}x{h}: {s}"
+            );
+        }
+        // One overflow bit leaves about maxdepth of headroom: about 2 units per pixel.
+        let one_overflow_bit = WordFormat::new(10, 10, 1).unwrap();
+        let s = max_slope(&one_overflow_bit, 250, 250);
+        assert!(s > 2.0 && s < 2.1, "{s}");
+    }
+
+    #[test]
+    fn steep_faces_compile_on_a_large_array() {
+        let fmt = WordFormat::THESIS;
+        // A thin wedge seen almost edge-on: slopes of thousands of depth units per pixel.
+        let mut s = cube(0.0, 10.0);
+        for v in &mut s.vertices {
+            v[2] += v[0] * 400.0;
+        }
+        let scene = CsgScene {
+            solids: vec![s],
+            root: CsgNode::Solid(0),
+        };
+        for size in [250, 1024, 2048] {
+            let frame = Frame::fit(&scene, View::Front, size, size).unwrap();
+            let dl = &display_lists(&scene, &frame, max_slope(&fmt, size, size))[0];
+            for p in &dl.planes {
+                crate::compile::coeffs(&fmt, p.z0, p.dzx, p.dzy).unwrap();
+            }
+        }
     }
 
     #[test]

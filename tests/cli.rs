@@ -322,3 +322,95 @@ fn float_model_renders_without_clocks() {
     ]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn csg_scene_renders_in_every_view_and_model() {
+    let d = tmp();
+    let mut images = vec![];
+    for view in ["top", "front", "iso"] {
+        for model in ["cycle", "word"] {
+            let out = d.path().join(format!("{view}-{model}.png"));
+            let o = csgpix(&[
+                "render",
+                "vectors/scenes/cube-minus-cylinder.csg",
+                "--view",
+                view,
+                "--model",
+                model,
+                "--size",
+                "96x96",
+                "-o",
+                s(&out),
+            ]);
+            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+            images.push(image::open(&out).unwrap().to_rgb8());
+        }
+    }
+    for pair in images.chunks(2) {
+        assert_eq!(pair[0], pair[1], "cycle and word images differ");
+    }
+    // Seen from the top the bore is a hole through the cube: background shows through it.
+    let top = &images[0];
+    assert_eq!(top.get_pixel(48, 48).0, [0, 0, 0]);
+    assert_ne!(top.get_pixel(3, 3).0, [0, 0, 0]);
+    // From the front the cylinder is hidden inside the cube: one colour fills the square.
+    assert_ne!(images[2].get_pixel(48, 48).0, [0, 0, 0]);
+    assert_ne!(images[0], images[4], "views differ");
+}
+
+/// Run `render` on a `.csg` text; (exit status, stderr, whether the output file exists).
+fn render_csg(text: &str, extra: &[&str]) -> (Option<i32>, String, bool) {
+    let d = tmp();
+    let scene = d.path().join("scene.csg");
+    std::fs::write(&scene, text).unwrap();
+    let out = d.path().join("out.png");
+    let mut args = vec!["render", s(&scene)];
+    args.extend_from_slice(extra);
+    args.extend(["--size", "32x32", "-o", s(&out)]);
+    let o = csgpix(&args);
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    (o.status.code(), err, out.exists())
+}
+
+#[test]
+fn unsupported_csg_nodes_are_named_with_line_and_column() {
+    let text = "group() {\n  cube(size = [1, 1, 1]);\n  linear_extrude(height = 2) square(1);\n}\n";
+    let (code, err, written) = render_csg(text, &[]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("scene.csg:3:3") && err.contains("linear_extrude"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(!written);
+    let (code, err, written) = render_csg("cube(size = [1, 1, 1]", &[]);
+    assert_eq!((code, written), (Some(2), false));
+    assert!(err.contains("scene.csg:1:"), "{err}");
+}
+
+#[test]
+fn csg_scenes_refuse_clip_and_other_scenes_and_too_deep_arrays() {
+    let cube = "cube(size = [1, 1, 1]);\n";
+    let (code, err, written) = render_csg(cube, &["--clip", "A"]);
+    assert_eq!((code, written), (Some(2), false));
+    assert!(err.contains("--clip"), "{err}");
+    let (code, err, written) = render_csg(cube, &["vectors/thesis/cube.dl"]);
+    assert_eq!((code, written), (Some(2), false));
+    assert!(err.contains("only SCENE"), "{err}");
+    // A rod seen end-on fills the array across and is 100 times as deep: 3100 depth units.
+    let rod = "cube(size = [1, 1, 100]);\n";
+    let (code, err, written) = render_csg(rod, &["--view", "top"]);
+    assert_eq!((code, written), (Some(2), false));
+    assert!(
+        err.contains("scene.csg:1:1") && err.contains("maxdepth"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_empty_csg_scene_renders_background() {
+    let text = "difference() {\n  group();\n  cube(size = [1, 1, 1]);\n}\n";
+    let (code, err, written) = render_csg(text, &[]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(written);
+}

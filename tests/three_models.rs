@@ -7,7 +7,7 @@
 use csgpix::clip_expr::Clip;
 use csgpix::compile::{clip_scene_ops, scene_ops};
 use csgpix::display_list::DisplayList;
-use csgpix::float::{self, rounding_bound, ScreenRule};
+use csgpix::float::{self, agreement, ScreenRule};
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 
@@ -32,45 +32,22 @@ fn check(names: &[&str], clip: Option<&str>) -> (usize, usize, usize) {
     wrd.run(&ops).unwrap();
     let (sc, sw) = (cyc.state(), wrd.state());
     assert_eq!(sc, sw, "cycle and word differ on {names:?} {clip:?}");
-    let f = float::render(&lists, expr.as_ref(), 250, 250, &cfg.fmt, ScreenRule::Exact);
-    let ft = float::render(
-        &lists,
-        expr.as_ref(),
-        250,
-        250,
-        &cfg.fmt,
-        ScreenRule::Thesis,
-    );
-    let (mut diff, mut tie, mut rule) = (0, 0, 0);
-    for (i, p) in sw.pixels.iter().enumerate() {
-        if p.creg(CReg::G) == f.colour[i] {
-            continue;
-        }
-        diff += 1;
-        let bound = rounding_bound(&cfg.fmt, i % 250, i / 250);
-        if f.margin[i] < 2.0 * bound {
-            tie += 1;
-        } else if f.screen_rule[i]
-            && (clip.is_some() || p.creg(CReg::G) == ft.colour[i] || ft.margin[i] < 2.0 * bound)
-        {
-            // The thesis's own rule, computed exactly, gives what the hardware shows. With a
-            // clipping function the rule acts on the drawn literal but not on the clipping
-            // volumes, which the float model's thesis mode does not imitate: there the pixel
-            // is only required to lie where the rule applies.
-            rule += 1;
-        } else {
-            panic!(
-                "{names:?} {clip:?}: pixel ({}, {}) word colour {} float colour {} depth {:?}, margin {} > 2x bound {bound}",
-                i % 250,
-                i / 250,
-                p.creg(CReg::G),
-                f.colour[i],
-                f.depth[i],
-                f.margin[i]
-            );
-        }
+    let colours: Vec<u32> = sw.pixels.iter().map(|p| p.creg(CReg::G)).collect();
+    let a = agreement(&colours, &lists, expr.as_ref(), 250, 250, &cfg.fmt);
+    if let Some(&i) = a.unexplained.first() {
+        let f = float::render(&lists, expr.as_ref(), 250, 250, &cfg.fmt, ScreenRule::Exact);
+        panic!(
+            "{names:?} {clip:?}: {} unexplained pixels, first ({}, {}): word colour {} float colour {} depth {:?}, margin {}",
+            a.unexplained.len(),
+            i % 250,
+            i / 250,
+            colours[i],
+            f.colour[i],
+            f.depth[i],
+            f.margin[i]
+        );
     }
-    (diff, tie, rule)
+    (a.differ(), a.near_tie, a.screen_rule)
 }
 
 #[test]

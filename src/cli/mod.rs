@@ -3,6 +3,7 @@
 mod array_args;
 mod gen_vectors;
 mod render;
+mod scenes;
 mod verify_select;
 
 use std::process::ExitCode;

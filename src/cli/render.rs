@@ -1,35 +1,42 @@
-//! `csgpix render`: display lists through the array, the composed scene (C, G) as an image.
+//! `csgpix render`: display lists or a `.csg` scene through the array, the composed scene
+//! (C, G) as an image.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
-use csgpix::clip_expr::Clip;
 use csgpix::compile::{clip_scene_ops, scene_ops};
-use csgpix::display_list::{field_position, DisplayList};
 use csgpix::output::write_atomic;
-use csgpix::palette::rgb;
+use csgpix::palette::image_rgb;
+use csgpix::project::View;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::array::check_program;
-use rtl_model::program::{CReg, Op};
+use rtl_model::program::{CReg, Op, Reg};
 use rtl_model::Array;
+use rtl_model::Pixel;
 
 use serde::Serialize;
 
 use super::array_args::{ArrayArgs, Model};
+use super::scenes::Scene;
 use csgpix::float::{self, ScreenRule};
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
     csgpix render vectors/thesis/cube.dl -o cube.png\n  \
+    csgpix render vectors/scenes/cube-minus-cylinder.csg --view iso --shade -o scene.png\n  \
     csgpix render vectors/thesis/box1.dl vectors/thesis/box2.dl --model word --json -o boxes.png\n  \
     csgpix render vectors/thesis/box1.dl vectors/thesis/box2.dl --clip 'A.!B' -o fig5-1e.png\n  \
     csgpix render vectors/thesis/cube.dl --vcd cube.vcd --probe '120,100;10,10' -o cube.png\n  \
     csgpix render vectors/thesis/cube.dl --probe 120,100 --wave cube.svg --wave-clocks 0..120 -o cube.png")]
 pub struct Args {
-    /// Display-list files (thesis §5.2); several objects are composed by the second stage.
+    /// Display-list files (thesis §5.2), composed by the second stage; or one OpenSCAD `.csg`
+    /// file, projected onto the array, its tree evaluated as a clipping function.
     #[arg(required = true)]
     scenes: Vec<PathBuf>,
+    /// View direction for a `.csg` scene (the scene's bounds fill the array).
+    #[arg(long, value_enum, default_value_t)]
+    view: ViewArg,
     /// Output PNG.
     #[arg(short = 'o', long)]
     out: PathBuf,
@@ -39,9 +46,33 @@ pub struct Args {
     /// "A.!B"; each literal is drawn, clipped by the rest of its product and composed.
     #[arg(long)]
     clip: Option<String>,
+    /// Shade by depth (C): nearest drawn depth at full colour, farthest at 45%.
+    #[arg(long)]
+    shade: bool,
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
+enum ViewArg {
+    /// Looking down −Z (x right, y up).
+    Top,
+    /// Looking along +Y (x right, z up).
+    Front,
+    /// Isometric, from (+1, −1, +1).
+    #[default]
+    Iso,
+}
+
+impl From<ViewArg> for View {
+    fn from(v: ViewArg) -> View {
+        match v {
+            ViewArg::Top => View::Top,
+            ViewArg::Front => View::Front,
+            ViewArg::Iso => View::Iso,
+        }
+    }
 }
 
 #[derive(Serialize)]
@@ -60,49 +91,44 @@ struct Report {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
-    let mut lists = vec![];
-    let mut texts = vec![];
-    for p in &a.scenes {
-        let text = std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?;
-        lists.push(DisplayList::parse(&text, &p.display().to_string()).map_err(|e| e.to_string())?);
-        texts.push(text);
-    }
     let cfg = a.array.config()?;
-    let compiled = match clip_expr(&a, &lists)? {
-        None => scene_ops(&lists, &cfg.fmt, cfg.colour_bits),
-        Some(expr) => clip_scene_ops(&lists, &expr, &cfg.fmt, cfg.colour_bits),
+    let scene = Scene::load(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)?;
+    let compiled = match (&scene.clip, scene.empty) {
+        (_, true) => Ok(vec![]),
+        (None, false) => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
+        (Some(expr), false) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
     };
-    let ops = compiled.map_err(|(i, e)| {
-        let (line, col) = field_position(&texts[i], e.plane, e.field).unwrap_or((1, 1));
-        format!("{}:{line}:{col}: {}", a.scenes[i].display(), e.msg)
-    })?;
+    let ops = compiled.map_err(|(i, e)| scene.locate(i, &e))?;
     let t0 = Instant::now();
-    let (image, cycles) = if a.array.model == Model::Float {
+    let (codes, depths, cycles) = if a.array.model == Model::Float {
         if a.array.probe.is_some() {
             return Err("--probe needs an array model (cycle or word)".into());
         }
-        let expr = clip_expr(&a, &lists)?;
         let f = float::render(
-            &lists,
-            expr.as_ref(),
+            &scene.lists,
+            scene.clip.as_ref(),
             cfg.width,
             cfg.height,
             &cfg.fmt,
             ScreenRule::Exact,
         );
-        (f.colour, 0)
+        (f.colour, f.depth, 0)
     } else {
         let mut arr = a.array.build()?;
         run_with_progress(arr.as_mut(), &ops)?;
         a.array.write_waves(arr.as_mut())?;
         let st = arr.state();
+        let depth = |p: &Pixel| Some(cfg.fmt.to_real(p.reg(Reg::C)));
         (
             st.pixels.iter().map(|p| p.creg(CReg::G)).collect(),
+            st.pixels.iter().map(depth).collect(),
             arr.cycles(),
         )
     };
+    let image = image_rgb(&codes, a.shade.then_some(&depths[..]));
     let wall = t0.elapsed().as_secs_f64();
     write_png(&a.out, cfg.width, cfg.height, &image)?;
+    let lists = &scene.lists;
     let report = Report {
         model: a.array.model.name(),
         equations: a.array.equations_name(),
@@ -134,22 +160,6 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The parsed `--clip` function, if any.
-fn clip_expr(a: &Args, lists: &[DisplayList]) -> Result<Option<Clip>, String> {
-    let Some(text) = &a.clip else { return Ok(None) };
-    let names: Vec<String> = (0..lists.len()).map(object_name).collect();
-    let expr = Clip::parse(text, &names).map_err(|e| format!("--clip:1:{}: {}", e.col, e.msg))?;
-    Ok(Some(expr))
-}
-
-/// The name `--clip` uses for the `i`-th object: A … Z, then O26, O27, …
-pub fn object_name(i: usize) -> String {
-    match u8::try_from(i) {
-        Ok(n) if n < 26 => ((b'A' + n) as char).to_string(),
-        _ => format!("O{i}"),
-    }
-}
-
 /// Run a program, with a progress bar on a terminal when it is long enough to wait for.
 pub fn run_with_progress(arr: &mut dyn Array, ops: &[Op]) -> Result<(), String> {
     check_program(ops, arr.config().stack_depth).map_err(|e| e.to_string())?;
@@ -172,11 +182,11 @@ pub fn run_with_progress(arr: &mut dyn Array, ops: &[Op]) -> Result<(), String> 
     Ok(())
 }
 
-/// Colour codes of every pixel, through the palette.
-fn write_png(path: &Path, width: usize, height: usize, codes: &[u32]) -> Result<(), String> {
+/// The RGB of every pixel as a PNG, written whole or not at all.
+fn write_png(path: &Path, width: usize, height: usize, pixels: &[[u8; 3]]) -> Result<(), String> {
     let mut img = image::RgbImage::new(width as u32, height as u32);
-    for (i, c) in codes.iter().enumerate() {
-        img.put_pixel((i % width) as u32, (i / width) as u32, image::Rgb(rgb(*c)));
+    for (i, c) in pixels.iter().enumerate() {
+        img.put_pixel((i % width) as u32, (i / width) as u32, image::Rgb(*c));
     }
     write_atomic(path, |w| {
         let mut buf = std::io::Cursor::new(Vec::new());
