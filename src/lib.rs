@@ -9,4 +9,5 @@ pub mod palette;
 pub mod polygon;
 pub mod project;
 pub mod scad;
+pub mod slice;
 pub mod solid;

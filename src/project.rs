@@ -242,7 +242,8 @@ pub fn clip_of(root: &CsgNode) -> Option<Clip> {
             Task::Visit(n) => match n {
                 CsgNode::Solid(i) => out.push(Some(Clip::Obj(*i))),
                 CsgNode::Empty => out.push(None),
-                CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
+                _ => {
+                    let c = n.children();
                     tasks.push(Task::Build(n, c.len()));
                     tasks.extend(c.iter().rev().map(Task::Visit));
                 }
@@ -277,6 +278,8 @@ fn combine(n: &CsgNode, kids: Vec<Option<Clip>>) -> Option<Clip> {
                     .fold(first, |a, b| and(a, Clip::Not(Box::new(b)))),
             )
         }
+        // The complement of nothing is everything, which no display list can draw.
+        CsgNode::Complement(_) => Some(Clip::Not(Box::new(kids.into_iter().next()??))),
         _ => None,
     }
 }

@@ -2317,6 +2317,7 @@ mod tests {
                         CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
                             pending.extend(c)
                         }
+                        CsgNode::Complement(c) => pending.push(c),
                         CsgNode::Empty => {}
                     }
                 }

@@ -22,6 +22,8 @@ pub enum CsgNode {
     Intersection(Vec<CsgNode>),
     /// The first child minus all the others.
     Difference(Vec<CsgNode>),
+    /// Everything outside the child (from the `!` of CSG expressions; files never make it).
+    Complement(Box<CsgNode>),
     /// Nothing (an empty group).
     Empty,
 }
@@ -33,19 +35,34 @@ pub struct CsgScene {
     pub root: CsgNode,
 }
 
-impl Drop for CsgNode {
-    /// Dropping a tree as deep as a file can make must not recurse once per level.
-    fn drop(&mut self) {
-        let mut stack: Vec<CsgNode> = match self {
+impl CsgNode {
+    /// The node's operands, in order (none for a solid or an empty node).
+    pub fn children(&self) -> &[CsgNode] {
+        match self {
+            CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => c,
+            CsgNode::Complement(c) => std::slice::from_ref(&**c),
+            CsgNode::Solid(_) | CsgNode::Empty => &[],
+        }
+    }
+
+    /// Move the operands out, leaving the node without children.
+    fn take_children(&mut self) -> Vec<CsgNode> {
+        match self {
             CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
                 std::mem::take(c)
             }
-            _ => return,
-        };
+            CsgNode::Complement(c) => vec![std::mem::replace(&mut **c, CsgNode::Empty)],
+            CsgNode::Solid(_) | CsgNode::Empty => vec![],
+        }
+    }
+}
+
+impl Drop for CsgNode {
+    /// Dropping a tree as deep as a file can make must not recurse once per level.
+    fn drop(&mut self) {
+        let mut stack = self.take_children();
         while let Some(mut n) = stack.pop() {
-            if let CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) = &mut n {
-                stack.append(c);
-            }
+            stack.append(&mut n.take_children());
         }
     }
 }
