@@ -11,3 +11,4 @@ pub mod project;
 pub mod scad;
 pub mod slice;
 pub mod solid;
+pub mod voxelize;

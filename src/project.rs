@@ -68,8 +68,10 @@ pub struct Frame {
     pub basis: DMat3,
     /// Minimum (u, v, w) of the scene in view coordinates.
     pub min: DVec3,
-    /// Pixels per scene unit.
-    pub scale: f64,
+    /// Pixels (x, y) and depth units (z) per scene unit along u, v, w.
+    pub scale: DVec3,
+    /// Added after scaling: pixel coordinates and depth of `min`.
+    pub offset: DVec3,
 }
 
 impl Frame {
@@ -89,7 +91,12 @@ impl Frame {
         }
         let ext = (max - min).max(DVec3::splat(1e-9));
         let scale = ((width.max(2) - 1) as f64 / ext.x).min((height.max(2) - 1) as f64 / ext.y);
-        Ok(Frame { basis, min, scale })
+        Ok(Frame {
+            basis,
+            min,
+            scale: DVec3::splat(scale),
+            offset: DVec3::new(0.0, 0.0, DEPTH_MARGIN),
+        })
     }
 
     /// The greatest depth of any vertex of the scene, in depth units.
@@ -104,8 +111,7 @@ impl Frame {
 
     /// Pixel coordinates (x, y) and depth of a scene point.
     pub fn to_pixel(&self, p: DVec3) -> DVec3 {
-        let q = (self.basis * p - self.min) * self.scale;
-        DVec3::new(q.x, q.y, q.z + DEPTH_MARGIN)
+        (self.basis * p - self.min) * self.scale + self.offset
     }
 }
 
@@ -130,7 +136,8 @@ fn face_plane(
             (a.x - b.x) * (a.y + b.y),
         );
     }
-    // Every view basis is a rotation (det +1), so counter-clockwise still means outward.
+    // Every view basis is a rotation (det +1) and every scale positive, so counter-clockwise
+    // still means outward.
     if n.length() < 1e-12 {
         return None;
     }
@@ -151,6 +158,68 @@ fn face_plane(
         return Some(plane(d / len, -nu / len, -nv / len, false, true));
     }
     Some(plane(d / nw, -nu / nw, -nv / nw, nw < 0.0, false))
+}
+
+/// Perpendicular planes (Y = 1) along the solid's silhouette: one per edge of the convex hull
+/// of its projected vertices, K the signed distance in pixels from the edge, K ≥ 0 inside
+/// (the polygon edges of §5.3.1). They change nothing inside the silhouette; outside it they
+/// keep the solid out even where one of its back planes lies in front of the screen, which the
+/// row "A < 0 ≤ B: Put 1" of §2.3.3 would otherwise turn into a solid reaching to maxdepth
+/// (docs/voxelization.md). None when the solid projects to less than an area.
+pub fn silhouette_planes(frame: &Frame, s: &ConvexSolid, colour: u32) -> Vec<DlPlane> {
+    let pts: Vec<glam::DVec2> = s
+        .vertices
+        .iter()
+        .map(|v| frame.to_pixel(DVec3::from(*v)).truncate())
+        .collect();
+    let hull = convex_hull(pts);
+    if hull.len() < 3 {
+        return vec![];
+    }
+    let mut planes = Vec::with_capacity(hull.len());
+    for (a, b) in hull.iter().zip(hull.iter().cycle().skip(1)) {
+        let e = *b - *a;
+        let len = e.length();
+        if len < 1e-12 {
+            continue;
+        }
+        // K(p) = e × (p − a) / |e|: positive to the left of a → b, inside a counter-clockwise hull.
+        planes.push(DlPlane {
+            z0: (e.y * a.x - e.x * a.y) / len,
+            dzx: -e.y / len,
+            dzy: e.x / len,
+            colour,
+            h: false,
+            y: true,
+            l: false,
+        });
+    }
+    planes
+}
+
+/// Convex hull, counter-clockwise (positive signed area), without collinear points
+/// (Andrew's monotone chain).
+fn convex_hull(mut pts: Vec<glam::DVec2>) -> Vec<glam::DVec2> {
+    pts.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    pts.dedup();
+    if pts.len() < 3 {
+        return pts;
+    }
+    let cross = |o: glam::DVec2, a: glam::DVec2, b: glam::DVec2| (a - o).perp_dot(b - o);
+    let mut hull: Vec<glam::DVec2> = Vec::with_capacity(2 * pts.len());
+    for pass in [pts.clone(), pts.into_iter().rev().collect()] {
+        let start = hull.len();
+        for p in pass {
+            while hull.len() >= start + 2
+                && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    hull
 }
 
 /// Nearest palette code (1..=15) to an RGBA colour.

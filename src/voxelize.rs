@@ -1,0 +1,318 @@
+//! Voxelizing slice by slice (§4.4; DESIGN.md, "From images to voxels").
+//!
+//! The grid's X and Y map to the array's pixels and its Z to depth: slab k lies between
+//! Z-plane(k) and Z-plane(k + 1). The slice of primitive P is what the array shows for P·Vz,
+//! drawn the thesis way (§5.2.1): @(P)·Vz + @(Vz)·P, P's own surface inside the slab or the
+//! slab's front plane inside P, composed by the second stage. A pixel shows something exactly
+//! when P meets the slab along the pixel's ray.
+//!
+//! # Sampling convention
+//!
+//! Voxel (i, j, k) is inside primitive P when the segment through the voxel's centre parallel
+//! to Z, from its front face up to (not including) its back face, meets P. Pixel (i, j)
+//! samples the ray at the voxel centre's X and Y; the slab's clipping planes are the voxel's
+//! front face and a plane one least unit of the depth word before its back face, so every
+//! depth word belongs to exactly one slab.
+//!
+//! # Routes to the same masks
+//!
+//! * [`Route::Array`]: the processor itself (`cycle` or `word`), one frame per primitive per
+//!   slab; the reference, and the only route that reports clocks.
+//! * [`Route::Intervals`]: the same plane words the array computes (Z0 + x·dZx + y·dZy in the
+//!   depth word, §2.3.1), reduced once per pixel to the interval of depths where P lies, then
+//!   intersected with every slab. Tests prove it gives the processor's masks voxel for voxel.
+//! * [`Route::Float`]: the same intervals in exact f64 arithmetic: the reference geometry.
+
+use glam::{DMat3, DVec3};
+
+use rtl_model::program::CReg;
+use rtl_model::{Array, ArrayConfig, CycleArray, EquationSet, WordArray, WordFormat};
+
+use crate::clip_expr::Clip;
+use crate::compile::clip_scene_ops;
+use crate::display_list::{DisplayList, DlPlane};
+use crate::project::{display_lists, max_slope, silhouette_planes, Frame, DEPTH_MARGIN};
+use crate::slice::Mask;
+use crate::solid::CsgScene;
+
+/// The voxel grid: `dims` voxels spanning the box `min`..`max` in scene units.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Grid {
+    pub dims: [usize; 3],
+    pub min: DVec3,
+    pub max: DVec3,
+}
+
+impl Grid {
+    /// A grid over the scene's bounds (every solid's vertices, so subtracted solids count).
+    pub fn of_scene(scene: &CsgScene, dims: [usize; 3]) -> Result<Grid, String> {
+        let pts = scene.solids.iter().flat_map(|s| s.vertices.iter());
+        let (min, max) = pts.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), p| {
+            (a.min(DVec3::from(*p)), b.max(DVec3::from(*p)))
+        });
+        if !min.is_finite() {
+            return Err("the scene has no solids: give --bounds".into());
+        }
+        Grid::new(dims, min, max)
+    }
+
+    /// A grid over an explicit box.
+    pub fn new(dims: [usize; 3], min: DVec3, max: DVec3) -> Result<Grid, String> {
+        if dims.contains(&0) {
+            return Err(format!(
+                "resolution {dims:?}: every side needs at least one voxel"
+            ));
+        }
+        if !(min.is_finite() && max.is_finite()) || (max - min).min_element() <= 0.0 {
+            return Err(format!(
+                "bounds {min} .. {max} must be finite with every side positive"
+            ));
+        }
+        Ok(Grid { dims, min, max })
+    }
+
+    /// Size of one voxel in scene units.
+    pub fn voxel(&self) -> DVec3 {
+        (self.max - self.min)
+            / DVec3::new(
+                self.dims[0] as f64,
+                self.dims[1] as f64,
+                self.dims[2] as f64,
+            )
+    }
+
+    /// Centre of voxel (i, j, k) in scene units.
+    pub fn centre(&self, i: usize, j: usize, k: usize) -> DVec3 {
+        self.min + (DVec3::new(i as f64, j as f64, k as f64) + 0.5) * self.voxel()
+    }
+
+    /// Voxels in one slice.
+    pub fn slice_len(&self) -> usize {
+        self.dims[0] * self.dims[1]
+    }
+}
+
+/// How slab masks are computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Route {
+    /// The processor, clock by clock (`cycle`) or word by word (`word`).
+    Array { cycle: bool },
+    /// The array's plane words reduced to per-pixel depth intervals.
+    Intervals,
+    /// Exact f64 intervals.
+    Float,
+}
+
+/// A scene set up for slicing: its display lists in the grid's frame and the slabs.
+pub struct Slicer {
+    pub grid: Grid,
+    pub fmt: WordFormat,
+    /// One display list per solid (§5.2), in the frame of [`Slicer::frame`].
+    pub lists: Vec<DisplayList>,
+    /// Raw depth-word units per slab (a whole number, so slab planes are exact words).
+    pub slab_raw: i64,
+}
+
+impl Slicer {
+    /// Lay the grid on the array: X, Y to pixels (voxel centres at integer pixel
+    /// coordinates), Z to depth, slab k at DEPTH_MARGIN + k·q depth units, q as large as the
+    /// word's depth range allows.
+    pub fn new(scene: &CsgScene, grid: Grid, fmt: WordFormat) -> Result<Slicer, String> {
+        let one = 1i64 << fmt.frac;
+        let margin_raw = DEPTH_MARGIN as i64 * one;
+        let room = fmt.maxdepth() - 2 * margin_raw;
+        let slab_raw = room / grid.dims[2] as i64;
+        if slab_raw < 1 {
+            return Err(format!(
+                "{} slices do not fit the depth word ({} fraction and {} integer bits): \
+                 use fewer slices or a wider --word",
+                grid.dims[2], fmt.frac, fmt.int
+            ));
+        }
+        let frame = Self::frame_of(&grid, fmt.to_real(slab_raw));
+        let (w, h) = (grid.dims[0], grid.dims[1]);
+        let mut lists = display_lists(scene, &frame, max_slope(&fmt, w, h));
+        for (dl, solid) in lists.iter_mut().zip(&scene.solids) {
+            let colour = dl.planes.first().map_or(1, |p| p.colour);
+            dl.planes.extend(silhouette_planes(&frame, solid, colour));
+        }
+        Ok(Slicer {
+            grid,
+            fmt,
+            lists,
+            slab_raw,
+        })
+    }
+
+    fn frame_of(grid: &Grid, q: f64) -> Frame {
+        let v = grid.voxel();
+        Frame {
+            basis: DMat3::IDENTITY,
+            min: grid.min,
+            scale: DVec3::new(1.0 / v.x, 1.0 / v.y, q / v.z),
+            offset: DVec3::new(-0.5, -0.5, DEPTH_MARGIN),
+        }
+    }
+
+    /// Depth (raw word) of Z-plane(k), the front of slab k.
+    pub fn z_plane(&self, k: usize) -> i64 {
+        ((DEPTH_MARGIN as i64) << self.fmt.frac) + k as i64 * self.slab_raw
+    }
+
+    /// The slab as a display list: front plane Z-plane(k), back plane one raw unit before
+    /// Z-plane(k + 1), so that every depth word belongs to exactly one slab.
+    pub fn slab_list(&self, k: usize, colour: u32) -> DisplayList {
+        let plane = |raw: i64, h: bool| DlPlane {
+            z0: self.fmt.to_real(raw),
+            dzx: 0.0,
+            dzy: 0.0,
+            colour,
+            h,
+            y: false,
+            l: false,
+        };
+        DisplayList {
+            planes: vec![
+                plane(self.z_plane(k), true),
+                plane(self.z_plane(k + 1) - 1, false),
+            ],
+            terminator: 1234,
+        }
+    }
+
+    /// The array configuration slices run on.
+    pub fn config(&self) -> ArrayConfig {
+        ArrayConfig {
+            fmt: self.fmt,
+            ..ArrayConfig::new(self.grid.dims[0], self.grid.dims[1])
+        }
+    }
+}
+
+/// What the processor shows for P·Vz, as a mask (pixels with a colour), and the clocks taken.
+pub fn array_mask(
+    slicer: &Slicer,
+    prim: usize,
+    k: usize,
+    cycle: bool,
+    set: EquationSet,
+) -> Result<(Mask, u64), String> {
+    let p = &slicer.lists[prim];
+    let colour = p.planes.first().map_or(1, |pl| pl.colour);
+    let lists = [p.clone(), slicer.slab_list(k, colour)];
+    let expr = Clip::And(Box::new(Clip::Obj(0)), Box::new(Clip::Obj(1)));
+    let cfg = slicer.config();
+    let ops = clip_scene_ops(&lists, &expr, &cfg.fmt, cfg.colour_bits)
+        .map_err(|(_, e)| format!("solid {}: {e}", prim + 1))?;
+    let mut arr: Box<dyn Array> = if cycle {
+        Box::new(CycleArray::new(cfg, set))
+    } else {
+        Box::new(WordArray::new(cfg, set))
+    };
+    arr.run(&ops).map_err(|e| e.to_string())?;
+    let st = arr.state();
+    let mask = Mask::from_fn(cfg.pixels(), |i| st.pixels[i].creg(CReg::G) != 0);
+    Ok((mask, arr.cycles()))
+}
+
+/// Per pixel, the slabs primitive P meets: `first..=last` (empty when first > last).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SlabRanges(pub Vec<(u32, u32)>);
+
+impl SlabRanges {
+    /// The mask of slab k.
+    pub fn mask(&self, k: usize) -> Mask {
+        let k = k as u32;
+        Mask::from_fn(self.0.len(), |i| {
+            let (a, b) = self.0[i];
+            a <= k && k <= b
+        })
+    }
+}
+
+/// The slabs a depth interval [lo, hi] (in raw word units) meets, both ends closed.
+fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
+    const EMPTY: (u32, u32) = (1, 0);
+    let (z0, s) = (slicer.z_plane(0) as i128, slicer.slab_raw as i128);
+    let last_slab = slicer.grid.dims[2] as i128 - 1;
+    if lo > hi {
+        return EMPTY;
+    }
+    // Slab k is [z0 + k·s, z0 + (k + 1)·s − 1] in raw units: it meets [lo, hi] when
+    // z0 + k·s <= hi and z0 + (k + 1)·s − 1 >= lo, i.e. k <= (hi − z0) / s and
+    // k >= (lo − z0 + 1) / s − 1.
+    let last = (hi - z0).div_euclid(s).min(last_slab);
+    let first = ((lo - z0 + 1 + s - 1).div_euclid(s) - 1).max(0);
+    if first > last || last < 0 || first > last_slab {
+        return EMPTY;
+    }
+    (first as u32, last as u32)
+}
+
+/// [`Route::Intervals`]: the array's own plane words (DEPGEN's Z0 + x·dZx + y·dZy, wrapped to
+/// the word) reduced to the interval of depths inside P: behind every front plane, before
+/// every back plane, K ≥ 0 on every perpendicular plane.
+pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges, String> {
+    let fmt = &slicer.fmt;
+    let coeffs: Vec<(rtl_model::Coeffs, &DlPlane)> = slicer.lists[prim]
+        .planes
+        .iter()
+        .map(|p| {
+            crate::compile::coeffs(fmt, p.z0, p.dzx, p.dzy)
+                .map(|c| (c, p))
+                .map_err(|(_, msg)| format!("solid {}: {msg}", prim + 1))
+        })
+        .collect::<Result<_, _>>()?;
+    let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
+    let mut out = Vec::with_capacity(w * h);
+    for y in 0..h as i64 {
+        for x in 0..w as i64 {
+            let (mut lo, mut hi) = (i128::MIN, i128::MAX);
+            for (c, p) in &coeffs {
+                let v = fmt.wrap(c.c0 + x * c.dx + y * c.dy) as i128;
+                match (p.y, p.h) {
+                    (true, _) if v < 0 => (lo, hi) = (1, 0),
+                    (true, _) => {}
+                    (false, true) => lo = lo.max(v),
+                    (false, false) => hi = hi.min(v),
+                }
+            }
+            out.push(slabs_of(slicer, lo, hi));
+        }
+    }
+    Ok(SlabRanges(out))
+}
+
+/// [`Route::Float`]: the same intervals from the exact plane values.
+pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
+    let one = (1u64 << slicer.fmt.frac) as f64;
+    let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
+    let mut out = Vec::with_capacity(w * h);
+    for y in 0..h {
+        for x in 0..w {
+            let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+            for p in &slicer.lists[prim].planes {
+                let v = p.z0 + x as f64 * p.dzx + y as f64 * p.dzy;
+                match (p.y, p.h) {
+                    (true, _) if v < 0.0 => (lo, hi) = (1.0, 0.0),
+                    (true, _) => {}
+                    (false, true) => lo = lo.max(v),
+                    (false, false) => hi = hi.min(v),
+                }
+            }
+            // Exact comparisons against slab planes that are whole raw units: scale, then
+            // round outward only where the value is not already a whole unit.
+            let raw = |v: f64, up: bool| -> i128 {
+                let r = v * one;
+                let r = if up { r.ceil() } else { r.floor() };
+                r.clamp(i128::MIN as f64 / 4.0, i128::MAX as f64 / 4.0) as i128
+            };
+            out.push(if lo > hi {
+                (1, 0)
+            } else {
+                slabs_of(slicer, raw(lo, true), raw(hi, false))
+            });
+        }
+    }
+    SlabRanges(out)
+}
