@@ -4,6 +4,7 @@ pub mod clip_expr;
 pub mod compile;
 pub mod display_list;
 pub mod float;
+pub mod nrrd;
 pub mod output;
 pub mod palette;
 pub mod polygon;

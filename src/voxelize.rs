@@ -32,7 +32,7 @@ use crate::clip_expr::Clip;
 use crate::compile::clip_scene_ops;
 use crate::display_list::{DisplayList, DlPlane};
 use crate::project::{display_lists, max_slope, silhouette_planes, Frame, DEPTH_MARGIN};
-use crate::slice::Mask;
+use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::solid::CsgScene;
 
 /// The voxel grid: `dims` voxels spanning the box `min`..`max` in scene units.
@@ -111,6 +111,8 @@ pub struct Slicer {
     pub lists: Vec<DisplayList>,
     /// Raw depth-word units per slab (a whole number, so slab planes are exact words).
     pub slab_raw: i64,
+    /// Colour code of each solid (its display list's colour).
+    pub colours: Vec<u8>,
 }
 
 impl Slicer {
@@ -136,11 +138,16 @@ impl Slicer {
             let colour = dl.planes.first().map_or(1, |p| p.colour);
             dl.planes.extend(silhouette_planes(&frame, solid, colour));
         }
+        let colours = lists
+            .iter()
+            .map(|dl| dl.planes.first().map_or(1, |p| p.colour.min(255) as u8))
+            .collect();
         Ok(Slicer {
             grid,
             fmt,
             lists,
             slab_raw,
+            colours,
         })
     }
 
@@ -197,13 +204,8 @@ pub fn array_mask(
     cycle: bool,
     set: EquationSet,
 ) -> Result<(Mask, u64), String> {
-    let p = &slicer.lists[prim];
-    let colour = p.planes.first().map_or(1, |pl| pl.colour);
-    let lists = [p.clone(), slicer.slab_list(k, colour)];
-    let expr = Clip::And(Box::new(Clip::Obj(0)), Box::new(Clip::Obj(1)));
+    let ops = slice_ops(slicer, prim, k)?;
     let cfg = slicer.config();
-    let ops = clip_scene_ops(&lists, &expr, &cfg.fmt, cfg.colour_bits)
-        .map_err(|(_, e)| format!("solid {}: {e}", prim + 1))?;
     let mut arr: Box<dyn Array> = if cycle {
         Box::new(CycleArray::new(cfg, set))
     } else {
@@ -315,4 +317,138 @@ pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
         }
     }
     SlabRanges(out)
+}
+
+/// The P·Vz program of primitive `prim` and slab `k` (§5.2.1: @(P)·Vz + @(Vz)·P).
+fn slice_ops(slicer: &Slicer, prim: usize, k: usize) -> Result<Vec<rtl_model::Op>, String> {
+    let p = &slicer.lists[prim];
+    let lists = [p.clone(), slicer.slab_list(k, slicer.colours[prim] as u32)];
+    let expr = Clip::And(Box::new(Clip::Obj(0)), Box::new(Clip::Obj(1)));
+    let cfg = slicer.config();
+    clip_scene_ops(&lists, &expr, &cfg.fmt, cfg.colour_bits)
+        .map_err(|(_, e)| format!("solid {}: {e}", prim + 1))
+}
+
+/// A voxelized scene: colour codes, X fastest, then Y, then Z; 0 is empty.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Volume {
+    pub dims: [usize; 3],
+    pub voxels: Vec<u8>,
+}
+
+/// What a run did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Work {
+    /// Voxels inside the scene.
+    pub filled: usize,
+    /// Array clocks for every P·Vz frame (simulated on the array route, counted from the
+    /// programs on the others: the same number either way).
+    pub cycles: u64,
+    /// P·Vz frames drawn (primitives × slabs).
+    pub frames: u64,
+    /// The evaluator's operations (§5.5).
+    pub ops: OpCounts,
+}
+
+/// Per-slice masks of every primitive, by route.
+enum Source {
+    Ranges(Vec<SlabRanges>),
+    Array { cycle: bool, set: EquationSet },
+}
+
+impl Source {
+    fn masks(&self, slicer: &Slicer, k: usize) -> Result<Vec<Mask>, String> {
+        match self {
+            Source::Ranges(r) => Ok(r.iter().map(|r| r.mask(k)).collect()),
+            Source::Array { cycle, set } => (0..slicer.lists.len())
+                .map(|p| array_mask(slicer, p, k, *cycle, set.clone()).map(|m| m.0))
+                .collect(),
+        }
+    }
+}
+
+/// Voxelize: every slab's primitive masks by `route`, evaluated by `eval`, slabs in
+/// parallel; the result does not depend on the number of threads. `tick` is called once per
+/// finished slab (for a progress bar).
+pub fn voxelize(
+    slicer: &Slicer,
+    route: Route,
+    set: EquationSet,
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+) -> Result<(Volume, Work), String> {
+    use rayon::prelude::*;
+    let prims = slicer.lists.len();
+    let source = match route {
+        Route::Array { cycle } => Source::Array {
+            cycle,
+            set: set.clone(),
+        },
+        Route::Intervals => Source::Ranges(
+            (0..prims)
+                .into_par_iter()
+                .map(|p| word_ranges(slicer, p))
+                .collect::<Result<_, _>>()?,
+        ),
+        Route::Float => Source::Ranges(
+            (0..prims)
+                .into_par_iter()
+                .map(|p| float_ranges(slicer, p))
+                .collect(),
+        ),
+    };
+    let cfg = slicer.config();
+    let [nx, ny, nz] = slicer.grid.dims;
+    let mut cycles = 0;
+    for p in 0..prims {
+        cycles +=
+            rtl_model::array::program_cycles(&cfg, &set, &slice_ops(slicer, p, 0)?) * nz as u64;
+    }
+    let slices: Vec<(Vec<u8>, OpCounts)> = (0..nz)
+        .into_par_iter()
+        .map(|k| {
+            let masks = source.masks(slicer, k)?;
+            let mut counts = OpCounts::default();
+            let labels = eval.eval(&masks, &mut counts);
+            let colours = labels
+                .iter()
+                .map(|&l| {
+                    if l == 0 {
+                        0
+                    } else {
+                        slicer.colours[l as usize - 1]
+                    }
+                })
+                .collect();
+            tick();
+            Ok((colours, counts))
+        })
+        .collect::<Result<_, String>>()?;
+    let mut work = Work {
+        cycles,
+        frames: (prims * nz) as u64,
+        ..Work::default()
+    };
+    let mut voxels = Vec::with_capacity(nx * ny * nz);
+    for (colours, counts) in slices {
+        work.ops += counts;
+        voxels.extend_from_slice(&colours);
+    }
+    work.filled = voxels.iter().filter(|&&v| v != 0).count();
+    Ok((
+        Volume {
+            dims: slicer.grid.dims,
+            voxels,
+        },
+        work,
+    ))
+}
+
+/// Bytes a run needs at least: the volume, the per-pixel slab ranges of every primitive, and
+/// a slab's masks and labels per thread.
+pub fn memory_estimate(grid: &Grid, prims: usize, threads: usize) -> u64 {
+    let [nx, ny, nz] = grid.dims.map(|d| d as u64);
+    let pixels = nx * ny;
+    let (prims, threads) = (prims as u64, threads as u64);
+    pixels * nz + prims * pixels * 8 + threads * pixels * (prims / 8 + 1 + 8)
 }

@@ -65,6 +65,32 @@ impl Sequencer {
     }
 }
 
+/// The clocks a program takes on an array of configuration `cfg`, without simulating a pixel:
+/// the windows' N_D clocks (with DEPGEN's fill before the first that streams), one clock per
+/// stack operation, and a last window for a transfer still latched at the end. Equal to
+/// [`Array::cycles`] after [`Array::run`] (tested against both models).
+pub fn program_cycles(cfg: &ArrayConfig, set: &crate::EquationSet, ops: &[Op]) -> u64 {
+    let mut seq = Sequencer::default();
+    for op in ops {
+        match Window::of(op, set) {
+            Some(w) => {
+                seq.cycles += seq.window_clocks(cfg, &w);
+                seq.pending = w.transfer;
+            }
+            None => {
+                seq.cycles += 1;
+                if matches!(op, Op::ClipApply) {
+                    seq.pending = Some(crate::program::Transfer::clip_apply());
+                }
+            }
+        }
+    }
+    if seq.pending.is_some() {
+        seq.cycles += cfg.fmt.bits() as u64;
+    }
+    seq.cycles
+}
+
 /// The stack pointer after `op`, or why `op` cannot run: it would pop an empty stack, push
 /// past `depth`, or (`ClipApply`) overwrite a select code still waiting to be carried out.
 fn admit(

@@ -3,7 +3,7 @@
 //! negative depths, overflow, every stage, clipping expressions).
 
 use proptest::prelude::*;
-use rtl_model::array::check_program;
+use rtl_model::array::{check_program, program_cycles};
 use rtl_model::{Array, ArrayConfig, Coeffs, CycleArray, Equations, Op, WordArray, WordFormat};
 
 /// A small deterministic generator, so one proptest seed gives one whole program.
@@ -183,6 +183,7 @@ fn check(seed: u64) -> Result<(), TestCaseError> {
     wrd.finish();
     prop_assert_eq!(cyc.state(), wrd.state());
     prop_assert_eq!(cyc.cycles(), wrd.cycles());
+    prop_assert_eq!(program_cycles(&cfg, &eq.set(), &ops), wrd.cycles());
     Ok(())
 }
 
