@@ -3,6 +3,7 @@
 pub mod clip_expr;
 pub mod compile;
 pub mod display_list;
+pub mod evaluate;
 pub mod float;
 pub mod nrrd;
 pub mod output;

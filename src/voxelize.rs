@@ -285,37 +285,42 @@ pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges, String> {
     Ok(SlabRanges(out))
 }
 
-/// [`Route::Float`]: the same intervals from the exact plane values.
-pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
-    let one = (1u64 << slicer.fmt.frac) as f64;
-    let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
-    let mut out = Vec::with_capacity(w * h);
-    for y in 0..h {
-        for x in 0..w {
-            let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-            for p in &slicer.lists[prim].planes {
-                let v = p.z0 + x as f64 * p.dzx + y as f64 * p.dzy;
-                match (p.y, p.h) {
-                    (true, _) if v < 0.0 => (lo, hi) = (1.0, 0.0),
-                    (true, _) => {}
-                    (false, true) => lo = lo.max(v),
-                    (false, false) => hi = hi.min(v),
-                }
-            }
-            // Exact comparisons against slab planes that are whole raw units: scale, then
-            // round outward only where the value is not already a whole unit.
-            let raw = |v: f64, up: bool| -> i128 {
-                let r = v * one;
-                let r = if up { r.ceil() } else { r.floor() };
-                r.clamp(i128::MIN as f64 / 4.0, i128::MAX as f64 / 4.0) as i128
-            };
-            out.push(if lo > hi {
-                (1, 0)
-            } else {
-                slabs_of(slicer, raw(lo, true), raw(hi, false))
-            });
+/// The exact depth interval [lo, hi] of primitive `prim` along pixel (x, y)'s ray, in depth
+/// units (None when the ray misses it; lo or hi infinite when no plane bounds that side).
+pub fn float_interval(slicer: &Slicer, prim: usize, x: usize, y: usize) -> Option<(f64, f64)> {
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    for p in &slicer.lists[prim].planes {
+        let v = p.z0 + x as f64 * p.dzx + y as f64 * p.dzy;
+        match (p.y, p.h) {
+            (true, _) if v < 0.0 => return None,
+            (true, _) => {}
+            (false, true) => lo = lo.max(v),
+            (false, false) => hi = hi.min(v),
         }
     }
+    (lo <= hi).then_some((lo, hi))
+}
+
+/// [`Route::Float`]: the same slabs from the exact intervals.
+pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
+    let one = (1u64 << slicer.fmt.frac) as f64;
+    // Slab planes are whole raw units: z <= hi exactly when z <= floor(hi), z >= lo exactly
+    // when z >= ceil(lo).
+    let raw = |v: f64, up: bool| -> i128 {
+        let r = if up {
+            (v * one).ceil()
+        } else {
+            (v * one).floor()
+        };
+        r.clamp(-1e30, 1e30) as i128
+    };
+    let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
+    let out = (0..w * h)
+        .map(|i| match float_interval(slicer, prim, i % w, i / w) {
+            Some((lo, hi)) => slabs_of(slicer, raw(lo, true), raw(hi, false)),
+            None => (1, 0),
+        })
+        .collect();
     SlabRanges(out)
 }
 

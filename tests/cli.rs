@@ -414,3 +414,117 @@ fn an_empty_csg_scene_renders_background() {
     assert_eq!(code, Some(0), "{err}");
     assert!(written);
 }
+
+#[test]
+fn voxelize_writes_the_same_nrrd_for_any_thread_count() {
+    let d = tmp();
+    let mut outs = vec![];
+    for threads in ["1", "2", "5"] {
+        let out = d.path().join(format!("v{threads}.nrrd"));
+        let o = csgpix(&[
+            "voxelize",
+            "vectors/scenes/figure-5.2.csg",
+            "--res",
+            "24x20x16",
+            "--threads",
+            threads,
+            "--json",
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(v["dims"], serde_json::json!([24, 20, 16]));
+        assert!(v["filled"].as_u64().unwrap() > 0 && v["cycles"].as_u64().unwrap() > 0);
+        outs.push(std::fs::read(&out).unwrap());
+    }
+    assert!(outs.iter().all(|o| *o == outs[0]));
+    let (dims, voxels) = csgpix::nrrd::read(&outs[0]).unwrap();
+    assert_eq!(dims, [24, 20, 16]);
+    assert!(voxels.iter().any(|&v| v != 0) && voxels.contains(&0));
+    let head = String::from_utf8_lossy(&outs[0][..400]);
+    assert!(
+        head.contains("space origin: (") && head.contains("space directions: ("),
+        "{head}"
+    );
+}
+
+#[test]
+fn voxelize_routes_and_models_agree_and_slices_are_written() {
+    let d = tmp();
+    let mut volumes = vec![];
+    for (model, route) in [("word", "intervals"), ("word", "array"), ("cycle", "array")] {
+        let out = d.path().join(format!("{model}-{route}.nrrd"));
+        let slices = d.path().join(format!("{model}-{route}"));
+        let o = csgpix(&[
+            "voxelize",
+            "vectors/scenes/hollow-cube.csg",
+            "--res",
+            "10",
+            "--model",
+            model,
+            "--route",
+            route,
+            "--eval",
+            "stack",
+            "--slices",
+            s(&slices),
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        volumes.push(std::fs::read(&out).unwrap());
+        assert!(slices.join("slice-0009.png").exists());
+    }
+    assert!(volumes.iter().all(|v| *v == volumes[0]));
+}
+
+#[test]
+fn voxelize_refuses_bad_input_without_output() {
+    let d = tmp();
+    let out = d.path().join("v.nrrd");
+    let bad = d.path().join("bad.csg");
+    std::fs::write(&bad, "cube(size = [1, 1, 1]);\nhull() { sphere(1); }\n").unwrap();
+    for args in [
+        vec!["voxelize", s(&bad), "--res", "8", "-o", s(&out)],
+        vec![
+            "voxelize",
+            "vectors/scenes/hollow-cube.csg",
+            "--res",
+            "0",
+            "-o",
+            s(&out),
+        ],
+        vec![
+            "voxelize",
+            "vectors/scenes/hollow-cube.csg",
+            "--res",
+            "8",
+            "--bounds",
+            "1,1,1,0,2,2",
+            "-o",
+            s(&out),
+        ],
+        vec![
+            "voxelize",
+            "vectors/scenes/hollow-cube.csg",
+            "--res",
+            "4096",
+            "--max-memory",
+            "64",
+            "-o",
+            s(&out),
+        ],
+    ] {
+        let o = csgpix(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(!out.exists(), "{args:?}");
+        assert_eq!(
+            String::from_utf8_lossy(&o.stderr).lines().count(),
+            1,
+            "{args:?}"
+        );
+    }
+    let o = csgpix(&["voxelize", s(&bad), "--res", "8", "-o", s(&out)]);
+    assert!(String::from_utf8_lossy(&o.stderr).contains("bad.csg:2:1"));
+}

@@ -5,6 +5,7 @@ mod gen_vectors;
 mod render;
 mod scenes;
 mod verify_select;
+mod voxelize;
 
 use std::process::ExitCode;
 
@@ -34,6 +35,8 @@ pub enum Cmd {
     VerifySelect(verify_select::Args),
     /// Run display lists through the array and write the image.
     Render(render::Args),
+    /// Voxelize a CSG scene slice by slice through the array and write a NRRD volume.
+    Voxelize(voxelize::Args),
 }
 
 /// Which equation set SGENE uses.
@@ -60,5 +63,6 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::GenVectors(a) => gen_vectors::run(a),
         Cmd::VerifySelect(a) => verify_select::run(a),
         Cmd::Render(a) => render::run(a),
+        Cmd::Voxelize(a) => voxelize::run(a),
     }
 }

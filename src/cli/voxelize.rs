@@ -1,0 +1,349 @@
+//! `csgpix voxelize`: a CSG scene, slice by slice through the array (§4.4), evaluated per
+//! slice (§4.5 Blist, §4.2 tree, §3.4.1 stack), written as a NRRD volume.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use clap::ValueEnum;
+use csgpix::evaluate::{StackEval, TreeEval};
+use csgpix::output::write_atomic;
+use csgpix::palette::rgb;
+use csgpix::scad::parse_csg;
+use csgpix::slice::SliceEval;
+use csgpix::solid::CsgScene;
+use csgpix::voxelize::{memory_estimate, voxelize, Grid, Route, Slicer, Volume, Work};
+use glam::DVec3;
+use indicatif::{ProgressBar, ProgressStyle};
+use rtl_model::{Equations, WordFormat};
+use serde::Serialize;
+
+use super::array_args::parse_word;
+use super::EquationsArg;
+
+#[derive(clap::Args, Debug)]
+#[command(after_help = "Examples:\n  \
+    csgpix voxelize vectors/scenes/figure-5.2.csg --res 64 --preview fig52.png -o fig52.nrrd\n  \
+    csgpix voxelize vectors/scenes/csg-logo.csg --res 128 --eval tree --json -o logo.nrrd\n  \
+    csgpix voxelize vectors/scenes/hollow-cube.csg --res 32 --model cycle --slices slices/ -o hollow.nrrd\n  \
+    csgpix voxelize scene.csg --res 64x64x32 --bounds -10,-10,-10,10,10,10 -o part.nrrd")]
+pub struct Args {
+    /// OpenSCAD `.csg` scene.
+    scene: PathBuf,
+    /// Voxels along X, Y, Z: N for a cube, or NXxNYxNZ.
+    #[arg(long, value_parser = parse_res)]
+    res: [usize; 3],
+    /// Region to voxelize, X0,Y0,Z0,X1,Y1,Z1 in scene units (default: the scene's bounds).
+    #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
+    bounds: Option<(DVec3, DVec3)>,
+    /// Processor model: `cycle` simulates every P·Vz frame clock by clock; `word` uses the
+    /// array's plane words (see --route); `float` exact intervals, the reference.
+    #[arg(long, value_enum, default_value_t)]
+    model: ModelArg,
+    /// For `word`: `intervals` reduces the array's plane words to depth intervals (proven
+    /// voxel for voxel equal to the array); `array` runs every P·Vz frame on the word array.
+    #[arg(long, value_enum, default_value_t)]
+    route: RouteArg,
+    /// Evaluator of the CSG tree per slice.
+    #[arg(long, value_enum, default_value_t)]
+    eval: EvalArg,
+    /// Select equations (array routes).
+    #[arg(long, value_enum, default_value_t)]
+    equations: EquationsArg,
+    /// Depth word FRACTION/INTEGER/OVERFLOW bits.
+    #[arg(long, default_value = "10/10/11", value_parser = parse_word)]
+    word: WordFormat,
+    /// Output NRRD volume (uint8 colour codes, 0 empty).
+    #[arg(short = 'o', long)]
+    out: PathBuf,
+    /// Also write every slice as a PNG into this directory.
+    #[arg(long)]
+    slices: Option<PathBuf>,
+    /// Also write a PNG of the volume seen along Z, Y and X (first filled voxel, shaded by
+    /// depth), side by side.
+    #[arg(long)]
+    preview: Option<PathBuf>,
+    /// Worker threads (default: all cores). The output does not depend on it.
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Refuse runs needing more memory than this many MiB.
+    #[arg(long, default_value_t = 4096)]
+    max_memory: u64,
+    /// Print figures as JSON.
+    #[arg(long)]
+    json: bool,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
+enum ModelArg {
+    Cycle,
+    #[default]
+    Word,
+    Float,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
+enum RouteArg {
+    #[default]
+    Intervals,
+    Array,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
+enum EvalArg {
+    /// Blist (§4.3-4.5): one label register per voxel.
+    #[default]
+    Blist,
+    /// Recursive tree evaluation per voxel (§4.2).
+    Tree,
+    /// Slice-stack sweep, 64 voxels per word operation (§3.4.1).
+    Stack,
+}
+
+fn parse_res(s: &str) -> Result<[usize; 3], String> {
+    let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
+    let parts: Vec<&str> = s.split(['x', 'X']).collect();
+    let dims = match parts[..] {
+        [a] => [n(a)?; 3],
+        [a, b, c] => [n(a)?, n(b)?, n(c)?],
+        _ => return Err("expected N or NXxNYxNZ, e.g. 64 or 64x64x32".into()),
+    };
+    if dims.iter().any(|&d| d == 0 || d > 65536) {
+        return Err(format!("{s}: each side must be 1..=65536"));
+    }
+    Ok(dims)
+}
+
+fn parse_bounds(s: &str) -> Result<(DVec3, DVec3), String> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|x| x.trim().parse::<f64>().map_err(|e| format!("{x:?}: {e}")))
+        .collect::<Result<_, _>>()?;
+    let [x0, y0, z0, x1, y1, z1] = v[..] else {
+        return Err("expected X0,Y0,Z0,X1,Y1,Z1".into());
+    };
+    Ok((DVec3::new(x0, y0, z0), DVec3::new(x1, y1, z1)))
+}
+
+#[derive(Serialize)]
+struct Report {
+    dims: [usize; 3],
+    model: &'static str,
+    route: &'static str,
+    eval: &'static str,
+    solids: usize,
+    /// Bits of the Blist label register, or of the stack per voxel (peak depth).
+    state_bits_per_voxel: usize,
+    #[serde(flatten)]
+    work: Work,
+    /// Hardware time at the thesis's 10 MHz clock.
+    hardware_seconds: f64,
+    wall_seconds: f64,
+}
+
+pub fn run(a: Args) -> Result<ExitCode, String> {
+    let text =
+        std::fs::read_to_string(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+    let scene = parse_csg(&text, &a.scene.display().to_string()).map_err(|e| e.to_string())?;
+    let grid = match a.bounds {
+        Some((lo, hi)) => Grid::new(a.res, lo, hi),
+        None => Grid::of_scene(&scene, a.res),
+    }
+    .map_err(|e| format!("{}:1:1: {e}", a.scene.display()))?;
+    let threads = a.threads.unwrap_or_else(rayon::current_num_threads).max(1);
+    let need = memory_estimate(&grid, scene.solids.len(), threads);
+    if need > a.max_memory << 20 {
+        return Err(format!(
+            "this run needs about {} MiB, over --max-memory {}: lower --res or raise the limit",
+            need >> 20,
+            a.max_memory
+        ));
+    }
+    let slicer =
+        Slicer::new(&scene, grid, a.word).map_err(|e| format!("{}:1:1: {e}", a.scene.display()))?;
+    let eval = evaluator(a.eval, &scene);
+    let route = match (a.model, a.route) {
+        (ModelArg::Cycle, _) => Route::Array { cycle: true },
+        (ModelArg::Word, RouteArg::Array) => Route::Array { cycle: false },
+        (ModelArg::Word, RouteArg::Intervals) => Route::Intervals,
+        (ModelArg::Float, _) => Route::Float,
+    };
+    let set = Equations::from(a.equations).set();
+    let t0 = Instant::now();
+    let bar = progress(grid.dims[2], route, grid.slice_len() * scene.solids.len());
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| e.to_string())?;
+    let (volume, work) =
+        pool.install(|| voxelize(&slicer, route, set, eval.as_ref(), &|| bar.inc(1)))?;
+    bar.finish_and_clear();
+    let wall = t0.elapsed().as_secs_f64();
+    if let Some(dir) = &a.slices {
+        write_slices(dir, &volume)?;
+    }
+    if let Some(path) = &a.preview {
+        write_preview(path, &volume)?;
+    }
+    let comment = format!("csgpix voxelize {}", a.scene.display());
+    csgpix::nrrd::write(&a.out, &grid, &volume.voxels, &comment)?;
+    report(&a, &scene, &slicer, eval.as_ref(), work, wall)
+}
+
+fn evaluator(e: EvalArg, scene: &CsgScene) -> Box<dyn SliceEval> {
+    match e {
+        EvalArg::Tree => Box::new(TreeEval::new(&scene.root)),
+        EvalArg::Stack | EvalArg::Blist => Box::new(StackEval::new(&scene.root)),
+    }
+}
+
+fn progress(slices: usize, route: Route, per_slice: usize) -> ProgressBar {
+    let heavy = matches!(route, Route::Array { .. }) || slices * per_slice > 50_000_000;
+    let bar = if heavy {
+        ProgressBar::new(slices as u64)
+    } else {
+        ProgressBar::hidden()
+    };
+    if let Ok(style) =
+        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} slices")
+    {
+        bar.set_style(style);
+    }
+    bar
+}
+
+fn report(
+    a: &Args,
+    scene: &CsgScene,
+    slicer: &Slicer,
+    eval: &dyn SliceEval,
+    work: Work,
+    wall: f64,
+) -> Result<ExitCode, String> {
+    let pixels = slicer.grid.slice_len();
+    let r = Report {
+        dims: slicer.grid.dims,
+        model: match a.model {
+            ModelArg::Cycle => "cycle",
+            ModelArg::Word => "word",
+            ModelArg::Float => "float",
+        },
+        route: match (a.model, a.route) {
+            (ModelArg::Cycle, _) | (ModelArg::Word, RouteArg::Array) => "array",
+            (ModelArg::Word, RouteArg::Intervals) => "intervals",
+            (ModelArg::Float, _) => "float",
+        },
+        eval: match a.eval {
+            EvalArg::Blist => "blist",
+            EvalArg::Tree => "tree",
+            EvalArg::Stack => "stack",
+        },
+        solids: scene.solids.len(),
+        state_bits_per_voxel: eval.state_bytes(pixels) * 8 / pixels.max(1),
+        work,
+        hardware_seconds: work.cycles as f64 * 1e-7,
+        wall_seconds: wall,
+    };
+    if a.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&r).map_err(|e| e.to_string())?
+        );
+    } else {
+        println!(
+            "{}: {}x{}x{} voxels, {} filled; {} frames, {} clocks ({:.3} s at 10 MHz); {:.3} s wall",
+            a.out.display(),
+            r.dims[0],
+            r.dims[1],
+            r.dims[2],
+            r.work.filled,
+            work.frames,
+            work.cycles,
+            r.hardware_seconds,
+            wall
+        );
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// One view of the volume along an axis: per pixel the first filled voxel's colour code and
+/// its depth along the axis. `axis` 2 looks along +Z (X right, Y down), 1 along +Y (X right,
+/// Z down), 0 along +X (Y right, Z down).
+fn view(v: &Volume, axis: usize) -> (usize, usize, Vec<u32>, Vec<Option<f64>>) {
+    let [nx, ny, nz] = v.dims;
+    let at = |i: usize, j: usize, k: usize| v.voxels[(k * ny + j) * nx + i];
+    let (w, h, depth) = match axis {
+        2 => (nx, ny, nz),
+        1 => (nx, nz, ny),
+        _ => (ny, nz, nx),
+    };
+    let (mut codes, mut depths) = (vec![0u32; w * h], vec![None; w * h]);
+    for r in 0..h {
+        for c in 0..w {
+            let hit = (0..depth).find_map(|d| {
+                let code = match axis {
+                    2 => at(c, r, d),
+                    1 => at(c, d, r),
+                    _ => at(d, c, r),
+                };
+                (code != 0).then_some((code, d))
+            });
+            if let Some((code, d)) = hit {
+                codes[r * w + c] = code as u32;
+                depths[r * w + c] = Some(d as f64);
+            }
+        }
+    }
+    (w, h, codes, depths)
+}
+
+/// The three axis views side by side, 4 pixels apart, scaled up by a whole factor towards 256
+/// pixels.
+fn write_preview(path: &Path, v: &Volume) -> Result<(), String> {
+    let views: Vec<_> = (0..3).rev().map(|a| view(v, a)).collect();
+    let scale = (256 / v.dims.iter().copied().max().unwrap_or(1)).max(1);
+    let width: usize = views.iter().map(|x| x.0 * scale + 4).sum();
+    let height = views.iter().map(|x| x.1 * scale).max().unwrap_or(1);
+    let mut img =
+        image::RgbImage::from_pixel(width as u32, height as u32, image::Rgb([255, 255, 255]));
+    let mut left = 0;
+    for (w, h, codes, depths) in &views {
+        let rgb = csgpix::palette::image_rgb(codes, Some(depths));
+        for (i, c) in rgb.iter().enumerate() {
+            for dy in 0..scale {
+                for dx in 0..scale {
+                    let (x, y) = (left + (i % w) * scale + dx, (i / w) * scale + dy);
+                    img.put_pixel(x as u32, y as u32, image::Rgb(*c));
+                }
+            }
+        }
+        left += w * scale + 4;
+        let _ = h;
+    }
+    write_atomic(path, |w| {
+        let mut buf = std::io::Cursor::new(Vec::new());
+        img.write_to(&mut buf, image::ImageFormat::Png)
+            .map_err(std::io::Error::other)?;
+        w.write_all(buf.get_ref())
+    })
+}
+
+/// Every slice as `slice-KKKK.png` (palette colours), each written whole or not at all.
+fn write_slices(dir: &Path, v: &Volume) -> Result<(), String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let [nx, ny, nz] = v.dims;
+    for k in 0..nz {
+        let mut img = image::RgbImage::new(nx as u32, ny as u32);
+        for (i, &c) in v.voxels[k * nx * ny..(k + 1) * nx * ny].iter().enumerate() {
+            img.put_pixel((i % nx) as u32, (i / nx) as u32, image::Rgb(rgb(c as u32)));
+        }
+        let path = dir.join(format!("slice-{k:04}.png"));
+        write_atomic(&path, |w| {
+            let mut buf = std::io::Cursor::new(Vec::new());
+            img.write_to(&mut buf, image::ImageFormat::Png)
+                .map_err(std::io::Error::other)?;
+            w.write_all(buf.get_ref())
+        })?;
+    }
+    Ok(())
+}
