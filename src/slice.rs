@@ -67,6 +67,11 @@ impl Mask {
         }
     }
 
+    /// Flip pixel i.
+    pub fn toggle(&mut self, i: usize) {
+        self.words[i / 64] ^= 1u64 << (i % 64);
+    }
+
     /// Pixels set.
     pub fn count_ones(&self) -> usize {
         self.words.iter().map(|w| w.count_ones() as usize).sum()

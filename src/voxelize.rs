@@ -222,6 +222,24 @@ pub fn array_mask(
 pub struct SlabRanges(pub Vec<(u32, u32)>);
 
 impl SlabRanges {
+    /// Per slab k, the pixels whose membership differs between slab k − 1 and slab k: those
+    /// whose range starts at k or ended at k − 1 (slab 0: none).
+    pub fn toggles(&self, slabs: usize) -> Vec<Vec<u32>> {
+        let mut t = vec![vec![]; slabs];
+        for (i, &(a, b)) in self.0.iter().enumerate() {
+            if a > b {
+                continue;
+            }
+            if a > 0 {
+                t[a as usize].push(i as u32);
+            }
+            if (b as usize) + 1 < slabs {
+                t[b as usize + 1].push(i as u32);
+            }
+        }
+        t
+    }
+
     /// The mask of slab k.
     pub fn mask(&self, k: usize) -> Mask {
         let k = k as u32;
@@ -357,18 +375,57 @@ pub struct Work {
 
 /// Per-slice masks of every primitive, by route.
 enum Source {
-    Ranges(Vec<SlabRanges>),
-    Array { cycle: bool, set: EquationSet },
+    /// Slab ranges of every primitive and, per slab, the pixels whose membership flips there.
+    Ranges(Vec<(SlabRanges, Vec<Vec<u32>>)>),
+    Array {
+        cycle: bool,
+        set: EquationSet,
+    },
 }
 
 impl Source {
-    fn masks(&self, slicer: &Slicer, k: usize) -> Result<Vec<Mask>, String> {
-        match self {
-            Source::Ranges(r) => Ok(r.iter().map(|r| r.mask(k)).collect()),
-            Source::Array { cycle, set } => (0..slicer.lists.len())
-                .map(|p| array_mask(slicer, p, k, *cycle, set.clone()).map(|m| m.0))
+    fn ranges(r: Vec<SlabRanges>, slabs: usize) -> Source {
+        Source::Ranges(
+            r.into_iter()
+                .map(|r| {
+                    let t = r.toggles(slabs);
+                    (r, t)
+                })
                 .collect(),
+        )
+    }
+
+    /// The masks of slabs `a..b`, each handed to `f` in order. From ranges, slab a is built
+    /// pixel by pixel and every later one by flipping the pixels whose membership changes.
+    fn sweep(
+        &self,
+        slicer: &Slicer,
+        a: usize,
+        b: usize,
+        f: &mut dyn FnMut(usize, &[Mask]),
+    ) -> Result<(), String> {
+        match self {
+            Source::Ranges(r) => {
+                let mut masks: Vec<Mask> = r.iter().map(|(r, _)| r.mask(a)).collect();
+                for k in a..b {
+                    if k > a {
+                        for ((_, toggles), m) in r.iter().zip(&mut masks) {
+                            toggles[k].iter().for_each(|&i| m.toggle(i as usize));
+                        }
+                    }
+                    f(k, &masks);
+                }
+            }
+            Source::Array { cycle, set } => {
+                for k in a..b {
+                    let masks = (0..slicer.lists.len())
+                        .map(|p| array_mask(slicer, p, k, *cycle, set.clone()).map(|m| m.0))
+                        .collect::<Result<Vec<_>, _>>()?;
+                    f(k, &masks);
+                }
+            }
         }
+        Ok(())
     }
 }
 
@@ -389,17 +446,19 @@ pub fn voxelize(
             cycle,
             set: set.clone(),
         },
-        Route::Intervals => Source::Ranges(
+        Route::Intervals => Source::ranges(
             (0..prims)
                 .into_par_iter()
                 .map(|p| word_ranges(slicer, p))
                 .collect::<Result<_, _>>()?,
+            slicer.grid.dims[2],
         ),
-        Route::Float => Source::Ranges(
+        Route::Float => Source::ranges(
             (0..prims)
                 .into_par_iter()
                 .map(|p| float_ranges(slicer, p))
                 .collect(),
+            slicer.grid.dims[2],
         ),
     };
     let cfg = slicer.config();
@@ -409,26 +468,34 @@ pub fn voxelize(
         cycles +=
             rtl_model::array::program_cycles(&cfg, &set, &slice_ops(slicer, p, 0)?) * nz as u64;
     }
-    let slices: Vec<(Vec<u8>, OpCounts)> = (0..nz)
+    // Chunks of consecutive slabs, a few per thread, so masks can be swept forward.
+    let chunk = (nz / (4 * rayon::current_num_threads())).max(1);
+    let chunks: Vec<Vec<(Vec<u8>, OpCounts)>> = (0..nz.div_ceil(chunk))
         .into_par_iter()
-        .map(|k| {
-            let masks = source.masks(slicer, k)?;
-            let mut counts = OpCounts::default();
-            let labels = eval.eval(&masks, &mut counts);
-            let colours = labels
-                .iter()
-                .map(|&l| {
-                    if l == 0 {
-                        0
-                    } else {
-                        slicer.colours[l as usize - 1]
-                    }
-                })
-                .collect();
-            tick();
-            Ok((colours, counts))
+        .map(|c| {
+            let mut out = vec![];
+            source.sweep(
+                slicer,
+                c * chunk,
+                ((c + 1) * chunk).min(nz),
+                &mut |_, masks| {
+                    let mut counts = OpCounts::default();
+                    let labels = eval.eval(masks, &mut counts);
+                    let colours = labels
+                        .iter()
+                        .map(|&l| match l {
+                            0 => 0,
+                            l => slicer.colours[l as usize - 1],
+                        })
+                        .collect();
+                    tick();
+                    out.push((colours, counts));
+                },
+            )?;
+            Ok(out)
         })
         .collect::<Result<_, String>>()?;
+    let slices = chunks.into_iter().flatten();
     let mut work = Work {
         cycles,
         frames: (prims * nz) as u64,
