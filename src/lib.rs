@@ -1,7 +1,9 @@
 //! csgpix: scenes, formats and studies around the pixel-processor array of `rtl-model`.
 
+pub mod blist;
 pub mod clip_expr;
 pub mod compile;
+pub mod csg_expr;
 pub mod display_list;
 pub mod evaluate;
 pub mod float;

@@ -1,6 +1,7 @@
 //! Subcommands. Each returns its exit code, or an error message (exit status 2).
 
 mod array_args;
+mod blist;
 mod gen_vectors;
 mod render;
 mod scenes;
@@ -37,6 +38,8 @@ pub enum Cmd {
     Render(render::Args),
     /// Voxelize a CSG scene slice by slice through the array and write a NRRD volume.
     Voxelize(voxelize::Args),
+    /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
+    Blist(blist::Args),
 }
 
 /// Which equation set SGENE uses.
@@ -64,5 +67,6 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::VerifySelect(a) => verify_select::run(a),
         Cmd::Render(a) => render::run(a),
         Cmd::Voxelize(a) => voxelize::run(a),
+        Cmd::Blist(a) => blist::run(a),
     }
 }
