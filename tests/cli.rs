@@ -479,6 +479,48 @@ fn voxelize_routes_and_models_agree_and_slices_are_written() {
     assert!(volumes.iter().all(|v| *v == volumes[0]));
 }
 
+/// `--eval blist` is the Blist of `csgpix blist`: its label width is reported, its counts are
+/// §4.5's (one comparison and one label write per classifying row, no stack), and it fills the
+/// voxels the stack fills.
+#[test]
+fn voxelize_eval_blist_reports_the_label_register() {
+    let d = tmp();
+    let mut filled = vec![];
+    for eval in ["blist", "stack"] {
+        let out = d.path().join(format!("{eval}.nrrd"));
+        let o = csgpix(&[
+            "voxelize",
+            "vectors/scenes/figure-5.2.csg",
+            "--res",
+            "20",
+            "--eval",
+            eval,
+            "--json",
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(v["eval"], eval);
+        // (Cube1 + Cube2) - (Cylinder1 + Cylinder2): two names besides 0, so two bits.
+        assert_eq!(v["label_bits"], 2, "{v}");
+        if eval == "blist" {
+            assert_eq!(v["state_bits_per_voxel"], 2);
+            assert_eq!(v["ops"]["comparisons"], v["ops"]["label_writes"]);
+            assert_eq!(
+                (v["ops"]["pushes"].as_u64(), v["ops"]["pops"].as_u64()),
+                (Some(0), Some(0))
+            );
+            let c = v["ops"]["comparisons"].as_u64().unwrap();
+            // At least one row per voxel, at most one per row (4 rows).
+            assert!((8000..=4 * 8000).contains(&c), "{c}");
+        }
+        let (_, voxels) = csgpix::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
+        filled.push(voxels.iter().map(|&c| c != 0).collect::<Vec<_>>());
+    }
+    assert_eq!(filled[0], filled[1]);
+}
+
 #[test]
 fn voxelize_refuses_bad_input_without_output() {
     let d = tmp();

@@ -1,7 +1,8 @@
-//! The baseline evaluators (§4.2 tree per voxel, §3.4.1 slice stack) against each other, against
-//! the reference `direct`, on trees as deep as files can make, and against the operation
-//! counts of §5.5.
+//! The three evaluators (§4.5 Blist, §4.2 tree per voxel, §3.4.1 slice stack) against each
+//! other, against the reference `direct`, on trees as deep as files can make, and against the
+//! operation counts of §5.5.
 
+use csgpix::blist::BlistEval;
 use csgpix::evaluate::{direct, leaf_count, tree_depth, Compile, StackEval, StackUnit, TreeEval};
 use csgpix::slice::{Labels, Mask, OpCounts, SliceEval};
 use csgpix::solid::CsgNode;
@@ -93,6 +94,10 @@ fn check_all(tree: &CsgNode, prims: &[Mask]) {
     let mut c = OpCounts::default();
     assert_eq!(TreeEval::new(tree).inside(prims, &mut c), expect);
     assert_eq!(StackEval::new(tree).inside(prims, &mut c), expect);
+    // The Blist colours by §4.5, not by the baselines' rule: membership must be the same.
+    let blist = BlistEval::new(tree).eval(prims, &mut c);
+    let inside = Mask::from_fn(n, |px| blist[px] != 0);
+    assert_eq!(inside, expect, "blist membership");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -117,8 +122,8 @@ fn tree() -> impl Strategy<Value = CsgNode> {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(400))]
 
-    /// TreeEval and StackEval give the same labels, membership is `direct`'s, colours follow
-    /// the rule; slice sizes include ones that are not a multiple of 64.
+    /// TreeEval and StackEval give the same labels, membership is `direct`'s (and the Blist's),
+    /// colours follow the rule; slice sizes include ones that are not a multiple of 64.
     #[test]
     fn evaluators_agree(t in tree(), len in 1usize..300, seed in any::<u64>()) {
         let prims = masks(64, len, seed);

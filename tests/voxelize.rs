@@ -2,9 +2,11 @@
 //! threads, `word` differs from `float` only where the rounding bound allows, hidden cavities
 //! survive (§5.9).
 
-use csgpix::evaluate::{direct, TreeEval};
+use csgpix::blist::BlistEval;
+use csgpix::evaluate::{direct, StackEval, TreeEval};
 use csgpix::float::rounding_bound;
 use csgpix::scad::parse_csg;
+use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
 use csgpix::voxelize::{
     float_interval, float_ranges, voxelize, word_ranges, Grid, Route, Slicer, Volume,
@@ -17,13 +19,16 @@ fn scene(name: &str) -> CsgScene {
 }
 
 fn run(s: &CsgScene, n: usize, route: Route, threads: usize) -> Volume {
+    run_with(s, n, route, threads, &TreeEval::new(&s.root))
+}
+
+fn run_with(s: &CsgScene, n: usize, route: Route, threads: usize, eval: &dyn SliceEval) -> Volume {
     let slicer = Slicer::new(s, Grid::of_scene(s, [n, n, n]).unwrap(), WordFormat::THESIS).unwrap();
-    let eval = TreeEval::new(&s.root);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
         .unwrap();
-    pool.install(|| voxelize(&slicer, route, Equations::Derived.set(), &eval, &|| {}))
+    pool.install(|| voxelize(&slicer, route, Equations::Derived.set(), eval, &|| {}))
         .unwrap()
         .0
 }
@@ -38,6 +43,37 @@ fn every_route_gives_the_processors_voxels_on_every_example() {
         assert_eq!(fast, word, "{name}: intervals and word array differ");
         assert_eq!(word, cycle, "{name}: word and cycle arrays differ");
         assert!(fast.voxels.iter().any(|&v| v != 0), "{name}: empty");
+    }
+}
+
+const EXAMPLES: [&str; 5] = [
+    "figure-5.2",
+    "hollow-cube",
+    "cube-minus-cylinder",
+    "twelve",
+    "csg-logo",
+];
+
+/// `--eval blist|tree|stack` fill the same voxels on every example scene (the cycle model's
+/// slices at 16³, the fast route's at 48³); tree and stack also colour them alike, the Blist
+/// by §4.5 (docs/blist.md), so only membership is compared with it.
+#[test]
+fn the_three_evaluators_fill_the_same_voxels_on_every_example() {
+    for name in EXAMPLES {
+        let s = scene(name);
+        for (n, route) in [(16, Route::Array { cycle: true }), (48, Route::Intervals)] {
+            let tree = run_with(&s, n, route, 2, &TreeEval::new(&s.root));
+            let stack = run_with(&s, n, route, 2, &StackEval::new(&s.root));
+            let blist = run_with(&s, n, route, 2, &BlistEval::new(&s.root));
+            assert_eq!(tree, stack, "{name} {n}³: tree and stack differ");
+            let filled = |v: &Volume| v.voxels.iter().map(|&c| c != 0).collect::<Vec<_>>();
+            assert_eq!(
+                filled(&blist),
+                filled(&tree),
+                "{name} {n}³: blist and tree differ"
+            );
+            assert!(filled(&tree).contains(&true), "{name} {n}³: empty");
+        }
     }
 }
 

@@ -6,6 +6,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::ValueEnum;
+use csgpix::blist::{BlistEval, BlistTable};
 use csgpix::evaluate::{StackEval, TreeEval};
 use csgpix::output::write_atomic;
 use csgpix::palette::rgb;
@@ -132,7 +133,11 @@ struct Report {
     route: &'static str,
     eval: &'static str,
     solids: usize,
-    /// Bits of the Blist label register, or of the stack per voxel (peak depth).
+    /// Width of the Blist label register (§4.3.3), whichever evaluator ran.
+    label_bits: u32,
+    /// Rows of the Blist table (one per primitive occurrence).
+    blist_rows: usize,
+    /// Bits of per-voxel intermediate state the chosen evaluator keeps.
     state_bits_per_voxel: usize,
     #[serde(flatten)]
     work: Work,
@@ -193,7 +198,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
 fn evaluator(e: EvalArg, scene: &CsgScene) -> Box<dyn SliceEval> {
     match e {
         EvalArg::Tree => Box::new(TreeEval::new(&scene.root)),
-        EvalArg::Stack | EvalArg::Blist => Box::new(StackEval::new(&scene.root)),
+        EvalArg::Stack => Box::new(StackEval::new(&scene.root)),
+        EvalArg::Blist => Box::new(BlistEval::new(&scene.root)),
     }
 }
 
@@ -221,6 +227,7 @@ fn report(
     wall: f64,
 ) -> Result<ExitCode, String> {
     let pixels = slicer.grid.slice_len();
+    let table = BlistTable::compile(&scene.root);
     let r = Report {
         dims: slicer.grid.dims,
         model: match a.model {
@@ -239,6 +246,8 @@ fn report(
             EvalArg::Stack => "stack",
         },
         solids: scene.solids.len(),
+        label_bits: table.label_bits,
+        blist_rows: table.rows.len(),
         state_bits_per_voxel: eval.state_bytes(pixels) * 8 / pixels.max(1),
         work,
         hardware_seconds: work.cycles as f64 * 1e-7,
