@@ -10,6 +10,7 @@ pub mod float;
 pub mod nrrd;
 pub mod output;
 pub mod palette;
+pub mod plot;
 pub mod polygon;
 pub mod project;
 pub mod scad;

@@ -1,0 +1,200 @@
+//! Line charts as PNG, for the figures the thesis draws as curves (Figure 2.12, Figure 5.11)
+//! and for the accuracy/cost sweeps.
+//!
+//! Text is drawn with the bundled DejaVu Sans (`assets/fonts`, its licence beside it), so a
+//! chart looks the same on every machine and needs no system fonts.
+
+use plotters::prelude::*;
+use std::path::Path;
+use std::sync::Once;
+
+/// One curve: its legend and its points, drawn joined in the order given.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+}
+
+/// A chart of curves over shared axes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chart {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    /// Logarithmic axes (every value on a log axis must be > 0).
+    pub log_x: bool,
+    pub log_y: bool,
+    pub series: Vec<Series>,
+}
+
+static FONT: Once = Once::new();
+
+fn register_font() {
+    FONT.call_once(|| {
+        let bytes: &'static [u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+        // The bundled font is a valid TrueType file; if it ever were not, text would be
+        // missing from the chart, which the chart tests would see as a failed draw.
+        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, bytes);
+    });
+}
+
+impl Chart {
+    /// The range of the data along x and y, padded so that no point sits on the frame.
+    fn ranges(&self) -> Result<((f64, f64), (f64, f64)), String> {
+        let pts = || self.series.iter().flat_map(|s| s.points.iter().copied());
+        if pts().any(|(x, y)| !x.is_finite() || !y.is_finite()) {
+            return Err(format!("{}: a point is not finite", self.title));
+        }
+        if (self.log_x && pts().any(|(x, _)| x <= 0.0))
+            || (self.log_y && pts().any(|(_, y)| y <= 0.0))
+        {
+            return Err(format!(
+                "{}: a value on a log axis is not positive",
+                self.title
+            ));
+        }
+        let span = |v: Vec<f64>, log: bool| -> (f64, f64) {
+            let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            if !lo.is_finite() {
+                return if log { (1.0, 10.0) } else { (0.0, 1.0) };
+            }
+            if log {
+                (lo / 1.5, hi * 1.5)
+            } else {
+                let pad = ((hi - lo) * 0.05).max(hi.abs() * 0.05).max(1e-12);
+                (lo - pad, hi + pad)
+            }
+        };
+        Ok((
+            span(pts().map(|p| p.0).collect(), self.log_x),
+            span(pts().map(|p| p.1).collect(), self.log_y),
+        ))
+    }
+
+    /// Draw the chart into a PNG of `width` × `height` pixels at `path`.
+    pub fn write_png(&self, path: &Path, width: u32, height: u32) -> Result<(), String> {
+        register_font();
+        let ranges = self.ranges()?;
+        let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
+        let root = BitMapBackend::new(path, (width, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        match (self.log_x, self.log_y) {
+            (false, false) => self.draw(&root, ranges.0 .0..ranges.0 .1, ranges.1 .0..ranges.1 .1),
+            (true, false) => self.draw(
+                &root,
+                (ranges.0 .0..ranges.0 .1).log_scale(),
+                ranges.1 .0..ranges.1 .1,
+            ),
+            (false, true) => self.draw(
+                &root,
+                ranges.0 .0..ranges.0 .1,
+                (ranges.1 .0..ranges.1 .1).log_scale(),
+            ),
+            (true, true) => self.draw(
+                &root,
+                (ranges.0 .0..ranges.0 .1).log_scale(),
+                (ranges.1 .0..ranges.1 .1).log_scale(),
+            ),
+        }
+        .map_err(|e| err(&e))?;
+        root.present().map_err(|e| err(&e))
+    }
+
+    fn draw<X, Y>(
+        &self,
+        root: &DrawingArea<BitMapBackend, plotters::coord::Shift>,
+        x: X,
+        y: Y,
+    ) -> Result<(), Box<dyn std::error::Error + '_>>
+    where
+        X: plotters::coord::ranged1d::AsRangedCoord<Value = f64>,
+        Y: plotters::coord::ranged1d::AsRangedCoord<Value = f64>,
+        X::CoordDescType: plotters::coord::ranged1d::ValueFormatter<f64>,
+        Y::CoordDescType: plotters::coord::ranged1d::ValueFormatter<f64>,
+    {
+        let mut chart = ChartBuilder::on(root)
+            .caption(&self.title, ("sans-serif", 20))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x, y)?;
+        chart
+            .configure_mesh()
+            .x_desc(&self.x_label)
+            .y_desc(&self.y_label)
+            .label_style(("sans-serif", 13))
+            .draw()?;
+        for (i, s) in self.series.iter().enumerate() {
+            let colour = Palette99::pick(i).to_rgba();
+            chart
+                .draw_series(LineSeries::new(
+                    s.points.iter().copied(),
+                    colour.stroke_width(2),
+                ))?
+                .label(&s.label)
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2))
+                });
+            chart.draw_series(s.points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 13))
+            .draw()?;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn chart(log: bool, points: Vec<(f64, f64)>) -> Chart {
+        Chart {
+            title: "t".into(),
+            x_label: "x".into(),
+            y_label: "y".into(),
+            log_x: log,
+            log_y: log,
+            series: vec![Series {
+                label: "a".into(),
+                points,
+            }],
+        }
+    }
+
+    #[test]
+    fn draws_a_png_with_ink_on_it() {
+        let dir = tempfile::tempdir().unwrap();
+        for log in [false, true] {
+            let path = dir.path().join(format!("c{log}.png"));
+            chart(log, vec![(1.0, 2.0), (10.0, 40.0), (100.0, 3.0)])
+                .write_png(&path, 320, 240)
+                .unwrap();
+            let img = image::open(&path).unwrap().to_rgb8();
+            assert_eq!(img.dimensions(), (320, 240));
+            // Not blank: text and curve leave dark pixels.
+            let dark = img
+                .pixels()
+                .filter(|p| p.0.iter().all(|&c| c < 100))
+                .count();
+            assert!(dark > 200, "{dark} dark pixels");
+        }
+    }
+
+    #[test]
+    fn refuses_bad_values_without_writing() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("c.png");
+        assert!(chart(true, vec![(0.0, 1.0)])
+            .write_png(&path, 100, 100)
+            .is_err());
+        assert!(chart(false, vec![(f64::NAN, 1.0)])
+            .write_png(&path, 100, 100)
+            .is_err());
+        assert!(!path.exists());
+    }
+}
