@@ -27,6 +27,9 @@ pub struct Chart {
     pub series: Vec<Series>,
 }
 
+/// An axis range, low to high.
+type Span = (f64, f64);
+
 static FONT: Once = Once::new();
 
 fn register_font() {
@@ -40,7 +43,7 @@ fn register_font() {
 
 impl Chart {
     /// The range of the data along x and y, padded so that no point sits on the frame.
-    fn ranges(&self) -> Result<((f64, f64), (f64, f64)), String> {
+    fn ranges(&self) -> Result<(Span, Span), String> {
         let pts = || self.series.iter().flat_map(|s| s.points.iter().copied());
         if pts().any(|(x, y)| !x.is_finite() || !y.is_finite()) {
             return Err(format!("{}: a point is not finite", self.title));
@@ -53,7 +56,7 @@ impl Chart {
                 self.title
             ));
         }
-        let span = |v: Vec<f64>, log: bool| -> (f64, f64) {
+        let span = |v: Vec<f64>, log: bool| -> Span {
             let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
             let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
             if !lo.is_finite() {
