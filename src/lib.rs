@@ -13,6 +13,7 @@ pub mod palette;
 pub mod plot;
 pub mod polygon;
 pub mod project;
+pub mod requirements;
 pub mod scad;
 pub mod slice;
 pub mod solid;

@@ -32,6 +32,7 @@ use crate::clip_expr::Clip;
 use crate::compile::clip_scene_ops;
 use crate::display_list::{DisplayList, DlPlane};
 use crate::project::{display_lists, max_slope, silhouette_planes, Frame, DEPTH_MARGIN};
+use crate::requirements::{Footprint, PixelBox};
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::solid::CsgScene;
 
@@ -103,6 +104,10 @@ pub enum Route {
     Float,
 }
 
+/// Panel size the array route prunes to by default. Any size gives the same voxels; smaller
+/// panels simulate fewer pixels around small primitives (docs/requirements.md).
+pub const DEFAULT_PANEL: [usize; 2] = [32, 32];
+
 /// A scene set up for slicing: its display lists in the grid's frame and the slabs.
 pub struct Slicer {
     pub grid: Grid,
@@ -113,6 +118,10 @@ pub struct Slicer {
     pub slab_raw: i64,
     /// Colour code of each solid (its display list's colour).
     pub colours: Vec<u8>,
+    /// Panels of this many pixels: the array route simulates, for each primitive, only the
+    /// panels and slabs its footprint touches ([`crate::requirements`]). None simulates the
+    /// whole array for every frame. Either way the voxels are the same (tested).
+    pub panel: Option<[usize; 2]>,
 }
 
 impl Slicer {
@@ -148,6 +157,7 @@ impl Slicer {
             lists,
             slab_raw,
             colours,
+            panel: Some(DEFAULT_PANEL),
         })
     }
 
@@ -196,7 +206,8 @@ impl Slicer {
     }
 }
 
-/// What the processor shows for P·Vz, as a mask (pixels with a colour), and the clocks taken.
+/// What the processor shows for P·Vz, as a mask (pixels with a colour), and the clocks taken,
+/// simulating the whole array.
 pub fn array_mask(
     slicer: &Slicer,
     prim: usize,
@@ -204,8 +215,40 @@ pub fn array_mask(
     cycle: bool,
     set: EquationSet,
 ) -> Result<(Mask, u64), String> {
-    let ops = slice_ops(slicer, prim, k)?;
-    let cfg = slicer.config();
+    let [w, h] = [slicer.grid.dims[0], slicer.grid.dims[1]];
+    let all = PixelBox {
+        x0: 0,
+        y0: 0,
+        x1: w,
+        y1: h,
+    };
+    array_mask_in(slicer, prim, k, cycle, set, all)
+}
+
+/// [`array_mask`] simulating only the pixels of `bx`, as an array of that size whose DEPGEN
+/// starts at the box's corner: every plane's Z0 becomes Z0 + x0·dZx + y0·dZy, modulo 2^N_D as
+/// DEPGEN's sums are, so every simulated pixel receives the very word the whole array would
+/// give it (pixels share nothing else). Pixels outside the box are left empty: the caller
+/// knows from the footprint that P·Vz shows nothing there. The clocks are those of the
+/// smaller array (its DEPGEN tree is shorter).
+pub fn array_mask_in(
+    slicer: &Slicer,
+    prim: usize,
+    k: usize,
+    cycle: bool,
+    set: EquationSet,
+    bx: PixelBox,
+) -> Result<(Mask, u64), String> {
+    let fmt = slicer.fmt;
+    let ops: Vec<rtl_model::Op> = slice_ops(slicer, prim, k)?
+        .into_iter()
+        .map(|op| shift_origin(op, &fmt, bx.x0 as i64, bx.y0 as i64))
+        .collect();
+    let cfg = ArrayConfig {
+        width: bx.width(),
+        height: bx.height(),
+        ..slicer.config()
+    };
     let mut arr: Box<dyn Array> = if cycle {
         Box::new(CycleArray::new(cfg, set))
     } else {
@@ -213,8 +256,54 @@ pub fn array_mask(
     };
     arr.run(&ops).map_err(|e| e.to_string())?;
     let st = arr.state();
-    let mask = Mask::from_fn(cfg.pixels(), |i| st.pixels[i].creg(CReg::G) != 0);
+    let w = slicer.grid.dims[0];
+    let mut mask = Mask::new(slicer.grid.slice_len());
+    for y in 0..bx.height() {
+        for x in 0..bx.width() {
+            if st.pixels[y * bx.width() + x].creg(CReg::G) != 0 {
+                mask.set((bx.y0 + y) * w + bx.x0 + x, true);
+            }
+        }
+    }
     Ok((mask, arr.cycles()))
+}
+
+/// `op` for an array whose pixel (0, 0) is pixel (x0, y0) of the whole one.
+fn shift_origin(op: rtl_model::Op, fmt: &WordFormat, x0: i64, y0: i64) -> rtl_model::Op {
+    use rtl_model::Op;
+    let shift = |c: rtl_model::Coeffs| rtl_model::Coeffs {
+        c0: fmt.wrap(
+            c.c0.wrapping_add(x0.wrapping_mul(c.dx))
+                .wrapping_add(y0.wrapping_mul(c.dy)),
+        ),
+        ..c
+    };
+    match op {
+        Op::Plane {
+            coeffs,
+            colour,
+            interior,
+            l,
+            s,
+            h,
+            y,
+        } => Op::Plane {
+            coeffs: shift(coeffs),
+            colour,
+            interior,
+            l,
+            s,
+            h,
+            y,
+        },
+        Op::ClipPlane { coeffs, h, y, x } => Op::ClipPlane {
+            coeffs: shift(coeffs),
+            h,
+            y,
+            x,
+        },
+        other => other,
+    }
 }
 
 /// Per pixel, the slabs primitive P meets: `first..=last` (empty when first > last).
@@ -371,6 +460,11 @@ pub struct Work {
     pub frames: u64,
     /// The evaluator's operations (§5.5).
     pub ops: OpCounts,
+    /// Pixel-clocks the simulator ran (array route: Σ over simulated frames of pixels ×
+    /// clocks; 0 on the other routes, which simulate no pixel).
+    pub simulated_pixel_clocks: u64,
+    /// Pixel-clocks of every frame on the whole array: what simulating everything costs.
+    pub full_pixel_clocks: u64,
 }
 
 /// Per-slice masks of every primitive, by route.
@@ -380,6 +474,8 @@ enum Source {
     Array {
         cycle: bool,
         set: EquationSet,
+        /// Per primitive, where it is (when the slicer prunes to panels).
+        footprints: Option<Vec<Footprint>>,
     },
 }
 
@@ -402,6 +498,7 @@ impl Source {
         slicer: &Slicer,
         a: usize,
         b: usize,
+        simulated: &mut u64,
         f: &mut dyn FnMut(usize, &[Mask]),
     ) -> Result<(), String> {
         match self {
@@ -416,17 +513,53 @@ impl Source {
                     f(k, &masks);
                 }
             }
-            Source::Array { cycle, set } => {
+            Source::Array {
+                cycle,
+                set,
+                footprints,
+            } => {
                 for k in a..b {
                     let masks = (0..slicer.lists.len())
-                        .map(|p| array_mask(slicer, p, k, *cycle, set.clone()).map(|m| m.0))
-                        .collect::<Result<Vec<_>, _>>()?;
+                        .map(|p| {
+                            let fp = footprints.as_ref().map(|f| &f[p]);
+                            let (m, px_clocks) = frame_mask(slicer, p, k, *cycle, set, fp)?;
+                            *simulated += px_clocks;
+                            Ok(m)
+                        })
+                        .collect::<Result<Vec<_>, String>>()?;
                     f(k, &masks);
                 }
             }
         }
         Ok(())
     }
+}
+
+/// The mask of P·Vz on the array route and the pixel-clocks simulated for it: the whole array,
+/// or with a footprint only the panels it touches, and nothing in a slab it misses.
+fn frame_mask(
+    slicer: &Slicer,
+    p: usize,
+    k: usize,
+    cycle: bool,
+    set: &EquationSet,
+    fp: Option<&Footprint>,
+) -> Result<(Mask, u64), String> {
+    let [w, h] = [slicer.grid.dims[0], slicer.grid.dims[1]];
+    let bx = match (fp, slicer.panel) {
+        (None, _) | (_, None) => PixelBox {
+            x0: 0,
+            y0: 0,
+            x1: w,
+            y1: h,
+        },
+        (Some(fp), Some(panel)) => match fp.pixels {
+            Some(b) if fp.holds(k) => b.to_panels(panel, w, h),
+            _ => return Ok((Mask::new(w * h), 0)),
+        },
+    };
+    let (m, clocks) = array_mask_in(slicer, p, k, cycle, set.clone(), bx)?;
+    Ok((m, clocks * bx.pixels() as u64))
 }
 
 /// Voxelize: every slab's primitive masks by `route`, evaluated by `eval`, slabs in
@@ -445,6 +578,10 @@ pub fn voxelize(
         Route::Array { cycle } => Source::Array {
             cycle,
             set: set.clone(),
+            footprints: match slicer.panel {
+                Some(_) => Some(crate::requirements::footprints(slicer)?),
+                None => None,
+            },
         },
         Route::Intervals => Source::ranges(
             (0..prims)
@@ -468,16 +605,18 @@ pub fn voxelize(
         cycles +=
             rtl_model::array::program_cycles(&cfg, &set, &slice_ops(slicer, p, 0)?) * nz as u64;
     }
+    let full_pixel_clocks = cycles * (nx * ny) as u64;
     // Chunks of consecutive slabs, a few per thread, so masks can be swept forward.
     let chunk = (nz / (4 * rayon::current_num_threads())).max(1);
-    let chunks: Vec<Vec<(Vec<u8>, OpCounts)>> = (0..nz.div_ceil(chunk))
+    let chunks: Vec<(Vec<(Vec<u8>, OpCounts)>, u64)> = (0..nz.div_ceil(chunk))
         .into_par_iter()
         .map(|c| {
-            let mut out = vec![];
+            let (mut out, mut simulated) = (vec![], 0);
             source.sweep(
                 slicer,
                 c * chunk,
                 ((c + 1) * chunk).min(nz),
+                &mut simulated,
                 &mut |_, masks| {
                     let mut counts = OpCounts::default();
                     let labels = eval.eval(masks, &mut counts);
@@ -492,15 +631,17 @@ pub fn voxelize(
                     out.push((colours, counts));
                 },
             )?;
-            Ok(out)
+            Ok((out, simulated))
         })
         .collect::<Result<_, String>>()?;
-    let slices = chunks.into_iter().flatten();
     let mut work = Work {
         cycles,
         frames: (prims * nz) as u64,
+        simulated_pixel_clocks: chunks.iter().map(|c| c.1).sum(),
+        full_pixel_clocks,
         ..Work::default()
     };
+    let slices = chunks.into_iter().flat_map(|c| c.0);
     let mut voxels = Vec::with_capacity(nx * ny * nz);
     for (colours, counts) in slices {
         work.ops += counts;
