@@ -535,6 +535,10 @@ impl Source {
     }
 }
 
+/// A run of consecutive slabs: each slab's colour codes and evaluator counts, and the
+/// pixel-clocks simulated for them.
+type Chunk = (Vec<(Vec<u8>, OpCounts)>, u64);
+
 /// The mask of P·Vz on the array route and the pixel-clocks simulated for it: the whole array,
 /// or with a footprint only the panels it touches, and nothing in a slab it misses.
 fn frame_mask(
@@ -608,7 +612,7 @@ pub fn voxelize(
     let full_pixel_clocks = cycles * (nx * ny) as u64;
     // Chunks of consecutive slabs, a few per thread, so masks can be swept forward.
     let chunk = (nz / (4 * rayon::current_num_threads())).max(1);
-    let chunks: Vec<(Vec<(Vec<u8>, OpCounts)>, u64)> = (0..nz.div_ceil(chunk))
+    let chunks: Vec<Chunk> = (0..nz.div_ceil(chunk))
         .into_par_iter()
         .map(|c| {
             let (mut out, mut simulated) = (vec![], 0);
