@@ -432,7 +432,7 @@ pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
 }
 
 /// The P·Vz program of primitive `prim` and slab `k` (§5.2.1: @(P)·Vz + @(Vz)·P).
-fn slice_ops(slicer: &Slicer, prim: usize, k: usize) -> Result<Vec<rtl_model::Op>, String> {
+pub fn slice_ops(slicer: &Slicer, prim: usize, k: usize) -> Result<Vec<rtl_model::Op>, String> {
     let p = &slicer.lists[prim];
     let lists = [p.clone(), slicer.slab_list(k, slicer.colours[prim] as u32)];
     let expr = Clip::And(Box::new(Clip::Obj(0)), Box::new(Clip::Obj(1)));

@@ -570,3 +570,97 @@ fn voxelize_refuses_bad_input_without_output() {
     let o = csgpix(&["voxelize", s(&bad), "--res", "8", "-o", s(&out)]);
     assert!(String::from_utf8_lossy(&o.stderr).contains("bad.csg:2:1"));
 }
+
+fn json_of(args: &[&str]) -> serde_json::Value {
+    let o = csgpix(args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+/// `requirements` predicts what the simulator then does: the pixel-clocks the pruned cycle
+/// route simulates, the clocks of every frame, the stack the render program uses, the label
+/// width `blist` reports.
+#[test]
+fn requirements_predict_the_simulators_work() {
+    let d = tmp();
+    let out = d.path().join("v.nrrd");
+    let scene = "vectors/scenes/figure-5.2.csg";
+    let req = json_of(&[
+        "requirements",
+        scene,
+        "--res",
+        "24x20x12",
+        "--panel",
+        "8x8",
+        "--json",
+    ]);
+    let vox = json_of(&[
+        "voxelize",
+        scene,
+        "--res",
+        "24x20x12",
+        "--panel",
+        "8x8",
+        "--model",
+        "cycle",
+        "--json",
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(req["simulated_pixel_clocks"], vox["simulated_pixel_clocks"]);
+    assert_eq!(req["full_pixel_clocks"], vox["full_pixel_clocks"]);
+    assert_eq!(req["cycles_all_frames"], vox["cycles"]);
+    assert_eq!(req["label_bits"], vox["label_bits"]);
+    let png = d.path().join("r.png");
+    let render = json_of(&["render", scene, "--json", "-o", s(&png)]);
+    assert_eq!(req["stack_levels_render"], render["stack_levels"]);
+    assert_eq!(req["cycles_render"], render["cycles"]);
+    let (touched, total) = (
+        req["panels_touched"].as_u64().unwrap(),
+        req["panels_total"].as_u64().unwrap(),
+    );
+    // 24x20 in 8x8 panels: 3x3; Figure 5.2's L leaves one corner panel empty.
+    assert_eq!(total, 9);
+    assert!(touched < total, "{req}");
+    assert!(req["cycles_needed_frames"].as_u64() <= req["cycles_all_frames"].as_u64());
+}
+
+/// The render array models only the clipping-stack levels the program uses: the same image
+/// as a deeper stack, and a program deeper than `--stack-depth` is refused.
+#[test]
+fn render_models_only_the_stack_it_needs() {
+    let d = tmp();
+    let scene = "vectors/scenes/cube-minus-cylinder.csg";
+    let (a, b) = (d.path().join("a.png"), d.path().join("b.png"));
+    let deep = json_of(&["render", scene, "--size", "64x64", "--json", "-o", s(&a)]);
+    let need = deep["stack_levels"].as_u64().unwrap();
+    assert!(need >= 1 && need < deep["stack_depth"].as_u64().unwrap());
+    let need_s = need.to_string();
+    let exact = json_of(&[
+        "render",
+        scene,
+        "--size",
+        "64x64",
+        "--stack-depth",
+        &need_s,
+        "--json",
+        "-o",
+        s(&b),
+    ]);
+    assert_eq!(exact["stack_levels"], need);
+    assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+    let less = (need - 1).to_string();
+    let c = d.path().join("c.png");
+    let o = csgpix(&[
+        "render",
+        scene,
+        "--size",
+        "64x64",
+        "--stack-depth",
+        &less,
+        "-o",
+        s(&c),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!c.exists());
+}

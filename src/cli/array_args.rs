@@ -5,8 +5,10 @@ use std::path::PathBuf;
 
 use clap::ValueEnum;
 use csgpix::output::write_atomic;
+use rtl_model::array::check_program;
 use rtl_model::probe::Recorder;
 use rtl_model::select::vectors::{derive_with_ties, Ties};
+use rtl_model::Op;
 use rtl_model::{Array, ArrayConfig, CycleArray, EquationSet, Equations, WordArray, WordFormat};
 
 use super::EquationsArg;
@@ -174,9 +176,14 @@ impl ArrayArgs {
         }
     }
 
-    /// Build the chosen model, after checking its memory estimate against `--max-memory`.
-    pub fn build(&self) -> Result<Box<dyn Array>, String> {
-        let cfg = self.config()?;
+    /// Build the chosen model for `ops`, after checking its memory estimate against
+    /// `--max-memory`. The array gets only the clipping-stack levels `ops` use (at most
+    /// `--stack-depth`, else the program is refused): the levels no operation reaches hold 0
+    /// throughout, so the state is the same, and the cycle model stores one bit-plane less per
+    /// level. Returns the array and the levels modelled.
+    pub fn build(&self, ops: &[Op]) -> Result<(Box<dyn Array>, usize), String> {
+        let mut cfg = self.config()?;
+        cfg.stack_depth = check_program(ops, cfg.stack_depth).map_err(|e| e.to_string())?;
         let need = match self.model {
             Model::Cycle => CycleArray::memory_bytes(&cfg),
             Model::Word => WordArray::memory_bytes(&cfg),
@@ -202,7 +209,7 @@ impl ArrayArgs {
         if let Some(p) = &self.probe {
             arr.attach_probe(Recorder::new(cfg, p.0.clone())?);
         }
-        Ok(arr)
+        Ok((arr, cfg.stack_depth))
     }
 
     /// Write the VCD and the SVG timing diagram, if asked for.

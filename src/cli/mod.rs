@@ -4,6 +4,7 @@ mod array_args;
 mod blist;
 mod gen_vectors;
 mod render;
+mod requirements;
 mod scenes;
 mod verify_select;
 mod voxelize;
@@ -40,6 +41,8 @@ pub enum Cmd {
     Voxelize(voxelize::Args),
     /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
     Blist(blist::Args),
+    /// What a scene needs of the hardware: panels, slabs, word, stack, label, and the clocks.
+    Requirements(requirements::Args),
 }
 
 /// Which equation set SGENE uses.
@@ -68,5 +71,6 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::Render(a) => render::run(a),
         Cmd::Voxelize(a) => voxelize::run(a),
         Cmd::Blist(a) => blist::run(a),
+        Cmd::Requirements(a) => requirements::run(a),
     }
 }

@@ -55,7 +55,7 @@ pub struct Args {
 }
 
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
-enum ViewArg {
+pub enum ViewArg {
     /// Looking down −Z (x right, y up).
     Top,
     /// Looking along +Y (x right, z up).
@@ -85,6 +85,14 @@ struct Report {
     planes: usize,
     operations: usize,
     cycles: u64,
+    /// Clipping-stack levels the program needs, which is all the array models (array models).
+    stack_levels: usize,
+    /// Levels the hardware has (`--stack-depth`).
+    stack_depth: usize,
+    /// Pixel-clocks simulated, against the whole screen's: the same, since every pixel of the
+    /// screen is simulated (docs/requirements.md says why render does not prune panels).
+    simulated_pixel_clocks: u64,
+    full_pixel_clocks: u64,
     /// Hardware time at the thesis's 10 MHz clock.
     hardware_seconds: f64,
     wall_seconds: f64,
@@ -100,6 +108,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     };
     let ops = compiled.map_err(|(i, e)| scene.locate(i, &e))?;
     let t0 = Instant::now();
+    let mut stack_levels = 0;
     let (codes, depths, cycles) = if a.array.model == Model::Float {
         if a.array.probe.is_some() {
             return Err("--probe needs an array model (cycle or word)".into());
@@ -114,7 +123,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         );
         (f.colour, f.depth, 0)
     } else {
-        let mut arr = a.array.build()?;
+        let (mut arr, levels) = a.array.build(&ops)?;
+        stack_levels = levels;
         run_with_progress(arr.as_mut(), &ops)?;
         a.array.write_waves(arr.as_mut())?;
         let st = arr.state();
@@ -138,6 +148,10 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         planes: lists.iter().map(|l| l.planes.len()).sum(),
         operations: ops.len(),
         cycles,
+        stack_levels,
+        stack_depth: cfg.stack_depth,
+        simulated_pixel_clocks: cycles * cfg.pixels() as u64,
+        full_pixel_clocks: cycles * cfg.pixels() as u64,
         hardware_seconds: cycles as f64 * 1e-7,
         wall_seconds: wall,
     };
