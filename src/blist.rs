@@ -25,7 +25,7 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use crate::slice::{Labels, Mask, OpCounts, SliceEval};
+use crate::slice::{self, Labels, Mask, OpCounts, SliceEval};
 use crate::solid::CsgNode;
 
 /// One entry BL[p] of the Blist table (§4.3).
@@ -553,7 +553,7 @@ impl BlistEval {
             if classify == 0 {
                 continue;
             }
-            let inside = prim_word(prims, row.prim, w);
+            let inside = slice::prim_word(prims, row.prim, w);
             let sign = if row.sign { !0 } else { 0 };
             let hit = classify & !(inside ^ sign);
             // label := stamp where the classification equals the sign, 0 elsewhere.
@@ -577,15 +577,6 @@ fn equals(planes: &[u64], name: u32) -> u64 {
     planes.iter().enumerate().fold(!0, |acc, (b, &p)| {
         acc & if name >> b & 1 == 1 { p } else { !p }
     })
-}
-
-/// Word `w` of primitive `p`'s mask; a missing or short mask contains nothing.
-fn prim_word(prims: &[Mask], p: usize, w: usize) -> u64 {
-    prims
-        .get(p)
-        .and_then(|m| m.words().get(w))
-        .copied()
-        .unwrap_or(0)
 }
 
 fn set_colour(colour: &mut [u32; 64], mut bits: u64, prim: usize) {

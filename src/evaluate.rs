@@ -18,7 +18,7 @@
 
 use std::collections::HashMap;
 
-use crate::slice::{Labels, Mask, OpCounts, SliceEval};
+use crate::slice::{self, Labels, Mask, OpCounts, SliceEval};
 use crate::solid::CsgNode;
 
 // ---------------------------------------------------------------------------------------------
@@ -180,7 +180,7 @@ pub fn colour_labels(order: &LeafOrder, prims: &[Mask], inside: &Mask) -> Labels
             if rest == 0 {
                 break;
             }
-            let hit = rest & prim_word(prims, p, w);
+            let hit = rest & slice::prim_word(prims, p, w);
             write_bits(&mut labels, w, hit, label_of(p));
             rest &= !hit;
         }
@@ -192,15 +192,6 @@ pub fn colour_labels(order: &LeafOrder, prims: &[Mask], inside: &Mask) -> Labels
 /// The label of primitive `p`, saturating for indices no scene can have.
 fn label_of(p: usize) -> u32 {
     u32::try_from(p).map_or(u32::MAX, |p| p.saturating_add(1))
-}
-
-/// Word `w` of primitive `p`'s mask, 0 where the mask is missing or short.
-fn prim_word(prims: &[Mask], p: usize, w: usize) -> u64 {
-    prims
-        .get(p)
-        .and_then(|m| m.words().get(w))
-        .copied()
-        .unwrap_or(0)
 }
 
 /// `labels[64·w + b] = label` for every set bit b of `bits`.

@@ -126,6 +126,16 @@ impl std::ops::AddAssign for OpCounts {
     }
 }
 
+/// Word `w` (voxels 64·w .. 64·w + 63) of primitive `p`'s mask in `prims`; a missing or short
+/// mask contains nothing.
+pub fn prim_word(prims: &[Mask], p: usize, w: usize) -> u64 {
+    prims
+        .get(p)
+        .and_then(|m| m.words().get(w))
+        .copied()
+        .unwrap_or(0)
+}
+
 /// The scene's slice: per pixel, 0 when outside the scene, else 1 + the index of the
 /// primitive whose colour the voxel takes.
 pub type Labels = Vec<u32>;
