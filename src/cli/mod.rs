@@ -5,6 +5,7 @@ mod blist;
 mod gen_vectors;
 mod render;
 mod scenes;
+mod throughput;
 mod verify_select;
 mod voxelize;
 
@@ -40,6 +41,8 @@ pub enum Cmd {
     Voxelize(voxelize::Args),
     /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
     Blist(blist::Args),
+    /// Throughput: eq. 2.3-2.5 and 5.1, Table 2.1, and a scene's frame rate on panels (§2.5).
+    Throughput(throughput::Args),
 }
 
 /// Which equation set SGENE uses.
@@ -68,5 +71,6 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::Render(a) => render::run(a),
         Cmd::Voxelize(a) => voxelize::run(a),
         Cmd::Blist(a) => blist::run(a),
+        Cmd::Throughput(a) => throughput::run(a),
     }
 }
