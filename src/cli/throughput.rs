@@ -59,7 +59,7 @@ pub struct Args {
     /// Run every distinct panel program through the cycle model instead of counting it.
     #[arg(long)]
     simulate: bool,
-    /// Write figure-2.12.png, figure-5.11.png (and scene-panels.png with --scene) here.
+    /// Write figure-2.12.png, figure-5.11.png (and scene-NAME-VIEW.png with --scene) here.
     #[arg(long)]
     plots: Option<PathBuf>,
     /// Print every number as JSON.
@@ -378,7 +378,10 @@ fn write_plots(
     write(figure_2_12(hw, screen), "figure-2.12.png")?;
     write(figure_5_11(hw, screen), "figure-5.11.png")?;
     if let Some(s) = scene {
-        write(scene_chart(s), "scene-panels.png")?;
+        let stem = Path::new(&s.file)
+            .file_stem()
+            .map_or("scene".into(), |f| f.to_string_lossy());
+        write(scene_chart(s), &format!("scene-{stem}-{}.png", s.view))?;
     }
     Ok(())
 }
@@ -428,10 +431,18 @@ fn figure_5_11(hw: &Hardware, screen: (usize, usize)) -> Chart {
         log_y: true,
         series: vec![
             curve(
-                format!("P_R = {} surfaces/s (128x128 panels)", fmt_num(panels * p)),
+                format!(
+                    "P_R = {} surfaces/s (§5.5; 128x128 panels on {}x{})",
+                    fmt_num(panels * p),
+                    screen.0,
+                    screen.1
+                ),
                 panels * p,
             ),
-            curve(format!("P_R = {} surfaces/s (one array)", fmt_num(p)), p),
+            curve(
+                format!("P_R = P = {} surfaces/s (eq. 5.2, one array)", fmt_num(p)),
+                p,
+            ),
         ],
     }
 }
