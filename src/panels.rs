@@ -254,6 +254,9 @@ pub fn count_cycles(set: &EquationSet) -> impl Fn(&ArrayConfig, &[Op]) -> Result
     move |cfg, ops| Ok(program_cycles(cfg, set, ops))
 }
 
+/// The most panels a tiling may have (each holds a list of solids): 2^22.
+pub const MAX_PANELS: usize = 1 << 22;
+
 /// Every panel's work for n × m panels. Panels with the same solids share one compile and
 /// one count (their programs differ only in Z0).
 pub fn panel_work(
@@ -261,11 +264,17 @@ pub fn panel_work(
     panel: (usize, usize),
     count: &Counter,
 ) -> Result<Vec<PanelWork>, String> {
+    let (cols, rows) = tiling(ps.screen, panel);
+    if cols * rows > MAX_PANELS {
+        return Err(format!(
+            "{cols}x{rows} panels of {}x{}: more than {MAX_PANELS} to bin (use larger panels)",
+            panel.0, panel.1
+        ));
+    }
     let cfg = ps.panel_config(panel);
     let slice: Vec<u64> = (0..ps.lists.len())
         .map(|p| count(&cfg, &ps.slice_ops(p)?))
         .collect::<Result<_, String>>()?;
-    let (cols, _) = tiling(ps.screen, panel);
     let mut cache: HashMap<Vec<usize>, u64> = HashMap::new();
     let mut out = vec![];
     for (k, prims) in bins(&ps.footprints, ps.screen, panel)

@@ -271,8 +271,18 @@ fn scene_report(
     })
 }
 
+/// The largest cycle-model array `--simulate` builds, in MiB.
+const SIMULATE_MIB: u64 = 4096;
+
 /// Run a program on a cycle-model array of configuration `cfg` and read its clock counter.
 fn simulate(cfg: &ArrayConfig, set: &rtl_model::EquationSet, ops: &[Op]) -> Result<u64, String> {
+    let mib = CycleArray::memory_bytes(cfg).div_ceil(1 << 20);
+    if mib > SIMULATE_MIB {
+        return Err(format!(
+            "--simulate: a {}x{} panel needs about {mib} MiB, over {SIMULATE_MIB} MiB (use smaller panels)",
+            cfg.width, cfg.height
+        ));
+    }
     let mut arr = CycleArray::new(*cfg, set.clone());
     arr.run(ops).map_err(|e| e.to_string())?;
     Ok(arr.cycles())
