@@ -32,6 +32,17 @@ type Span = (f64, f64);
 
 static FONT: Once = Once::new();
 
+/// `10^self` or `other`, the smaller.
+trait Exp10Min {
+    fn exp10_min(self, other: f64) -> f64;
+}
+
+impl Exp10Min for f64 {
+    fn exp10_min(self, other: f64) -> f64 {
+        10f64.powf(self).min(other)
+    }
+}
+
 fn register_font() {
     FONT.call_once(|| {
         let bytes: &'static [u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
@@ -63,7 +74,8 @@ impl Chart {
                 return if log { (1.0, 10.0) } else { (0.0, 1.0) };
             }
             if log {
-                (lo / 1.5, hi * 1.5)
+                // Down to the decade below, so the lowest curve has a labelled tick under it.
+                (lo.log10().floor().exp10_min(lo / 1.5), hi * 1.5)
             } else {
                 let pad = ((hi - lo) * 0.05).max(hi.abs() * 0.05).max(1e-12);
                 (lo - pad, hi + pad)
@@ -79,29 +91,78 @@ impl Chart {
     pub fn write_png(&self, path: &Path, width: u32, height: u32) -> Result<(), String> {
         register_font();
         let ranges = self.ranges()?;
+        let corner = self.legend_corner(ranges);
         let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
         let root = BitMapBackend::new(path, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| err(&e))?;
         match (self.log_x, self.log_y) {
-            (false, false) => self.draw(&root, ranges.0 .0..ranges.0 .1, ranges.1 .0..ranges.1 .1),
+            (false, false) => self.draw(
+                &root,
+                ranges.0 .0..ranges.0 .1,
+                ranges.1 .0..ranges.1 .1,
+                corner,
+            ),
             (true, false) => self.draw(
                 &root,
                 (ranges.0 .0..ranges.0 .1).log_scale(),
                 ranges.1 .0..ranges.1 .1,
+                corner,
             ),
             (false, true) => self.draw(
                 &root,
                 ranges.0 .0..ranges.0 .1,
                 (ranges.1 .0..ranges.1 .1).log_scale(),
+                corner,
             ),
             (true, true) => self.draw(
                 &root,
                 (ranges.0 .0..ranges.0 .1).log_scale(),
                 (ranges.1 .0..ranges.1 .1).log_scale(),
+                corner,
             ),
         }
         .map_err(|e| err(&e))?;
         root.present().map_err(|e| err(&e))
+    }
+
+    /// The corner of the plot farthest from the data, for the legend: the one whose quarter
+    /// (in axis coordinates, log where the axis is) holds the fewest curve samples.
+    fn legend_corner(&self, (xs, ys): (Span, Span)) -> SeriesLabelPosition {
+        let norm = |v: f64, (lo, hi): Span, log: bool| {
+            if log {
+                (v.ln() - lo.ln()) / (hi.ln() - lo.ln())
+            } else {
+                (v - lo) / (hi - lo)
+            }
+        };
+        let mut counts = [0usize; 4];
+        for s in &self.series {
+            for w in s.points.windows(2) {
+                for k in 0..=16 {
+                    let t = k as f64 / 16.0;
+                    let p = |a: f64, b: f64, r: Span, log: bool| {
+                        let (a, b) = (norm(a, r, log), norm(b, r, log));
+                        a + (b - a) * t
+                    };
+                    let x = p(w[0].0, w[1].0, xs, self.log_x);
+                    let y = p(w[0].1, w[1].1, ys, self.log_y);
+                    let (right, up) = (x > 0.55, y > 0.7);
+                    if (x < 0.45 || right) && (y < 0.3 || up) {
+                        counts[(right as usize) + 2 * (up as usize)] += 1;
+                    }
+                }
+            }
+        }
+        let corners = [
+            SeriesLabelPosition::LowerLeft,
+            SeriesLabelPosition::LowerRight,
+            SeriesLabelPosition::UpperLeft,
+            SeriesLabelPosition::UpperRight,
+        ];
+        let best = (0..4)
+            .min_by_key(|&i| (counts[i], [3, 2, 1, 0][i]))
+            .unwrap_or(3);
+        corners[best].clone()
     }
 
     fn draw<X, Y>(
@@ -109,6 +170,7 @@ impl Chart {
         root: &DrawingArea<BitMapBackend, plotters::coord::Shift>,
         x: X,
         y: Y,
+        corner: SeriesLabelPosition,
     ) -> Result<(), Box<dyn std::error::Error + '_>>
     where
         X: plotters::coord::ranged1d::AsRangedCoord<Value = f64>,
@@ -127,6 +189,8 @@ impl Chart {
             .x_desc(&self.x_label)
             .y_desc(&self.y_label)
             .label_style(("sans-serif", 13))
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
             .draw()?;
         for (i, s) in self.series.iter().enumerate() {
             let colour = Palette99::pick(i).to_rgba();
@@ -143,11 +207,30 @@ impl Chart {
         }
         chart
             .configure_series_labels()
+            .position(corner)
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
             .label_font(("sans-serif", 13))
             .draw()?;
         Ok(())
+    }
+}
+
+/// A tick label: whole numbers without a fraction (up to 1e6), powers of ten from 1e6 on as
+/// 1e7, other large or small values with 3 significant digits.
+fn tick(v: f64) -> String {
+    let a = v.abs();
+    if a >= 1e6 || (a > 0.0 && a < 1e-3) {
+        let s = format!("{v:.2e}");
+        // 1.00e7 -> 1e7, 2.50e6 -> 2.5e6
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        let m = m.trim_end_matches('0').trim_end_matches('.');
+        format!("{m}e{e}")
+    } else if (v - v.round()).abs() < 1e-9 * a.max(1.0) {
+        format!("{v:.0}")
+    } else {
+        let digits = (2 - a.log10().floor() as i32).max(0) as usize;
+        format!("{v:.digits$}")
     }
 }
 
@@ -186,6 +269,15 @@ mod tests {
                 .count();
             assert!(dark > 200, "{dark} dark pixels");
         }
+    }
+
+    #[test]
+    fn tick_labels_are_short() {
+        assert_eq!(tick(100_000_000.0), "1e8");
+        assert_eq!(tick(2_500_000.0), "2.5e6");
+        assert_eq!(tick(1000.0), "1000");
+        assert_eq!(tick(0.5), "0.500");
+        assert_eq!(tick(12.34), "12.3");
     }
 
     #[test]

@@ -6,6 +6,7 @@ mod gen_vectors;
 mod render;
 mod requirements;
 mod scenes;
+mod throughput;
 mod verify_select;
 mod voxelize;
 
@@ -43,6 +44,8 @@ pub enum Cmd {
     Blist(blist::Args),
     /// What a scene needs of the hardware: panels, slabs, word, stack, label, and the clocks.
     Requirements(requirements::Args),
+    /// Throughput: eq. 2.3-2.5 and 5.1, Table 2.1, and a scene's frame rate on panels (§2.5).
+    Throughput(throughput::Args),
 }
 
 /// Which equation set SGENE uses.
@@ -72,5 +75,6 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::Voxelize(a) => voxelize::run(a),
         Cmd::Blist(a) => blist::run(a),
         Cmd::Requirements(a) => requirements::run(a),
+        Cmd::Throughput(a) => throughput::run(a),
     }
 }
