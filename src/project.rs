@@ -246,11 +246,26 @@ pub fn display_lists(scene: &CsgScene, frame: &Frame, slope_limit: f64) -> Vec<D
         .enumerate()
         .map(|(i, s)| {
             let colour = s.colour.map_or(1 + (i % 6) as u32, colour_code);
-            let planes = s
+            let mut planes: Vec<DlPlane> = s
                 .faces
                 .iter()
                 .filter_map(|f| face_plane(frame, s, f, colour, slope_limit))
                 .collect();
+            if planes.is_empty() {
+                // Every face is degenerate at this scale (a solid far smaller than a pixel): a
+                // list without planes would be all of space to the float model and to the
+                // clipping stack, and nothing to the array. Say "nothing" to all three: one
+                // perpendicular plane with K = -1 everywhere (outside).
+                planes.push(DlPlane {
+                    z0: -1.0,
+                    dzx: 0.0,
+                    dzy: 0.0,
+                    colour,
+                    h: false,
+                    y: true,
+                    l: false,
+                });
+            }
             DisplayList {
                 planes,
                 terminator: 1234,
@@ -293,7 +308,32 @@ pub fn project(
              maxdepth {maxdepth}: use a smaller --size or more integer bits in --word"
         ));
     }
-    let lists = display_lists(scene, &frame, max_slope(fmt, width, height));
+    let mut lists = display_lists(scene, &frame, max_slope(fmt, width, height));
+    // A back face that comes in front of the screen somewhere on the array meets the row
+    // "A < 0 <= B: Put 1" of §2.3.3, which draws the solid there although it has none
+    // (docs/stability.md: a steep face of a solid that does not fill the array). Close the
+    // silhouette with perpendicular planes for such solids, as voxelizing does for all.
+    let corners = [
+        (0.0, 0.0),
+        ((width - 1) as f64, 0.0),
+        (0.0, (height - 1) as f64),
+    ];
+    let corners = corners
+        .into_iter()
+        .chain([((width - 1) as f64, (height - 1) as f64)]);
+    let corners: Vec<(f64, f64)> = corners.collect();
+    for (dl, solid) in lists.iter_mut().zip(&scene.solids) {
+        let in_front = |p: &DlPlane| {
+            !p.h && !p.y
+                && corners
+                    .iter()
+                    .any(|&(x, y)| p.z0 + x * p.dzx + y * p.dzy < 0.0)
+        };
+        if dl.planes.iter().any(in_front) {
+            let colour = dl.planes[0].colour;
+            dl.planes.extend(silhouette_planes(&frame, solid, colour));
+        }
+    }
     Ok(Projected { lists, clip })
 }
 
