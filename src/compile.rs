@@ -46,6 +46,61 @@ pub fn coeffs(fmt: &WordFormat, z0: f64, dzx: f64, dzy: f64) -> Result<Coeffs, (
     })
 }
 
+/// Refuse a plane whose value leaves the word somewhere on a `width`×`height` window.
+///
+/// Each coefficient may fit the word while `Z0 + x·dZx + y·dZy` does not: DEPGEN's adders keep
+/// N_D bits and wrap (docs/depth-word.md), so such a plane would reach the pixels with the
+/// wrong sign, far beyond the display read as in front of the screen. The value is linear,
+/// so its extremes are at the window's corners; they are computed from the quantized
+/// coefficients, exactly as DEPGEN sums them. Errors name the list, the plane and the field
+/// (Z0) of the offending plane.
+pub fn check_window(
+    lists: &[DisplayList],
+    fmt: &WordFormat,
+    width: usize,
+    height: usize,
+) -> Result<(), (usize, CompileError)> {
+    let (xm, ym) = (
+        width.saturating_sub(1) as i128,
+        height.saturating_sub(1) as i128,
+    );
+    for (i, dl) in lists.iter().enumerate() {
+        for (k, p) in dl.planes.iter().enumerate() {
+            let c = coeffs(fmt, p.z0, p.dzx, p.dzy).map_err(|(field, msg)| {
+                (
+                    i,
+                    CompileError {
+                        plane: k,
+                        field,
+                        msg,
+                    },
+                )
+            })?;
+            for (x, y) in [(0, 0), (xm, 0), (0, ym), (xm, ym)] {
+                let v = c.c0 as i128 + x * c.dx as i128 + y * c.dy as i128;
+                if v < fmt.min_word() as i128 || v > fmt.max_word() as i128 {
+                    let msg = format!(
+                        "Z0 + x*dZx + y*dZy = {} at pixel ({x}, {y}) of the {width}x{height} \
+                         window does not fit the depth word (range {} .. {}): DEPGEN would wrap",
+                        v as f64 / (1u64 << fmt.frac) as f64,
+                        fmt.to_real(fmt.min_word()),
+                        fmt.to_real(fmt.max_word()),
+                    );
+                    return Err((
+                        i,
+                        CompileError {
+                            plane: k,
+                            field: 0,
+                            msg,
+                        },
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The operations that draw one object into F (not yet composed).
 pub fn object_ops(
     dl: &DisplayList,

@@ -246,11 +246,26 @@ pub fn display_lists(scene: &CsgScene, frame: &Frame, slope_limit: f64) -> Vec<D
         .enumerate()
         .map(|(i, s)| {
             let colour = s.colour.map_or(1 + (i % 6) as u32, colour_code);
-            let planes = s
+            let mut planes: Vec<DlPlane> = s
                 .faces
                 .iter()
                 .filter_map(|f| face_plane(frame, s, f, colour, slope_limit))
                 .collect();
+            if planes.is_empty() {
+                // Every face is degenerate at this scale (a solid far smaller than a pixel): a
+                // list without planes would be all of space to the float model and to the
+                // clipping stack, and nothing to the array. Say "nothing" to all three: one
+                // perpendicular plane with K = -1 everywhere (outside).
+                planes.push(DlPlane {
+                    z0: -1.0,
+                    dzx: 0.0,
+                    dzy: 0.0,
+                    colour,
+                    h: false,
+                    y: true,
+                    l: false,
+                });
+            }
             DisplayList {
                 planes,
                 terminator: 1234,
@@ -293,8 +308,52 @@ pub fn project(
              maxdepth {maxdepth}: use a smaller --size or more integer bits in --word"
         ));
     }
-    let lists = display_lists(scene, &frame, max_slope(fmt, width, height));
+    let mut lists = display_lists(scene, &frame, max_slope(fmt, width, height));
+    // A back face in front of the screen meets the row "A < 0 <= B: Put 1" of §2.3.3, which
+    // can draw the solid where it has none (docs/stability.md: a steep face of a solid that
+    // does not fill the array). Close the silhouette with perpendicular planes for the solids
+    // where that happens on this array, as voxelizing does for all.
+    for (dl, solid) in lists.iter_mut().zip(&scene.solids) {
+        if drawn_by_screen_rule(dl, width, height, maxdepth) {
+            let colour = dl.planes[0].colour;
+            dl.planes.extend(silhouette_planes(&frame, solid, colour));
+        }
+    }
     Ok(Projected { lists, clip })
+}
+
+/// Does the thesis's rule for back planes in front of the screen (a negative back plane puts
+/// maxdepth into B) draw convex list `dl` at some pixel of a `width`×`height` array where its
+/// exact half-space intersection shows nothing? (The rule of `float::ScreenRule::Thesis`.)
+fn drawn_by_screen_rule(dl: &DisplayList, width: usize, height: usize, maxdepth: f64) -> bool {
+    if !dl.planes.iter().any(|p| !p.h && !p.y) {
+        return false;
+    }
+    (0..height).any(|y| {
+        (0..width).any(|x| {
+            let (x, y) = (x as f64, y as f64);
+            let (mut lo, mut hi, mut hi_rule) = (f64::NEG_INFINITY, f64::INFINITY, f64::INFINITY);
+            for p in &dl.planes {
+                let v = p.z0 + x * p.dzx + y * p.dzy;
+                if p.y {
+                    if v < 0.0 {
+                        return false;
+                    }
+                } else if p.h {
+                    lo = lo.max(v);
+                } else {
+                    hi = hi.min(v);
+                    hi_rule = if v < 0.0 {
+                        f64::INFINITY
+                    } else {
+                        hi_rule.min(v)
+                    };
+                }
+            }
+            let exact = lo < hi && hi > 0.0;
+            !exact && lo < hi_rule && lo.max(0.0) < maxdepth
+        })
+    })
 }
 
 /// The scene's CSG tree as a clipping function over the solids (None for an empty scene).

@@ -101,6 +101,8 @@ struct Report {
 pub fn run(a: Args) -> Result<ExitCode, String> {
     let cfg = a.array.config()?;
     let scene = Scene::load(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)?;
+    csgpix::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
+        .map_err(|(i, e)| scene.locate(i, &e))?;
     let compiled = match (&scene.clip, scene.empty) {
         (_, true) => Ok(vec![]),
         (None, false) => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
