@@ -101,6 +101,24 @@ pub fn field_position(text: &str, plane: usize, field: usize) -> Option<(usize, 
 }
 
 impl DisplayList {
+    /// A slab between two depths (§4.4): a front plane at `front` and a back plane at `back`,
+    /// both parallel to the screen, in colour `colour`.
+    pub fn slab(front: f64, back: f64, colour: u32) -> DisplayList {
+        let plane = |z0: f64, h: bool| DlPlane {
+            z0,
+            dzx: 0.0,
+            dzy: 0.0,
+            colour,
+            h,
+            y: false,
+            l: false,
+        };
+        DisplayList {
+            planes: vec![plane(front, true), plane(back, false)],
+            terminator: 1234,
+        }
+    }
+
     /// Parses the §5.2 text format; `file` only names the source in errors.
     ///
     /// # Errors

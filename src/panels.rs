@@ -23,7 +23,7 @@ use serde::Serialize;
 
 use crate::clip_expr::Clip;
 use crate::compile::clip_scene_ops;
-use crate::display_list::{DisplayList, DlPlane};
+use crate::display_list::DisplayList;
 use crate::project::{
     clip_of, display_lists, max_slope, project, silhouette_planes, Frame, View, DEPTH_MARGIN,
 };
@@ -106,7 +106,10 @@ impl PanelScene {
             .planes
             .first()
             .map_or(1, |p| p.colour);
-        let lists = [self.slice_lists[prim].clone(), slab(colour)];
+        let lists = [
+            self.slice_lists[prim].clone(),
+            DisplayList::slab(DEPTH_MARGIN, DEPTH_MARGIN + 1.0, colour),
+        ];
         let expr = Clip::And(Box::new(Clip::Obj(0)), Box::new(Clip::Obj(1)));
         clip_scene_ops(&lists, &expr, &self.fmt, colour_bits(&self.fmt))
             .map_err(|(_, e)| format!("solid {}: {e}", prim + 1))
@@ -124,23 +127,6 @@ impl PanelScene {
 /// Colour register width for a word (as `ArrayArgs::config`: at most N_D).
 fn colour_bits(fmt: &WordFormat) -> u32 {
     ArrayConfig::new(1, 1).colour_bits.min(fmt.bits())
-}
-
-/// A slab between depth DEPTH_MARGIN and DEPTH_MARGIN + 1: front plane, back plane.
-fn slab(colour: u32) -> DisplayList {
-    let plane = |z0: f64, h: bool| DlPlane {
-        z0,
-        dzx: 0.0,
-        dzy: 0.0,
-        colour,
-        h,
-        y: false,
-        l: false,
-    };
-    DisplayList {
-        planes: vec![plane(DEPTH_MARGIN, true), plane(DEPTH_MARGIN + 1.0, false)],
-        terminator: 1234,
-    }
 }
 
 /// The pixels the bounding box of the projected vertices covers, widened to whole pixels and

@@ -179,22 +179,8 @@ impl Slicer {
     /// The slab as a display list: front plane Z-plane(k), back plane one raw unit before
     /// Z-plane(k + 1), so that every depth word belongs to exactly one slab.
     pub fn slab_list(&self, k: usize, colour: u32) -> DisplayList {
-        let plane = |raw: i64, h: bool| DlPlane {
-            z0: self.fmt.to_real(raw),
-            dzx: 0.0,
-            dzy: 0.0,
-            colour,
-            h,
-            y: false,
-            l: false,
-        };
-        DisplayList {
-            planes: vec![
-                plane(self.z_plane(k), true),
-                plane(self.z_plane(k + 1) - 1, false),
-            ],
-            terminator: 1234,
-        }
+        let z = |raw: i64| self.fmt.to_real(raw);
+        DisplayList::slab(z(self.z_plane(k)), z(self.z_plane(k + 1) - 1), colour)
     }
 
     /// The array configuration slices run on.

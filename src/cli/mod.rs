@@ -13,6 +13,7 @@ mod voxelize;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
+use csgpix::project::View;
 use rtl_model::Equations;
 
 #[derive(Parser, Debug)]
@@ -76,5 +77,37 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::Blist(a) => blist::run(a),
         Cmd::Requirements(a) => requirements::run(a),
         Cmd::Throughput(a) => throughput::run(a),
+    }
+}
+
+/// A view of a `.csg` scene on the array (`render`, `throughput`, `requirements`).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
+pub enum ViewArg {
+    /// Looking down −Z (x right, y up).
+    Top,
+    /// Looking along +Y (x right, z up).
+    Front,
+    /// Isometric, from (+1, −1, +1).
+    #[default]
+    Iso,
+}
+
+impl From<ViewArg> for View {
+    fn from(v: ViewArg) -> View {
+        match v {
+            ViewArg::Top => View::Top,
+            ViewArg::Front => View::Front,
+            ViewArg::Iso => View::Iso,
+        }
+    }
+}
+
+impl ViewArg {
+    pub fn name(self) -> &'static str {
+        match self {
+            ViewArg::Top => "top",
+            ViewArg::Front => "front",
+            ViewArg::Iso => "iso",
+        }
     }
 }

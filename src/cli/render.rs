@@ -8,7 +8,6 @@ use std::time::Instant;
 use csgpix::compile::{clip_scene_ops, scene_ops};
 use csgpix::output::write_atomic;
 use csgpix::palette::image_rgb;
-use csgpix::project::View;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::array::check_program;
 use rtl_model::program::{CReg, Op, Reg};
@@ -19,6 +18,7 @@ use serde::Serialize;
 
 use super::array_args::{ArrayArgs, Model};
 use super::scenes::Scene;
+use super::ViewArg;
 use csgpix::float::{self, ScreenRule};
 
 #[derive(clap::Args, Debug)]
@@ -52,27 +52,6 @@ pub struct Args {
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
-}
-
-#[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
-pub enum ViewArg {
-    /// Looking down −Z (x right, y up).
-    Top,
-    /// Looking along +Y (x right, z up).
-    Front,
-    /// Isometric, from (+1, −1, +1).
-    #[default]
-    Iso,
-}
-
-impl From<ViewArg> for View {
-    fn from(v: ViewArg) -> View {
-        match v {
-            ViewArg::Top => View::Top,
-            ViewArg::Front => View::Front,
-            ViewArg::Iso => View::Iso,
-        }
-    }
 }
 
 #[derive(Serialize)]

@@ -17,8 +17,8 @@ use rtl_model::{ArrayConfig, Equations, WordFormat};
 use serde::Serialize;
 
 use super::array_args::parse_word;
-use super::render::ViewArg;
 use super::voxelize::{parse_bounds, parse_panel, parse_res, PanelArg};
+use super::ViewArg;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \

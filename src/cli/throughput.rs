@@ -17,7 +17,7 @@ use rtl_model::{Array, ArrayConfig, CycleArray, Equations, Op, WordFormat};
 use serde::Serialize;
 
 use super::array_args::{parse_size, parse_word};
-use csgpix::project::View;
+use super::ViewArg;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -65,38 +65,6 @@ pub struct Args {
     /// Print every number as JSON.
     #[arg(long)]
     json: bool,
-}
-
-/// The view of `--scene` (as `render --view`).
-#[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
-enum ViewArg {
-    /// Looking down -Z (x right, y up); slices along Z, as `voxelize`.
-    Top,
-    /// Looking along +Y (x right, z up).
-    Front,
-    /// Isometric, from (+1, -1, +1).
-    #[default]
-    Iso,
-}
-
-impl ViewArg {
-    fn name(self) -> &'static str {
-        match self {
-            ViewArg::Top => "top",
-            ViewArg::Front => "front",
-            ViewArg::Iso => "iso",
-        }
-    }
-}
-
-impl From<ViewArg> for View {
-    fn from(v: ViewArg) -> View {
-        match v {
-            ViewArg::Top => View::Top,
-            ViewArg::Front => View::Front,
-            ViewArg::Iso => View::Iso,
-        }
-    }
 }
 
 /// A positive number, or a fraction A/B.
