@@ -16,4 +16,5 @@ pub mod project;
 pub mod scad;
 pub mod slice;
 pub mod solid;
+pub mod study;
 pub mod voxelize;

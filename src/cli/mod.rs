@@ -5,6 +5,7 @@ mod blist;
 mod gen_vectors;
 mod render;
 mod scenes;
+mod study;
 mod verify_select;
 mod voxelize;
 
@@ -40,6 +41,8 @@ pub enum Cmd {
     Voxelize(voxelize::Args),
     /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
     Blist(blist::Args),
+    /// Sweep depth-word bits, tessellation, slabs and model; error against cost as CSV and PNG.
+    Study(study::Args),
 }
 
 /// Which equation set SGENE uses.
@@ -68,5 +71,6 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::Render(a) => render::run(a),
         Cmd::Voxelize(a) => voxelize::run(a),
         Cmd::Blist(a) => blist::run(a),
+        Cmd::Study(a) => study::run(a),
     }
 }
