@@ -650,66 +650,65 @@ fn error_chart<'a>(scene: &str, knob: &str, pts: impl Iterator<Item = &'a Point>
                 points: xy,
             }
         })
-        .collect();
+        .collect::<Vec<Series>>();
+    let (lo, hi) = series
+        .iter()
+        .flat_map(|s: &Series| s.points.iter().map(|p| p.0))
+        .fold((f64::INFINITY, 0.0f64), |(a, b), x| (a.min(x), b.max(x)));
     Chart {
         title: format!("{scene}: {knob}, word model"),
         x_label: "hardware time at 10 MHz (ms)".into(),
         y_label: "voxels differing from reference (%)".into(),
-        log_x: true,
+        log_x: hi > 20.0 * lo,
         log_y: false,
         series,
     }
 }
 
-/// Largest depth error (scene units) against N_D, per slab count, with the proven bound.
+/// Largest depth error (scene units) against N_D, the largest over slab counts (they differ
+/// by a fraction of a percent: a slab is q depth units and one voxel deep), with the bound.
 fn depth_chart(points: &[Point], scene: &str, fragments: u32) -> Chart {
     let pts: Vec<&Point> = points
         .iter()
         .filter(|p| p.model != Model::Float && p.fragments == fragments)
         .collect();
-    let curve = |label: String, f: &dyn Fn(&Point) -> Option<(f64, f64)>, s: Option<usize>| {
-        let mut xy: Vec<(f64, f64)> = pts
-            .iter()
-            .filter(|p| s.map_or(true, |s| p.slabs == s))
-            .filter_map(|p| f(p))
+    let curve = |label: &str, f: fn(&Point) -> f64| {
+        let mut nd: Vec<u32> = pts.iter().map(|p| p.n_d).collect();
+        nd.sort_unstable();
+        nd.dedup();
+        let points = nd
+            .into_iter()
+            .map(|n| {
+                let y = pts.iter().filter(|p| p.n_d == n).map(|p| f(p));
+                (n as f64, y.fold(0.0, f64::max))
+            })
             .filter(|&(_, y)| y > 0.0)
             .collect();
-        xy.sort_by(|a, b| a.0.total_cmp(&b.0));
-        xy.dedup_by(|a, b| a.0 == b.0);
-        Series { label, points: xy }
+        Series {
+            label: label.into(),
+            points,
+        }
     };
-    let mut series: Vec<Series> = slab_counts(pts.iter().copied())
-        .into_iter()
-        .map(|s| {
-            let f = |p: &Point| Some((p.n_d as f64, p.depth_err));
-            curve(format!("measured, {s} slabs"), &f, Some(s))
-        })
-        .collect();
-    let bound = |p: &Point| Some((p.n_d as f64, p.depth_bound));
-    series.push(curve(
-        "bound 2^-(F+1)(1+x+y)".into(),
-        &bound,
-        pts.first().map(|p| p.slabs),
-    ));
     Chart {
-        title: format!("{scene}: depth error of the word"),
+        title: format!("{scene}: depth error of the word, {fragments} fragments"),
         x_label: "N_D = clocks per plane".into(),
         y_label: "largest |word - float| depth (scene units)".into(),
         log_x: false,
         log_y: true,
-        series,
+        series: vec![
+            curve("measured", |p| p.depth_err),
+            curve("bound 2^-(F+1)(1+x+y)", |p| p.depth_bound),
+        ],
     }
 }
 
-/// The simulator's wall time against the hardware time of the same job, per model.
+/// The simulator's wall time against the hardware time of the same job, per model; each
+/// point sums the bit counts of one (fragments, slabs) pair, which smooths the timer's noise.
 fn wall_chart(points: &[Point], scene: &str) -> Chart {
     let job = |p: &Point| {
         points
             .iter()
-            .find(|q| {
-                q.hardware_s.is_some()
-                    && (q.frac_bits, q.fragments, q.slabs) == (p.frac_bits, p.fragments, p.slabs)
-            })
+            .find(|q| q.hardware_s.is_some() && same_job(p, q))
             .and_then(|q| q.hardware_s)
     };
     let mut models: Vec<Model> = points.iter().map(|p| p.model).collect();
@@ -718,12 +717,19 @@ fn wall_chart(points: &[Point], scene: &str) -> Chart {
     let series = models
         .into_iter()
         .map(|m| {
-            let mut xy: Vec<(f64, f64)> = points
-                .iter()
-                .filter(|p| p.model == m)
-                .filter_map(|p| job(p).map(|t| (t * 1e3, p.wall_s.max(1e-6) * 1e3)))
+            let mut groups: Vec<((u32, usize), f64, f64)> = vec![];
+            for p in points.iter().filter(|p| p.model == m) {
+                let Some(t) = job(p) else { continue };
+                match groups.iter_mut().find(|g| g.0 == (p.fragments, p.slabs)) {
+                    Some(g) => (g.1, g.2) = (g.1 + t, g.2 + p.wall_s),
+                    None => groups.push(((p.fragments, p.slabs), t, p.wall_s)),
+                }
+            }
+            let mut xy: Vec<(f64, f64)> = groups
+                .into_iter()
+                .map(|(_, t, w)| (t * 1e3, w.max(1e-6) * 1e3))
                 .collect();
-            xy.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+            xy.sort_by(|a, b| a.0.total_cmp(&b.0));
             Series {
                 label: m.name().into(),
                 points: xy,
@@ -732,11 +738,15 @@ fn wall_chart(points: &[Point], scene: &str) -> Chart {
         .filter(|s| !s.points.is_empty())
         .collect();
     Chart {
-        title: format!("{scene}: simulator cost per model"),
-        x_label: "hardware time of the job at 10 MHz (ms)".into(),
+        title: format!("{scene}: simulator cost per model (sums over bits)"),
+        x_label: "hardware time of the jobs at 10 MHz (ms)".into(),
         y_label: "simulator wall time (ms)".into(),
         log_x: true,
         log_y: true,
         series,
     }
+}
+
+fn same_job(p: &Point, q: &Point) -> bool {
+    (q.frac_bits, q.fragments, q.slabs) == (p.frac_bits, p.fragments, p.slabs)
 }

@@ -36,10 +36,12 @@ pub struct Args {
     #[arg(long, value_delimiter = ',', default_values_t = [8u32, 16, 32, 64])]
     fragments: Vec<u32>,
     /// Slabs along Z to sweep (voxel resolution along Z).
-    #[arg(long, value_delimiter = ',', default_values_t = [16usize, 32, 64])]
+    #[arg(long, value_delimiter = ',', default_values_t = [16usize, 32, 64, 128])]
     slabs: Vec<usize>,
-    /// Models to run: `cycle` (clock by clock), `word` (plane words, same voxels), `float`.
-    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [ModelArg::Cycle, ModelArg::Word, ModelArg::Float])]
+    /// Models to run: `cycle` (every frame clock by clock: the same voxels and clocks as
+    /// `word`, at 20 to 300 times its wall time, so not run unless asked), `word` (the array's
+    /// plane words), `float` (exact, not hardware).
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [ModelArg::Word, ModelArg::Float])]
     models: Vec<ModelArg>,
     /// Voxels along X and Y (the array is RES×RES pixels).
     #[arg(long, default_value_t = 32)]
