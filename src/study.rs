@@ -165,6 +165,9 @@ pub struct Point {
     /// Voxels in the grid.
     pub voxels: usize,
     pub filled: usize,
+    /// FNV-1a digest of the volume's membership (filled or empty per voxel), in hex: equal
+    /// digests mark the same voxels (`cycle` and `word` always give the same).
+    pub digest: String,
     /// Voxels differing from the reference (float, finest tessellation and bits, same grid).
     pub diff_ref: usize,
     /// Voxels differing from float at the same tessellation, bits and grid.
@@ -441,6 +444,7 @@ impl Prepared {
                 slabs: slicer.grid.dims[2],
                 voxels: vol.voxels.len(),
                 filled: vol.voxels.iter().filter(|&&v| v != 0).count(),
+                digest: digest(&vol),
                 diff_ref: differing(&vol, reference),
                 diff_float: differing(&vol, &float),
                 depth_err: if hw { err * scale } else { 0.0 },
@@ -481,6 +485,14 @@ pub fn differing(a: &Volume, b: &Volume) -> usize {
         .zip(&b.voxels)
         .filter(|(x, y)| (**x != 0) != (**y != 0))
         .count()
+}
+
+/// FNV-1a (64 bits) over the volume's membership bytes (1 filled, 0 empty), as 16 hex digits.
+pub fn digest(v: &Volume) -> String {
+    let h = v.voxels.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &x| {
+        (h ^ u64::from(x != 0)).wrapping_mul(0x0000_0100_0000_01b3)
+    });
+    format!("{h:016x}")
 }
 
 /// Scene units of Z per depth unit: a slab is q depth units and one voxel deep.
@@ -557,8 +569,8 @@ fn word_interval(fmt: &WordFormat, planes: &[PlaneWord], x: i64, y: i64) -> Opti
 }
 
 /// The CSV header; `wall_s` is last so runs compare without it.
-pub const CSV_HEADER: &str = "model,frac_bits,n_d,fragments,res,slabs,voxels,filled,diff_ref,\
-diff_float,depth_err,depth_bound,cycles,hardware_s,wall_s";
+pub const CSV_HEADER: &str = "model,frac_bits,n_d,fragments,res,slabs,voxels,filled,digest,\
+diff_ref,diff_float,depth_err,depth_bound,cycles,hardware_s,wall_s";
 
 /// One row per point, in the order given, with a header line. Empty fields for `float`'s
 /// cycles and hardware time.
@@ -567,7 +579,7 @@ pub fn csv(points: &[Point]) -> String {
     let mut s = format!("{CSV_HEADER}\n");
     for p in points {
         s.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{:e},{:e},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{},{:e},{:e},{},{},{}\n",
             p.model.name(),
             p.frac_bits,
             p.n_d,
@@ -576,6 +588,7 @@ pub fn csv(points: &[Point]) -> String {
             p.slabs,
             p.voxels,
             p.filled,
+            p.digest,
             p.diff_ref,
             p.diff_float,
             p.depth_err,
