@@ -17,9 +17,9 @@ use serde::Serialize;
     after_help = "Writes DIR/study.csv (one row per point) and the charts DIR/bits.png, \
     DIR/fragments.png, DIR/depth.png, DIR/wall.png. See docs/tradeoffs.md for the columns.\n\n\
     Examples:\n  \
-    csgpix study vectors/scenes/cube-minus-cylinder.csg -o study/cmc\n  \
+    csgpix study vectors/scenes/cube-minus-cylinder.csg --models cycle,word,float -o study/cmc\n  \
     csgpix study vectors/scenes/csg-logo.csg --bits 4,8,12 --fragments 16,32 --slabs 32 -o logo\n  \
-    csgpix study vectors/scenes/figure-5.2.csg --models word,float --res 64 --json -o fig52\n  \
+    csgpix study vectors/scenes/figure-5.2.csg --res 64 --json -o fig52 > fig52.json\n  \
     csgpix study scene.csg --bits 10 --int-bits 8 --ovf-bits 4 --slabs 16,32,64,128 -o out"
 )]
 pub struct Args {
@@ -192,11 +192,10 @@ fn report(
     } else {
         let worst = points.iter().map(|p| p.diff_ref).max().unwrap_or(0);
         println!(
-            "{}: {} points ({} differ from the reference at most by {worst} voxels); {:.2} s wall",
+            "{}: {scene}, {} points, at most {worst} voxels differ from the reference; \
+             charts beside it; {wall:.2} s wall",
             a.out.join("study.csv").display(),
             points.len(),
-            scene,
-            wall
         );
     }
     Ok(ExitCode::SUCCESS)
