@@ -18,5 +18,6 @@ pub mod requirements;
 pub mod scad;
 pub mod slice;
 pub mod solid;
+pub mod study;
 pub mod throughput;
 pub mod voxelize;

@@ -6,6 +6,7 @@ mod gen_vectors;
 mod render;
 mod requirements;
 mod scenes;
+mod study;
 mod throughput;
 mod verify_select;
 mod voxelize;
@@ -47,6 +48,8 @@ pub enum Cmd {
     Requirements(requirements::Args),
     /// Throughput: eq. 2.3-2.5 and 5.1, Table 2.1, and a scene's frame rate on panels (§2.5).
     Throughput(throughput::Args),
+    /// Sweep depth-word bits, tessellation, slabs and model; error against cost as CSV and PNG.
+    Study(study::Args),
 }
 
 /// Which equation set SGENE uses.
@@ -77,6 +80,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::Blist(a) => blist::run(a),
         Cmd::Requirements(a) => requirements::run(a),
         Cmd::Throughput(a) => throughput::run(a),
+        Cmd::Study(a) => study::run(a),
     }
 }
 

@@ -1,0 +1,202 @@
+//! `csgpix study`: sweep the knobs that trade speed for accuracy when voxelizing a scene
+//! through the array (depth-word fraction bits §2.3.1/§2.5, tessellation, slabs §4.4/§5.5,
+//! model), and write the figures as CSV and PNG charts.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use clap::ValueEnum;
+use csgpix::study::{charts, csv, prepare, Model, Point, Prepared, Sweep};
+use csgpix::voxelize::memory_estimate;
+use indicatif::{ProgressBar, ProgressStyle};
+use serde::Serialize;
+
+#[derive(clap::Args, Debug)]
+#[command(
+    after_help = "Writes DIR/study.csv (one row per point) and the charts DIR/bits.png, \
+    DIR/fragments.png, DIR/depth.png, DIR/wall.png. See docs/tradeoffs.md for the columns.\n\n\
+    Examples:\n  \
+    csgpix study vectors/scenes/cube-minus-cylinder.csg --models cycle,word,float -o study/cmc\n  \
+    csgpix study vectors/scenes/csg-logo.csg --bits 4,8,12 --fragments 16,32 --slabs 32 -o logo\n  \
+    csgpix study vectors/scenes/figure-5.2.csg --res 64 --json -o fig52 > fig52.json\n  \
+    csgpix study scene.csg --bits 10 --int-bits 8 --ovf-bits 4 --slabs 16,32,64,128 -o out"
+)]
+pub struct Args {
+    /// OpenSCAD `.csg` scene.
+    scene: PathBuf,
+    /// Output directory (created if missing; files are written only when the whole sweep
+    /// succeeded).
+    #[arg(short = 'o', long)]
+    out: PathBuf,
+    /// Fraction bits F of the depth word to sweep (N_D = F + I + O + 1 clocks per plane).
+    #[arg(long, value_delimiter = ',', default_values_t = [4u32, 6, 8, 10, 12, 16])]
+    bits: Vec<u32>,
+    /// `$fn` of every sphere and cylinder to sweep (the scene's own `$fn` is overridden).
+    #[arg(long, value_delimiter = ',', default_values_t = [8u32, 16, 32, 64])]
+    fragments: Vec<u32>,
+    /// Slabs along Z to sweep (voxel resolution along Z).
+    #[arg(long, value_delimiter = ',', default_values_t = [16usize, 32, 64, 128])]
+    slabs: Vec<usize>,
+    /// Models to run: `cycle` (every frame clock by clock: the same voxels and clocks as
+    /// `word`, at 20 to 300 times its wall time, so not run unless asked), `word` (the array's
+    /// plane words), `float` (exact, not hardware).
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [ModelArg::Word, ModelArg::Float])]
+    models: Vec<ModelArg>,
+    /// Voxels along X and Y (the array is RES×RES pixels).
+    #[arg(long, default_value_t = 32)]
+    res: usize,
+    /// Integer bits I of the depth word, fixed during the sweep.
+    #[arg(long, default_value_t = 10)]
+    int_bits: u32,
+    /// Overflow bits O of the depth word, fixed during the sweep.
+    #[arg(long, default_value_t = 11)]
+    ovf_bits: u32,
+    /// Refuse sweeps needing more memory than this many MiB.
+    #[arg(long, default_value_t = 4096)]
+    max_memory: u64,
+    /// Print every point as JSON.
+    #[arg(long)]
+    json: bool,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
+enum ModelArg {
+    Cycle,
+    Word,
+    Float,
+}
+
+impl From<ModelArg> for Model {
+    fn from(m: ModelArg) -> Model {
+        match m {
+            ModelArg::Cycle => Model::Cycle,
+            ModelArg::Word => Model::Word,
+            ModelArg::Float => Model::Float,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct Report<'a> {
+    scene: String,
+    sweep: &'a Sweep,
+    /// The grid box shared by every point, scene units.
+    bounds: [[f64; 3]; 2],
+    points: &'a [Point],
+    wall_seconds: f64,
+}
+
+pub fn run(a: Args) -> Result<ExitCode, String> {
+    let file = a.scene.display().to_string();
+    let text = std::fs::read_to_string(&a.scene).map_err(|e| format!("{file}: {e}"))?;
+    let sweep = Sweep {
+        bits: a.bits.clone(),
+        fragments: a.fragments.clone(),
+        slabs: a.slabs.clone(),
+        models: a.models.iter().map(|&m| m.into()).collect(),
+        res: a.res,
+        int_bits: a.int_bits,
+        ovf_bits: a.ovf_bits,
+    };
+    let prep = prepare(&text, &file, sweep)?;
+    check_memory(&prep, a.max_memory)?;
+    let t0 = Instant::now();
+    let bar = progress(prep.sweep.len());
+    let points = prep.run(&|| bar.inc(1))?;
+    bar.finish_and_clear();
+    let wall = t0.elapsed().as_secs_f64();
+    let name = a
+        .scene
+        .file_name()
+        .map_or(file.clone(), |n| n.to_string_lossy().into());
+    write_outputs(&a.out, &points, &name)?;
+    report(&a, &prep, &points, &name, wall)
+}
+
+/// The largest grid's voxelization, and the reference and float volumes kept beside it.
+fn check_memory(prep: &Prepared, max_mib: u64) -> Result<(), String> {
+    let slabs = prep.sweep.slabs.iter().copied().max().unwrap_or(1);
+    let grid = prep.grid(slabs)?;
+    let solids = prep
+        .scenes
+        .iter()
+        .map(|(_, s)| s.solids.len())
+        .max()
+        .unwrap_or(0);
+    let need = 3 * memory_estimate(&grid, solids, rayon::current_num_threads());
+    if need > max_mib << 20 {
+        return Err(format!(
+            "this sweep needs about {} MiB, over --max-memory {max_mib}: lower --res or --slabs",
+            need >> 20
+        ));
+    }
+    Ok(())
+}
+
+fn progress(points: usize) -> ProgressBar {
+    let bar = ProgressBar::new(points as u64);
+    if let Ok(style) =
+        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} points")
+    {
+        bar.set_style(style);
+    }
+    bar
+}
+
+/// Write study.csv and the charts into `dir`: everything into a temporary directory inside
+/// it first, then renamed into place, so a failure leaves no partial set of files.
+fn write_outputs(dir: &Path, points: &[Point], scene: &str) -> Result<(), String> {
+    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", dir.display());
+    let created = !dir.exists();
+    std::fs::create_dir_all(dir).map_err(|e| err(&e))?;
+    let result = (|| {
+        let tmp = tempfile::Builder::new()
+            .prefix(".study-")
+            .tempdir_in(dir)
+            .map_err(|e| err(&e))?;
+        let mut names = vec!["study.csv"];
+        std::fs::write(tmp.path().join("study.csv"), csv(points)).map_err(|e| err(&e))?;
+        for (name, chart) in charts(points, scene) {
+            chart.write_png(&tmp.path().join(name), 800, 560)?;
+            names.push(name);
+        }
+        for name in names {
+            std::fs::rename(tmp.path().join(name), dir.join(name)).map_err(|e| err(&e))?;
+        }
+        Ok(())
+    })();
+    if result.is_err() && created {
+        let _ = std::fs::remove_dir_all(dir);
+    }
+    result
+}
+
+fn report(
+    a: &Args,
+    prep: &Prepared,
+    points: &[Point],
+    scene: &str,
+    wall: f64,
+) -> Result<ExitCode, String> {
+    if a.json {
+        let r = Report {
+            scene: scene.into(),
+            sweep: &prep.sweep,
+            bounds: [prep.min.to_array(), prep.max.to_array()],
+            points,
+            wall_seconds: wall,
+        };
+        let text = serde_json::to_string_pretty(&r).map_err(|e| e.to_string())?;
+        println!("{text}");
+    } else {
+        let worst = points.iter().map(|p| p.diff_ref).max().unwrap_or(0);
+        println!(
+            "{}: {scene}, {} points, at most {worst} voxels differ from the reference; \
+             charts beside it; {wall:.2} s wall",
+            a.out.join("study.csv").display(),
+            points.len(),
+        );
+    }
+    Ok(ExitCode::SUCCESS)
+}
