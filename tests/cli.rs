@@ -1,15 +1,9 @@
 //! The `csgpix` binary end to end.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
+use common::csgpix;
 
-fn csgpix(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_csgpix"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run csgpix")
-}
+use std::path::{Path, PathBuf};
 
 fn tmp() -> tempfile::TempDir {
     tempfile::tempdir().unwrap()

@@ -1,14 +1,9 @@
 //! `csgpix blist` end to end: the printed tables of the thesis through the binary.
 
-use std::process::{Command, Output};
+mod common;
+use common::csgpix;
 
-fn csgpix(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_csgpix"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run csgpix")
-}
+use std::process::Output;
 
 /// Rows of a transcribed table in `vectors/blist/` (tab-separated, header and `#` skipped).
 fn printed(file: &str) -> Vec<Vec<String>> {

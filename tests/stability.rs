@@ -8,8 +8,10 @@
 //! compared. Measured numbers are printed: `cargo test --release --test stability --
 //! --nocapture`.
 
+mod common;
+use common::csgpix;
+
 use std::path::Path;
-use std::process::{Command, Output};
 
 use csgpix::blist::BlistTable;
 use csgpix::clip_expr::Clip;
@@ -26,13 +28,6 @@ use rtl_model::{
 };
 
 const INTERIOR: u32 = csgpix::compile::INTERIOR_COLOUR;
-
-fn csgpix(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_csgpix"))
-        .args(args)
-        .output()
-        .unwrap()
-}
 
 fn s(p: &Path) -> &str {
     p.to_str().unwrap()

@@ -4,8 +4,10 @@
 //! Expected values come from the scene and the docs' formulas worked by hand, never from the
 //! code under test.
 
+mod common;
+use common::csgpix;
+
 use std::path::Path;
-use std::process::{Command, Output};
 
 use csgpix::scad::parse_csg;
 use csgpix::study::{prepare, with_fragments, Model, Point, Sweep, CSV_HEADER};
@@ -137,14 +139,6 @@ fn the_finest_bits_beat_the_coarsest_in_depth_on_this_scene() {
     );
     assert!(fine.depth_err <= 0.5f64.powi(13) * 31.0 * scale(12, 16) * (1.0 + 1e-9));
     assert!(fine.depth_err < coarse.depth_err);
-}
-
-fn csgpix(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_csgpix"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run csgpix")
 }
 
 const SMALL: [&str; 10] = [

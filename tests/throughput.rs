@@ -1,8 +1,10 @@
 //! The throughput equations against every printed figure of §2.5 and §5.5, and a scene's
 //! per-panel clocks against the cycle model (docs/throughput.md).
 
+mod common;
+use common::csgpix;
+
 use std::path::Path;
-use std::process::Command;
 
 use csgpix::panels::{
     bins, count_cycles, estimate, panel_work, presence, tiling, translate, PanelScene,
@@ -257,14 +259,6 @@ fn a_scene_in_two_corners_touches_only_those_panels() {
     for w in work.iter().filter(|w| w.frame_cycles > 0) {
         assert_eq!(w.frame_cycles, 292, "panel {},{}", w.col, w.row);
     }
-}
-
-fn csgpix(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_csgpix"))
-        .args(args)
-        .current_dir(ROOT)
-        .output()
-        .unwrap()
 }
 
 #[test]

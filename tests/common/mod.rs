@@ -1,4 +1,6 @@
-//! Random scenes shared by the integration tests.
+//! Helpers shared by the integration tests: random scenes, and running the binary.
+// Each test crate uses only some of these.
+#![allow(dead_code)]
 
 use proptest::prelude::*;
 use std::f64::consts::PI;
@@ -35,4 +37,13 @@ pub fn random_scene() -> impl Strategy<Value = String> {
     let op = prop_oneof![Just("union"), Just("difference"), Just("intersection")];
     (op, prop::collection::vec(primitive(), 1..4))
         .prop_map(|(op, kids)| format!("{op}() {{\n{}\n}}\n", kids.join("\n")))
+}
+
+/// Run the `csgpix` binary from the crate's root.
+pub fn csgpix(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run csgpix")
 }
