@@ -55,15 +55,16 @@ impl PanelScene {
         fmt: WordFormat,
     ) -> Result<PanelScene, String> {
         let (w, h) = screen;
-        project(scene, view, w, h, &fmt)?;
+        // The lists `render` draws (with the outline planes projection adds where the screen
+        // rule would draw a solid beside itself), and for slices the faces with every
+        // silhouette plane, as `voxelize` draws them.
+        let lists = project(scene, view, w, h, &fmt)?.lists;
         let frame = Frame::fit(scene, view, w, h)?;
-        let lists = display_lists(scene, &frame, max_slope(&fmt, w, h));
-        let slice_lists = lists
-            .iter()
+        let slice_lists = display_lists(scene, &frame, max_slope(&fmt, w, h))
+            .into_iter()
             .zip(&scene.solids)
-            .map(|(dl, s)| {
+            .map(|(mut dl, s)| {
                 let colour = dl.planes.first().map_or(1, |p| p.colour);
-                let mut dl = dl.clone();
                 dl.planes.extend(silhouette_planes(&frame, s, colour));
                 dl
             })
