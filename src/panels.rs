@@ -184,16 +184,7 @@ pub fn restrict(root: &CsgNode, present: &[bool]) -> CsgNode {
     out.pop().unwrap_or(CsgNode::Empty)
 }
 
-/// Move a program's plane coefficients to a panel whose top-left pixel is (x0, y0) of the
-/// screen: Z0' = Z0 + x0·dZx + y0·dZy in raw words, so the panel's DEPGEN delivers at its
-/// pixel (x, y) exactly the word the whole screen's delivers at (x0 + x, y0 + y).
-pub fn translate(ops: &mut [Op], x0: usize, y0: usize) {
-    for op in ops {
-        if let Op::Plane { coeffs, .. } | Op::ClipPlane { coeffs, .. } = op {
-            coeffs.c0 += x0 as i64 * coeffs.dx + y0 as i64 * coeffs.dy;
-        }
-    }
-}
+pub use rtl_model::program::translate;
 
 /// One panel of the tiling and what it does for a frame and a slice.
 #[derive(Clone, Debug, PartialEq, Serialize)]

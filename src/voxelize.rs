@@ -25,6 +25,7 @@
 
 use glam::{DMat3, DVec3};
 
+use rtl_model::array::check_program;
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, EquationSet, WordArray, WordFormat};
 
@@ -225,15 +226,15 @@ pub fn array_mask_in(
     set: EquationSet,
     bx: PixelBox,
 ) -> Result<(Mask, u64), String> {
-    let fmt = slicer.fmt;
-    let ops: Vec<rtl_model::Op> = slice_ops(slicer, prim, k)?
-        .into_iter()
-        .map(|op| shift_origin(op, &fmt, bx.x0 as i64, bx.y0 as i64))
-        .collect();
+    let mut ops = slice_ops(slicer, prim, k)?;
+    rtl_model::program::translate(&mut ops, bx.x0, bx.y0);
+    let full = slicer.config();
     let cfg = ArrayConfig {
         width: bx.width(),
         height: bx.height(),
-        ..slicer.config()
+        // Only the clipping-stack levels the frame uses (its unused levels would hold 0).
+        stack_depth: check_program(&ops, full.stack_depth).map_err(|e| e.to_string())?,
+        ..full
     };
     let mut arr: Box<dyn Array> = if cycle {
         Box::new(CycleArray::new(cfg, set))
@@ -252,44 +253,6 @@ pub fn array_mask_in(
         }
     }
     Ok((mask, arr.cycles()))
-}
-
-/// `op` for an array whose pixel (0, 0) is pixel (x0, y0) of the whole one.
-fn shift_origin(op: rtl_model::Op, fmt: &WordFormat, x0: i64, y0: i64) -> rtl_model::Op {
-    use rtl_model::Op;
-    let shift = |c: rtl_model::Coeffs| rtl_model::Coeffs {
-        c0: fmt.wrap(
-            c.c0.wrapping_add(x0.wrapping_mul(c.dx))
-                .wrapping_add(y0.wrapping_mul(c.dy)),
-        ),
-        ..c
-    };
-    match op {
-        Op::Plane {
-            coeffs,
-            colour,
-            interior,
-            l,
-            s,
-            h,
-            y,
-        } => Op::Plane {
-            coeffs: shift(coeffs),
-            colour,
-            interior,
-            l,
-            s,
-            h,
-            y,
-        },
-        Op::ClipPlane { coeffs, h, y, x } => Op::ClipPlane {
-            coeffs: shift(coeffs),
-            h,
-            y,
-            x,
-        },
-        other => other,
-    }
 }
 
 /// Per pixel, the slabs primitive P meets: `first..=last` (empty when first > last).

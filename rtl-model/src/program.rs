@@ -24,6 +24,23 @@ pub struct Coeffs {
     pub dy: i64,
 }
 
+/// Move a program to an array whose pixel (0, 0) is pixel (x0, y0) of a larger one (a panel,
+/// §2.5, or the part of the screen a primitive touches): every plane's Z0 becomes
+/// Z0 + x0·dZx + y0·dZy. DEPGEN's sums are taken modulo 2^N_D, so the smaller array's pixel
+/// (x, y) receives exactly the word the larger one's pixel (x0 + x, y0 + y) does; pixels share
+/// nothing else, so their registers evolve the same.
+pub fn translate(ops: &mut [Op], x0: usize, y0: usize) {
+    let (x0, y0) = (x0 as i64, y0 as i64);
+    for op in ops {
+        if let Op::Plane { coeffs, .. } | Op::ClipPlane { coeffs, .. } = op {
+            coeffs.c0 = coeffs
+                .c0
+                .wrapping_add(x0.wrapping_mul(coeffs.dx))
+                .wrapping_add(y0.wrapping_mul(coeffs.dy));
+        }
+    }
+}
+
 /// One instruction of the array.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub enum Op {
