@@ -658,3 +658,38 @@ fn render_models_only_the_stack_it_needs() {
     assert_eq!(o.status.code(), Some(2));
     assert!(!c.exists());
 }
+
+/// `render --panel` draws a `.csg` scene on panels: the same PNG, fewer pixel-clocks; display
+/// lists are refused (they have no footprint to bin by).
+#[test]
+fn render_on_panels_is_the_same_image() {
+    let d = tmp();
+    let (a, b) = (d.path().join("a.png"), d.path().join("b.png"));
+    let scene = "vectors/scenes/figure-5.2.csg";
+    let whole = json_of(&["render", scene, "--size", "64x48", "--json", "-o", s(&a)]);
+    let panels = json_of(&[
+        "render",
+        scene,
+        "--size",
+        "64x48",
+        "--panel",
+        "16x16",
+        "--json",
+        "-o",
+        s(&b),
+    ]);
+    assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+    assert_eq!(whole["cycles"], panels["cycles"]);
+    assert!(panels["simulated_pixel_clocks"].as_u64() < whole["simulated_pixel_clocks"].as_u64());
+    let c = d.path().join("c.png");
+    let o = csgpix(&[
+        "render",
+        "vectors/thesis/cube.dl",
+        "--panel",
+        "16x16",
+        "-o",
+        s(&c),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!c.exists());
+}

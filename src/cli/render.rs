@@ -25,6 +25,7 @@ use csgpix::float::{self, ScreenRule};
 #[command(after_help = "Examples:\n  \
     csgpix render vectors/thesis/cube.dl -o cube.png\n  \
     csgpix render vectors/scenes/cube-minus-cylinder.csg --view iso --shade -o scene.png\n  \
+    csgpix render vectors/scenes/twelve.csg --panel 32x32 --json -o twelve.png\n  \
     csgpix render vectors/thesis/box1.dl vectors/thesis/box2.dl --model word --json -o boxes.png\n  \
     csgpix render vectors/thesis/box1.dl vectors/thesis/box2.dl --clip 'A.!B' -o fig5-1e.png\n  \
     csgpix render vectors/thesis/cube.dl --vcd cube.vcd --probe '120,100;10,10' -o cube.png\n  \
@@ -46,6 +47,10 @@ pub struct Args {
     /// "A.!B"; each literal is drawn, clipped by the rest of its product and composed.
     #[arg(long)]
     clip: Option<String>,
+    /// For a `.csg` scene: draw on panels of NXxNY pixels (§2.5), each running only the solids
+    /// whose footprint touches it; panels no solid touches are not simulated. Same image.
+    #[arg(long, value_parser = super::voxelize::parse_panel)]
+    panel: Option<super::voxelize::PanelArg>,
     /// Shade by depth (C): nearest drawn depth at full colour, farthest at 45%.
     #[arg(long)]
     shade: bool,
@@ -68,8 +73,8 @@ struct Report {
     stack_levels: usize,
     /// Levels the hardware has (`--stack-depth`).
     stack_depth: usize,
-    /// Pixel-clocks simulated, against the whole screen's: the same, since every pixel of the
-    /// screen is simulated (docs/requirements.md says why render does not prune panels).
+    /// Pixel-clocks simulated, against the whole screen's: the same unless `--panel` draws a
+    /// `.csg` scene on panels (docs/requirements.md).
     simulated_pixel_clocks: u64,
     full_pixel_clocks: u64,
     /// Hardware time at the thesis's 10 MHz clock.
@@ -90,6 +95,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let ops = compiled.map_err(|(i, e)| scene.locate(i, &e))?;
     let t0 = Instant::now();
     let mut stack_levels = 0;
+    let mut simulated = None;
     let (codes, depths, cycles) = if a.array.model == Model::Float {
         if a.array.probe.is_some() {
             return Err("--probe needs an array model (cycle or word)".into());
@@ -103,6 +109,16 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             ScreenRule::Exact,
         );
         (f.colour, f.depth, 0)
+    } else if let Some([pw, ph]) = a.panel.and_then(|p| p.0) {
+        let img = on_panels(&a, &cfg, (pw, ph))?;
+        simulated = Some(img.simulated_pixel_clocks);
+        let depth = img
+            .depth
+            .iter()
+            .map(|&c| Some(cfg.fmt.to_real(c)))
+            .collect();
+        let cycles = rtl_model::array::program_cycles(&cfg, &a.array.equations()?, &ops);
+        (img.colour, depth, cycles)
     } else {
         let (mut arr, levels) = a.array.build(&ops)?;
         stack_levels = levels;
@@ -131,7 +147,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         cycles,
         stack_levels,
         stack_depth: cfg.stack_depth,
-        simulated_pixel_clocks: cycles * cfg.pixels() as u64,
+        simulated_pixel_clocks: simulated.unwrap_or(cycles * cfg.pixels() as u64),
         full_pixel_clocks: cycles * cfg.pixels() as u64,
         hardware_seconds: cycles as f64 * 1e-7,
         wall_seconds: wall,
@@ -189,4 +205,27 @@ fn write_png(path: &Path, width: usize, height: usize, pixels: &[[u8; 3]]) -> Re
             .map_err(std::io::Error::other)?;
         w.write_all(buf.get_ref())
     })
+}
+
+/// Draw a `.csg` scene on panels (`--panel`): only the panels its solids touch are simulated.
+fn on_panels(
+    a: &Args,
+    cfg: &rtl_model::ArrayConfig,
+    panel: (usize, usize),
+) -> Result<csgpix::panels::PanelImage, String> {
+    let path = match &a.scenes[..] {
+        [p] if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("csg")) => p,
+        _ => return Err("--panel needs one .csg scene (display lists have no footprint)".into()),
+    };
+    if a.array.probe.is_some() {
+        return Err("--panel and --probe do not go together: probes watch the whole array".into());
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let scene =
+        csgpix::scad::parse_csg(&text, &path.display().to_string()).map_err(|e| e.to_string())?;
+    let ps =
+        csgpix::panels::PanelScene::new(&scene, a.view.into(), (cfg.width, cfg.height), cfg.fmt)
+            .map_err(|e| format!("{}:1:1: {e}", path.display()))?;
+    let cycle = a.array.model == Model::Cycle;
+    csgpix::panels::render_on_panels(&ps, panel, cycle, &a.array.equations()?)
 }
