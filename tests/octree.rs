@@ -464,3 +464,49 @@ fn splitting_a_coarse_leaf_along_a_path_adds_seven_nodes_a_level() {
         assert_eq!(s.cell(x as u32, y as u32, z as u32), want, "({x},{y},{z})");
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// The command line
+
+#[test]
+fn voxelize_store_reports_table_7_1_and_refuses_what_does_not_fit() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("cube.nrrd");
+    let h = cube_bounds(64);
+    let bounds = format!("--bounds={},{},{},{},{},{}", -h, -h, -h, h, h, h);
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/vectors/scenes/table-7.1-cube.csg"
+    );
+    let run = |store: &str| {
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"))
+            .args([
+                "voxelize", scene, "--res", "64", &bounds, "--json", "--store", store, "-o",
+            ])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap()["store"].clone()
+    };
+    // Table 7.1: 59 848 nodes below the root (pointer), 52 368 leaves (optimized); digest
+    // §4.4: I(64) = 7481.
+    let ptr = run("pointer");
+    assert_eq!(
+        (ptr["nodes"].as_u64(), ptr["internal_nodes"].as_u64()),
+        (Some(59_849), Some(7_481))
+    );
+    assert_eq!(run("octree")["nodes"].as_u64(), Some(52_368));
+    assert_eq!(run("dense")["nodes"].as_u64(), Some(64 * 64 * 64));
+    let huge = dir.path().join("huge.nrrd");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .args([
+            "voxelize", scene, "--res", "40000", "--store", "octree", "-o",
+        ])
+        .arg(&huge)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--max-memory"));
+    assert!(!huge.exists());
+}

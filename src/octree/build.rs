@@ -40,7 +40,13 @@ struct Level<N> {
 /// The bottom-up builder: cell layers in, decided nodes out to `merge`.
 pub struct Pyramid<M: Merge> {
     depth: u32,
+    /// Levels 0..depth of nodes; the deepest level is kept as bytes in `cells`.
     levels: Vec<Level<M::Node>>,
+    /// Two layers of cell bytes (side² each).
+    cells: Vec<u8>,
+    cells_filled: usize,
+    /// Parent layers made from cell layers so far.
+    cells_z: u32,
     pub merge: M,
     /// Cell layers received.
     layers: usize,
@@ -52,7 +58,8 @@ pub struct Pyramid<M: Merge> {
 impl<M: Merge> Pyramid<M> {
     /// A pyramid over a side of 2^depth cells.
     pub fn new(depth: u32, merge: M) -> Pyramid<M> {
-        let levels = (0..=depth)
+        let side = 1usize << depth;
+        let levels = (0..depth)
             .map(|l| {
                 let n = 1usize << l;
                 Level {
@@ -68,6 +75,9 @@ impl<M: Merge> Pyramid<M> {
         Pyramid {
             depth,
             levels,
+            cells: vec![0; 2 * side * side],
+            cells_filled: 0,
+            cells_z: 0,
             merge,
             layers: 0,
             root: None,
@@ -78,22 +88,45 @@ impl<M: Merge> Pyramid<M> {
     /// Bytes the pyramid holds for a side of 2^depth cells with nodes of `node` bytes.
     pub fn bytes(depth: u32, node: usize) -> u64 {
         let s = 1u64 << depth;
-        (2 * s * s * 4 / 3 + 1) * node as u64
+        2 * s * s + (2 * s * s / 3 + 1) * node as u64
     }
 
     /// The next layer of cells (side² case bytes, X fastest).
     pub fn push_cells(&mut self, cells: &[u8]) -> Result<(), String> {
         let d = self.depth as usize;
-        if self.layers >= 1 << d {
-            return Err(format!("more than {} cell layers", 1usize << d));
+        let n2 = 1usize << (2 * d);
+        if self.layers >= 1 << d || cells.len() < n2 {
+            return Err(format!(
+                "cell layer {} of {} cells: not a layer of this octree",
+                self.layers,
+                cells.len()
+            ));
         }
         self.layers += 1;
-        let lv = &mut self.levels[d];
-        let base = lv.filled * lv.n * lv.n;
-        for (slot, &v) in lv.buf[base..base + lv.n * lv.n].iter_mut().zip(cells) {
-            *slot = self.merge.cell(v);
+        if d == 0 {
+            self.root = Some(self.merge.cell(cells[0]));
+            return Ok(());
         }
-        self.layer_done(d)
+        let at = self.cells_filled * n2;
+        self.cells[at..at + n2].copy_from_slice(&cells[..n2]);
+        self.cells_filled += 1;
+        if self.cells_filled < 2 {
+            return Ok(());
+        }
+        self.cells_filled = 0;
+        let par = &mut self.levels[d - 1];
+        let base = par.filled * par.n * par.n;
+        let out = &mut par.buf[base..base + par.n * par.n];
+        join_cells(
+            &mut self.merge,
+            &mut self.internal,
+            &self.cells,
+            d,
+            self.cells_z,
+            out,
+        )?;
+        self.cells_z += 1;
+        self.layer_done(d - 1)
     }
 
     /// Level l has one more layer: at two, join them into a layer of level l − 1.
@@ -167,4 +200,55 @@ fn decide<M: Merge>(
     *internal += 1;
     let k = key::key(p[0] as u32, p[1] as u32, p[2] as u32, level as u32);
     merge.internal(k, kids)
+}
+
+/// Parents at level d − 1 of the two cell layers in `cells` (layer pz of parents), into
+/// `out`. Runs of 8 cells equal to 0 or to 255 on all four rows make 4 leaves at once.
+fn join_cells<M: Merge>(
+    merge: &mut M,
+    internal: &mut u64,
+    cells: &[u8],
+    d: usize,
+    pz: u32,
+    out: &mut [M::Node],
+) -> Result<(), String> {
+    let s = 1usize << d;
+    let np = s / 2;
+    let word = |at: usize| {
+        let mut b = [0u8; 8];
+        b.copy_from_slice(&cells[at..at + 8]);
+        u64::from_le_bytes(b)
+    };
+    for py in 0..np {
+        // Rows of child codes dz·2 + dy.
+        let rows = [
+            2 * py * s,
+            (2 * py + 1) * s,
+            (2 * py + s) * s,
+            (2 * py + 1 + s) * s,
+        ];
+        let mut px = 0;
+        while px < np {
+            if px + 4 <= np {
+                let w = word(rows[0] + 2 * px);
+                if (w == 0 || w == u64::MAX) && rows[1..].iter().all(|&r| word(r + 2 * px) == w) {
+                    for o in &mut out[py * np + px..py * np + px + 4] {
+                        *o = merge.leaf(w as u8);
+                    }
+                    px += 4;
+                    continue;
+                }
+            }
+            let v: [u8; 8] = std::array::from_fn(|c| cells[rows[c >> 1] + 2 * px + (c & 1)]);
+            out[py * np + px] = if (v[0] == 0 || v[0] == 255) && v.iter().all(|&x| x == v[0]) {
+                merge.leaf(v[0])
+            } else {
+                *internal += 1;
+                let kids = v.map(|x| merge.cell(x));
+                merge.internal(key::key(px as u32, py as u32, pz, d as u32 - 1), kids)?
+            };
+            px += 1;
+        }
+    }
+    Ok(())
 }

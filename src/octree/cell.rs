@@ -99,7 +99,25 @@ pub struct CellLayers {
     /// Block codes of the previous slice (all 0 before slice 0).
     prev: Vec<u8>,
     cur: Vec<u8>,
+    /// Rows whose block codes are all 0, in `prev` and `cur`.
+    prev_zero: Vec<bool>,
+    cur_zero: Vec<bool>,
     layer: Vec<u8>,
+}
+
+/// Voxel row y of a slice as 0/1 into `out` (empty past the slice); true when all empty.
+fn occupancy_row(slice: &[u8], w: usize, h: usize, y: usize, out: &mut [u8]) -> bool {
+    out.fill(0);
+    if y >= h {
+        return true;
+    }
+    let row = &slice[y * w..y * w + w.min(out.len())];
+    let mut any = 0u8;
+    for (o, &v) in out.iter_mut().zip(row) {
+        *o = u8::from(v != 0);
+        any |= v;
+    }
+    any == 0
 }
 
 impl CellLayers {
@@ -110,6 +128,8 @@ impl CellLayers {
             side,
             prev: vec![0; n],
             cur: vec![0; n],
+            prev_zero: vec![true; side],
+            cur_zero: vec![true; side],
             layer: vec![0; n],
         }
     }
@@ -121,37 +141,52 @@ impl CellLayers {
 
     /// The next cell layer from the next voxel slice: colour codes (0 = empty), `w` per row,
     /// X fastest (a [`crate::voxelize::Volume`] slice). Voxels beyond `w` or the slice's rows
-    /// are empty; slices wider than the side are cut.
+    /// are empty; slices wider than the side are cut. Rows with no voxel in this slice nor
+    /// the previous one are cleared without looking at each cell.
     pub fn next(&mut self, slice: &[u8], w: usize) -> &[u8] {
         let s = self.side;
         std::mem::swap(&mut self.prev, &mut self.cur);
+        std::mem::swap(&mut self.prev_zero, &mut self.cur_zero);
         let h = slice.len().checked_div(w).unwrap_or(0);
-        let row = |y: usize, out: &mut [u8]| {
-            out.fill(0);
-            if y < h {
-                for (o, &v) in out.iter_mut().zip(&slice[y * w..y * w + w.min(s)]) {
-                    *o = u8::from(v != 0);
-                }
-            }
-        };
         let (mut below, mut here) = (vec![0u8; s], vec![0u8; s]);
+        let mut below_zero = true;
         for y in 0..s {
             std::mem::swap(&mut below, &mut here);
-            row(y, &mut here);
-            if y == 0 {
-                below.fill(0);
+            let here_zero = occupancy_row(slice, w, h, y, &mut here);
+            let at = y * s..(y + 1) * s;
+            if here_zero && below_zero {
+                self.cur[at.clone()].fill(0);
+                self.cur_zero[y] = true;
+                if self.prev_zero[y] {
+                    self.layer[at].fill(0);
+                } else {
+                    for (c, &p) in self.layer[at.clone()].iter_mut().zip(&self.prev[at]) {
+                        *c = LOW[p as usize];
+                    }
+                }
+            } else {
+                self.cur_zero[y] = false;
+                self.mixed_row(y, &below, &here);
             }
-            let mut left = 0u8;
-            for x in 0..s {
-                let right = below[x] | here[x] << 1;
-                self.cur[y * s + x] = Self::code(left, right);
-                left = right;
-            }
-        }
-        for ((c, &p), &q) in self.layer.iter_mut().zip(&self.prev).zip(&self.cur) {
-            *c = LOW[p as usize] | HIGH[q as usize];
+            below_zero = here_zero;
         }
         &self.layer
+    }
+
+    /// Block codes and cell bytes of row y from the voxel rows y−1 (`below`) and y.
+    fn mixed_row(&mut self, y: usize, below: &[u8], here: &[u8]) {
+        let s = self.side;
+        let cur = &mut self.cur[y * s..(y + 1) * s];
+        let prev = &self.prev[y * s..(y + 1) * s];
+        let out = &mut self.layer[y * s..(y + 1) * s];
+        let mut left = 0u8;
+        for x in 0..s {
+            let right = below[x] | here[x] << 1;
+            let q = Self::code(left, right);
+            cur[x] = q;
+            out[x] = LOW[prev[x] as usize] | HIGH[q as usize];
+            left = right;
+        }
     }
 
     /// The layer after the last slice (an empty slice), for grids shorter than the side.
