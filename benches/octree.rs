@@ -13,7 +13,7 @@ use std::time::Instant;
 
 use csgpix::blist::BlistEval;
 use csgpix::octree::mc::marching_cubes;
-use csgpix::octree::{from_volume, StoreKind, VoxelStore};
+use csgpix::octree::{from_volume, StoreKind};
 use csgpix::scad::parse_csg;
 use csgpix::voxelize::{voxelize, Grid, Route, Slicer, Volume};
 use glam::DVec3;
