@@ -8,6 +8,7 @@ pub mod display_list;
 pub mod evaluate;
 pub mod float;
 pub mod nrrd;
+pub mod octree;
 pub mod output;
 pub mod palette;
 pub mod panels;

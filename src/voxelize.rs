@@ -526,79 +526,31 @@ pub fn voxelize(
     tick: &(dyn Fn() + Sync),
 ) -> Result<(Volume, Work), String> {
     use rayon::prelude::*;
-    let prims = slicer.lists.len();
-    let source = match route {
-        Route::Array { cycle } => Source::Array {
-            cycle,
-            set: set.clone(),
-            footprints: match slicer.panel {
-                Some(_) => Some(crate::requirements::footprints(slicer)?),
-                None => None,
-            },
-        },
-        Route::Intervals => Source::ranges(
-            (0..prims)
-                .into_par_iter()
-                .map(|p| word_ranges(slicer, p))
-                .collect::<Result<_, _>>()?,
-            slicer.grid.dims[2],
-        ),
-        Route::Float => Source::ranges(
-            (0..prims)
-                .into_par_iter()
-                .map(|p| float_ranges(slicer, p))
-                .collect(),
-            slicer.grid.dims[2],
-        ),
-    };
-    let cfg = slicer.config();
+    let source = source_for(slicer, route, &set)?;
+    let mut work = counted_work(slicer, &set)?;
     let [nx, ny, nz] = slicer.grid.dims;
-    let mut cycles = 0;
-    for p in 0..prims {
-        cycles +=
-            rtl_model::array::program_cycles(&cfg, &set, &slice_ops(slicer, p, 0)?) * nz as u64;
-    }
-    let full_pixel_clocks = cycles * (nx * ny) as u64;
     // Chunks of consecutive slabs, a few per thread, so masks can be swept forward.
     let chunk = (nz / (4 * rayon::current_num_threads())).max(1);
     let chunks: Vec<Chunk> = (0..nz.div_ceil(chunk))
         .into_par_iter()
         .map(|c| {
-            let (mut out, mut simulated) = (vec![], 0);
-            source.sweep(
+            slab_chunk(
                 slicer,
+                &source,
+                eval,
+                tick,
                 c * chunk,
                 ((c + 1) * chunk).min(nz),
-                &mut simulated,
-                &mut |_, masks| {
-                    let mut counts = OpCounts::default();
-                    let labels = eval.eval(masks, &mut counts);
-                    let colours = labels
-                        .iter()
-                        .map(|&l| match l {
-                            0 => 0,
-                            l => slicer.colours[l as usize - 1],
-                        })
-                        .collect();
-                    tick();
-                    out.push((colours, counts));
-                },
-            )?;
-            Ok((out, simulated))
+            )
         })
         .collect::<Result<_, String>>()?;
-    let mut work = Work {
-        cycles,
-        frames: (prims * nz) as u64,
-        simulated_pixel_clocks: chunks.iter().map(|c| c.1).sum(),
-        full_pixel_clocks,
-        ..Work::default()
-    };
-    let slices = chunks.into_iter().flat_map(|c| c.0);
     let mut voxels = Vec::with_capacity(nx * ny * nz);
-    for (colours, counts) in slices {
-        work.ops += counts;
-        voxels.extend_from_slice(&colours);
+    for (slices, simulated) in chunks {
+        work.simulated_pixel_clocks += simulated;
+        for (colours, counts) in slices {
+            work.ops += counts;
+            voxels.extend_from_slice(&colours);
+        }
     }
     work.filled = voxels.iter().filter(|&&v| v != 0).count();
     Ok((
@@ -617,4 +569,122 @@ pub fn memory_estimate(grid: &Grid, prims: usize, threads: usize) -> u64 {
     let pixels = nx * ny;
     let (prims, threads) = (prims as u64, threads as u64);
     pixels * nz + prims * pixels * 8 + threads * pixels * (prims / 8 + 1 + 8)
+}
+
+/// Receives slice k's colour codes ([`voxelize_streaming`]); an error stops the run.
+pub type SliceSink<'a> = dyn FnMut(usize, &[u8]) -> Result<(), String> + 'a;
+
+/// [`voxelize`] handing each slice's colour codes to `sink` in order of k (0, 1, …) instead of
+/// assembling a volume, for stores built slice by slice (seed 000 §4.3.4; `src/octree`).
+/// Slabs are voxelized in parallel a batch at a time (a few slabs per thread), so at most a
+/// batch of slices is held; the slices, and the returned [`Work`], are those of [`voxelize`]
+/// (tested). `sink` may stop the run with an error.
+pub fn voxelize_streaming(
+    slicer: &Slicer,
+    route: Route,
+    set: EquationSet,
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    sink: &mut SliceSink,
+) -> Result<Work, String> {
+    use rayon::prelude::*;
+    let source = source_for(slicer, route, &set)?;
+    let mut work = counted_work(slicer, &set)?;
+    let nz = slicer.grid.dims[2];
+    let threads = rayon::current_num_threads();
+    let chunk = (nz / (4 * threads)).clamp(1, 8);
+    let batch = chunk * threads;
+    for start in (0..nz).step_by(batch) {
+        let end = (start + batch).min(nz);
+        let chunks: Vec<Chunk> = (start..end)
+            .step_by(chunk)
+            .collect::<Vec<_>>()
+            .into_par_iter()
+            .map(|a| slab_chunk(slicer, &source, eval, tick, a, (a + chunk).min(end)))
+            .collect::<Result<_, String>>()?;
+        let slices = chunks.into_iter().flat_map(|(s, sim)| {
+            work.simulated_pixel_clocks += sim;
+            s
+        });
+        for (k, (colours, counts)) in (start..).zip(slices) {
+            work.ops += counts;
+            work.filled += colours.iter().filter(|&&v| v != 0).count();
+            sink(k, &colours)?;
+        }
+    }
+    Ok(work)
+}
+
+/// Where a run's per-slab masks come from, by route.
+fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source, String> {
+    use rayon::prelude::*;
+    let (prims, nz) = (slicer.lists.len(), slicer.grid.dims[2]);
+    Ok(match route {
+        Route::Array { cycle } => Source::Array {
+            cycle,
+            set: set.clone(),
+            footprints: match slicer.panel {
+                Some(_) => Some(crate::requirements::footprints(slicer)?),
+                None => None,
+            },
+        },
+        Route::Intervals => Source::ranges(
+            (0..prims)
+                .into_par_iter()
+                .map(|p| word_ranges(slicer, p))
+                .collect::<Result<_, _>>()?,
+            nz,
+        ),
+        Route::Float => Source::ranges(
+            (0..prims)
+                .into_par_iter()
+                .map(|p| float_ranges(slicer, p))
+                .collect(),
+            nz,
+        ),
+    })
+}
+
+/// The clocks and frames of a run, counted from the programs: the same on every route.
+fn counted_work(slicer: &Slicer, set: &EquationSet) -> Result<Work, String> {
+    let cfg = slicer.config();
+    let [nx, ny, nz] = slicer.grid.dims;
+    let prims = slicer.lists.len();
+    let mut cycles = 0;
+    for p in 0..prims {
+        cycles +=
+            rtl_model::array::program_cycles(&cfg, set, &slice_ops(slicer, p, 0)?) * nz as u64;
+    }
+    Ok(Work {
+        cycles,
+        frames: (prims * nz) as u64,
+        full_pixel_clocks: cycles * (nx * ny) as u64,
+        ..Work::default()
+    })
+}
+
+/// Slabs a..b: colour codes and counts of each, and the pixel-clocks simulated.
+fn slab_chunk(
+    slicer: &Slicer,
+    source: &Source,
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    a: usize,
+    b: usize,
+) -> Result<Chunk, String> {
+    let (mut out, mut simulated) = (vec![], 0);
+    source.sweep(slicer, a, b, &mut simulated, &mut |_, masks| {
+        let mut counts = OpCounts::default();
+        let colours = eval
+            .eval(masks, &mut counts)
+            .iter()
+            .map(|&l| match l {
+                0 => 0,
+                l => slicer.colours[l as usize - 1],
+            })
+            .collect();
+        tick();
+        out.push((colours, counts));
+    })?;
+    Ok((out, simulated))
 }

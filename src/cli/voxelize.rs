@@ -8,12 +8,15 @@ use std::time::Instant;
 use clap::ValueEnum;
 use csgpix::blist::{BlistEval, BlistTable};
 use csgpix::evaluate::{StackEval, TreeEval};
+use csgpix::octree::{self, StoreKind};
 use csgpix::output::write_atomic;
 use csgpix::palette::rgb;
 use csgpix::scad::parse_csg;
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
-use csgpix::voxelize::{memory_estimate, voxelize, Grid, Route, Slicer, Volume, Work};
+use csgpix::voxelize::{
+    memory_estimate, voxelize, voxelize_streaming, Grid, Route, Slicer, Volume, Work,
+};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::{Equations, WordFormat};
@@ -74,9 +77,52 @@ pub struct Args {
     /// Refuse runs needing more memory than this many MiB.
     #[arg(long, default_value_t = 4096)]
     max_memory: u64,
+    /// Also build a voxel store of the volume's dual cells, slice by slice while voxelizing
+    /// (seed 000 Ch. 4; docs/octree.md), and report its nodes, bytes and build time.
+    #[arg(long, value_enum)]
+    store: Option<StoreArg>,
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
+enum StoreArg {
+    /// Optimized hash-based octree: leaves only (seed 000 §4.3.4).
+    Octree,
+    /// Pointer-based octree (§4.3.2).
+    Pointer,
+    /// Plain hash-based octree: every node (§4.3.3).
+    Hash,
+    /// Dense grid of cells.
+    Dense,
+}
+
+impl StoreArg {
+    fn kind(self) -> StoreKind {
+        match self {
+            StoreArg::Octree => StoreKind::Octree,
+            StoreArg::Pointer => StoreKind::Pointer,
+            StoreArg::Hash => StoreKind::Hash,
+            StoreArg::Dense => StoreKind::Dense,
+        }
+    }
+}
+
+/// The store `--store` built.
+#[derive(Serialize)]
+struct StoreReport {
+    kind: StoreKind,
+    /// Octree levels below the root (cell grid side 2^depth).
+    depth: u32,
+    side: usize,
+    /// Nodes held (pointer and hash: 8·I + 1 with the root; octree: 7·I + 1; dense: cells).
+    nodes: usize,
+    internal_nodes: usize,
+    bytes: usize,
+    bytes_per_node: f64,
+    /// Time spent in the store's builder (slices in, store out), voxelization excluded.
+    build_seconds: f64,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
@@ -165,6 +211,8 @@ struct Report {
     state_bits_per_voxel: usize,
     #[serde(flatten)]
     work: Work,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    store: Option<StoreReport>,
     /// Hardware time at the thesis's 10 MHz clock.
     hardware_seconds: f64,
     wall_seconds: f64,
@@ -180,7 +228,10 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     }
     .map_err(|e| format!("{}:1:1: {e}", a.scene.display()))?;
     let threads = a.threads.unwrap_or_else(rayon::current_num_threads).max(1);
-    let need = memory_estimate(&grid, scene.solids.len(), threads);
+    let mut need = memory_estimate(&grid, scene.solids.len(), threads);
+    if let Some(st) = a.store {
+        need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
+    }
     if need > a.max_memory << 20 {
         return Err(format!(
             "this run needs about {} MiB, over --max-memory {}: lower --res or raise the limit",
@@ -205,8 +256,15 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         .num_threads(threads)
         .build()
         .map_err(|e| e.to_string())?;
-    let (volume, work) =
-        pool.install(|| voxelize(&slicer, route, set, eval.as_ref(), &|| bar.inc(1)))?;
+    let tick = || bar.inc(1);
+    let budget = (a.max_memory << 20).saturating_sub(need);
+    let (volume, work, store) = match a.store {
+        None => pool
+            .install(|| voxelize(&slicer, route, set, eval.as_ref(), &tick))
+            .map(|(v, w)| (v, w, None))?,
+        Some(st) => pool
+            .install(|| with_store(&slicer, route, set, eval.as_ref(), &tick, st.kind(), budget))?,
+    };
     bar.finish_and_clear();
     let wall = t0.elapsed().as_secs_f64();
     if let Some(dir) = &a.slices {
@@ -217,7 +275,45 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     }
     let comment = format!("csgpix voxelize {}", a.scene.display());
     csgpix::nrrd::write(&a.out, &grid, &volume.voxels, &comment)?;
-    report(&a, &scene, &slicer, eval.as_ref(), work, wall)
+    report(&a, &scene, &slicer, eval.as_ref(), (work, store), wall)
+}
+
+/// Voxelizes while building the store from each slice as it comes (`--store`); the store's
+/// budget is what `--max-memory` leaves.
+fn with_store(
+    slicer: &Slicer,
+    route: Route,
+    set: rtl_model::EquationSet,
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    kind: StoreKind,
+    budget: u64,
+) -> Result<(Volume, Work, Option<StoreReport>), String> {
+    let dims = slicer.grid.dims;
+    let mut b = octree::builder(kind, dims, budget)?;
+    let mut voxels = Vec::with_capacity(dims.iter().product());
+    let mut build = std::time::Duration::ZERO;
+    let work = voxelize_streaming(slicer, route, set, eval, tick, &mut |k, s| {
+        voxels.extend_from_slice(s);
+        let t = Instant::now();
+        let r = b.push(k, s);
+        build += t.elapsed();
+        r
+    })?;
+    let t = Instant::now();
+    let st = b.finish()?;
+    build += t.elapsed();
+    let r = StoreReport {
+        kind,
+        depth: st.depth(),
+        side: st.side(),
+        nodes: st.node_count(),
+        internal_nodes: st.internal_count(),
+        bytes: st.bytes(),
+        bytes_per_node: st.bytes() as f64 / st.node_count().max(1) as f64,
+        build_seconds: build.as_secs_f64(),
+    };
+    Ok((Volume { dims, voxels }, work, Some(r)))
 }
 
 fn evaluator(e: EvalArg, scene: &CsgScene) -> Box<dyn SliceEval> {
@@ -248,7 +344,7 @@ fn report(
     scene: &CsgScene,
     slicer: &Slicer,
     eval: &dyn SliceEval,
-    work: Work,
+    (work, store): (Work, Option<StoreReport>),
     wall: f64,
 ) -> Result<ExitCode, String> {
     let pixels = slicer.grid.slice_len();
@@ -275,6 +371,7 @@ fn report(
         blist_rows: table.rows.len(),
         state_bits_per_voxel: eval.state_bytes(pixels) * 8 / pixels.max(1),
         work,
+        store,
         hardware_seconds: work.cycles as f64 * 1e-7,
         wall_seconds: wall,
     };
@@ -302,6 +399,16 @@ fn report(
                 work.simulated_pixel_clocks,
                 work.full_pixel_clocks,
                 100.0 * work.simulated_pixel_clocks as f64 / work.full_pixel_clocks.max(1) as f64
+            );
+        }
+        if let Some(st) = &r.store {
+            println!(
+                "store {}: {} nodes ({} internal), {} bytes, built in {:.3} s",
+                st.kind.name(),
+                st.nodes,
+                st.internal_nodes,
+                st.bytes,
+                st.build_seconds
             );
         }
     }

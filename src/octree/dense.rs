@@ -1,0 +1,111 @@
+//! The dense grid: one case byte per cell (seed 000 §3.1.1.5's `CellData[res³]`), the
+//! baseline every octree is checked against.
+
+use super::cell::CellLayers;
+use super::key::{self, Key};
+use super::{check_order, StoreBuilder, StoreKind, VoxelStore};
+
+/// side³ cells, X fastest, then Y, then Z.
+#[derive(Clone, Debug)]
+pub struct DenseGrid {
+    depth: u32,
+    cells: Vec<u8>,
+}
+
+/// Cell layers appended as they come.
+pub struct Builder {
+    layers: CellLayers,
+    cells: Vec<u8>,
+    width: usize,
+    next: usize,
+    depth: u32,
+}
+
+impl Builder {
+    pub fn new(depth: u32, width: usize) -> Builder {
+        let side = 1usize << depth;
+        Builder {
+            layers: CellLayers::new(side),
+            cells: Vec::with_capacity(side * side * side),
+            width,
+            next: 0,
+            depth,
+        }
+    }
+}
+
+impl StoreBuilder for Builder {
+    fn push(&mut self, k: usize, slice: &[u8]) -> Result<(), String> {
+        check_order(k, self.next, self.depth)?;
+        self.next += 1;
+        let layer = self.layers.next(slice, self.width);
+        self.cells.extend_from_slice(layer);
+        Ok(())
+    }
+
+    fn finish(mut self: Box<Self>) -> Result<Box<dyn VoxelStore>, String> {
+        while self.next < 1 << self.depth {
+            self.next += 1;
+            let layer = self.layers.next_empty();
+            self.cells.extend_from_slice(layer);
+        }
+        Ok(Box::new(DenseGrid {
+            depth: self.depth,
+            cells: std::mem::take(&mut self.cells),
+        }))
+    }
+}
+
+impl DenseGrid {
+    fn index(&self, x: u32, y: u32, z: u32) -> Option<usize> {
+        let s = 1usize << self.depth;
+        let (x, y, z) = (x as usize, y as usize, z as usize);
+        (x < s && y < s && z < s).then_some((z * s + y) * s + x)
+    }
+}
+
+impl VoxelStore for DenseGrid {
+    fn kind(&self) -> StoreKind {
+        StoreKind::Dense
+    }
+
+    fn depth(&self) -> u32 {
+        self.depth
+    }
+
+    fn cell(&self, x: u32, y: u32, z: u32) -> u8 {
+        self.index(x, y, z).map_or(0, |i| self.cells[i])
+    }
+
+    fn node_count(&self) -> usize {
+        self.cells.len()
+    }
+
+    fn internal_count(&self) -> usize {
+        0
+    }
+
+    fn bytes(&self) -> usize {
+        self.cells.capacity()
+    }
+
+    fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8)) {
+        let s = 1usize << self.depth;
+        for (i, &v) in self.cells.iter().enumerate() {
+            let (x, y, z) = (i % s, i / s % s, i / (s * s));
+            f(key::key(x as u32, y as u32, z as u32, self.depth), v);
+        }
+    }
+
+    fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
+        let s = 1usize << self.depth;
+        for (i, &v) in self.cells.iter().enumerate() {
+            if v != 0 && v != 255 {
+                f(
+                    [(i % s) as u32, (i / s % s) as u32, (i / (s * s)) as u32],
+                    v,
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,242 @@
+//! Voxel stores for sculpting (seed 000 Ch. 4): the optimized hash-based octree of §4.3.4 and
+//! its baselines, the pointer-based octree (§4.3.2), the plain hash-based octree (§4.3.3)
+//! and a dense grid, behind one trait so that the bench and sculpting can swap them.
+//!
+//! Every store holds cells, not voxels: cell (x, y, z) holds the Marching Cubes case byte of
+//! its dual cell, whose corners are the voxels x−1..x, y−1..y, z−1..z ([`cell`], §3.1.1.5).
+//! A voxel is bit 6 (corner V6 = (x, y, z)) of the cell with the same index. The cell grid is
+//! a cube of side 2^depth ≥ the volume's largest side; voxels beyond the volume are empty.
+//!
+//! The three octrees are built bottom-up, level by level, straight from voxel slices in
+//! order of z ([`build`]); none of them, nor the dense grid's builder, needs the volume.
+//! See `docs/octree.md`.
+
+pub mod build;
+pub mod cell;
+pub mod dense;
+pub mod key;
+pub mod mc;
+pub mod mc_tables;
+pub mod optimized;
+pub mod plain;
+pub mod pointer;
+pub mod table;
+
+use crate::voxelize::Volume;
+use key::Key;
+
+pub use dense::DenseGrid;
+pub use optimized::OptimizedOctree;
+pub use plain::PlainHashOctree;
+pub use pointer::PointerOctree;
+
+/// Which store.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum StoreKind {
+    /// Leaves only, in a hash table (seed 000 §4.3.4).
+    Octree,
+    /// Nodes with child pointers (§4.3.2).
+    Pointer,
+    /// Every node, in a hash table (§4.3.3).
+    Hash,
+    /// One byte per cell.
+    Dense,
+}
+
+impl StoreKind {
+    pub const ALL: [StoreKind; 4] = [
+        StoreKind::Octree,
+        StoreKind::Pointer,
+        StoreKind::Hash,
+        StoreKind::Dense,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            StoreKind::Octree => "octree",
+            StoreKind::Pointer => "pointer",
+            StoreKind::Hash => "hash",
+            StoreKind::Dense => "dense",
+        }
+    }
+}
+
+/// A store of cells (seed 000 §3.1.1.5) that sculpting and Marching Cubes can use.
+pub trait VoxelStore: Send + Sync {
+    fn kind(&self) -> StoreKind;
+    /// Levels below the root: the cell grid has side 2^depth.
+    fn depth(&self) -> u32;
+    /// Cells per axis.
+    fn side(&self) -> usize {
+        1 << self.depth()
+    }
+    /// The case byte of cell (x, y, z); 0 outside the grid.
+    fn cell(&self, x: u32, y: u32, z: u32) -> u8;
+    /// Is voxel (x, y, z) filled (bit 6 of its cell)?
+    fn get(&self, x: u32, y: u32, z: u32) -> bool {
+        self.cell(x, y, z) >> cell::SELF_BIT & 1 == 1
+    }
+    /// Nodes stored: for the octrees every node the structure holds (the root included for
+    /// the pointer and plain hash trees), for the dense grid its cells.
+    fn node_count(&self) -> usize;
+    /// Internal nodes of the octree (the root included when it has children); 0 for the
+    /// dense grid.
+    fn internal_count(&self) -> usize;
+    /// Bytes allocated for the structure.
+    fn bytes(&self) -> usize;
+    /// Every leaf: its key and value (a coarse leaf's value is 0 or 255).
+    fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8));
+    /// Every cell with a surface (byte not 0 nor 255), with its coordinates.
+    fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8));
+}
+
+/// Takes voxel slices in order of z and builds a store.
+pub trait StoreBuilder {
+    /// Voxel slice `k` (colour codes, 0 empty, X fastest, the volume's width per row).
+    fn push(&mut self, k: usize, slice: &[u8]) -> Result<(), String>;
+    /// The store, once every slice is in (missing slices up to the side are empty).
+    fn finish(self: Box<Self>) -> Result<Box<dyn VoxelStore>, String>;
+}
+
+/// Levels of the octree over a volume of `dims`: the side is the next power of two.
+pub fn depth_for(dims: [usize; 3]) -> Result<u32, String> {
+    let side = dims.iter().copied().max().unwrap_or(1).max(1);
+    let depth = side.next_power_of_two().trailing_zeros();
+    if depth > key::MAX_DEPTH {
+        return Err(format!(
+            "a side of {side} voxels needs {depth} octree levels; at most {} fit a key",
+            key::MAX_DEPTH
+        ));
+    }
+    Ok(depth)
+}
+
+/// Bytes a build needs before its nodes: the slice and cell layers, the pyramid, and for
+/// the dense grid its cells. The octrees' nodes are counted as they are made, against the
+/// budget given to [`builder`].
+pub fn memory_estimate(kind: StoreKind, dims: [usize; 3]) -> Result<u64, String> {
+    let depth = depth_for(dims)?;
+    let side = 1u64 << depth;
+    let layers = cell::CellLayers::bytes(side as usize);
+    Ok(match kind {
+        StoreKind::Dense => layers + side * side * side,
+        StoreKind::Pointer => layers + build::Pyramid::<pointer::Links>::bytes(depth, 16),
+        StoreKind::Octree | StoreKind::Hash => {
+            layers + build::Pyramid::<plain::All>::bytes(depth, 2)
+        }
+    })
+}
+
+/// A builder for a volume of `dims` that refuses to hold more than `budget` bytes.
+pub fn builder(
+    kind: StoreKind,
+    dims: [usize; 3],
+    budget: u64,
+) -> Result<Box<dyn StoreBuilder>, String> {
+    let need = memory_estimate(kind, dims)?;
+    if need > budget {
+        return Err(over_budget(need, budget));
+    }
+    let depth = depth_for(dims)?;
+    Ok(match kind {
+        StoreKind::Dense => Box::new(dense::Builder::new(depth, dims[0])),
+        StoreKind::Octree => Box::new(build_tree(
+            depth,
+            dims[0],
+            optimized::Leaves::new(depth, budget),
+        )),
+        StoreKind::Hash => Box::new(build_tree(depth, dims[0], plain::All::new(depth, budget))),
+        StoreKind::Pointer => Box::new(build_tree(depth, dims[0], pointer::Links::new(budget))),
+    })
+}
+
+/// The error of a store over its memory budget.
+pub fn over_budget(need: u64, budget: u64) -> String {
+    format!(
+        "the voxel store needs more than {} MiB (limit {} MiB): lower --res or raise --max-memory",
+        need >> 20,
+        budget >> 20
+    )
+}
+
+/// A store built from a whole volume, slice by slice.
+pub fn from_volume(
+    kind: StoreKind,
+    v: &Volume,
+    budget: u64,
+) -> Result<Box<dyn VoxelStore>, String> {
+    let mut b = builder(kind, v.dims, budget)?;
+    let n = v.dims[0] * v.dims[1];
+    for (k, s) in v.voxels.chunks(n.max(1)).enumerate().take(v.dims[2]) {
+        b.push(k, s)?;
+    }
+    b.finish()
+}
+
+/// What turns a [`build::Pyramid`]'s result into a store.
+pub trait Finish: build::Merge + Sized {
+    type Store: VoxelStore + 'static;
+    fn finish(self, root: Self::Node, internal: u64, depth: u32) -> Result<Self::Store, String>;
+}
+
+/// The octree builder: cell layers into a pyramid.
+pub struct TreeBuilder<M: Finish> {
+    cells: cell::CellLayers,
+    pyramid: build::Pyramid<M>,
+    width: usize,
+    next: usize,
+    depth: u32,
+}
+
+pub fn build_tree<M: Finish>(depth: u32, width: usize, merge: M) -> TreeBuilder<M> {
+    TreeBuilder {
+        cells: cell::CellLayers::new(1 << depth),
+        pyramid: build::Pyramid::new(depth, merge),
+        width,
+        next: 0,
+        depth,
+    }
+}
+
+/// Slices must come in order, and not past the side.
+fn check_order(k: usize, next: usize, depth: u32) -> Result<(), String> {
+    if k != next {
+        return Err(format!(
+            "voxel slice {k} arrived, slice {next} was expected"
+        ));
+    }
+    if k >= 1 << depth {
+        return Err(format!(
+            "voxel slice {k} is past the octree's side {}",
+            1usize << depth
+        ));
+    }
+    Ok(())
+}
+
+impl<M: Finish> StoreBuilder for TreeBuilder<M> {
+    fn push(&mut self, k: usize, slice: &[u8]) -> Result<(), String> {
+        check_order(k, self.next, self.depth)?;
+        self.next += 1;
+        let layer = self.cells.next(slice, self.width);
+        self.pyramid.push_cells(layer)
+    }
+
+    fn finish(self: Box<Self>) -> Result<Box<dyn VoxelStore>, String> {
+        Ok(Box::new(self.finish_store()?))
+    }
+}
+
+impl<M: Finish> TreeBuilder<M> {
+    /// The store itself (not boxed), once every slice is in.
+    pub fn finish_store(mut self) -> Result<M::Store, String> {
+        while self.next < 1 << self.depth {
+            self.next += 1;
+            let layer = self.cells.next_empty();
+            self.pyramid.push_cells(layer)?;
+        }
+        let (merge, root, internal) = self.pyramid.finish()?;
+        merge.finish(root, internal, self.depth)
+    }
+}

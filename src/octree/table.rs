@@ -1,0 +1,240 @@
+//! The hash table of the hash-based octrees (seed 000 §4.3.3, Eq. 4.8, Fig. 4.8).
+//!
+//! 2^n buckets, `hash(key) = key mod 2^n` (the key's low n bits), separate chaining with new
+//! entries appended at the end of their bucket's chain. Entries live in one vector, chained by
+//! index, so that a scan over every entry (global Marching Cubes) is a linear walk and a
+//! lookup walks one short chain. The table is sized once, from the node count of the build
+//! (the thesis sizes it "according to the resolution"; it gives no n).
+
+use super::key::Key;
+
+/// End of a chain.
+const NIL: u32 = u32::MAX;
+
+/// One node: its key, value (a cell's case byte, or 0 / 255 for a homogeneous leaf) and, for
+/// the plain hash-based octree, whether it is an internal node.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Entry {
+    pub key: Key,
+    next: u32,
+    pub val: u8,
+    pub internal: bool,
+}
+
+/// A chained hash table of octree nodes keyed by location key.
+#[derive(Clone, Debug)]
+pub struct KeyTable {
+    heads: Vec<u32>,
+    /// Last entry of each chain, kept while building in order (then freed).
+    tails: Vec<u32>,
+    entries: Vec<Entry>,
+    mask: u64,
+}
+
+impl KeyTable {
+    /// A table of 2^n ≥ `expected` buckets (at least 8, the thesis's Fig. 4.8 size).
+    pub fn with_capacity(expected: usize) -> KeyTable {
+        let buckets = expected.next_power_of_two().max(8);
+        KeyTable {
+            heads: vec![NIL; buckets],
+            tails: vec![NIL; buckets],
+            entries: Vec::with_capacity(expected),
+            mask: buckets as u64 - 1,
+        }
+    }
+
+    /// Eq. 4.8: the bucket of a key.
+    pub fn bucket(&self, key: Key) -> usize {
+        (key & self.mask) as usize
+    }
+
+    /// Buckets (2^n).
+    pub fn buckets(&self) -> usize {
+        self.heads.len()
+    }
+
+    /// Appends a node that is not in the table yet at the end of its chain (the build: no
+    /// duplicate check). Refuses past 2^32 − 1 entries.
+    pub fn push(&mut self, key: Key, val: u8, internal: bool) -> Result<(), String> {
+        let i = u32::try_from(self.entries.len())
+            .ok()
+            .filter(|&i| i != NIL)
+            .ok_or("more than 2^32 - 1 octree nodes")?;
+        let b = self.bucket(key);
+        let tail = match self.tails.get(b) {
+            Some(&t) => t,
+            None => self.chain_end(b),
+        };
+        match tail {
+            NIL => self.heads[b] = i,
+            t => self.entries[t as usize].next = i,
+        }
+        if let Some(t) = self.tails.get_mut(b) {
+            *t = i;
+        }
+        self.entries.push(Entry {
+            key,
+            next: NIL,
+            val,
+            internal,
+        });
+        Ok(())
+    }
+
+    /// The last entry of bucket b's chain, walked (once the build's tail index is gone).
+    fn chain_end(&self, b: usize) -> u32 {
+        let (mut i, mut last) = (self.heads[b], NIL);
+        while i != NIL {
+            last = i;
+            i = self.entries[i as usize].next;
+        }
+        last
+    }
+
+    /// Ends the build: frees the tail index and spare capacity.
+    pub fn seal(&mut self) {
+        self.tails = Vec::new();
+        self.entries.shrink_to_fit();
+    }
+
+    fn index(&self, key: Key) -> Option<usize> {
+        let mut i = self.heads[self.bucket(key)];
+        while i != NIL {
+            let e = &self.entries[i as usize];
+            if e.key == key {
+                return Some(i as usize);
+            }
+            i = e.next;
+        }
+        None
+    }
+
+    /// The node with this key.
+    pub fn get(&self, key: Key) -> Option<&Entry> {
+        self.index(key).map(|i| &self.entries[i])
+    }
+
+    /// The value of the node with this key, to change it.
+    pub fn get_mut(&mut self, key: Key) -> Option<&mut u8> {
+        self.index(key).map(|i| &mut self.entries[i].val)
+    }
+
+    /// Inserts a node at the end of its chain, or changes its value if it is there.
+    pub fn insert(&mut self, key: Key, val: u8, internal: bool) -> Result<(), String> {
+        match self.index(key) {
+            Some(i) => {
+                self.entries[i].val = val;
+                self.entries[i].internal = internal;
+                Ok(())
+            }
+            None => self.push(key, val, internal),
+        }
+    }
+
+    /// Removes a node; the last entry moves into its slot (its chain link is rewritten).
+    pub fn remove(&mut self, key: Key) -> Option<Entry> {
+        let i = self.index(key)? as u32;
+        self.unlink(i);
+        let last = self.entries.len() as u32 - 1;
+        if i != last {
+            self.relink(last, i);
+        }
+        self.tails = Vec::new();
+        Some(self.entries.swap_remove(i as usize))
+    }
+
+    /// Takes entry `i` out of its chain.
+    fn unlink(&mut self, i: u32) {
+        let b = self.bucket(self.entries[i as usize].key);
+        let next = self.entries[i as usize].next;
+        self.point(b, i, next);
+    }
+
+    /// Makes whatever links to entry `from` link to `to` instead.
+    fn relink(&mut self, from: u32, to: u32) {
+        let b = self.bucket(self.entries[from as usize].key);
+        self.point(b, from, to);
+    }
+
+    /// In bucket b's chain, the link that holds `old` is set to `new`.
+    fn point(&mut self, b: usize, old: u32, new: u32) {
+        if self.heads[b] == old {
+            self.heads[b] = new;
+            return;
+        }
+        let mut j = self.heads[b];
+        while j != NIL {
+            let e = &mut self.entries[j as usize];
+            if e.next == old {
+                e.next = new;
+                return;
+            }
+            j = e.next;
+        }
+    }
+
+    /// Every entry, in insertion order (until something is removed).
+    pub fn entries(&self) -> &[Entry] {
+        &self.entries
+    }
+
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+
+    /// Bytes held: bucket heads and entries (allocated capacity).
+    pub fn bytes(&self) -> usize {
+        self.heads.capacity() * 4
+            + self.tails.capacity() * 4
+            + self.entries.capacity() * std::mem::size_of::<Entry>()
+    }
+
+    /// Length of the longest chain (a measure of the hash's spread).
+    pub fn longest_chain(&self) -> usize {
+        let mut counts = vec![0usize; self.heads.len()];
+        for e in &self.entries {
+            counts[self.bucket(e.key)] += 1;
+        }
+        counts.into_iter().max().unwrap_or(0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_thesis_bucket_of_key_100_in_a_table_of_8_is_4() {
+        // seed 000 Fig. 4.8: hash(100) = 100 mod 8 = 4.
+        let t = KeyTable::with_capacity(8);
+        assert_eq!(t.buckets(), 8);
+        assert_eq!(t.bucket(100), 4);
+    }
+
+    #[test]
+    fn chains_keep_insertion_order_and_survive_removal() {
+        let mut t = KeyTable::with_capacity(8);
+        // 4, 12, 20 share bucket 4; 5 is alone.
+        for (k, v) in [(4, 1), (12, 2), (5, 3), (20, 4)] {
+            t.push(k, v, false).unwrap();
+        }
+        assert_eq!(t.get(20).map(|e| e.val), Some(4));
+        assert_eq!(t.remove(12).map(|e| e.val), Some(2));
+        assert_eq!(t.get(12), None);
+        assert_eq!(t.get(4).map(|e| e.val), Some(1));
+        assert_eq!(t.get(20).map(|e| e.val), Some(4));
+        assert_eq!(t.get(5).map(|e| e.val), Some(3));
+        t.insert(28, 9, false).unwrap();
+        t.insert(4, 7, false).unwrap();
+        assert_eq!(t.len(), 4);
+        assert_eq!(t.get(28).map(|e| e.val), Some(9));
+        assert_eq!(t.get(4).map(|e| e.val), Some(7));
+        assert_eq!(t.remove(5).map(|e| e.val), Some(3));
+        assert_eq!(t.get(28).map(|e| e.val), Some(9));
+        assert_eq!(t.get(20).map(|e| e.val), Some(4));
+    }
+}
