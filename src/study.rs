@@ -555,17 +555,14 @@ fn plane_words(slicer: &Slicer, prim: usize) -> Result<Vec<PlaneWord>, String> {
 /// The word interval [lo, hi] in depth units (None where a perpendicular plane is negative or
 /// the interval is empty), ends infinite where no plane bounds them.
 fn word_interval(fmt: &WordFormat, planes: &[PlaneWord], x: i64, y: i64) -> Option<(f64, f64)> {
-    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-    for p in planes {
-        let v = fmt.to_real(fmt.wrap(p.c.c0 + x * p.c.dx + y * p.c.dy));
-        match (p.y, p.h) {
-            (true, _) if v < 0.0 => return None,
-            (true, _) => {}
-            (false, true) => lo = lo.max(v),
-            (false, false) => hi = hi.min(v),
-        }
-    }
-    (lo <= hi).then_some((lo, hi))
+    let values = planes.iter().map(|p| {
+        (
+            fmt.to_real(fmt.wrap(p.c.c0 + x * p.c.dx + y * p.c.dy)),
+            p.y,
+            p.h,
+        )
+    });
+    crate::voxelize::ray_interval(values, f64::NEG_INFINITY, f64::INFINITY)
 }
 
 /// The CSV header; `wall_s` is last so runs compare without it.

@@ -325,16 +325,10 @@ pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges, String> {
     let mut out = Vec::with_capacity(w * h);
     for y in 0..h as i64 {
         for x in 0..w as i64 {
-            let (mut lo, mut hi) = (i128::MIN, i128::MAX);
-            for (c, p) in &coeffs {
-                let v = fmt.wrap(c.c0 + x * c.dx + y * c.dy) as i128;
-                match (p.y, p.h) {
-                    (true, _) if v < 0 => (lo, hi) = (1, 0),
-                    (true, _) => {}
-                    (false, true) => lo = lo.max(v),
-                    (false, false) => hi = hi.min(v),
-                }
-            }
+            let values = coeffs
+                .iter()
+                .map(|(c, p)| (fmt.wrap(c.c0 + x * c.dx + y * c.dy) as i128, p.y, p.h));
+            let (lo, hi) = ray_interval(values, i128::MIN, i128::MAX).unwrap_or((1, 0));
             out.push(slabs_of(slicer, lo, hi));
         }
     }
@@ -344,14 +338,29 @@ pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges, String> {
 /// The exact depth interval [lo, hi] of primitive `prim` along pixel (x, y)'s ray, in depth
 /// units (None when the ray misses it; lo or hi infinite when no plane bounds that side).
 pub fn float_interval(slicer: &Slicer, prim: usize, x: usize, y: usize) -> Option<(f64, f64)> {
-    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-    for p in &slicer.lists[prim].planes {
-        let v = p.z0 + x as f64 * p.dzx + y as f64 * p.dzy;
-        match (p.y, p.h) {
-            (true, _) if v < 0.0 => return None,
+    let values = slicer.lists[prim]
+        .planes
+        .iter()
+        .map(|p| (p.z0 + x as f64 * p.dzx + y as f64 * p.dzy, p.y, p.h));
+    ray_interval(values, f64::NEG_INFINITY, f64::INFINITY)
+}
+
+/// The depths inside a convex solid along one ray, from its planes' values there as
+/// (value, Y, H): behind every front plane (H), before every back plane, and none at all where
+/// a perpendicular plane (Y) is negative (K < 0, §2.3.3). Starts from [lo, hi]; None when
+/// empty.
+pub fn ray_interval<T: PartialOrd + Copy + Default>(
+    planes: impl IntoIterator<Item = (T, bool, bool)>,
+    mut lo: T,
+    mut hi: T,
+) -> Option<(T, T)> {
+    for (v, y, h) in planes {
+        match (y, h) {
+            (true, _) if v < T::default() => return None,
             (true, _) => {}
-            (false, true) => lo = lo.max(v),
-            (false, false) => hi = hi.min(v),
+            (false, true) if v > lo => lo = v,
+            (false, false) if v < hi => hi = v,
+            _ => {}
         }
     }
     (lo <= hi).then_some((lo, hi))
