@@ -545,11 +545,13 @@ impl BlistEval {
         counts: &mut OpCounts,
     ) -> u64 {
         let t = &self.table;
-        let bits = t.label_bits as usize;
-        let mut planes = vec![0u64; bits]; // label := 0
+        // Names are u32, so a label never has more than 32 bits: no allocation per word.
+        let bits = (t.label_bits as usize).min(32);
+        let mut store = [0u64; 32];
+        let planes = &mut store[..bits]; // label := 0
         for row in &t.rows {
             let zero = !planes.iter().fold(0, |a, &p| a | p);
-            let classify = (zero | equals(&planes, row.name)) & valid;
+            let classify = (zero | equals(planes, row.name)) & valid;
             if classify == 0 {
                 continue;
             }
@@ -568,7 +570,7 @@ impl BlistEval {
             counts.comparisons += u64::from(classify.count_ones());
             counts.label_writes += u64::from(classify.count_ones());
         }
-        equals(&planes, t.in_name) & valid
+        equals(planes, t.in_name) & valid
     }
 }
 
