@@ -276,9 +276,9 @@ fn yosys_proof_fails_when_the_printed_module_stands_in_for_derived() {
 }
 
 #[test]
-fn cost_script_maps_both_sets_to_gates_and_luts() {
+fn cost_script_maps_sgene_and_the_comparator_to_gates_and_luts() {
     let log = ok(&run("yosys", &["-s", "cost.ys"], &vdir()), "yosys");
-    let mut seen = 0;
+    let mut seen = vec![];
     let mut lines = log.lines();
     while let Some(l) = lines.next() {
         let Some(what) = l.strip_prefix("COST ") else {
@@ -286,15 +286,72 @@ fn cost_script_maps_both_sets_to_gates_and_luts() {
         };
         let cells = lines.find(|l| l.contains("Number of cells:")).unwrap();
         let n: u64 = cells.split_whitespace().last().unwrap().parse().unwrap();
-        assert!(n > 0, "{what}");
-        let next = lines.next().unwrap();
+        let block: Vec<&str> = lines
+            .by_ref()
+            .take_while(|l| !l.trim().is_empty())
+            .collect();
+        let kinds: u64 = block
+            .iter()
+            .map(|l| l.split_whitespace().last().unwrap().parse::<u64>().unwrap())
+            .sum();
+        assert!(n > 0 && kinds == n, "{what}: {block:?}");
         if what.contains("lut") {
+            // Only LUTs and flip-flops are left after a LUT mapping.
             assert!(
-                next.contains("$lut") && next.ends_with(&format!(" {n}")),
-                "{what}: {next}"
+                block
+                    .iter()
+                    .all(|l| l.contains("$lut") || l.contains("DFF")),
+                "{what}: {block:?}"
             );
         }
-        seen += 1;
+        let ffs = block.iter().filter(|l| l.contains("DFF")).count();
+        seen.push((what.to_string(), ffs > 0));
     }
-    assert_eq!(seen, 6);
+    assert_eq!(seen.len(), 8, "{seen:?}");
+    for (what, has_ffs) in seen {
+        assert_eq!(has_ffs, what.starts_with("comparator"), "{what}");
+    }
+}
+
+#[test]
+fn icarus_comparator_flags_are_the_arithmetic_definitions() {
+    let b = icarus_comparator(&std::fs::read_to_string(vdir().join("comparator.v")).unwrap());
+    assert_eq!(b, "COMPARATOR pairs 2100 mismatches 0");
+}
+
+#[test]
+fn comparator_testbench_catches_a_comparator_without_the_sign_reversal() {
+    let good = std::fs::read_to_string(vdir().join("comparator.v")).unwrap();
+    let bad = good.replace("is_sign ? a : r;", "r;");
+    assert_ne!(good, bad);
+    let line = icarus_comparator(&bad);
+    assert!(
+        line.starts_with("COMPARATOR pairs 2100 mismatches ") && !line.ends_with(" 0"),
+        "{line}"
+    );
+}
+
+/// Run tb_comparator.v against the given comparator source; its summary line.
+fn icarus_comparator(src: &str) -> String {
+    let tmp = tempfile::tempdir().unwrap();
+    std::fs::write(tmp.path().join("comparator.v"), src).unwrap();
+    let tb = vdir().join("tb_comparator.v");
+    let c = run(
+        "iverilog",
+        &[
+            "-g2005",
+            "-Wall",
+            "-o",
+            "tb",
+            tb.to_str().unwrap(),
+            "comparator.v",
+        ],
+        tmp.path(),
+    );
+    ok(&c, "iverilog");
+    let out = ok(&run("vvp", &["-n", "tb"], tmp.path()), "vvp");
+    out.lines()
+        .find(|l| l.starts_with("COMPARATOR"))
+        .unwrap()
+        .to_string()
 }

@@ -5,6 +5,7 @@
 //! `rtl-model/verilog/`); docs/verilog.md says how each file is used.
 
 pub mod check;
+pub mod comparator;
 pub mod sgene;
 
 use crate::select::pla::Pla;
@@ -22,10 +23,11 @@ pub fn golden() -> Result<Vec<(Table, Pla)>, String> {
         .collect()
 }
 
-/// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE.
+/// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE;
+/// generic gates and LUT4s for the comparator.
 fn cost_script() -> String {
     let mut v = String::from(
-        "# Cost of SGENE: generic cells, LUT4 and LUT6 mappings.\n\
+        "# Cost of SGENE (generic cells, LUT4, LUT6) and of the comparator (generic, LUT4).\n\
          # Run in this directory: yosys -s cost.ys (the figures are in docs/verilog.md)\n",
     );
     for eq in [Equations::Derived, Equations::Printed] {
@@ -39,6 +41,8 @@ fn cost_script() -> String {
                 &format!("design -reset\nread_verilog {m}.v\n{flow}\nlog COST {m} {label}\nstat\n");
         }
     }
+    v += "design -reset\nread_verilog comparator.v\nsynth -top comparator\nlog COST comparator generic\nstat\n";
+    v += "design -reset\nread_verilog comparator.v\nsynth -top comparator -lut 4\nlog COST comparator lut4\nstat\n";
     v
 }
 
@@ -58,6 +62,12 @@ pub fn files() -> Result<Vec<(String, String)>, String> {
             check::equiv_script(n, &golden, verify),
         ));
     }
+    let fmt = crate::WordFormat::default();
+    out.push(("comparator.v".to_string(), comparator::module(&fmt)));
+    out.push((
+        "tb_comparator.v".to_string(),
+        comparator::testbench(&fmt, 2000),
+    ));
     out.push(("cost.ys".to_string(), cost_script()));
     Ok(out)
 }
