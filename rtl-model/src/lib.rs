@@ -16,6 +16,7 @@ pub mod probe;
 pub mod program;
 pub mod select;
 pub mod state;
+pub mod verilog;
 pub mod word;
 
 pub use array::Array;

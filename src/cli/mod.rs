@@ -2,6 +2,7 @@
 
 mod array_args;
 mod blist;
+mod export_verilog;
 mod gen_vectors;
 mod render;
 mod requirements;
@@ -38,6 +39,8 @@ pub enum Cmd {
     GenVectors(gen_vectors::Args),
     /// Check an equation set against every row of the golden vectors.
     VerifySelect(verify_select::Args),
+    /// Write the Verilog twin of SGENE, its testbenches and Yosys scripts (docs/verilog.md).
+    ExportVerilog(export_verilog::Args),
     /// Run display lists through the array and write the image.
     Render(render::Args),
     /// Voxelize a CSG scene slice by slice through the array and write a NRRD volume.
@@ -75,6 +78,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
     match cli.cmd {
         Cmd::GenVectors(a) => gen_vectors::run(a),
         Cmd::VerifySelect(a) => verify_select::run(a),
+        Cmd::ExportVerilog(a) => export_verilog::run(a),
         Cmd::Render(a) => render::run(a),
         Cmd::Voxelize(a) => voxelize::run(a),
         Cmd::Blist(a) => blist::run(a),

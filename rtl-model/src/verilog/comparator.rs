@@ -1,0 +1,122 @@
+//! The bit-serial comparator of a pixel (Figure 2.9 "compare", flags of §2.3.2, §2.4.2) as a
+//! Verilog module, with the same four flip-flops as [`crate::comparator::Comparator`], and a
+//! self-checking testbench whose expected flags are the arithmetic definitions of §2.3.2
+//! (N: A < 0, J: A ≤ R, T: A = R, M: A ≥ maxdepth, A ≥ 0), computed on whole words.
+
+use crate::depth_word::WordFormat;
+
+/// `comparator`: one bit of A and of R per clock, LSB first; `first` marks bit 0 of a word.
+/// N J T M are valid after the clock of the sign bit. Word fields are parameters (§2.4.1).
+pub fn module(fmt: &WordFormat) -> String {
+    format!(
+        "// Bit-serial comparator, seed 001 §2.3.2 and §2.4.2 (Figure 2.9 \"compare\").
+// Words arrive LSB first; `first` is high with bit 0. Four flip-flops: lt (A < R on the
+// bits seen; at the sign bit the order reverses), eq, ovf (an overflow bit of A was 1), sign.
+module comparator #(parameter F = {f}, I = {i}, O = {o}) (
+    input wire clk, first, a, r,
+    output wire N, J, T, M
+);
+    localparam W = F + I + O + 1, KW = $clog2(W);
+    reg [KW-1:0] k;
+    reg lt, eq, ovf, sign;
+    wire [KW-1:0] bit_k = first ? {{KW{{1'b0}}}} : k;
+    wire lt0 = first ? 1'b0 : lt;
+    wire eq0 = first ? 1'b1 : eq;
+    wire ovf0 = first ? 1'b0 : ovf;
+    wire is_sign = bit_k == W - 1;
+    wire is_ovf = bit_k >= F + I && bit_k < W - 1;
+    wire diff = a ^ r;
+    wire a_smaller = is_sign ? a : r;
+    always @(posedge clk) begin
+        k <= bit_k + 1'b1;
+        lt <= diff ? a_smaller : lt0;
+        eq <= eq0 & ~diff;
+        ovf <= ovf0 | (is_ovf & a);
+        if (is_sign) sign <= a;
+    end
+    assign N = sign;
+    assign J = lt | eq;
+    assign T = eq;
+    assign M = ovf & ~sign;
+endmodule
+",
+        f = fmt.frac,
+        i = fmt.int,
+        o = fmt.ovf
+    )
+}
+
+/// Boundary words of the format (as unsigned W-bit values): 0, ±1, around maxdepth, the
+/// extremes.
+fn boundary(fmt: &WordFormat) -> Vec<u64> {
+    let m = fmt.maxdepth();
+    [
+        0,
+        1,
+        -1,
+        m - 1,
+        m,
+        m + 1,
+        -m,
+        fmt.max_word(),
+        fmt.min_word(),
+        1 << fmt.frac,
+    ]
+    .iter()
+    .map(|w| (*w as u64) & fmt.mask())
+    .collect()
+}
+
+/// `tb_comparator`: every pair of boundary words, then `random` pseudo-random pairs (fixed
+/// seed, half of them with R = A), each streamed LSB first; the flags are checked against
+/// signed whole-word arithmetic. Prints `COMPARATOR pairs P mismatches B`.
+pub fn testbench(fmt: &WordFormat, random: u32) -> String {
+    let w = fmt.bits();
+    let words = boundary(fmt);
+    let mut pairs = String::new();
+    for a in &words {
+        for r in &words {
+            pairs += &format!("        run({w}'h{a:x}, {w}'h{r:x});\n");
+        }
+    }
+    format!(
+        "// Checks `comparator` against the definitions of N J T M (§2.3.2); generated, do not edit.
+module tb_comparator;
+    localparam F = {f}, I = {i}, O = {o}, W = {w};
+    reg clk = 0, first = 0, a = 0, r = 0;
+    wire N, J, T, M;
+    integer pairs = 0, bad = 0, n, seed = 1;
+    reg [W-1:0] x, y;
+    comparator #(.F(F), .I(I), .O(O)) dut(.clk(clk), .first(first), .a(a), .r(r),
+        .N(N), .J(J), .T(T), .M(M));
+    task run(input [W-1:0] A, input [W-1:0] R);
+        integer b;
+        reg [3:0] want;
+        begin
+            for (b = 0; b < W; b = b + 1) begin
+                first = b == 0; a = A[b]; r = R[b];
+                #1 clk = 1; #1 clk = 0;
+            end
+            want = {{A[W-1], $signed(A) <= $signed(R), A == R, ~A[W-1] & |A[W-2:F+I]}};
+            pairs = pairs + 1;
+            if ({{N, J, T, M}} !== want) begin
+                bad = bad + 1;
+                $display(\"MISMATCH A=%h R=%h NJTM=%b expected %b\", A, R, {{N, J, T, M}}, want);
+            end
+        end
+    endtask
+    initial begin
+{pairs}        for (n = 0; n < {random}; n = n + 1) begin
+            x = $random(seed); y = (n % 2) ? x : $random(seed);
+            run(x, y);
+        end
+        $display(\"COMPARATOR pairs %0d mismatches %0d\", pairs, bad);
+        $finish;
+    end
+endmodule
+",
+        f = fmt.frac,
+        i = fmt.int,
+        o = fmt.ovf,
+    )
+}

@@ -1,0 +1,73 @@
+//! A Verilog-2005 twin of the select logic (SGENE, seed 001 §2.3.3-2.3.5), written from the
+//! same equation sets the Rust models evaluate, and the files that check it.
+//!
+//! [`files`] is everything `csgpix export-verilog` writes (checked in under
+//! `rtl-model/verilog/`); docs/verilog.md says how each file is used.
+
+pub mod check;
+pub mod comparator;
+pub mod sgene;
+
+use crate::select::pla::Pla;
+use crate::select::{Equations, Table, GOLDEN};
+
+/// The golden vectors, parsed.
+pub fn golden() -> Result<Vec<(Table, Pla)>, String> {
+    GOLDEN
+        .iter()
+        .map(|(t, text)| {
+            Pla::parse(text)
+                .map(|p| (*t, p))
+                .map_err(|e| format!("vectors/select/{}.pla:{e}", t.name()))
+        })
+        .collect()
+}
+
+/// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE;
+/// generic gates and LUT4s for the comparator.
+fn cost_script() -> String {
+    let mut v = String::from(
+        "# Cost of SGENE (generic cells, LUT4, LUT6) and of the comparator (generic, LUT4).\n\
+         # Run in this directory: yosys -s cost.ys (the figures are in docs/verilog.md)\n",
+    );
+    for eq in [Equations::Derived, Equations::Printed] {
+        let m = format!("sgene_{}", eq.name());
+        for (label, flow) in [
+            ("generic", format!("synth -top {m}")),
+            ("lut4", format!("synth -top {m} -lut 4")),
+            ("lut6", format!("synth -top {m}\nabc -lut 6\nopt_clean")),
+        ] {
+            v +=
+                &format!("design -reset\nread_verilog {m}.v\n{flow}\nlog COST {m} {label}\nstat\n");
+        }
+    }
+    v += "design -reset\nread_verilog comparator.v\nsynth -top comparator\nlog COST comparator generic\nstat\n";
+    v += "design -reset\nread_verilog comparator.v\nsynth -top comparator -lut 4\nlog COST comparator lut4\nstat\n";
+    v
+}
+
+/// Every generated file, `(name, text)`, in a fixed order.
+pub fn files() -> Result<Vec<(String, String)>, String> {
+    let golden = golden()?;
+    let mut out = vec![("select_spec.v".to_string(), check::spec_modules(&golden))];
+    for eq in [Equations::Derived, Equations::Printed] {
+        let set = eq.set();
+        let n = eq.name();
+        out.push((format!("sgene_{n}.v"), sgene::module(&set)));
+        out.push((format!("tb_sgene_{n}.v"), check::testbench(n, &golden)));
+        out.push((format!("miter_{n}.v"), check::miters(n, &golden)));
+        let verify = eq == Equations::Derived;
+        out.push((
+            format!("equiv_{n}.ys"),
+            check::equiv_script(n, &golden, verify),
+        ));
+    }
+    let fmt = crate::WordFormat::default();
+    out.push(("comparator.v".to_string(), comparator::module(&fmt)));
+    out.push((
+        "tb_comparator.v".to_string(),
+        comparator::testbench(&fmt, 2000),
+    ));
+    out.push(("cost.ys".to_string(), cost_script()));
+    Ok(out)
+}

@@ -1,0 +1,357 @@
+//! The Verilog twin of SGENE (docs/verilog.md): regenerated, simulated under Icarus Verilog
+//! and Verilator against the golden vectors, proved with Yosys, and costed.
+//!
+//! Expected figures come from the golden vectors and docs/select-logic.md (rows per signal;
+//! the printed set's 15 + 11 faulty rows), never from the generator.
+
+mod common;
+use common::csgpix;
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Care rows per signal, as docs/select-logic.md lists them (`csgpix verify-select`).
+const ROWS: [(&str, u64); 9] = [
+    ("front.S1", 56),
+    ("front.S2", 54),
+    ("back.S1", 28),
+    ("back.S2", 26),
+    ("close.S1", 12),
+    ("close.S2", 12),
+    ("clip.LL", 56),
+    ("second.S3", 10),
+    ("second.S4", 8),
+];
+
+/// The printed set's faulty rows per signal (docs/select-logic.md, faults 1-5).
+const PRINTED_FAULTS: [(&str, u64); 2] = [("back.S1", 15), ("clip.LL", 11)];
+
+fn vdir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("rtl-model/verilog")
+}
+
+/// Run a tool; a missing tool is a failure (CI installs them, see .ci/run).
+fn run(cmd: &str, args: &[&str], dir: &Path) -> Output {
+    Command::new(cmd)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap_or_else(|e| panic!("{cmd}: {e} (apt-get install iverilog verilator yosys)"))
+}
+
+fn ok(out: &Output, what: &str) -> String {
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(
+        out.status.success(),
+        "{what} failed:\n{text}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    text
+}
+
+/// What a testbench printed: per signal (rows, mismatches), and the mismatching rows.
+#[derive(Debug, PartialEq, Eq)]
+struct Bench {
+    signals: BTreeMap<String, (u64, u64)>,
+    mismatches: BTreeSet<(String, String)>,
+    total: u64,
+}
+
+fn parse_bench(text: &str) -> Bench {
+    let mut b = Bench {
+        signals: BTreeMap::new(),
+        mismatches: BTreeSet::new(),
+        total: u64::MAX,
+    };
+    for line in text.lines() {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        match w.first() {
+            Some(&"SIGNAL") => {
+                b.signals
+                    .insert(w[1].into(), (w[3].parse().unwrap(), w[5].parse().unwrap()));
+            }
+            Some(&"MISMATCH") => {
+                let at = w.iter().position(|x| *x == "expected").unwrap();
+                b.mismatches.insert((w[1].into(), sorted(&w[2..at])));
+            }
+            Some(&"TOTAL") => b.total = w[2].parse().unwrap(),
+            _ => {}
+        }
+    }
+    b
+}
+
+/// `NAME=v` assignments in name order, so every source's rows compare equal.
+fn sorted(assigns: &[&str]) -> String {
+    let mut v: Vec<&str> = assigns.to_vec();
+    v.sort();
+    v.join(" ")
+}
+
+fn icarus(set: &str) -> Bench {
+    let tmp = tempfile::tempdir().unwrap();
+    let exe = tmp.path().join("tb");
+    let d = vdir();
+    let (tb, dut) = (
+        d.join(format!("tb_sgene_{set}.v")),
+        d.join(format!("sgene_{set}.v")),
+    );
+    let args = ["-g2005", "-Wall", "-o", exe.to_str().unwrap()];
+    let files = [tb.to_str().unwrap(), dut.to_str().unwrap()];
+    let c = run("iverilog", &[&args[..], &files[..]].concat(), tmp.path());
+    ok(&c, "iverilog");
+    assert!(
+        c.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&c.stderr)
+    );
+    parse_bench(&ok(&run("vvp", &["-n", "tb"], tmp.path()), "vvp"))
+}
+
+fn verilator(set: &str) -> Bench {
+    let tmp = tempfile::tempdir().unwrap();
+    let d = vdir();
+    let (tb, dut) = (
+        d.join(format!("tb_sgene_{set}.v")),
+        d.join(format!("sgene_{set}.v")),
+    );
+    let top = format!("tb_sgene_{set}");
+    let args = [
+        "--binary",
+        "--timing",
+        "-Wall",
+        "-Wno-DECLFILENAME",
+        "-j",
+        "2",
+    ];
+    let files = [
+        "--top-module",
+        &top,
+        tb.to_str().unwrap(),
+        dut.to_str().unwrap(),
+    ];
+    ok(
+        &run("verilator", &[&args[..], &files[..]].concat(), tmp.path()),
+        "verilator",
+    );
+    let exe = tmp.path().join("obj_dir").join(format!("V{top}"));
+    parse_bench(&ok(
+        &run(exe.to_str().unwrap(), &[], tmp.path()),
+        "verilated tb",
+    ))
+}
+
+/// The per-signal mismatch counts a set must show.
+fn expected(set: &str) -> BTreeMap<String, (u64, u64)> {
+    ROWS.iter()
+        .map(|(s, r)| {
+            let bad = match set {
+                "printed" => PRINTED_FAULTS.iter().find(|f| f.0 == *s).map_or(0, |f| f.1),
+                _ => 0,
+            };
+            (s.to_string(), (*r, bad))
+        })
+        .collect()
+}
+
+/// The Rust verifier's mismatching rows for a set, in the same normal form.
+fn verifier_mismatches(set: &str) -> BTreeSet<(String, String)> {
+    let out = csgpix(&["verify-select", "--equations", set, "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let mut rows = BTreeSet::new();
+    for s in v.as_array().unwrap() {
+        for m in s["mismatches"].as_array().unwrap() {
+            let inputs: Vec<&str> = m["inputs"].as_str().unwrap().split(' ').collect();
+            rows.insert((s["signal"].as_str().unwrap().into(), sorted(&inputs)));
+        }
+    }
+    rows
+}
+
+#[test]
+fn checked_in_verilog_is_what_the_generator_writes() {
+    let out = csgpix(&["export-verilog", "--check"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    let tmp = tempfile::tempdir().unwrap();
+    let out = csgpix(&["export-verilog", "-o", tmp.path().to_str().unwrap()]);
+    assert!(out.status.success());
+    for f in std::fs::read_dir(tmp.path()).unwrap() {
+        let f = f.unwrap();
+        let old = std::fs::read(vdir().join(f.file_name())).unwrap();
+        assert_eq!(old, std::fs::read(f.path()).unwrap(), "{:?}", f.file_name());
+    }
+}
+
+#[test]
+fn icarus_derived_sgene_matches_every_care_row() {
+    let b = icarus("derived");
+    assert_eq!(b.signals, expected("derived"));
+    assert_eq!((b.total, b.mismatches.len()), (0, 0));
+}
+
+#[test]
+fn icarus_printed_sgene_fails_exactly_the_26_known_rows() {
+    let b = icarus("printed");
+    assert_eq!(b.signals, expected("printed"));
+    assert_eq!((b.total, b.mismatches.len()), (26, 26));
+    assert_eq!(b.mismatches, verifier_mismatches("printed"));
+}
+
+#[test]
+fn verilator_agrees_with_icarus_on_both_sets() {
+    for set in ["derived", "printed"] {
+        let v = verilator(set);
+        assert_eq!(v.signals, expected(set), "{set}");
+        assert_eq!(v, icarus(set), "{set}");
+    }
+}
+
+/// Yosys's log, split at each `CHECK table.O`: the counterexamples `sat -all` listed.
+fn counterexamples(log: &str) -> BTreeMap<String, BTreeSet<String>> {
+    let mut out: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    let mut sig = String::new();
+    let mut model: Option<Vec<String>> = None;
+    for line in log.lines() {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        if w.first() == Some(&"CHECK") {
+            sig = w[1].into();
+            out.entry(sig.clone()).or_default();
+        } else if line.contains("SAT solving finished - model found") {
+            model = Some(vec![]);
+        } else if let (Some(m), Some(name)) = (model.as_mut(), w.first()) {
+            if let Some(n) = name.strip_prefix('\\') {
+                m.push(format!("{n}={}", w[3]));
+            } else if line.starts_with("Solving") {
+                let m = model.take().unwrap();
+                let refs: Vec<&str> = m.iter().map(String::as_str).collect();
+                out.get_mut(&sig).unwrap().insert(sorted(&refs));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn yosys_proves_derived_equivalent_to_the_care_set() {
+    let log = ok(&run("yosys", &["-s", "equiv_derived.ys"], &vdir()), "yosys");
+    assert_eq!(log.matches("CHECK ").count(), 9);
+    assert_eq!(log.matches("no model found: SUCCESS!").count(), 9);
+}
+
+#[test]
+fn yosys_lists_every_row_where_printed_is_not_equivalent() {
+    let log = ok(&run("yosys", &["-s", "equiv_printed.ys"], &vdir()), "yosys");
+    let cex = counterexamples(&log);
+    let rows = expected("printed");
+    let counts: BTreeMap<String, (u64, u64)> = cex
+        .iter()
+        .map(|(s, bad)| (s.clone(), (rows[s].0, bad.len() as u64)))
+        .collect();
+    assert_eq!(counts, expected("printed"));
+    let flat: BTreeSet<(String, String)> = cex
+        .iter()
+        .flat_map(|(s, rows)| rows.iter().map(move |r| (s.clone(), r.clone())))
+        .collect();
+    assert_eq!(flat, icarus("printed").mismatches);
+}
+
+#[test]
+fn yosys_proof_fails_when_the_printed_module_stands_in_for_derived() {
+    let tmp = tempfile::tempdir().unwrap();
+    for f in ["equiv_derived.ys", "select_spec.v", "miter_derived.v"] {
+        std::fs::copy(vdir().join(f), tmp.path().join(f)).unwrap();
+    }
+    let printed = std::fs::read_to_string(vdir().join("sgene_printed.v")).unwrap();
+    let fake = printed.replace("module sgene_printed", "module sgene_derived");
+    std::fs::write(tmp.path().join("sgene_derived.v"), fake).unwrap();
+    let out = run("yosys", &["-s", "equiv_derived.ys"], tmp.path());
+    assert!(!out.status.success());
+    let log = String::from_utf8_lossy(&out.stdout);
+    assert!(log.contains("CHECK back.S1") && !log.contains("CHECK back.S2"));
+}
+
+#[test]
+fn cost_script_maps_sgene_and_the_comparator_to_gates_and_luts() {
+    let log = ok(&run("yosys", &["-s", "cost.ys"], &vdir()), "yosys");
+    let mut seen = vec![];
+    let mut lines = log.lines();
+    while let Some(l) = lines.next() {
+        let Some(what) = l.strip_prefix("COST ") else {
+            continue;
+        };
+        let cells = lines.find(|l| l.contains("Number of cells:")).unwrap();
+        let n: u64 = cells.split_whitespace().last().unwrap().parse().unwrap();
+        let block: Vec<&str> = lines
+            .by_ref()
+            .take_while(|l| !l.trim().is_empty())
+            .collect();
+        let kinds: u64 = block
+            .iter()
+            .map(|l| l.split_whitespace().last().unwrap().parse::<u64>().unwrap())
+            .sum();
+        assert!(n > 0 && kinds == n, "{what}: {block:?}");
+        if what.contains("lut") {
+            // Only LUTs and flip-flops are left after a LUT mapping.
+            assert!(
+                block
+                    .iter()
+                    .all(|l| l.contains("$lut") || l.contains("DFF")),
+                "{what}: {block:?}"
+            );
+        }
+        let ffs = block.iter().filter(|l| l.contains("DFF")).count();
+        seen.push((what.to_string(), ffs > 0));
+    }
+    assert_eq!(seen.len(), 8, "{seen:?}");
+    for (what, has_ffs) in seen {
+        assert_eq!(has_ffs, what.starts_with("comparator"), "{what}");
+    }
+}
+
+#[test]
+fn icarus_comparator_flags_are_the_arithmetic_definitions() {
+    let b = icarus_comparator(&std::fs::read_to_string(vdir().join("comparator.v")).unwrap());
+    assert_eq!(b, "COMPARATOR pairs 2100 mismatches 0");
+}
+
+#[test]
+fn comparator_testbench_catches_a_comparator_without_the_sign_reversal() {
+    let good = std::fs::read_to_string(vdir().join("comparator.v")).unwrap();
+    let bad = good.replace("is_sign ? a : r;", "r;");
+    assert_ne!(good, bad);
+    let line = icarus_comparator(&bad);
+    assert!(
+        line.starts_with("COMPARATOR pairs 2100 mismatches ") && !line.ends_with(" 0"),
+        "{line}"
+    );
+}
+
+/// Run tb_comparator.v against the given comparator source; its summary line.
+fn icarus_comparator(src: &str) -> String {
+    let tmp = tempfile::tempdir().unwrap();
+    std::fs::write(tmp.path().join("comparator.v"), src).unwrap();
+    let tb = vdir().join("tb_comparator.v");
+    let c = run(
+        "iverilog",
+        &[
+            "-g2005",
+            "-Wall",
+            "-o",
+            "tb",
+            tb.to_str().unwrap(),
+            "comparator.v",
+        ],
+        tmp.path(),
+    );
+    ok(&c, "iverilog");
+    let out = ok(&run("vvp", &["-n", "tb"], tmp.path()), "vvp");
+    out.lines()
+        .find(|l| l.starts_with("COMPARATOR"))
+        .unwrap()
+        .to_string()
+}
