@@ -21,8 +21,8 @@ use super::voxelize::{parse_bounds, parse_res};
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
-    csgpix sculpt vectors/scenes/twelve.csg --res 128 --tool sphere:4 --path vectors/paths/carve.csv -o carved.stl\n  \
-    csgpix sculpt vectors/scenes/twelve.csg --res 256 --tool sphere:8 --path vectors/paths/carve.csv --json --forces f.csv -o carved.ply\n  \
+    csgpix sculpt vectors/scenes/twelve.csg --res 128 --bounds=-15,-15,-15,15,15,15 --tool sphere:4 --path vectors/paths/carve.csv -o carved.stl\n  \
+    csgpix sculpt vectors/scenes/twelve.csg --res 256 --bounds=-15,-15,-15,15,15,15 --tool sphere:8 --path vectors/paths/carve.csv --json --forces f.csv -o carved.ply\n  \
     csgpix sculpt part.nrrd --tool sphere:3 --add --path path.csv --stiffness 0.5 -o grown.obj\n\n\
     PATH.csv: columns x,y,z in scene units, one tool centre per row; a header row, blank\n  \
     lines and # comments are allowed. Each row is one haptic step: collision by key lookup,\n  \
@@ -85,6 +85,9 @@ struct Report {
     nodes_added: u64,
     triangles_before: usize,
     triangles_after: usize,
+    /// Edges of the final mesh not in exactly two triangles: 0 when closed (a solid touching
+    /// the grid's far faces is open there; give --bounds with room).
+    open_edges: usize,
     /// Per step: collision + update + local re-mesh + force.
     latency: Latency,
     /// Median step under 1 ms (the 1 kHz haptic loop, seed 000 §1.1).
@@ -129,7 +132,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         write_forces(f, &path, &steps)?;
     }
     let comment = format!("csgpix sculpt {}", a.input.display());
-    mesh::write(&a.out, &s.scene_triangles(), &comment)?;
+    let tris = s.scene_triangles();
+    mesh::write(&a.out, &tris, &comment)?;
     let write_seconds = t3.elapsed().as_secs_f64();
     let secs: Vec<f64> = steps.iter().map(|s| s.seconds).collect();
     let latency = Latency::of(&secs);
@@ -150,6 +154,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         nodes_added: steps.iter().map(|s| s.nodes_added).sum(),
         triangles_before,
         triangles_after: s.mesh.len(),
+        open_edges: mesh::open_edges(&tris),
         latency,
         median_under_1ms: latency.median_us < 1000.0,
         p99_under_16_7ms: latency.p99_us < 16_700.0,
@@ -294,7 +299,8 @@ fn print_report(a: &Args, r: &Report) -> Result<(), String> {
         r.triangles_after
     );
     println!(
-        "octree {} -> {} nodes (+{} from splits); step median {:.1} us, p99 {:.1} us, max {:.1} us",
+        "{} open edges; octree {} -> {} nodes (+{} from splits); step median {:.1} us, p99 {:.1} us, max {:.1} us",
+        r.open_edges,
         r.nodes_before,
         r.nodes_after,
         r.nodes_added,
