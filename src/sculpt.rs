@@ -130,6 +130,12 @@ impl CellMesh {
         }
     }
 
+    /// Room for `more` surface cells (and 2 triangles each) without reallocating.
+    pub fn reserve(&mut self, more: usize) {
+        self.cells.reserve(more);
+        self.pool.reserve(2 * more);
+    }
+
     /// Live triangles.
     pub fn len(&self) -> usize {
         self.live
@@ -255,7 +261,7 @@ impl Sculptor {
     /// every voxel of the volume; addition stops one voxel before the octree grid's far faces,
     /// where no cell would close the surface (docs/octree.md, dual cells).
     pub fn new(
-        store: OptimizedOctree,
+        mut store: OptimizedOctree,
         frame: Frame,
         dims: [usize; 3],
         tool: Tool,
@@ -267,7 +273,11 @@ impl Sculptor {
         let side = store.side() as u32;
         let far = if tool.add { side - 1 } else { side };
         let limit = dims.map(|d| (d.min(u32::MAX as usize) as u32).min(far));
-        let mesh = CellMesh::of_store(&store);
+        let mut mesh = CellMesh::of_store(&store);
+        // Headroom so that early steps do not stall on a reallocation or a rehash (the
+        // structures still grow, with a stall, past it).
+        store.reserve(store.node_count() / 4);
+        mesh.reserve(mesh.cells() / 4);
         Ok(Sculptor {
             store,
             mesh,
@@ -304,6 +314,9 @@ impl Sculptor {
     /// The box of voxels within the tool's reach, clipped to the editable region; None when
     /// the tool is wholly outside it.
     fn reach(&self, c: DVec3) -> Option<([u32; 3], [u32; 3])> {
+        if !c.is_finite() {
+            return None;
+        }
         let r = self.tool.radius;
         let mut lo = [0u32; 3];
         let mut hi = [0u32; 3];
@@ -313,7 +326,7 @@ impl Sculptor {
                 (c[a] - r).ceil().max(0.0),
                 (c[a] + r).floor().min(lim - 1.0),
             );
-            if !(l <= h) {
+            if l > h {
                 return None;
             }
             (lo[a], hi[a]) = (l as u32, h as u32);
