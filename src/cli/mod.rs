@@ -7,6 +7,7 @@ mod gen_vectors;
 mod render;
 mod requirements;
 mod scenes;
+mod sculpt;
 mod study;
 mod throughput;
 mod verify_select;
@@ -45,6 +46,8 @@ pub enum Cmd {
     Render(render::Args),
     /// Voxelize a CSG scene slice by slice through the array and write a NRRD volume.
     Voxelize(voxelize::Args),
+    /// Carve (or add) with a spherical tool along a path in the hashed octree; write the mesh.
+    Sculpt(sculpt::Args),
     /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
     Blist(blist::Args),
     /// What a scene needs of the hardware: panels, slabs, word, stack, label, and the clocks.
@@ -81,6 +84,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::ExportVerilog(a) => export_verilog::run(a),
         Cmd::Render(a) => render::run(a),
         Cmd::Voxelize(a) => voxelize::run(a),
+        Cmd::Sculpt(a) => sculpt::run(a),
         Cmd::Blist(a) => blist::run(a),
         Cmd::Requirements(a) => requirements::run(a),
         Cmd::Throughput(a) => throughput::run(a),

@@ -13,7 +13,10 @@
 //! joined). Two cells sharing a face see the same corners and draw the same segments, so the
 //! surface closes. Segments are directed so the filled side is on their left seen from
 //! outside the cell; chained into loops and fanned into triangles, they give triangles whose
-//! normal (counter-clockwise) points from filled to empty. The edge table is Bourke's
+//! normal (counter-clockwise) points from filled to empty. Each loop is fanned from its first
+//! vertex whose fan draws no chord inside a cube face (the neighbouring cell could draw the
+//! same chord, giving an edge of four triangles), so a closed mesh has every edge in exactly
+//! two triangles. The edge table is Bourke's
 //! `edgeTable` by definition (an edge is cut when its corners differ); the triangles may
 //! differ from Bourke's `triTable` in how a loop is fanned and on ambiguous faces.
 
@@ -129,11 +132,27 @@ pub fn case_triangles(case: u8) -> Vec<[u8; 3]> {
             ring.push(e as u8);
             e = next[e];
         }
-        for i in 1..ring.len().saturating_sub(1) {
-            tris.push([ring[0], ring[i], ring[i + 1]]);
+        let n = ring.len();
+        let apex = (0..n).find(|&a| fan_stays_off_faces(&ring, a)).unwrap_or(0);
+        for i in 1..n.saturating_sub(1) {
+            tris.push([ring[apex], ring[(apex + i) % n], ring[(apex + i + 1) % n]]);
         }
     }
     tris
+}
+
+/// Does the fan of `ring` from vertex `a` draw no chord inside a cube face? A chord between
+/// two vertices on one face lies in that face, where the neighbouring cell may draw the same
+/// chord: that edge would then have four triangles (a pinch, not a 2-manifold edge).
+fn fan_stays_off_faces(ring: &[u8], a: usize) -> bool {
+    let n = ring.len();
+    (2..n.saturating_sub(1)).all(|i| {
+        let (p, q) = (
+            edge_mid(ring[a] as usize),
+            edge_mid(ring[(a + i) % n] as usize),
+        );
+        !(0..3).any(|k| p[k] == q[k] && p[k] != 0.5)
+    })
 }
 
 /// Longest row of the triangle table: 3 edges per triangle and a −1 terminator.
@@ -216,6 +235,29 @@ mod tests {
         let p = t[0].map(|e| edge_mid(e as usize));
         let n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
         assert!(n[0] + n[1] + n[2] < 0.0, "{n:?}");
+    }
+
+    #[test]
+    fn no_triangle_edge_lies_in_a_face_unless_it_is_a_face_segment() {
+        // An edge inside a face that is not one of the face's segments could be drawn by the
+        // neighbouring cell too: four triangles on one edge.
+        for case in 0..=255u8 {
+            let mut segs = Vec::new();
+            for a in 0..3 {
+                for s in 0..2 {
+                    face_segments(case, face(a, s), &mut segs);
+                }
+            }
+            for t in case_triangles(case) {
+                for i in 0..3 {
+                    let (p, q) = (t[i] as usize, t[(i + 1) % 3] as usize);
+                    let (mp, mq) = (edge_mid(p), edge_mid(q));
+                    let in_face = (0..3).any(|k| mp[k] == mq[k] && mp[k] != 0.5);
+                    let segment = segs.contains(&(p, q)) || segs.contains(&(q, p));
+                    assert!(!in_face || segment, "case {case}: edge {p}-{q}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -181,6 +181,11 @@ impl OptimizedOctree {
         }
     }
 
+    /// Room for `more` nodes without reallocating (sculpting, seed 000 §5.2).
+    pub fn reserve(&mut self, more: usize) {
+        self.table.reserve(more);
+    }
+
     /// The hash table (for its chain statistics).
     pub fn table(&self) -> &KeyTable {
         &self.table

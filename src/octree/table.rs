@@ -91,6 +91,12 @@ impl KeyTable {
         last
     }
 
+    /// Room for `more` entries without moving the entry vector (sculpting: splits insert
+    /// nodes one step at a time, and a reallocation would stall that step).
+    pub fn reserve(&mut self, more: usize) {
+        self.entries.reserve(more);
+    }
+
     /// Ends the build: frees the tail index and spare capacity.
     pub fn seal(&mut self) {
         self.tails = Vec::new();

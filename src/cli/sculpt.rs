@@ -1,0 +1,312 @@
+//! `csgpix sculpt`: a spherical tool carved (or added) along a path through the optimized
+//! hash-based octree of a scene or a stored volume (seed 000 Ch. 5-6; docs/sculpting.md).
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use csgpix::blist::BlistEval;
+use csgpix::mesh;
+use csgpix::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
+use csgpix::output::write_atomic;
+use csgpix::scad::parse_csg;
+use csgpix::sculpt::{self, Frame, Latency, Sculptor, Step, Tool};
+use csgpix::voxelize::{memory_estimate, voxelize_streaming, Grid, Route, Slicer, Volume};
+use glam::DVec3;
+use indicatif::{ProgressBar, ProgressStyle};
+use rtl_model::{Equations, WordFormat};
+use serde::Serialize;
+
+use super::voxelize::{parse_bounds, parse_res};
+
+#[derive(clap::Args, Debug)]
+#[command(after_help = "Examples:\n  \
+    csgpix sculpt vectors/scenes/twelve.csg --res 128 --bounds=-15,-15,-15,15,15,15 --tool sphere:4 --path vectors/paths/carve.csv -o carved.stl\n  \
+    csgpix sculpt vectors/scenes/twelve.csg --res 256 --bounds=-15,-15,-15,15,15,15 --tool sphere:8 --path vectors/paths/carve.csv --json --forces f.csv -o carved.ply\n  \
+    csgpix sculpt part.nrrd --tool sphere:3 --add --path path.csv --stiffness 0.5 -o grown.obj\n\n\
+    PATH.csv: columns x,y,z in scene units, one tool centre per row; a header row, blank\n  \
+    lines and # comments are allowed. Each row is one haptic step: collision by key lookup,\n  \
+    removal (or --add) of every voxel whose centre is inside the sphere, the changed cells'\n  \
+    case bytes rewritten and re-meshed, and the spring force F = k·(P_s − P_c), P_s where the\n  \
+    contact began (seed 000 §6; docs/sculpting.md).")]
+pub struct Args {
+    /// A `.csg` scene (voxelized as by `voxelize`) or a `.nrrd` volume `voxelize` wrote.
+    input: PathBuf,
+    /// Voxels along X, Y, Z for a `.csg` scene: N or NXxNYxNZ (default 128).
+    #[arg(long, value_parser = parse_res)]
+    res: Option<[usize; 3]>,
+    /// Region to voxelize, X0,Y0,Z0,X1,Y1,Z1 in scene units (a `.csg` scene; default: its
+    /// bounds).
+    #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
+    bounds: Option<(DVec3, DVec3)>,
+    /// The tool: sphere:R, R in voxels (0 < R <= 128).
+    #[arg(long, value_parser = sculpt::parse_tool)]
+    tool: f64,
+    /// Add material instead of removing it.
+    #[arg(long)]
+    add: bool,
+    /// Tool positions, CSV x,y,z in scene units.
+    #[arg(long)]
+    path: PathBuf,
+    /// k of F = k·ΔX (force per scene unit).
+    #[arg(long, default_value_t = 1.0)]
+    stiffness: f64,
+    /// Output mesh: .stl (binary), .obj or .ply (binary).
+    #[arg(short = 'o', long)]
+    out: PathBuf,
+    /// Print figures as JSON.
+    #[arg(long)]
+    json: bool,
+    /// Write each step's contact, displacement and force to this CSV.
+    #[arg(long)]
+    forces: Option<PathBuf>,
+    /// Refuse runs needing more memory than this many MiB.
+    #[arg(long, default_value_t = 4096)]
+    max_memory: u64,
+}
+
+/// What a run did.
+#[derive(Serialize)]
+struct Report {
+    input: String,
+    dims: [usize; 3],
+    side: usize,
+    voxel: [f64; 3],
+    radius_voxels: f64,
+    mode: &'static str,
+    stiffness: f64,
+    steps: usize,
+    contact_steps: usize,
+    voxels_changed: u64,
+    cells_remeshed: u64,
+    nodes_before: usize,
+    nodes_after: usize,
+    /// Nodes added by splitting coarse leaves along the paths (7 per level split).
+    nodes_added: u64,
+    triangles_before: usize,
+    triangles_after: usize,
+    /// Edges of the final mesh not in exactly two triangles: 0 when closed (a solid touching
+    /// the grid's far faces is open there; give --bounds with room).
+    open_edges: usize,
+    /// Per step: collision + update + local re-mesh + force.
+    latency: Latency,
+    /// Median step under 1 ms (the 1 kHz haptic loop, seed 000 §1.1).
+    median_under_1ms: bool,
+    /// 99th percentile under 16.7 ms (60 Hz graphics).
+    p99_under_16_7ms: bool,
+    load_seconds: f64,
+    initial_mesh_seconds: f64,
+    sculpt_seconds: f64,
+    write_seconds: f64,
+}
+
+pub fn run(a: Args) -> Result<ExitCode, String> {
+    mesh::Format::of_path(&a.out)?;
+    if !(a.stiffness.is_finite() && a.stiffness >= 0.0) {
+        return Err(format!(
+            "--stiffness {}: must be a finite number >= 0",
+            a.stiffness
+        ));
+    }
+    let text =
+        std::fs::read_to_string(&a.path).map_err(|e| format!("{}: {e}", a.path.display()))?;
+    let path = sculpt::parse_path(&text, &a.path.display().to_string())?;
+    let t0 = Instant::now();
+    let (store, frame, dims) = load(&a)?;
+    let load_seconds = t0.elapsed().as_secs_f64();
+    let nodes_before = store.node_count();
+    let tool = Tool {
+        radius: a.tool,
+        add: a.add,
+        stiffness: a.stiffness,
+    };
+    let t1 = Instant::now();
+    let mut s = Sculptor::new(store, frame, dims, tool)?;
+    let initial_mesh_seconds = t1.elapsed().as_secs_f64();
+    let triangles_before = s.mesh.len();
+    let t2 = Instant::now();
+    let steps = run_path(&mut s, &path)?;
+    let sculpt_seconds = t2.elapsed().as_secs_f64();
+    let t3 = Instant::now();
+    if let Some(f) = &a.forces {
+        write_forces(f, &path, &steps)?;
+    }
+    let comment = format!("csgpix sculpt {}", a.input.display());
+    let tris = s.scene_triangles();
+    mesh::write(&a.out, &tris, &comment)?;
+    let write_seconds = t3.elapsed().as_secs_f64();
+    let secs: Vec<f64> = steps.iter().map(|s| s.seconds).collect();
+    let latency = Latency::of(&secs);
+    let r = Report {
+        input: a.input.display().to_string(),
+        dims,
+        side: s.store.side(),
+        voxel: frame.voxel.to_array(),
+        radius_voxels: a.tool,
+        mode: if a.add { "add" } else { "remove" },
+        stiffness: a.stiffness,
+        steps: steps.len(),
+        contact_steps: steps.iter().filter(|s| s.contact).count(),
+        voxels_changed: steps.iter().map(|s| u64::from(s.voxels)).sum(),
+        cells_remeshed: steps.iter().map(|s| u64::from(s.cells)).sum(),
+        nodes_before,
+        nodes_after: s.store.node_count(),
+        nodes_added: steps.iter().map(|s| s.nodes_added).sum(),
+        triangles_before,
+        triangles_after: s.mesh.len(),
+        open_edges: mesh::open_edges(&tris),
+        latency,
+        median_under_1ms: latency.median_us < 1000.0,
+        p99_under_16_7ms: latency.p99_us < 16_700.0,
+        load_seconds,
+        initial_mesh_seconds,
+        sculpt_seconds,
+        write_seconds,
+    };
+    print_report(&a, &r)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Every step of the path, with a progress bar for long paths.
+fn run_path(s: &mut Sculptor, path: &[DVec3]) -> Result<Vec<Step>, String> {
+    let bar = if path.len() >= 5000 {
+        ProgressBar::new(path.len() as u64)
+    } else {
+        ProgressBar::hidden()
+    };
+    if let Ok(style) =
+        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} steps")
+    {
+        bar.set_style(style);
+    }
+    let mut steps = Vec::with_capacity(path.len());
+    for &p in path {
+        steps.push(s.step(p)?);
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    Ok(steps)
+}
+
+/// The store, its frame and the volume's dims, from a `.csg` scene or a `.nrrd` volume.
+fn load(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
+    let ext = a.input.extension().and_then(|e| e.to_str()).unwrap_or("");
+    match ext.to_ascii_lowercase().as_str() {
+        "csg" => load_scene(a),
+        "nrrd" if a.res.is_none() && a.bounds.is_none() => load_nrrd(&a.input, a.max_memory),
+        "nrrd" => Err("--res and --bounds apply to .csg scenes only".into()),
+        _ => Err(format!(
+            "{}: the input must be a .csg scene or a .nrrd volume",
+            a.input.display()
+        )),
+    }
+}
+
+fn load_nrrd(p: &Path, max_memory: u64) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
+    let bytes = std::fs::read(p).map_err(|e| format!("{}: {e}", p.display()))?;
+    let at = |e: String| format!("{}: {e}", p.display());
+    let (dims, voxels) = csgpix::nrrd::read(&bytes).map_err(at)?;
+    let frame = sculpt::nrrd_frame(&bytes).map_err(at)?;
+    let store = OptimizedOctree::from_volume(&Volume { dims, voxels }, max_memory << 20)?;
+    Ok((store, frame, dims))
+}
+
+/// Voxelizes the scene as `voxelize` does (word model, intervals route, Blist evaluator),
+/// feeding the optimized octree slice by slice.
+fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
+    let name = a.input.display().to_string();
+    let text = std::fs::read_to_string(&a.input).map_err(|e| format!("{name}: {e}"))?;
+    let scene = parse_csg(&text, &name).map_err(|e| e.to_string())?;
+    let res = a.res.unwrap_or([128; 3]);
+    let grid = match a.bounds {
+        Some((lo, hi)) => Grid::new(res, lo, hi),
+        None => Grid::of_scene(&scene, res),
+    }
+    .map_err(|e| format!("{name}:1:1: {e}"))?;
+    let threads = rayon::current_num_threads();
+    let need = memory_estimate(&grid, scene.solids.len(), threads)
+        .saturating_add(octree::memory_estimate(StoreKind::Octree, grid.dims)?);
+    let budget = a.max_memory << 20;
+    if need > budget {
+        return Err(format!(
+            "this run needs about {} MiB, over --max-memory {}: lower --res or raise the limit",
+            need >> 20,
+            a.max_memory
+        ));
+    }
+    let slicer =
+        Slicer::new(&scene, grid, WordFormat::THESIS).map_err(|e| format!("{name}:1:1: {e}"))?;
+    let eval = BlistEval::new(&scene.root);
+    let depth = octree::depth_for(grid.dims)?;
+    let leaves = octree::optimized::Leaves::new(depth, budget - need);
+    let mut b = octree::build_tree(depth, grid.dims[0], leaves);
+    let set = Equations::Derived.set();
+    voxelize_streaming(
+        &slicer,
+        Route::Intervals,
+        set,
+        &eval,
+        &|| {},
+        &mut |k, s| octree::StoreBuilder::push(&mut b, k, s),
+    )?;
+    Ok((b.finish_store()?, Frame::of_grid(&grid), grid.dims))
+}
+
+/// One row per step: position, contact, voxels and cells changed, ΔX, F, microseconds.
+fn write_forces(path: &Path, hips: &[DVec3], steps: &[Step]) -> Result<(), String> {
+    write_atomic(path, |w| {
+        writeln!(
+            w,
+            "step,x,y,z,contact,voxels,cells,dx,dy,dz,fx,fy,fz,f,micros"
+        )?;
+        for (i, (p, s)) in hips.iter().zip(steps).enumerate() {
+            let [dx, dy, dz] = s.displacement;
+            let [fx, fy, fz] = s.force;
+            let f = DVec3::from_array(s.force).length();
+            writeln!(
+                w,
+                "{i},{},{},{},{},{},{},{dx},{dy},{dz},{fx},{fy},{fz},{f},{:.3}",
+                p.x,
+                p.y,
+                p.z,
+                u8::from(s.contact),
+                s.voxels,
+                s.cells,
+                s.seconds * 1e6
+            )?;
+        }
+        Ok(())
+    })
+}
+
+fn print_report(a: &Args, r: &Report) -> Result<(), String> {
+    if a.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(r).map_err(|e| e.to_string())?
+        );
+        return Ok(());
+    }
+    println!(
+        "{}: {} steps ({} in contact), {} voxels {}, {} cells re-meshed; {} -> {} triangles",
+        a.out.display(),
+        r.steps,
+        r.contact_steps,
+        r.voxels_changed,
+        if a.add { "added" } else { "removed" },
+        r.cells_remeshed,
+        r.triangles_before,
+        r.triangles_after
+    );
+    println!(
+        "{} open edges; octree {} -> {} nodes (+{} from splits); step median {:.1} us, p99 {:.1} us, max {:.1} us",
+        r.open_edges,
+        r.nodes_before,
+        r.nodes_after,
+        r.nodes_added,
+        r.latency.median_us,
+        r.latency.p99_us,
+        r.latency.max_us
+    );
+    Ok(())
+}
