@@ -30,7 +30,8 @@ module pixel #(parameter F = 10, I = 10, O = 11, CB = 8, SD = 8) (
     input wire [5:0] sp,
     input wire rst,
     input wire col_bit, row_bit,
-    output wire [CB-1:0] image
+    output wire [CB-1:0] image,
+    output wire [4*(F+I+O+1)+3*CB+6+SD-1:0] state
 );
     localparam W = F + I + O + 1;
     reg [W-1:0] rA, rF, rB, rC;
@@ -121,4 +122,6 @@ module pixel #(parameter F = 10, I = 10, O = 11, CB = 8, SD = 8) (
         end
     end
     assign image = rG;
+    // Observation: every register, {stack, M, T, J, N, S_lo, S_hi, G, E, D, C, B, A}.
+    assign state = {stack, M, T, J, N, s_lo, s_hi, rG, rE, rD, rC, rB, rF, rA};
 endmodule

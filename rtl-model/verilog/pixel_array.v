@@ -60,7 +60,7 @@ module pixel_array #(parameter NX = 16, NY = 16) (
                     .sp(sp),
                     .rst(rst),
                     .col_bit(col[x]), .row_bit(row[y]),
-                    .image(image[(y * NX + x) * 8 +: 8]));
+                    .image(image[(y * NX + x) * 8 +: 8]), .state());
             end
         end
     endgenerate

@@ -139,7 +139,8 @@ pub fn pixel_module(cfg: &ArrayConfig, set: &EquationSet) -> String {
 module pixel #(parameter F = {ff}, I = {ii}, O = {oo}, CB = {cb}, SD = {sd}) (
     input wire clk,
 {ports}    input wire col_bit, row_bit,
-    output wire [CB-1:0] image
+    output wire [CB-1:0] image,
+    output wire [4*(F+I+O+1)+3*CB+6+SD-1:0] state
 );
     localparam W = F + I + O + 1;
     reg [W-1:0] rA, rF, rB, rC;
@@ -230,6 +231,8 @@ module pixel #(parameter F = {ff}, I = {ii}, O = {oo}, CB = {cb}, SD = {sd}) (
         end
     end
     assign image = rG;
+    // Observation: every register, {{stack, M, T, J, N, S_lo, S_hi, G, E, D, C, B, A}}.
+    assign state = {{stack, M, T, J, N, s_lo, s_hi, rG, rE, rD, rC, rB, rF, rA}};
 endmodule
 ",
         set = set.name,
@@ -259,7 +262,7 @@ module pixel_array #(parameter NX = {nx}, NY = {ny}) (
             for (x = 0; x < NX; x = x + 1) begin : gx
                 pixel p(.clk(clk),
 {conns}                    .col_bit(col[x]), .row_bit(row[y]),
-                    .image(image[(y * NX + x) * {cb} +: {cb}]));
+                    .image(image[(y * NX + x) * {cb} +: {cb}]), .state());
             end
         end
     endgenerate
@@ -290,14 +293,9 @@ pub fn testbench(cfg: &ArrayConfig) -> String {
         })
         .collect();
     let mut dump = String::new();
-    for y in 0..ny {
-        for x in 0..nx {
-            let p = format!("dut.gy[{y}].gx[{x}].p");
-            dump += &format!(
-                "        $display(\"P %0d {x} {y} %h %h %h %h %h %h %h %b %b %b %b %b %b %h\", ops, \
-                 {p}.rA, {p}.rF, {p}.rB, {p}.rC, {p}.rD, {p}.rE, {p}.rG, {p}.s_hi, {p}.s_lo, \
-                 {p}.N, {p}.J, {p}.T, {p}.M, {p}.stack);\n"
-            );
+    for y in 0..cfg.height {
+        for x in 0..cfg.width {
+            dump += &format!("            s = dut.gy[{y}].gx[{x}].p.state; show({x}, {y});\n");
         }
     }
     format!(
@@ -311,13 +309,24 @@ module tb_array;
     reg [8*256-1:0] file;
     reg done = 0;
     integer t = 0, ops = 0;
-    wire [NX*NY*{cb}-1:0] image;
+    localparam W = {w}, CB = {cb}, SD = {sd}, SW = {sw};
+    wire [NX*NY*CB-1:0] image;
+    reg [SW-1:0] s;
     pixel_array #(.NX(NX), .NY(NY)) dut(.clk(clk),
 {conns}        .col(c[{lines}+NX-1:{lines}]), .row(c[{lines}+NX+NY-1:{lines}+NX]),
         .image(image));
+    task show(input integer x, input integer y);
+        begin
+            $display(\"P %0d %0d %0d %h %h %h %h %h %h %h %b %b %b %b %b %b %h\", ops, x, y,
+                s[W-1:0], s[2*W-1:W], s[3*W-1:2*W], s[4*W-1:3*W],
+                s[4*W+CB-1:4*W], s[4*W+2*CB-1:4*W+CB], s[4*W+3*CB-1:4*W+2*CB],
+                s[4*W+3*CB], s[4*W+3*CB+1], s[4*W+3*CB+2], s[4*W+3*CB+3], s[4*W+3*CB+4],
+                s[4*W+3*CB+5], s[SW-1:4*W+3*CB+6]);
+        end
+    endtask
     task dump;
-    begin
-{dump}    end
+        begin
+{dump}        end
     endtask
     initial begin
         if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
@@ -336,8 +345,16 @@ module tb_array;
 endmodule
 ",
         cb = cfg.colour_bits,
+        w = cfg.fmt.bits(),
+        sd = cfg.stack_depth,
+        sw = state_width(cfg),
         lines = LINES,
     )
+}
+
+/// Bits of a pixel's `state` port: A F B C, D E G, S_hi S_lo, N J T M, the stack.
+pub fn state_width(cfg: &ArrayConfig) -> usize {
+    4 * cfg.fmt.bits() as usize + 3 * cfg.colour_bits as usize + 6 + cfg.stack_depth
 }
 
 /// One clock's control word.
