@@ -612,7 +612,14 @@ fn cosim_with(
 /// 16×16 windows of the thesis scenes: (lists, clipping function, x0, y0, at least this many
 /// colours in the final image). The cube's left vertex, its top-right corner (the back plane
 /// in front of the screen, docs/select-logic.md), and two corners of the clipped boxes.
-const WINDOWS: [(&[&str], Option<&str>, usize, usize, usize); 4] = [
+type Window = (
+    &'static [&'static str],
+    Option<&'static str>,
+    usize,
+    usize,
+    usize,
+);
+const WINDOWS: [Window; 4] = [
     (&["cube"], None, 56, 90, 3),
     (&["cube"], None, 196, 0, 2),
     (&["box1", "box2"], Some("A.!B"), 112, 148, 3),
