@@ -677,3 +677,97 @@ fn array_cosimulation_catches_faulty_pixels() {
         assert!(err.starts_with("after operation "), "{err}");
     }
 }
+
+/// Speed of the cycle model against the Verilated array on the thesis cube, at 16×16 and
+/// 32×32 (a window of the 250×250 scene): pixel-clocks per second, both measured here. The
+/// Verilated image is checked against the cycle model's first. Ignored by default (building
+/// the 32×32 model takes minutes): `cargo test --release --test verilog -- --ignored
+/// --nocapture speed`.
+#[test]
+#[ignore]
+fn speed_of_the_cycle_model_against_verilator() {
+    if !rtl_tools() {
+        return;
+    }
+    use rtl_model::verilog::pixel;
+    use std::time::Instant;
+    for n in [16, 32] {
+        let cfg = ArrayConfig::new(n, n);
+        let ops = thesis_program(&["cube"], None, 56, 90);
+        let (states, cycles) = cycle_states(cfg, &ops);
+        let want = states.last().unwrap();
+        // The cycle model: whole runs until a second has passed.
+        let t0 = Instant::now();
+        let mut runs = 0u64;
+        while t0.elapsed().as_secs_f64() < 1.0 {
+            let mut arr = CycleArray::new(cfg, Equations::Derived.set());
+            arr.run(&ops).unwrap();
+            runs += 1;
+        }
+        let rust = (runs * cycles * cfg.pixels() as u64) as f64 / t0.elapsed().as_secs_f64();
+        // Verilator: build once, run 1 and R repetitions, the difference is R-1 programs.
+        let tmp = tempfile::tempdir().unwrap();
+        let d = vdir();
+        std::fs::write(
+            tmp.path().join("control.hex"),
+            pixel::control_stream(&cfg, &Equations::Derived.set(), &ops),
+        )
+        .unwrap();
+        std::fs::write(tmp.path().join("tb_bench.v"), pixel::bench_testbench(&cfg)).unwrap();
+        std::fs::write(tmp.path().join("pixel_array.v"), pixel::array_module(&cfg)).unwrap();
+        let p = |f: &str| d.join(f).to_str().unwrap().to_string();
+        let (pv, cv, sv) = (p("pixel.v"), p("comparator.v"), p("sgene_derived.v"));
+        let tb = Instant::now();
+        ok(
+            &run(
+                "verilator",
+                &[
+                    "--binary",
+                    "--timing",
+                    "-Wno-WIDTH",
+                    "-Wno-fatal",
+                    "-O3",
+                    "-j",
+                    "2",
+                    "--top-module",
+                    "tb_bench",
+                    "tb_bench.v",
+                    "pixel_array.v",
+                    &pv,
+                    &cv,
+                    &sv,
+                ],
+                tmp.path(),
+            ),
+            "verilator",
+        );
+        let build = tb.elapsed().as_secs_f64();
+        let exe = tmp.path().join("obj_dir/Vtb_bench");
+        let exe = exe.to_str().unwrap();
+        let timed = |reps: u64| {
+            let t = Instant::now();
+            let out = ok(&run(exe, &[&format!("+reps={reps}")], tmp.path()), "bench");
+            (t.elapsed().as_secs_f64(), out)
+        };
+        let (t1, out) = timed(1);
+        let image = out
+            .lines()
+            .find_map(|l| l.strip_prefix("IMAGE "))
+            .unwrap()
+            .to_string();
+        for (i, px) in want.pixels.iter().enumerate() {
+            let hexpos = image.len() - 2 * (i + 1);
+            let g = u32::from_str_radix(&image[hexpos..hexpos + 2], 16).unwrap();
+            assert_eq!(g, px.creg(CReg::G), "{n}x{n} pixel {i}");
+        }
+        let reps = 1 + (2e7 / (cycles as f64 * cfg.pixels() as f64)).ceil() as u64;
+        let (tr, _) = timed(reps);
+        let verilator = ((reps - 1) * (cycles + 1) * cfg.pixels() as u64) as f64 / (tr - t1);
+        println!(
+            "SPEED {n}x{n} cycles {cycles} csgpix {rust:.3e} verilator {verilator:.3e} \
+             pixel-clocks/s ratio {:.1} (verilator build {build:.0} s, {reps} runs)",
+            rust / verilator
+        );
+        assert!(rust > 0.0 && verilator > 0.0);
+    }
+}

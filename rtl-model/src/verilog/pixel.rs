@@ -529,3 +529,43 @@ pub fn control_stream(cfg: &ArrayConfig, set: &EquationSet, ops: &[Op]) -> Strin
     words.push(end);
     words.iter().map(|w| w.hex() + "\n").collect()
 }
+
+/// `tb_bench`: runs the control stream `+reps=R` times (default 1) through `pixel_array` with
+/// no dumps, for timing, then prints `IMAGE` and the image (G of every pixel, pixel (0, 0) in
+/// the low byte, hex) and `CLOCKS` with the clocks run. Not checked in: the speed test writes
+/// it for each array size.
+pub fn bench_testbench(cfg: &ArrayConfig) -> String {
+    let tb = testbench(cfg).replace("module tb_array;", "module tb_bench;");
+    let start = tb.find("    task show").expect("show task");
+    let end = tb.find("    initial begin").expect("initial");
+    let tb = format!("{}{}", &tb[..start], &tb[end..]);
+    tb.replace(
+        "        #1 clk = 1; #1 clk = 0; rst = 0;
+        while (!done) begin
+            c = mem[t];
+            #1 clk = 1; #1 clk = 0;
+            if (c[1]) begin dump; ops = ops + 1; end
+            done = c[0];
+            t = t + 1;
+        end
+        $display(\"CLOCKS %0d OPS %0d\", t, ops);",
+        "        if (!$value$plusargs(\"reps=%d\", reps)) reps = 1;
+        #1 clk = 1; #1 clk = 0; rst = 0;
+        for (r = 0; r < reps; r = r + 1) begin
+            done = 0; t = 0;
+            while (!done) begin
+                c = mem[t];
+                #1 clk = 1; #1 clk = 0;
+                done = c[0];
+                t = t + 1;
+                clocks = clocks + 1;
+            end
+        end
+        $display(\"IMAGE %h\", image);
+        $display(\"CLOCKS %0d\", clocks);",
+    )
+    .replace(
+        "    integer t = 0, ops = 0;",
+        "    integer t = 0, ops = 0, reps, r, clocks = 0;",
+    )
+}
