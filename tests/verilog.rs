@@ -1,8 +1,9 @@
-//! The Verilog twin of SGENE (docs/verilog.md): regenerated, simulated under Icarus Verilog
-//! and Verilator against the golden vectors, proved with Yosys, and costed.
+//! The Verilog twin (docs/verilog.md): regenerated; SGENE simulated under Icarus Verilog and
+//! Verilator against the golden vectors, proved with Yosys, and costed; the pixel array
+//! co-simulated against the `cycle` model on thesis scenes.
 //!
 //! Expected figures come from the golden vectors and docs/select-logic.md (rows per signal;
-//! the printed set's 15 + 11 faulty rows), never from the generator.
+//! the printed set's 15 + 11 faulty rows) and from `CycleArray`, never from the generator.
 
 mod common;
 use common::csgpix;
