@@ -2,11 +2,11 @@
 module tb_comparator;
     localparam F = 10, I = 10, O = 11, W = 32;
     reg clk = 0, first = 0, a = 0, r = 0;
-    wire N, J, T, M;
+    wire N, J, T, M, Nn, Jn, Tn, Mn;
     integer pairs = 0, bad = 0, n, seed = 1;
     reg [W-1:0] x, y;
-    comparator #(.F(F), .I(I), .O(O)) dut(.clk(clk), .first(first), .a(a), .r(r),
-        .N(N), .J(J), .T(T), .M(M));
+    comparator #(.F(F), .I(I), .O(O)) dut(.clk(clk), .rst(1'b0), .en(1'b1), .first(first),
+        .a(a), .r(r), .N(N), .J(J), .T(T), .M(M), .Nn(Nn), .Jn(Jn), .Tn(Tn), .Mn(Mn));
     task run(input [W-1:0] A, input [W-1:0] R);
         integer b;
         reg [3:0] want;

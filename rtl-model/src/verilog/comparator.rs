@@ -12,9 +12,13 @@ pub fn module(fmt: &WordFormat) -> String {
         "// Bit-serial comparator, seed 001 §2.3.2 and §2.4.2 (Figure 2.9 \"compare\").
 // Words arrive LSB first; `first` is high with bit 0. Four flip-flops: lt (A < R on the
 // bits seen; at the sign bit the order reverses), eq, ovf (an overflow bit of A was 1), sign.
+// `en` low holds every flip-flop (clocks with no comparison); `rst` gives \"equal\" (J = T = 1).
+// Nn Jn Tn Mn are the flags as they will be after this clock: SGENE latches them with the
+// sign bit, so its code is ready for TRANSD in the next clock (Figure 2.11).
 module comparator #(parameter F = {f}, I = {i}, O = {o}) (
-    input wire clk, first, a, r,
-    output wire N, J, T, M
+    input wire clk, rst, en, first, a, r,
+    output wire N, J, T, M,
+    output wire Nn, Jn, Tn, Mn
 );
     localparam W = F + I + O + 1, KW = $clog2(W);
     reg [KW-1:0] k;
@@ -27,17 +31,33 @@ module comparator #(parameter F = {f}, I = {i}, O = {o}) (
     wire is_ovf = bit_k >= F + I && bit_k < W - 1;
     wire diff = a ^ r;
     wire a_smaller = is_sign ? a : r;
+    wire lt_n = diff ? a_smaller : lt0;
+    wire eq_n = eq0 & ~diff;
+    wire ovf_n = ovf0 | (is_ovf & a);
+    wire sign_n = is_sign ? a : sign;
     always @(posedge clk) begin
-        k <= bit_k + 1'b1;
-        lt <= diff ? a_smaller : lt0;
-        eq <= eq0 & ~diff;
-        ovf <= ovf0 | (is_ovf & a);
-        if (is_sign) sign <= a;
+        if (rst) begin
+            k <= {{KW{{1'b0}}}};
+            lt <= 1'b0;
+            eq <= 1'b1;
+            ovf <= 1'b0;
+            sign <= 1'b0;
+        end else if (en) begin
+            k <= bit_k + 1'b1;
+            lt <= lt_n;
+            eq <= eq_n;
+            ovf <= ovf_n;
+            sign <= sign_n;
+        end
     end
     assign N = sign;
     assign J = lt | eq;
     assign T = eq;
     assign M = ovf & ~sign;
+    assign Nn = sign_n;
+    assign Jn = lt_n | eq_n;
+    assign Tn = eq_n;
+    assign Mn = ovf_n & ~sign_n;
 endmodule
 ",
         f = fmt.frac,
@@ -84,11 +104,11 @@ pub fn testbench(fmt: &WordFormat, random: u32) -> String {
 module tb_comparator;
     localparam F = {f}, I = {i}, O = {o}, W = {w};
     reg clk = 0, first = 0, a = 0, r = 0;
-    wire N, J, T, M;
+    wire N, J, T, M, Nn, Jn, Tn, Mn;
     integer pairs = 0, bad = 0, n, seed = 1;
     reg [W-1:0] x, y;
-    comparator #(.F(F), .I(I), .O(O)) dut(.clk(clk), .first(first), .a(a), .r(r),
-        .N(N), .J(J), .T(T), .M(M));
+    comparator #(.F(F), .I(I), .O(O)) dut(.clk(clk), .rst(1'b0), .en(1'b1), .first(first),
+        .a(a), .r(r), .N(N), .J(J), .T(T), .M(M), .Nn(Nn), .Jn(Jn), .Tn(Tn), .Mn(Mn));
     task run(input [W-1:0] A, input [W-1:0] R);
         integer b;
         reg [3:0] want;

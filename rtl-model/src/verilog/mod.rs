@@ -1,11 +1,14 @@
 //! A Verilog-2005 twin of the select logic (SGENE, seed 001 §2.3.3-2.3.5), written from the
-//! same equation sets the Rust models evaluate, and the files that check it.
+//! same equation sets the Rust models evaluate, the bit-serial comparator, one pixel processor
+//! and an array of them driven by a per-clock control stream ([`pixel`]), and the files that
+//! check them.
 //!
 //! [`files`] is everything `csgpix export-verilog` writes (checked in under
 //! `rtl-model/verilog/`); docs/verilog.md says how each file is used.
 
 pub mod check;
 pub mod comparator;
+pub mod pixel;
 pub mod sgene;
 
 use crate::select::pla::Pla;
@@ -43,6 +46,12 @@ fn cost_script() -> String {
     }
     v += "design -reset\nread_verilog comparator.v\nsynth -top comparator\nlog COST comparator generic\nstat\n";
     v += "design -reset\nread_verilog comparator.v\nsynth -top comparator -lut 4\nlog COST comparator lut4\nstat\n";
+    let px = "design -reset\nread_verilog pixel.v comparator.v sgene_derived.v\n";
+    v += &format!("{px}synth -top pixel -flatten\nlog COST pixel generic\nstat\n");
+    v += &format!("{px}synth -top pixel -flatten -lut 4\nlog COST pixel lut4\nstat\n");
+    v += &format!(
+        "{px}synth -top pixel -flatten\nabc -lut 6\nopt_clean\nlog COST pixel lut6\nstat\n"
+    );
     v
 }
 
@@ -68,6 +77,11 @@ pub fn files() -> Result<Vec<(String, String)>, String> {
         "tb_comparator.v".to_string(),
         comparator::testbench(&fmt, 2000),
     ));
+    let cfg = crate::ArrayConfig::new(16, 16);
+    let derived = Equations::Derived.set();
+    out.push(("pixel.v".to_string(), pixel::pixel_module(&cfg, &derived)));
+    out.push(("pixel_array.v".to_string(), pixel::array_module(&cfg)));
+    out.push(("tb_array.v".to_string(), pixel::testbench(&cfg)));
     out.push(("cost.ys".to_string(), cost_script()));
     Ok(out)
 }

@@ -1,0 +1,571 @@
+//! One pixel processor (Figure 2.9) and an n×m array of them as Verilog, driven by the control
+//! word a controller broadcasts every clock, and the control stream of a program.
+//!
+//! * [`pixel_module`]: registers A F B C (depth, circulating shift registers, bit k at bit 0
+//!   in clock k), D E G (colour), the latched code S_hi S_lo, the pixel's DEPGEN adder (one
+//!   carry flip-flop), the comparator, SGENE (`derived`), TRANSD/TRANSC and the clipping stack.
+//! * [`array_module`]: `pixel_array`, NX×NY pixels sharing the control word; pixel (x, y) adds
+//!   column line x and row line y. The DEPGEN trees that drive the lines are in the controller
+//!   (here the testbench's control stream: `x·dx` on column x, `c0 + y·dy` on row y, modulo
+//!   2^N_D, LSB first), not in Verilog.
+//! * [`testbench`]: `tb_array` reads a control stream (`$readmemh`), clocks it into the array
+//!   and prints every register of every pixel where the stream says so (after each operation).
+//! * [`control_stream`]: the stream of a program, one word per clock, from [`Window::of`] and
+//!   the same sequencing as the models (pending transfer, stack pointer, DEPGEN fill).
+//!
+//! The pixel does what `cycle.rs` does in one clock: TRANSD/TRANSC write bit k of the register
+//! the previous window's code targets, DEPGEN's sum goes into bit k of A (and MEM D's bit into
+//! D), and the comparator takes bit k of both operands as just written.
+
+use crate::array::Sequencer;
+use crate::comparator::BitRole;
+use crate::program::{stack_effect, CReg, Decide, Decode, Op, Reg, Transfer, Window};
+use crate::select::EquationSet;
+use crate::state::ArrayConfig;
+
+/// Control word fields: (name, first bit, width). The column and row line bits follow at
+/// [`LINES`]: column x at `LINES + x`, row y at `LINES + NX + y`.
+pub const FIELDS: [(&str, usize, usize); 30] = [
+    ("last", 0, 1),
+    ("dump", 1, 1),
+    ("win", 2, 1),
+    ("col_en", 3, 1),
+    ("first", 4, 1),
+    ("is_sign", 5, 1),
+    ("is_ovf", 6, 1),
+    ("cmp_en", 7, 1),
+    ("lhs", 8, 2),
+    ("rhs", 10, 2),
+    ("st_en", 12, 1),
+    ("d_en", 13, 1),
+    ("d_bit", 14, 1),
+    ("tr_en", 15, 1),
+    ("tr_dst", 16, 2),
+    ("tr_src", 18, 2),
+    ("tr_cpair", 20, 2),
+    ("tr_compose", 22, 1),
+    ("int_bit", 23, 1),
+    ("dec_latch", 24, 1),
+    ("dec_pos", 25, 2),
+    ("ext", 27, 6),
+    ("dec_push", 33, 1),
+    ("stk_en", 34, 1),
+    ("stk_op", 35, 2),
+    ("sp", 37, 6),
+    ("spare0", 43, 1),
+    ("spare1", 44, 1),
+    ("spare2", 45, 1),
+    ("spare3", 46, 1),
+];
+
+/// First bit of the line bits.
+pub const LINES: usize = 48;
+
+fn field(name: &str) -> (usize, usize) {
+    let f = FIELDS.iter().find(|f| f.0 == name).expect("field");
+    (f.1, f.2)
+}
+
+/// The Verilog slice of a field of control word `c`: `c[9:8]`.
+fn slice(name: &str) -> String {
+    let (lo, w) = field(name);
+    if w == 1 {
+        format!("c[{lo}]")
+    } else {
+        format!("c[{}:{lo}]", lo + w - 1)
+    }
+}
+
+/// The broadcast control ports, in order, with their widths.
+const PORTS: [(&str, usize); 24] = [
+    ("win", 1),
+    ("col_en", 1),
+    ("first", 1),
+    ("is_sign", 1),
+    ("cmp_en", 1),
+    ("lhs", 2),
+    ("rhs", 2),
+    ("st_en", 1),
+    ("d_en", 1),
+    ("d_bit", 1),
+    ("tr_en", 1),
+    ("tr_dst", 2),
+    ("tr_src", 2),
+    ("tr_cpair", 2),
+    ("tr_compose", 1),
+    ("int_bit", 1),
+    ("dec_latch", 1),
+    ("dec_pos", 2),
+    ("ext", 6),
+    ("dec_push", 1),
+    ("stk_en", 1),
+    ("stk_op", 2),
+    ("sp", 6),
+    ("rst", 1),
+];
+
+fn port_decls() -> String {
+    PORTS
+        .iter()
+        .map(|(n, w)| {
+            if *w == 1 {
+                format!("    input wire {n},\n")
+            } else {
+                format!("    input wire [{}:0] {n},\n", w - 1)
+            }
+        })
+        .collect()
+}
+
+fn port_conns(indent: &str) -> String {
+    PORTS
+        .iter()
+        .map(|(n, _)| format!("{indent}.{n}({n}),\n"))
+        .collect()
+}
+
+/// `pixel`: one pixel processor. Register codes on `lhs rhs tr_dst tr_src` are those of
+/// [`Reg`] (A 0, F 1, B 2, C 3); `tr_cpair` 1 is E ← D, 2 is G ← E; `dec_pos` 0-3 picks
+/// SGENE's front, back, close or second pair; `ext` is {P, X, Y, H, S, L}; `stk_op` 0 AND,
+/// 1 OR, 2 NOT, 3 apply (pop LL' into the code).
+pub fn pixel_module(cfg: &ArrayConfig, set: &EquationSet) -> String {
+    let f = &cfg.fmt;
+    format!(
+        "// One pixel processor, seed 001 Figure 2.9: depth registers A F B C, colour registers
+// D E G, the select code S_hi S_lo, the pixel's DEPGEN adder, compare, SGENE ({set}),
+// TRANSD/TRANSC and the clipping stack. Every control input is broadcast by the controller
+// to the whole array each clock; only col_bit and row_bit (DEPGEN's lines) differ by pixel.
+// Depth and colour registers circulate: bit k of the window sits at bit 0 in clock k.
+module pixel #(parameter F = {ff}, I = {ii}, O = {oo}, CB = {cb}, SD = {sd}) (
+    input wire clk,
+{ports}    input wire col_bit, row_bit,
+    output wire [CB-1:0] image,
+    output wire [4*(F+I+O+1)+3*CB+6+SD-1:0] state
+);
+    localparam W = F + I + O + 1;
+    reg [W-1:0] rA, rF, rB, rC;
+    reg [CB-1:0] rD, rE, rG;
+    reg s_hi, s_lo, carry;
+    reg [SD-1:0] stack;
+
+    // TRANSD/TRANSC: the latched code decoded (Sel: 00 Put A, 10 Put 0, 01 Keep, 11 Put 1;
+    // Compose: 00 Put 1, 01 Put F, 1- Keep C).
+    wire put_src = tr_compose ? ~s_hi & s_lo : ~s_hi & ~s_lo;
+    wire put0 = tr_compose ? 1'b0 : s_hi & ~s_lo;
+    wire keep = tr_compose ? s_hi : ~s_hi & s_lo;
+    wire put1 = tr_compose ? ~s_hi & ~s_lo : s_hi & s_lo;
+    wire [3:0] cur = {{rC[0], rB[0], rF[0], rA[0]}};
+    wire src = cur[tr_src];
+    wire one = ~is_sign;  // the Put-1 word 011...1
+    wire [3:0] hit = tr_en ? 4'b0001 << tr_dst : 4'b0000;
+    wire nF = hit[1] ? put_src & src | keep & rF[0] | put1 & one : rF[0];
+    wire nB = hit[2] ? put_src & src | keep & rB[0] | put1 & one : rB[0];
+    wire nC = hit[3] ? put_src & src | keep & rC[0] | put1 & one : rC[0];
+    wire csrc = tr_cpair == 2'd1 ? rD[0] : rE[0];
+    wire cen = tr_en & col_en;
+    wire nE = cen && tr_cpair == 2'd1 ? put_src & csrc | keep & rE[0] | put0 & int_bit : rE[0];
+    wire nG = cen && tr_cpair == 2'd2 ? put_src & csrc | keep & rG[0] | put0 & int_bit : rG[0];
+
+    // DEPGEN: the pixel's one-bit serial adder of its column and row lines, into A; MEM D.
+    wire cin = first ? 1'b0 : carry;
+    wire sum = col_bit ^ row_bit ^ cin;
+    wire nA = st_en ? sum : rA[0];
+    wire nD = d_en ? d_bit : rD[0];
+
+    // compare: the operands as written this clock.
+    wire [3:0] nxt = {{nC, nB, nF, nA}};
+    wire N, J, T, M, Nn, Jn, Tn, Mn;
+    comparator #(.F(F), .I(I), .O(O)) cmp(.clk(clk), .rst(rst), .en(cmp_en), .first(first),
+        .a(nxt[lhs]), .r(nxt[rhs]), .N(N), .J(J), .T(T), .M(M),
+        .Nn(Nn), .Jn(Jn), .Tn(Tn), .Mn(Mn));
+
+    // SGENE on the flags after this clock; the stage selector picks the pair.
+    wire front_S1, front_S2, back_S1, back_S2, close_S1, close_S2, clip_LL, second_S3, second_S4;
+    sgene_{set} sgene(.L(ext[0]), .S(ext[1]), .H(ext[2]), .Y(ext[3]), .X(ext[4]), .P(ext[5]),
+        .N(Nn), .J(Jn), .T(Tn), .M(Mn),
+        .front_S1(front_S1), .front_S2(front_S2), .back_S1(back_S1), .back_S2(back_S2),
+        .close_S1(close_S1), .close_S2(close_S2), .clip_LL(clip_LL),
+        .second_S3(second_S3), .second_S4(second_S4));
+    wire [7:0] pairs = {{second_S3, second_S4, close_S1, close_S2, back_S1, back_S2,
+        front_S1, front_S2}};
+    wire [1:0] code = pairs[2 * dec_pos +: 2];
+
+    // clipping stack: one bit per level, the stack pointer sp is the controller's.
+    wire top = stack[sp - 6'd1];
+    wire under = stack[sp - 6'd2];
+
+    always @(posedge clk) begin
+        if (rst) begin
+            rA <= {{1'b0, {{W-1{{1'b1}}}}}};
+            rF <= {{1'b0, {{W-1{{1'b1}}}}}};
+            rB <= {{1'b0, {{W-1{{1'b1}}}}}};
+            rC <= {{1'b0, {{W-1{{1'b1}}}}}};
+            rD <= {{CB{{1'b0}}}};
+            rE <= {{CB{{1'b0}}}};
+            rG <= {{CB{{1'b0}}}};
+            {{s_hi, s_lo}} <= 2'b01;
+            carry <= 1'b0;
+            stack <= {{SD{{1'b0}}}};
+        end else begin
+            if (win) begin
+                rA <= {{nA, rA[W-1:1]}};
+                rF <= {{nF, rF[W-1:1]}};
+                rB <= {{nB, rB[W-1:1]}};
+                rC <= {{nC, rC[W-1:1]}};
+            end
+            if (win & col_en) begin
+                rD <= {{nD, rD[CB-1:1]}};
+                rE <= {{nE, rE[CB-1:1]}};
+                rG <= {{nG, rG[CB-1:1]}};
+            end
+            if (st_en) carry <= col_bit & row_bit | cin & (col_bit ^ row_bit);
+            if (dec_latch) {{s_hi, s_lo}} <= code;
+            if (dec_push) stack[sp] <= clip_LL;
+            if (stk_en)
+                case (stk_op)
+                    2'd0: stack[sp - 6'd2] <= under & top;
+                    2'd1: stack[sp - 6'd2] <= under | top;
+                    2'd2: stack[sp - 6'd1] <= ~top;
+                    default: {{s_hi, s_lo}} <= {{~top, 1'b1}};
+                endcase
+        end
+    end
+    assign image = rG;
+    // Observation: every register, {{stack, M, T, J, N, S_lo, S_hi, G, E, D, C, B, A}}.
+    assign state = {{stack, M, T, J, N, s_lo, s_hi, rG, rE, rD, rC, rB, rF, rA}};
+endmodule
+",
+        set = set.name,
+        ff = f.frac,
+        ii = f.int,
+        oo = f.ovf,
+        cb = cfg.colour_bits,
+        sd = cfg.stack_depth,
+        ports = port_decls(),
+    )
+}
+
+/// `pixel_array`: NX×NY pixels on the broadcast control, column line x and row line y.
+pub fn array_module(cfg: &ArrayConfig) -> String {
+    format!(
+        "// An NX×NY array of pixel processors (seed 001 Figure 2.8): one control word for all;
+// DEPGEN's column lines (x·dx) and row lines (c0 + y·dy) come in bit-serially, LSB first.
+module pixel_array #(parameter NX = {nx}, NY = {ny}) (
+    input wire clk,
+{ports}    input wire [NX-1:0] col,
+    input wire [NY-1:0] row,
+    output wire [NX*NY*{cb}-1:0] image
+);
+    genvar x, y;
+    generate
+        for (y = 0; y < NY; y = y + 1) begin : gy
+            for (x = 0; x < NX; x = x + 1) begin : gx
+                pixel p(.clk(clk),
+{conns}                    .col_bit(col[x]), .row_bit(row[y]),
+                    .image(image[(y * NX + x) * {cb} +: {cb}]), .state());
+            end
+        end
+    endgenerate
+endmodule
+",
+        nx = cfg.width,
+        ny = cfg.height,
+        cb = cfg.colour_bits,
+        ports = port_decls(),
+        conns = port_conns("                    "),
+    )
+}
+
+/// `tb_array`: reads the control stream named by `+ctl=FILE` (default `control.hex`), one
+/// word per clock until the word with `last`, and after every word with `dump` prints one
+/// line per pixel: `P op x y A F B C D E G S_hi S_lo N J T M stack` (hex, flags binary).
+pub fn testbench(cfg: &ArrayConfig) -> String {
+    let (nx, ny) = (cfg.width, cfg.height);
+    let cw = LINES + nx + ny;
+    let conns: String = PORTS
+        .iter()
+        .map(|(n, _)| {
+            if *n == "rst" {
+                "        .rst(rst),\n".to_string()
+            } else {
+                format!("        .{n}({}),\n", slice(n))
+            }
+        })
+        .collect();
+    let mut dump = String::new();
+    for y in 0..cfg.height {
+        for x in 0..cfg.width {
+            dump += &format!("            s = dut.gy[{y}].gx[{x}].p.state; show({x}, {y});\n");
+        }
+    }
+    format!(
+        "// Runs a control stream through pixel_array and prints every register of every pixel
+// after each operation; generated, do not edit. Control word fields: see pixel.rs FIELDS.
+module tb_array;
+    localparam NX = {nx}, NY = {ny}, CW = {cw}, MAXCLK = 1 << 20;
+    reg clk = 0, rst = 1;
+    reg [CW-1:0] mem [0:MAXCLK-1];
+    reg [CW-1:0] c = {{CW{{1'b0}}}};
+    reg [8*256-1:0] file;
+    reg done = 0;
+    integer t = 0, ops = 0;
+    localparam W = {w}, CB = {cb}, SD = {sd}, SW = {sw};
+    wire [NX*NY*CB-1:0] image;
+    reg [SW-1:0] s;
+    pixel_array #(.NX(NX), .NY(NY)) dut(.clk(clk),
+{conns}        .col(c[{lines}+NX-1:{lines}]), .row(c[{lines}+NX+NY-1:{lines}+NX]),
+        .image(image));
+    task show(input integer x, input integer y);
+        begin
+            $display(\"P %0d %0d %0d %h %h %h %h %h %h %h %b %b %b %b %b %b %h\", ops, x, y,
+                s[W-1:0], s[2*W-1:W], s[3*W-1:2*W], s[4*W-1:3*W],
+                s[4*W+CB-1:4*W], s[4*W+2*CB-1:4*W+CB], s[4*W+3*CB-1:4*W+2*CB],
+                s[4*W+3*CB], s[4*W+3*CB+1], s[4*W+3*CB+2], s[4*W+3*CB+3], s[4*W+3*CB+4],
+                s[4*W+3*CB+5], s[SW-1:4*W+3*CB+6]);
+        end
+    endtask
+    task dump;
+        begin
+{dump}        end
+    endtask
+    initial begin
+        if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
+        $readmemh(file, mem);
+        #1 clk = 1; #1 clk = 0; rst = 0;
+        while (!done) begin
+            c = mem[t];
+            #1 clk = 1; #1 clk = 0;
+            if (c[1]) begin dump; ops = ops + 1; end
+            done = c[0];
+            t = t + 1;
+        end
+        $display(\"CLOCKS %0d OPS %0d\", t, ops);
+        $finish;
+    end
+endmodule
+",
+        cb = cfg.colour_bits,
+        w = cfg.fmt.bits(),
+        sd = cfg.stack_depth,
+        sw = state_width(cfg),
+        lines = LINES,
+    )
+}
+
+/// Bits of a pixel's `state` port: A F B C, D E G, S_hi S_lo, N J T M, the stack.
+pub fn state_width(cfg: &ArrayConfig) -> usize {
+    4 * cfg.fmt.bits() as usize + 3 * cfg.colour_bits as usize + 6 + cfg.stack_depth
+}
+
+/// One clock's control word.
+#[derive(Clone, Debug)]
+struct Word(Vec<bool>);
+
+impl Word {
+    fn new(cfg: &ArrayConfig) -> Word {
+        Word(vec![false; LINES + cfg.width + cfg.height])
+    }
+
+    fn set(&mut self, name: &str, v: u64) {
+        let (lo, w) = field(name);
+        assert!(w == 64 || v >> w == 0, "{name} = {v} does not fit {w} bits");
+        for i in 0..w {
+            self.0[lo + i] = v >> i & 1 == 1;
+        }
+    }
+
+    fn hex(&self) -> String {
+        let digits = self.0.len().div_ceil(4);
+        (0..digits)
+            .rev()
+            .map(|d| {
+                let v = (0..4)
+                    .filter(|b| self.0.get(d * 4 + b) == Some(&true))
+                    .fold(0, |a, b| a | 1 << b);
+                char::from_digit(v, 16).unwrap()
+            })
+            .collect()
+    }
+}
+
+fn reg_code(r: Reg) -> u64 {
+    r as u64
+}
+
+/// The control stream of `ops` (checked with [`crate::array::check_program`] first): one hex
+/// word per line, one line per clock, `dump` on the last clock of every operation and of the
+/// flush window, `last` on the final clock. Clocks = the models' cycle count.
+pub fn control_stream(cfg: &ArrayConfig, set: &EquationSet, ops: &[Op]) -> String {
+    let nd = cfg.fmt.bits() as usize;
+    let mask = cfg.fmt.mask();
+    let mut seq = Sequencer::default();
+    let mut words: Vec<Word> = vec![];
+    let transfer = |w: &mut Word, t: &Transfer, k: usize| {
+        w.set("tr_en", 1);
+        w.set("tr_dst", reg_code(t.dst));
+        w.set("tr_src", reg_code(t.src));
+        w.set(
+            "tr_cpair",
+            match t.colour {
+                None => 0,
+                Some((CReg::E, CReg::D)) => 1,
+                Some((CReg::G, CReg::E)) => 2,
+                Some(other) => panic!("no colour path {other:?}"),
+            },
+        );
+        w.set("tr_compose", (t.decode == Decode::Compose) as u64);
+        w.set("int_bit", (t.interior as u64) >> k & 1);
+    };
+    let clock = |w: &mut Word, k: usize| {
+        w.set("win", 1);
+        w.set("col_en", (k < cfg.colour_bits as usize) as u64);
+        w.set("first", (k == 0) as u64);
+        w.set(
+            "is_sign",
+            (BitRole::of(&cfg.fmt, k as u32) == BitRole::Sign) as u64,
+        );
+        w.set(
+            "is_ovf",
+            (BitRole::of(&cfg.fmt, k as u32) == BitRole::Overflow) as u64,
+        );
+    };
+    for op in ops {
+        match Window::of(op, set) {
+            Some(win) => {
+                let clocks = seq.window_clocks(cfg, &win) as usize;
+                for _ in nd..clocks {
+                    words.push(Word::new(cfg));
+                }
+                let (l, s, h, y, x, p) = match *op {
+                    Op::Plane { l, s, h, y, .. } => (l, s, h, y, false, false),
+                    Op::Close { l } => (l, false, false, false, false, false),
+                    Op::ClipPlane { h, y, x, .. } => (false, false, h, y, x, false),
+                    Op::Compose { p } => (false, false, false, false, false, p),
+                    _ => unreachable!(),
+                };
+                let ext = [l, s, h, y, x, p]
+                    .iter()
+                    .enumerate()
+                    .fold(0, |a, (i, b)| a | (*b as u64) << i);
+                for k in 0..nd {
+                    let mut w = Word::new(cfg);
+                    clock(&mut w, k);
+                    w.set("cmp_en", 1);
+                    w.set("lhs", reg_code(win.lhs));
+                    w.set("rhs", reg_code(win.rhs));
+                    w.set("ext", ext);
+                    if let Some((c, colour)) = win.stream {
+                        w.set("st_en", 1);
+                        for xi in 0..cfg.width {
+                            let v = (xi as i64).wrapping_mul(c.dx) as u64 & mask;
+                            w.0[LINES + xi] = v >> k & 1 == 1;
+                        }
+                        for yi in 0..cfg.height {
+                            let v = c.c0.wrapping_add((yi as i64).wrapping_mul(c.dy)) as u64 & mask;
+                            w.0[LINES + cfg.width + yi] = v >> k & 1 == 1;
+                        }
+                        if let Some(col) = colour {
+                            if k < cfg.colour_bits as usize {
+                                w.set("d_en", 1);
+                                w.set("d_bit", (col as u64) >> k & 1);
+                            }
+                        }
+                    }
+                    if let Some(t) = &seq.pending {
+                        transfer(&mut w, t, k);
+                    }
+                    if k == nd - 1 {
+                        w.set("dump", 1);
+                        w.set("sp", seq.sp as u64);
+                        match win.decide {
+                            Decide::Latch(..) => {
+                                w.set("dec_latch", 1);
+                                w.set("dec_pos", win.position as u64 - 1);
+                            }
+                            Decide::Push(_) => w.set("dec_push", 1),
+                        }
+                    }
+                    words.push(w);
+                }
+                if matches!(win.decide, Decide::Push(_)) {
+                    seq.sp += 1;
+                }
+                seq.pending = win.transfer;
+            }
+            None => {
+                let mut w = Word::new(cfg);
+                w.set("stk_en", 1);
+                w.set("dump", 1);
+                w.set("sp", seq.sp as u64);
+                w.set(
+                    "stk_op",
+                    match op {
+                        Op::ClipAnd => 0,
+                        Op::ClipOr => 1,
+                        Op::ClipNot => 2,
+                        _ => 3,
+                    },
+                );
+                words.push(w);
+                if matches!(op, Op::ClipApply) {
+                    seq.pending = Some(Transfer::clip_apply());
+                }
+                let (pop, push) = stack_effect(op);
+                seq.sp = seq.sp - pop + push;
+            }
+        }
+    }
+    if let Some(t) = seq.pending.take() {
+        for k in 0..nd {
+            let mut w = Word::new(cfg);
+            clock(&mut w, k);
+            transfer(&mut w, &t, k);
+            w.set("dump", (k == nd - 1) as u64);
+            words.push(w);
+        }
+    }
+    let mut end = Word::new(cfg);
+    end.set("last", 1);
+    words.push(end);
+    words.iter().map(|w| w.hex() + "\n").collect()
+}
+
+/// `tb_bench`: runs the control stream `+reps=R` times (default 1) through `pixel_array` with
+/// no dumps, for timing, then prints `IMAGE` and the image (G of every pixel, pixel (0, 0) in
+/// the low byte, hex) and `CLOCKS` with the clocks run. Not checked in: the speed test writes
+/// it for each array size.
+pub fn bench_testbench(cfg: &ArrayConfig) -> String {
+    let tb = testbench(cfg).replace("module tb_array;", "module tb_bench;");
+    let start = tb.find("    task show").expect("show task");
+    let end = tb.find("    initial begin").expect("initial");
+    let tb = format!("{}{}", &tb[..start], &tb[end..]);
+    tb.replace(
+        "        #1 clk = 1; #1 clk = 0; rst = 0;
+        while (!done) begin
+            c = mem[t];
+            #1 clk = 1; #1 clk = 0;
+            if (c[1]) begin dump; ops = ops + 1; end
+            done = c[0];
+            t = t + 1;
+        end
+        $display(\"CLOCKS %0d OPS %0d\", t, ops);",
+        "        if (!$value$plusargs(\"reps=%d\", reps)) reps = 1;
+        #1 clk = 1; #1 clk = 0; rst = 0;
+        for (r = 0; r < reps; r = r + 1) begin
+            done = 0; t = 0;
+            while (!done) begin
+                c = mem[t];
+                #1 clk = 1; #1 clk = 0;
+                done = c[0];
+                t = t + 1;
+                clocks = clocks + 1;
+            end
+        end
+        $display(\"IMAGE %h\", image);
+        $display(\"CLOCKS %0d\", clocks);",
+    )
+    .replace(
+        "    integer t = 0, ops = 0;",
+        "    integer t = 0, ops = 0, reps, r, clocks = 0;",
+    )
+}

@@ -1,0 +1,67 @@
+// An NX×NY array of pixel processors (seed 001 Figure 2.8): one control word for all;
+// DEPGEN's column lines (x·dx) and row lines (c0 + y·dy) come in bit-serially, LSB first.
+module pixel_array #(parameter NX = 16, NY = 16) (
+    input wire clk,
+    input wire win,
+    input wire col_en,
+    input wire first,
+    input wire is_sign,
+    input wire cmp_en,
+    input wire [1:0] lhs,
+    input wire [1:0] rhs,
+    input wire st_en,
+    input wire d_en,
+    input wire d_bit,
+    input wire tr_en,
+    input wire [1:0] tr_dst,
+    input wire [1:0] tr_src,
+    input wire [1:0] tr_cpair,
+    input wire tr_compose,
+    input wire int_bit,
+    input wire dec_latch,
+    input wire [1:0] dec_pos,
+    input wire [5:0] ext,
+    input wire dec_push,
+    input wire stk_en,
+    input wire [1:0] stk_op,
+    input wire [5:0] sp,
+    input wire rst,
+    input wire [NX-1:0] col,
+    input wire [NY-1:0] row,
+    output wire [NX*NY*8-1:0] image
+);
+    genvar x, y;
+    generate
+        for (y = 0; y < NY; y = y + 1) begin : gy
+            for (x = 0; x < NX; x = x + 1) begin : gx
+                pixel p(.clk(clk),
+                    .win(win),
+                    .col_en(col_en),
+                    .first(first),
+                    .is_sign(is_sign),
+                    .cmp_en(cmp_en),
+                    .lhs(lhs),
+                    .rhs(rhs),
+                    .st_en(st_en),
+                    .d_en(d_en),
+                    .d_bit(d_bit),
+                    .tr_en(tr_en),
+                    .tr_dst(tr_dst),
+                    .tr_src(tr_src),
+                    .tr_cpair(tr_cpair),
+                    .tr_compose(tr_compose),
+                    .int_bit(int_bit),
+                    .dec_latch(dec_latch),
+                    .dec_pos(dec_pos),
+                    .ext(ext),
+                    .dec_push(dec_push),
+                    .stk_en(stk_en),
+                    .stk_op(stk_op),
+                    .sp(sp),
+                    .rst(rst),
+                    .col_bit(col[x]), .row_bit(row[y]),
+                    .image(image[(y * NX + x) * 8 +: 8]), .state());
+            end
+        end
+    endgenerate
+endmodule
