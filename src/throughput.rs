@@ -186,3 +186,48 @@ mod tests {
         }
     }
 }
+
+/// What one pixel processor costs in an FPGA: Yosys 0.23's synthesis of
+/// `rtl-model/verilog/pixel.v` (`cost.ys`: `synth -lut 4`, and `synth` + `abc -lut 6`).
+/// `tests/verilog.rs` runs Yosys and checks these figures against it (docs/verilog.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct PixelCost {
+    pub lut4: u64,
+    pub lut6: u64,
+    pub flip_flops: u64,
+}
+
+/// The pixel processor of `export-verilog` (derived SGENE, 8-level stack, thesis word).
+pub const PIXEL_COST: PixelCost = PixelCost {
+    lut4: 226,
+    lut6: 111,
+    flip_flops: 172,
+};
+
+/// A panel against a LUT budget (§2.5: which panel sizes an FPGA can hold). Counts only the
+/// pixel processors: DEPGEN's trees and the controller, shared by a panel, are not costed.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct AreaRow {
+    pub panel: (usize, usize),
+    pub luts: u64,
+    pub flip_flops: u64,
+    pub fits: bool,
+}
+
+/// LUTs and flip-flops of each panel's processors with `per_pixel` LUTs each, and whether
+/// they fit `budget` LUTs.
+pub fn area_rows(panels: &[(usize, usize)], per_pixel: u64, budget: u64) -> Vec<AreaRow> {
+    panels
+        .iter()
+        .map(|&(n, m)| {
+            let pixels = (n as u64).saturating_mul(m as u64);
+            let luts = pixels.saturating_mul(per_pixel);
+            AreaRow {
+                panel: (n, m),
+                luts,
+                flip_flops: pixels.saturating_mul(PIXEL_COST.flip_flops),
+                fits: luts <= budget,
+            }
+        })
+        .collect()
+}

@@ -324,3 +324,44 @@ fn cli_scene_estimate_and_errors() {
         assert_eq!(err.trim_end().lines().count(), 1, "{bad:?}: {err}");
     }
 }
+
+/// `--area`: 100,000 LUT6 at 111 LUT6 a pixel hold 900 processors (100,000 / 111 = 900.9), so
+/// of Table 2.1's panels only 16x16 (256 · 111 = 28,416) and 8x8 (7,104) fit; 32x32 needs
+/// 1024 · 111 = 113,664.
+#[test]
+fn area_budget_picks_the_panels_that_fit() {
+    let out = csgpix(&["throughput", "--area", "100000", "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let a = &v["area"];
+    assert_eq!(a["processors"], 900);
+    let rows = a["panels"].as_array().unwrap();
+    let fits: Vec<(u64, bool)> = rows
+        .iter()
+        .map(|r| {
+            (
+                r["panel"][0].as_u64().unwrap(),
+                r["fits"].as_bool().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        fits,
+        [
+            (512, false),
+            (256, false),
+            (128, false),
+            (64, false),
+            (32, false),
+            (16, true),
+            (8, true)
+        ]
+    );
+    assert_eq!(rows[4]["luts"], 113_664);
+    let bad = csgpix(&["throughput", "--area", "100", "--lut", "5"]);
+    assert_eq!(bad.status.code(), Some(2));
+}

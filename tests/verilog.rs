@@ -326,7 +326,7 @@ fn cost_script_maps_sgene_the_comparator_and_the_pixel_to_gates_and_luts() {
         return;
     }
     let log = ok(&run("yosys", &["-s", "cost.ys"], &vdir()), "yosys");
-    let mut seen = vec![];
+    let (mut seen, mut costed) = (vec![], vec![]);
     let mut lines = log.lines();
     while let Some(l) = lines.next() {
         let Some(what) = l.strip_prefix("COST ") else {
@@ -352,14 +352,32 @@ fn cost_script_maps_sgene_the_comparator_and_the_pixel_to_gates_and_luts() {
                 "{what}: {block:?}"
             );
         }
-        let ffs: u64 = block
-            .iter()
-            .filter(|l| l.contains("DFF"))
-            .map(|l| l.split_whitespace().last().unwrap().parse::<u64>().unwrap())
-            .sum();
+        let count = |kind: &str| -> u64 {
+            block
+                .iter()
+                .filter(|l| l.contains(kind))
+                .map(|l| l.split_whitespace().last().unwrap().parse::<u64>().unwrap())
+                .sum()
+        };
+        let ffs = count("DFF");
+        // `csgpix throughput --area` costs panels with these figures: they must be Yosys's.
+        let cost = csgpix::throughput::PIXEL_COST;
+        match what.trim() {
+            "pixel lut4" => costed.push((count("$lut"), ffs, cost.lut4, cost.flip_flops)),
+            "pixel lut6" => costed.push((count("$lut"), ffs, cost.lut6, cost.flip_flops)),
+            _ => {}
+        }
         seen.push((what.to_string(), ffs));
     }
     assert_eq!(seen.len(), 11, "{seen:?}");
+    assert_eq!(costed.len(), 2, "the pixel's LUT4 and LUT6 runs");
+    for (luts, ffs, want_luts, want_ffs) in costed {
+        assert_eq!(
+            (luts, ffs),
+            (want_luts, want_ffs),
+            "PIXEL_COST against Yosys"
+        );
+    }
     // The pixel's flip-flops are the registers of docs/microarchitecture.md: A F B C (4·32),
     // D E G (3·8), S_hi S_lo, the DEPGEN carry, 8 stack levels, the comparator's lt eq ovf
     // sign and its 5-bit bit counter.

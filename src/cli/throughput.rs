@@ -10,8 +10,9 @@ use csgpix::project::Frame;
 use csgpix::scad::parse_csg;
 use csgpix::solid::CsgScene;
 use csgpix::throughput::{
-    panel_ratio, panel_surfaces_per_frame, slices_per_second, surfaces_per_frame,
-    surfaces_per_second, table_2_1, table_panels, Hardware, PanelRow, Reading,
+    area_rows, panel_ratio, panel_surfaces_per_frame, slices_per_second, surfaces_per_frame,
+    surfaces_per_second, table_2_1, table_panels, AreaRow, Hardware, PanelRow, PixelCost, Reading,
+    PIXEL_COST,
 };
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, Op, WordFormat};
 use serde::Serialize;
@@ -26,7 +27,8 @@ use super::ViewArg;
     csgpix throughput --clock 20e6 --bits 24 --frame 1/30\n  \
     csgpix throughput --scene vectors/scenes/csg-logo.csg --panel 128x128\n  \
     csgpix throughput --scene vectors/scenes/twelve.csg --view top --simulate --screen 256x256\n  \
-    csgpix throughput --plots docs/img --scene vectors/scenes/csg-logo.csg")]
+    csgpix throughput --plots docs/img --scene vectors/scenes/csg-logo.csg\n  \
+    csgpix throughput --area 100000 --lut 6            # which panels fit 100,000 LUT6")]
 pub struct Args {
     /// Screen S_n x S_m in pixels.
     #[arg(long, default_value = "1024x1024", value_parser = parse_size)]
@@ -62,6 +64,13 @@ pub struct Args {
     /// Write figure-2.12.png, figure-5.11.png (and scene-NAME-VIEW.png with --scene) here.
     #[arg(long)]
     plots: Option<PathBuf>,
+    /// A LUT budget: which panels' pixel processors fit it (Yosys's cost of one processor,
+    /// docs/verilog.md; DEPGEN and the controller are not counted).
+    #[arg(long, value_name = "LUTS")]
+    area: Option<u64>,
+    /// LUT size for --area: 4 or 6 inputs.
+    #[arg(long, default_value = "6", value_parser = lut_inputs)]
+    lut: u8,
     /// Print every number as JSON.
     #[arg(long)]
     json: bool,
@@ -96,6 +105,18 @@ struct Report {
     slices_per_second_panels: Vec<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     scene: Option<SceneReport>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    area: Option<AreaReport>,
+}
+
+#[derive(Serialize)]
+struct AreaReport {
+    budget_luts: u64,
+    lut_inputs: u8,
+    per_pixel: PixelCost,
+    /// Pixel processors the budget holds.
+    processors: u64,
+    panels: Vec<AreaRow>,
 }
 
 #[derive(Serialize)]
@@ -151,6 +172,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         surfaces_per_primitive: a.surfaces,
         slices_per_second_one_array: slices_per_second(surfaces_per_second(&hw), ns),
         scene,
+        area: a.area.map(|budget| area_report(budget, a.lut, &panels)),
     };
     if let Some(dir) = &a.plots {
         write_plots(dir, &hw, a.screen, report.scene.as_ref())?;
@@ -162,6 +184,57 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         print_text(&report);
     }
     Ok(ExitCode::SUCCESS)
+}
+
+fn lut_inputs(s: &str) -> Result<u8, String> {
+    match s {
+        "4" => Ok(4),
+        "6" => Ok(6),
+        _ => Err("LUT4 and LUT6 are costed: give 4 or 6".into()),
+    }
+}
+
+fn area_report(budget: u64, lut: u8, panels: &[(usize, usize)]) -> AreaReport {
+    let per = if lut == 4 {
+        PIXEL_COST.lut4
+    } else {
+        PIXEL_COST.lut6
+    };
+    AreaReport {
+        budget_luts: budget,
+        lut_inputs: lut,
+        per_pixel: PIXEL_COST,
+        processors: budget / per,
+        panels: area_rows(panels, per, budget),
+    }
+}
+
+fn print_area(r: &AreaReport) {
+    println!(
+        "\n--area {} LUT{}: {} pixel processors at {} LUT{} each (pixels only, docs/verilog.md)",
+        r.budget_luts,
+        r.lut_inputs,
+        r.processors,
+        if r.lut_inputs == 4 {
+            r.per_pixel.lut4
+        } else {
+            r.per_pixel.lut6
+        },
+        r.lut_inputs
+    );
+    println!(
+        "{:>11} {:>14} {:>14} {:>6}",
+        "panel", "LUTs", "flip-flops", "fits"
+    );
+    for row in &r.panels {
+        println!(
+            "{:>11} {:>14} {:>14} {:>6}",
+            format!("{}x{}", row.panel.0, row.panel.1),
+            row.luts,
+            row.flip_flops,
+            if row.fits { "yes" } else { "no" }
+        );
+    }
 }
 
 fn read_scene(path: &Path) -> Result<CsgScene, String> {
@@ -291,6 +364,9 @@ fn print_text(r: &Report) {
     }
     if let Some(s) = &r.scene {
         print_scene(s);
+    }
+    if let Some(a) = &r.area {
+        print_area(a);
     }
 }
 
