@@ -25,9 +25,9 @@ use std::time::Instant;
 use csgpix::octree::{self, optimized::Leaves, OptimizedOctree, VoxelStore};
 use csgpix::scad::parse_csg;
 use csgpix::sculpt::{Frame, Latency, Sculptor, Tool};
-use csgpix::voxelize::{voxelize_streaming, Grid, Route, Slicer};
+use csgpix::voxelize::{Grid, Slicer};
 use glam::DVec3;
-use rtl_model::{Equations, WordFormat};
+use rtl_model::WordFormat;
 use serde_json::{json, Value};
 
 const TWELVE: &str = include_str!("../vectors/scenes/twelve.csg");
@@ -75,20 +75,8 @@ fn twelve(n: usize) -> (OptimizedOctree, Frame, f64) {
     let scene = parse_csg(TWELVE, "twelve.csg").expect("scene");
     let grid = Grid::new([n; 3], DVec3::splat(-15.0), DVec3::splat(15.0)).expect("grid");
     let slicer = Slicer::new(&scene, grid, WordFormat::THESIS).expect("slicer");
-    let eval = csgpix::blist::BlistEval::new(&scene.root);
-    let depth = octree::depth_for(grid.dims).expect("depth");
-    let mut b = octree::build_tree(depth, n, Leaves::new(depth, u64::MAX));
-    let set = Equations::Derived.set();
-    voxelize_streaming(
-        &slicer,
-        Route::Intervals,
-        set,
-        &eval,
-        &|| {},
-        &mut |k, s| octree::StoreBuilder::push(&mut b, k, s),
-    )
-    .expect("voxelize");
-    (b.finish_store().expect("store"), Frame::of_grid(&grid), 8.6)
+    let store = octree::optimized::from_scene(&slicer, &scene.root, u64::MAX).expect("store");
+    (store, Frame::of_grid(&grid), 8.6)
 }
 
 /// `steps` positions about 0.5 voxel apart on a spiral about the vertical axis through

@@ -400,12 +400,20 @@ pub fn render_on_panels(
         slowest_cycles: 0,
     };
     let (cols, _) = tiling(ps.screen, panel);
+    // Panels with the same solids run the same program, moved: compile it once.
+    let mut compiled: HashMap<Vec<usize>, Vec<Op>> = HashMap::new();
     for (k, prims) in bins(&ps.footprints, ps.screen, panel)
         .into_iter()
         .enumerate()
     {
         let (x0, y0) = (k % cols * panel.0, k / cols * panel.1);
-        let mut ops = ps.frame_ops(&presence(&prims, ps.lists.len()))?;
+        let mut ops = match compiled.get(&prims) {
+            Some(ops) => ops.clone(),
+            None => {
+                let ops = ps.frame_ops(&presence(&prims, ps.lists.len()))?;
+                compiled.entry(prims).or_insert(ops).clone()
+            }
+        };
         if ops.is_empty() {
             continue;
         }

@@ -3,8 +3,6 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use csgpix::output::write_atomic;
-
 #[derive(clap::Args, Debug)]
 #[command(
     after_help = "Examples:\n  csgpix export-verilog                 # rewrite rtl-model/verilog/\n  \
@@ -21,27 +19,5 @@ pub struct Args {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
-    let files = rtl_model::verilog::files()?;
-    if !a.check {
-        std::fs::create_dir_all(&a.out).map_err(|e| format!("{}: {e}", a.out.display()))?;
-    }
-    let mut stale = 0;
-    for (name, text) in &files {
-        let path = a.out.join(name);
-        if a.check {
-            let old = std::fs::read_to_string(&path).unwrap_or_default();
-            if &old != text {
-                println!("differs: {}", path.display());
-                stale += 1;
-            }
-        } else {
-            write_atomic(&path, |w| w.write_all(text.as_bytes()))?;
-            println!("wrote {}", path.display());
-        }
-    }
-    Ok(if stale == 0 {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
+    super::write_generated(&rtl_model::verilog::files()?, &a.out, a.check)
 }

@@ -123,3 +123,33 @@ impl ViewArg {
         }
     }
 }
+
+/// Write generated files into `out`, or with `check` only compare them with what is there:
+/// exit 1 when any differs (`gen-vectors`, `export-verilog`).
+pub fn write_generated(
+    files: &[(String, String)],
+    out: &std::path::Path,
+    check: bool,
+) -> Result<ExitCode, String> {
+    if !check {
+        std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    }
+    let mut stale = 0;
+    for (name, text) in files {
+        let path = out.join(name);
+        if check {
+            if std::fs::read_to_string(&path).unwrap_or_default() != *text {
+                println!("differs: {}", path.display());
+                stale += 1;
+            }
+        } else {
+            csgpix::output::write_atomic(&path, |w| w.write_all(text.as_bytes()))?;
+            println!("wrote {}", path.display());
+        }
+    }
+    Ok(if stale == 0 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}

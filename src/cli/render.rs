@@ -110,7 +110,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         );
         (f.colour, f.depth, 0)
     } else if let Some([pw, ph]) = a.panel.and_then(|p| p.0) {
-        let img = on_panels(&a, &cfg, (pw, ph))?;
+        let img = on_panels(&a, &scene, &cfg, (pw, ph))?;
         simulated = Some(img.simulated_pixel_clocks);
         let depth = img
             .depth
@@ -210,22 +210,18 @@ fn write_png(path: &Path, width: usize, height: usize, pixels: &[[u8; 3]]) -> Re
 /// Draw a `.csg` scene on panels (`--panel`): only the panels its solids touch are simulated.
 fn on_panels(
     a: &Args,
+    scene: &Scene,
     cfg: &rtl_model::ArrayConfig,
     panel: (usize, usize),
 ) -> Result<csgpix::panels::PanelImage, String> {
-    let path = match &a.scenes[..] {
-        [p] if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("csg")) => p,
-        _ => return Err("--panel needs one .csg scene (display lists have no footprint)".into()),
+    let Some(csg) = &scene.csg else {
+        return Err("--panel needs one .csg scene (display lists have no footprint)".into());
     };
     if a.array.probe.is_some() {
         return Err("--panel and --probe do not go together: probes watch the whole array".into());
     }
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let scene =
-        csgpix::scad::parse_csg(&text, &path.display().to_string()).map_err(|e| e.to_string())?;
-    let ps =
-        csgpix::panels::PanelScene::new(&scene, a.view.into(), (cfg.width, cfg.height), cfg.fmt)
-            .map_err(|e| format!("{}:1:1: {e}", path.display()))?;
+    let ps = csgpix::panels::PanelScene::new(csg, a.view.into(), (cfg.width, cfg.height), cfg.fmt)
+        .map_err(|e| format!("{}:1:1: {e}", a.scenes[0].display()))?;
     let cycle = a.array.model == Model::Cycle;
     csgpix::panels::render_on_panels(&ps, panel, cycle, &a.array.equations()?)
 }

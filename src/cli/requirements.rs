@@ -16,7 +16,7 @@ use rtl_model::array::{check_program, program_cycles};
 use rtl_model::{ArrayConfig, Equations, WordFormat};
 use serde::Serialize;
 
-use super::array_args::parse_word;
+use super::array_args::{parse_size, parse_word};
 use super::voxelize::{parse_bounds, parse_panel, parse_res, PanelArg};
 use super::ViewArg;
 
@@ -47,16 +47,11 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t)]
     view: ViewArg,
     /// Screen of the render program, WxH.
-    #[arg(long, default_value = "250x250", value_parser = parse_screen)]
+    #[arg(long, default_value = "250x250", value_parser = parse_size)]
     screen: (usize, usize),
     /// Print as JSON.
     #[arg(long)]
     json: bool,
-}
-
-fn parse_screen(s: &str) -> Result<(usize, usize), String> {
-    let r = parse_res(&format!("{s}x1"))?;
-    Ok((r[0], r[1]))
 }
 
 #[derive(Serialize)]

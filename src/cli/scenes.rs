@@ -9,6 +9,7 @@ use csgpix::compile::CompileError;
 use csgpix::display_list::{field_position, DisplayList};
 use csgpix::project::{project, Projected, View};
 use csgpix::scad::parse_csg;
+use csgpix::solid::CsgScene;
 use rtl_model::ArrayConfig;
 
 /// Where a display list came from, so a compile error can point into the file.
@@ -26,6 +27,8 @@ pub struct Scene {
     pub clip: Option<Clip>,
     /// True when a `.csg` tree evaluates to nothing: the image is background.
     pub empty: bool,
+    /// The `.csg` scene itself (None for display lists), for drawing it on panels.
+    pub csg: Option<CsgScene>,
     origins: Vec<Origin>,
 }
 
@@ -76,6 +79,7 @@ impl Scene {
             lists,
             clip,
             empty: false,
+            csg: None,
             origins,
         })
     }
@@ -98,6 +102,7 @@ impl Scene {
             empty: clip.is_none(),
             lists,
             clip,
+            csg: Some(scene),
             origins,
         })
     }

@@ -5,16 +5,15 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
-use csgpix::blist::BlistEval;
 use csgpix::mesh;
 use csgpix::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix::output::write_atomic;
 use csgpix::scad::parse_csg;
 use csgpix::sculpt::{self, Frame, Latency, Sculptor, Step, Tool};
-use csgpix::voxelize::{memory_estimate, voxelize_streaming, Grid, Route, Slicer, Volume};
+use csgpix::voxelize::{memory_estimate, Grid, Slicer, Volume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
-use rtl_model::{Equations, WordFormat};
+use rtl_model::WordFormat;
 use serde::Serialize;
 
 use super::voxelize::{parse_bounds, parse_res};
@@ -236,20 +235,8 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
     }
     let slicer =
         Slicer::new(&scene, grid, WordFormat::THESIS).map_err(|e| format!("{name}:1:1: {e}"))?;
-    let eval = BlistEval::new(&scene.root);
-    let depth = octree::depth_for(grid.dims)?;
-    let leaves = octree::optimized::Leaves::new(depth, budget - need);
-    let mut b = octree::build_tree(depth, grid.dims[0], leaves);
-    let set = Equations::Derived.set();
-    voxelize_streaming(
-        &slicer,
-        Route::Intervals,
-        set,
-        &eval,
-        &|| {},
-        &mut |k, s| octree::StoreBuilder::push(&mut b, k, s),
-    )?;
-    Ok((b.finish_store()?, Frame::of_grid(&grid), grid.dims))
+    let store = octree::optimized::from_scene(&slicer, &scene.root, budget - need)?;
+    Ok((store, Frame::of_grid(&grid), grid.dims))
 }
 
 /// One row per step: position, contact, voxels and cells changed, ΔX, F, microseconds.

@@ -229,3 +229,25 @@ impl VoxelStore for OptimizedOctree {
         }
     }
 }
+
+/// The optimized octree of a sliced scene (`tree` its CSG tree), fed slice by slice from the
+/// voxelizer's interval route with the Blist (seed 000 §4.3.4: no dense volume of the scene
+/// is made); `budget` bounds the leaves kept while building, in bytes.
+pub fn from_scene(
+    slicer: &crate::voxelize::Slicer,
+    tree: &crate::solid::CsgNode,
+    budget: u64,
+) -> Result<OptimizedOctree, String> {
+    let eval = crate::blist::BlistEval::new(tree);
+    let depth = super::depth_for(slicer.grid.dims)?;
+    let mut b = super::build_tree(depth, slicer.grid.dims[0], Leaves::new(depth, budget));
+    crate::voxelize::voxelize_streaming(
+        slicer,
+        crate::voxelize::Route::Intervals,
+        rtl_model::Equations::Derived.set(),
+        &eval,
+        &|| {},
+        &mut |k, s| super::StoreBuilder::push(&mut b, k, s),
+    )?;
+    b.finish_store()
+}
