@@ -1,9 +1,11 @@
 //! csgpix: scenes, formats and studies around the pixel-processor array of `rtl-model`.
 
+pub mod blend;
 pub mod blist;
 pub mod clip_expr;
 pub mod compile;
 pub mod csg_expr;
+pub mod dataset;
 pub mod display_list;
 pub mod evaluate;
 pub mod float;
@@ -17,10 +19,12 @@ pub mod plot;
 pub mod polygon;
 pub mod project;
 pub mod requirements;
+pub mod sampled;
 pub mod scad;
 pub mod sculpt;
 pub mod slice;
 pub mod solid;
 pub mod study;
 pub mod throughput;
+pub mod trimesh;
 pub mod voxelize;

@@ -446,10 +446,7 @@ mod tests {
 
     #[test]
     fn top_view_of_a_cube_has_one_front_one_back_and_four_perpendicular_faces() {
-        let scene = CsgScene {
-            solids: vec![cube(0.0, 10.0)],
-            root: CsgNode::Solid(0),
-        };
+        let scene = CsgScene::convex(vec![cube(0.0, 10.0)], CsgNode::Solid(0));
         let frame = Frame::fit(&scene, View::Top, 11, 11).unwrap();
         let dl = &display_lists(&scene, &frame, 1024.0)[0];
         let fronts: Vec<&DlPlane> = dl.planes.iter().filter(|p| p.h && !p.y).collect();
@@ -467,10 +464,7 @@ mod tests {
 
     #[test]
     fn iso_view_faces_split_three_and_three() {
-        let scene = CsgScene {
-            solids: vec![cube(-1.0, 1.0)],
-            root: CsgNode::Solid(0),
-        };
+        let scene = CsgScene::convex(vec![cube(-1.0, 1.0)], CsgNode::Solid(0));
         let frame = Frame::fit(&scene, View::Iso, 64, 64).unwrap();
         let dl = &display_lists(&scene, &frame, 1024.0)[0];
         assert_eq!(dl.planes.iter().filter(|p| p.h).count(), 3);
@@ -503,10 +497,7 @@ mod tests {
         for v in &mut s.vertices {
             v[2] += v[0] * 400.0;
         }
-        let scene = CsgScene {
-            solids: vec![s],
-            root: CsgNode::Solid(0),
-        };
+        let scene = CsgScene::convex(vec![s], CsgNode::Solid(0));
         for size in [250, 1024, 2048] {
             let frame = Frame::fit(&scene, View::Front, size, size).unwrap();
             let dl = &display_lists(&scene, &frame, max_slope(&fmt, size, size))[0];

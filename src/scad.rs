@@ -22,8 +22,11 @@
 //!   `polyhedron` is accepted when it is closed and convex.
 //! * The modifiers `%` (background) and `*` (disable) drop the statement, as OpenSCAD leaves
 //!   such nodes out of the rendered result; `#` (highlight) is ignored; `!` is refused.
+//! * `import(file = "x.stl" | "x.obj" | "x.nrrd", threshold = t)` names a mesh or a dataset
+//!   primitive ([`crate::solid::Import`], loaded by [`crate::sampled`]); `threshold` (ours, not
+//!   OpenSCAD's) is a dataset's iso value.
 //!
-//! Anything else (`linear_extrude`, `hull`, `import`, 2D shapes, …) is refused with an error
+//! Anything else (`linear_extrude`, `hull`, 2D shapes, …) is refused with an error
 //! naming the node, its line and column.
 //!
 //! The tree is simplified without changing the solid it describes: a union or group with one
@@ -69,7 +72,7 @@ use std::collections::{HashMap, VecDeque};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 use std::fmt;
 
-use crate::solid::{ConvexSolid, CsgNode, CsgScene};
+use crate::solid::{ConvexSolid, CsgNode, CsgScene, Import};
 
 /// Deepest nesting of statements accepted: a top-level statement is at depth 1, so a cube may
 /// sit inside at most 999 groups.
@@ -612,6 +615,7 @@ enum NodeKind {
     Sphere,
     Cylinder,
     Polyhedron,
+    Import,
 }
 
 /// How the children of an operation combine.
@@ -623,7 +627,7 @@ enum Op {
 }
 
 /// Every node this reader understands, by name.
-const NODES: [(&str, NodeKind); 11] = [
+const NODES: [(&str, NodeKind); 12] = [
     ("group", NodeKind::Group),
     ("union", NodeKind::Union),
     ("difference", NodeKind::Difference),
@@ -635,6 +639,7 @@ const NODES: [(&str, NodeKind); 11] = [
     ("sphere", NodeKind::Sphere),
     ("cylinder", NodeKind::Cylinder),
     ("polyhedron", NodeKind::Polyhedron),
+    ("import", NodeKind::Import),
 ];
 
 impl NodeKind {
@@ -668,13 +673,33 @@ impl NodeKind {
                 &["r", "d", "d1", "d2", "$fn", "$fa", "$fs"],
             ),
             NodeKind::Polyhedron => (&["points", "faces", "convexity"], &["triangles"]),
+            // OpenSCAD's own parameters (read and ignored: they concern 2D files), and ours.
+            NodeKind::Import => (
+                &["file", "layer", "convexity"],
+                &[
+                    "origin",
+                    "scale",
+                    "center",
+                    "dpi",
+                    "id",
+                    "timestamp",
+                    "$fn",
+                    "$fa",
+                    "$fs",
+                    "threshold",
+                ],
+            ),
         }
     }
 
     fn is_leaf(self) -> bool {
         matches!(
             self,
-            NodeKind::Cube | NodeKind::Sphere | NodeKind::Cylinder | NodeKind::Polyhedron
+            NodeKind::Cube
+                | NodeKind::Sphere
+                | NodeKind::Cylinder
+                | NodeKind::Polyhedron
+                | NodeKind::Import
         )
     }
 
@@ -829,6 +854,8 @@ enum Next {
 struct Reader<'a> {
     parser: Parser<'a>,
     solids: Vec<ConvexSolid>,
+    /// Leaves `Solid(IMPORTED + j)` until the end, when they become `Solid(solids + j)`.
+    imports: Vec<Import>,
     vertices: usize,
     open: Vec<Frame>,
     top: Vec<CsgNode>,
@@ -839,6 +866,7 @@ impl<'a> Reader<'a> {
         Reader {
             parser: Parser::new(text),
             solids: Vec::new(),
+            imports: Vec::new(),
             vertices: 0,
             open: Vec::new(),
             top: Vec::new(),
@@ -869,10 +897,15 @@ impl<'a> Reader<'a> {
 
     fn end(mut self, pos: Pos) -> Result<CsgScene, Fail> {
         match self.open.pop() {
-            None => Ok(CsgScene {
-                solids: self.solids,
-                root: combine(Op::Union, self.top),
-            }),
+            None => {
+                let mut root = combine(Op::Union, self.top);
+                renumber_imports(&mut root, self.solids.len());
+                Ok(CsgScene {
+                    solids: self.solids,
+                    imports: self.imports,
+                    root,
+                })
+            }
             Some(frame) => fail(pos, unclosed(&frame, "end of file")),
         }
     }
@@ -977,6 +1010,14 @@ impl<'a> Reader<'a> {
     }
 
     fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<CsgNode>, Fail> {
+        if head.kind == NodeKind::Import {
+            let import = import(head, ctx)?;
+            if ctx.skip {
+                return Ok(None);
+            }
+            self.imports.push(import);
+            return Ok(Some(CsgNode::Solid(IMPORTED + self.imports.len() - 1)));
+        }
         let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
         let shape = match head.kind {
             NodeKind::Cube => cube(&head.params)?,
@@ -993,6 +1034,70 @@ impl<'a> Reader<'a> {
         self.solids.push(solid);
         Ok(Some(CsgNode::Solid(self.solids.len() - 1)))
     }
+}
+
+/// Leaf numbers from which imports count while reading (a file cannot hold this many solids).
+const IMPORTED: usize = usize::MAX / 2;
+
+/// Imports follow the solids: `Solid(IMPORTED + j)` becomes `Solid(solids + j)` (iteratively,
+/// as trees can be deep).
+fn renumber_imports(root: &mut CsgNode, solids: usize) {
+    let mut stack = vec![root];
+    while let Some(node) = stack.pop() {
+        match node {
+            CsgNode::Solid(i) if *i >= IMPORTED => *i = *i - IMPORTED + solids,
+            CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
+                stack.extend(c.iter_mut())
+            }
+            CsgNode::Complement(c) => stack.push(c),
+            CsgNode::Solid(_) | CsgNode::Empty => {}
+        }
+    }
+}
+
+/// `import(file = "x.stl" | "x.obj" | "x.nrrd", threshold = t)`: a mesh or a dataset named by
+/// the scene, loaded later ([`crate::sampled`]). A dataset needs `threshold`; a mesh must not
+/// have one. `scale` other than 1 is refused (OpenSCAD applies it to 2D files only).
+fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
+    let p = &head.params;
+    let file = p.require("file", "a file name, e.g. import(\"part.stl\")")?;
+    let Kind::Str(name) = &file.kind else {
+        return fail(file.pos, "`file` must be a string");
+    };
+    let threshold = p.number("threshold")?;
+    let dataset = name.to_ascii_lowercase().ends_with(".nrrd")
+        || name.to_ascii_lowercase().ends_with(".nhdr");
+    match (dataset, threshold) {
+        (true, None) => {
+            return fail(
+                head.pos,
+                format!("`import(\"{name}\")` is a dataset: give its iso value, `threshold = t`"),
+            )
+        }
+        (false, Some((_, at))) => return fail(at, "`threshold` applies to datasets (.nrrd) only"),
+        _ => {}
+    }
+    if let Some((s, at)) = p.number("scale")? {
+        if s != 1.0 {
+            return fail(
+                at,
+                "`scale` is not supported for 3D imports (use multmatrix)",
+            );
+        }
+    }
+    if let Some((t, at)) = threshold {
+        if !t.is_finite() {
+            return fail(at, "`threshold` must be a finite number");
+        }
+    }
+    Ok(Import {
+        file: name.clone(),
+        threshold: threshold.map(|t| t.0),
+        matrix: ctx.matrix,
+        colour: ctx.colour,
+        line: head.pos.line,
+        col: head.pos.col,
+    })
 }
 
 fn unsupported(name: &str) -> String {

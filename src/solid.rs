@@ -28,11 +28,60 @@ pub enum CsgNode {
     Empty,
 }
 
-/// A whole scene.
+/// A primitive read from a file rather than drawn from planes (§3.2: "volumetric shapes
+/// defined ... by data sets read from disk"): a volume dataset with an iso threshold, or a
+/// closed triangle mesh. The scene only names it; [`crate::sampled`] loads it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Import {
+    /// The file as written in the scene (relative paths are relative to the scene's file).
+    pub file: String,
+    /// Datasets: InPrimitive(v) is "the sample at v's centre is at or above this".
+    pub threshold: Option<f64>,
+    /// Scene ← file coordinates, row-major 4×4 (affine); None is the identity.
+    pub matrix: Option<[[f64; 4]; 4]>,
+    /// RGBA from `color(...)`, if any.
+    pub colour: Option<[f64; 4]>,
+    /// Where the scene names it (1-based), for messages.
+    pub line: usize,
+    pub col: usize,
+}
+
+/// A whole scene. The tree's leaf `Solid(i)` is `solids[i]` for i below `solids.len()`, and
+/// `imports[i - solids.len()]` above: the Blist and the other evaluators treat both alike
+/// (§4.3.2); only where a primitive's slice comes from differs.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CsgScene {
     pub solids: Vec<ConvexSolid>,
+    pub imports: Vec<Import>,
     pub root: CsgNode,
+}
+
+impl CsgScene {
+    /// A scene of convex solids only.
+    pub fn convex(solids: Vec<ConvexSolid>, root: CsgNode) -> CsgScene {
+        CsgScene {
+            solids,
+            imports: vec![],
+            root,
+        }
+    }
+
+    /// Primitives of every kind: the leaves' index range.
+    pub fn primitive_count(&self) -> usize {
+        self.solids.len() + self.imports.len()
+    }
+
+    /// Refuse a scene with imported primitives, for the commands that only draw planes.
+    pub fn require_convex(&self, file: &str, what: &str) -> Result<(), String> {
+        match self.imports.first() {
+            None => Ok(()),
+            Some(i) => Err(format!(
+                "{file}:{}:{}: `import(\"{}\")`: {what} draws convex solids only; datasets and meshes \
+                 are voxelized (`csgpix voxelize`)",
+                i.line, i.col, i.file
+            )),
+        }
+    }
 }
 
 impl CsgNode {

@@ -354,7 +354,9 @@ pub struct Prepared {
 pub fn prepare(text: &str, file: &str, sweep: Sweep) -> Result<Prepared, String> {
     let sweep = sweep.normalized();
     sweep.check()?;
-    parse_csg(text, file).map_err(|e| e.to_string())?;
+    parse_csg(text, file)
+        .map_err(|e| e.to_string())?
+        .require_convex(file, "`study`")?;
     let mut scenes = vec![];
     for &f in &sweep.fragments {
         let scene = parse_csg(&with_fragments(text, f), file)

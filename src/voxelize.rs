@@ -29,11 +29,13 @@ use rtl_model::array::check_program;
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, EquationSet, WordArray, WordFormat};
 
+use crate::blend::BlendEval;
 use crate::clip_expr::Clip;
 use crate::compile::clip_scene_ops;
 use crate::display_list::{DisplayList, DlPlane};
 use crate::project::{display_lists, max_slope, silhouette_planes, Frame, DEPTH_MARGIN};
 use crate::requirements::{Footprint, PixelBox};
+use crate::sampled::{Sampled, Shape, SlabRuns};
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::solid::CsgScene;
 
@@ -123,6 +125,17 @@ pub struct Slicer {
     /// panels and slabs its footprint touches ([`crate::requirements`]). None simulates the
     /// whole array for every frame. Either way the voxels are the same (tested).
     pub panel: Option<[usize; 2]>,
+    /// Where the grid lies on the array: scene point → (pixel x, pixel y, depth).
+    pub frame: Frame,
+    /// Imported primitives (datasets, meshes), after the solids: primitive
+    /// `lists.len() + j` ([`crate::sampled`]). Must match the scene's imports.
+    pub sampled: Vec<Sampled>,
+    /// Imports the scene names (checked against `sampled` before a run).
+    pub imports: usize,
+    /// Voxels won by a dataset take its grey value (§4.5), not its colour code.
+    pub grey: bool,
+    /// Grey-valued output by the blending operators of §3.3 instead of labels.
+    pub blend: Option<BlendEval>,
 }
 
 impl Slicer {
@@ -159,7 +172,36 @@ impl Slicer {
             slab_raw,
             colours,
             panel: Some(DEFAULT_PANEL),
+            frame,
+            sampled: vec![],
+            imports: scene.imports.len(),
+            grey: false,
+            blend: None,
         })
+    }
+
+    /// Add the scene's loaded imports (in the scene's order), with their colours.
+    pub fn with_sampled(mut self, sampled: Vec<Sampled>) -> Slicer {
+        self.colours.extend(sampled.iter().map(|s| s.colour));
+        self.sampled = sampled;
+        self
+    }
+
+    /// Primitives of every kind.
+    pub fn primitive_count(&self) -> usize {
+        self.lists.len() + self.sampled.len()
+    }
+
+    /// The voxels of one slab of imported primitive j, and its mesh runs if precomputed.
+    fn check_imports(&self) -> Result<(), String> {
+        if self.sampled.len() != self.imports {
+            return Err(format!(
+                "the scene imports {} files but {} are loaded",
+                self.imports,
+                self.sampled.len()
+            ));
+        }
+        Ok(())
     }
 
     fn frame_of(grid: &Grid, q: f64) -> Frame {
@@ -425,8 +467,41 @@ pub struct Work {
     pub full_pixel_clocks: u64,
 }
 
-/// Per-slice masks of every primitive, by route.
-enum Source {
+/// Per-slice masks of every primitive: the solids' by route, then the imports'.
+struct Source {
+    convex: ConvexSource,
+    sampled: Vec<SampledSource>,
+}
+
+/// Where an import's slab masks come from.
+enum SampledSource {
+    /// A mesh: its slab runs per pixel and, per slab, the pixels that flip there.
+    Runs(SlabRuns, Vec<Vec<u32>>),
+    /// A dataset (import j): sampled slab by slab.
+    Dataset(usize),
+}
+
+impl SampledSource {
+    fn mask(&self, slicer: &Slicer, k: usize) -> Mask {
+        match self {
+            SampledSource::Runs(r, _) => r.mask(k),
+            SampledSource::Dataset(j) => slicer.sampled[*j].dataset_mask(&slicer.grid, k),
+        }
+    }
+
+    /// The mask of slab k from that of slab k − 1.
+    fn advance(&self, slicer: &Slicer, k: usize, m: &mut Mask) {
+        match self {
+            SampledSource::Runs(_, toggles) => {
+                toggles[k].iter().for_each(|&i| m.toggle(i as usize))
+            }
+            SampledSource::Dataset(_) => *m = self.mask(slicer, k),
+        }
+    }
+}
+
+/// Per-slice masks of the convex solids, by route.
+enum ConvexSource {
     /// Slab ranges of every primitive and, per slab, the pixels whose membership flips there.
     Ranges(Vec<(SlabRanges, Vec<Vec<u32>>)>),
     Array {
@@ -437,9 +512,9 @@ enum Source {
     },
 }
 
-impl Source {
-    fn ranges(r: Vec<SlabRanges>, slabs: usize) -> Source {
-        Source::Ranges(
+impl ConvexSource {
+    fn ranges(r: Vec<SlabRanges>, slabs: usize) -> ConvexSource {
+        ConvexSource::Ranges(
             r.into_iter()
                 .map(|r| {
                     let t = r.toggles(slabs);
@@ -451,7 +526,7 @@ impl Source {
 
     /// The masks of slabs `a..b`, each handed to `f` in order. From ranges, slab a is built
     /// pixel by pixel and every later one by flipping the pixels whose membership changes.
-    fn sweep(
+    fn sweep_convex(
         &self,
         slicer: &Slicer,
         a: usize,
@@ -460,7 +535,7 @@ impl Source {
         f: &mut dyn FnMut(usize, &[Mask]),
     ) -> Result<(), String> {
         match self {
-            Source::Ranges(r) => {
+            ConvexSource::Ranges(r) => {
                 let mut masks: Vec<Mask> = r.iter().map(|(r, _)| r.mask(a)).collect();
                 for k in a..b {
                     if k > a {
@@ -471,7 +546,7 @@ impl Source {
                     f(k, &masks);
                 }
             }
-            Source::Array {
+            ConvexSource::Array {
                 cycle,
                 set,
                 footprints,
@@ -490,6 +565,38 @@ impl Source {
             }
         }
         Ok(())
+    }
+}
+
+impl Source {
+    /// Every primitive's masks of slabs `a..b` (solids, then imports), handed to `f` in order.
+    fn sweep(
+        &self,
+        slicer: &Slicer,
+        a: usize,
+        b: usize,
+        simulated: &mut u64,
+        f: &mut dyn FnMut(usize, &[Mask]),
+    ) -> Result<(), String> {
+        if self.sampled.is_empty() {
+            return self.convex.sweep_convex(slicer, a, b, simulated, f);
+        }
+        let mut imported: Vec<Mask> = vec![];
+        let mut all: Vec<Mask> = vec![];
+        self.convex
+            .sweep_convex(slicer, a, b, simulated, &mut |k, convex| {
+                if k == a {
+                    imported = self.sampled.iter().map(|s| s.mask(slicer, k)).collect();
+                } else {
+                    for (s, m) in self.sampled.iter().zip(&mut imported) {
+                        s.advance(slicer, k, m);
+                    }
+                }
+                all.clear();
+                all.extend_from_slice(convex);
+                all.extend_from_slice(&imported);
+                f(k, &all);
+            })
     }
 }
 
@@ -626,10 +733,59 @@ pub fn voxelize_streaming(
 
 /// Where a run's per-slab masks come from, by route.
 fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source, String> {
+    slicer.check_imports()?;
+    let nz = slicer.grid.dims[2];
+    let sampled = slicer
+        .sampled
+        .iter()
+        .enumerate()
+        .map(|(j, s)| match &s.shape {
+            Shape::Mesh(m) => {
+                let runs = mesh_runs(slicer, m);
+                let toggles = runs.toggles(nz);
+                SampledSource::Runs(runs, toggles)
+            }
+            Shape::Dataset { .. } => SampledSource::Dataset(j),
+        })
+        .collect();
+    Ok(Source {
+        convex: convex_source(slicer, route, set)?,
+        sampled,
+    })
+}
+
+/// Per pixel, the slabs a closed mesh fills: the crossings of the pixel's ray with its
+/// triangles (§5.3.1), paired by parity (§3.4.2), each inside interval reduced to slabs as
+/// [`float_ranges`] reduces a convex solid's.
+pub fn mesh_runs(slicer: &Slicer, mesh: &crate::trimesh::TriMesh) -> SlabRuns {
+    let [w, h, _] = slicer.grid.dims;
+    let one = (1u64 << slicer.fmt.frac) as f64;
+    let raw = |v: f64, up: bool| -> i128 {
+        let r = if up {
+            (v * one).ceil()
+        } else {
+            (v * one).floor()
+        };
+        r.clamp(-1e30, 1e30) as i128
+    };
+    let crossings = mesh.crossings(|p| slicer.frame.to_pixel(p), w, h);
+    SlabRuns::merged(
+        crossings
+            .iter()
+            .map(|c| {
+                c.chunks_exact(2)
+                    .map(|p| slabs_of(slicer, raw(p[0], true), raw(p[1], false)))
+                    .collect()
+            })
+            .collect(),
+    )
+}
+
+fn convex_source(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<ConvexSource, String> {
     use rayon::prelude::*;
     let (prims, nz) = (slicer.lists.len(), slicer.grid.dims[2]);
     Ok(match route {
-        Route::Array { cycle } => Source::Array {
+        Route::Array { cycle } => ConvexSource::Array {
             cycle,
             set: set.clone(),
             footprints: match slicer.panel {
@@ -637,14 +793,14 @@ fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source
                 None => None,
             },
         },
-        Route::Intervals => Source::ranges(
+        Route::Intervals => ConvexSource::ranges(
             (0..prims)
                 .into_par_iter()
                 .map(|p| word_ranges(slicer, p))
                 .collect::<Result<_, _>>()?,
             nz,
         ),
-        Route::Float => Source::ranges(
+        Route::Float => ConvexSource::ranges(
             (0..prims)
                 .into_par_iter()
                 .map(|p| float_ranges(slicer, p))
@@ -672,6 +828,55 @@ fn counted_work(slicer: &Slicer, set: &EquationSet) -> Result<Work, String> {
     })
 }
 
+/// A slice's colour codes from its labels: the winner's colour code, or with
+/// [`Slicer::grey`] a winning dataset's grey value at the voxel (§4.5).
+fn label_colours(slicer: &Slicer, k: usize, labels: &[u32]) -> Vec<u8> {
+    let (nx, solids) = (slicer.grid.dims[0], slicer.lists.len());
+    labels
+        .iter()
+        .enumerate()
+        .map(|(i, &l)| match l {
+            0 => 0,
+            l => {
+                let p = l as usize - 1;
+                let grey = match slicer.sampled.get(p.wrapping_sub(solids)) {
+                    Some(s) if slicer.grey && p >= solids => {
+                        s.grey(slicer.grid.centre(i % nx, i / nx, k))
+                    }
+                    _ => None,
+                };
+                grey.unwrap_or(slicer.colours[p])
+            }
+        })
+        .collect()
+}
+
+/// Every primitive's grey slice for the blending operators ([`crate::blend`]): 0 outside;
+/// inside, a dataset's grey value, a solid's or mesh's colour as a grey level.
+fn grey_slices(slicer: &Slicer, k: usize, masks: &[Mask]) -> Vec<Vec<u8>> {
+    let (nx, solids) = (slicer.grid.dims[0], slicer.lists.len());
+    masks
+        .iter()
+        .enumerate()
+        .map(|(p, m)| {
+            let level = crate::blend::grey_of_rgb(crate::palette::rgb(slicer.colours[p] as u32));
+            let dataset = slicer
+                .sampled
+                .get(p.wrapping_sub(solids))
+                .filter(|s| p >= solids && s.is_dataset());
+            (0..m.len())
+                .map(|i| match (m.get(i), dataset) {
+                    (false, _) => 0,
+                    (true, Some(s)) => s
+                        .grey(slicer.grid.centre(i % nx, i / nx, k))
+                        .unwrap_or(level),
+                    (true, None) => level,
+                })
+                .collect()
+        })
+        .collect()
+}
+
 /// Slabs a..b: colour codes and counts of each, and the pixel-clocks simulated.
 fn slab_chunk(
     slicer: &Slicer,
@@ -682,16 +887,12 @@ fn slab_chunk(
     b: usize,
 ) -> Result<Chunk, String> {
     let (mut out, mut simulated) = (vec![], 0);
-    source.sweep(slicer, a, b, &mut simulated, &mut |_, masks| {
+    source.sweep(slicer, a, b, &mut simulated, &mut |k, masks| {
         let mut counts = OpCounts::default();
-        let colours = eval
-            .eval(masks, &mut counts)
-            .iter()
-            .map(|&l| match l {
-                0 => 0,
-                l => slicer.colours[l as usize - 1],
-            })
-            .collect();
+        let colours = match &slicer.blend {
+            Some(b) => b.blend(&grey_slices(slicer, k, masks), slicer.grid.slice_len()),
+            None => label_colours(slicer, k, &eval.eval(masks, &mut counts)),
+        };
         tick();
         out.push((colours, counts));
     })?;

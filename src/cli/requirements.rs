@@ -102,6 +102,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let text =
         std::fs::read_to_string(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
     let scene = parse_csg(&text, &a.scene.display().to_string()).map_err(|e| e.to_string())?;
+    scene.require_convex(&a.scene.display().to_string(), "`requirements`")?;
     if !(a.precision > 0.0 && a.precision.is_finite()) {
         return Err(format!(
             "--precision {}: must be a positive number",

@@ -87,6 +87,7 @@ impl Scene {
     fn load_csg(path: &Path, view: View, cfg: &ArrayConfig) -> Result<Scene, String> {
         let text = read(path)?;
         let scene = parse_csg(&text, &path.display().to_string()).map_err(|e| e.to_string())?;
+        scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);
         let Projected { lists, clip } = project(&scene, view, w, h, &cfg.fmt)
             .map_err(|e| format!("{}:1:1: {e}", path.display()))?;

@@ -8,7 +8,6 @@ use std::time::Instant;
 use csgpix::mesh;
 use csgpix::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix::output::write_atomic;
-use csgpix::scad::parse_csg;
 use csgpix::sculpt::{self, Frame, Latency, Sculptor, Step, Tool};
 use csgpix::voxelize::{memory_estimate, Grid, Slicer, Volume};
 use glam::DVec3;
@@ -214,16 +213,16 @@ fn load_nrrd(p: &Path, max_memory: u64) -> Result<(OptimizedOctree, Frame, [usiz
 /// feeding the optimized octree slice by slice.
 fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let name = a.input.display().to_string();
-    let text = std::fs::read_to_string(&a.input).map_err(|e| format!("{name}: {e}"))?;
-    let scene = parse_csg(&text, &name).map_err(|e| e.to_string())?;
+    let loaded = csgpix::sampled::load_scene(&a.input)?;
+    let scene = &loaded.scene;
     let res = a.res.unwrap_or([128; 3]);
     let grid = match a.bounds {
         Some((lo, hi)) => Grid::new(res, lo, hi),
-        None => Grid::of_scene(&scene, res),
+        None => loaded.grid(res),
     }
     .map_err(|e| format!("{name}:1:1: {e}"))?;
     let threads = rayon::current_num_threads();
-    let need = memory_estimate(&grid, scene.solids.len(), threads)
+    let need = memory_estimate(&grid, scene.primitive_count(), threads)
         .saturating_add(octree::memory_estimate(StoreKind::Octree, grid.dims)?);
     let budget = a.max_memory << 20;
     if need > budget {
@@ -233,8 +232,9 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
             a.max_memory
         ));
     }
-    let slicer =
-        Slicer::new(&scene, grid, WordFormat::THESIS).map_err(|e| format!("{name}:1:1: {e}"))?;
+    let slicer = Slicer::new(scene, grid, WordFormat::THESIS)
+        .map_err(|e| format!("{name}:1:1: {e}"))?
+        .with_sampled(loaded.sampled);
     let store = octree::optimized::from_scene(&slicer, &scene.root, budget - need)?;
     Ok((store, Frame::of_grid(&grid), grid.dims))
 }

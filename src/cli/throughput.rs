@@ -239,7 +239,9 @@ fn print_area(r: &AreaReport) {
 
 fn read_scene(path: &Path) -> Result<CsgScene, String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    parse_csg(&text, &path.display().to_string()).map_err(|e| e.to_string())
+    let scene = parse_csg(&text, &path.display().to_string()).map_err(|e| e.to_string())?;
+    scene.require_convex(&path.display().to_string(), "`throughput`")?;
+    Ok(scene)
 }
 
 /// `--word`, or 10 fraction bits and the fewest integer bits (10 or more) under which the

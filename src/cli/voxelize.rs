@@ -6,12 +6,13 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::ValueEnum;
+use csgpix::blend::{BlendEval, Union};
 use csgpix::blist::{BlistEval, BlistTable};
 use csgpix::evaluate::{StackEval, TreeEval};
 use csgpix::octree::{self, StoreKind};
 use csgpix::output::write_atomic;
 use csgpix::palette::rgb;
-use csgpix::scad::parse_csg;
+use csgpix::sampled::{load_scene, parse_binding, scene_from_expr, Binding, Loaded};
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
 use csgpix::voxelize::{
@@ -30,10 +31,31 @@ use super::EquationsArg;
     csgpix voxelize vectors/scenes/figure-5.2.csg --res 64 --preview fig52.png -o fig52.nrrd\n  \
     csgpix voxelize vectors/scenes/csg-logo.csg --res 128 --eval tree --json -o logo.nrrd\n  \
     csgpix voxelize vectors/scenes/hollow-cube.csg --res 32 --model cycle --slices slices/ -o hollow.nrrd\n  \
-    csgpix voxelize scene.csg --res 64x64x32 --bounds -10,-10,-10,10,10,10 -o part.nrrd")]
+    csgpix voxelize scene.csg --res 64x64x32 --bounds -10,-10,-10,10,10,10 -o part.nrrd\n  \
+    csgpix voxelize vectors/scenes/figure-5.6.csg --res 64 --grey -o head.nrrd\n  \
+    csgpix voxelize --expr '(head + box) - hole' --prim head=vectors/scenes/phantom.nrrd,threshold=300 \\\n    \
+    --prim box=vectors/scenes/figure-5.2.csg --prim hole=part.stl --res 64 --blend max -o blend.nrrd")]
 pub struct Args {
-    /// OpenSCAD `.csg` scene.
-    scene: PathBuf,
+    /// OpenSCAD `.csg` scene; `import("x.nrrd", threshold = t)`, `import("x.stl")` and
+    /// `import("x.obj")` bring in datasets and meshes (docs/volume-scenes.md).
+    #[arg(required_unless_present = "expr", conflicts_with = "expr")]
+    scene: Option<PathBuf>,
+    /// Instead of a scene file: a CSG expression over named primitives (`+` union, `.`
+    /// intersection, `-` difference, `!` complement), each bound by --prim.
+    #[arg(long, requires = "prim")]
+    expr: Option<String>,
+    /// NAME=FILE[,threshold=T]: bind a name of --expr to a `.csg` scene, a `.nrrd` dataset (with
+    /// its iso threshold) or a closed `.stl`/`.obj` mesh. Repeat for every name.
+    #[arg(long, value_parser = parse_binding)]
+    prim: Vec<Binding>,
+    /// Voxels won by a dataset take its grey value (1..255, from its sample range) instead of
+    /// its colour code (§4.5).
+    #[arg(long)]
+    grey: bool,
+    /// Grey-valued output by §3.3's blending operators instead of labels: union `max` or
+    /// `sum:KS,KD` (C = KS·Cs + KD·Cd), intersection min, difference max(Cd − Cs, 0).
+    #[arg(long, value_parser = parse_blend, conflicts_with = "grey")]
+    blend: Option<Union>,
     /// Voxels along X, Y, Z: N for a cube, or NXxNYxNZ.
     #[arg(long, value_parser = parse_res)]
     res: [usize; 3],
@@ -203,6 +225,10 @@ struct Report {
     route: &'static str,
     eval: &'static str,
     solids: usize,
+    /// Datasets and meshes.
+    imports: usize,
+    /// What the voxel values mean.
+    values: &'static str,
     /// Width of the Blist label register (§4.3.3), whichever evaluator ran.
     label_bits: u32,
     /// Rows of the Blist table (one per primitive occurrence).
@@ -218,17 +244,53 @@ struct Report {
     wall_seconds: f64,
 }
 
+/// `sum:KS,KD` or `max`.
+fn parse_blend(s: &str) -> Result<Union, String> {
+    if s == "max" {
+        return Ok(Union::Max);
+    }
+    let k = s
+        .strip_prefix("sum:")
+        .and_then(|k| k.split_once(','))
+        .ok_or_else(|| format!("{s:?}: expected `max` or `sum:KS,KD` (e.g. sum:0.5,0.5)"))?;
+    let f = |v: &str| match v.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() && x >= 0.0 => Ok(x),
+        _ => Err(format!("{v:?}: a blending factor is a number >= 0")),
+    };
+    Ok(Union::Sum {
+        ks: f(k.0)?,
+        kd: f(k.1)?,
+    })
+}
+
+/// What the run names its input in messages and the NRRD comment.
+fn input_name(a: &Args) -> String {
+    match (&a.scene, &a.expr) {
+        (Some(p), _) => p.display().to_string(),
+        (None, Some(e)) => format!("--expr {e:?}"),
+        (None, None) => "(no scene)".into(),
+    }
+}
+
+fn load(a: &Args) -> Result<Loaded, String> {
+    match (&a.scene, &a.expr) {
+        (Some(p), _) => load_scene(p),
+        (None, Some(e)) => scene_from_expr(e, &a.prim),
+        (None, None) => Err("give a scene file or --expr".into()),
+    }
+}
+
 pub fn run(a: Args) -> Result<ExitCode, String> {
-    let text =
-        std::fs::read_to_string(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
-    let scene = parse_csg(&text, &a.scene.display().to_string()).map_err(|e| e.to_string())?;
+    let name = input_name(&a);
+    let loaded = load(&a)?;
     let grid = match a.bounds {
         Some((lo, hi)) => Grid::new(a.res, lo, hi),
-        None => Grid::of_scene(&scene, a.res),
+        None => loaded.grid(a.res),
     }
-    .map_err(|e| format!("{}:1:1: {e}", a.scene.display()))?;
+    .map_err(|e| format!("{name}:1:1: {e}"))?;
+    let scene = &loaded.scene;
     let threads = a.threads.unwrap_or_else(rayon::current_num_threads).max(1);
-    let mut need = memory_estimate(&grid, scene.solids.len(), threads);
+    let mut need = memory_estimate(&grid, scene.primitive_count(), threads);
     if let Some(st) = a.store {
         need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
     }
@@ -239,10 +301,13 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             a.max_memory
         ));
     }
-    let mut slicer =
-        Slicer::new(&scene, grid, a.word).map_err(|e| format!("{}:1:1: {e}", a.scene.display()))?;
+    let mut slicer = Slicer::new(scene, grid, a.word)
+        .map_err(|e| format!("{name}:1:1: {e}"))?
+        .with_sampled(loaded.sampled);
     slicer.panel = a.panel.0;
-    let eval = evaluator(a.eval, &scene);
+    slicer.grey = a.grey;
+    slicer.blend = a.blend.map(|u| BlendEval::new(&scene.root, u));
+    let eval = evaluator(a.eval, scene);
     let route = match (a.model, a.route) {
         (ModelArg::Cycle, _) => Route::Array { cycle: true },
         (ModelArg::Word, RouteArg::Array) => Route::Array { cycle: false },
@@ -251,7 +316,11 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     };
     let set = Equations::from(a.equations).set();
     let t0 = Instant::now();
-    let bar = progress(grid.dims[2], route, grid.slice_len() * scene.solids.len());
+    let bar = progress(
+        grid.dims[2],
+        route,
+        grid.slice_len() * scene.primitive_count(),
+    );
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -267,15 +336,16 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     };
     bar.finish_and_clear();
     let wall = t0.elapsed().as_secs_f64();
+    let grey = a.grey || a.blend.is_some();
     if let Some(dir) = &a.slices {
-        write_slices(dir, &volume)?;
+        write_slices(dir, &volume, grey)?;
     }
     if let Some(path) = &a.preview {
-        write_preview(path, &volume)?;
+        write_preview(path, &volume, grey)?;
     }
-    let comment = format!("csgpix voxelize {}", a.scene.display());
+    let comment = format!("csgpix voxelize {name}");
     csgpix::nrrd::write(&a.out, &grid, &volume.voxels, &comment)?;
-    report(&a, &scene, &slicer, eval.as_ref(), (work, store), wall)
+    report(&a, scene, &slicer, eval.as_ref(), (work, store), wall)
 }
 
 /// Voxelizes while building the store from each slice as it comes (`--store`); the store's
@@ -367,6 +437,14 @@ fn report(
             EvalArg::Stack => "stack",
         },
         solids: scene.solids.len(),
+        imports: scene.imports.len(),
+        values: if a.blend.is_some() {
+            "grey (blended, §3.3)"
+        } else if a.grey {
+            "colour codes, datasets grey"
+        } else {
+            "colour codes"
+        },
         label_bits: table.label_bits,
         blist_rows: table.rows.len(),
         state_bits_per_voxel: eval.state_bytes(pixels) * 8 / pixels.max(1),
@@ -448,7 +526,7 @@ fn view(v: &Volume, axis: usize) -> (usize, usize, Vec<u32>, Vec<Option<f64>>) {
 
 /// The three axis views side by side, 4 pixels apart, scaled up by a whole factor towards 256
 /// pixels.
-fn write_preview(path: &Path, v: &Volume) -> Result<(), String> {
+fn write_preview(path: &Path, v: &Volume, grey: bool) -> Result<(), String> {
     let views: Vec<_> = (0..3).rev().map(|a| view(v, a)).collect();
     let scale = (256 / v.dims.iter().copied().max().unwrap_or(1)).max(1);
     let width: usize = views.iter().map(|x| x.0 * scale + 4).sum();
@@ -457,7 +535,11 @@ fn write_preview(path: &Path, v: &Volume) -> Result<(), String> {
         image::RgbImage::from_pixel(width as u32, height as u32, image::Rgb([255, 255, 255]));
     let mut left = 0;
     for (w, h, codes, depths) in &views {
-        let rgb = csgpix::palette::image_rgb(codes, Some(depths));
+        let rgb = if grey {
+            shaded_grey(codes, depths)
+        } else {
+            csgpix::palette::image_rgb(codes, Some(depths))
+        };
         for (i, c) in rgb.iter().enumerate() {
             for dy in 0..scale {
                 for dx in 0..scale {
@@ -477,14 +559,34 @@ fn write_preview(path: &Path, v: &Volume) -> Result<(), String> {
     })
 }
 
-/// Every slice as `slice-KKKK.png` (palette colours), each written whole or not at all.
-fn write_slices(dir: &Path, v: &Volume) -> Result<(), String> {
+/// Grey values shaded by depth as the palette view shades colours: nearest full, farthest
+/// 45%.
+fn shaded_grey(codes: &[u32], depths: &[Option<f64>]) -> Vec<[u8; 3]> {
+    let ds = depths.iter().flatten();
+    let (lo, hi) = ds.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &d| {
+        (a.min(d), b.max(d))
+    });
+    codes
+        .iter()
+        .zip(depths)
+        .map(|(&c, d)| {
+            let t = d.map_or(0.0, |d| if hi > lo { (d - lo) / (hi - lo) } else { 0.0 });
+            let g = (c as f64 * (1.0 - 0.55 * t)).round() as u8;
+            [g; 3]
+        })
+        .collect()
+}
+
+/// Every slice as `slice-KKKK.png` (palette colours, or grey values with `grey`), each
+/// written whole or not at all.
+fn write_slices(dir: &Path, v: &Volume, grey: bool) -> Result<(), String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let [nx, ny, nz] = v.dims;
     for k in 0..nz {
         let mut img = image::RgbImage::new(nx as u32, ny as u32);
         for (i, &c) in v.voxels[k * nx * ny..(k + 1) * nx * ny].iter().enumerate() {
-            img.put_pixel((i % nx) as u32, (i / nx) as u32, image::Rgb(rgb(c as u32)));
+            let px = if grey { [c; 3] } else { rgb(c as u32) };
+            img.put_pixel((i % nx) as u32, (i / nx) as u32, image::Rgb(px));
         }
         let path = dir.join(format!("slice-{k:04}.png"));
         write_atomic(&path, |w| {

@@ -1,0 +1,435 @@
+//! Primitives sampled rather than drawn: volume datasets and closed triangle meshes beside the
+//! convex solids (§3.2-3.3, Figure 5.6: the CT head among cubes and cylinders).
+//!
+//! The Blist (§4.3.2) and the other evaluators see only a mask per primitive per slab; what
+//! differs is where the mask comes from:
+//!
+//! * a **dataset** (`import("head.nrrd", threshold = t)`): voxel v is inside when the sample
+//!   at v's centre, trilinearly interpolated, is at or above t ([`crate::dataset`]); the
+//!   import's transform maps the dataset into the scene;
+//! * a **mesh** (`import("part.stl")`, OBJ too): its triangles are polygons, each a plane cut
+//!   by three planes perpendicular to the screen (§5.3.1); along every pixel's ray the depths
+//!   where the ray crosses them are found exactly ([`crate::trimesh`]), and the solid's
+//!   interior is the odd parity of the crossings in front, the XOR of §3.4.2 (crossings in
+//!   front of the first slab are the "0th slice"). The inside intervals then meet the slabs
+//!   under the same sampling convention and depth-word quantization as the convex solids
+//!   ([`crate::voxelize`]), so a mesh of a convex solid's own faces gives that solid's voxels.
+
+use std::path::{Path, PathBuf};
+
+use glam::{DMat4, DVec3};
+
+use crate::dataset::{read_nrrd, Dataset};
+use crate::project::colour_code;
+use crate::scad::parse_csg;
+use crate::slice::Mask;
+use crate::solid::{CsgNode, CsgScene, Import};
+use crate::trimesh::TriMesh;
+use crate::voxelize::Grid;
+
+/// What a sampled primitive is.
+pub enum Shape {
+    /// A dataset and its iso value; `to_file` maps scene points into the dataset's own space.
+    Dataset {
+        data: Dataset,
+        threshold: f64,
+        to_file: DMat4,
+    },
+    /// A closed mesh, in scene coordinates.
+    Mesh(TriMesh),
+}
+
+/// A loaded import.
+pub struct Sampled {
+    pub shape: Shape,
+    /// Palette code (1..=15) of its voxels, as for a convex solid.
+    pub colour: u8,
+    /// The file, as the scene names it.
+    pub file: String,
+}
+
+impl Sampled {
+    /// Scene-space box around the primitive.
+    pub fn bounds(&self) -> (DVec3, DVec3) {
+        match &self.shape {
+            Shape::Mesh(m) => m.bounds(),
+            Shape::Dataset { data, to_file, .. } => {
+                let (lo, hi) = data.bounds();
+                let to_scene = to_file.inverse();
+                corners(lo, hi)
+                    .map(|c| to_scene.transform_point3(c))
+                    .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), p| {
+                        (a.min(p), b.max(p))
+                    })
+            }
+        }
+    }
+
+    /// Datasets: the sample at scene point `p` (None outside the dataset's lattice).
+    pub fn sample(&self, p: DVec3) -> Option<f64> {
+        match &self.shape {
+            Shape::Dataset { data, to_file, .. } => data.sample(to_file.transform_point3(p)),
+            Shape::Mesh(_) => None,
+        }
+    }
+
+    /// Datasets: InPrimitive at scene point `p`.
+    pub fn inside(&self, p: DVec3) -> bool {
+        match &self.shape {
+            Shape::Dataset { threshold, .. } => self.sample(p).is_some_and(|v| v >= *threshold),
+            Shape::Mesh(_) => false,
+        }
+    }
+
+    /// Datasets: the grey colour (1..=255) of the sample at `p` (§4.5: the winner's colour).
+    pub fn grey(&self, p: DVec3) -> Option<u8> {
+        match &self.shape {
+            Shape::Dataset { data, .. } => self.sample(p).map(|v| data.grey(v)),
+            Shape::Mesh(_) => None,
+        }
+    }
+
+    pub fn is_dataset(&self) -> bool {
+        matches!(self.shape, Shape::Dataset { .. })
+    }
+
+    /// Datasets: the mask of slab k, from the samples at the voxel centres.
+    pub fn dataset_mask(&self, grid: &Grid, k: usize) -> Mask {
+        let nx = grid.dims[0];
+        Mask::from_fn(grid.slice_len(), |i| {
+            self.inside(grid.centre(i % nx, i / nx, k))
+        })
+    }
+}
+
+fn corners(lo: DVec3, hi: DVec3) -> impl Iterator<Item = DVec3> {
+    (0..8).map(move |c| {
+        DVec3::new(
+            if c & 1 == 0 { lo.x } else { hi.x },
+            if c & 2 == 0 { lo.y } else { hi.y },
+            if c & 4 == 0 { lo.z } else { hi.z },
+        )
+    })
+}
+
+/// A scene and its loaded imports (`sampled[j]` is the primitive `solids.len() + j`).
+pub struct Loaded {
+    pub scene: CsgScene,
+    pub sampled: Vec<Sampled>,
+}
+
+impl Loaded {
+    /// A grid over every primitive's bounds (subtracted ones too).
+    pub fn grid(&self, dims: [usize; 3]) -> Result<Grid, String> {
+        let solid_pts = self.scene.solids.iter().flat_map(|s| s.vertices.iter());
+        let mut lo = DVec3::INFINITY;
+        let mut hi = DVec3::NEG_INFINITY;
+        for p in solid_pts {
+            lo = lo.min(DVec3::from(*p));
+            hi = hi.max(DVec3::from(*p));
+        }
+        for s in &self.sampled {
+            let (a, b) = s.bounds();
+            lo = lo.min(a);
+            hi = hi.max(b);
+        }
+        if !lo.is_finite() {
+            return Err("the scene has no primitives: give --bounds".into());
+        }
+        Grid::new(dims, lo, hi)
+    }
+}
+
+/// Read a `.csg` scene and every file it imports (relative to the scene's directory).
+pub fn load_scene(path: &Path) -> Result<Loaded, String> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{name}: {e}"))?;
+    let scene = parse_csg(&text, &name).map_err(|e| e.to_string())?;
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let sampled = load_imports(&scene, &name, &dir)?;
+    Ok(Loaded { scene, sampled })
+}
+
+/// Load the scene's imports; `scene_file` names the scene in messages, `dir` is where
+/// relative paths start.
+pub fn load_imports(
+    scene: &CsgScene,
+    scene_file: &str,
+    dir: &Path,
+) -> Result<Vec<Sampled>, String> {
+    let first = scene.solids.len();
+    scene
+        .imports
+        .iter()
+        .enumerate()
+        .map(|(j, imp)| {
+            let at = format!("{scene_file}:{}:{}", imp.line, imp.col);
+            load_import(imp, first + j, &at, dir)
+        })
+        .collect()
+}
+
+/// Load one import; `at` says where it was named, for messages.
+fn load_import(imp: &Import, index: usize, at: &str, dir: &Path) -> Result<Sampled, String> {
+    let path: PathBuf = dir.join(&imp.file);
+    if !path.is_file() {
+        return Err(format!(
+            "{at}: `import(\"{}\")`: no such file {}",
+            imp.file,
+            path.display()
+        ));
+    }
+    let to_scene = imp.matrix.map_or(DMat4::IDENTITY, |m| {
+        DMat4::from_cols_array_2d(&m).transpose()
+    });
+    let shape = match imp.threshold {
+        Some(threshold) => {
+            let data = read_nrrd(&path).and_then(Dataset::new)?;
+            Shape::Dataset {
+                data,
+                threshold,
+                to_file: to_scene.inverse(),
+            }
+        }
+        None => {
+            let mesh = TriMesh::read(&path)?;
+            mesh.check_closed(&path.display().to_string())?;
+            Shape::Mesh(mesh.transformed(to_scene))
+        }
+    };
+    let colour = imp
+        .colour
+        .map_or(1 + (index % 6) as u32, colour_code)
+        .min(255) as u8;
+    Ok(Sampled {
+        shape,
+        colour,
+        file: imp.file.clone(),
+    })
+}
+
+/// Per pixel, the runs of slabs inside a primitive (disjoint, sorted, not touching:
+/// `first..=last`), for primitives whose ray meets them more than once (meshes).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SlabRuns(pub Vec<Vec<(u32, u32)>>);
+
+impl SlabRuns {
+    /// From runs in any order per pixel: sorted and merged where they meet or touch.
+    pub fn merged(mut runs: Vec<Vec<(u32, u32)>>) -> SlabRuns {
+        for r in &mut runs {
+            r.retain(|(a, b)| a <= b);
+            r.sort_unstable();
+            let mut out: Vec<(u32, u32)> = Vec::with_capacity(r.len());
+            for &(a, b) in r.iter() {
+                match out.last_mut() {
+                    Some(last) if a <= last.1.saturating_add(1) => last.1 = last.1.max(b),
+                    _ => out.push((a, b)),
+                }
+            }
+            *r = out;
+        }
+        SlabRuns(runs)
+    }
+
+    /// Per slab k, the pixels whose membership differs between slab k − 1 and slab k.
+    pub fn toggles(&self, slabs: usize) -> Vec<Vec<u32>> {
+        let mut t = vec![vec![]; slabs];
+        for (i, runs) in self.0.iter().enumerate() {
+            for &(a, b) in runs {
+                if a > 0 && (a as usize) < slabs {
+                    t[a as usize].push(i as u32);
+                }
+                if (b as usize) + 1 < slabs {
+                    t[b as usize + 1].push(i as u32);
+                }
+            }
+        }
+        t
+    }
+
+    /// The mask of slab k.
+    pub fn mask(&self, k: usize) -> Mask {
+        let k = k as u32;
+        Mask::from_fn(self.0.len(), |i| {
+            self.0[i].iter().any(|&(a, b)| a <= k && k <= b)
+        })
+    }
+}
+
+/// A primitive name of a CSG expression bound to a file (`--prim NAME=FILE[,threshold=T]`):
+/// a `.csg` scene (its whole tree stands for the name), a dataset (`.nrrd`, with its
+/// threshold) or a mesh (`.stl`, `.obj`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Binding {
+    pub name: String,
+    pub file: PathBuf,
+    pub threshold: Option<f64>,
+}
+
+/// `NAME=FILE[,threshold=T]`.
+pub fn parse_binding(s: &str) -> Result<Binding, String> {
+    let (name, rest) = s
+        .split_once('=')
+        .ok_or_else(|| format!("{s:?}: expected NAME=FILE[,threshold=T]"))?;
+    let (file, threshold) = match rest.rsplit_once(",threshold=") {
+        Some((f, t)) => {
+            let t: f64 = t
+                .trim()
+                .parse()
+                .map_err(|e| format!("{s:?}: threshold {t:?}: {e}"))?;
+            if !t.is_finite() {
+                return Err(format!("{s:?}: the threshold must be finite"));
+            }
+            (f, Some(t))
+        }
+        None => (rest, None),
+    };
+    let name = name.trim();
+    let ok = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !ok {
+        return Err(format!(
+            "{s:?}: {name:?} is not a primitive name (letters, digits, _)"
+        ));
+    }
+    Ok(Binding {
+        name: name.to_string(),
+        file: PathBuf::from(file),
+        threshold,
+    })
+}
+
+/// Leaf numbers of imports while a scene is assembled from parts (see [`renumber`]).
+const IMPORT_MARK: usize = usize::MAX / 2;
+
+/// The scene of a CSG expression (§4.3.2's "named primitives") whose names are bound to
+/// files. `expr_name` names the expression in messages (`--expr`).
+pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded, String> {
+    let e = crate::csg_expr::parse(expr).map_err(|e| format!("--expr: {e}"))?;
+    if let Some(b) = bindings.iter().find(|b| !e.names.contains(&b.name)) {
+        return Err(format!(
+            "--prim {}: the expression has no primitive `{}`",
+            b.name, b.name
+        ));
+    }
+    let mut scene = CsgScene::convex(vec![], CsgNode::Empty);
+    let mut sampled = vec![];
+    let mut parts = vec![];
+    for name in &e.names {
+        let b = bindings.iter().find(|b| &b.name == name).ok_or_else(|| {
+            format!("--expr: primitive `{name}` needs a file: --prim {name}=FILE")
+        })?;
+        parts.push(add_part(&mut scene, &mut sampled, b)?);
+    }
+    let mut root = e.root.clone();
+    substitute(&mut root, &parts);
+    renumber(&mut root, scene.solids.len());
+    scene.root = root;
+    Ok(Loaded { scene, sampled })
+}
+
+/// Add one bound file's primitives to `scene`; its tree, with solids numbered in `scene` and
+/// imports as `IMPORT_MARK + j`.
+fn add_part(
+    scene: &mut CsgScene,
+    sampled: &mut Vec<Sampled>,
+    b: &Binding,
+) -> Result<CsgNode, String> {
+    let is_csg = b
+        .file
+        .extension()
+        .is_some_and(|x| x.eq_ignore_ascii_case("csg"));
+    if is_csg {
+        if b.threshold.is_some() {
+            return Err(format!(
+                "--prim {}: a threshold applies to datasets only",
+                b.name
+            ));
+        }
+        let part = load_scene(&b.file)?;
+        let (so, io) = (scene.solids.len(), scene.imports.len());
+        let n = part.scene.solids.len();
+        let mut tree = part.scene.root.clone();
+        map_leaves(&mut tree, |i| {
+            if i < n {
+                so + i
+            } else {
+                IMPORT_MARK + io + i - n
+            }
+        });
+        scene.solids.extend(part.scene.solids);
+        scene.imports.extend(part.scene.imports);
+        sampled.extend(part.sampled);
+        return Ok(tree);
+    }
+    let import = Import {
+        file: b.file.display().to_string(),
+        threshold: b.threshold,
+        matrix: None,
+        colour: None,
+        line: 1,
+        col: 1,
+    };
+    let index = IMPORT_MARK + scene.imports.len();
+    let name = format!("--prim {}", b.name);
+    let loaded = load_import(
+        &import,
+        scene.solids.len() + scene.imports.len(),
+        &name,
+        Path::new(""),
+    )?;
+    if loaded.is_dataset() != b.threshold.is_some() {
+        return Err(format!(
+            "{name}: {}",
+            if b.threshold.is_some() {
+                "a threshold applies to datasets (.nrrd) only"
+            } else {
+                "a dataset needs ,threshold=T"
+            }
+        ));
+    }
+    scene.imports.push(import);
+    sampled.push(loaded);
+    Ok(CsgNode::Solid(index))
+}
+
+/// Replace every leaf `Solid(i)` of an expression by `parts[i]` (iteratively).
+fn substitute(root: &mut CsgNode, parts: &[CsgNode]) {
+    let mut stack = vec![root];
+    while let Some(node) = stack.pop() {
+        match node {
+            CsgNode::Solid(i) => *node = parts.get(*i).cloned().unwrap_or(CsgNode::Empty),
+            CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
+                stack.extend(c.iter_mut())
+            }
+            CsgNode::Complement(c) => stack.push(c),
+            CsgNode::Empty => {}
+        }
+    }
+}
+
+/// Imports follow the solids: `IMPORT_MARK + j` becomes `solids + j`.
+fn renumber(root: &mut CsgNode, solids: usize) {
+    map_leaves(root, |i| {
+        if i >= IMPORT_MARK {
+            i - IMPORT_MARK + solids
+        } else {
+            i
+        }
+    });
+}
+
+/// Apply `f` to every leaf number (iteratively, trees can be deep).
+fn map_leaves(root: &mut CsgNode, f: impl Fn(usize) -> usize) {
+    let mut stack = vec![root];
+    while let Some(node) = stack.pop() {
+        match node {
+            CsgNode::Solid(i) => *i = f(*i),
+            CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
+                stack.extend(c.iter_mut())
+            }
+            CsgNode::Complement(c) => stack.push(c),
+            CsgNode::Empty => {}
+        }
+    }
+}
