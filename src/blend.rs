@@ -2,8 +2,7 @@
 //! evaluated per slice on a slice stack (§3.4.1's pseudocode).
 //!
 //! Every primitive contributes a grey slice: 0 outside; inside, a dataset's own grey value
-//! (its interpolated sample, scaled to 1..=255) and a solid's or mesh's colour as a grey
-//! level (the luminance of its palette colour, at least 1). With C_d the value already in
+//! (its interpolated sample, scaled to 1..=255) and [`SOLID`] (255) for a solid or a mesh. With C_d the value already in
 //! the frame buffer (the operator's first operand) and C_s the incoming one:
 //!
 //! | operator | §3.3 | here |
@@ -88,14 +87,10 @@ impl BlendEval {
     }
 }
 
-/// A palette colour as a grey level: its luminance (ITU-R BT.601 weights), at least 1 so that
-/// an inside voxel is never empty.
-pub fn grey_of_rgb(rgb: [u8; 3]) -> u8 {
-    let [r, g, b] = rgb.map(f64::from);
-    (0.299 * r + 0.587 * g + 0.114 * b)
-        .round()
-        .clamp(1.0, 255.0) as u8
-}
+/// The value of a solid's or a mesh's inside: they are binary volumes (0 or 255), so that
+/// blending them alone is their Boolean operation (tested) and subtracting one removes
+/// whatever it covers.
+pub const SOLID: u8 = 255;
 
 #[cfg(test)]
 mod tests {
@@ -146,11 +141,5 @@ mod tests {
                 assert!(got == 0 || got == 255);
             }
         }
-    }
-
-    #[test]
-    fn grey_levels() {
-        assert_eq!(grey_of_rgb([0, 0, 0]), 1);
-        assert_eq!(grey_of_rgb([255, 255, 255]), 255);
     }
 }

@@ -852,14 +852,14 @@ fn label_colours(slicer: &Slicer, k: usize, labels: &[u32]) -> Vec<u8> {
 }
 
 /// Every primitive's grey slice for the blending operators ([`crate::blend`]): 0 outside;
-/// inside, a dataset's grey value, a solid's or mesh's colour as a grey level.
+/// inside, a dataset's grey value, a solid's or mesh's [`crate::blend::SOLID`].
 fn grey_slices(slicer: &Slicer, k: usize, masks: &[Mask]) -> Vec<Vec<u8>> {
     let (nx, solids) = (slicer.grid.dims[0], slicer.lists.len());
     masks
         .iter()
         .enumerate()
         .map(|(p, m)| {
-            let level = crate::blend::grey_of_rgb(crate::palette::rgb(slicer.colours[p] as u32));
+            let level = crate::blend::SOLID;
             let dataset = slicer
                 .sampled
                 .get(p.wrapping_sub(solids))

@@ -93,6 +93,11 @@ pub struct Args {
     /// depth), side by side.
     #[arg(long)]
     preview: Option<PathBuf>,
+    /// Also write the volume's surface as a mesh (.stl, .obj or .ply), by global Marching
+    /// Cubes over the optimized octree (docs/octree.md), in scene units. The mesh is closed
+    /// when the grid leaves at least one empty voxel before its far faces (--bounds).
+    #[arg(long)]
+    mesh: Option<PathBuf>,
     /// Worker threads (default: all cores). The output does not depend on it.
     #[arg(long)]
     threads: Option<usize>,
@@ -282,6 +287,9 @@ fn load(a: &Args) -> Result<Loaded, String> {
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
     let name = input_name(&a);
+    if let Some(p) = &a.mesh {
+        csgpix::mesh::Format::of_path(p)?;
+    }
     let loaded = load(&a)?;
     let grid = match a.bounds {
         Some((lo, hi)) => Grid::new(a.res, lo, hi),
@@ -344,8 +352,30 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         write_preview(path, &volume, grey)?;
     }
     let comment = format!("csgpix voxelize {name}");
+    if let Some(path) = &a.mesh {
+        write_mesh(path, &grid, &volume, budget, &comment)?;
+    }
     csgpix::nrrd::write(&a.out, &grid, &volume.voxels, &comment)?;
     report(&a, scene, &slicer, eval.as_ref(), (work, store), wall)
+}
+
+/// The volume's surface by global Marching Cubes, in scene units (`--mesh`).
+fn write_mesh(
+    path: &Path,
+    grid: &Grid,
+    v: &Volume,
+    budget: u64,
+    comment: &str,
+) -> Result<(), String> {
+    csgpix::mesh::Format::of_path(path)?;
+    let store = octree::OptimizedOctree::from_volume(v, budget)?;
+    let frame = csgpix::sculpt::Frame::of_grid(grid);
+    let tris: Vec<csgpix::mesh::Tri> = octree::mc::marching_cubes(&store)
+        .triangles
+        .iter()
+        .map(|t| t.map(|p| frame.to_scene(p)))
+        .collect();
+    csgpix::mesh::write(path, &tris, comment)
 }
 
 /// Voxelizes while building the store from each slice as it comes (`--store`); the store's
