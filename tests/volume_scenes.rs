@@ -473,3 +473,16 @@ fn blending_and_grey_output() {
         "and colour codes for solids"
     );
 }
+
+/// `vectors/scenes/phantom.nrrd` (what figure-5.6.csg imports) is what `csgpix phantom`
+/// writes, byte for byte.
+#[test]
+fn the_checked_in_phantom_is_what_the_generator_writes() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("p.nrrd");
+    let o = csgpix(&["phantom", "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let fresh = std::fs::read(&out).unwrap();
+    let checked_in = std::fs::read(root().join("vectors/scenes/phantom.nrrd")).unwrap();
+    assert!(fresh == checked_in, "regenerate: csgpix phantom -o vectors/scenes/phantom.nrrd");
+}

@@ -4,6 +4,7 @@ mod array_args;
 mod blist;
 mod export_verilog;
 mod gen_vectors;
+mod phantom;
 mod render;
 mod requirements;
 mod scenes;
@@ -56,6 +57,8 @@ pub enum Cmd {
     Throughput(throughput::Args),
     /// Sweep depth-word bits, tessellation, slabs and model; error against cost as CSV and PNG.
     Study(study::Args),
+    /// Write the project's CT-head phantom (Figure 5.6's dataset) as NRRD.
+    Phantom(phantom::Args),
 }
 
 /// Which equation set SGENE uses.
@@ -80,6 +83,7 @@ impl From<EquationsArg> for Equations {
 pub fn run(cli: Cli) -> Result<ExitCode, String> {
     match cli.cmd {
         Cmd::GenVectors(a) => gen_vectors::run(a),
+        Cmd::Phantom(a) => phantom::run(a),
         Cmd::VerifySelect(a) => verify_select::run(a),
         Cmd::ExportVerilog(a) => export_verilog::run(a),
         Cmd::Render(a) => render::run(a),
