@@ -4,6 +4,7 @@ pub mod blist;
 pub mod clip_expr;
 pub mod compile;
 pub mod csg_expr;
+pub mod dataset;
 pub mod display_list;
 pub mod evaluate;
 pub mod float;
