@@ -19,7 +19,8 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat4, DVec3};
 
-use crate::dataset::{read_nrrd, Dataset};
+use crate::dataset::Dataset;
+use crate::nrrd::read_nrrd;
 use crate::project::colour_code;
 use crate::scad::parse_csg;
 use crate::slice::Mask;
