@@ -23,4 +23,5 @@ pub mod slice;
 pub mod solid;
 pub mod study;
 pub mod throughput;
+pub mod trimesh;
 pub mod voxelize;
