@@ -32,7 +32,7 @@ use crate::voxelize::Grid;
 pub enum Shape {
     /// A dataset and its iso value; `to_file` maps scene points into the dataset's own space.
     Dataset {
-        data: Dataset,
+        data: Box<Dataset>,
         threshold: f64,
         to_file: DMat4,
     },
@@ -185,7 +185,7 @@ fn load_import(imp: &Import, index: usize, at: &str, dir: &Path) -> Result<Sampl
     });
     let shape = match imp.threshold {
         Some(threshold) => {
-            let data = read_nrrd(&path).and_then(Dataset::new)?;
+            let data = Box::new(read_nrrd(&path).and_then(Dataset::new)?);
             Shape::Dataset {
                 data,
                 threshold,
@@ -311,6 +311,15 @@ pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded, Strin
         return Err(format!(
             "--prim {}: the expression has no primitive `{}`",
             b.name, b.name
+        ));
+    }
+    if let Some(name) = e
+        .names
+        .iter()
+        .find(|n| !bindings.iter().any(|b| &b.name == *n))
+    {
+        return Err(format!(
+            "--expr: primitive `{name}` needs a file: --prim {name}=FILE"
         ));
     }
     let mut scene = CsgScene::convex(vec![], CsgNode::Empty);

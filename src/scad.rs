@@ -2122,6 +2122,42 @@ mod tests {
         assert_eq!(only_solid(&text).vertices.len(), 4);
     }
 
+    // --- imports ---
+
+    #[test]
+    fn imports_follow_the_solids_in_leaf_numbers() {
+        let scene = parse(
+            "union() {\n  import(\"a.stl\");\n  cube(1);\n  \
+             multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) \
+             import(file = \"h.nrrd\", threshold = 300);\n}\n",
+        );
+        assert_eq!((scene.solids.len(), scene.imports.len()), (1, 2));
+        assert_eq!(
+            scene.root,
+            CsgNode::Union(vec![
+                CsgNode::Solid(1),
+                CsgNode::Solid(0),
+                CsgNode::Solid(2)
+            ])
+        );
+        let (a, h) = (&scene.imports[0], &scene.imports[1]);
+        assert_eq!(
+            (a.file.as_str(), a.threshold, a.line, a.col),
+            ("a.stl", None, 2, 3)
+        );
+        assert_eq!((h.file.as_str(), h.threshold), ("h.nrrd", Some(300.0)));
+        assert_eq!(h.matrix.map(|m| m[0][3]), Some(5.0));
+    }
+
+    #[test]
+    fn import_refusals() {
+        assert_err("import(\"h.nrrd\");", 1, 1, "threshold");
+        assert_err("import(\"a.stl\", threshold = 3);", 1, 29, "datasets");
+        assert_err("import(\"a.stl\", scale = 2);", 1, 25, "scale");
+        assert_err("import(3);", 1, 8, "string");
+        assert_err("import();", 1, 1, "file name");
+    }
+
     // --- transforms and colours ---
 
     #[test]

@@ -192,7 +192,7 @@ impl Slicer {
         self.lists.len() + self.sampled.len()
     }
 
-    /// The voxels of one slab of imported primitive j, and its mesh runs if precomputed.
+    /// Every import the scene names is loaded ([`Slicer::with_sampled`]).
     fn check_imports(&self) -> Result<(), String> {
         if self.sampled.len() != self.imports {
             return Err(format!(
