@@ -90,6 +90,19 @@ impl Sampled {
         }
     }
 
+    /// Bytes voxelizing it on `grid` needs beyond the solids' share: a mesh's crossings, one
+    /// list per pixel (24 bytes) and about two crossings of 8 bytes each (plus as much while
+    /// they are collected), and its slab runs and toggles; a dataset is resampled in place.
+    pub fn memory_estimate(&self, grid: &Grid) -> u64 {
+        match &self.shape {
+            Shape::Mesh(m) => {
+                let pixels = grid.slice_len() as u64;
+                pixels * (24 + 2 * 16 + 24 + 2 * 8) + m.triangles.len() as u64 * 64
+            }
+            Shape::Dataset { .. } => 0,
+        }
+    }
+
     pub fn is_dataset(&self) -> bool {
         matches!(self.shape, Shape::Dataset { .. })
     }

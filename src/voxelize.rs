@@ -829,7 +829,7 @@ fn counted_work(slicer: &Slicer, set: &EquationSet) -> Result<Work, String> {
 }
 
 /// A slice's colour codes from its labels: the winner's colour code, or with
-/// [`Slicer::grey`] a winning dataset's grey value at the voxel (§4.5).
+/// [`Slicer::grey`] a winning dataset's grey value at the voxel (§4.5), as [`grey_code`].
 fn label_colours(slicer: &Slicer, k: usize, labels: &[u32]) -> Vec<u8> {
     let (nx, solids) = (slicer.grid.dims[0], slicer.lists.len());
     labels
@@ -841,7 +841,7 @@ fn label_colours(slicer: &Slicer, k: usize, labels: &[u32]) -> Vec<u8> {
                 let p = l as usize - 1;
                 let grey = match slicer.sampled.get(p.wrapping_sub(solids)) {
                     Some(s) if slicer.grey && p >= solids => {
-                        s.grey(slicer.grid.centre(i % nx, i / nx, k))
+                        s.grey(slicer.grid.centre(i % nx, i / nx, k)).map(grey_code)
                     }
                     _ => None,
                 };
@@ -849,6 +849,15 @@ fn label_colours(slicer: &Slicer, k: usize, labels: &[u32]) -> Vec<u8> {
             }
         })
         .collect()
+}
+
+/// First value `--grey` gives a dataset's grey levels: 1..=15 stay the palette's codes.
+pub const GREY_BASE: u8 = 16;
+
+/// A grey level 1..=255 as a voxel value GREY_BASE..=255 beside the colour codes.
+pub fn grey_code(g: u8) -> u8 {
+    let span = (255 - GREY_BASE) as u32;
+    GREY_BASE + ((g.max(1) - 1) as u32 * span / 254) as u8
 }
 
 /// Every primitive's grey slice for the blending operators ([`crate::blend`]): 0 outside;

@@ -48,8 +48,8 @@ pub struct Args {
     /// its iso threshold) or a closed `.stl`/`.obj` mesh. Repeat for every name.
     #[arg(long, value_parser = parse_binding)]
     prim: Vec<Binding>,
-    /// Voxels won by a dataset take its grey value (1..255, from its sample range) instead of
-    /// its colour code (§4.5).
+    /// Voxels won by a dataset take its grey value instead of its colour code (§4.5): the
+    /// sample scaled from the dataset's range to 16..255 (1..15 remain colour codes).
     #[arg(long)]
     grey: bool,
     /// Grey-valued output by §3.3's blending operators instead of labels: union `max` or
@@ -299,6 +299,9 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let scene = &loaded.scene;
     let threads = a.threads.unwrap_or_else(rayon::current_num_threads).max(1);
     let mut need = memory_estimate(&grid, scene.primitive_count(), threads);
+    for s in &loaded.sampled {
+        need = need.saturating_add(s.memory_estimate(&grid));
+    }
     if let Some(st) = a.store {
         need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
     }
@@ -344,7 +347,11 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     };
     bar.finish_and_clear();
     let wall = t0.elapsed().as_secs_f64();
-    let grey = a.grey || a.blend.is_some();
+    let grey = match (a.blend.is_some(), a.grey) {
+        (true, _) => Values::Grey,
+        (false, true) => Values::Mixed,
+        (false, false) => Values::Codes,
+    };
     if let Some(dir) = &a.slices {
         write_slices(dir, &volume, grey)?;
     }
@@ -556,7 +563,28 @@ fn view(v: &Volume, axis: usize) -> (usize, usize, Vec<u32>, Vec<Option<f64>>) {
 
 /// The three axis views side by side, 4 pixels apart, scaled up by a whole factor towards 256
 /// pixels.
-fn write_preview(path: &Path, v: &Volume, grey: bool) -> Result<(), String> {
+/// What a volume's values mean, for pictures.
+#[derive(Clone, Copy, PartialEq)]
+enum Values {
+    /// Palette codes.
+    Codes,
+    /// Palette codes below GREY_BASE, grey levels from it (`--grey`).
+    Mixed,
+    /// Grey levels (`--blend`).
+    Grey,
+}
+
+impl Values {
+    fn rgb(self, c: u8) -> [u8; 3] {
+        match self {
+            Values::Grey => [c; 3],
+            Values::Mixed if c >= csgpix::voxelize::GREY_BASE => [c; 3],
+            _ => rgb(c as u32),
+        }
+    }
+}
+
+fn write_preview(path: &Path, v: &Volume, grey: Values) -> Result<(), String> {
     let views: Vec<_> = (0..3).rev().map(|a| view(v, a)).collect();
     let scale = (256 / v.dims.iter().copied().max().unwrap_or(1)).max(1);
     let width: usize = views.iter().map(|x| x.0 * scale + 4).sum();
@@ -565,10 +593,9 @@ fn write_preview(path: &Path, v: &Volume, grey: bool) -> Result<(), String> {
         image::RgbImage::from_pixel(width as u32, height as u32, image::Rgb([255, 255, 255]));
     let mut left = 0;
     for (w, h, codes, depths) in &views {
-        let rgb = if grey {
-            shaded_grey(codes, depths)
-        } else {
-            csgpix::palette::image_rgb(codes, Some(depths))
+        let rgb = match grey {
+            Values::Codes => csgpix::palette::image_rgb(codes, Some(depths)),
+            _ => shaded(codes, depths, grey),
         };
         for (i, c) in rgb.iter().enumerate() {
             for dy in 0..scale {
@@ -589,9 +616,8 @@ fn write_preview(path: &Path, v: &Volume, grey: bool) -> Result<(), String> {
     })
 }
 
-/// Grey values shaded by depth as the palette view shades colours: nearest full, farthest
-/// 45%.
-fn shaded_grey(codes: &[u32], depths: &[Option<f64>]) -> Vec<[u8; 3]> {
+/// Values shaded by depth as the palette view shades colours: nearest full, farthest 45%.
+fn shaded(codes: &[u32], depths: &[Option<f64>], values: Values) -> Vec<[u8; 3]> {
     let ds = depths.iter().flatten();
     let (lo, hi) = ds.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &d| {
         (a.min(d), b.max(d))
@@ -601,21 +627,22 @@ fn shaded_grey(codes: &[u32], depths: &[Option<f64>]) -> Vec<[u8; 3]> {
         .zip(depths)
         .map(|(&c, d)| {
             let t = d.map_or(0.0, |d| if hi > lo { (d - lo) / (hi - lo) } else { 0.0 });
-            let g = (c as f64 * (1.0 - 0.55 * t)).round() as u8;
-            [g; 3]
+            values
+                .rgb(c as u8)
+                .map(|x| (x as f64 * (1.0 - 0.55 * t)).round() as u8)
         })
         .collect()
 }
 
 /// Every slice as `slice-KKKK.png` (palette colours, or grey values with `grey`), each
 /// written whole or not at all.
-fn write_slices(dir: &Path, v: &Volume, grey: bool) -> Result<(), String> {
+fn write_slices(dir: &Path, v: &Volume, grey: Values) -> Result<(), String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let [nx, ny, nz] = v.dims;
     for k in 0..nz {
         let mut img = image::RgbImage::new(nx as u32, ny as u32);
         for (i, &c) in v.voxels[k * nx * ny..(k + 1) * nx * ny].iter().enumerate() {
-            let px = if grey { [c; 3] } else { rgb(c as u32) };
+            let px = grey.rgb(c);
             img.put_pixel((i % nx) as u32, (i / nx) as u32, image::Rgb(px));
         }
         let path = dir.join(format!("slice-{k:04}.png"));
