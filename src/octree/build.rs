@@ -16,6 +16,10 @@ use super::key::{self, Key};
 pub trait Merge {
     /// A node being built (a value, or a subtree).
     type Node: Default;
+    /// Does every cell become a node before parents are decided (seed 000 §4.2.2, the
+    /// thesis's pointer octree)? When false, a homogeneous 2×2×2 block of cells goes straight
+    /// to a leaf parent without a node per cell.
+    const EVERY_CELL: bool = false;
     /// A deepest-level cell with its case byte.
     fn cell(&mut self, v: u8) -> Self::Node;
     /// `Some(v)` when the node is a homogeneous leaf of value v (0 or 255).
@@ -229,7 +233,7 @@ fn join_cells<M: Merge>(
         ];
         let mut px = 0;
         while px < np {
-            if px + 4 <= np {
+            if !M::EVERY_CELL && px + 4 <= np {
                 let w = word(rows[0] + 2 * px);
                 if (w == 0 || w == u64::MAX) && rows[1..].iter().all(|&r| word(r + 2 * px) == w) {
                     for o in &mut out[py * np + px..py * np + px + 4] {
@@ -240,7 +244,11 @@ fn join_cells<M: Merge>(
                 }
             }
             let v: [u8; 8] = std::array::from_fn(|c| cells[rows[c >> 1] + 2 * px + (c & 1)]);
-            out[py * np + px] = if (v[0] == 0 || v[0] == 255) && v.iter().all(|&x| x == v[0]) {
+            out[py * np + px] = if M::EVERY_CELL {
+                let kids = v.map(|x| merge.cell(x));
+                let p = [px, py, pz as usize];
+                decide(merge, internal, d - 1, p, kids)?
+            } else if (v[0] == 0 || v[0] == 255) && v.iter().all(|&x| x == v[0]) {
                 merge.leaf(v[0])
             } else {
                 *internal += 1;

@@ -21,6 +21,21 @@ pub struct Entry {
     pub internal: bool,
 }
 
+impl Entry {
+    /// A node not linked to any chain yet.
+    pub fn new(key: Key, val: u8, internal: bool) -> Entry {
+        Entry {
+            key,
+            next: NIL,
+            val,
+            internal,
+        }
+    }
+}
+
+/// Bits of the bucket index sorted per radix pass.
+const DIGIT: u32 = 11;
+
 /// A chained hash table of octree nodes keyed by location key.
 #[derive(Clone, Debug)]
 pub struct KeyTable {
@@ -40,6 +55,61 @@ impl KeyTable {
             tails: vec![NIL; buckets],
             entries: Vec::with_capacity(expected),
             mask: buckets as u64 - 1,
+        }
+    }
+
+    /// The sealed table of every entry of `lists`, taken in order, as [`KeyTable::push`] one
+    /// by one would make it (the same buckets, each chain in the same order: seed 000
+    /// §4.3.4's level-by-level insertion when `lists` runs from the deepest level up), but
+    /// with each chain contiguous: a stable LSD radix sort of the entries by bucket, 11 bits a
+    /// pass, then one pass linking neighbours of one bucket. The build then reads and writes
+    /// the entries in sequence instead of one random bucket and tail per insert.
+    pub fn from_lists(lists: Vec<Vec<Entry>>) -> Result<KeyTable, String> {
+        let n: usize = lists.iter().map(Vec::len).sum();
+        if u32::try_from(n).map_or(true, |n| n == NIL) {
+            return Err("more than 2^32 - 1 octree nodes".into());
+        }
+        let buckets = n.next_power_of_two().max(8);
+        let mask = buckets as u64 - 1;
+        let shifts: Vec<u32> = (0..buckets.trailing_zeros())
+            .step_by(DIGIT as usize)
+            .collect();
+        let mut offsets = radix_offsets(&lists, mask, &shifts);
+        let pad = Entry::new(0, 0, false);
+        let mut a = vec![pad; n];
+        scatter(
+            lists.iter().flatten(),
+            &mut a,
+            mask,
+            shifts[0],
+            &mut offsets[0],
+        );
+        drop(lists);
+        if shifts.len() > 1 {
+            let mut b = vec![pad; n];
+            for (&sh, offs) in shifts.iter().zip(offsets.iter_mut()).skip(1) {
+                scatter(a.iter(), &mut b, mask, sh, offs);
+                std::mem::swap(&mut a, &mut b);
+            }
+        }
+        Ok(KeyTable::linked(a, mask))
+    }
+
+    /// The table of `entries` already sorted by bucket (stable): heads and links of each run.
+    fn linked(mut entries: Vec<Entry>, mask: u64) -> KeyTable {
+        let mut heads = vec![NIL; mask as usize + 1];
+        let mut prev = u64::MAX;
+        for i in (0..entries.len()).rev() {
+            let b = entries[i].key & mask;
+            entries[i].next = if b == prev { i as u32 + 1 } else { NIL };
+            heads[b as usize] = i as u32;
+            prev = b;
+        }
+        KeyTable {
+            heads,
+            tails: Vec::new(),
+            entries,
+            mask,
         }
     }
 
@@ -206,6 +276,42 @@ impl KeyTable {
             counts[self.bucket(e.key)] += 1;
         }
         counts.into_iter().max().unwrap_or(0)
+    }
+}
+
+/// For each radix pass (the bucket's bits from `shift` up, [`DIGIT`] of them), where each
+/// digit's entries start in that pass's output.
+fn radix_offsets(lists: &[Vec<Entry>], mask: u64, shifts: &[u32]) -> Vec<Vec<u32>> {
+    let digit_mask = (1u64 << DIGIT) - 1;
+    let mut counts = vec![vec![0u32; 1 << DIGIT]; shifts.len()];
+    for e in lists.iter().flatten() {
+        let b = e.key & mask;
+        for (c, &sh) in counts.iter_mut().zip(shifts) {
+            c[(b >> sh & digit_mask) as usize] += 1;
+        }
+    }
+    for c in &mut counts {
+        let mut at = 0;
+        for x in c.iter_mut() {
+            (*x, at) = (at, at + *x);
+        }
+    }
+    counts
+}
+
+/// One stable counting-sort pass: each entry of `src` to the next slot of its digit.
+fn scatter<'a>(
+    src: impl Iterator<Item = &'a Entry>,
+    dst: &mut [Entry],
+    mask: u64,
+    shift: u32,
+    offsets: &mut [u32],
+) {
+    let digit_mask = (1u64 << DIGIT) - 1;
+    for e in src {
+        let d = ((e.key & mask) >> shift & digit_mask) as usize;
+        dst[offsets[d] as usize] = *e;
+        offsets[d] += 1;
     }
 }
 
