@@ -289,6 +289,38 @@ proptest! {
     }
 }
 
+/// The thesis's pointer octree (a node per cell first, seed 000 §4.2.2) and the block one
+/// hold the same leaves; every store's Marching Cubes gives the same triangles, into a new
+/// vector or into a reused one.
+fn check_same_leaves_and_triangles(v: &Volume) {
+    let stores = all_stores(v);
+    let by = |k: StoreKind| stores.iter().find(|s| s.kind() == k).unwrap();
+    let want = leaves(by(StoreKind::Pointer).as_ref());
+    assert_eq!(leaves(by(StoreKind::PointerBlock).as_ref()), want);
+    assert_eq!(leaves(by(StoreKind::Octree).as_ref()), want);
+    let mesh = sorted_mesh(by(StoreKind::Pointer).as_ref());
+    let mut reused = vec![[[9.0f32; 3]; 3]; 5];
+    for s in &stores {
+        assert_eq!(sorted_mesh(s.as_ref()), mesh, "{:?}", s.kind());
+        s.marching_cubes_into(&mut reused);
+        assert_eq!(
+            reused,
+            marching_cubes(s.as_ref()).triangles,
+            "{:?}",
+            s.kind()
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn both_pointer_builds_and_all_meshes_agree(v in random_volume()) {
+        check_same_leaves_and_triangles(&v);
+    }
+}
+
 #[test]
 fn example_scenes_agree_in_every_store_and_mesh_alike() {
     for name in [

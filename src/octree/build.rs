@@ -26,6 +26,11 @@ pub trait Merge {
     fn homogeneous(n: &Self::Node) -> Option<u8>;
     /// A parent whose 8 children are homogeneous leaves of value v: it becomes that leaf.
     fn leaf(&mut self, v: u8) -> Self::Node;
+    /// The same, given the children to merge (a store may reuse one of them for the leaf).
+    fn merge_leaf(&mut self, v: u8, kids: [Self::Node; 8]) -> Self::Node {
+        drop(kids);
+        self.leaf(v)
+    }
     /// A parent with key `key` whose children (location codes 0..8) are nodes of the tree.
     fn internal(&mut self, key: Key, children: [Self::Node; 8]) -> Result<Self::Node, String>;
 }
@@ -198,7 +203,7 @@ fn decide<M: Merge>(
     let first = M::homogeneous(&kids[0]);
     if let Some(v) = first {
         if kids[1..].iter().all(|k| M::homogeneous(k) == first) {
-            return Ok(merge.leaf(v));
+            return Ok(merge.merge_leaf(v, kids));
         }
     }
     *internal += 1;

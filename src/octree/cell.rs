@@ -229,3 +229,55 @@ fn write_cells(planes: [u64; 8], cells: &mut [u8]) {
         out.copy_from_slice(&v.to_le_bytes()[..out.len()]);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Cell layers of random slices `w` wide and `h` high, against [`cell_of`] on every cell.
+    fn check_layers(side: usize, w: usize, h: usize, slices: usize) {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64 ^ (side * 31 + w) as u64;
+        let mut vox = vec![0u8; w * h * slices];
+        for v in &mut vox {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            // Mostly runs of one value, so whole words are empty or full too.
+            *v = if seed % 16 < 7 {
+                (seed >> 8) as u8 | 1
+            } else {
+                0
+            };
+        }
+        for row in vox.chunks_mut(w).step_by(3) {
+            row.fill(1);
+        }
+        let filled = |x: i64, y: i64, z: i64| {
+            let (x, y, z) = (x as usize, y as usize, z as usize);
+            x < w.min(side) && y < h && z < slices && vox[(z * h + y) * w + x] != 0
+        };
+        let inside = |x: i64, y: i64, z: i64| x >= 0 && y >= 0 && z >= 0 && filled(x, y, z);
+        let mut layers = CellLayers::new(side);
+        for z in 0..=slices {
+            let layer = match vox.chunks(w * h).nth(z) {
+                Some(s) => layers.next(s, w).to_vec(),
+                None => layers.next_empty().to_vec(),
+            };
+            for y in 0..side {
+                for x in 0..side {
+                    let want = cell_of(inside, x as i64, y as i64, z as i64);
+                    assert_eq!(layer[y * side + x], want, "side {side} w {w} ({x},{y},{z})");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn cell_layers_from_bits_equal_the_dual_cells() {
+        check_layers(128, 100, 90, 3);
+        check_layers(64, 64, 64, 2);
+        check_layers(64, 70, 10, 2); // rows wider than the side are cut
+        check_layers(8, 5, 8, 3);
+        check_layers(2, 1, 1, 1);
+    }
+}
