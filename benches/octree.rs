@@ -73,7 +73,7 @@ fn cpu_time() -> Option<f64> {
     };
     // SAFETY: `t` is a valid timespec for clock_gettime to write.
     let ok = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) } == 0;
-    ok.then(|| t.tv_sec as f64 + t.tv_nsec as f64 * 1e-9)
+    ok.then_some(t.tv_sec as f64 + t.tv_nsec as f64 * 1e-9)
 }
 
 /// A run's CPU time (wall time without it) and wall time, in seconds.

@@ -185,7 +185,7 @@ impl CellLayers {
         let (s, nw) = (self.side, self.words);
         let out = &mut self.layer[y * s..(y + 1) * s];
         let below = y.checked_sub(1);
-        let zero = |z: &[bool]| z[y] && below.map_or(true, |b| z[b]);
+        let zero = |z: &[bool]| z[y] && below.filter(|&b| !z[b]).is_none();
         if zero(&self.prev_zero) && zero(&self.cur_zero) {
             out.fill(0);
             return;

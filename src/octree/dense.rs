@@ -99,7 +99,7 @@ impl VoxelStore for DenseGrid {
     }
 
     fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
-        self.surface(|p, v| f(p, v));
+        self.surface(f);
     }
 
     fn marching_cubes_into(&self, out: &mut Vec<Tri>) {

@@ -217,7 +217,7 @@ impl VoxelStore for OptimizedOctree {
     }
 
     fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
-        self.surface(|p, v| f(p, v));
+        self.surface(f);
     }
 
     fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
