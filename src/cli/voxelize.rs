@@ -117,8 +117,11 @@ pub struct Args {
 enum StoreArg {
     /// Optimized hash-based octree: leaves only (seed 000 §4.3.4).
     Octree,
-    /// Pointer-based octree (§4.3.2).
+    /// Pointer-based octree as the thesis builds it: a node per allocation, every cell a
+    /// node before merging (§4.3.2, §4.2.2).
     Pointer,
+    /// Pointer-based octree, 8 children per allocation, shared bottom-up builder.
+    PointerBlock,
     /// Plain hash-based octree: every node (§4.3.3).
     Hash,
     /// Dense grid of cells.
@@ -130,6 +133,7 @@ impl StoreArg {
         match self {
             StoreArg::Octree => StoreKind::Octree,
             StoreArg::Pointer => StoreKind::Pointer,
+            StoreArg::PointerBlock => StoreKind::PointerBlock,
             StoreArg::Hash => StoreKind::Hash,
             StoreArg::Dense => StoreKind::Dense,
         }

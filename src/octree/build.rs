@@ -16,12 +16,21 @@ use super::key::{self, Key};
 pub trait Merge {
     /// A node being built (a value, or a subtree).
     type Node: Default;
+    /// Does every cell become a node before parents are decided (seed 000 §4.2.2, the
+    /// thesis's pointer octree)? When false, a homogeneous 2×2×2 block of cells goes straight
+    /// to a leaf parent without a node per cell.
+    const EVERY_CELL: bool = false;
     /// A deepest-level cell with its case byte.
     fn cell(&mut self, v: u8) -> Self::Node;
     /// `Some(v)` when the node is a homogeneous leaf of value v (0 or 255).
     fn homogeneous(n: &Self::Node) -> Option<u8>;
     /// A parent whose 8 children are homogeneous leaves of value v: it becomes that leaf.
     fn leaf(&mut self, v: u8) -> Self::Node;
+    /// The same, given the children to merge (a store may reuse one of them for the leaf).
+    fn merge_leaf(&mut self, v: u8, kids: [Self::Node; 8]) -> Self::Node {
+        drop(kids);
+        self.leaf(v)
+    }
     /// A parent with key `key` whose children (location codes 0..8) are nodes of the tree.
     fn internal(&mut self, key: Key, children: [Self::Node; 8]) -> Result<Self::Node, String>;
 }
@@ -194,7 +203,7 @@ fn decide<M: Merge>(
     let first = M::homogeneous(&kids[0]);
     if let Some(v) = first {
         if kids[1..].iter().all(|k| M::homogeneous(k) == first) {
-            return Ok(merge.leaf(v));
+            return Ok(merge.merge_leaf(v, kids));
         }
     }
     *internal += 1;
@@ -229,7 +238,7 @@ fn join_cells<M: Merge>(
         ];
         let mut px = 0;
         while px < np {
-            if px + 4 <= np {
+            if !M::EVERY_CELL && px + 4 <= np {
                 let w = word(rows[0] + 2 * px);
                 if (w == 0 || w == u64::MAX) && rows[1..].iter().all(|&r| word(r + 2 * px) == w) {
                     for o in &mut out[py * np + px..py * np + px + 4] {
@@ -240,7 +249,11 @@ fn join_cells<M: Merge>(
                 }
             }
             let v: [u8; 8] = std::array::from_fn(|c| cells[rows[c >> 1] + 2 * px + (c & 1)]);
-            out[py * np + px] = if (v[0] == 0 || v[0] == 255) && v.iter().all(|&x| x == v[0]) {
+            out[py * np + px] = if M::EVERY_CELL {
+                let kids = v.map(|x| merge.cell(x));
+                let p = [px, py, pz as usize];
+                decide(merge, internal, d - 1, p, kids)?
+            } else if (v[0] == 0 || v[0] == 255) && v.iter().all(|&x| x == v[0]) {
                 merge.leaf(v[0])
             } else {
                 *internal += 1;

@@ -66,77 +66,77 @@ pub fn cell_of(voxel: impl Fn(i64, i64, i64) -> bool, x: i64, y: i64, z: i64) ->
     case_of(c)
 }
 
-/// Bits of the cell byte contributed by a 2×2 voxel block of the slice z−1 (`LOW`) or of the
-/// slice z (`HIGH`), indexed by the block code q = v(x−1,y−1) | v(x,y−1)<<1 | v(x−1,y)<<2 |
-/// v(x,y)<<3.
-const fn block_lut(high: bool) -> [u8; 16] {
-    // (dx, dy) -> bit: dz = 0: (0,0) V0, (1,0) V1, (0,1) V4, (1,1) V5;
-    // dz = 1: (0,0) V3, (1,0) V2, (0,1) V7, (1,1) V6.
-    let bits: [u8; 4] = if high { [3, 2, 7, 6] } else { [0, 1, 4, 5] };
-    let mut t = [0u8; 16];
-    let mut q = 0;
-    while q < 16 {
-        let mut b = 0;
-        while b < 4 {
-            if q >> b & 1 == 1 {
-                t[q] |= 1 << bits[b];
-            }
-            b += 1;
+/// `SPREAD[b]` has byte i equal to bit i of b: eight cells' bits of one corner, moved to
+/// their bytes.
+const SPREAD: [u64; 256] = {
+    let mut t = [0u64; 256];
+    let mut b = 0;
+    while b < 256 {
+        let mut i = 0;
+        while i < 8 {
+            t[b] |= ((b as u64 >> i) & 1) << (8 * i);
+            i += 1;
         }
-        q += 1;
+        b += 1;
     }
     t
+};
+
+/// Bit i set when byte i of `v` is not 0.
+fn nonzero_bits(v: u64) -> u64 {
+    let mut t = v | v >> 4;
+    t |= t >> 2;
+    t |= t >> 1;
+    (t & 0x0101_0101_0101_0101).wrapping_mul(0x0102_0408_1020_4080) >> 56
 }
 
-const LOW: [u8; 16] = block_lut(false);
-const HIGH: [u8; 16] = block_lut(true);
-
 /// Turns voxel slices, in order of z, into cell layers (seed 000 §3.1.1.5 done slice by
-/// slice): cell layer z needs only voxel slices z−1 and z, so it keeps one slice of block
-/// codes.
+/// slice): cell layer z needs only voxel slices z−1 and z, so it keeps the occupancy of one
+/// slice, a bit per voxel. A cell's byte gathers 8 corner bits (rows y−1 and y of slices
+/// z−1 and z, columns x−1 and x); 64 cells are done a word at a time, and 8 of them with one
+/// table lookup per corner.
 pub struct CellLayers {
     side: usize,
-    /// Block codes of the previous slice (all 0 before slice 0).
-    prev: Vec<u8>,
-    cur: Vec<u8>,
-    /// Rows whose block codes are all 0, in `prev` and `cur`.
+    /// 64-bit words per voxel row.
+    words: usize,
+    /// Occupancy bits of the previous slice and of this one, `words` per row.
+    prev: Vec<u64>,
+    cur: Vec<u64>,
+    /// Rows with no voxel, in `prev` and `cur`.
     prev_zero: Vec<bool>,
     cur_zero: Vec<bool>,
     layer: Vec<u8>,
 }
 
-/// Voxel row y of a slice as 0/1 into `out` (empty past the slice); true when all empty.
-fn occupancy_row(slice: &[u8], w: usize, h: usize, y: usize, out: &mut [u8]) -> bool {
-    out.fill(0);
-    if y >= h {
-        return true;
-    }
-    let row = &slice[y * w..y * w + w.min(out.len())];
-    let mut any = 0u8;
-    for (o, &v) in out.iter_mut().zip(row) {
-        *o = u8::from(v != 0);
-        any |= v;
-    }
-    any == 0
+/// The 8 corner planes of 64 cells: for each corner Vi, bit j is that corner of cell 64k + j.
+/// `rows` are the words of voxel rows (slice z−1, y−1), (z−1, y), (z, y−1), (z, y) at cell x
+/// and `left` the same rows' words one voxel to the left (x − 1).
+fn corner_planes(rows: [u64; 4], left: [u64; 4]) -> [u64; 8] {
+    let [a, b, c, d] = rows;
+    let [al, bl, cl, dl] = left;
+    // V0..V7 (CORNERS): (0,0,0) (1,0,0) (1,0,1) (0,0,1) (0,1,0) (1,1,0) (1,1,1) (0,1,1).
+    [al, a, c, cl, bl, b, d, dl]
 }
 
 impl CellLayers {
     /// Layers of `side`×`side` cells.
     pub fn new(side: usize) -> CellLayers {
-        let n = side * side;
+        let words = side.div_ceil(64);
         CellLayers {
             side,
-            prev: vec![0; n],
-            cur: vec![0; n],
+            words,
+            prev: vec![0; side * words],
+            cur: vec![0; side * words],
             prev_zero: vec![true; side],
             cur_zero: vec![true; side],
-            layer: vec![0; n],
+            layer: vec![0; side * side],
         }
     }
 
     /// Bytes it holds.
     pub fn bytes(side: usize) -> u64 {
-        3 * (side as u64) * (side as u64)
+        let side = side as u64;
+        side * side + 2 * side * side.div_ceil(64) * 8 + 2 * side
     }
 
     /// The next cell layer from the next voxel slice: colour codes (0 = empty), `w` per row,
@@ -144,48 +144,64 @@ impl CellLayers {
     /// are empty; slices wider than the side are cut. Rows with no voxel in this slice nor
     /// the previous one are cleared without looking at each cell.
     pub fn next(&mut self, slice: &[u8], w: usize) -> &[u8] {
-        let s = self.side;
         std::mem::swap(&mut self.prev, &mut self.cur);
         std::mem::swap(&mut self.prev_zero, &mut self.cur_zero);
         let h = slice.len().checked_div(w).unwrap_or(0);
-        let (mut below, mut here) = (vec![0u8; s], vec![0u8; s]);
-        let mut below_zero = true;
-        for y in 0..s {
-            std::mem::swap(&mut below, &mut here);
-            let here_zero = occupancy_row(slice, w, h, y, &mut here);
-            let at = y * s..(y + 1) * s;
-            if here_zero && below_zero {
-                self.cur[at.clone()].fill(0);
-                self.cur_zero[y] = true;
-                if self.prev_zero[y] {
-                    self.layer[at].fill(0);
-                } else {
-                    for (c, &p) in self.layer[at.clone()].iter_mut().zip(&self.prev[at]) {
-                        *c = LOW[p as usize];
-                    }
-                }
+        for y in 0..self.side {
+            let row = if y < h {
+                &slice[y * w..(y + 1) * w]
             } else {
-                self.cur_zero[y] = false;
-                self.mixed_row(y, &below, &here);
-            }
-            below_zero = here_zero;
+                &[]
+            };
+            self.cur_zero[y] = self.occupancy(y, row);
+        }
+        for y in 0..self.side {
+            self.cell_row(y);
         }
         &self.layer
     }
 
-    /// Block codes and cell bytes of row y from the voxel rows y−1 (`below`) and y.
-    fn mixed_row(&mut self, y: usize, below: &[u8], here: &[u8]) {
-        let s = self.side;
-        let cur = &mut self.cur[y * s..(y + 1) * s];
-        let prev = &self.prev[y * s..(y + 1) * s];
+    /// Voxel row y of this slice into bits; true when it has no voxel.
+    fn occupancy(&mut self, y: usize, row: &[u8]) -> bool {
+        let out = &mut self.cur[y * self.words..(y + 1) * self.words];
+        let row = &row[..row.len().min(self.side)];
+        let mut any = 0;
+        for (k, o) in out.iter_mut().enumerate() {
+            let part = row.get(64 * k..row.len().min(64 * k + 64)).unwrap_or(&[]);
+            let mut bits = 0u64;
+            for (g, chunk) in part.chunks(8).enumerate() {
+                let mut b = [0u8; 8];
+                b[..chunk.len()].copy_from_slice(chunk);
+                bits |= nonzero_bits(u64::from_le_bytes(b)) << (8 * g);
+            }
+            *o = bits;
+            any |= bits;
+        }
+        any == 0
+    }
+
+    /// Cell row y of the layer from voxel rows y − 1 and y of the two slices.
+    fn cell_row(&mut self, y: usize) {
+        let (s, nw) = (self.side, self.words);
         let out = &mut self.layer[y * s..(y + 1) * s];
-        let mut left = 0u8;
-        for x in 0..s {
-            let right = below[x] | here[x] << 1;
-            let q = Self::code(left, right);
-            cur[x] = q;
-            out[x] = LOW[prev[x] as usize] | HIGH[q as usize];
-            left = right;
+        let below = y.checked_sub(1);
+        let zero = |z: &[bool]| z[y] && below.filter(|&b| !z[b]).is_none();
+        if zero(&self.prev_zero) && zero(&self.cur_zero) {
+            out.fill(0);
+            return;
+        }
+        let word = |v: &[u64], r: Option<usize>, k: usize| r.map_or(0, |r| v[r * nw + k]);
+        let mut carry = [0u64; 4];
+        for (k, cells) in out.chunks_mut(64).enumerate() {
+            let rows = [
+                word(&self.prev, below, k),
+                word(&self.prev, Some(y), k),
+                word(&self.cur, below, k),
+                word(&self.cur, Some(y), k),
+            ];
+            let left: [u64; 4] = std::array::from_fn(|i| rows[i] << 1 | carry[i] >> 63);
+            carry = rows;
+            write_cells(corner_planes(rows, left), cells);
         }
     }
 
@@ -193,9 +209,75 @@ impl CellLayers {
     pub fn next_empty(&mut self) -> &[u8] {
         self.next(&[], 0)
     }
+}
 
-    /// Block code from the column pairs (x−1: `left`, x: `right`), each `v(y−1) | v(y) << 1`.
-    fn code(left: u8, right: u8) -> u8 {
-        (left & 1) | (right & 1) << 1 | (left >> 1) << 2 | (right >> 1) << 3
+/// Up to 64 cell bytes from their corner planes.
+fn write_cells(planes: [u64; 8], cells: &mut [u8]) {
+    if planes.iter().all(|&p| p == 0) {
+        cells.fill(0);
+        return;
+    }
+    if cells.len() == 64 && planes.iter().all(|&p| p == u64::MAX) {
+        cells.fill(255);
+        return;
+    }
+    for (g, out) in cells.chunks_mut(8).enumerate() {
+        let mut v = 0u64;
+        for (i, p) in planes.iter().enumerate() {
+            v |= SPREAD[(p >> (8 * g) & 0xff) as usize] << i;
+        }
+        out.copy_from_slice(&v.to_le_bytes()[..out.len()]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Cell layers of random slices `w` wide and `h` high, against [`cell_of`] on every cell.
+    fn check_layers(side: usize, w: usize, h: usize, slices: usize) {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64 ^ (side * 31 + w) as u64;
+        let mut vox = vec![0u8; w * h * slices];
+        for v in &mut vox {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            // Mostly runs of one value, so whole words are empty or full too.
+            *v = if seed % 16 < 7 {
+                (seed >> 8) as u8 | 1
+            } else {
+                0
+            };
+        }
+        for row in vox.chunks_mut(w).step_by(3) {
+            row.fill(1);
+        }
+        let filled = |x: i64, y: i64, z: i64| {
+            let (x, y, z) = (x as usize, y as usize, z as usize);
+            x < w.min(side) && y < h && z < slices && vox[(z * h + y) * w + x] != 0
+        };
+        let inside = |x: i64, y: i64, z: i64| x >= 0 && y >= 0 && z >= 0 && filled(x, y, z);
+        let mut layers = CellLayers::new(side);
+        for z in 0..=slices {
+            let layer = match vox.chunks(w * h).nth(z) {
+                Some(s) => layers.next(s, w).to_vec(),
+                None => layers.next_empty().to_vec(),
+            };
+            for y in 0..side {
+                for x in 0..side {
+                    let want = cell_of(inside, x as i64, y as i64, z as i64);
+                    assert_eq!(layer[y * side + x], want, "side {side} w {w} ({x},{y},{z})");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn cell_layers_from_bits_equal_the_dual_cells() {
+        check_layers(128, 100, 90, 3);
+        check_layers(64, 64, 64, 2);
+        check_layers(64, 70, 10, 2); // rows wider than the side are cut
+        check_layers(8, 5, 8, 3);
+        check_layers(2, 1, 1, 1);
     }
 }

@@ -3,6 +3,7 @@
 
 use super::cell::CellLayers;
 use super::key::{self, Key};
+use super::mc::{self, Tri};
 use super::{check_order, StoreBuilder, StoreKind, VoxelStore};
 
 /// side³ cells, X fastest, then Y, then Z.
@@ -98,6 +99,19 @@ impl VoxelStore for DenseGrid {
     }
 
     fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
+        self.surface(f);
+    }
+
+    fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
+        out.clear();
+        let t = mc::table();
+        self.surface(|p, v| t.emit(p, v, out));
+    }
+}
+
+impl DenseGrid {
+    /// Every surface cell, scanning all cells in order.
+    fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
         let s = 1usize << self.depth;
         for (i, &v) in self.cells.iter().enumerate() {
             if v != 0 && v != 255 {

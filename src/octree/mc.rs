@@ -24,10 +24,13 @@ use super::cell::{CORNERS, EDGES};
 use super::mc_tables::{EDGE_TABLE, TRI_TABLE};
 use super::VoxelStore;
 
+/// A triangle in voxel units.
+pub type Tri = crate::mesh::Tri;
+
 /// A triangle soup in voxel units.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Mesh {
-    pub triangles: Vec<[[f32; 3]; 3]>,
+    pub triangles: Vec<Tri>,
 }
 
 /// Edge midpoints relative to corner V0, in voxel units.
@@ -41,24 +44,67 @@ pub fn edge_mask(case: u8) -> u16 {
     EDGE_TABLE[case as usize]
 }
 
-/// The triangles of cell `p` with byte `v`, appended to `out` (local Marching Cubes of one
-/// cell, seed 000 §5.2).
-pub fn cell_triangles(p: [u32; 3], v: u8, out: &mut Vec<[[f32; 3]; 3]>) {
-    let row = &TRI_TABLE[v as usize];
-    let base = p.map(|c| c as f32 - 1.0);
-    for t in row.chunks_exact(3).take_while(|t| t[0] >= 0) {
-        out.push(std::array::from_fn(|i| {
-            let m = edge_mid(t[i] as usize);
-            [base[0] + m[0], base[1] + m[1], base[2] + m[2]]
-        }));
+/// Most triangles a case has (`ROW` − 1 edges, 3 a triangle).
+const MAX_TRIS: usize = (ROW - 1) / 3;
+
+/// The triangle table with each vertex as its position relative to corner V0, so that a
+/// cell's triangles are its corner V0 plus a row (Marching Cubes with binary corners,
+/// seed 000 §3.1.2: every vertex is an edge midpoint).
+pub struct McTable {
+    tris: [[Tri; MAX_TRIS]; 256],
+    count: [u8; 256],
+}
+
+impl McTable {
+    fn new() -> McTable {
+        let mut t = McTable {
+            tris: [[[[0.0; 3]; 3]; MAX_TRIS]; 256],
+            count: [0; 256],
+        };
+        for (case, row) in TRI_TABLE.iter().enumerate() {
+            let tris = row.chunks_exact(3).take_while(|e| e[0] >= 0);
+            for (i, e) in tris.enumerate() {
+                t.tris[case][i] = std::array::from_fn(|j| edge_mid(e[j] as usize));
+                t.count[case] = i as u8 + 1;
+            }
+        }
+        t
+    }
+
+    /// Triangles of a case.
+    pub fn count(&self, case: u8) -> usize {
+        self.count[case as usize].into()
+    }
+
+    /// The triangles of cell `p` with byte `v`, appended to `out`.
+    #[inline]
+    pub fn emit(&self, p: [u32; 3], v: u8, out: &mut Vec<Tri>) {
+        let base = p.map(|c| c as f32 - 1.0);
+        let row = &self.tris[v as usize][..self.count(v)];
+        out.extend(
+            row.iter()
+                .map(|t| t.map(|m| [base[0] + m[0], base[1] + m[1], base[2] + m[2]])),
+        );
     }
 }
 
+/// The table, built once.
+pub fn table() -> &'static McTable {
+    static TABLE: std::sync::OnceLock<McTable> = std::sync::OnceLock::new();
+    TABLE.get_or_init(McTable::new)
+}
+
+/// The triangles of cell `p` with byte `v`, appended to `out` (local Marching Cubes of one
+/// cell, seed 000 §5.2).
+pub fn cell_triangles(p: [u32; 3], v: u8, out: &mut Vec<Tri>) {
+    table().emit(p, v, out);
+}
+
 /// Global Marching Cubes (seed 000 §3.1.2): every cell with a surface, from the store's own
-/// traversal.
+/// traversal, into a new triangle vector.
 pub fn marching_cubes(store: &dyn VoxelStore) -> Mesh {
     let mut triangles = Vec::new();
-    store.for_each_surface_cell(&mut |p, v| cell_triangles(p, v, &mut triangles));
+    store.marching_cubes_into(&mut triangles);
     Mesh { triangles }
 }
 

@@ -20,6 +20,7 @@ pub mod mc_tables;
 pub mod optimized;
 pub mod plain;
 pub mod pointer;
+pub mod pointer_block;
 pub mod table;
 
 use crate::voxelize::Volume;
@@ -29,6 +30,7 @@ pub use dense::DenseGrid;
 pub use optimized::OptimizedOctree;
 pub use plain::PlainHashOctree;
 pub use pointer::PointerOctree;
+pub use pointer_block::BlockPointerOctree;
 
 /// Which store.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
@@ -36,8 +38,12 @@ pub use pointer::PointerOctree;
 pub enum StoreKind {
     /// Leaves only, in a hash table (seed 000 §4.3.4).
     Octree,
-    /// Nodes with child pointers (§4.3.2).
+    /// Nodes with child pointers, each node its own allocation, built as §4.2.2 describes
+    /// (every cell a node, then merged) (§4.3.2).
     Pointer,
+    /// Nodes with child pointers, 8 children in one block, built by the shared builder.
+    #[serde(rename = "pointer-block")]
+    PointerBlock,
     /// Every node, in a hash table (§4.3.3).
     Hash,
     /// One byte per cell.
@@ -45,9 +51,10 @@ pub enum StoreKind {
 }
 
 impl StoreKind {
-    pub const ALL: [StoreKind; 4] = [
+    pub const ALL: [StoreKind; 5] = [
         StoreKind::Octree,
         StoreKind::Pointer,
+        StoreKind::PointerBlock,
         StoreKind::Hash,
         StoreKind::Dense,
     ];
@@ -56,6 +63,7 @@ impl StoreKind {
         match self {
             StoreKind::Octree => "octree",
             StoreKind::Pointer => "pointer",
+            StoreKind::PointerBlock => "pointer-block",
             StoreKind::Hash => "hash",
             StoreKind::Dense => "dense",
         }
@@ -89,6 +97,22 @@ pub trait VoxelStore: Send + Sync {
     fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8));
     /// Every cell with a surface (byte not 0 nor 255), with its coordinates.
     fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8));
+    /// Global Marching Cubes (seed 000 §3.1.2) into `out`, cleared first: every surface
+    /// cell's triangles, in the store's own traversal order.
+    fn marching_cubes_into(&self, out: &mut Vec<mc::Tri>) {
+        out.clear();
+        let t = mc::table();
+        self.for_each_surface_cell(&mut |p, v| t.emit(p, v, out));
+    }
+}
+
+/// The coordinates of child `c` (location code z·4 + y·2 + x, Fig. 4.1) of the node at `p`.
+pub fn child_xyz(p: [u32; 3], c: u32) -> [u32; 3] {
+    [
+        2 * p[0] + (c & 1),
+        2 * p[1] + (c >> 1 & 1),
+        2 * p[2] + (c >> 2),
+    ]
 }
 
 /// Takes voxel slices in order of z and builds a store.
@@ -121,7 +145,10 @@ pub fn memory_estimate(kind: StoreKind, dims: [usize; 3]) -> Result<u64, String>
     let layers = cell::CellLayers::bytes(side as usize);
     Ok(match kind {
         StoreKind::Dense => layers + side * side * side,
-        StoreKind::Pointer => layers + build::Pyramid::<pointer::Links>::bytes(depth, 16),
+        StoreKind::Pointer => layers + build::Pyramid::<pointer::Nodes>::bytes(depth, 8),
+        StoreKind::PointerBlock => {
+            layers + build::Pyramid::<pointer_block::Links>::bytes(depth, 16)
+        }
         StoreKind::Octree | StoreKind::Hash => {
             layers + build::Pyramid::<plain::All>::bytes(depth, 2)
         }
@@ -147,7 +174,12 @@ pub fn builder(
             optimized::Leaves::new(depth, budget),
         )),
         StoreKind::Hash => Box::new(build_tree(depth, dims[0], plain::All::new(depth, budget))),
-        StoreKind::Pointer => Box::new(build_tree(depth, dims[0], pointer::Links::new(budget))),
+        StoreKind::Pointer => Box::new(build_tree(depth, dims[0], pointer::Nodes::new(budget))),
+        StoreKind::PointerBlock => Box::new(build_tree(
+            depth,
+            dims[0],
+            pointer_block::Links::new(budget),
+        )),
     })
 }
 

@@ -9,7 +9,8 @@
 
 use super::build::Merge;
 use super::key::{self, Key, ROOT};
-use super::table::KeyTable;
+use super::mc::{self, Tri};
+use super::table::{Entry, KeyTable};
 use super::{Finish, StoreKind, VoxelStore};
 
 /// A node that has children, while building.
@@ -26,7 +27,7 @@ pub struct OptimizedOctree {
 /// The leaves of each level, collected while building (seed 000 §4.3.4 step 2: what is known
 /// about homogeneous sub-spaces is kept only until the table is filled).
 pub struct Leaves {
-    lists: Vec<Vec<(Key, u8)>>,
+    lists: Vec<Vec<Entry>>,
     count: u64,
     budget: u64,
 }
@@ -63,7 +64,7 @@ impl Merge for Leaves {
         let list = &mut self.lists[key::level(k) as usize + 1];
         for (c, &n) in kids.iter().enumerate() {
             if n != MIXED {
-                list.push((key::child(k, c as u8), n as u8));
+                list.push(Entry::new(key::child(k, c as u8), n as u8, false));
                 self.count += 1;
             }
         }
@@ -80,16 +81,10 @@ impl Finish for Leaves {
 
     fn finish(mut self, root: u16, internal: u64, depth: u32) -> Result<OptimizedOctree, String> {
         if root != MIXED {
-            self.lists[0].push((ROOT, root as u8));
+            self.lists[0].push(Entry::new(ROOT, root as u8, false));
         }
-        let total = self.lists.iter().map(Vec::len).sum();
-        let mut table = KeyTable::with_capacity(total);
-        for list in self.lists.iter_mut().rev() {
-            for (k, v) in std::mem::take(list) {
-                table.push(k, v, false)?;
-            }
-        }
-        table.seal();
+        // Deepest level first (§4.3.4 step 3): cells head their chains.
+        let table = KeyTable::from_lists(self.lists.into_iter().rev().collect())?;
         Ok(OptimizedOctree {
             depth,
             table,
@@ -222,6 +217,20 @@ impl VoxelStore for OptimizedOctree {
     }
 
     fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
+        self.surface(f);
+    }
+
+    fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
+        out.clear();
+        let t = mc::table();
+        self.surface(|p, v| t.emit(p, v, out));
+    }
+}
+
+impl OptimizedOctree {
+    /// Every surface cell: one linear pass over the table's entries (seed 000 §4.3.4: only
+    /// leaves are stored, and a leaf with a byte other than 0 and 255 is a deepest cell).
+    fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
         for e in self.table.entries() {
             if e.val != 0 && e.val != 255 {
                 f(key::coords(e.key).1, e.val);

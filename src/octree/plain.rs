@@ -4,8 +4,9 @@
 
 use super::build::Merge;
 use super::key::{self, Key, ROOT};
+use super::mc::{self, Tri};
 use super::optimized::MIXED;
-use super::table::KeyTable;
+use super::table::{Entry, KeyTable};
 use super::{Finish, StoreKind, VoxelStore};
 
 /// The plain hash-based octree.
@@ -18,7 +19,7 @@ pub struct PlainHashOctree {
 
 /// Every node of each level (key, value, internal?), collected while building.
 pub struct All {
-    lists: Vec<Vec<(Key, u8, bool)>>,
+    lists: Vec<Vec<Entry>>,
     count: u64,
     budget: u64,
 }
@@ -54,7 +55,11 @@ impl Merge for All {
     fn internal(&mut self, k: Key, kids: [u16; 8]) -> Result<u16, String> {
         let list = &mut self.lists[key::level(k) as usize + 1];
         for (c, &n) in kids.iter().enumerate() {
-            list.push((key::child(k, c as u8), (n & 255) as u8, n == MIXED));
+            list.push(Entry::new(
+                key::child(k, c as u8),
+                (n & 255) as u8,
+                n == MIXED,
+            ));
         }
         self.count += 8;
         let need = self.count * BUILD_BYTES;
@@ -69,15 +74,8 @@ impl Finish for All {
     type Store = PlainHashOctree;
 
     fn finish(mut self, root: u16, internal: u64, depth: u32) -> Result<PlainHashOctree, String> {
-        self.lists[0].push((ROOT, (root & 255) as u8, root == MIXED));
-        let total = self.lists.iter().map(Vec::len).sum();
-        let mut table = KeyTable::with_capacity(total);
-        for list in self.lists.iter_mut().rev() {
-            for (k, v, i) in std::mem::take(list) {
-                table.push(k, v, i)?;
-            }
-        }
-        table.seal();
+        self.lists[0].push(Entry::new(ROOT, (root & 255) as u8, root == MIXED));
+        let table = KeyTable::from_lists(self.lists.into_iter().rev().collect())?;
         Ok(PlainHashOctree {
             depth,
             table,
@@ -139,6 +137,19 @@ impl VoxelStore for PlainHashOctree {
     }
 
     fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
+        self.surface(f);
+    }
+
+    fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
+        out.clear();
+        let t = mc::table();
+        self.surface(|p, v| t.emit(p, v, out));
+    }
+}
+
+impl PlainHashOctree {
+    /// Every surface cell: one linear pass over the table's entries, internal nodes skipped.
+    fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
         for e in self.table.entries() {
             if !e.internal && e.val != 0 && e.val != 255 {
                 f(key::coords(e.key).1, e.val);

@@ -1,80 +1,105 @@
-//! The pointer-based octree (seed 000 §4.3.2): every internal node points to its 8 children;
-//! nodes are full, empty, mixed (internal) or, at the deepest level, a cell byte. Reaching a
-//! cell walks down from the root. Children of one node share one allocation (`Box<[_; 8]>`),
-//! the usual Rust layout and a stronger baseline than eight separate allocations.
+//! The pointer-based octree as seed 000 describes it (§4.3.2 and §4.2.2).
+//!
+//! Layout (§4.3.2): "each parent node must store the addresses of its eight children", and
+//! the children are labelled full, empty or mixed. So every node is its own allocation, a
+//! label and 8 child addresses ([`Node`], 72 bytes), as the textbook C++ node
+//! `struct Node { Node* child[8]; char label; }` is.
+//!
+//! Construction (§4.2.2, bottom-up, which the thesis prefers to top-down §4.2.1 at high
+//! resolution): "voxels are placed, in traversal order, into a tree created empty with all
+//! its leaf nodes; then nodes are merged bottom-up as the sub-spaces are full, empty or
+//! mixed", looking at 8 children at a time. Here every cell becomes a node (one allocation),
+//! and a parent whose 8 children are homogeneous leaves of one value frees them and becomes
+//! that leaf; the shared slice-by-slice [`super::build::Pyramid`] visits the same 2×2×2
+//! blocks in order of z instead of the thesis's reverse-Z (Morton) order, so at most two
+//! layers of a level are alive, not the whole tree of leaves. The node and allocation counts
+//! are those of the description; [`super::pointer_block`] is the stronger variant (one block
+//! per 8 children, no node for a run of homogeneous cells) over the same builder.
 
 use super::build::Merge;
 use super::key::{self, Key, ROOT};
+use super::mc::Tri;
 use super::{Finish, StoreKind, VoxelStore};
 
-/// A node: a leaf's value (0 / 255 homogeneous, or a cell's byte) or 8 children.
+/// A node: its own allocation, a label (0 empty, 255 full, a cell's case byte, or mixed) and
+/// the addresses of its 8 children when mixed.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum PNode {
+pub enum Node {
     Leaf(u8),
-    Inner(Box<[PNode; 8]>),
+    Inner([Box<Node>; 8]),
 }
 
-impl Default for PNode {
-    fn default() -> PNode {
-        PNode::Leaf(0)
-    }
-}
-
-/// The pointer-based octree.
+/// The thesis's pointer-based octree.
 #[derive(Clone, Debug)]
 pub struct PointerOctree {
     depth: u32,
-    root: PNode,
+    root: Box<Node>,
     internal: usize,
 }
 
-/// Links children to parents while building.
-pub struct Links {
+/// Allocates every node while building (seed 000 §4.2.2).
+pub struct Nodes {
     nodes: u64,
     budget: u64,
 }
 
-impl Links {
-    pub fn new(budget: u64) -> Links {
-        Links { nodes: 1, budget }
+impl Nodes {
+    pub fn new(budget: u64) -> Nodes {
+        Nodes { nodes: 1, budget }
     }
 }
 
-impl Merge for Links {
-    type Node = PNode;
+/// A node being built: `None` only for a slot the pyramid has not filled yet.
+pub type Slot = Option<Box<Node>>;
 
-    fn cell(&mut self, v: u8) -> PNode {
-        PNode::Leaf(v)
+impl Merge for Nodes {
+    type Node = Slot;
+    /// §4.2.2: every cell is a leaf node of the tree before anything is merged.
+    const EVERY_CELL: bool = true;
+
+    fn cell(&mut self, v: u8) -> Slot {
+        Some(Box::new(Node::Leaf(v)))
     }
 
-    fn homogeneous(n: &PNode) -> Option<u8> {
-        match n {
-            PNode::Leaf(v) if *v == 0 || *v == 255 => Some(*v),
+    fn homogeneous(n: &Slot) -> Option<u8> {
+        match n.as_deref() {
+            Some(Node::Leaf(v)) if *v == 0 || *v == 255 => Some(*v),
             _ => None,
         }
     }
 
-    fn leaf(&mut self, v: u8) -> PNode {
-        PNode::Leaf(v)
+    fn leaf(&mut self, v: u8) -> Slot {
+        Some(Box::new(Node::Leaf(v)))
     }
 
-    fn internal(&mut self, _: Key, kids: [PNode; 8]) -> Result<PNode, String> {
+    /// Merging frees 7 children and keeps the first's allocation for the parent leaf (one
+    /// allocator call fewer than freeing 8 and allocating the parent).
+    fn merge_leaf(&mut self, v: u8, kids: [Slot; 8]) -> Slot {
+        let [first, ..] = kids;
+        first.map(|mut n| {
+            *n = Node::Leaf(v);
+            n
+        })
+    }
+
+    fn internal(&mut self, _: Key, kids: [Slot; 8]) -> Result<Slot, String> {
         self.nodes += 8;
-        let need = self.nodes * std::mem::size_of::<PNode>() as u64;
+        let need = self.nodes * std::mem::size_of::<Node>() as u64;
         if need > self.budget {
             return Err(super::over_budget(need, self.budget));
         }
-        Ok(PNode::Inner(Box::new(kids)))
+        let kids = kids.map(|k| k.unwrap_or_else(|| Box::new(Node::Leaf(0))));
+        Ok(Some(Box::new(Node::Inner(kids))))
     }
 }
 
-impl Finish for Links {
+impl Finish for Nodes {
     type Store = PointerOctree;
 
-    fn finish(self, root: PNode, internal: u64, depth: u32) -> Result<PointerOctree, String> {
+    fn finish(self, root: Slot, internal: u64, depth: u32) -> Result<PointerOctree, String> {
         Ok(PointerOctree {
             depth,
-            root,
+            root: root.ok_or("the pointer octree has no root")?,
             internal: internal as usize,
         })
     }
@@ -82,37 +107,32 @@ impl Finish for Links {
 
 impl PointerOctree {
     /// The root node.
-    pub fn root(&self) -> &PNode {
+    pub fn root(&self) -> &Node {
         &self.root
     }
 
-    fn leaves(&self, n: &PNode, k: Key, f: &mut dyn FnMut(Key, u8)) {
+    fn leaves(n: &Node, k: Key, f: &mut dyn FnMut(Key, u8)) {
         match n {
-            PNode::Leaf(v) => f(k, *v),
-            PNode::Inner(ch) => {
+            Node::Leaf(v) => f(k, *v),
+            Node::Inner(ch) => {
                 for (c, n) in ch.iter().enumerate() {
-                    self.leaves(n, key::child(k, c as u8), f);
+                    Self::leaves(n, key::child(k, c as u8), f);
                 }
             }
         }
     }
 
-    fn surface(&self, n: &PNode, level: u32, p: [u32; 3], f: &mut dyn FnMut([u32; 3], u8)) {
+    /// Every surface cell, walking the tree depth first (children in location-code order).
+    fn surface<F: FnMut([u32; 3], u8)>(&self, n: &Node, level: u32, p: [u32; 3], f: &mut F) {
         match n {
-            PNode::Leaf(v) => {
+            Node::Leaf(v) => {
                 if level == self.depth && *v != 0 && *v != 255 {
                     f(p, *v);
                 }
             }
-            PNode::Inner(ch) => {
+            Node::Inner(ch) => {
                 for (c, n) in ch.iter().enumerate() {
-                    let c = c as u32;
-                    let q = [
-                        2 * p[0] + (c & 1),
-                        2 * p[1] + (c >> 1 & 1),
-                        2 * p[2] + (c >> 2),
-                    ];
-                    self.surface(n, level + 1, q, f);
+                    self.surface(n, level + 1, super::child_xyz(p, c as u32), f);
                 }
             }
         }
@@ -134,19 +154,19 @@ impl VoxelStore for PointerOctree {
         if [x, y, z].iter().any(|&c| u64::from(c) >= side) {
             return 0;
         }
-        let mut n = &self.root;
+        let mut n: &Node = &self.root;
         for l in (0..self.depth).rev() {
             match n {
-                PNode::Leaf(v) => return *v,
-                PNode::Inner(ch) => {
+                Node::Leaf(v) => return *v,
+                Node::Inner(ch) => {
                     let c = (x >> l & 1) | (y >> l & 1) << 1 | (z >> l & 1) << 2;
                     n = &ch[c as usize];
                 }
             }
         }
         match n {
-            PNode::Leaf(v) => *v,
-            PNode::Inner(_) => 0,
+            Node::Leaf(v) => *v,
+            Node::Inner(_) => 0,
         }
     }
 
@@ -159,16 +179,22 @@ impl VoxelStore for PointerOctree {
         self.internal
     }
 
-    /// The nodes themselves (16 bytes each; the allocator's own overhead not counted).
+    /// The nodes themselves (72 bytes each; the allocator's own overhead not counted).
     fn bytes(&self) -> usize {
-        self.node_count() * std::mem::size_of::<PNode>()
+        self.node_count() * std::mem::size_of::<Node>()
     }
 
     fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8)) {
-        self.leaves(&self.root, ROOT, f);
+        Self::leaves(&self.root, ROOT, f);
     }
 
     fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
-        self.surface(&self.root, 0, [0; 3], f);
+        self.surface(&self.root, 0, [0; 3], &mut |p, v| f(p, v));
+    }
+
+    fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
+        out.clear();
+        let t = super::mc::table();
+        self.surface(&self.root, 0, [0; 3], &mut |p, v| t.emit(p, v, out));
     }
 }

@@ -21,6 +21,18 @@ pub struct Entry {
     pub internal: bool,
 }
 
+impl Entry {
+    /// A node not linked to any chain yet.
+    pub fn new(key: Key, val: u8, internal: bool) -> Entry {
+        Entry {
+            key,
+            next: NIL,
+            val,
+            internal,
+        }
+    }
+}
+
 /// A chained hash table of octree nodes keyed by location key.
 #[derive(Clone, Debug)]
 pub struct KeyTable {
@@ -40,6 +52,57 @@ impl KeyTable {
             tails: vec![NIL; buckets],
             entries: Vec::with_capacity(expected),
             mask: buckets as u64 - 1,
+        }
+    }
+
+    /// The sealed table of every entry of `lists`, taken in order, as [`KeyTable::push`] one
+    /// by one would make it (the same buckets, each chain in the same order: seed 000
+    /// §4.3.4's level-by-level insertion when `lists` runs from the deepest level up), but
+    /// with each chain contiguous. A stable radix sort by bucket: one pass by the bucket's
+    /// high bits from the lists into the table, then each of those segments by the low bits
+    /// through a small scratch buffer, then one pass linking neighbours of one bucket. The
+    /// build reads and writes the entries in sequence instead of touching a random bucket
+    /// head and chain tail per insert.
+    pub fn from_lists(lists: Vec<Vec<Entry>>) -> Result<KeyTable, String> {
+        let n: usize = lists.iter().map(Vec::len).sum();
+        if u32::try_from(n).map_or(true, |n| n == NIL) {
+            return Err("more than 2^32 - 1 octree nodes".into());
+        }
+        let buckets = n.next_power_of_two().max(8);
+        let mask = buckets as u64 - 1;
+        let low = buckets.trailing_zeros() / 2;
+        let high = |e: &Entry| ((e.key & mask) >> low) as usize;
+        let mut next = offsets(lists.iter().flatten(), high, buckets >> low);
+        let starts = next.clone();
+        let mut entries = vec![Entry::new(0, 0, false); n];
+        for e in lists.iter().flatten() {
+            let d = high(e);
+            entries[next[d] as usize] = *e;
+            next[d] += 1;
+        }
+        drop(lists);
+        sort_segments(&mut entries, &starts, (1 << low) - 1);
+        Ok(KeyTable::linked(entries, mask))
+    }
+
+    /// The table of `entries` already sorted by bucket (stable): heads and links of each run.
+    fn linked(mut entries: Vec<Entry>, mask: u64) -> KeyTable {
+        let mut heads = Vec::with_capacity(mask as usize + 1);
+        for i in 0..entries.len() {
+            let b = (entries[i].key & mask) as usize;
+            if b < heads.len() {
+                entries[i - 1].next = i as u32;
+            } else {
+                heads.resize(b, NIL);
+                heads.push(i as u32);
+            }
+        }
+        heads.resize(mask as usize + 1, NIL);
+        KeyTable {
+            heads,
+            tails: Vec::new(),
+            entries,
+            mask,
         }
     }
 
@@ -209,6 +272,43 @@ impl KeyTable {
     }
 }
 
+/// Where each digit's entries start when `items` are sorted by `digit` (< `digits`).
+fn offsets<'a>(
+    items: impl Iterator<Item = &'a Entry>,
+    digit: impl Fn(&Entry) -> usize,
+    digits: usize,
+) -> Vec<u32> {
+    let mut at = vec![0u32; digits + 1];
+    for e in items {
+        at[digit(e) + 1] += 1;
+    }
+    for d in 1..at.len() {
+        at[d] += at[d - 1];
+    }
+    at
+}
+
+/// Sorts each segment `starts[i]..starts[i + 1]` of `entries` by the bits `low_mask` of the
+/// key, stably (a counting sort through a scratch copy of the segment).
+fn sort_segments(entries: &mut [Entry], starts: &[u32], low_mask: u64) {
+    let mut scratch = Vec::new();
+    for w in starts.windows(2) {
+        let seg = &mut entries[w[0] as usize..w[1] as usize];
+        if seg.len() < 2 {
+            continue;
+        }
+        scratch.clear();
+        scratch.extend_from_slice(seg);
+        let low = |e: &Entry| (e.key & low_mask) as usize;
+        let mut next = offsets(scratch.iter(), low, low_mask as usize + 1);
+        for e in &scratch {
+            let d = low(e);
+            seg[next[d] as usize] = *e;
+            next[d] += 1;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -219,6 +319,62 @@ mod tests {
         let t = KeyTable::with_capacity(8);
         assert_eq!(t.buckets(), 8);
         assert_eq!(t.bucket(100), 4);
+    }
+
+    /// Every chain, head to tail, as keys.
+    fn chains(t: &KeyTable) -> Vec<Vec<Key>> {
+        (0..t.buckets())
+            .map(|b| {
+                let (mut i, mut keys) = (t.heads[b], vec![]);
+                while i != NIL {
+                    keys.push(t.entries[i as usize].key);
+                    i = t.entries[i as usize].next;
+                }
+                keys
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_radix_fill_makes_the_chains_of_inserting_one_by_one() {
+        // Keys of mixed levels with many collisions, in several lists, sizes around the
+        // powers of two where the bucket bits split differently.
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        for n in [0usize, 1, 7, 8, 9, 100, 1000, 4097, 70_000] {
+            let mut lists = vec![vec![]; 3];
+            for i in 0..n {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                let level = 1 + seed % 7;
+                let k = 1 << (3 * level) | (seed >> 8) & ((1 << (3 * level)) - 1);
+                lists[i % 3].push(Entry::new(k, (seed >> 3) as u8, i % 5 == 0));
+            }
+            let mut one = KeyTable::with_capacity(n);
+            for e in lists.iter().flatten() {
+                one.push(e.key, e.val, e.internal).unwrap();
+            }
+            let fill = KeyTable::from_lists(lists.clone()).unwrap();
+            assert_eq!(fill.buckets(), one.buckets(), "n = {n}");
+            assert_eq!(chains(&fill), chains(&one), "n = {n}");
+            for e in lists.iter().flatten() {
+                let got = fill.get(e.key).map(|f| (f.val, f.internal));
+                assert_eq!(got, one.get(e.key).map(|f| (f.val, f.internal)));
+            }
+        }
+    }
+
+    #[test]
+    fn a_radix_filled_table_takes_pushes_and_removals() {
+        let lists = vec![vec![Entry::new(4, 1, false), Entry::new(12, 2, false)]];
+        let mut t = KeyTable::from_lists(lists).unwrap();
+        t.push(20, 3, false).unwrap();
+        t.push(5, 4, false).unwrap();
+        assert_eq!(chains(&t)[4], vec![4, 12, 20]);
+        assert_eq!(t.remove(4).map(|e| e.val), Some(1));
+        assert_eq!(t.get(12).map(|e| e.val), Some(2));
+        assert_eq!(t.get(20).map(|e| e.val), Some(3));
+        assert_eq!(t.get(5).map(|e| e.val), Some(4));
     }
 
     #[test]
