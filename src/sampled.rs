@@ -26,7 +26,7 @@ use crate::scad::parse_csg;
 use crate::slice::Mask;
 use crate::solid::{CsgNode, CsgScene, Import};
 use crate::trimesh::TriMesh;
-use crate::voxelize::Grid;
+use crate::voxelize::{toggle_run, Grid};
 
 /// What a sampled primitive is.
 pub enum Shape {
@@ -249,14 +249,7 @@ impl SlabRuns {
     pub fn toggles(&self, slabs: usize) -> Vec<Vec<u32>> {
         let mut t = vec![vec![]; slabs];
         for (i, runs) in self.0.iter().enumerate() {
-            for &(a, b) in runs {
-                if a > 0 && (a as usize) < slabs {
-                    t[a as usize].push(i as u32);
-                }
-                if (b as usize) + 1 < slabs {
-                    t[b as usize + 1].push(i as u32);
-                }
-            }
+            runs.iter().for_each(|&run| toggle_run(&mut t, i, run));
         }
         t
     }

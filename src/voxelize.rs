@@ -306,16 +306,8 @@ impl SlabRanges {
     /// whose range starts at k or ended at k − 1 (slab 0: none).
     pub fn toggles(&self, slabs: usize) -> Vec<Vec<u32>> {
         let mut t = vec![vec![]; slabs];
-        for (i, &(a, b)) in self.0.iter().enumerate() {
-            if a > b {
-                continue;
-            }
-            if a > 0 {
-                t[a as usize].push(i as u32);
-            }
-            if (b as usize) + 1 < slabs {
-                t[b as usize + 1].push(i as u32);
-            }
+        for (i, &run) in self.0.iter().enumerate() {
+            toggle_run(&mut t, i, run);
         }
         t
     }
@@ -408,19 +400,36 @@ pub fn ray_interval<T: PartialOrd + Copy + Default>(
     (lo <= hi).then_some((lo, hi))
 }
 
+/// A depth (real units) in raw word units, rounded up or down. Slab planes are whole raw
+/// units: z <= hi exactly when z <= floor(hi), z >= lo exactly when z >= ceil(lo).
+fn raw_depth(slicer: &Slicer, v: f64, up: bool) -> i128 {
+    let one = (1u64 << slicer.fmt.frac) as f64;
+    let r = if up {
+        (v * one).ceil()
+    } else {
+        (v * one).floor()
+    };
+    r.clamp(-1e30, 1e30) as i128
+}
+
+/// Record that pixel i enters slab `first` and leaves after slab `last` (an empty run,
+/// first > last, records nothing): the flips [`SlabRanges::toggles`] and
+/// [`SlabRuns::toggles`] list per slab.
+pub fn toggle_run(t: &mut [Vec<u32>], i: usize, (first, last): (u32, u32)) {
+    if first > last {
+        return;
+    }
+    if first > 0 && (first as usize) < t.len() {
+        t[first as usize].push(i as u32);
+    }
+    if (last as usize) + 1 < t.len() {
+        t[last as usize + 1].push(i as u32);
+    }
+}
+
 /// [`Route::Float`]: the same slabs from the exact intervals.
 pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
-    let one = (1u64 << slicer.fmt.frac) as f64;
-    // Slab planes are whole raw units: z <= hi exactly when z <= floor(hi), z >= lo exactly
-    // when z >= ceil(lo).
-    let raw = |v: f64, up: bool| -> i128 {
-        let r = if up {
-            (v * one).ceil()
-        } else {
-            (v * one).floor()
-        };
-        r.clamp(-1e30, 1e30) as i128
-    };
+    let raw = |v, up| raw_depth(slicer, v, up);
     let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
     let out = (0..w * h)
         .map(|i| match float_interval(slicer, prim, i % w, i / w) {
@@ -759,15 +768,7 @@ fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source
 /// [`float_ranges`] reduces a convex solid's.
 pub fn mesh_runs(slicer: &Slicer, mesh: &crate::trimesh::TriMesh) -> SlabRuns {
     let [w, h, _] = slicer.grid.dims;
-    let one = (1u64 << slicer.fmt.frac) as f64;
-    let raw = |v: f64, up: bool| -> i128 {
-        let r = if up {
-            (v * one).ceil()
-        } else {
-            (v * one).floor()
-        };
-        r.clamp(-1e30, 1e30) as i128
-    };
+    let raw = |v, up| raw_depth(slicer, v, up);
     let crossings = mesh.crossings(|p| slicer.frame.to_pixel(p), w, h);
     SlabRuns::merged(
         crossings
