@@ -51,6 +51,32 @@ pub struct CycleArray {
     seq: Sequencer,
     ops: usize,
     probe: Option<Recorder>,
+    observer: Option<Observer>,
+}
+
+/// One clock as [`CycleArray::observe`] reports it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Clock {
+    /// Clocks completed, this one included (the first clock is 1).
+    pub t: u64,
+    /// Bit k of the window in this clock; `None` for DEPGEN's fill and a stack operation.
+    pub bit: Option<u32>,
+    /// Whether the comparator took a bit in this clock.
+    pub compared: bool,
+}
+
+/// Called after every clock with the whole array as it is then.
+pub type Observer = Box<dyn FnMut(&CycleArray, Clock)>;
+
+/// The flip-flops of one pixel that [`Pixel`] leaves out or summarises: the DEPGEN adder's
+/// carry and the comparator's lt, eq, ovf, sign (`Pixel` holds the flags N J T M they give).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Internal {
+    pub carry: bool,
+    pub lt: bool,
+    pub eq: bool,
+    pub ovf: bool,
+    pub sign: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -118,6 +144,7 @@ impl CycleArray {
             seq: Sequencer::default(),
             ops: 0,
             probe: None,
+            observer: None,
             cfg,
             set,
         }
@@ -128,11 +155,55 @@ impl CycleArray {
     }
 
     fn chunk_rows(&self) -> usize {
+        if self.observer.is_some() {
+            // Observed clock by clock: the whole array is one chunk, so that every pixel is at
+            // the same clock when the observer looks.
+            return self.cfg.height;
+        }
         (CHUNK_WORDS / self.wpr).max(1)
+    }
+
+    /// Call `f` after every clock from now on, DEPGEN's fill and stack operations included,
+    /// with the array as it is after that clock (every register of every pixel: [`Self::pixel`],
+    /// [`Self::internal`]). The array is then swept as a whole, clock by clock, rather than in
+    /// chunks; the clocks and the results are the same.
+    pub fn observe(&mut self, f: Observer) {
+        self.observer = Some(f);
+    }
+
+    fn notify(&mut self, clock: Clock) {
+        if let Some(mut f) = self.observer.take() {
+            f(self, clock);
+            self.observer = Some(f);
+        }
+    }
+
+    /// Pixel (x, y)'s DEPGEN carry and comparator flip-flops.
+    pub fn internal(&self, x: usize, y: usize) -> Internal {
+        let (w, lane) = (y * self.wpr + x / 64, x % 64);
+        let b = |v: u64| v >> lane & 1 == 1;
+        let c = self.cmp.get(w);
+        Internal {
+            carry: b(self.carry[w]),
+            lt: b(c.lt),
+            eq: b(c.eq),
+            ovf: b(c.ovf),
+            sign: b(c.sign),
+        }
     }
 
     fn window(&mut self, w: &Window) {
         let clocks = self.seq.window_clocks(&self.cfg, w);
+        if self.observer.is_some() {
+            let nd = self.nd() as u64;
+            for t in self.seq.cycles + 1..=self.seq.cycles + clocks - nd {
+                self.notify(Clock {
+                    t,
+                    bit: None,
+                    compared: false,
+                });
+            }
+        }
         let plan = Plan {
             transfer: self.seq.pending.take(),
             lines: w.stream.map(|(c, _)| self.depgen.stream(&c)),
@@ -176,7 +247,10 @@ impl CycleArray {
                     ) = (c.lt, c.eq, c.ovf, c.sign);
                 }
             }
-            self.carry[words.clone()].fill(0);
+            if plan.lines.is_some() {
+                // The adder starts each plane with carry 0; otherwise it holds its last carry.
+                self.carry[words.clone()].fill(0);
+            }
             for k in 0..self.nd() {
                 if let Some(t) = &plan.transfer {
                     self.transfer_bit(t, k, words.clone(), &masks);
@@ -188,9 +262,18 @@ impl CycleArray {
                     self.compare_bit(k, lhs, rhs, words.clone());
                 }
                 self.sample(plan, k, rows.clone());
-            }
-            if let Some(d) = plan.decide {
-                self.decide(d, words);
+                if k + 1 == self.nd() {
+                    if let Some(d) = plan.decide {
+                        self.decide(d, words.clone());
+                    }
+                }
+                if self.observer.is_some() {
+                    self.notify(Clock {
+                        t: plan.start + k as u64 + 1,
+                        bit: Some(k as u32),
+                        compared: plan.compare.is_some(),
+                    });
+                }
             }
         }
         let nd = self.nd();
@@ -320,6 +403,13 @@ impl CycleArray {
         self.seq.sp = sp - pop + push;
         self.seq.cycles += 1;
         self.sample_all_probes();
+        if self.observer.is_some() {
+            self.notify(Clock {
+                t: self.seq.cycles,
+                bit: None,
+                compared: false,
+            });
+        }
     }
 
     /// One pixel's registers gathered from the bit-planes.

@@ -8,6 +8,7 @@
 
 pub mod check;
 pub mod comparator;
+pub mod depgen;
 pub mod pixel;
 pub mod sgene;
 
@@ -80,6 +81,7 @@ pub fn files() -> Result<Vec<(String, String)>, String> {
     let cfg = crate::ArrayConfig::new(16, 16);
     let derived = Equations::Derived.set();
     out.push(("pixel.v".to_string(), pixel::pixel_module(&cfg, &derived)));
+    out.push(("depgen.v".to_string(), depgen::module()));
     out.push(("pixel_array.v".to_string(), pixel::array_module(&cfg)));
     out.push(("tb_array.v".to_string(), pixel::testbench(&cfg)));
     out.push(("cost.ys".to_string(), cost_script()));
