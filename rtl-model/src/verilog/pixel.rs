@@ -369,8 +369,9 @@ fn tb_common(cfg: &ArrayConfig, name: &str) -> String {
 /// clock until the word with `last`) and the expected states `+exp=FILE` (default
 /// `expected.hex`): after every clock, one line per pixel (row-major), the pixel's `state` in
 /// hex. After each clock it compares every field of every pixel's `state` with the expected
-/// line and prints `MISMATCH clock x y field expected got` (the first 20), then `CLOCKS n OPS
-/// m MISMATCHES b`. Without the expected file it only runs (`CHECK off`).
+/// line and prints `MISMATCH clock x y field expected got` (it stops after the clock with the
+/// 20th), then `CLOCKS n OPS m MISMATCHES b`. Without the expected file it only runs (`CHECK
+/// off`).
 pub fn testbench(cfg: &ArrayConfig) -> String {
     let mut fields = String::new();
     let mut lo = 0;
@@ -381,7 +382,10 @@ pub fn testbench(cfg: &ArrayConfig) -> String {
     let mut all = String::new();
     for y in 0..cfg.height {
         for x in 0..cfg.width {
-            all += &format!("            s = dut.gy[{y}].gx[{x}].p.state; check({x}, {y});\n");
+            all += &format!(
+                "            st[{}] = dut.gy[{y}].gx[{x}].p.state;\n",
+                y * cfg.width + x
+            );
         }
     }
     format!(
@@ -390,7 +394,8 @@ pub fn testbench(cfg: &ArrayConfig) -> String {
 // pixel.rs FIELDS; state fields: pixel.rs state_fields.
 {common}    reg [8*256-1:0] efile;
     reg [SW-1:0] s, e;
-    integer fd, n, bad = 0;
+    reg [SW-1:0] st [0:NX*NY-1];
+    integer fd, n, p, bad = 0;
     task field(input [8*8-1:0] name, input integer lo, input integer w, input integer x,
             input integer y);
         reg [SW-1:0] m;
@@ -417,7 +422,11 @@ pub fn testbench(cfg: &ArrayConfig) -> String {
     endtask
     task check_all;
         begin
-{all}        end
+{all}            for (p = 0; p < NX * NY; p = p + 1) begin
+                s = st[p];
+                check(p % NX, p / NX);
+            end
+        end
     endtask
     initial begin
         if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
@@ -426,7 +435,7 @@ pub fn testbench(cfg: &ArrayConfig) -> String {
         fd = $fopen(efile, \"r\");
         if (fd == 0) $display(\"CHECK off\");
         #1 clk = 1; #1 clk = 0; rst = 0;
-        while (!done) begin
+        while (!done && bad < 20) begin
             c = mem[t];
             #1 clk = 1; #1 clk = 0;
             if (fd != 0) check_all;
