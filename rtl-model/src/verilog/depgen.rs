@@ -39,23 +39,20 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
     output wire [N-1:0] line
 );
     localparam DL = LEVELS > 0 ? 2 * LEVELS - 1 : 1;
-    reg r_v, r_f;
+    // The root's value flip-flop; dd[m] and df[m]: d and `first` delayed m + 1 clocks
+    // (df[j] also marks bit 0 of a plane at the input of level j).
+    reg r_v;
     reg [DL-1:0] dd, df;
-    // val[j*N + i]: node i at the input of level j (level 0: the root, on every lane);
-    // fl[j]: bit 0 of a plane is at the input of level j.
+    // val[j*N + i]: node i at the input of level j (level 0: the root, on every lane).
     wire [(LEVELS+1)*N-1:0] val;
-    wire [LEVELS:0] fl;
     assign val[N-1:0] = {N{r_v}};
-    assign fl[0] = r_f;
     always @(posedge clk) begin
         if (rst) begin
             r_v <= 1'b0;
-            r_f <= 1'b0;
             dd <= {DL{1'b0}};
             df <= {DL{1'b0}};
         end else begin
             r_v <= root;
-            r_f <= first;
             dd <= {dd, d};
             df <= {df, first};
         end
@@ -64,9 +61,9 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
     generate
         for (j = 0; j < LEVELS; j = j + 1) begin : lv
             localparam NODES = (2 << j) < N ? (2 << j) : N;
-            wire fin = fl[j];
+            wire fin = df[j];
             reg [NODES-1:0] v, cy;
-            reg f, en;
+            reg en;
             // d's bit 0 is here, or it came earlier in this plane.
             wire den = df[2*j] | en & ~fin;
             wire add = dd[2*j] & den;
@@ -86,12 +83,10 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
                 if (rst) begin
                     v <= {NODES{1'b0}};
                     cy <= {NODES{1'b0}};
-                    f <= 1'b0;
                     en <= 1'b0;
                 end else begin
                     v <= vn;
                     cy <= cn;
-                    f <= fin;
                     en <= den;
                 end
             end
@@ -99,7 +94,6 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
             if (NODES < N) begin : unused
                 assign val[(j+1)*N + NODES +: N - NODES] = {N-NODES{1'b0}};
             end
-            assign fl[j+1] = f;
         end
     endgenerate
     assign line = val[LEVELS*N +: N];

@@ -27,8 +27,8 @@ pub fn golden() -> Result<Vec<(Table, Pla)>, String> {
         .collect()
 }
 
-/// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE;
-/// generic gates and LUT4s for the comparator.
+/// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE and
+/// for the whole pixel; generic gates and LUT4s for the comparator and for one DEPGEN tree.
 fn cost_script() -> String {
     let mut v = String::from(
         "# Cost of SGENE (generic cells, LUT4, LUT6) and of the comparator (generic, LUT4).\n\
@@ -53,6 +53,10 @@ fn cost_script() -> String {
     v += &format!(
         "{px}synth -top pixel -flatten\nabc -lut 6\nopt_clean\nlog COST pixel lut6\nstat\n"
     );
+    // One DEPGEN tree of the 16×16 array (16 lines, 4 levels); an array has two.
+    let dg = "design -reset\nread_verilog depgen.v\nchparam -set N 16 -set LEVELS 4 depgen_tree\n";
+    v += &format!("{dg}synth -top depgen_tree\nlog COST depgen generic\nstat\n");
+    v += &format!("{dg}synth -top depgen_tree -lut 4\nlog COST depgen lut4\nstat\n");
     v
 }
 
