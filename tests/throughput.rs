@@ -361,7 +361,7 @@ fn area_budget_picks_the_panels_that_fit() {
             (8, true)
         ]
     );
-    assert_eq!(rows[4]["luts"], 113_664);
+    assert_eq!(rows[4]["luts"], 114_688);
     let bad = csgpix(&["throughput", "--area", "100", "--lut", "5"]);
     assert_eq!(bad.status.code(), Some(2));
 }
