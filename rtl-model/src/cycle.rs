@@ -166,7 +166,8 @@ impl CycleArray {
     /// Call `f` after every clock from now on, DEPGEN's fill and stack operations included,
     /// with the array as it is after that clock (every register of every pixel: [`Self::pixel`],
     /// [`Self::internal`]). The array is then swept as a whole, clock by clock, rather than in
-    /// chunks; the clocks and the results are the same.
+    /// chunks; the clocks and the results are the same. The stack pointer (the controller's, in
+    /// `state().sp`) moves after a clipping plane's last clock has been reported.
     pub fn observe(&mut self, f: Observer) {
         self.observer = Some(f);
     }
@@ -525,5 +526,84 @@ impl CycleArray {
         let words = (cfg.width.div_ceil(64) * cfg.height) as u64;
         let planes = 4 * cfg.fmt.bits() as u64 + 3 * cfg.colour_bits as u64 + 2 + 4 + 1;
         words * 8 * (planes + cfg.stack_depth as u64)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::program::Coeffs;
+    use crate::Equations;
+    use std::cell::RefCell;
+    use std::rc::Rc;
+
+    /// A front and a back plane, a clipping plane with NOT and apply, close and compose.
+    fn program() -> Vec<Op> {
+        let plane = |c0, dx, dy, colour, h| Op::Plane {
+            coeffs: Coeffs { c0, dx, dy },
+            colour,
+            interior: 5,
+            l: false,
+            s: true,
+            h,
+            y: false,
+        };
+        vec![
+            plane(40 << 10, 300, -200, 2, true),
+            plane(90 << 10, -100, 400, 3, false),
+            Op::Close { l: false },
+            Op::ClipPlane {
+                coeffs: Coeffs {
+                    c0: 60 << 10,
+                    dx: 500,
+                    dy: 0,
+                },
+                h: true,
+                y: false,
+                x: false,
+            },
+            Op::ClipNot,
+            Op::ClipApply,
+            Op::Compose { p: true },
+        ]
+    }
+
+    /// Observed clock by clock (one chunk), a many-chunk array ends where the unobserved one
+    /// does, the observer sees every clock once, and at each operation's last clock it sees
+    /// every pixel as `state()` shows it after the operation (the stack pointer, the
+    /// controller's, moves after the clock).
+    #[test]
+    fn observing_every_clock_changes_nothing_and_sees_every_clock() {
+        let cfg = ArrayConfig::new(130, 70);
+        let ops = program();
+        let mut plain = CycleArray::new(cfg, Equations::Derived.set());
+        plain.run(&ops).unwrap();
+        assert!(plain.chunk_rows() < cfg.height, "the plain run is chunked");
+
+        let seen: Rc<RefCell<Vec<(Clock, ArchState)>>> = Rc::default();
+        let log = Rc::clone(&seen);
+        let mut obs = CycleArray::new(cfg, Equations::Derived.set());
+        obs.observe(Box::new(move |a, c| log.borrow_mut().push((c, a.state()))));
+        let mut after = vec![];
+        for op in &ops {
+            obs.step(op).unwrap();
+            after.push((obs.cycles(), obs.state()));
+        }
+        obs.finish();
+        assert_eq!(obs.cycles(), plain.cycles());
+        assert_eq!(obs.state(), plain.state());
+        let seen = seen.borrow();
+        let clocks: Vec<u64> = seen.iter().map(|(c, _)| c.t).collect();
+        assert_eq!(clocks, (1..=plain.cycles()).collect::<Vec<_>>());
+        // DEPGEN's fill: idle clocks before the first window.
+        let fill = cfg.depgen_latency() as usize;
+        assert!(seen[..fill].iter().all(|(c, _)| c.bit.is_none()));
+        assert_eq!(seen[fill].0.bit, Some(0));
+        for (t, state) in after {
+            let got = &seen[t as usize - 1].1;
+            let diff = (0..state.pixels.len()).find(|&i| got.pixels[i] != state.pixels[i]);
+            assert_eq!(diff, None, "clock {t}");
+        }
+        assert!(seen.last().unwrap().1.pixels == plain.state().pixels);
     }
 }

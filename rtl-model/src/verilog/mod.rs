@@ -1,7 +1,7 @@
 //! A Verilog-2005 twin of the select logic (SGENE, seed 001 §2.3.3-2.3.5), written from the
 //! same equation sets the Rust models evaluate, the bit-serial comparator, one pixel processor
-//! and an array of them driven by a per-clock control stream ([`pixel`]), and the files that
-//! check them.
+//! and an array of them with DEPGEN's adder trees (§2.4, [`depgen`]) driven by a per-clock
+//! control stream ([`pixel`]), and the files that check them.
 //!
 //! [`files`] is everything `csgpix export-verilog` writes (checked in under
 //! `rtl-model/verilog/`); docs/verilog.md says how each file is used.
