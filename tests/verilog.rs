@@ -1,9 +1,11 @@
 //! The Verilog twin (docs/verilog.md): regenerated; SGENE simulated under Icarus Verilog and
-//! Verilator against the golden vectors, proved with Yosys, and costed; the pixel array
-//! co-simulated against the `cycle` model on thesis scenes.
+//! Verilator against the golden vectors, proved with Yosys, and costed; the pixel array with
+//! DEPGEN's trees co-simulated against the `cycle` model on thesis scenes, every register of
+//! every pixel after every clock.
 //!
 //! Expected figures come from the golden vectors and docs/select-logic.md (rows per signal;
-//! the printed set's 15 + 11 faulty rows) and from `CycleArray`, never from the generator.
+//! the printed set's 15 + 11 faulty rows) and from `CycleArray`, never from the generator
+//! (which only supplies the layout of a pixel's `state` word, `pixel::state_fields`).
 
 mod common;
 use common::csgpix;
