@@ -1,9 +1,11 @@
 //! The Verilog twin (docs/verilog.md): regenerated; SGENE simulated under Icarus Verilog and
-//! Verilator against the golden vectors, proved with Yosys, and costed; the pixel array
-//! co-simulated against the `cycle` model on thesis scenes.
+//! Verilator against the golden vectors, proved with Yosys, and costed; the pixel array with
+//! DEPGEN's trees co-simulated against the `cycle` model on thesis scenes, every register of
+//! every pixel after every clock.
 //!
 //! Expected figures come from the golden vectors and docs/select-logic.md (rows per signal;
-//! the printed set's 15 + 11 faulty rows) and from `CycleArray`, never from the generator.
+//! the printed set's 15 + 11 faulty rows) and from `CycleArray`, never from the generator
+//! (which only supplies the layout of a pixel's `state` word, `pixel::state_fields`).
 
 mod common;
 use common::csgpix;
@@ -16,7 +18,7 @@ use csgpix::clip_expr::Clip;
 use csgpix::compile::{clip_scene_ops, scene_ops};
 use csgpix::display_list::DisplayList;
 use rtl_model::array::check_program;
-use rtl_model::comparator::FlagBits;
+use rtl_model::cycle::{Clock, Internal};
 use rtl_model::program::{translate, CReg, Op};
 use rtl_model::{ArchState, Array, ArrayConfig, CycleArray, Equations, Pixel};
 
@@ -369,7 +371,7 @@ fn cost_script_maps_sgene_the_comparator_and_the_pixel_to_gates_and_luts() {
         }
         seen.push((what.to_string(), ffs));
     }
-    assert_eq!(seen.len(), 11, "{seen:?}");
+    assert_eq!(seen.len(), 13, "{seen:?}");
     assert_eq!(costed.len(), 2, "the pixel's LUT4 and LUT6 runs");
     for (luts, ffs, want_luts, want_ffs) in costed {
         assert_eq!(
@@ -382,9 +384,15 @@ fn cost_script_maps_sgene_the_comparator_and_the_pixel_to_gates_and_luts() {
     // D E G (3·8), S_hi S_lo, the DEPGEN carry, 8 stack levels, the comparator's lt eq ovf
     // sign and its 5-bit bit counter.
     let pixel_ffs = 4 * 32 + 3 * 8 + 2 + 1 + 8 + 4 + 5;
+    // One DEPGEN tree of 16 lines, 4 levels (docs/verilog.md): 2 + 4 + 8 + 16 nodes, 1 + 2 + 4
+    // + 8 carries, 4 `en`, the root's value flip-flop and two delay lines of 2·4 - 1 (the
+    // coefficient and the mark of bit 0).
+    let depgen_ffs = 30 + 15 + 4 + 1 + 2 * 7;
     for (what, ffs) in seen {
         let want = if what.starts_with("comparator") {
             9
+        } else if what.starts_with("depgen") {
+            depgen_ffs
         } else if what.starts_with("pixel") {
             pixel_ffs
         } else {
@@ -466,127 +474,191 @@ fn thesis_program(names: &[&str], clip: Option<&str>, x0: usize, y0: usize) -> V
     ops
 }
 
-/// The cycle model's state after every operation and after the flush window.
-fn cycle_states(cfg: ArrayConfig, ops: &[Op]) -> (Vec<ArchState>, u64) {
+/// The cycle model's state after the flush, and its clocks.
+fn cycle_final(cfg: ArrayConfig, ops: &[Op]) -> (ArchState, u64) {
     check_program(ops, cfg.stack_depth).unwrap();
     let mut arr = CycleArray::new(cfg, Equations::Derived.set());
-    let mut states = vec![];
-    for op in ops {
-        arr.step(op).unwrap();
-        states.push(arr.state());
-    }
-    arr.finish();
-    states.push(arr.state());
-    (states, arr.cycles())
+    arr.run(ops).unwrap();
+    (arr.state(), arr.cycles())
 }
 
-/// Every pixel as the Verilog array printed it, per dump (`P op x y A F B C D E G hi lo N J T
-/// M stack`), and the clocks the testbench ran.
-fn parse_dumps(text: &str, cfg: &ArrayConfig) -> (Vec<Vec<Pixel>>, u64) {
-    let mut dumps: Vec<Vec<Pixel>> = vec![];
-    let mut clocks = u64::MAX;
-    let hex = |s: &str| u64::from_str_radix(s, 16).unwrap_or_else(|_| panic!("not hex: {s}"));
-    for line in text.lines() {
-        let w: Vec<&str> = line.split_whitespace().collect();
-        match w.first() {
-            Some(&"P") => {
-                let (op, x, y): (usize, usize, usize) = (
-                    w[1].parse().unwrap(),
-                    w[2].parse().unwrap(),
-                    w[3].parse().unwrap(),
-                );
-                if dumps.len() <= op {
-                    dumps.resize(op + 1, vec![Pixel::reset(&cfg.fmt); cfg.pixels()]);
-                }
-                let b = |i: usize| w[i] == "1";
-                dumps[op][y * cfg.width + x] = Pixel {
-                    depth: std::array::from_fn(|r| cfg.fmt.wrap(hex(w[4 + r]) as i64)),
-                    colour: std::array::from_fn(|r| hex(w[8 + r]) as u32),
-                    sel: (b(11), b(12)),
-                    flags: FlagBits {
-                        n: b(13),
-                        j: b(14),
-                        t: b(15),
-                        m: b(16),
-                    },
-                    stack: hex(w[17]),
-                };
-            }
-            Some(&"CLOCKS") => clocks = w[1].parse().unwrap(),
-            _ => {}
-        }
-    }
-    (dumps, clocks)
+/// What tb_array must see: every pixel's `state` after every clock, from the cycle model.
+struct Expected {
+    /// One hex line per pixel (row-major) per clock, clocks 1 ..= cycles + 1 (the idle clock
+    /// that carries `last` changes nothing).
+    text: String,
+    /// The clock each operation ends with.
+    ends: Vec<u64>,
+    cycles: u64,
+    last: ArchState,
 }
+
+/// A pixel's `state` word (fields of `pixel::state_fields`, LSB first) from the cycle model's
+/// registers, in hex. `k` is the comparator's bit counter (bits taken of the current word).
+/// The Verilog registers circulate (bit k of the word at bit 0 in clock k), so after clock
+/// `bit` of a window they hold the model's word rotated right by `bit + 1` (colour registers:
+/// by the colour bits moved so far); `bit` is `None` outside windows.
+fn state_hex(cfg: &ArrayConfig, p: &Pixel, i: &Internal, k: u64, bit: Option<u32>) -> String {
+    let rot = |v: u64, w: usize, moved: usize| {
+        let r = moved % w;
+        let mask = if w == 64 { !0 } else { (1u64 << w) - 1 };
+        let v = v & mask;
+        if r == 0 {
+            v
+        } else {
+            (v >> r | v << (w - r)) & mask
+        }
+    };
+    let (nd, cb) = (cfg.fmt.bits() as usize, cfg.colour_bits as usize);
+    let moved = bit.map_or(0, |b| b as usize + 1);
+    use rtl_model::verilog::pixel::state_fields;
+    let mut bits: Vec<bool> = vec![];
+    for (name, w) in state_fields(cfg) {
+        let v: u64 = match name {
+            "A" | "F" | "B" | "C" => {
+                let r = ["A", "F", "B", "C"]
+                    .iter()
+                    .position(|r| *r == name)
+                    .unwrap();
+                rot(p.depth[r] as u64, nd, moved)
+            }
+            "D" | "E" | "G" => {
+                let r = ["D", "E", "G"].iter().position(|r| *r == name).unwrap();
+                rot(p.colour[r] as u64, cb, moved.min(cb))
+            }
+            "S_hi" => p.sel.0 as u64,
+            "S_lo" => p.sel.1 as u64,
+            "N" => p.flags.n as u64,
+            "J" => p.flags.j as u64,
+            "T" => p.flags.t as u64,
+            "M" => p.flags.m as u64,
+            "lt" => i.lt as u64,
+            "eq" => i.eq as u64,
+            "ovf" => i.ovf as u64,
+            "sign" => i.sign as u64,
+            "k" => k,
+            "carry" => i.carry as u64,
+            "stack" => p.stack,
+            other => panic!("state field {other} has no cycle-model register"),
+        };
+        bits.extend((0..w).map(|b| b < 64 && v >> b & 1 == 1));
+    }
+    (0..bits.len().div_ceil(4))
+        .rev()
+        .map(|d| {
+            let v = (0..4)
+                .filter(|b| bits.get(d * 4 + b) == Some(&true))
+                .fold(0, |a, b| a | 1 << b);
+            char::from_digit(v, 16).unwrap()
+        })
+        .collect()
+}
+
+/// Run `ops` on the cycle model clock by clock ([`CycleArray::observe`]) and write down every
+/// register of every pixel after every clock.
+fn expected_states(cfg: ArrayConfig, ops: &[Op]) -> Expected {
+    use std::cell::RefCell;
+    use std::rc::Rc;
+    check_program(ops, cfg.stack_depth).unwrap();
+    let mut arr = CycleArray::new(cfg, Equations::Derived.set());
+    // The comparator's bit counter (5 bits for the thesis word) and the lines so far.
+    let kmod = cfg.fmt.bits().next_power_of_two() as u64;
+    let out = Rc::new((RefCell::new(String::new()), RefCell::new(0u64)));
+    let seen = Rc::clone(&out);
+    let lines = move |a: &CycleArray, k: u64, bit: Option<u32>, text: &mut String| {
+        for y in 0..cfg.height {
+            for x in 0..cfg.width {
+                *text += &state_hex(&cfg, &a.pixel(x, y), &a.internal(x, y), k, bit);
+                text.push('\n');
+            }
+        }
+    };
+    let mut next = 1;
+    arr.observe(Box::new(move |a: &CycleArray, c: Clock| {
+        assert_eq!(c.t, next, "the observer sees every clock once, in order");
+        next += 1;
+        let mut k = seen.1.borrow_mut();
+        if c.compared {
+            *k = (c.bit.unwrap() as u64 + 1) % kmod;
+        }
+        lines(a, *k, c.bit, &mut seen.0.borrow_mut());
+    }));
+    let mut ends = vec![];
+    for op in ops {
+        arr.step(op).unwrap();
+        ends.push(arr.cycles());
+    }
+    arr.finish();
+    let k = *out.1.borrow();
+    let mut text = out.0.borrow().clone();
+    lines(&arr, k, None, &mut text);
+    Expected {
+        text,
+        ends,
+        cycles: arr.cycles(),
+        last: arr.state(),
+    }
+}
+
+/// Stand-ins for checked-in Verilog files: (file name, source).
+type Overrides<'a> = &'a [(&'a str, String)];
 
 /// How the co-simulation ended: the number of distinct final image colours in the window, or
 /// the first difference from the cycle model.
 fn cosim(ops: &[Op], verilator: bool) -> usize {
-    cosim_with(ArrayConfig::new(16, 16), ops, verilator, None).unwrap_or_else(|e| panic!("{e}"))
+    cosim_with(ArrayConfig::new(16, 16), ops, verilator, &[]).unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// Run the array testbench on `ops` under Icarus (or Verilator), with `pixel_src` standing in
-/// for pixel.v when given, and compare every register of every pixel after every operation
-/// with the cycle model. The checked-in pixel_array.v and tb_array.v are 16×16; another size
-/// is generated into a temporary directory by the same functions.
+/// Run the array testbench on `ops` under Icarus (or Verilator), with `overrides` standing in
+/// for checked-in files (pixel.v, depgen.v), and compare every register of every pixel after
+/// every clock with the cycle model. The checked-in pixel_array.v and tb_array.v are 16×16;
+/// another size is generated into a temporary directory by the same functions.
 fn cosim_with(
     cfg: ArrayConfig,
     ops: &[Op],
     verilator: bool,
-    pixel_src: Option<&str>,
+    overrides: Overrides,
 ) -> Result<usize, String> {
     use rtl_model::verilog::pixel;
-    let (states, cycles) = cycle_states(cfg, ops);
+    let want = expected_states(cfg, ops);
     let tmp = tempfile::tempdir().unwrap();
     let ctl = pixel::control_stream(&cfg, &Equations::Derived.set(), ops);
     std::fs::write(tmp.path().join("control.hex"), ctl).unwrap();
+    std::fs::write(tmp.path().join("expected.hex"), &want.text).unwrap();
     let d = vdir();
-    let (tb, arr) = if (cfg.width, cfg.height) == (16, 16) {
-        (d.join("tb_array.v"), d.join("pixel_array.v"))
-    } else {
+    let mut files: Vec<PathBuf> = [
+        "tb_array.v",
+        "pixel_array.v",
+        "depgen.v",
+        "pixel.v",
+        "comparator.v",
+        "sgene_derived.v",
+    ]
+    .iter()
+    .map(|f| d.join(f))
+    .collect();
+    if (cfg.width, cfg.height) != (16, 16) {
         let (tb, arr) = (
             tmp.path().join("tb_array.v"),
             tmp.path().join("pixel_array.v"),
         );
         std::fs::write(&tb, pixel::testbench(&cfg)).unwrap();
         std::fs::write(&arr, pixel::array_module(&cfg)).unwrap();
-        (tb, arr)
-    };
-    let pixel_v = match pixel_src {
-        Some(src) => {
-            let p = tmp.path().join("pixel.v");
-            std::fs::write(&p, src).unwrap();
-            p
-        }
-        None => d.join("pixel.v"),
-    };
-    let srcs: Vec<String> = [
-        tb,
-        arr,
-        pixel_v,
-        d.join("comparator.v"),
-        d.join("sgene_derived.v"),
-    ]
-    .iter()
-    .map(|f| f.to_str().unwrap().to_string())
-    .collect();
+        (files[0], files[1]) = (tb, arr);
+    }
+    for (name, src) in overrides {
+        let p = tmp.path().join(name);
+        std::fs::write(&p, src).unwrap();
+        let slot = files.iter().position(|f| f.ends_with(name)).expect(name);
+        files[slot] = p;
+    }
+    let srcs: Vec<String> = files
+        .iter()
+        .map(|f| f.to_str().unwrap().to_string())
+        .collect();
     let srcs: Vec<&str> = srcs.iter().map(String::as_str).collect();
     let text = if verilator {
-        let args = [
-            "--binary",
-            "--timing",
-            "-Wno-WIDTH",
-            "-Wno-fatal",
-            "-O2",
-            "-j",
-            "2",
-            "--top-module",
-            "tb_array",
-        ];
-        ok(
-            &run("verilator", &[&args[..], &srcs[..]].concat(), tmp.path()),
-            "verilator",
-        );
+        verilate(&srcs, "tb_array", tmp.path());
         ok(
             &run("obj_dir/Vtb_array", &["+ctl=control.hex"], tmp.path()),
             "verilated tb_array",
@@ -603,29 +675,62 @@ fn cosim_with(
             "vvp",
         )
     };
-    let (dumps, clocks) = parse_dumps(&text, &cfg);
-    // One idle clock after the program carries the `last` mark.
-    assert_eq!(clocks, cycles + 1, "clocks of the control stream");
-    assert_eq!(
-        dumps.len(),
-        states.len(),
-        "one dump per operation and the flush"
-    );
-    for (i, (want, got)) in states.iter().zip(&dumps).enumerate() {
-        let what = ops.get(i).map_or("flush".to_string(), |o| format!("{o:?}"));
-        if let Some(p) = (0..want.pixels.len()).find(|&p| want.pixels[p] != got[p]) {
-            return Err(format!(
-                "after operation {i} ({what}), pixel ({}, {}):\n cycle   {:?}\n verilog {:?}",
-                p % cfg.width,
-                p / cfg.width,
-                want.pixels[p],
-                got[p]
-            ));
-        }
+    let summary = text
+        .lines()
+        .find_map(|l| l.strip_prefix("CLOCKS "))
+        .unwrap_or_else(|| panic!("no summary:\n{text}"));
+    let w: Vec<u64> = summary
+        .split_whitespace()
+        .filter_map(|x| x.parse().ok())
+        .collect();
+    let (clocks, done_ops, bad) = (w[0], w[1], w[2]);
+    if let Some(m) = text.lines().find(|l| l.starts_with("MISMATCH ")) {
+        let f: Vec<&str> = m.split_whitespace().collect();
+        let t: u64 = f[1].parse().unwrap();
+        // The clocks of operation i (DEPGEN's fill is the first streaming window's) end
+        // with ends[i]; after the last, the flush window.
+        let what = match want.ends.iter().position(|&e| e >= t) {
+            Some(i) => format!("operation {i} ({:?})", ops[i]),
+            None => "the flush window".to_string(),
+        };
+        return Err(format!(
+            "clock {t}, in {what}: pixel ({}, {}) register {}: cycle {}, verilog {} \
+             ({bad} mismatches)",
+            f[2], f[3], f[4], f[5], f[6]
+        ));
     }
-    let last = states.last().unwrap();
-    let colours: BTreeSet<u32> = last.pixels.iter().map(|p| p.creg(CReg::G)).collect();
+    assert_eq!(bad, 0, "mismatches counted but none printed:\n{text}");
+    assert!(
+        !text.contains("EXPECTED ends") && !text.contains("CHECK off"),
+        "{text}"
+    );
+    // One idle clock after the program carries the `last` mark.
+    assert_eq!(clocks, want.cycles + 1, "clocks of the control stream");
+    let flush = (want.cycles > *want.ends.last().unwrap()) as u64;
+    assert_eq!(done_ops, ops.len() as u64 + flush, "operations ended");
+    let colours: BTreeSet<u32> = want.last.pixels.iter().map(|p| p.creg(CReg::G)).collect();
     Ok(colours.len())
+}
+
+/// Build `srcs` with Verilator (`--binary`, top `top`) in `dir`, the C++ compiled without
+/// optimization: the co-simulation runs are short (the 16×16 tb_array builds in about 35 s).
+fn verilate(srcs: &[&str], top: &str, dir: &Path) {
+    let args = [
+        "--binary",
+        "--timing",
+        "-Wno-WIDTH",
+        "-Wno-fatal",
+        "-j",
+        "2",
+        "-MAKEFLAGS",
+        "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0",
+        "--top-module",
+        top,
+    ];
+    ok(
+        &run("verilator", &[&args[..], srcs].concat(), dir),
+        "verilator",
+    );
 }
 
 /// 16×16 windows of the thesis scenes: (lists, clipping function, x0, y0, at least this many
@@ -660,16 +765,21 @@ fn icarus_array_equals_the_cycle_model_on_thesis_scenes() {
     }
 }
 
-/// Verilator on a 4×4 array (same generator; a 16×16 array takes Verilator about 40 s to
-/// build): the clipped boxes' corner where the three faces meet.
+/// Verilator on the checked-in 16×16 array: the clipped boxes (the window of the Icarus test,
+/// stack push, NOT, AND and apply) and, on a 4×4 array generated by the same functions
+/// (DEPGEN with 2 levels), their corner where the three faces meet.
 #[test]
 fn verilator_array_equals_the_cycle_model_on_the_clipped_boxes() {
     if !rtl_tools() {
         return;
     }
+    let (names, clip, x0, y0, min) = WINDOWS[2];
+    let ops = thesis_program(names, clip, x0, y0);
+    let colours = cosim(&ops, true);
+    assert!(colours >= min, "{colours} colours");
     let cfg = ArrayConfig::new(4, 4);
     let ops = thesis_program(&["box1", "box2"], Some("A.!B"), 204, 150);
-    let colours = cosim_with(cfg, &ops, true, None).unwrap_or_else(|e| panic!("{e}"));
+    let colours = cosim_with(cfg, &ops, true, &[]).unwrap_or_else(|e| panic!("{e}"));
     assert!(colours >= 2, "{colours} colours");
 }
 
@@ -692,9 +802,38 @@ fn array_cosimulation_catches_faulty_pixels() {
     ] {
         let bad = good.replace(from, to);
         assert_ne!(good, bad, "{from}");
-        let err = cosim_with(ArrayConfig::new(16, 16), &ops, false, Some(&bad)).expect_err(to);
-        assert!(err.starts_with("after operation "), "{err}");
+        let err =
+            cosim_with(ArrayConfig::new(16, 16), &ops, false, &[("pixel.v", bad)]).expect_err(to);
+        assert!(
+            err.starts_with("clock ") && err.contains(" register "),
+            "{err}"
+        );
+        eprintln!("caught {to}: {err}");
     }
+}
+
+/// A DEPGEN tree whose adders drop every carry: the lines are wrong from the first plane
+/// whose coefficient sums carry, and the per-clock check names the clock, a pixel and A.
+#[test]
+fn array_cosimulation_catches_a_depgen_tree_that_drops_carries() {
+    if !rtl_tools() {
+        return;
+    }
+    let good = std::fs::read_to_string(vdir().join("depgen.v")).unwrap();
+    let bad = good.replace(
+        "assign cn[i] = vi & add | cin & (vi ^ add);",
+        "assign cn[i] = 1'b0;",
+    );
+    assert_ne!(good, bad);
+    let (names, clip, x0, y0, _) = WINDOWS[0];
+    let ops = thesis_program(names, clip, x0, y0);
+    let err = cosim_with(ArrayConfig::new(16, 16), &ops, false, &[("depgen.v", bad)])
+        .expect_err("carries dropped");
+    assert!(
+        err.starts_with("clock ") && err.contains(" register A: "),
+        "{err}"
+    );
+    eprintln!("caught: {err}");
 }
 
 /// Speed of the cycle model against the Verilated array on the thesis cube, at 16×16 and
@@ -713,8 +852,7 @@ fn speed_of_the_cycle_model_against_verilator() {
     for n in [16, 32] {
         let cfg = ArrayConfig::new(n, n);
         let ops = thesis_program(&["cube"], None, 56, 90);
-        let (states, cycles) = cycle_states(cfg, &ops);
-        let want = states.last().unwrap();
+        let (want, cycles) = cycle_final(cfg, &ops);
         // The cycle model: whole runs until a second has passed.
         let t0 = Instant::now();
         let mut runs = 0u64;
@@ -735,7 +873,12 @@ fn speed_of_the_cycle_model_against_verilator() {
         std::fs::write(tmp.path().join("tb_bench.v"), pixel::bench_testbench(&cfg)).unwrap();
         std::fs::write(tmp.path().join("pixel_array.v"), pixel::array_module(&cfg)).unwrap();
         let p = |f: &str| d.join(f).to_str().unwrap().to_string();
-        let (pv, cv, sv) = (p("pixel.v"), p("comparator.v"), p("sgene_derived.v"));
+        let (dv, pv, cv, sv) = (
+            p("depgen.v"),
+            p("pixel.v"),
+            p("comparator.v"),
+            p("sgene_derived.v"),
+        );
         let tb = Instant::now();
         ok(
             &run(
@@ -752,6 +895,7 @@ fn speed_of_the_cycle_model_against_verilator() {
                     "tb_bench",
                     "tb_bench.v",
                     "pixel_array.v",
+                    &dv,
                     &pv,
                     &cv,
                     &sv,

@@ -51,6 +51,32 @@ pub struct CycleArray {
     seq: Sequencer,
     ops: usize,
     probe: Option<Recorder>,
+    observer: Option<Observer>,
+}
+
+/// One clock as [`CycleArray::observe`] reports it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Clock {
+    /// Clocks completed, this one included (the first clock is 1).
+    pub t: u64,
+    /// Bit k of the window in this clock; `None` for DEPGEN's fill and a stack operation.
+    pub bit: Option<u32>,
+    /// Whether the comparator took a bit in this clock.
+    pub compared: bool,
+}
+
+/// Called after every clock with the whole array as it is then.
+pub type Observer = Box<dyn FnMut(&CycleArray, Clock)>;
+
+/// The flip-flops of one pixel that [`Pixel`] leaves out or summarises: the DEPGEN adder's
+/// carry and the comparator's lt, eq, ovf, sign (`Pixel` holds the flags N J T M they give).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Internal {
+    pub carry: bool,
+    pub lt: bool,
+    pub eq: bool,
+    pub ovf: bool,
+    pub sign: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -118,6 +144,7 @@ impl CycleArray {
             seq: Sequencer::default(),
             ops: 0,
             probe: None,
+            observer: None,
             cfg,
             set,
         }
@@ -128,11 +155,56 @@ impl CycleArray {
     }
 
     fn chunk_rows(&self) -> usize {
+        if self.observer.is_some() {
+            // Observed clock by clock: the whole array is one chunk, so that every pixel is at
+            // the same clock when the observer looks.
+            return self.cfg.height;
+        }
         (CHUNK_WORDS / self.wpr).max(1)
+    }
+
+    /// Call `f` after every clock from now on, DEPGEN's fill and stack operations included,
+    /// with the array as it is after that clock (every register of every pixel: [`Self::pixel`],
+    /// [`Self::internal`]). The array is then swept as a whole, clock by clock, rather than in
+    /// chunks; the clocks and the results are the same. The stack pointer (the controller's, in
+    /// `state().sp`) moves after a clipping plane's last clock has been reported.
+    pub fn observe(&mut self, f: Observer) {
+        self.observer = Some(f);
+    }
+
+    fn notify(&mut self, clock: Clock) {
+        if let Some(mut f) = self.observer.take() {
+            f(self, clock);
+            self.observer = Some(f);
+        }
+    }
+
+    /// Pixel (x, y)'s DEPGEN carry and comparator flip-flops.
+    pub fn internal(&self, x: usize, y: usize) -> Internal {
+        let (w, lane) = (y * self.wpr + x / 64, x % 64);
+        let b = |v: u64| v >> lane & 1 == 1;
+        let c = self.cmp.get(w);
+        Internal {
+            carry: b(self.carry[w]),
+            lt: b(c.lt),
+            eq: b(c.eq),
+            ovf: b(c.ovf),
+            sign: b(c.sign),
+        }
     }
 
     fn window(&mut self, w: &Window) {
         let clocks = self.seq.window_clocks(&self.cfg, w);
+        if self.observer.is_some() {
+            let nd = self.nd() as u64;
+            for t in self.seq.cycles + 1..=self.seq.cycles + clocks - nd {
+                self.notify(Clock {
+                    t,
+                    bit: None,
+                    compared: false,
+                });
+            }
+        }
         let plan = Plan {
             transfer: self.seq.pending.take(),
             lines: w.stream.map(|(c, _)| self.depgen.stream(&c)),
@@ -176,7 +248,10 @@ impl CycleArray {
                     ) = (c.lt, c.eq, c.ovf, c.sign);
                 }
             }
-            self.carry[words.clone()].fill(0);
+            if plan.lines.is_some() {
+                // The adder starts each plane with carry 0; otherwise it holds its last carry.
+                self.carry[words.clone()].fill(0);
+            }
             for k in 0..self.nd() {
                 if let Some(t) = &plan.transfer {
                     self.transfer_bit(t, k, words.clone(), &masks);
@@ -188,9 +263,18 @@ impl CycleArray {
                     self.compare_bit(k, lhs, rhs, words.clone());
                 }
                 self.sample(plan, k, rows.clone());
-            }
-            if let Some(d) = plan.decide {
-                self.decide(d, words);
+                if k + 1 == self.nd() {
+                    if let Some(d) = plan.decide {
+                        self.decide(d, words.clone());
+                    }
+                }
+                if self.observer.is_some() {
+                    self.notify(Clock {
+                        t: plan.start + k as u64 + 1,
+                        bit: Some(k as u32),
+                        compared: plan.compare.is_some(),
+                    });
+                }
             }
         }
         let nd = self.nd();
@@ -320,6 +404,13 @@ impl CycleArray {
         self.seq.sp = sp - pop + push;
         self.seq.cycles += 1;
         self.sample_all_probes();
+        if self.observer.is_some() {
+            self.notify(Clock {
+                t: self.seq.cycles,
+                bit: None,
+                compared: false,
+            });
+        }
     }
 
     /// One pixel's registers gathered from the bit-planes.
@@ -435,5 +526,84 @@ impl CycleArray {
         let words = (cfg.width.div_ceil(64) * cfg.height) as u64;
         let planes = 4 * cfg.fmt.bits() as u64 + 3 * cfg.colour_bits as u64 + 2 + 4 + 1;
         words * 8 * (planes + cfg.stack_depth as u64)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::program::Coeffs;
+    use crate::Equations;
+    use std::cell::RefCell;
+    use std::rc::Rc;
+
+    /// A front and a back plane, a clipping plane with NOT and apply, close and compose.
+    fn program() -> Vec<Op> {
+        let plane = |c0, dx, dy, colour, h| Op::Plane {
+            coeffs: Coeffs { c0, dx, dy },
+            colour,
+            interior: 5,
+            l: false,
+            s: true,
+            h,
+            y: false,
+        };
+        vec![
+            plane(40 << 10, 300, -200, 2, true),
+            plane(90 << 10, -100, 400, 3, false),
+            Op::Close { l: false },
+            Op::ClipPlane {
+                coeffs: Coeffs {
+                    c0: 60 << 10,
+                    dx: 500,
+                    dy: 0,
+                },
+                h: true,
+                y: false,
+                x: false,
+            },
+            Op::ClipNot,
+            Op::ClipApply,
+            Op::Compose { p: true },
+        ]
+    }
+
+    /// Observed clock by clock (one chunk), a many-chunk array ends where the unobserved one
+    /// does, the observer sees every clock once, and at each operation's last clock it sees
+    /// every pixel as `state()` shows it after the operation (the stack pointer, the
+    /// controller's, moves after the clock).
+    #[test]
+    fn observing_every_clock_changes_nothing_and_sees_every_clock() {
+        let cfg = ArrayConfig::new(130, 70);
+        let ops = program();
+        let mut plain = CycleArray::new(cfg, Equations::Derived.set());
+        plain.run(&ops).unwrap();
+        assert!(plain.chunk_rows() < cfg.height, "the plain run is chunked");
+
+        let seen: Rc<RefCell<Vec<(Clock, ArchState)>>> = Rc::default();
+        let log = Rc::clone(&seen);
+        let mut obs = CycleArray::new(cfg, Equations::Derived.set());
+        obs.observe(Box::new(move |a, c| log.borrow_mut().push((c, a.state()))));
+        let mut after = vec![];
+        for op in &ops {
+            obs.step(op).unwrap();
+            after.push((obs.cycles(), obs.state()));
+        }
+        obs.finish();
+        assert_eq!(obs.cycles(), plain.cycles());
+        assert_eq!(obs.state(), plain.state());
+        let seen = seen.borrow();
+        let clocks: Vec<u64> = seen.iter().map(|(c, _)| c.t).collect();
+        assert_eq!(clocks, (1..=plain.cycles()).collect::<Vec<_>>());
+        // DEPGEN's fill: idle clocks before the first window.
+        let fill = cfg.depgen_latency() as usize;
+        assert!(seen[..fill].iter().all(|(c, _)| c.bit.is_none()));
+        assert_eq!(seen[fill].0.bit, Some(0));
+        for (t, state) in after {
+            let got = &seen[t as usize - 1].1;
+            let diff = (0..state.pixels.len()).find(|&i| got.pixels[i] != state.pixels[i]);
+            assert_eq!(diff, None, "clock {t}");
+        }
+        assert!(seen.last().unwrap().1.pixels == plain.state().pixels);
     }
 }

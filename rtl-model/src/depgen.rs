@@ -10,9 +10,11 @@
 //! `WordFormat::wrap` says.
 //!
 //! Pipeline: each level is a registered adder, so a bit reaches the pixel
-//! [`ArrayConfig::depgen_latency`] clocks after it left the root. In a stream of planes that is
-//! paid once; this model computes each clock's tree outputs directly and the array adds the
-//! latency to its clock count.
+//! [`ArrayConfig::depgen_latency`] clocks after the controller presented it at the root. In a
+//! stream of planes that is paid once; this model computes each clock's tree outputs directly
+//! and the array adds the latency to its clock count. The Verilog trees
+//! (`crate::verilog::depgen`, `rtl-model/verilog/depgen.v`) are the pipelined version, and
+//! the co-simulation checks that the two put the same bits into A in the same clocks.
 //!
 //! [`ArrayConfig::depgen_latency`]: crate::state::ArrayConfig::depgen_latency
 

@@ -59,7 +59,9 @@ impl ArrayConfig {
     }
 
     /// Pipeline latency of DEPGEN in clocks: one registered adder per level of the x and y trees
-    /// (which run side by side) and the pixel's own adder.
+    /// (which run side by side) and the flip-flops that take the coefficient bits in at the
+    /// root (§2.4). A bit the controller presents in clock t is on the lines in clock t + L,
+    /// and the pixel's adder writes it into A in that clock (`depgen.v` does exactly this).
     pub fn depgen_latency(&self) -> u64 {
         let levels = |n: usize| usize::BITS - (n.max(1) - 1).leading_zeros();
         levels(self.width).max(levels(self.height)) as u64 + 1

@@ -31,7 +31,7 @@ module pixel #(parameter F = 10, I = 10, O = 11, CB = 8, SD = 8) (
     input wire rst,
     input wire col_bit, row_bit,
     output wire [CB-1:0] image,
-    output wire [4*(F+I+O+1)+3*CB+6+SD-1:0] state
+    output wire [4*(F+I+O+1)+3*CB+11+$clog2(F+I+O+1)+SD-1:0] state
 );
     localparam W = F + I + O + 1;
     reg [W-1:0] rA, rF, rB, rC;
@@ -66,9 +66,10 @@ module pixel #(parameter F = 10, I = 10, O = 11, CB = 8, SD = 8) (
     // compare: the operands as written this clock.
     wire [3:0] nxt = {nC, nB, nF, nA};
     wire N, J, T, M, Nn, Jn, Tn, Mn;
+    wire [$clog2(W)+3:0] cmp_regs;
     comparator #(.F(F), .I(I), .O(O)) cmp(.clk(clk), .rst(rst), .en(cmp_en), .first(first),
         .a(nxt[lhs]), .r(nxt[rhs]), .N(N), .J(J), .T(T), .M(M),
-        .Nn(Nn), .Jn(Jn), .Tn(Tn), .Mn(Mn));
+        .Nn(Nn), .Jn(Jn), .Tn(Tn), .Mn(Mn), .regs(cmp_regs));
 
     // SGENE on the flags after this clock; the stage selector picks the pair.
     wire front_S1, front_S2, back_S1, back_S2, close_S1, close_S2, clip_LL, second_S3, second_S4;
@@ -122,6 +123,7 @@ module pixel #(parameter F = 10, I = 10, O = 11, CB = 8, SD = 8) (
         end
     end
     assign image = rG;
-    // Observation: every register, {stack, M, T, J, N, S_lo, S_hi, G, E, D, C, B, A}.
-    assign state = {stack, M, T, J, N, s_lo, s_hi, rG, rE, rD, rC, rB, rF, rA};
+    // Observation: every register and the flags, {stack, carry, comparator {k, sign, ovf,
+    // eq, lt}, M, T, J, N, S_lo, S_hi, G, E, D, C, B, F, A} (pixel.rs state_fields).
+    assign state = {stack, carry, cmp_regs, M, T, J, N, s_lo, s_hi, rG, rE, rD, rC, rB, rF, rA};
 endmodule

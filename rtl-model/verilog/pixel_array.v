@@ -1,5 +1,7 @@
-// An NX×NY array of pixel processors (seed 001 Figure 2.8): one control word for all;
-// DEPGEN's column lines (x·dx) and row lines (c0 + y·dy) come in bit-serially, LSB first.
+// An NX×NY array of pixel processors (seed 001 Figure 2.8): one control word for all,
+// and DEPGEN (§2.4): the x tree puts x*dx on column line x, the y tree c0 + y*dy on row
+// line y, from the coefficient bits dg_c0, dg_dx, dg_dy (LSB first, dg_first with bit 0),
+// LEVELS + 1 clocks after the controller presents them.
 module pixel_array #(parameter NX = 16, NY = 16) (
     input wire clk,
     input wire win,
@@ -26,10 +28,16 @@ module pixel_array #(parameter NX = 16, NY = 16) (
     input wire [1:0] stk_op,
     input wire [5:0] sp,
     input wire rst,
-    input wire [NX-1:0] col,
-    input wire [NY-1:0] row,
+    input wire dg_first, dg_c0, dg_dx, dg_dy,
     output wire [NX*NY*8-1:0] image
 );
+    localparam LEVELS = $clog2(NX) > $clog2(NY) ? $clog2(NX) : $clog2(NY);
+    wire [NX-1:0] col;
+    wire [NY-1:0] row;
+    depgen_tree #(.N(NX), .LEVELS(LEVELS)) xtree(.clk(clk), .rst(rst), .first(dg_first),
+        .root(1'b0), .d(dg_dx), .line(col));
+    depgen_tree #(.N(NY), .LEVELS(LEVELS)) ytree(.clk(clk), .rst(rst), .first(dg_first),
+        .root(dg_c0), .d(dg_dy), .line(row));
     genvar x, y;
     generate
         for (y = 0; y < NY; y = y + 1) begin : gy

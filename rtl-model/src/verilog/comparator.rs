@@ -18,7 +18,8 @@ pub fn module(fmt: &WordFormat) -> String {
 module comparator #(parameter F = {f}, I = {i}, O = {o}) (
     input wire clk, rst, en, first, a, r,
     output wire N, J, T, M,
-    output wire Nn, Jn, Tn, Mn
+    output wire Nn, Jn, Tn, Mn,
+    output wire [$clog2(F+I+O+1)+3:0] regs
 );
     localparam W = F + I + O + 1, KW = $clog2(W);
     reg [KW-1:0] k;
@@ -27,6 +28,7 @@ module comparator #(parameter F = {f}, I = {i}, O = {o}) (
     wire lt0 = first ? 1'b0 : lt;
     wire eq0 = first ? 1'b1 : eq;
     wire ovf0 = first ? 1'b0 : ovf;
+    wire sign0 = first ? 1'b0 : sign;
     wire is_sign = bit_k == W - 1;
     wire is_ovf = bit_k >= F + I && bit_k < W - 1;
     wire diff = a ^ r;
@@ -34,7 +36,7 @@ module comparator #(parameter F = {f}, I = {i}, O = {o}) (
     wire lt_n = diff ? a_smaller : lt0;
     wire eq_n = eq0 & ~diff;
     wire ovf_n = ovf0 | (is_ovf & a);
-    wire sign_n = is_sign ? a : sign;
+    wire sign_n = is_sign ? a : sign0;
     always @(posedge clk) begin
         if (rst) begin
             k <= {{KW{{1'b0}}}};
@@ -58,6 +60,8 @@ module comparator #(parameter F = {f}, I = {i}, O = {o}) (
     assign Jn = lt_n | eq_n;
     assign Tn = eq_n;
     assign Mn = ovf_n & ~sign_n;
+    // Observation: every flip-flop, {{k, sign, ovf, eq, lt}}.
+    assign regs = {{k, sign, ovf, eq, lt}};
 endmodule
 ",
         f = fmt.frac,

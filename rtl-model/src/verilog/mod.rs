@@ -1,13 +1,14 @@
 //! A Verilog-2005 twin of the select logic (SGENE, seed 001 §2.3.3-2.3.5), written from the
 //! same equation sets the Rust models evaluate, the bit-serial comparator, one pixel processor
-//! and an array of them driven by a per-clock control stream ([`pixel`]), and the files that
-//! check them.
+//! and an array of them with DEPGEN's adder trees (§2.4, [`depgen`]) driven by a per-clock
+//! control stream ([`pixel`]), and the files that check them.
 //!
 //! [`files`] is everything `csgpix export-verilog` writes (checked in under
 //! `rtl-model/verilog/`); docs/verilog.md says how each file is used.
 
 pub mod check;
 pub mod comparator;
+pub mod depgen;
 pub mod pixel;
 pub mod sgene;
 
@@ -26,8 +27,8 @@ pub fn golden() -> Result<Vec<(Table, Pla)>, String> {
         .collect()
 }
 
-/// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE;
-/// generic gates and LUT4s for the comparator.
+/// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE and
+/// for the whole pixel; generic gates and LUT4s for the comparator and for one DEPGEN tree.
 fn cost_script() -> String {
     let mut v = String::from(
         "# Cost of SGENE (generic cells, LUT4, LUT6) and of the comparator (generic, LUT4).\n\
@@ -52,6 +53,10 @@ fn cost_script() -> String {
     v += &format!(
         "{px}synth -top pixel -flatten\nabc -lut 6\nopt_clean\nlog COST pixel lut6\nstat\n"
     );
+    // One DEPGEN tree of the 16×16 array (16 lines, 4 levels); an array has two.
+    let dg = "design -reset\nread_verilog depgen.v\nchparam -set N 16 -set LEVELS 4 depgen_tree\n";
+    v += &format!("{dg}synth -top depgen_tree\nlog COST depgen generic\nstat\n");
+    v += &format!("{dg}synth -top depgen_tree -lut 4\nlog COST depgen lut4\nstat\n");
     v
 }
 
@@ -80,6 +85,7 @@ pub fn files() -> Result<Vec<(String, String)>, String> {
     let cfg = crate::ArrayConfig::new(16, 16);
     let derived = Equations::Derived.set();
     out.push(("pixel.v".to_string(), pixel::pixel_module(&cfg, &derived)));
+    out.push(("depgen.v".to_string(), depgen::module()));
     out.push(("pixel_array.v".to_string(), pixel::array_module(&cfg)));
     out.push(("tb_array.v".to_string(), pixel::testbench(&cfg)));
     out.push(("cost.ys".to_string(), cost_script()));

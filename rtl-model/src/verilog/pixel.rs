@@ -4,12 +4,14 @@
 //! * [`pixel_module`]: registers A F B C (depth, circulating shift registers, bit k at bit 0
 //!   in clock k), D E G (colour), the latched code S_hi S_lo, the pixel's DEPGEN adder (one
 //!   carry flip-flop), the comparator, SGENE (`derived`), TRANSD/TRANSC and the clipping stack.
-//! * [`array_module`]: `pixel_array`, NX×NY pixels sharing the control word; pixel (x, y) adds
-//!   column line x and row line y. The DEPGEN trees that drive the lines are in the controller
-//!   (here the testbench's control stream: `x·dx` on column x, `c0 + y·dy` on row y, modulo
-//!   2^N_D, LSB first), not in Verilog.
-//! * [`testbench`]: `tb_array` reads a control stream (`$readmemh`), clocks it into the array
-//!   and prints every register of every pixel where the stream says so (after each operation).
+//! * [`array_module`]: `pixel_array`, NX×NY pixels sharing the control word, and DEPGEN's
+//!   two trees (`depgen_tree`, [`super::depgen`], §2.4): the x tree puts `x·dx` on column
+//!   line x, the y tree `c0 + y·dy` on row line y (modulo 2^N_D, LSB first), from the plane
+//!   coefficients' bits in the control word; pixel (x, y) adds column x and row y.
+//! * [`testbench`]: `tb_array` reads a control stream (`$readmemh`) and the expected state of
+//!   every pixel after every clock (written by the tests from the `cycle` model), clocks the
+//!   stream into the array and compares every register of every pixel after every clock,
+//!   naming the clock, the pixel and the register of each mismatch.
 //! * [`control_stream`]: the stream of a program, one word per clock, from [`Window::of`] and
 //!   the same sequencing as the models (pending transfer, stack pointer, DEPGEN fill).
 //!
@@ -23,11 +25,12 @@ use crate::program::{stack_effect, CReg, Decide, Decode, Op, Reg, Transfer, Wind
 use crate::select::EquationSet;
 use crate::state::ArrayConfig;
 
-/// Control word fields: (name, first bit, width). The column and row line bits follow at
-/// [`LINES`]: column x at `LINES + x`, row y at `LINES + NX + y`.
+/// Control word fields: (name, first bit, width). `dg_*` are DEPGEN's root inputs: bit k of
+/// a plane's c0, dx and dy, [`ArrayConfig::depgen_latency`] clocks before the window's clock k
+/// (`dg_first` with bit 0); the trees in `pixel_array` turn them into the line bits.
 pub const FIELDS: [(&str, usize, usize); 30] = [
     ("last", 0, 1),
-    ("dump", 1, 1),
+    ("op_end", 1, 1),
     ("win", 2, 1),
     ("col_en", 3, 1),
     ("first", 4, 1),
@@ -52,14 +55,14 @@ pub const FIELDS: [(&str, usize, usize); 30] = [
     ("stk_en", 34, 1),
     ("stk_op", 35, 2),
     ("sp", 37, 6),
-    ("spare0", 43, 1),
-    ("spare1", 44, 1),
-    ("spare2", 45, 1),
-    ("spare3", 46, 1),
+    ("dg_first", 43, 1),
+    ("dg_c0", 44, 1),
+    ("dg_dx", 45, 1),
+    ("dg_dy", 46, 1),
 ];
 
-/// First bit of the line bits.
-pub const LINES: usize = 48;
+/// Bits of the control word.
+pub const CW: usize = 48;
 
 fn field(name: &str) -> (usize, usize) {
     let f = FIELDS.iter().find(|f| f.0 == name).expect("field");
@@ -140,7 +143,7 @@ module pixel #(parameter F = {ff}, I = {ii}, O = {oo}, CB = {cb}, SD = {sd}) (
     input wire clk,
 {ports}    input wire col_bit, row_bit,
     output wire [CB-1:0] image,
-    output wire [4*(F+I+O+1)+3*CB+6+SD-1:0] state
+    output wire [4*(F+I+O+1)+3*CB+11+$clog2(F+I+O+1)+SD-1:0] state
 );
     localparam W = F + I + O + 1;
     reg [W-1:0] rA, rF, rB, rC;
@@ -175,9 +178,10 @@ module pixel #(parameter F = {ff}, I = {ii}, O = {oo}, CB = {cb}, SD = {sd}) (
     // compare: the operands as written this clock.
     wire [3:0] nxt = {{nC, nB, nF, nA}};
     wire N, J, T, M, Nn, Jn, Tn, Mn;
+    wire [$clog2(W)+3:0] cmp_regs;
     comparator #(.F(F), .I(I), .O(O)) cmp(.clk(clk), .rst(rst), .en(cmp_en), .first(first),
         .a(nxt[lhs]), .r(nxt[rhs]), .N(N), .J(J), .T(T), .M(M),
-        .Nn(Nn), .Jn(Jn), .Tn(Tn), .Mn(Mn));
+        .Nn(Nn), .Jn(Jn), .Tn(Tn), .Mn(Mn), .regs(cmp_regs));
 
     // SGENE on the flags after this clock; the stage selector picks the pair.
     wire front_S1, front_S2, back_S1, back_S2, close_S1, close_S2, clip_LL, second_S3, second_S4;
@@ -231,8 +235,9 @@ module pixel #(parameter F = {ff}, I = {ii}, O = {oo}, CB = {cb}, SD = {sd}) (
         end
     end
     assign image = rG;
-    // Observation: every register, {{stack, M, T, J, N, S_lo, S_hi, G, E, D, C, B, A}}.
-    assign state = {{stack, M, T, J, N, s_lo, s_hi, rG, rE, rD, rC, rB, rF, rA}};
+    // Observation: every register and the flags, {{stack, carry, comparator {{k, sign, ovf,
+    // eq, lt}}, M, T, J, N, S_lo, S_hi, G, E, D, C, B, F, A}} (pixel.rs state_fields).
+    assign state = {{stack, carry, cmp_regs, M, T, J, N, s_lo, s_hi, rG, rE, rD, rC, rB, rF, rA}};
 endmodule
 ",
         set = set.name,
@@ -245,17 +250,28 @@ endmodule
     )
 }
 
-/// `pixel_array`: NX×NY pixels on the broadcast control, column line x and row line y.
+/// `pixel_array`: NX×NY pixels on the broadcast control word and DEPGEN's two trees
+/// (`depgen_tree`, §2.4): the x tree puts `x·dx` on column line x, the y tree `c0 + y·dy` on
+/// row line y, and pixel (x, y) adds the two. Both trees get the larger number of levels, so
+/// a plane's bit k presented on `dg_*` reaches every pixel `LEVELS + 1` clocks later.
 pub fn array_module(cfg: &ArrayConfig) -> String {
     format!(
-        "// An NX×NY array of pixel processors (seed 001 Figure 2.8): one control word for all;
-// DEPGEN's column lines (x·dx) and row lines (c0 + y·dy) come in bit-serially, LSB first.
+        "// An NX×NY array of pixel processors (seed 001 Figure 2.8): one control word for all,
+// and DEPGEN (§2.4): the x tree puts x*dx on column line x, the y tree c0 + y*dy on row
+// line y, from the coefficient bits dg_c0, dg_dx, dg_dy (LSB first, dg_first with bit 0),
+// LEVELS + 1 clocks after the controller presents them.
 module pixel_array #(parameter NX = {nx}, NY = {ny}) (
     input wire clk,
-{ports}    input wire [NX-1:0] col,
-    input wire [NY-1:0] row,
+{ports}    input wire dg_first, dg_c0, dg_dx, dg_dy,
     output wire [NX*NY*{cb}-1:0] image
 );
+    localparam LEVELS = $clog2(NX) > $clog2(NY) ? $clog2(NX) : $clog2(NY);
+    wire [NX-1:0] col;
+    wire [NY-1:0] row;
+    depgen_tree #(.N(NX), .LEVELS(LEVELS)) xtree(.clk(clk), .rst(rst), .first(dg_first),
+        .root(1'b0), .d(dg_dx), .line(col));
+    depgen_tree #(.N(NY), .LEVELS(LEVELS)) ytree(.clk(clk), .rst(rst), .first(dg_first),
+        .root(dg_c0), .d(dg_dy), .line(row));
     genvar x, y;
     generate
         for (y = 0; y < NY; y = y + 1) begin : gy
@@ -276,12 +292,43 @@ endmodule
     )
 }
 
-/// `tb_array`: reads the control stream named by `+ctl=FILE` (default `control.hex`), one
-/// word per clock until the word with `last`, and after every word with `dump` prints one
-/// line per pixel: `P op x y A F B C D E G S_hi S_lo N J T M stack` (hex, flags binary).
-pub fn testbench(cfg: &ArrayConfig) -> String {
-    let (nx, ny) = (cfg.width, cfg.height);
-    let cw = LINES + nx + ny;
+/// The fields of a pixel's `state` port, LSB first: (name, bits). Every register of the
+/// pixel (A F B C, D E G, S_hi S_lo, the comparator's lt eq ovf sign and bit counter k, the
+/// DEPGEN adder's carry, the stack) and the flags N J T M the comparator derives.
+pub fn state_fields(cfg: &ArrayConfig) -> Vec<(&'static str, usize)> {
+    let (w, cb) = (cfg.fmt.bits() as usize, cfg.colour_bits as usize);
+    let kw = (usize::BITS - (w - 1).leading_zeros()) as usize;
+    vec![
+        ("A", w),
+        ("F", w),
+        ("B", w),
+        ("C", w),
+        ("D", cb),
+        ("E", cb),
+        ("G", cb),
+        ("S_hi", 1),
+        ("S_lo", 1),
+        ("N", 1),
+        ("J", 1),
+        ("T", 1),
+        ("M", 1),
+        ("lt", 1),
+        ("eq", 1),
+        ("ovf", 1),
+        ("sign", 1),
+        ("k", kw),
+        ("carry", 1),
+        ("stack", cfg.stack_depth),
+    ]
+}
+
+/// Bits of a pixel's `state` port.
+pub fn state_width(cfg: &ArrayConfig) -> usize {
+    state_fields(cfg).iter().map(|f| f.1).sum()
+}
+
+/// The module header, the array and its control connections, shared by both testbenches.
+fn tb_common(cfg: &ArrayConfig, name: &str) -> String {
     let conns: String = PORTS
         .iter()
         .map(|(n, _)| {
@@ -291,70 +338,151 @@ pub fn testbench(cfg: &ArrayConfig) -> String {
                 format!("        .{n}({}),\n", slice(n))
             }
         })
+        .chain(
+            ["dg_first", "dg_c0", "dg_dx", "dg_dy"]
+                .iter()
+                .map(|n| format!("        .{n}({}),\n", slice(n))),
+        )
         .collect();
-    let mut dump = String::new();
-    for y in 0..cfg.height {
-        for x in 0..cfg.width {
-            dump += &format!("            s = dut.gy[{y}].gx[{x}].p.state; show({x}, {y});\n");
-        }
-    }
     format!(
-        "// Runs a control stream through pixel_array and prints every register of every pixel
-// after each operation; generated, do not edit. Control word fields: see pixel.rs FIELDS.
-module tb_array;
-    localparam NX = {nx}, NY = {ny}, CW = {cw}, MAXCLK = 1 << 20;
+        "module {name};
+    localparam NX = {nx}, NY = {ny}, CW = {CW}, MAXCLK = 1 << 20;
+    localparam SW = {sw};
     reg clk = 0, rst = 1;
     reg [CW-1:0] mem [0:MAXCLK-1];
     reg [CW-1:0] c = {{CW{{1'b0}}}};
     reg [8*256-1:0] file;
     reg done = 0;
     integer t = 0, ops = 0;
-    localparam W = {w}, CB = {cb}, SD = {sd}, SW = {sw};
-    wire [NX*NY*CB-1:0] image;
-    reg [SW-1:0] s;
+    wire [NX*NY*{cb}-1:0] image;
     pixel_array #(.NX(NX), .NY(NY)) dut(.clk(clk),
-{conns}        .col(c[{lines}+NX-1:{lines}]), .row(c[{lines}+NX+NY-1:{lines}+NX]),
-        .image(image));
-    task show(input integer x, input integer y);
+{conns}        .image(image));
+",
+        nx = cfg.width,
+        ny = cfg.height,
+        cb = cfg.colour_bits,
+        sw = state_width(cfg),
+    )
+}
+
+/// `tb_array`: reads the control stream `+ctl=FILE` (default `control.hex`, one word per
+/// clock until the word with `last`) and the expected states `+exp=FILE` (default
+/// `expected.hex`): after every clock, one line per pixel (row-major), the pixel's `state` in
+/// hex. After each clock it compares every field of every pixel's `state` with the expected
+/// line and prints `MISMATCH clock x y field expected got` (it stops after the clock with the
+/// 20th), then `CLOCKS n OPS m MISMATCHES b`. Without the expected file it only runs (`CHECK
+/// off`).
+pub fn testbench(cfg: &ArrayConfig) -> String {
+    let mut fields = String::new();
+    let mut lo = 0;
+    for (name, w) in state_fields(cfg) {
+        fields += &format!("                field(\"{name}\", {lo}, {w}, x, y);\n");
+        lo += w;
+    }
+    let mut all = String::new();
+    for y in 0..cfg.height {
+        for x in 0..cfg.width {
+            all += &format!(
+                "            st[{}] = dut.gy[{y}].gx[{x}].p.state;\n",
+                y * cfg.width + x
+            );
+        }
+    }
+    format!(
+        "// Runs a control stream through pixel_array and compares every register of every pixel
+// with the expected state after every clock; generated, do not edit. Control word fields:
+// pixel.rs FIELDS; state fields: pixel.rs state_fields.
+{common}    reg [8*256-1:0] efile;
+    reg [SW-1:0] s, e;
+    reg [SW-1:0] st [0:NX*NY-1];
+    integer fd, n, p, bad = 0;
+    task field(input [8*8-1:0] name, input integer lo, input integer w, input integer x,
+            input integer y);
+        reg [SW-1:0] m;
         begin
-            $display(\"P %0d %0d %0d %h %h %h %h %h %h %h %b %b %b %b %b %b %h\", ops, x, y,
-                s[W-1:0], s[2*W-1:W], s[3*W-1:2*W], s[4*W-1:3*W],
-                s[4*W+CB-1:4*W], s[4*W+2*CB-1:4*W+CB], s[4*W+3*CB-1:4*W+2*CB],
-                s[4*W+3*CB], s[4*W+3*CB+1], s[4*W+3*CB+2], s[4*W+3*CB+3], s[4*W+3*CB+4],
-                s[4*W+3*CB+5], s[SW-1:4*W+3*CB+6]);
+            m = ({{SW{{1'b1}}}} >> (SW - w)) << lo;
+            if ((s & m) !== (e & m)) begin
+                bad = bad + 1;
+                if (bad <= 20)
+                    $display(\"MISMATCH %0d %0d %0d %0s %0h %0h\", t + 1, x, y, name,
+                        (e & m) >> lo, (s & m) >> lo);
+            end
         end
     endtask
-    task dump;
+    task check(input integer x, input integer y);
         begin
-{dump}        end
+            n = $fscanf(fd, \"%h\\n\", e);
+            if (n != 1) begin
+                $display(\"EXPECTED ends before clock %0d\", t + 1);
+                $finish;
+            end
+            if (s !== e) begin
+{fields}            end
+        end
+    endtask
+    task check_all;
+        begin
+{all}            for (p = 0; p < NX * NY; p = p + 1) begin
+                s = st[p];
+                check(p % NX, p / NX);
+            end
+        end
     endtask
     initial begin
         if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
+        if (!$value$plusargs(\"exp=%s\", efile)) efile = \"expected.hex\";
         $readmemh(file, mem);
+        fd = $fopen(efile, \"r\");
+        if (fd == 0) $display(\"CHECK off\");
         #1 clk = 1; #1 clk = 0; rst = 0;
-        while (!done) begin
+        while (!done && bad < 20) begin
             c = mem[t];
             #1 clk = 1; #1 clk = 0;
-            if (c[1]) begin dump; ops = ops + 1; end
+            if (fd != 0) check_all;
+            if (c[1]) ops = ops + 1;
             done = c[0];
             t = t + 1;
         end
-        $display(\"CLOCKS %0d OPS %0d\", t, ops);
+        $display(\"CLOCKS %0d OPS %0d MISMATCHES %0d\", t, ops, bad);
         $finish;
     end
 endmodule
 ",
-        cb = cfg.colour_bits,
-        w = cfg.fmt.bits(),
-        sd = cfg.stack_depth,
-        sw = state_width(cfg),
-        lines = LINES,
+        common = tb_common(cfg, "tb_array"),
     )
 }
 
-/// Bits of a pixel's `state` port: A F B C, D E G, S_hi S_lo, N J T M, the stack.
-pub fn state_width(cfg: &ArrayConfig) -> usize {
-    4 * cfg.fmt.bits() as usize + 3 * cfg.colour_bits as usize + 6 + cfg.stack_depth
+/// `tb_bench`: runs the control stream `+reps=R` times (default 1) through `pixel_array` with
+/// no checks, for timing, then prints `IMAGE` and the image (G of every pixel, pixel (0, 0) in
+/// the low byte, hex) and `CLOCKS` with the clocks run. Not checked in: the speed test writes
+/// it for each array size.
+pub fn bench_testbench(cfg: &ArrayConfig) -> String {
+    format!(
+        "// Runs a control stream R times through pixel_array for timing; generated.
+{common}    integer reps, r, clocks = 0;
+    initial begin
+        if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
+        if (!$value$plusargs(\"reps=%d\", reps)) reps = 1;
+        $readmemh(file, mem);
+        #1 clk = 1; #1 clk = 0; rst = 0;
+        for (r = 0; r < reps; r = r + 1) begin
+            done = 0; t = 0;
+            while (!done) begin
+                c = mem[t];
+                #1 clk = 1; #1 clk = 0;
+                done = c[0];
+                t = t + 1;
+                clocks = clocks + 1;
+            end
+        end
+        $display(\"IMAGE %h\", image);
+        $display(\"CLOCKS %0d\", clocks);
+        $finish;
+    end
+endmodule
+",
+        common = tb_common(cfg, "tb_bench"),
+    )
 }
 
 /// One clock's control word.
@@ -362,8 +490,8 @@ pub fn state_width(cfg: &ArrayConfig) -> usize {
 struct Word(Vec<bool>);
 
 impl Word {
-    fn new(cfg: &ArrayConfig) -> Word {
-        Word(vec![false; LINES + cfg.width + cfg.height])
+    fn new() -> Word {
+        Word(vec![false; CW])
     }
 
     fn set(&mut self, name: &str, v: u64) {
@@ -393,11 +521,16 @@ fn reg_code(r: Reg) -> u64 {
 }
 
 /// The control stream of `ops` (checked with [`crate::array::check_program`] first): one hex
-/// word per line, one line per clock, `dump` on the last clock of every operation and of the
-/// flush window, `last` on the final clock. Clocks = the models' cycle count.
+/// word per line, one line per clock, `op_end` on the last clock of every operation and of the
+/// flush window, `last` on an idle clock after them. Clocks = the models' cycle count. DEPGEN's
+/// root bits of a streamed plane (c0, dx, dy, LSB first) go [`ArrayConfig::depgen_latency`]
+/// clocks ahead of the window that takes them into A: the fill the models count before the
+/// first stream is the trees' pipeline, and later planes overlap the windows before them.
 pub fn control_stream(cfg: &ArrayConfig, set: &EquationSet, ops: &[Op]) -> String {
     let nd = cfg.fmt.bits() as usize;
-    let mask = cfg.fmt.mask();
+    let lat = cfg.depgen_latency() as usize;
+    // (clock, coefficients, bit k): clock takes bit k of the plane into A.
+    let mut roots: Vec<(usize, i64, i64, i64, usize)> = vec![];
     let mut seq = Sequencer::default();
     let mut words: Vec<Word> = vec![];
     let transfer = |w: &mut Word, t: &Transfer, k: usize| {
@@ -434,7 +567,7 @@ pub fn control_stream(cfg: &ArrayConfig, set: &EquationSet, ops: &[Op]) -> Strin
             Some(win) => {
                 let clocks = seq.window_clocks(cfg, &win) as usize;
                 for _ in nd..clocks {
-                    words.push(Word::new(cfg));
+                    words.push(Word::new());
                 }
                 let (l, s, h, y, x, p) = match *op {
                     Op::Plane { l, s, h, y, .. } => (l, s, h, y, false, false),
@@ -448,7 +581,7 @@ pub fn control_stream(cfg: &ArrayConfig, set: &EquationSet, ops: &[Op]) -> Strin
                     .enumerate()
                     .fold(0, |a, (i, b)| a | (*b as u64) << i);
                 for k in 0..nd {
-                    let mut w = Word::new(cfg);
+                    let mut w = Word::new();
                     clock(&mut w, k);
                     w.set("cmp_en", 1);
                     w.set("lhs", reg_code(win.lhs));
@@ -456,14 +589,7 @@ pub fn control_stream(cfg: &ArrayConfig, set: &EquationSet, ops: &[Op]) -> Strin
                     w.set("ext", ext);
                     if let Some((c, colour)) = win.stream {
                         w.set("st_en", 1);
-                        for xi in 0..cfg.width {
-                            let v = (xi as i64).wrapping_mul(c.dx) as u64 & mask;
-                            w.0[LINES + xi] = v >> k & 1 == 1;
-                        }
-                        for yi in 0..cfg.height {
-                            let v = c.c0.wrapping_add((yi as i64).wrapping_mul(c.dy)) as u64 & mask;
-                            w.0[LINES + cfg.width + yi] = v >> k & 1 == 1;
-                        }
+                        roots.push((words.len(), c.c0, c.dx, c.dy, k));
                         if let Some(col) = colour {
                             if k < cfg.colour_bits as usize {
                                 w.set("d_en", 1);
@@ -475,7 +601,7 @@ pub fn control_stream(cfg: &ArrayConfig, set: &EquationSet, ops: &[Op]) -> Strin
                         transfer(&mut w, t, k);
                     }
                     if k == nd - 1 {
-                        w.set("dump", 1);
+                        w.set("op_end", 1);
                         w.set("sp", seq.sp as u64);
                         match win.decide {
                             Decide::Latch(..) => {
@@ -493,9 +619,9 @@ pub fn control_stream(cfg: &ArrayConfig, set: &EquationSet, ops: &[Op]) -> Strin
                 seq.pending = win.transfer;
             }
             None => {
-                let mut w = Word::new(cfg);
+                let mut w = Word::new();
                 w.set("stk_en", 1);
-                w.set("dump", 1);
+                w.set("op_end", 1);
                 w.set("sp", seq.sp as u64);
                 w.set(
                     "stk_op",
@@ -517,55 +643,24 @@ pub fn control_stream(cfg: &ArrayConfig, set: &EquationSet, ops: &[Op]) -> Strin
     }
     if let Some(t) = seq.pending.take() {
         for k in 0..nd {
-            let mut w = Word::new(cfg);
+            let mut w = Word::new();
             clock(&mut w, k);
             transfer(&mut w, &t, k);
-            w.set("dump", (k == nd - 1) as u64);
+            w.set("op_end", (k == nd - 1) as u64);
             words.push(w);
         }
     }
-    let mut end = Word::new(cfg);
+    let mut end = Word::new();
     end.set("last", 1);
     words.push(end);
+    for (at, c0, dx, dy, k) in roots {
+        let w = &mut words[at
+            .checked_sub(lat)
+            .expect("DEPGEN's fill precedes every stream")];
+        w.set("dg_first", (k == 0) as u64);
+        w.set("dg_c0", (c0 >> k & 1) as u64);
+        w.set("dg_dx", (dx >> k & 1) as u64);
+        w.set("dg_dy", (dy >> k & 1) as u64);
+    }
     words.iter().map(|w| w.hex() + "\n").collect()
-}
-
-/// `tb_bench`: runs the control stream `+reps=R` times (default 1) through `pixel_array` with
-/// no dumps, for timing, then prints `IMAGE` and the image (G of every pixel, pixel (0, 0) in
-/// the low byte, hex) and `CLOCKS` with the clocks run. Not checked in: the speed test writes
-/// it for each array size.
-pub fn bench_testbench(cfg: &ArrayConfig) -> String {
-    let tb = testbench(cfg).replace("module tb_array;", "module tb_bench;");
-    let start = tb.find("    task show").expect("show task");
-    let end = tb.find("    initial begin").expect("initial");
-    let tb = format!("{}{}", &tb[..start], &tb[end..]);
-    tb.replace(
-        "        #1 clk = 1; #1 clk = 0; rst = 0;
-        while (!done) begin
-            c = mem[t];
-            #1 clk = 1; #1 clk = 0;
-            if (c[1]) begin dump; ops = ops + 1; end
-            done = c[0];
-            t = t + 1;
-        end
-        $display(\"CLOCKS %0d OPS %0d\", t, ops);",
-        "        if (!$value$plusargs(\"reps=%d\", reps)) reps = 1;
-        #1 clk = 1; #1 clk = 0; rst = 0;
-        for (r = 0; r < reps; r = r + 1) begin
-            done = 0; t = 0;
-            while (!done) begin
-                c = mem[t];
-                #1 clk = 1; #1 clk = 0;
-                done = c[0];
-                t = t + 1;
-                clocks = clocks + 1;
-            end
-        end
-        $display(\"IMAGE %h\", image);
-        $display(\"CLOCKS %0d\", clocks);",
-    )
-    .replace(
-        "    integer t = 0, ops = 0;",
-        "    integer t = 0, ops = 0, reps, r, clocks = 0;",
-    )
 }
