@@ -556,11 +556,11 @@ fn state_hex(cfg: &ArrayConfig, p: &Pixel, i: &Internal, k: u64, bit: Option<u32
 
 /// Run `ops` on the cycle model clock by clock ([`CycleArray::observe`]) and write down every
 /// register of every pixel after every clock.
-fn expected_states(cfg: ArrayConfig, ops: &[Op]) -> Expected {
+fn expected_states(cfg: ArrayConfig, ops: &[Op], set: Equations) -> Expected {
     use std::cell::RefCell;
     use std::rc::Rc;
     check_program(ops, cfg.stack_depth).unwrap();
-    let mut arr = CycleArray::new(cfg, Equations::Derived.set());
+    let mut arr = CycleArray::new(cfg, set.set());
     // The comparator's bit counter (5 bits for the thesis word) and the lines so far.
     let kmod = cfg.fmt.bits().next_power_of_two() as u64;
     let out = Rc::new((RefCell::new(String::new()), RefCell::new(0u64)));
@@ -606,7 +606,14 @@ type Overrides<'a> = &'a [(&'a str, String)];
 /// How the co-simulation ended: the number of distinct final image colours in the window, or
 /// the first difference from the cycle model.
 fn cosim(ops: &[Op], verilator: bool) -> usize {
-    cosim_with(ArrayConfig::new(16, 16), ops, verilator, &[]).unwrap_or_else(|e| panic!("{e}"))
+    cosim_with(
+        ArrayConfig::new(16, 16),
+        ops,
+        verilator,
+        &[],
+        Equations::Derived,
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Run the array testbench on `ops` under Icarus (or Verilator), with `overrides` standing in
@@ -618,11 +625,12 @@ fn cosim_with(
     ops: &[Op],
     verilator: bool,
     overrides: Overrides,
+    set: Equations,
 ) -> Result<usize, String> {
     use rtl_model::verilog::pixel;
-    let want = expected_states(cfg, ops);
+    let want = expected_states(cfg, ops, set);
     let tmp = tempfile::tempdir().unwrap();
-    let ctl = pixel::control_stream(&cfg, &Equations::Derived.set(), ops);
+    let ctl = pixel::control_stream(&cfg, &set.set(), ops);
     std::fs::write(tmp.path().join("control.hex"), ctl).unwrap();
     std::fs::write(tmp.path().join("expected.hex"), &want.text).unwrap();
     let d = vdir();
@@ -779,8 +787,40 @@ fn verilator_array_equals_the_cycle_model_on_the_clipped_boxes() {
     assert!(colours >= min, "{colours} colours");
     let cfg = ArrayConfig::new(4, 4);
     let ops = thesis_program(&["box1", "box2"], Some("A.!B"), 204, 150);
-    let colours = cosim_with(cfg, &ops, true, &[]).unwrap_or_else(|e| panic!("{e}"));
+    let colours =
+        cosim_with(cfg, &ops, true, &[], Equations::Derived).unwrap_or_else(|e| panic!("{e}"));
     assert!(colours >= 2, "{colours} colours");
+}
+
+/// The pixel with the printed SGENE (`pixel_module` over the printed set, instantiating
+/// `sgene_printed`) against the cycle model running the printed equations: every register at
+/// every clock on the cube's window, where the printed back.S1 puts a first back plane in
+/// front of the screen to 0 (docs/select-logic.md), so the window loses the cube's colours.
+#[test]
+fn icarus_pixel_with_the_printed_equations_equals_the_cycle_model() {
+    if !rtl_tools() {
+        return;
+    }
+    use rtl_model::verilog::pixel;
+    let cfg = ArrayConfig::new(16, 16);
+    let (names, clip, x0, y0, _) = WINDOWS[0];
+    let ops = thesis_program(names, clip, x0, y0);
+    let printed_sgene = std::fs::read_to_string(vdir().join("sgene_printed.v")).unwrap();
+    let overrides = [
+        (
+            "pixel.v",
+            pixel::pixel_module(&cfg, &Equations::Printed.set()),
+        ),
+        // The slot of the derived SGENE's file, holding module sgene_printed.
+        ("sgene_derived.v", printed_sgene),
+    ];
+    let printed = cosim_with(cfg, &ops, false, &overrides, Equations::Printed)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let derived = cosim(&ops, false);
+    assert!(
+        printed < derived,
+        "printed {printed} colours, derived {derived}"
+    );
 }
 
 #[test]
@@ -802,8 +842,14 @@ fn array_cosimulation_catches_faulty_pixels() {
     ] {
         let bad = good.replace(from, to);
         assert_ne!(good, bad, "{from}");
-        let err =
-            cosim_with(ArrayConfig::new(16, 16), &ops, false, &[("pixel.v", bad)]).expect_err(to);
+        let err = cosim_with(
+            ArrayConfig::new(16, 16),
+            &ops,
+            false,
+            &[("pixel.v", bad)],
+            Equations::Derived,
+        )
+        .expect_err(to);
         assert!(
             err.starts_with("clock ") && err.contains(" register "),
             "{err}"
@@ -827,8 +873,14 @@ fn array_cosimulation_catches_a_depgen_tree_that_drops_carries() {
     assert_ne!(good, bad);
     let (names, clip, x0, y0, _) = WINDOWS[0];
     let ops = thesis_program(names, clip, x0, y0);
-    let err = cosim_with(ArrayConfig::new(16, 16), &ops, false, &[("depgen.v", bad)])
-        .expect_err("carries dropped");
+    let err = cosim_with(
+        ArrayConfig::new(16, 16),
+        &ops,
+        false,
+        &[("depgen.v", bad)],
+        Equations::Derived,
+    )
+    .expect_err("carries dropped");
     assert!(
         err.starts_with("clock ") && err.contains(" register A: "),
         "{err}"
