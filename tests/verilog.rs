@@ -892,7 +892,7 @@ fn array_cosimulation_catches_a_depgen_tree_that_drops_carries() {
 /// 32×32 (a window of the 250×250 scene): pixel-clocks per second, both measured here. The
 /// Verilated image is checked against the cycle model's first. Ignored by default (building
 /// the 32×32 model takes minutes): `cargo test --release --test verilog -- --ignored
-/// --nocapture speed`.
+/// --nocapture speed` (16×16 and 32×32; `CSGPIX_SPEED_SIZES=64` for other sides).
 #[test]
 #[ignore]
 fn speed_of_the_cycle_model_against_verilator() {
@@ -901,7 +901,17 @@ fn speed_of_the_cycle_model_against_verilator() {
     }
     use rtl_model::verilog::pixel;
     use std::time::Instant;
-    for n in [16, 32] {
+    // CSGPIX_SPEED_SIZES=64 (comma-separated sides) measures other arrays.
+    let sizes: Vec<usize> = std::env::var("CSGPIX_SPEED_SIZES")
+        .unwrap_or_else(|_| "16,32".into())
+        .split(',')
+        .map(|n| {
+            n.trim()
+                .parse()
+                .expect("CSGPIX_SPEED_SIZES: sides, e.g. 16,32,64")
+        })
+        .collect();
+    for n in sizes {
         let cfg = ArrayConfig::new(n, n);
         let ops = thesis_program(&["cube"], None, 56, 90);
         let (want, cycles) = cycle_final(cfg, &ops);
