@@ -975,11 +975,12 @@ fn speed_of_the_cycle_model_against_verilator() {
             (t.elapsed().as_secs_f64(), out)
         };
         let (t1, out) = timed(1);
-        let image = out
+        // The rows' lines, top row first, concatenate to the whole image in hex.
+        let image: String = out
             .lines()
-            .find_map(|l| l.strip_prefix("IMAGE "))
-            .unwrap()
-            .to_string();
+            .filter_map(|l| l.strip_prefix("IMAGE "))
+            .collect();
+        assert_eq!(image.len(), 2 * cfg.pixels(), "{n}x{n}: image lines");
         for (i, px) in want.pixels.iter().enumerate() {
             let hexpos = image.len() - 2 * (i + 1);
             let g = u32::from_str_radix(&image[hexpos..hexpos + 2], 16).unwrap();

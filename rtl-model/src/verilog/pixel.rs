@@ -453,8 +453,8 @@ endmodule
 }
 
 /// `tb_bench`: runs the control stream `+reps=R` times (default 1) through `pixel_array` with
-/// no checks, for timing, then prints `IMAGE` and the image (G of every pixel, pixel (0, 0) in
-/// the low byte, hex) and `CLOCKS` with the clocks run. Not checked in: the speed test writes
+/// no checks, for timing, then prints the image (G of every pixel, pixel (0, 0) in the low
+/// byte, hex) as `IMAGE` lines, a row each, top row first, and `CLOCKS` with the clocks run. Not checked in: the speed test writes
 /// it for each array size.
 pub fn bench_testbench(cfg: &ArrayConfig) -> String {
     format!(
@@ -475,13 +475,17 @@ pub fn bench_testbench(cfg: &ArrayConfig) -> String {
                 clocks = clocks + 1;
             end
         end
-        $display(\"IMAGE %h\", image);
+        // A row a line ($display takes at most 8192 bits), the top row first.
+        for (r = {ny} - 1; r >= 0; r = r - 1)
+            $display(\"IMAGE %h\", image[r * {row} +: {row}]);
         $display(\"CLOCKS %0d\", clocks);
         $finish;
     end
 endmodule
 ",
         common = tb_common(cfg, "tb_bench"),
+        ny = cfg.height,
+        row = cfg.width * cfg.colour_bits as usize,
     )
 }
 
