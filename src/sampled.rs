@@ -378,6 +378,19 @@ fn add_part(
         sampled.extend(part.sampled);
         return Ok(tree);
     }
+    let ext = b.file.extension().map(|x| x.to_ascii_lowercase());
+    let dataset = ext.as_ref().is_some_and(|x| x == "nrrd" || x == "nhdr");
+    if dataset != b.threshold.is_some() {
+        return Err(format!(
+            "--prim {}: {}",
+            b.name,
+            if dataset {
+                "a dataset needs its iso value: NAME=FILE.nrrd,threshold=T"
+            } else {
+                "a threshold applies to datasets (.nrrd) only"
+            }
+        ));
+    }
     let import = Import {
         file: b.file.display().to_string(),
         threshold: b.threshold,
@@ -394,16 +407,6 @@ fn add_part(
         &name,
         Path::new(""),
     )?;
-    if loaded.is_dataset() != b.threshold.is_some() {
-        return Err(format!(
-            "{name}: {}",
-            if b.threshold.is_some() {
-                "a threshold applies to datasets (.nrrd) only"
-            } else {
-                "a dataset needs ,threshold=T"
-            }
-        ));
-    }
     scene.imports.push(import);
     sampled.push(loaded);
     Ok(CsgNode::Solid(index))

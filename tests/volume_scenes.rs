@@ -438,6 +438,13 @@ fn bad_imports_are_refused_with_file_line_and_column() {
         ],
         &["`B`"],
     );
+    let phantom = format!("A={}", root().join("vectors/scenes/phantom.nrrd").display());
+    fails_with(
+        &[
+            "voxelize", "--expr", "A", "--prim", &phantom, "--res", "8", "-o", &out,
+        ],
+        &["--prim A", "threshold"],
+    );
     let fig = scene_path("figure-5.6").display().to_string();
     let png = dir.path().join("r.png").display().to_string();
     fails_with(
