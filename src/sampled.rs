@@ -24,7 +24,7 @@ use crate::nrrd::read_nrrd;
 use crate::project::colour_code;
 use crate::scad::parse_csg;
 use crate::slice::Mask;
-use crate::solid::{CsgNode, CsgScene, Import};
+use crate::solid::{CsgNode, CsgScene, Import, IMPORTED};
 use crate::trimesh::TriMesh;
 use crate::voxelize::{toggle_run, Grid};
 
@@ -306,9 +306,6 @@ pub fn parse_binding(s: &str) -> Result<Binding, String> {
     })
 }
 
-/// Leaf numbers of imports while a scene is assembled from parts (see [`renumber`]).
-const IMPORT_MARK: usize = usize::MAX / 2;
-
 /// The scene of a CSG expression (§4.3.2's "named primitives") whose names are bound to
 /// files. `expr_name` names the expression in messages (`--expr`).
 pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded, String> {
@@ -338,14 +335,19 @@ pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded, Strin
         parts.push(add_part(&mut scene, &mut sampled, b)?);
     }
     let mut root = e.root.clone();
-    substitute(&mut root, &parts);
-    renumber(&mut root, scene.solids.len());
+    // Every name stands for its part's tree.
+    root.for_each_leaf_mut(|n| {
+        if let CsgNode::Solid(i) = n {
+            *n = parts.get(*i).cloned().unwrap_or(CsgNode::Empty);
+        }
+    });
+    root.number_imports_after(scene.solids.len());
     scene.root = root;
     Ok(Loaded { scene, sampled })
 }
 
 /// Add one bound file's primitives to `scene`; its tree, with solids numbered in `scene` and
-/// imports as `IMPORT_MARK + j`.
+/// imports as `IMPORTED + j`.
 fn add_part(
     scene: &mut CsgScene,
     sampled: &mut Vec<Sampled>,
@@ -366,11 +368,13 @@ fn add_part(
         let (so, io) = (scene.solids.len(), scene.imports.len());
         let n = part.scene.solids.len();
         let mut tree = part.scene.root.clone();
-        map_leaves(&mut tree, |i| {
-            if i < n {
-                so + i
-            } else {
-                IMPORT_MARK + io + i - n
+        tree.for_each_leaf_mut(|leaf| {
+            if let CsgNode::Solid(i) = leaf {
+                *i = if *i < n {
+                    so + *i
+                } else {
+                    IMPORTED + io + *i - n
+                };
             }
         });
         scene.solids.extend(part.scene.solids);
@@ -399,7 +403,7 @@ fn add_part(
         line: 1,
         col: 1,
     };
-    let index = IMPORT_MARK + scene.imports.len();
+    let index = IMPORTED + scene.imports.len();
     let name = format!("--prim {}", b.name);
     let loaded = load_import(
         &import,
@@ -410,45 +414,4 @@ fn add_part(
     scene.imports.push(import);
     sampled.push(loaded);
     Ok(CsgNode::Solid(index))
-}
-
-/// Replace every leaf `Solid(i)` of an expression by `parts[i]` (iteratively).
-fn substitute(root: &mut CsgNode, parts: &[CsgNode]) {
-    let mut stack = vec![root];
-    while let Some(node) = stack.pop() {
-        match node {
-            CsgNode::Solid(i) => *node = parts.get(*i).cloned().unwrap_or(CsgNode::Empty),
-            CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
-                stack.extend(c.iter_mut())
-            }
-            CsgNode::Complement(c) => stack.push(c),
-            CsgNode::Empty => {}
-        }
-    }
-}
-
-/// Imports follow the solids: `IMPORT_MARK + j` becomes `solids + j`.
-fn renumber(root: &mut CsgNode, solids: usize) {
-    map_leaves(root, |i| {
-        if i >= IMPORT_MARK {
-            i - IMPORT_MARK + solids
-        } else {
-            i
-        }
-    });
-}
-
-/// Apply `f` to every leaf number (iteratively, trees can be deep).
-fn map_leaves(root: &mut CsgNode, f: impl Fn(usize) -> usize) {
-    let mut stack = vec![root];
-    while let Some(node) = stack.pop() {
-        match node {
-            CsgNode::Solid(i) => *i = f(*i),
-            CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
-                stack.extend(c.iter_mut())
-            }
-            CsgNode::Complement(c) => stack.push(c),
-            CsgNode::Empty => {}
-        }
-    }
 }

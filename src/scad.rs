@@ -72,7 +72,7 @@ use std::collections::{HashMap, VecDeque};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 use std::fmt;
 
-use crate::solid::{ConvexSolid, CsgNode, CsgScene, Import};
+use crate::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
 
 /// Deepest nesting of statements accepted: a top-level statement is at depth 1, so a cube may
 /// sit inside at most 999 groups.
@@ -899,7 +899,7 @@ impl<'a> Reader<'a> {
         match self.open.pop() {
             None => {
                 let mut root = combine(Op::Union, self.top);
-                renumber_imports(&mut root, self.solids.len());
+                root.number_imports_after(self.solids.len());
                 Ok(CsgScene {
                     solids: self.solids,
                     imports: self.imports,
@@ -1033,25 +1033,6 @@ impl<'a> Reader<'a> {
         self.vertices += solid.vertices.len();
         self.solids.push(solid);
         Ok(Some(CsgNode::Solid(self.solids.len() - 1)))
-    }
-}
-
-/// Leaf numbers from which imports count while reading (a file cannot hold this many solids).
-const IMPORTED: usize = usize::MAX / 2;
-
-/// Imports follow the solids: `Solid(IMPORTED + j)` becomes `Solid(solids + j)` (iteratively,
-/// as trees can be deep).
-fn renumber_imports(root: &mut CsgNode, solids: usize) {
-    let mut stack = vec![root];
-    while let Some(node) = stack.pop() {
-        match node {
-            CsgNode::Solid(i) if *i >= IMPORTED => *i = *i - IMPORTED + solids,
-            CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
-                stack.extend(c.iter_mut())
-            }
-            CsgNode::Complement(c) => stack.push(c),
-            CsgNode::Solid(_) | CsgNode::Empty => {}
-        }
     }
 }
 

@@ -46,6 +46,10 @@ pub struct Import {
     pub col: usize,
 }
 
+/// Leaf numbers from which imports count while a scene is assembled (no scene holds this many
+/// solids); [`CsgNode::number_imports_after`] puts them after the solids.
+pub const IMPORTED: usize = usize::MAX / 2;
+
 /// A whole scene. The tree's leaf `Solid(i)` is `solids[i]` for i below `solids.len()`, and
 /// `imports[i - solids.len()]` above: the Blist and the other evaluators treat both alike
 /// (§4.3.2); only where a primitive's slice comes from differs.
@@ -92,6 +96,33 @@ impl CsgNode {
             CsgNode::Complement(c) => std::slice::from_ref(&**c),
             CsgNode::Solid(_) | CsgNode::Empty => &[],
         }
+    }
+
+    /// Call `f` on every leaf (`Solid` or `Empty`) of the tree, mutably, without recursion
+    /// (trees can be as deep as a file makes them). `f` may replace the leaf.
+    pub fn for_each_leaf_mut(&mut self, mut f: impl FnMut(&mut CsgNode)) {
+        let mut stack = vec![self];
+        while let Some(node) = stack.pop() {
+            match node {
+                CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
+                    stack.extend(c.iter_mut())
+                }
+                CsgNode::Complement(c) => stack.push(c),
+                CsgNode::Solid(_) | CsgNode::Empty => f(node),
+            }
+        }
+    }
+
+    /// Imports numbered `Solid(IMPORTED + j)` while a scene is assembled become
+    /// `Solid(solids + j)`: they follow the solids ([`CsgScene`]).
+    pub fn number_imports_after(&mut self, solids: usize) {
+        self.for_each_leaf_mut(|n| {
+            if let CsgNode::Solid(i) = n {
+                if *i >= IMPORTED {
+                    *i = *i - IMPORTED + solids;
+                }
+            }
+        });
     }
 
     /// Move the operands out, leaving the node without children.

@@ -192,6 +192,12 @@ impl Slicer {
         self.lists.len() + self.sampled.len()
     }
 
+    /// Primitive p when it is an imported dataset.
+    pub fn dataset(&self, p: usize) -> Option<&Sampled> {
+        let j = p.checked_sub(self.lists.len())?;
+        self.sampled.get(j).filter(|s| s.is_dataset())
+    }
+
     /// Every import the scene names is loaded ([`Slicer::with_sampled`]).
     fn check_imports(&self) -> Result<(), String> {
         if self.sampled.len() != self.imports {
@@ -832,7 +838,7 @@ fn counted_work(slicer: &Slicer, set: &EquationSet) -> Result<Work, String> {
 /// A slice's colour codes from its labels: the winner's colour code, or with
 /// [`Slicer::grey`] a winning dataset's grey value at the voxel (§4.5), as [`grey_code`].
 fn label_colours(slicer: &Slicer, k: usize, labels: &[u32]) -> Vec<u8> {
-    let (nx, solids) = (slicer.grid.dims[0], slicer.lists.len());
+    let nx = slicer.grid.dims[0];
     labels
         .iter()
         .enumerate()
@@ -840,8 +846,8 @@ fn label_colours(slicer: &Slicer, k: usize, labels: &[u32]) -> Vec<u8> {
             0 => 0,
             l => {
                 let p = l as usize - 1;
-                let grey = match slicer.sampled.get(p.wrapping_sub(solids)) {
-                    Some(s) if slicer.grey && p >= solids => {
+                let grey = match slicer.dataset(p) {
+                    Some(s) if slicer.grey => {
                         s.grey(slicer.grid.centre(i % nx, i / nx, k)).map(grey_code)
                     }
                     _ => None,
@@ -864,16 +870,13 @@ pub fn grey_code(g: u8) -> u8 {
 /// Every primitive's grey slice for the blending operators ([`crate::blend`]): 0 outside;
 /// inside, a dataset's grey value, a solid's or mesh's [`crate::blend::SOLID`].
 fn grey_slices(slicer: &Slicer, k: usize, masks: &[Mask]) -> Vec<Vec<u8>> {
-    let (nx, solids) = (slicer.grid.dims[0], slicer.lists.len());
+    let nx = slicer.grid.dims[0];
     masks
         .iter()
         .enumerate()
         .map(|(p, m)| {
             let level = crate::blend::SOLID;
-            let dataset = slicer
-                .sampled
-                .get(p.wrapping_sub(solids))
-                .filter(|s| p >= solids && s.is_dataset());
+            let dataset = slicer.dataset(p);
             (0..m.len())
                 .map(|i| match (m.get(i), dataset) {
                     (false, _) => 0,
