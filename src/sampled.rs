@@ -135,6 +135,12 @@ pub struct Loaded {
 impl Loaded {
     /// A grid over every primitive's bounds (subtracted ones too).
     pub fn grid(&self, dims: [usize; 3]) -> Result<Grid, String> {
+        let (lo, hi) = self.bounds()?;
+        Grid::new(dims, lo, hi)
+    }
+
+    /// The box around every primitive (subtracted ones too).
+    pub fn bounds(&self) -> Result<(DVec3, DVec3), String> {
         let solid_pts = self.scene.solids.iter().flat_map(|s| s.vertices.iter());
         let mut lo = DVec3::INFINITY;
         let mut hi = DVec3::NEG_INFINITY;
@@ -150,7 +156,7 @@ impl Loaded {
         if !lo.is_finite() {
             return Err("the scene has no primitives: give --bounds".into());
         }
-        Grid::new(dims, lo, hi)
+        Ok((lo, hi))
     }
 }
 

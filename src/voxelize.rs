@@ -6,13 +6,17 @@
 //! slab's front plane inside P, composed by the second stage. A pixel shows something exactly
 //! when P meets the slab along the pixel's ray.
 //!
-//! # Sampling convention
+//! # Sampling conventions ([`Sampling`])
 //!
-//! Voxel (i, j, k) is inside primitive P when the segment through the voxel's centre parallel
-//! to Z, from its front face up to (not including) its back face, meets P. Pixel (i, j)
-//! samples the ray at the voxel centre's X and Y; the slab's clipping planes are the voxel's
-//! front face and a plane one least unit of the depth word before its back face, so every
-//! depth word belongs to exactly one slab.
+//! * `centre` (the default): voxel (i, j, k) is inside primitive P when its centre is inside
+//!   P. Pixel (i, j) samples the ray at the centre's X and Y; Vz is one least unit of the
+//!   depth word thick, at the centre's depth. Point membership commutes with CSG, so the
+//!   volume is the point membership of the CSG solid at every centre.
+//! * `slab` (the thesis's §4.4 slab): voxel (i, j, k) is inside P when the segment through
+//!   the voxel's centre parallel to Z, from its front face up to (not including) its back
+//!   face, meets P. The slab's clipping planes are the voxel's front face and a plane one least
+//!   unit of the depth word before its back face, so every depth word belongs to exactly one
+//!   slab. CSG over such classifications dilates every subtracted solid by up to a voxel.
 //!
 //! # Routes to the same masks
 //!
@@ -96,6 +100,63 @@ impl Grid {
     }
 }
 
+/// Most voxels a grid may have along one axis (a `--voxel` size far below the scene's extent
+/// is refused here rather than by the memory estimate's arithmetic).
+pub const MAX_GRID_SIDE: usize = 1 << 20;
+
+/// How a grid is laid over a region: voxels per axis (`res`) or a cubic voxel size
+/// (`voxel`, the grid centred on the region with whole voxels covering it), then `pad`
+/// empty voxels added on every side.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GridSpec {
+    pub res: Option<[usize; 3]>,
+    pub voxel: Option<f64>,
+    pub pad: usize,
+}
+
+impl GridSpec {
+    /// The grid over the box `lo`..`hi`.
+    pub fn grid(&self, lo: DVec3, hi: DVec3) -> Result<Grid, String> {
+        let inner = match (self.res, self.voxel) {
+            (Some(dims), None) => Grid::new(dims, lo, hi)?,
+            (None, Some(size)) => Self::cubic(size, lo, hi)?,
+            _ => return Err("give the grid as a resolution or a voxel size, not both".into()),
+        };
+        let v = inner.voxel();
+        let pad = self.pad.min(MAX_GRID_SIDE);
+        let dims = inner.dims.map(|d| d.saturating_add(2 * pad));
+        if dims.iter().any(|&d| d > MAX_GRID_SIDE) {
+            return Err(format!(
+                "a grid of {dims:?} voxels: at most {MAX_GRID_SIDE} per axis"
+            ));
+        }
+        let margin = v * pad as f64;
+        Grid::new(dims, inner.min - margin, inner.max + margin)
+    }
+
+    /// Cubic voxels of side `size`: as many as cover each side of the box, centred on it.
+    fn cubic(size: f64, lo: DVec3, hi: DVec3) -> Result<Grid, String> {
+        if !(size.is_finite() && size > 0.0) {
+            return Err(format!("voxel size {size}: must be a positive number"));
+        }
+        let extent = hi - lo;
+        let mut dims = [0usize; 3];
+        for (d, e) in dims.iter_mut().zip(extent.to_array()) {
+            // A side that is a whole number of voxels (to rounding) gets exactly that many.
+            let n = (e / size * (1.0 - 1e-12)).ceil().max(1.0);
+            if !(n <= MAX_GRID_SIDE as f64) {
+                return Err(format!(
+                    "voxel size {size} over an extent of {e}: more than {MAX_GRID_SIDE} voxels per axis"
+                ));
+            }
+            *d = n as usize;
+        }
+        let side = DVec3::new(dims[0] as f64, dims[1] as f64, dims[2] as f64) * size;
+        let centre = (lo + hi) / 2.0;
+        Grid::new(dims, centre - side / 2.0, centre + side / 2.0)
+    }
+}
+
 /// How slab masks are computed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Route {
@@ -105,6 +166,30 @@ pub enum Route {
     Intervals,
     /// Exact f64 intervals.
     Float,
+}
+
+/// Which depths of a voxel's ray classify it against a primitive (docs/voxelization.md).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Sampling {
+    /// The voxel's centre: Vz one least unit of the depth word thick, at the centre's depth.
+    #[default]
+    Centre,
+    /// The thesis's slab (§4.4): the segment through the centre from the voxel's front face
+    /// up to one least unit before its back face.
+    Slab,
+}
+
+/// The slope limit of centre sampling: every face whose slope the word can carry across the
+/// array stays a sloped plane. Rendering caps slopes at maxdepth per pixel ([`max_slope`]),
+/// which moves a steep face by up to a pixel; here a face in the depth range at some pixel of
+/// the array stays within the word at every pixel (|Z| ≤ maxdepth + slope·(W + H + 2) ≤ the
+/// largest word, the 2 for the half pixel the grid's corners lie beyond the outer pixel
+/// centres), so the perpendicular approximation moves a face by at most
+/// maxdepth / slope pixels: with the thesis's word 1/16 of a pixel at 64×64, 1/4 at 256×256.
+pub fn voxel_slope(fmt: &WordFormat, width: usize, height: usize) -> f64 {
+    let maxdepth = fmt.to_real(fmt.maxdepth());
+    let headroom = fmt.to_real(fmt.max_word()) - maxdepth;
+    (headroom / (width + height + 2) as f64).max(max_slope(fmt, width, height))
 }
 
 /// Panel size the array route prunes to by default. Any size gives the same voxels; smaller
@@ -117,8 +202,15 @@ pub struct Slicer {
     pub fmt: WordFormat,
     /// One display list per solid (§5.2), in the frame of [`Slicer::frame`].
     pub lists: Vec<DisplayList>,
-    /// Raw depth-word units per slab (a whole number, so slab planes are exact words).
+    /// Raw depth-word units per slab (a whole number, so slab planes are exact words; even
+    /// under centre sampling, so the voxel centres are exact words too).
     pub slab_raw: i64,
+    /// Which depths of each slab classify its voxels ([`Slicer::window`]).
+    pub sampling: Sampling,
+    /// Faces steeper than this (depth units per pixel) are drawn as perpendicular planes
+    /// through their trace at depth 0 ([`crate::project`]), moving them by at most
+    /// maxdepth / slope_limit pixels inside the depth range.
+    pub slope_limit: f64,
     /// Colour code of each solid (its display list's colour).
     pub colours: Vec<u8>,
     /// Panels of this many pixels: the array route simulates, for each primitive, only the
@@ -139,24 +231,42 @@ pub struct Slicer {
 }
 
 impl Slicer {
-    /// Lay the grid on the array: X, Y to pixels (voxel centres at integer pixel
-    /// coordinates), Z to depth, slab k at DEPTH_MARGIN + k·q depth units, q as large as the
-    /// word's depth range allows.
+    /// Lay the grid on the array under centre sampling ([`Slicer::with_sampling`] for the
+    /// other): X, Y to pixels (voxel centres at integer pixel coordinates), Z to depth, slab k
+    /// at DEPTH_MARGIN + k·q depth units, q as large as the word's depth range allows.
     pub fn new(scene: &CsgScene, grid: Grid, fmt: WordFormat) -> Result<Slicer, String> {
+        Slicer::with_sampling(scene, grid, fmt, Sampling::Centre)
+    }
+
+    /// [`Slicer::new`] under the given sampling convention. Centre sampling needs an even
+    /// number of raw units per slab (so the voxel centre is a word), at least 2.
+    pub fn with_sampling(
+        scene: &CsgScene,
+        grid: Grid,
+        fmt: WordFormat,
+        sampling: Sampling,
+    ) -> Result<Slicer, String> {
         let one = 1i64 << fmt.frac;
         let margin_raw = DEPTH_MARGIN as i64 * one;
         let room = fmt.maxdepth() - 2 * margin_raw;
-        let slab_raw = room / grid.dims[2] as i64;
+        let mut slab_raw = room / grid.dims[2] as i64;
+        if sampling == Sampling::Centre {
+            slab_raw &= !1;
+        }
         if slab_raw < 1 {
             return Err(format!(
                 "{} slices do not fit the depth word ({} fraction and {} integer bits): \
-                 use fewer slices or a wider --word",
+                 use fewer slices or a wider word (e.g. 10/11/12)",
                 grid.dims[2], fmt.frac, fmt.int
             ));
         }
         let frame = Self::frame_of(&grid, fmt.to_real(slab_raw));
         let (w, h) = (grid.dims[0], grid.dims[1]);
-        let mut lists = display_lists(scene, &frame, max_slope(&fmt, w, h));
+        let slope_limit = match sampling {
+            Sampling::Slab => max_slope(&fmt, w, h),
+            Sampling::Centre => voxel_slope(&fmt, w, h),
+        };
+        let mut lists = display_lists(scene, &frame, slope_limit);
         for (dl, solid) in lists.iter_mut().zip(&scene.solids) {
             let colour = dl.planes.first().map_or(1, |p| p.colour);
             dl.planes.extend(silhouette_planes(&frame, solid, colour));
@@ -170,6 +280,8 @@ impl Slicer {
             fmt,
             lists,
             slab_raw,
+            sampling,
+            slope_limit,
             colours,
             panel: Some(DEFAULT_PANEL),
             frame,
@@ -225,11 +337,24 @@ impl Slicer {
         ((DEPTH_MARGIN as i64) << self.fmt.frac) + k as i64 * self.slab_raw
     }
 
-    /// The slab as a display list: front plane Z-plane(k), back plane one raw unit before
-    /// Z-plane(k + 1), so that every depth word belongs to exactly one slab.
+    /// The depths (raw words, both ends included) that classify slab k's voxels, as offsets
+    /// from Z-plane(k): the whole slab up to one raw unit before Z-plane(k + 1) (`slab`), or
+    /// the voxel centre's word and the next (`centre`: Vz one least unit thick; the array
+    /// shows nothing between a front and a back clipping plane at the same word).
+    pub fn window(&self) -> (i64, i64) {
+        match self.sampling {
+            Sampling::Slab => (0, self.slab_raw - 1),
+            Sampling::Centre => (self.slab_raw / 2, self.slab_raw / 2 + 1),
+        }
+    }
+
+    /// Vz of slab k as a display list: its front and back clipping planes at the two ends
+    /// of [`Slicer::window`] (one least unit apart under centre sampling).
     pub fn slab_list(&self, k: usize, colour: u32) -> DisplayList {
         let z = |raw: i64| self.fmt.to_real(raw);
-        DisplayList::slab(z(self.z_plane(k)), z(self.z_plane(k + 1) - 1), colour)
+        let (a, b) = self.window();
+        let z0 = self.z_plane(k);
+        DisplayList::slab(z(z0 + a), z(z0 + b), colour)
     }
 
     /// The array configuration slices run on.
@@ -328,19 +453,22 @@ impl SlabRanges {
     }
 }
 
-/// The slabs a depth interval [lo, hi] (in raw word units) meets, both ends closed.
+/// The slabs whose window ([`Slicer::window`]) a depth interval [lo, hi] (in raw word units)
+/// meets, both ends closed.
 fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
     const EMPTY: (u32, u32) = (1, 0);
     let (z0, s) = (slicer.z_plane(0) as i128, slicer.slab_raw as i128);
+    let (a, b) = slicer.window();
+    let (a, b) = (a as i128, b as i128);
     let last_slab = slicer.grid.dims[2] as i128 - 1;
     if lo > hi {
         return EMPTY;
     }
-    // Slab k is [z0 + k·s, z0 + (k + 1)·s − 1] in raw units: it meets [lo, hi] when
-    // z0 + k·s <= hi and z0 + (k + 1)·s − 1 >= lo, i.e. k <= (hi − z0) / s and
-    // k >= (lo − z0 + 1) / s − 1.
-    let last = (hi - z0).div_euclid(s).min(last_slab);
-    let first = ((lo - z0 + 1 + s - 1).div_euclid(s) - 1).max(0);
+    // Slab k's window is [z0 + k·s + a, z0 + k·s + b] in raw units: it meets [lo, hi] when
+    // z0 + k·s + a <= hi and z0 + k·s + b >= lo, i.e. k <= ⌊(hi − z0 − a) / s⌋ and
+    // k >= ⌈(lo − z0 − b) / s⌉.
+    let last = (hi - z0 - a).div_euclid(s).min(last_slab);
+    let first = (lo - z0 - b + s - 1).div_euclid(s).max(0);
     if first > last || last < 0 || first > last_slab {
         return EMPTY;
     }

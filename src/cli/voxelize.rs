@@ -16,7 +16,8 @@ use csgpix::sampled::{load_scene, parse_binding, scene_from_expr, Binding, Loade
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
 use csgpix::voxelize::{
-    memory_estimate, voxelize, voxelize_streaming, Grid, Route, Slicer, Volume, Work,
+    memory_estimate, voxelize, voxelize_streaming, Grid, GridSpec, Route, Sampling, Slicer,
+    Volume, Work,
 };
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -32,6 +33,8 @@ use super::EquationsArg;
     csgpix voxelize vectors/scenes/csg-logo.csg --res 128 --eval tree --json -o logo.nrrd\n  \
     csgpix voxelize vectors/scenes/hollow-cube.csg --res 32 --model cycle --slices slices/ -o hollow.nrrd\n  \
     csgpix voxelize scene.csg --res 64x64x32 --bounds -10,-10,-10,10,10,10 -o part.nrrd\n  \
+    csgpix voxelize vectors/scenes/cube-minus-cylinder.csg --voxel 0.5 --pad 1 --mesh part.stl -o part.nrrd\n  \
+    csgpix voxelize vectors/scenes/hollow-cube.csg --res 32 --sampling slab -o thesis-slabs.nrrd\n  \
     csgpix voxelize vectors/scenes/figure-5.6.csg --res 64 --grey -o head.nrrd\n  \
     csgpix voxelize --expr '(head + box) - hole' --prim head=vectors/scenes/phantom.nrrd,threshold=300 \\\n    \
     --prim box=vectors/scenes/figure-5.2.csg --prim hole=part.stl --res 64 --blend max -o blend.nrrd")]
@@ -57,8 +60,20 @@ pub struct Args {
     #[arg(long, value_parser = parse_blend, conflicts_with = "grey")]
     blend: Option<Union>,
     /// Voxels along X, Y, Z: N for a cube, or NXxNYxNZ.
-    #[arg(long, value_parser = parse_res)]
-    res: [usize; 3],
+    #[arg(long, value_parser = parse_res, required_unless_present = "voxel")]
+    res: Option<[usize; 3]>,
+    /// Instead of --res: cubic voxels of this side (scene units), as many as cover the
+    /// bounds, the grid centred on them.
+    #[arg(long, conflicts_with = "res")]
+    voxel: Option<f64>,
+    /// Add this many empty voxels on every side of the grid (the voxel size is kept).
+    #[arg(long, default_value_t = 0)]
+    pad: usize,
+    /// `centre`: a voxel is inside when its centre is inside the solid (binvox, OpenVDB);
+    /// `slab`: when the segment through its centre along Z meets each primitive (the thesis's
+    /// §4.4 slab, which dilates subtracted solids). docs/voxelization.md.
+    #[arg(long, value_enum, default_value_t)]
+    sampling: SamplingArg,
     /// Region to voxelize, X0,Y0,Z0,X1,Y1,Z1 in scene units (default: the scene's bounds).
     #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
     bounds: Option<(DVec3, DVec3)>,
@@ -111,6 +126,32 @@ pub struct Args {
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
+}
+
+/// `--sampling`, shared with `sculpt`.
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
+pub enum SamplingArg {
+    /// A voxel is inside when its centre is inside the solid.
+    #[default]
+    Centre,
+    /// A voxel is inside a primitive when its segment along Z meets it (§4.4).
+    Slab,
+}
+
+impl SamplingArg {
+    pub fn sampling(self) -> Sampling {
+        match self {
+            SamplingArg::Centre => Sampling::Centre,
+            SamplingArg::Slab => Sampling::Slab,
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            SamplingArg::Centre => "centre",
+            SamplingArg::Slab => "slab",
+        }
+    }
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
@@ -230,6 +271,12 @@ pub fn parse_bounds(s: &str) -> Result<(DVec3, DVec3), String> {
 #[derive(Serialize)]
 struct Report {
     dims: [usize; 3],
+    /// `centre` or `slab` (--sampling).
+    sampling: &'static str,
+    /// Voxel size in scene units, and the grid's box.
+    voxel: [f64; 3],
+    min: [f64; 3],
+    max: [f64; 3],
     model: &'static str,
     route: &'static str,
     eval: &'static str,
@@ -295,11 +342,16 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         csgpix::mesh::Format::of_path(p)?;
     }
     let loaded = load(&a)?;
+    let spec = GridSpec {
+        res: a.res,
+        voxel: a.voxel,
+        pad: a.pad,
+    };
     let grid = match a.bounds {
-        Some((lo, hi)) => Grid::new(a.res, lo, hi),
-        None => loaded.grid(a.res),
+        Some((lo, hi)) => spec.grid(lo, hi),
+        None => loaded.bounds().and_then(|(lo, hi)| spec.grid(lo, hi)),
     }
-    .map_err(|e| format!("{name}:1:1: {e}"))?;
+    .map_err(|e| format!("{name}: {e}"))?;
     let scene = &loaded.scene;
     let threads = a.threads.unwrap_or_else(rayon::current_num_threads).max(1);
     let mut need = memory_estimate(&grid, scene.primitive_count(), threads);
@@ -316,8 +368,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             a.max_memory
         ));
     }
-    let mut slicer = Slicer::new(scene, grid, a.word)
-        .map_err(|e| format!("{name}:1:1: {e}"))?
+    let mut slicer = Slicer::with_sampling(scene, grid, a.word, a.sampling.sampling())
+        .map_err(|e| format!("{name}: {e}"))?
         .with_sampled(loaded.sampled);
     slicer.panel = a.panel.0;
     slicer.grey = a.grey;
@@ -462,6 +514,10 @@ fn report(
     let table = BlistTable::compile(&scene.root);
     let r = Report {
         dims: slicer.grid.dims,
+        sampling: a.sampling.name(),
+        voxel: slicer.grid.voxel().to_array(),
+        min: slicer.grid.min.to_array(),
+        max: slicer.grid.max.to_array(),
         model: match a.model {
             ModelArg::Cycle => "cycle",
             ModelArg::Word => "word",
