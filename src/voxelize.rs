@@ -1039,3 +1039,46 @@ fn slab_chunk(
     })?;
     Ok((out, simulated))
 }
+
+#[cfg(test)]
+mod grid_tests {
+    use super::*;
+
+    fn spec(res: Option<[usize; 3]>, voxel: Option<f64>, pad: usize) -> GridSpec {
+        GridSpec { res, voxel, pad }
+    }
+
+    #[test]
+    fn cubic_voxels_cover_the_bounds_centred() {
+        let g = spec(None, Some(0.5), 0)
+            .grid(DVec3::new(1.0, 2.0, 3.0), DVec3::new(63.0, 3.2, 4.0))
+            .unwrap();
+        // 62 / 0.5 = 124 exactly; 1.2 / 0.5 = 2.4 → 3 voxels, centred; 1 / 0.5 = 2.
+        assert_eq!(g.dims, [124, 3, 2]);
+        assert_eq!(g.voxel(), DVec3::splat(0.5));
+        assert_eq!(g.min.x, 1.0);
+        assert!((g.min.y - (2.6 - 0.75)).abs() < 1e-12);
+        assert_eq!(g.max.z, 4.0);
+    }
+
+    #[test]
+    fn padding_adds_empty_voxels_of_the_same_size() {
+        let g = spec(Some([10, 20, 5]), None, 2)
+            .grid(DVec3::ZERO, DVec3::new(10.0, 10.0, 10.0))
+            .unwrap();
+        assert_eq!(g.dims, [14, 24, 9]);
+        assert_eq!(g.voxel(), DVec3::new(1.0, 0.5, 2.0));
+        assert_eq!(g.min, DVec3::new(-2.0, -1.0, -4.0));
+        assert_eq!(g.max, DVec3::new(12.0, 11.0, 14.0));
+    }
+
+    #[test]
+    fn bad_grids_are_refused() {
+        let (lo, hi) = (DVec3::ZERO, DVec3::ONE);
+        assert!(spec(None, Some(0.0), 0).grid(lo, hi).is_err());
+        assert!(spec(None, Some(f64::NAN), 0).grid(lo, hi).is_err());
+        assert!(spec(None, Some(1e-9), 0).grid(lo, hi).is_err());
+        assert!(spec(None, None, 0).grid(lo, hi).is_err());
+        assert!(spec(Some([4; 3]), None, usize::MAX).grid(lo, hi).is_err());
+    }
+}

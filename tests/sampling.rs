@@ -108,7 +108,9 @@ fn centre_sampling_disagreements_are_counted_and_bounded() {
     use proptest::test_runner::{Config, TestRunner};
     let mut runner = TestRunner::new_with_rng(
         Config::default(),
-        proptest::test_runner::TestRng::deterministic_rng(proptest::test_runner::RngAlgorithm::ChaCha),
+        proptest::test_runner::TestRng::deterministic_rng(
+            proptest::test_runner::RngAlgorithm::ChaCha,
+        ),
     );
     let (mut voxels, mut bad, mut worst, mut unit_min) = (0usize, 0usize, 0.0f64, f64::MAX);
     for _ in 0..40 {
@@ -162,9 +164,17 @@ fn a_cube_on_grid_planes_is_exactly_its_size() {
     ];
     for route in routes {
         let (_, v) = run(&scene, grid, Sampling::Centre, route);
-        assert_eq!(extent(&v), ([1, 2, 3], [15, 11, 14], 14 * 9 * 11), "{route:?}");
+        assert_eq!(
+            extent(&v),
+            ([1, 2, 3], [15, 11, 14], 14 * 9 * 11),
+            "{route:?}"
+        );
         let (_, v) = run(&scene, grid, Sampling::Slab, route);
-        assert_eq!(extent(&v), ([1, 2, 3], [15, 11, 15], 14 * 9 * 12), "{route:?} slab");
+        assert_eq!(
+            extent(&v),
+            ([1, 2, 3], [15, 11, 15], 14 * 9 * 12),
+            "{route:?} slab"
+        );
     }
 }
 
@@ -188,7 +198,10 @@ fn slab_sampling_dilates_subtracted_solids_centre_does_not() {
         filled(&slab)
     );
     // Only centres on a face (within a depth unit) may go either way.
-    assert!(bad_c <= 4 && worst_c <= depth_unit(&slicer), "{bad_c} {worst_c}");
+    assert!(
+        bad_c <= 4 && worst_c <= depth_unit(&slicer),
+        "{bad_c} {worst_c}"
+    );
     assert!(bad_s > 100, "slab differs in only {bad_s} voxels");
     assert!(filled(&slab) < filled(&centre));
 }

@@ -5,16 +5,21 @@ mod common;
 
 use common::random_scene;
 use csgpix::scad::parse_csg;
-use csgpix::voxelize::{array_mask, float_ranges, word_ranges, Grid, Slicer};
+use csgpix::voxelize::{array_mask, float_ranges, word_ranges, Grid, Sampling, Slicer};
 use proptest::prelude::*;
 use rtl_model::{Equations, WordFormat};
 
 /// Mismatches (slab, primitive, pixel) between the array and the interval route, and voxels
 /// where the interval route differs from float.
-fn compare(text: &str, dims: [usize; 3], cycle_too: bool) -> (Vec<(usize, usize, usize)>, usize) {
+fn compare(
+    text: &str,
+    dims: [usize; 3],
+    cycle_too: bool,
+    sampling: Sampling,
+) -> (Vec<(usize, usize, usize)>, usize) {
     let scene = parse_csg(text, "scene.csg").unwrap();
     let grid = Grid::of_scene(&scene, dims).unwrap();
-    let slicer = Slicer::new(&scene, grid, WordFormat::THESIS).unwrap();
+    let slicer = Slicer::with_sampling(&scene, grid, WordFormat::THESIS, sampling).unwrap();
     let mut bad = vec![];
     let mut vs_float = 0;
     for prim in 0..scene.solids.len() {
@@ -47,19 +52,23 @@ fn cube_minus_cylinder_slices_match_the_array() {
         "/vectors/scenes/cube-minus-cylinder.csg"
     ))
     .unwrap();
-    let (bad, vs_float) = compare(&text, [24, 24, 24], true);
-    println!(
-        "cube-minus-cylinder 24^3: {} mismatches, {vs_float} voxels differ from float",
-        bad.len()
-    );
-    assert!(bad.is_empty(), "{:?}", &bad[..bad.len().min(20)]);
+    for sampling in [Sampling::Centre, Sampling::Slab] {
+        let (bad, vs_float) = compare(&text, [24, 24, 24], true, sampling);
+        println!(
+            "cube-minus-cylinder 24^3 ({sampling:?}): {} mismatches, {vs_float} voxels differ from float",
+            bad.len()
+        );
+        assert!(bad.is_empty(), "{:?}", &bad[..bad.len().min(20)]);
+    }
 }
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(24))]
     #[test]
     fn interval_route_gives_the_processors_slices(text in random_scene(), n in 6usize..14) {
-        let (bad, _) = compare(&text, [n, n + 1, n], false);
-        prop_assert!(bad.is_empty(), "{:?}\n{text}", &bad[..bad.len().min(20)]);
+        for sampling in [Sampling::Centre, Sampling::Slab] {
+            let (bad, _) = compare(&text, [n, n + 1, n], false, sampling);
+            prop_assert!(bad.is_empty(), "{sampling:?} {:?}\n{text}", &bad[..bad.len().min(20)]);
+        }
     }
 }

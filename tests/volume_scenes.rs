@@ -215,13 +215,17 @@ fn a_mesh_of_a_solids_faces_voxelizes_as_the_solid() {
             diff * 200 <= total,
             "{name}: {diff} of {total} differ (over 0.5%)"
         );
-        // Colours follow: the same primitive wins where both are filled.
-        let same = solid.voxels.iter().zip(&mesh.voxels);
-        assert!(
-            same.filter(|(a, b)| **a != 0 && **b != 0)
-                .all(|(a, b)| a == b),
-            "{name}"
-        );
+        // Colours follow: the same primitive wins where both are filled, except where a voxel
+        // centre lies on a face two solids share (the solid's closed planes and the mesh's
+        // rounded crossings break that tie either way): as rare as the differing voxels.
+        let recoloured = solid
+            .voxels
+            .iter()
+            .zip(&mesh.voxels)
+            .filter(|(a, b)| **a != 0 && **b != 0 && a != b)
+            .count();
+        eprintln!("{name}: {recoloured} voxels won by another primitive");
+        assert!(recoloured * 200 <= total, "{name}: {recoloured} recoloured");
     }
 }
 
@@ -307,66 +311,78 @@ fn a_hollow_mesh_keeps_its_cavity() {
     assert_eq!(at(10, 10, 10), 0, "the cavity");
     assert_eq!(at(7, 10, 10), 0, "the cavity's edge, voxel 3.5..4.0");
     assert_ne!(at(5, 10, 10), 0, "the inner wall");
-    // Along Z a voxel is its centre segment from its front face, included, to its back face
-    // (docs/voxelization.md): voxel z = 6 spans 3.0..3.5 and touches the wall at z = 3.
-    assert_ne!(at(10, 10, 6), 0, "the cavity's front wall");
-    assert_eq!(
-        at(10, 10, 13),
-        0,
-        "the cavity's back, 6.5..7.0 (7.0 excluded)"
-    );
+    // Along Z as across: a voxel is its centre (docs/voxelization.md); voxel z = 5 (centre
+    // 2.75) is wall, z = 6 (3.25) and z = 13 (6.75) cavity, z = 14 (7.25) wall.
+    assert_ne!(at(10, 10, 5), 0, "the cavity's front wall");
+    assert_eq!(at(10, 10, 6), 0, "the cavity's front, 3.0..3.5");
+    assert_eq!(at(10, 10, 13), 0, "the cavity's back, 6.5..7.0");
+    assert_ne!(at(10, 10, 14), 0, "the cavity's back wall");
     let inner = (0..20usize.pow(3)).filter(|&i| {
         let (x, y, z) = (i % 20, i / 20 % 20, i / 400);
-        (6..14).contains(&x) && (6..14).contains(&y) && (7..14).contains(&z)
+        (6..14).contains(&x) && (6..14).contains(&y) && (6..14).contains(&z)
     });
     assert!(
         inner.clone().all(|i| v[i] == 0),
         "the whole cavity is empty"
     );
+    assert_eq!(
+        v.iter().filter(|&&c| c == 0).count(),
+        8 * 8 * 8,
+        "and only the cavity"
+    );
 }
 
 /// `voxelize --mesh` writes the volume's Marching Cubes surface; imported again through
-/// `--expr`, it voxelizes to the scene's volume plus exactly one voxel behind every face that
-/// looks along +Z, and nothing else. The surface runs through the midpoints between voxel
-/// centres: across X and Y no centre lies on it, but along Z the midpoint is the next slab's
-/// front plane, which that slab's centre segment includes (docs/voxelization.md).
+/// `--expr`, it voxelizes to exactly the scene's volume under centre sampling (the surface runs
+/// through the midpoints between voxel centres, so no centre lies on it). Under the thesis's
+/// slab sampling it gains exactly one voxel behind every face that looks along +Z: the
+/// midpoint along Z is the next slab's front plane, which that slab's segment includes
+/// (docs/voxelization.md).
 #[test]
 fn a_marching_cubes_mesh_reimports_to_the_scenes_volume() {
+    for sampling in ["centre", "slab"] {
+        let (total, gained, lost, behind_back_faces) = mc_round_trip(sampling);
+        eprintln!(
+            "marching cubes round trip ({sampling}): {total} voxels, {} gained, {lost} lost",
+            gained.len()
+        );
+        assert_eq!(lost, 0);
+        match sampling {
+            "centre" => assert!(gained.is_empty()),
+            _ => {
+                assert!(!gained.is_empty());
+                assert_eq!(gained, behind_back_faces);
+            }
+        }
+    }
+}
+
+/// Voxelize figure-5.2 with `--mesh`, re-import the mesh: the voxel count, the voxels gained
+/// and lost, and the voxels just behind the volume's +Z-facing surfaces.
+fn mc_round_trip(sampling: &str) -> (usize, Vec<usize>, usize, Vec<usize>) {
     let dir = tempfile::tempdir().unwrap();
     let d = |f: &str| dir.path().join(f).display().to_string();
-    // One empty voxel of margin all round, so the mesh is closed.
+    // One empty voxel of margin all round.
     let bounds = "--bounds=-2,-2,-3,32,32,17";
     let scene = scene_path("figure-5.2").display().to_string();
-    let o = csgpix(&[
-        "voxelize",
-        &scene,
-        "--res",
-        "34x34x20",
-        bounds,
-        "--mesh",
-        &d("s.stl"),
-        "-o",
-        &d("a.nrrd"),
-    ]);
+    let common = ["--res", "34x34x20", bounds, "--sampling", sampling];
+    let mut args = vec!["voxelize", &scene];
+    args.extend(common);
+    let (stl, a_out) = (d("s.stl"), d("a.nrrd"));
+    args.extend(["--mesh", &stl, "-o", &a_out]);
+    let o = csgpix(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let o = csgpix(&[
-        "voxelize",
-        "--expr",
-        "S",
-        "--prim",
-        &format!("S={}", d("s.stl")),
-        "--res",
-        "34x34x20",
-        bounds,
-        "-o",
-        &d("b.nrrd"),
-    ]);
+    let (prim, b_out) = (format!("S={stl}"), d("b.nrrd"));
+    let mut args = vec!["voxelize", "--expr", "S", "--prim", &prim];
+    args.extend(common);
+    args.extend(["-o", &b_out]);
+    let o = csgpix(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let read = |f: &str| {
-        let (_, voxels) = csgpix::nrrd::read(&std::fs::read(d(f)).unwrap()).unwrap();
+        let (_, voxels) = csgpix::nrrd::read(&std::fs::read(f).unwrap()).unwrap();
         voxels.iter().map(|&c| c != 0).collect::<Vec<bool>>()
     };
-    let (a, b) = (read("a.nrrd"), read("b.nrrd"));
+    let (a, b) = (read(&a_out), read(&b_out));
     let slice = 34 * 34;
     let behind_back_faces: Vec<usize> = (slice..a.len())
         .filter(|&i| a[i - slice] && !a[i])
@@ -374,13 +390,7 @@ fn a_marching_cubes_mesh_reimports_to_the_scenes_volume() {
     let gained: Vec<usize> = (0..a.len()).filter(|&i| b[i] && !a[i]).collect();
     let lost = (0..a.len()).filter(|&i| a[i] && !b[i]).count();
     let total = a.iter().filter(|&&x| x).count();
-    eprintln!(
-        "marching cubes round trip: {total} voxels, {} gained, {lost} lost",
-        gained.len()
-    );
-    assert_eq!(lost, 0);
-    assert!(!gained.is_empty());
-    assert_eq!(gained, behind_back_faces);
+    (total, gained, lost, behind_back_faces)
 }
 
 fn fails_with(args: &[&str], parts: &[&str]) {

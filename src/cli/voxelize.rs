@@ -16,8 +16,8 @@ use csgpix::sampled::{load_scene, parse_binding, scene_from_expr, Binding, Loade
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
 use csgpix::voxelize::{
-    memory_estimate, voxelize, voxelize_streaming, Grid, GridSpec, Route, Sampling, Slicer,
-    Volume, Work,
+    memory_estimate, voxelize, voxelize_streaming, Grid, GridSpec, Route, Sampling, Slicer, Volume,
+    Work,
 };
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
