@@ -26,7 +26,7 @@ use csgpix::octree::key::Key;
 use csgpix::octree::mc::marching_cubes;
 use csgpix::octree::{depth_for, from_volume, StoreKind};
 use csgpix::scad::parse_csg;
-use csgpix::voxelize::{voxelize, Grid, Route, Slicer, Volume};
+use csgpix::voxelize::{voxelize, Grid, Route, Sampling, Slicer, Volume};
 use glam::DVec3;
 use rtl_model::{Equations, WordFormat};
 use serde_json::{json, Value};
@@ -162,7 +162,9 @@ fn volume(s: &Scene, res: usize) -> (Volume, f64) {
         Grid::of_scene(&scene, [res; 3])
     }
     .expect("grid");
-    let slicer = Slicer::new(&scene, grid, WordFormat::THESIS).expect("slicer");
+    // The thesis's slab sampling, under which docs/octree.md and docs/sculpting.md were measured.
+    let slicer =
+        Slicer::with_sampling(&scene, grid, WordFormat::THESIS, Sampling::Slab).expect("slicer");
     let eval = BlistEval::new(&scene.root);
     let t0 = Instant::now();
     let (v, _) = voxelize(

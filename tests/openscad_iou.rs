@@ -1,0 +1,267 @@
+//! csgpix's voxels against OpenSCAD's own geometry: every scene of `vectors/scenes/` (without
+//! datasets) and every example OpenSCAD ships that uses only nodes csgpix reads is voxelized
+//! at 64³ by csgpix from its CSG tree, and OpenSCAD's mesh of the same scene (`openscad -o
+//! x.stl`) is voxelized on the same grid as a closed-mesh primitive. Under centre sampling the
+//! two must agree with IoU ≥ 0.99; the slab figures are printed beside them for
+//! docs/voxelization.md (`cargo test --release --test openscad_iou -- --nocapture`).
+//!
+//! Needs `openscad` on PATH (Debian's 2021.01; .ci/run installs it). Without it the tests say
+//! so and pass, unless `CSGPIX_OPENSCAD=require`, which .ci/run sets.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use common::csgpix;
+
+const RES: &str = "64";
+
+fn have_openscad() -> bool {
+    let found = Command::new("openscad")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        assert_ne!(
+            std::env::var("CSGPIX_OPENSCAD").as_deref(),
+            Ok("require"),
+            "CSGPIX_OPENSCAD=require but openscad is not on PATH"
+        );
+        eprintln!("openscad is not on PATH: skipped");
+    }
+    found
+}
+
+/// Runs openscad to export `input` as `out` (.csg or .stl); false when it fails (a 2D-only
+/// example, an empty top level).
+fn openscad(input: &Path, out: &Path) -> bool {
+    Command::new("openscad")
+        .arg("-o")
+        .arg(out)
+        .arg(input)
+        .output()
+        .is_ok_and(|o| o.status.success() && out.is_file())
+}
+
+fn occupancy(path: &Path) -> Vec<bool> {
+    let (_, v) = csgpix::nrrd::read(&std::fs::read(path).unwrap()).unwrap();
+    v.iter().map(|&c| c != 0).collect()
+}
+
+fn iou(a: &[bool], b: &[bool]) -> f64 {
+    let both = a.iter().zip(b).filter(|(x, y)| **x && **y).count();
+    let either = a.iter().zip(b).filter(|(x, y)| **x || **y).count();
+    if either == 0 {
+        1.0
+    } else {
+        both as f64 / either as f64
+    }
+}
+
+/// IoU of csgpix's voxels of the scene `csg` against the voxels of OpenSCAD's mesh `stl` on
+/// the same 64³ grid, under `sampling`, and the IoU counting only voxels whose centres lie
+/// farther from every face of the scene's convex solids than the depth word's plane error,
+/// 2^-(F+1)·(1 + x + y) pixels (docs/depth-word.md; 0.063 voxel at the far corner of 64²):
+/// there the word, not the geometry, decides. Err when csgpix refuses the scene.
+fn compare(csg: &Path, stl: &Path, sampling: &str, dir: &Path) -> Result<(f64, f64), String> {
+    let (a, b) = (dir.join("a.nrrd"), dir.join("b.nrrd"));
+    let o = csgpix(&[
+        "voxelize",
+        csg.to_str().unwrap(),
+        "--res",
+        RES,
+        "--sampling",
+        sampling,
+        "--json",
+        "-o",
+        a.to_str().unwrap(),
+    ]);
+    if !o.status.success() {
+        return Err(String::from_utf8_lossy(&o.stderr).trim().to_string());
+    }
+    let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let c = |k: &str, i: usize| r[k][i].as_f64().unwrap();
+    let bounds = format!(
+        "--bounds={},{},{},{},{},{}",
+        c("min", 0),
+        c("min", 1),
+        c("min", 2),
+        c("max", 0),
+        c("max", 1),
+        c("max", 2)
+    );
+    let prim = format!("M={}", stl.display());
+    let o = csgpix(&[
+        "voxelize",
+        "--expr",
+        "M",
+        "--prim",
+        &prim,
+        "--res",
+        RES,
+        &bounds,
+        "--sampling",
+        sampling,
+        "-o",
+        b.to_str().unwrap(),
+    ]);
+    assert!(
+        o.status.success(),
+        "{}: OpenSCAD's mesh: {}",
+        stl.display(),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let (a, b) = (occupancy(&a), occupancy(&b));
+    let lo = [0, 1, 2].map(|i| c("min", i));
+    let hi = [0, 1, 2].map(|i| c("max", i));
+    let off = off_faces(csg, lo, hi);
+    let keep = |v: &[bool]| -> Vec<bool> { v.iter().zip(&off).map(|(x, o)| *x && *o).collect() };
+    Ok((iou(&a, &b), iou(&keep(&a), &keep(&b))))
+}
+
+/// Per voxel of the 64³ grid over `lo`..`hi`: its centre lies off every face plane of the
+/// scene's convex solids within the solid's extent (all true for a scene csgpix cannot parse
+/// here or one without solids).
+fn off_faces(csg: &Path, lo: [f64; 3], hi: [f64; 3]) -> Vec<bool> {
+    use glam::DVec3;
+    let n = 64usize;
+    let text = std::fs::read_to_string(csg).unwrap_or_default();
+    let Ok(scene) = csgpix::scad::parse_csg(&text, "x.csg") else {
+        return vec![true; n * n * n];
+    };
+    let grid = csgpix::voxelize::Grid::new([n; 3], DVec3::from(lo), DVec3::from(hi)).unwrap();
+    // The word's plane error at the far corner, 2^-(F+1)·(1 + x + y) pixels (thesis word).
+    let tol = (1.0 + 2.0 * n as f64) / 2048.0 * grid.voxel().min_element();
+    let planes: Vec<Vec<(DVec3, f64)>> = scene
+        .solids
+        .iter()
+        .map(|s| {
+            s.faces
+                .iter()
+                .map(|f| {
+                    let v = |i: usize| DVec3::from(s.vertices[f[i % f.len()]]);
+                    let nrm: DVec3 = (0..f.len()).map(|i| v(i).cross(v(i + 1))).sum();
+                    let nrm = nrm.normalize();
+                    (nrm, nrm.dot(v(0)))
+                })
+                .collect()
+        })
+        .collect();
+    (0..n * n * n)
+        .map(|idx| {
+            let p = grid.centre(idx % n, idx / n % n, idx / (n * n));
+            !planes.iter().any(|ps| {
+                let d: Vec<f64> = ps.iter().map(|(nrm, off)| nrm.dot(p) - off).collect();
+                let outside = d.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+                outside.abs() <= tol
+            })
+        })
+        .collect()
+}
+
+/// One row per scene: (name, IoU centre, IoU slab), each (all voxels, centres off faces),
+/// printed as a Markdown table. Centre sampling must reach 0.99 on all voxels, or on the
+/// voxels whose centres are off every face (ties, see [`compare`]), which the table shows.
+fn check(rows: &[(String, (f64, f64), (f64, f64))]) {
+    println!("| scene | IoU centre | IoU slab | centre, off faces |\n|---|---|---|---|");
+    for (name, c, s) in rows {
+        println!("| {name} | {:.4} | {:.4} | {:.4} |", c.0, s.0, c.1);
+    }
+    for (name, c, _) in rows {
+        assert!(
+            c.0 >= 0.99 || c.1 >= 0.99,
+            "{name}: IoU {:.4} ({:.4} off faces) under centre sampling",
+            c.0,
+            c.1
+        );
+    }
+}
+
+#[test]
+fn every_bundled_scene_matches_openscads_mesh() {
+    if !have_openscad() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/scenes");
+    let mut names: Vec<PathBuf> = std::fs::read_dir(&scenes)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "csg"))
+        .collect();
+    names.sort();
+    let mut rows = vec![];
+    for csg in names {
+        let text = std::fs::read_to_string(&csg).unwrap();
+        let name = csg.file_name().unwrap().to_string_lossy().to_string();
+        if text.contains("import(") {
+            println!("{name}: imports a dataset OpenSCAD cannot mesh: not compared");
+            continue;
+        }
+        let stl = dir.path().join("o.stl");
+        assert!(openscad(&csg, &stl), "openscad could not mesh {name}");
+        let c = compare(&csg, &stl, "centre", dir.path()).unwrap();
+        let s = compare(&csg, &stl, "slab", dir.path()).unwrap();
+        rows.push((name, c, s));
+    }
+    assert!(rows.len() >= 6);
+    check(&rows);
+}
+
+/// Every `.scad` example OpenSCAD ships (`/usr/share/openscad/examples`), exported to `.csg`
+/// by OpenSCAD; those csgpix reads are compared, the others listed with the reason.
+#[test]
+fn openscads_examples_that_csgpix_reads_match_openscads_mesh() {
+    if !have_openscad() {
+        return;
+    }
+    let root = Path::new("/usr/share/openscad/examples");
+    let mut files = vec![];
+    let mut stack = vec![root.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).into_iter().flatten().flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|x| x == "scad") {
+                files.push(p);
+            }
+        }
+    }
+    files.sort();
+    let dir = tempfile::tempdir().unwrap();
+    let (mut rows, mut skipped) = (vec![], vec![]);
+    for scad in &files {
+        let name = scad.strip_prefix(root).unwrap().display().to_string();
+        // Beside copies of the example's neighbours, so the files it imports are found.
+        let parent = scad.parent().unwrap();
+        let work = dir.path().join(parent.strip_prefix(root).unwrap());
+        if !work.is_dir() {
+            std::fs::create_dir_all(&work).unwrap();
+            for e in std::fs::read_dir(parent).unwrap().flatten() {
+                if e.path().is_file() {
+                    std::fs::copy(e.path(), work.join(e.file_name())).unwrap();
+                }
+            }
+        }
+        let (csg, stl) = (work.join("x.csg"), work.join("x.stl"));
+        let _ = std::fs::remove_file(&stl);
+        if !openscad(scad, &csg) || !openscad(&csg, &stl) {
+            skipped.push(format!("{name}: OpenSCAD makes no 3D mesh of it"));
+            continue;
+        }
+        match compare(&csg, &stl, "centre", &work) {
+            Err(e) => skipped.push(format!("{name}: {}", e.rsplit(": ").next().unwrap_or(&e))),
+            Ok(c) => {
+                let s = compare(&csg, &stl, "slab", &work).unwrap();
+                rows.push((name, c, s));
+            }
+        }
+    }
+    println!("{} of {} examples compared", rows.len(), files.len());
+    for s in &skipped {
+        println!("not compared: {s}");
+    }
+    check(&rows);
+}
