@@ -693,3 +693,53 @@ fn render_on_panels_is_the_same_image() {
     assert_eq!(o.status.code(), Some(2));
     assert!(!c.exists());
 }
+
+/// `--voxel` fits cubic voxels to the bounds, `--pad` adds empty voxels of the same size,
+/// `--sampling` is reported; the hollow cube's cavity is exactly 16³ under centre sampling
+/// and one layer deeper under the thesis's slab.
+#[test]
+fn voxelize_grid_options_and_sampling() {
+    let d = tmp();
+    let out = d.path().join("v.nrrd");
+    let run = |extra: &[&str]| -> serde_json::Value {
+        let mut args = vec![
+            "voxelize",
+            "vectors/scenes/hollow-cube.csg",
+            "--json",
+            "-o",
+            s(&out),
+        ];
+        args.extend_from_slice(extra);
+        let o = csgpix(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        serde_json::from_slice(&o.stdout).unwrap()
+    };
+    let r = run(&["--res", "32"]);
+    assert_eq!(r["sampling"], "centre");
+    assert_eq!(r["filled"], 32 * 32 * 32 - 16 * 16 * 16);
+    let r = run(&["--res", "32", "--sampling", "slab"]);
+    assert_eq!(r["sampling"], "slab");
+    assert_eq!(r["filled"], 32 * 32 * 32 - 16 * 16 * 17);
+    // The hollow cube is 20 units wide: 0.5-unit voxels, 40 a side, and 2 of padding.
+    let r = run(&["--voxel", "0.5", "--pad", "2"]);
+    assert_eq!(r["dims"], serde_json::json!([44, 44, 44]));
+    assert_eq!(r["voxel"], serde_json::json!([0.5, 0.5, 0.5]));
+    assert_eq!(r["min"], serde_json::json!([-11.0, -11.0, -11.0]));
+    assert_eq!(r["filled"], 40 * 40 * 40 - 20 * 20 * 20);
+    let (dims, v) = csgpix::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
+    assert_eq!(dims, [44; 3]);
+    assert_eq!(v[0], 0, "padding is empty");
+    for bad in [
+        &["--voxel", "0"][..],
+        &["--voxel", "-1"],
+        &["--voxel", "1e-9"],
+        &["--voxel", "1", "--res", "8"],
+    ] {
+        std::fs::remove_file(&out).ok();
+        let mut args = vec!["voxelize", "vectors/scenes/hollow-cube.csg", "-o", s(&out)];
+        args.extend_from_slice(bad);
+        let o = csgpix(&args);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}");
+        assert!(!out.exists(), "{bad:?} left an output");
+    }
+}

@@ -65,6 +65,17 @@ fn iou(a: &[bool], b: &[bool]) -> f64 {
 /// 2^-(F+1)·(1 + x + y) pixels (docs/depth-word.md; 0.063 voxel at the far corner of 64²):
 /// there the word, not the geometry, decides. Err when csgpix refuses the scene.
 fn compare(csg: &Path, stl: &Path, sampling: &str, dir: &Path) -> Result<(f64, f64), String> {
+    compare_model(csg, stl, sampling, "word", dir)
+}
+
+/// [`compare`] with csgpix's scene voxelized by `model` (`word` or `float`).
+fn compare_model(
+    csg: &Path,
+    stl: &Path,
+    sampling: &str,
+    model: &str,
+    dir: &Path,
+) -> Result<(f64, f64), String> {
     let (a, b) = (dir.join("a.nrrd"), dir.join("b.nrrd"));
     let o = csgpix(&[
         "voxelize",
@@ -73,6 +84,8 @@ fn compare(csg: &Path, stl: &Path, sampling: &str, dir: &Path) -> Result<(f64, f
         RES,
         "--sampling",
         sampling,
+        "--model",
+        model,
         "--json",
         "-o",
         a.to_str().unwrap(),
@@ -132,7 +145,8 @@ fn off_faces(csg: &Path, lo: [f64; 3], hi: [f64; 3]) -> Vec<bool> {
     };
     let grid = csgpix::voxelize::Grid::new([n; 3], DVec3::from(lo), DVec3::from(hi)).unwrap();
     // The word's plane error at the far corner, 2^-(F+1)·(1 + x + y) pixels (thesis word).
-    let tol = (1.0 + 2.0 * n as f64) / 2048.0 * grid.voxel().min_element();
+    let v = grid.voxel();
+    let tol = (1.0 + 2.0 * n as f64) / 2048.0 * v.x.max(v.y);
     let planes: Vec<Vec<(DVec3, f64)>> = scene
         .solids
         .iter()
@@ -160,15 +174,41 @@ fn off_faces(csg: &Path, lo: [f64; 3], hi: [f64; 3]) -> Vec<bool> {
         .collect()
 }
 
-/// One row per scene: (name, IoU centre, IoU slab), each (all voxels, centres off faces),
-/// printed as a Markdown table. Centre sampling must reach 0.99 on all voxels, or on the
-/// voxels whose centres are off every face (ties, see [`compare`]), which the table shows.
-fn check(rows: &[(String, (f64, f64), (f64, f64))]) {
-    println!("| scene | IoU centre | IoU slab | centre, off faces |\n|---|---|---|---|");
-    for (name, c, s) in rows {
-        println!("| {name} | {:.4} | {:.4} | {:.4} |", c.0, s.0, c.1);
+/// One row per scene, printed as a Markdown table.
+struct Row {
+    name: String,
+    /// Centre sampling on the word route (the default): all voxels, centres off faces.
+    centre: (f64, f64),
+    slab: (f64, f64),
+    /// Centre sampling on the float route (exact planes).
+    float: f64,
+}
+
+/// All three comparisons of one scene.
+fn row(name: String, csg: &Path, stl: &Path, dir: &Path) -> Result<Row, String> {
+    Ok(Row {
+        name,
+        centre: compare(csg, stl, "centre", dir)?,
+        slab: compare(csg, stl, "slab", dir)?,
+        float: compare_model(csg, stl, "centre", "float", dir)?.0,
+    })
+}
+
+/// Centre sampling must reach 0.99 on all voxels, or on the voxels whose centres are off
+/// every face by more than the word's error (see [`compare`]), which the table shows.
+fn check(rows: &[Row]) {
+    println!(
+        "| scene | centre | slab | centre, centres off faces | centre, `--model float` |\n\
+         |---|---|---|---|---|"
+    );
+    for r in rows {
+        println!(
+            "| {} | {:.4} | {:.4} | {:.4} | {:.4} |",
+            r.name, r.centre.0, r.slab.0, r.centre.1, r.float
+        );
     }
-    for (name, c, _) in rows {
+    let rows: Vec<_> = rows.iter().map(|r| (&r.name, r.centre)).collect();
+    for (name, c) in rows {
         assert!(
             c.0 >= 0.99 || c.1 >= 0.99,
             "{name}: IoU {:.4} ({:.4} off faces) under centre sampling",
@@ -201,9 +241,7 @@ fn every_bundled_scene_matches_openscads_mesh() {
         }
         let stl = dir.path().join("o.stl");
         assert!(openscad(&csg, &stl), "openscad could not mesh {name}");
-        let c = compare(&csg, &stl, "centre", dir.path()).unwrap();
-        let s = compare(&csg, &stl, "slab", dir.path()).unwrap();
-        rows.push((name, c, s));
+        rows.push(row(name, &csg, &stl, dir.path()).unwrap());
     }
     assert!(rows.len() >= 6);
     check(&rows);
@@ -251,12 +289,9 @@ fn openscads_examples_that_csgpix_reads_match_openscads_mesh() {
             skipped.push(format!("{name}: OpenSCAD makes no 3D mesh of it"));
             continue;
         }
-        match compare(&csg, &stl, "centre", &work) {
+        match row(name.clone(), &csg, &stl, &work) {
             Err(e) => skipped.push(format!("{name}: {}", e.rsplit(": ").next().unwrap_or(&e))),
-            Ok(c) => {
-                let s = compare(&csg, &stl, "slab", &work).unwrap();
-                rows.push((name, c, s));
-            }
+            Ok(r) => rows.push(r),
         }
     }
     println!("{} of {} examples compared", rows.len(), files.len());
