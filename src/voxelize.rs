@@ -144,7 +144,7 @@ impl GridSpec {
         for (d, e) in dims.iter_mut().zip(extent.to_array()) {
             // A side that is a whole number of voxels (to rounding) gets exactly that many.
             let n = (e / size * (1.0 - 1e-12)).ceil().max(1.0);
-            if !(n <= MAX_GRID_SIDE as f64) {
+            if n.is_nan() || n > MAX_GRID_SIDE as f64 {
                 return Err(format!(
                     "voxel size {size} over an extent of {e}: more than {MAX_GRID_SIDE} voxels per axis"
                 ));
