@@ -90,6 +90,16 @@ fn slicer(scene: &CsgScene, n: usize) -> Slicer {
     Slicer::with_sampling(scene, grid(scene, n), FMT, Sampling::Slab).expect("slicer")
 }
 
+/// Membership of the volume under centre sampling (csgpix's default), for the agreement
+/// with the peer, which samples voxel centres too.
+fn centre_inside(scene: &CsgScene, n: usize, route: Route, eval: &dyn SliceEval) -> Vec<bool> {
+    let slicer =
+        Slicer::with_sampling(scene, grid(scene, n), FMT, Sampling::Centre).expect("slicer");
+    let (v, _) =
+        voxelize(&slicer, route, Equations::Derived.set(), eval, &|| {}).expect("voxelize");
+    inside_of(&v)
+}
+
 /// csgpix from the parsed scene to the volume.
 fn csgpix_run(scene: &CsgScene, n: usize, route: Route, eval: &dyn SliceEval) -> Volume {
     let slicer = slicer(scene, n);
@@ -560,10 +570,17 @@ fn main() {
         let vs_float = agreement_json(&peer, &f_in, dims);
         let vs_word = agreement_json(&peer, &w_in, dims);
         let word_vs_float = agreement_json(&w_in, &f_in, dims);
+        let stack_eval = evals.last().expect("stack").1.as_ref();
+        let wc_in = centre_inside(&scene, n, Route::Intervals, stack_eval);
+        let fc_in = centre_inside(&scene, n, Route::Float, stack_eval);
+        let vs_float_centre = agreement_json(&peer, &fc_in, dims);
+        let vs_word_centre = agreement_json(&peer, &wc_in, dims);
         for (what, a) in [
             ("peer vs float", &vs_float),
             ("peer vs word", &vs_word),
             ("word vs float", &word_vs_float),
+            ("peer vs float (centre)", &vs_float_centre),
+            ("peer vs word (centre)", &vs_word_centre),
         ] {
             say(format!(
                 "{n}^3 {what}: {} differing voxels ({:.3e} of the grid), {} of them on a \
@@ -627,6 +644,8 @@ fn main() {
                     "face_planes": peer_planes,
                     "vs_float": vs_float,
                     "vs_word": vs_word,
+                    "vs_float_centre": vs_float_centre,
+                    "vs_word_centre": vs_word_centre,
                 },
                 "word_vs_float": word_vs_float,
                 "phases": ph,
