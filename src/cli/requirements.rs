@@ -17,7 +17,7 @@ use rtl_model::{ArrayConfig, Equations, WordFormat};
 use serde::Serialize;
 
 use super::array_args::{parse_size, parse_word};
-use super::voxelize::{parse_bounds, parse_panel, parse_res, PanelArg};
+use super::voxelize::{parse_bounds, parse_panel, parse_res, PanelArg, SamplingArg};
 use super::ViewArg;
 
 #[derive(clap::Args, Debug)]
@@ -36,6 +36,9 @@ pub struct Args {
     /// Panel size in pixels (NXxNY).
     #[arg(long, default_value = "32x32", value_parser = parse_panel)]
     panel: PanelArg,
+    /// The sampling convention of the voxelize run described (docs/voxelization.md).
+    #[arg(long, value_enum, default_value_t)]
+    sampling: SamplingArg,
     /// Depth precision wanted, in scene units along Z: the narrowest word that keeps every
     /// plane word within it on the whole array.
     #[arg(long, default_value_t = 0.01)]
@@ -114,7 +117,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         None => Grid::of_scene(&scene, a.res),
     }
     .map_err(at)?;
-    let slicer = Slicer::new(&scene, grid, a.word).map_err(at)?;
+    let slicer =
+        Slicer::with_sampling(&scene, grid, a.word, a.sampling.sampling()).map_err(at)?;
     let report = analyse(&a, &scene, &slicer).map_err(at)?;
     if a.json {
         let text = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
