@@ -42,7 +42,7 @@ use crate::float::rounding_bound;
 use crate::plot::{Chart, Series};
 use crate::scad::parse_csg;
 use crate::solid::CsgScene;
-use crate::voxelize::{float_interval, voxelize, Grid, Route, Slicer, Volume};
+use crate::voxelize::{float_interval, voxelize, Grid, Route, Sampling, Slicer, Volume};
 
 /// The thesis's clock, 10 MHz (§2.5).
 pub const CLOCK_HZ: f64 = 1e7;
@@ -94,6 +94,8 @@ pub struct Sweep {
     pub int_bits: u32,
     /// Overflow bits O of the depth word (fixed during the sweep).
     pub ovf_bits: u32,
+    /// The sampling convention of every run (docs/voxelization.md).
+    pub sampling: Sampling,
 }
 
 impl Sweep {
@@ -392,7 +394,8 @@ impl Prepared {
     }
 
     fn slicer(&self, scene: &CsgScene, bits: u32, slabs: usize) -> Result<Slicer, String> {
-        Slicer::new(scene, self.grid(slabs)?, self.sweep.word(bits)?)
+        let (grid, word) = (self.grid(slabs)?, self.sweep.word(bits)?);
+        Slicer::with_sampling(scene, grid, word, self.sweep.sampling)
     }
 
     /// Every point, slabs outermost, then fragments, bits and models (each ascending).

@@ -169,7 +169,8 @@ pub enum Route {
 }
 
 /// Which depths of a voxel's ray classify it against a primitive (docs/voxelization.md).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Sampling {
     /// The voxel's centre: Vz one least unit of the depth word thick, at the centre's depth.
     #[default]

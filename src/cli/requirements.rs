@@ -117,8 +117,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         None => Grid::of_scene(&scene, a.res),
     }
     .map_err(at)?;
-    let slicer =
-        Slicer::with_sampling(&scene, grid, a.word, a.sampling.sampling()).map_err(at)?;
+    let slicer = Slicer::with_sampling(&scene, grid, a.word, a.sampling.sampling()).map_err(at)?;
     let report = analyse(&a, &scene, &slicer).map_err(at)?;
     if a.json {
         let text = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;

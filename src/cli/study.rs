@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
+use super::voxelize::SamplingArg;
 use clap::ValueEnum;
 use csgpix::study::{charts, csv, prepare, Model, Point, Prepared, Sweep};
 use csgpix::voxelize::memory_estimate;
@@ -52,6 +53,9 @@ pub struct Args {
     /// Overflow bits O of the depth word, fixed during the sweep.
     #[arg(long, default_value_t = 11)]
     ovf_bits: u32,
+    /// The sampling convention of every voxelization (docs/voxelization.md).
+    #[arg(long, value_enum, default_value_t)]
+    sampling: SamplingArg,
     /// Refuse sweeps needing more memory than this many MiB.
     #[arg(long, default_value_t = 4096)]
     max_memory: u64,
@@ -98,6 +102,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         res: a.res,
         int_bits: a.int_bits,
         ovf_bits: a.ovf_bits,
+        sampling: a.sampling.sampling(),
     };
     let prep = prepare(&text, &file, sweep)?;
     check_memory(&prep, a.max_memory)?;
