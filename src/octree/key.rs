@@ -72,6 +72,14 @@ pub fn coords(k: Key) -> (u32, [u32; 3]) {
     )
 }
 
+/// Does the node of key `k` reach a far face of the grid (a coordinate all ones at its
+/// level)? The root does.
+pub fn reaches_far_face(k: Key) -> bool {
+    let l = level(k);
+    let ones = dilate3((1u32 << l) - 1);
+    (0..3).any(|a| k >> a & ones == ones)
+}
+
 /// The quadtree key of pixel (x, y) at `level` (the 2D examples of seed 000 Figs. 4.7, 5.1):
 /// 1 followed by y x bit pairs, x the least significant.
 pub fn key2(x: u32, y: u32, level: u32) -> Key {

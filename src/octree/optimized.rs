@@ -8,6 +8,7 @@
 //! leaf, by stripping three bits at a time until a key is in the table (§5.1, Eq. 5.1).
 
 use super::build::Merge;
+use super::cell;
 use super::key::{self, Key, ROOT};
 use super::mc::{self, Tri};
 use super::table::{Entry, KeyTable};
@@ -229,11 +230,24 @@ impl VoxelStore for OptimizedOctree {
 
 impl OptimizedOctree {
     /// Every surface cell: one linear pass over the table's entries (seed 000 §4.3.4: only
-    /// leaves are stored, and a leaf with a byte other than 0 and 255 is a deepest cell).
+    /// leaves are stored, and a leaf with a byte other than 0 and 255 is a deepest cell),
+    /// with the cells past the far faces that the non-empty leaves there border.
     fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
+        let (depth, side) = (self.depth, 1u32 << self.depth);
         for e in self.table.entries() {
-            if e.val != 0 && e.val != 255 {
-                f(key::coords(e.key).1, e.val);
+            if e.val == 0 {
+                continue;
+            }
+            if e.val != 255 {
+                let c = key::coords(e.key).1;
+                f(c, e.val);
+                if c.contains(&(side - 1)) {
+                    cell::beyond_leaf(c, 1, e.val, side, &mut f);
+                }
+            } else if key::reaches_far_face(e.key) {
+                let (l, c) = key::coords(e.key);
+                let s = depth - l;
+                cell::beyond_leaf(c.map(|c| c << s), 1 << s, 255, side, &mut f);
             }
         }
     }

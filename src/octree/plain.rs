@@ -3,6 +3,7 @@
 //! by level from the deepest), with the internal nodes as well.
 
 use super::build::Merge;
+use super::cell;
 use super::key::{self, Key, ROOT};
 use super::mc::{self, Tri};
 use super::optimized::MIXED;
@@ -150,9 +151,21 @@ impl VoxelStore for PlainHashOctree {
 impl PlainHashOctree {
     /// Every surface cell: one linear pass over the table's entries, internal nodes skipped.
     fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
+        let side = 1u32 << self.depth;
         for e in self.table.entries() {
-            if !e.internal && e.val != 0 && e.val != 255 {
-                f(key::coords(e.key).1, e.val);
+            if e.internal || e.val == 0 {
+                continue;
+            }
+            if e.val != 255 {
+                let c = key::coords(e.key).1;
+                f(c, e.val);
+                if c.contains(&(side - 1)) {
+                    cell::beyond_leaf(c, 1, e.val, side, &mut f);
+                }
+            } else if key::reaches_far_face(e.key) {
+                let (l, c) = key::coords(e.key);
+                let s = self.depth - l;
+                cell::beyond_leaf(c.map(|c| c << s), 1 << s, 255, side, &mut f);
             }
         }
     }

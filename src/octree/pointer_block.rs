@@ -104,9 +104,12 @@ impl BlockPointerOctree {
     fn surface<F: FnMut([u32; 3], u8)>(&self, n: &PNode, level: u32, p: [u32; 3], f: &mut F) {
         match n {
             PNode::Leaf(v) => {
-                if level == self.depth && *v != 0 && *v != 255 {
+                let s = self.depth - level;
+                if s == 0 && *v != 0 && *v != 255 {
                     f(p, *v);
                 }
+                let side = 1 << self.depth;
+                super::cell::beyond_leaf(p.map(|c| c << s), 1 << s, *v, side, f);
             }
             PNode::Inner(ch) => {
                 for (c, n) in ch.iter().enumerate() {
