@@ -358,6 +358,52 @@ mod tests {
     }
 
     #[test]
+    fn cells_past_the_far_faces_read_the_voxels_they_border() {
+        // Random 3³ volumes in a 2³-voxel grid (side 2): every cell with a coordinate 2 from
+        // `beyond_leaf` of the cells, against `cell_of` with the voxels past the grid empty.
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..200 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let bits = seed as u8;
+            let voxel = |x: i64, y: i64, z: i64| {
+                (0..2).contains(&x)
+                    && (0..2).contains(&y)
+                    && (0..2).contains(&z)
+                    && bits >> (z * 4 + y * 2 + x) & 1 == 1
+            };
+            let mut got = std::collections::BTreeMap::new();
+            for z in 0..2u32 {
+                for y in 0..2u32 {
+                    for x in 0..2u32 {
+                        let v = cell_of(voxel, x.into(), y.into(), z.into());
+                        beyond_leaf([x, y, z], 1, v, 2, &mut |p, w| {
+                            assert!(got.insert(p, w).is_none(), "{p:?} twice");
+                        });
+                    }
+                }
+            }
+            for z in 0..3u32 {
+                for y in 0..3u32 {
+                    for x in 0..3u32 {
+                        if ![x, y, z].contains(&2) {
+                            continue;
+                        }
+                        let want = cell_of(voxel, x.into(), y.into(), z.into());
+                        let have = got.get(&[x, y, z]).copied().unwrap_or(0);
+                        assert_eq!(have, want, "{bits:08b} cell {:?}", [x, y, z]);
+                    }
+                }
+            }
+        }
+        // A full coarse leaf of 2³ cells on the far corner of a 4³ grid: 3·4 + 3·2 + 1 cells.
+        let mut n = 0;
+        beyond_leaf([2, 2, 2], 2, 255, 4, &mut |_, _| n += 1);
+        assert_eq!(n, 19);
+    }
+
+    #[test]
     fn cell_layers_from_bits_equal_the_dual_cells() {
         check_layers(128, 100, 90, 3);
         check_layers(64, 64, 64, 2);

@@ -74,11 +74,22 @@ pub fn coords(k: Key) -> (u32, [u32; 3]) {
 
 /// Does the node of key `k` reach a far face of the grid (a coordinate all ones at its
 /// level)? The root does.
+#[inline]
 pub fn reaches_far_face(k: Key) -> bool {
-    let l = level(k);
-    let ones = dilate3((1u32 << l) - 1);
-    (0..3).any(|a| k >> a & ones == ones)
+    let ones = X_ONES[level(k) as usize];
+    k & ones == ones || k >> 1 & ones == ones || k >> 2 & ones == ones
 }
+
+/// `X_ONES[l]`: the x bits of a key at level l (every third bit below bit 3·l).
+const X_ONES: [u64; 22] = {
+    let mut t = [0u64; 22];
+    let mut l = 1;
+    while l < 22 {
+        t[l] = t[l - 1] | 1 << (3 * (l - 1));
+        l += 1;
+    }
+    t
+};
 
 /// The quadtree key of pixel (x, y) at `level` (the 2D examples of seed 000 Figs. 4.7, 5.1):
 /// 1 followed by y x bit pairs, x the least significant.
@@ -122,5 +133,23 @@ mod tests {
         assert_eq!(child(0b1101, 0b011), 107);
         assert_eq!(level(ROOT), 0);
         assert_eq!(level(107), 2);
+    }
+
+    #[test]
+    fn far_faces_are_reached_by_coordinates_all_ones() {
+        for l in 0..=3u32 {
+            let n = 1u32 << l;
+            for z in 0..n {
+                for y in 0..n {
+                    for x in 0..n {
+                        let want = [x, y, z].contains(&(n - 1));
+                        assert_eq!(reaches_far_face(key(x, y, z, l)), want, "{l} {x} {y} {z}");
+                    }
+                }
+            }
+        }
+        let top = (1 << 20) - 1;
+        assert!(reaches_far_face(key(3, top, 5, 20)));
+        assert!(!reaches_far_face(key(3, top - 1, 5, 20)));
     }
 }
