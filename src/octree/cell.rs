@@ -138,6 +138,52 @@ pub fn beyond_leaf(p: [u32; 3], size: u32, v: u8, side: u32, f: &mut impl FnMut(
     }
 }
 
+/// Corners at offset 1 on each axis: `FAR_CORNERS[a]` has bit i when corner Vi's a is 1.
+pub const FAR_CORNERS: [u8; 3] = {
+    let mut t = [0u8; 3];
+    let mut i = 0;
+    while i < 8 {
+        let mut a = 0;
+        while a < 3 {
+            t[a] |= CORNERS[i][a] << i;
+            a += 1;
+        }
+        i += 1;
+    }
+    t
+};
+
+/// Does deepest cell `c` of byte `v` border a cell past a far face with a surface (a filled
+/// corner on that face)? Cheap, so that traversals call [`beyond_node`] only then.
+#[inline]
+pub fn borders_far_cells(c: [u32; 3], v: u8, side: u32) -> bool {
+    let on = |a: usize| (c[a] == side - 1) & (v & FAR_CORNERS[a] != 0);
+    on(0) | on(1) | on(2)
+}
+
+/// [`beyond_leaf`] out of line, for the traversals' rare calls.
+#[cold]
+#[inline(never)]
+pub fn beyond_leaf_cold(
+    p: [u32; 3],
+    size: u32,
+    v: u8,
+    side: u32,
+    f: &mut impl FnMut([u32; 3], u8),
+) {
+    beyond_leaf(p, size, v, side, f);
+}
+
+/// [`beyond_leaf`] of the leaf with key `k` in a tree of `depth` levels, out of line: the
+/// traversals call it only for the few leaves on a far face.
+#[cold]
+#[inline(never)]
+pub fn beyond_node(k: super::key::Key, depth: u32, v: u8, f: &mut impl FnMut([u32; 3], u8)) {
+    let (l, c) = super::key::coords(k);
+    let s = depth - l;
+    beyond_leaf(c.map(|c| c << s), 1 << s, v, 1 << depth, f);
+}
+
 /// The byte of cell (x, y, z) with `voxel(i, j, k)` giving occupancy; cells read voxels
 /// x−1..x etc., so `voxel` must answer false outside the grid (including −1).
 pub fn cell_of(voxel: impl Fn(i64, i64, i64) -> bool, x: i64, y: i64, z: i64) -> u8 {

@@ -26,6 +26,7 @@ pub fn dilate3(v: u32) -> u64 {
 }
 
 /// The inverse of [`dilate3`]: every third bit of `d`, starting at bit 0.
+#[inline]
 pub fn undilate3(d: u64) -> u32 {
     let mut x = d & 0x1249_2492_4924_9249;
     x = (x | x >> 2) & 0x10c3_0c30_c30c_30c3;
@@ -58,11 +59,13 @@ pub fn child(k: Key, c: u8) -> Key {
 }
 
 /// The level of a key: (bit length − 1) / 3. Key 0 is not a key; it gets level 0.
+#[inline]
 pub fn level(k: Key) -> u32 {
     (63 - k.max(1).leading_zeros()) / 3
 }
 
 /// Level and coordinates of a key (the inverse of [`key`]).
+#[inline]
 pub fn coords(k: Key) -> (u32, [u32; 3]) {
     let l = level(k);
     let int = k & !(1 << (3 * l));
@@ -99,6 +102,7 @@ pub fn key2(x: u32, y: u32, level: u32) -> Key {
 }
 
 /// Pixel (x, y) and level of a quadtree key (the inverse of [`key2`]).
+#[inline]
 pub fn coords2(k: Key) -> (u32, [u32; 2]) {
     let l = (63 - k.max(1).leading_zeros()) / 2;
     let pick = |s: u32| (0..l).fold(0u32, |a, b| a | ((k >> (2 * b + s) & 1) as u32) << b);

@@ -153,19 +153,18 @@ impl PlainHashOctree {
     fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
         let side = 1u32 << self.depth;
         for e in self.table.entries() {
-            if e.internal || e.val == 0 {
+            let v = e.val;
+            if e.internal {
                 continue;
             }
-            if e.val != 255 {
+            if v.wrapping_sub(1) < 254 {
                 let c = key::coords(e.key).1;
-                f(c, e.val);
-                if c.contains(&(side - 1)) {
-                    cell::beyond_leaf(c, 1, e.val, side, &mut f);
+                f(c, v);
+                if cell::borders_far_cells(c, v, side) {
+                    cell::beyond_node(e.key, self.depth, v, &mut f);
                 }
-            } else if key::reaches_far_face(e.key) {
-                let (l, c) = key::coords(e.key);
-                let s = self.depth - l;
-                cell::beyond_leaf(c.map(|c| c << s), 1 << s, 255, side, &mut f);
+            } else if v == 255 && key::reaches_far_face(e.key) {
+                cell::beyond_node(e.key, self.depth, v, &mut f);
             }
         }
     }
