@@ -13,7 +13,7 @@ use glam::DVec3;
 use serde::Serialize;
 
 use crate::mesh::Tri;
-use crate::octree::cell::CORNERS;
+use crate::octree::cell::{BEYOND, CORNERS};
 use crate::octree::key::{self, Key};
 use crate::octree::{mc, OptimizedOctree, VoxelStore};
 
@@ -88,19 +88,24 @@ pub struct CellMesh {
 }
 
 impl CellMesh {
-    /// The mesh of every surface cell of `store` (global Marching Cubes, §3.1.2, per cell).
+    /// The mesh of every surface cell of `store` (global Marching Cubes, §3.1.2, per cell,
+    /// the cells past the grid's far faces included).
     pub fn of_store(store: &OptimizedOctree) -> CellMesh {
         let mut m = CellMesh::default();
         let mut scratch = Vec::with_capacity(CELL_TRIS);
-        let depth = store.depth();
-        store.for_each_surface_cell(&mut |p, v| {
-            m.set(key::key(p[0], p[1], p[2], depth), p, v, &mut scratch);
-        });
+        store.for_each_surface_cell(&mut |p, v| m.set(p, v, &mut scratch));
         m
     }
 
+    /// The map's key of cell `p`: a key one level below the deepest a store may have, so
+    /// that the cells past the far faces (a coordinate equal to the side) have keys too.
+    fn slot(p: [u32; 3]) -> Key {
+        key::key(p[0], p[1], p[2], key::MAX_DEPTH + 1)
+    }
+
     /// Replaces cell `p`'s triangles by those of byte `v`.
-    pub fn set(&mut self, k: Key, p: [u32; 3], v: u8, scratch: &mut Vec<Tri>) {
+    pub fn set(&mut self, p: [u32; 3], v: u8, scratch: &mut Vec<Tri>) {
+        let k = Self::slot(p);
         self.remove(k);
         scratch.clear();
         mc::cell_triangles(p, v, scratch);
@@ -257,9 +262,8 @@ const fn bits_of() -> [u8; 8] {
 }
 
 impl Sculptor {
-    /// A sculptor over `store` (a volume of `dims` voxels placed by `frame`). Removal may touch
-    /// every voxel of the volume; addition stops one voxel before the octree grid's far faces,
-    /// where no cell would close the surface (docs/octree.md, dual cells).
+    /// A sculptor over `store` (a volume of `dims` voxels placed by `frame`): the tool may
+    /// touch every voxel of the volume, removing or adding.
     pub fn new(
         mut store: OptimizedOctree,
         frame: Frame,
@@ -271,8 +275,7 @@ impl Sculptor {
             return Err("--stiffness must be a finite number >= 0".into());
         }
         let side = store.side() as u32;
-        let far = if tool.add { side - 1 } else { side };
-        let limit = dims.map(|d| (d.min(u32::MAX as usize) as u32).min(far));
+        let limit = dims.map(|d| (d.min(u32::MAX as usize) as u32).min(side));
         let mut mesh = CellMesh::of_store(&store);
         // Headroom so that early steps do not stall on a reallocation or a rehash (the
         // structures still grow, with a stall, past it).
@@ -398,26 +401,42 @@ impl Sculptor {
     }
 
     /// Applies the corner flips of the mask box at `lo` (dims `n`) to the store and the mesh.
+    /// The cells past the grid's far faces are not stored: once the stored cells are set,
+    /// each is re-meshed with the byte read from the stored cell it borders.
     fn apply_masks(&mut self, lo: [u32; 3], n: [usize; 3]) -> Result<u32, String> {
-        let (side, depth) = (self.store.side() as u32, self.store.depth());
-        let mut changed = 0;
-        for (i, &m) in self.masks.iter().enumerate() {
-            if m == 0 {
-                continue;
-            }
-            let p = [
+        let side = self.store.side() as u32;
+        let at = |i: usize| {
+            [
                 lo[0] + (i % n[0]) as u32,
                 lo[1] + (i / n[0] % n[1]) as u32,
                 lo[2] + (i / (n[0] * n[1])) as u32,
-            ];
-            if p.iter().any(|&c| c >= side) {
+            ]
+        };
+        let mut changed = 0;
+        let mut beyond = false;
+        for (i, &m) in self.masks.iter().enumerate() {
+            let p = at(i);
+            if m == 0 || p.iter().any(|&c| c >= side) {
+                beyond |= m != 0;
                 continue;
             }
             let v = self.store.cell(p[0], p[1], p[2]) ^ m;
             self.store.set_cell(p[0], p[1], p[2], v)?;
-            let k = key::key(p[0], p[1], p[2], depth);
-            self.mesh.set(k, p, v, &mut self.scratch);
+            self.mesh.set(p, v, &mut self.scratch);
             changed += 1;
+        }
+        if beyond {
+            for (i, &m) in self.masks.iter().enumerate() {
+                let p = at(i);
+                if m == 0 || p.iter().any(|&c| c > side) || !p.contains(&side) {
+                    continue;
+                }
+                let far = (0..3).fold(0u8, |f, a| f | u8::from(p[a] == side) << a);
+                let q = p.map(|c| c.min(side - 1));
+                let v = BEYOND[far as usize][self.store.cell(q[0], q[1], q[2]) as usize];
+                self.mesh.set(p, v, &mut self.scratch);
+                changed += 1;
+            }
         }
         Ok(changed)
     }

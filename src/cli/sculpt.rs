@@ -93,8 +93,8 @@ struct Report {
     nodes_added: u64,
     triangles_before: usize,
     triangles_after: usize,
-    /// Edges of the final mesh not in exactly two triangles: 0 when closed (a solid touching
-    /// the grid's far faces is open there; give --bounds with room).
+    /// Edges of the final mesh not in exactly two triangles: 0 when closed, which it always
+    /// is (the cells past the grid's far faces are meshed too).
     open_edges: usize,
     /// Per step: collision + update + local re-mesh + force.
     latency: Latency,

@@ -109,8 +109,8 @@ pub struct Args {
     #[arg(long)]
     preview: Option<PathBuf>,
     /// Also write the volume's surface as a mesh (.stl, .obj or .ply), by global Marching
-    /// Cubes over the optimized octree (docs/octree.md), in scene units. The mesh is closed
-    /// when the grid leaves at least one empty voxel before its far faces (--bounds).
+    /// Cubes over the optimized octree (docs/octree.md), in scene units: closed and wound
+    /// outward (outside the grid counts as empty); --json reports its triangles and open edges.
     #[arg(long)]
     mesh: Option<PathBuf>,
     /// Worker threads (default: all cores). The output does not depend on it.
@@ -295,6 +295,9 @@ struct Report {
     work: Work,
     #[serde(skip_serializing_if = "Option::is_none")]
     store: Option<StoreReport>,
+    /// With `--mesh`: its triangles and open edges.
+    #[serde(flatten)]
+    mesh: Option<MeshReport>,
     /// Hardware time at the thesis's 10 MHz clock.
     hardware_seconds: f64,
     wall_seconds: f64,
@@ -415,21 +418,31 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         write_preview(path, &volume, grey)?;
     }
     let comment = format!("csgpix voxelize {name}");
-    if let Some(path) = &a.mesh {
-        write_mesh(path, &grid, &volume, budget, &comment)?;
-    }
+    let mesh = match &a.mesh {
+        Some(path) => Some(write_mesh(path, &grid, &volume, budget, &comment)?),
+        None => None,
+    };
     csgpix::nrrd::write(&a.out, &grid, &volume.voxels, &comment)?;
-    report(&a, scene, &slicer, eval.as_ref(), (work, store), wall)
+    report(&a, scene, &slicer, eval.as_ref(), (work, store, mesh), wall)
 }
 
-/// The volume's surface by global Marching Cubes, in scene units (`--mesh`).
+/// The `--mesh` figures of the JSON report.
+#[derive(Serialize, Clone, Copy, Debug)]
+struct MeshReport {
+    mesh_triangles: usize,
+    /// Edges not in exactly two triangles (0: closed).
+    mesh_open_edges: usize,
+}
+
+/// The volume's surface by global Marching Cubes, in scene units (`--mesh`): closed, as the
+/// cells past the grid's far faces are meshed too (docs/octree.md).
 fn write_mesh(
     path: &Path,
     grid: &Grid,
     v: &Volume,
     budget: u64,
     comment: &str,
-) -> Result<(), String> {
+) -> Result<MeshReport, String> {
     csgpix::mesh::Format::of_path(path)?;
     let store = octree::OptimizedOctree::from_volume(v, budget)?;
     let frame = csgpix::sculpt::Frame::of_grid(grid);
@@ -438,7 +451,11 @@ fn write_mesh(
         .iter()
         .map(|t| t.map(|p| frame.to_scene(p)))
         .collect();
-    csgpix::mesh::write(path, &tris, comment)
+    csgpix::mesh::write(path, &tris, comment)?;
+    Ok(MeshReport {
+        mesh_triangles: tris.len(),
+        mesh_open_edges: csgpix::mesh::open_edges(&tris),
+    })
 }
 
 /// Voxelizes while building the store from each slice as it comes (`--store`); the store's
@@ -507,7 +524,7 @@ fn report(
     scene: &CsgScene,
     slicer: &Slicer,
     eval: &dyn SliceEval,
-    (work, store): (Work, Option<StoreReport>),
+    (work, store, mesh): (Work, Option<StoreReport>, Option<MeshReport>),
     wall: f64,
 ) -> Result<ExitCode, String> {
     let pixels = slicer.grid.slice_len();
@@ -547,6 +564,7 @@ fn report(
         state_bits_per_voxel: eval.state_bytes(pixels) * 8 / pixels.max(1),
         work,
         store,
+        mesh,
         hardware_seconds: work.cycles as f64 * 1e-7,
         wall_seconds: wall,
     };

@@ -4,9 +4,11 @@
 //! right-top-back corner of a cell of the same size: cell (x, y, z) has the eight voxels
 //! x−1..x, y−1..y, z−1..z as corners, and holds them packed into one byte, bit i for corner
 //! Vi, which is exactly the Marching Cubes case index. Voxels outside the grid read as empty.
-//! The cell grid has as many cells as the voxel grid (cells 0..side−1 on every axis), so no
-//! cell has voxel side−1 as its minimum corner: a solid touching the grid's far faces gives
-//! an open mesh there (the thesis's own convention, which Table 7.1 needs).
+//! The stored cell grid has as many cells as the voxel grid (cells 0..side−1 on every axis),
+//! as the thesis has it (Table 7.1's node counts need exactly this). No stored cell has voxel
+//! side−1 as its minimum corner, so Marching Cubes also visits the cells just past the far
+//! faces (a coordinate equal to side): they are not stored, their bytes come from the stored
+//! cell they border ([`beyond`]), and with them every mesh is closed.
 
 /// Corner offsets (dx, dy, dz) of bit i, from the cell's minimum corner voxel (x−1, y−1, z−1):
 /// the order of Fig. 3.18, which is Lorensen's and Bourke's with y up.
@@ -51,6 +53,135 @@ pub fn cut_edges(case: u8) -> u16 {
         let [p, q] = EDGES[e];
         a | u16::from((case >> p ^ case >> q) & 1 == 1) << e
     })
+}
+
+/// The byte of a cell past the grid's far faces, from the stored cell it borders: the cell at
+/// coordinate side on the axes of `far` (bit a for axis a) and the stored cell `v` at
+/// side−1 on those axes, the same elsewhere. Its corners past the grid (offset 1 on a far
+/// axis) are empty; the others are the stored cell's corners at offset 1 on the far axes.
+pub const fn beyond(v: u8, far: u8) -> u8 {
+    let mut out = 0u8;
+    let mut i = 0;
+    while i < 8 {
+        let c = CORNERS[i];
+        let mut src = c;
+        let mut outside = false;
+        let mut a = 0;
+        while a < 3 {
+            if far >> a & 1 == 1 {
+                outside |= c[a] == 1;
+                src[a] = 1;
+            }
+            a += 1;
+        }
+        if !outside {
+            let mut j = 0;
+            while j < 8 {
+                let d = CORNERS[j];
+                if d[0] == src[0] && d[1] == src[1] && d[2] == src[2] {
+                    out |= (v >> j & 1) << i;
+                }
+                j += 1;
+            }
+        }
+        i += 1;
+    }
+    out
+}
+
+/// [`beyond`] for every byte and set of far axes: `BEYOND[far][v]`.
+pub const BEYOND: [[u8; 256]; 8] = {
+    let mut t = [[0u8; 256]; 8];
+    let mut far = 1;
+    while far < 8 {
+        let mut v = 0;
+        while v < 256 {
+            t[far][v] = beyond(v as u8, far as u8);
+            v += 1;
+        }
+        far += 1;
+    }
+    t
+};
+
+/// The cells past the far faces of a grid of `side` cells that a leaf borders, with their
+/// bytes when they have a surface: the leaf at cell `p`, `size` cells a side, of byte `v` (a
+/// coarse leaf's is 0 or 255). Nothing unless the leaf reaches a far face and is not empty.
+#[inline]
+pub fn beyond_leaf(p: [u32; 3], size: u32, v: u8, side: u32, f: &mut impl FnMut([u32; 3], u8)) {
+    if v == 0 {
+        return;
+    }
+    let far = (0..3).fold(0u8, |m, a| m | u8::from(p[a] + size == side) << a);
+    if far == 0 {
+        return;
+    }
+    for b in 1..8u8 {
+        let w = BEYOND[b as usize][v as usize];
+        if b & !far != 0 || w == 0 {
+            continue;
+        }
+        let span = |a: usize| {
+            if b >> a & 1 == 1 {
+                side..side + 1
+            } else {
+                p[a]..p[a] + size
+            }
+        };
+        for z in span(2) {
+            for y in span(1) {
+                for x in span(0) {
+                    f([x, y, z], w);
+                }
+            }
+        }
+    }
+}
+
+/// Corners at offset 1 on each axis: `FAR_CORNERS[a]` has bit i when corner Vi's a is 1.
+pub const FAR_CORNERS: [u8; 3] = {
+    let mut t = [0u8; 3];
+    let mut i = 0;
+    while i < 8 {
+        let mut a = 0;
+        while a < 3 {
+            t[a] |= CORNERS[i][a] << i;
+            a += 1;
+        }
+        i += 1;
+    }
+    t
+};
+
+/// Does deepest cell `c` of byte `v` border a cell past a far face with a surface (a filled
+/// corner on that face)? Cheap, so that traversals call [`beyond_node`] only then.
+#[inline]
+pub fn borders_far_cells(c: [u32; 3], v: u8, side: u32) -> bool {
+    let on = |a: usize| (c[a] == side - 1) & (v & FAR_CORNERS[a] != 0);
+    on(0) | on(1) | on(2)
+}
+
+/// [`beyond_leaf`] out of line, for the traversals' rare calls.
+#[cold]
+#[inline(never)]
+pub fn beyond_leaf_cold(
+    p: [u32; 3],
+    size: u32,
+    v: u8,
+    side: u32,
+    f: &mut impl FnMut([u32; 3], u8),
+) {
+    beyond_leaf(p, size, v, side, f);
+}
+
+/// [`beyond_leaf`] of the leaf with key `k` in a tree of `depth` levels, out of line: the
+/// traversals call it only for the few leaves on a far face.
+#[cold]
+#[inline(never)]
+pub fn beyond_node(k: super::key::Key, depth: u32, v: u8, f: &mut impl FnMut([u32; 3], u8)) {
+    let (l, c) = super::key::coords(k);
+    let s = depth - l;
+    beyond_leaf(c.map(|c| c << s), 1 << s, v, 1 << depth, f);
 }
 
 /// The byte of cell (x, y, z) with `voxel(i, j, k)` giving occupancy; cells read voxels
@@ -270,6 +401,52 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn cells_past_the_far_faces_read_the_voxels_they_border() {
+        // Random 3³ volumes in a 2³-voxel grid (side 2): every cell with a coordinate 2 from
+        // `beyond_leaf` of the cells, against `cell_of` with the voxels past the grid empty.
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..200 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let bits = seed as u8;
+            let voxel = |x: i64, y: i64, z: i64| {
+                (0..2).contains(&x)
+                    && (0..2).contains(&y)
+                    && (0..2).contains(&z)
+                    && bits >> (z * 4 + y * 2 + x) & 1 == 1
+            };
+            let mut got = std::collections::BTreeMap::new();
+            for z in 0..2u32 {
+                for y in 0..2u32 {
+                    for x in 0..2u32 {
+                        let v = cell_of(voxel, x.into(), y.into(), z.into());
+                        beyond_leaf([x, y, z], 1, v, 2, &mut |p, w| {
+                            assert!(got.insert(p, w).is_none(), "{p:?} twice");
+                        });
+                    }
+                }
+            }
+            for z in 0..3u32 {
+                for y in 0..3u32 {
+                    for x in 0..3u32 {
+                        if ![x, y, z].contains(&2) {
+                            continue;
+                        }
+                        let want = cell_of(voxel, x.into(), y.into(), z.into());
+                        let have = got.get(&[x, y, z]).copied().unwrap_or(0);
+                        assert_eq!(have, want, "{bits:08b} cell {:?}", [x, y, z]);
+                    }
+                }
+            }
+        }
+        // A full coarse leaf of 2³ cells on the far corner of a 4³ grid: 3·4 + 3·2 + 1 cells.
+        let mut n = 0;
+        beyond_leaf([2, 2, 2], 2, 255, 4, &mut |_, _| n += 1);
+        assert_eq!(n, 19);
     }
 
     #[test]

@@ -121,5 +121,21 @@ impl DenseGrid {
                 );
             }
         }
+        // The cells past the far faces, from the cells on them.
+        let side = s as u32;
+        for z in 0..side {
+            for y in 0..side {
+                let row = (z as usize * s + y as usize) * s;
+                let xs = if y + 1 == side || z + 1 == side {
+                    0
+                } else {
+                    side - 1
+                };
+                for x in xs..side {
+                    let v = self.cells[row + x as usize];
+                    super::cell::beyond_leaf([x, y, z], 1, v, side, &mut f);
+                }
+            }
+        }
     }
 }

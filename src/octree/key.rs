@@ -26,6 +26,7 @@ pub fn dilate3(v: u32) -> u64 {
 }
 
 /// The inverse of [`dilate3`]: every third bit of `d`, starting at bit 0.
+#[inline]
 pub fn undilate3(d: u64) -> u32 {
     let mut x = d & 0x1249_2492_4924_9249;
     x = (x | x >> 2) & 0x10c3_0c30_c30c_30c3;
@@ -58,11 +59,13 @@ pub fn child(k: Key, c: u8) -> Key {
 }
 
 /// The level of a key: (bit length − 1) / 3. Key 0 is not a key; it gets level 0.
+#[inline]
 pub fn level(k: Key) -> u32 {
     (63 - k.max(1).leading_zeros()) / 3
 }
 
 /// Level and coordinates of a key (the inverse of [`key`]).
+#[inline]
 pub fn coords(k: Key) -> (u32, [u32; 3]) {
     let l = level(k);
     let int = k & !(1 << (3 * l));
@@ -72,6 +75,25 @@ pub fn coords(k: Key) -> (u32, [u32; 3]) {
     )
 }
 
+/// Does the node of key `k` reach a far face of the grid (a coordinate all ones at its
+/// level)? The root does.
+#[inline]
+pub fn reaches_far_face(k: Key) -> bool {
+    let ones = X_ONES[level(k) as usize];
+    k & ones == ones || k >> 1 & ones == ones || k >> 2 & ones == ones
+}
+
+/// `X_ONES[l]`: the x bits of a key at level l (every third bit below bit 3·l).
+const X_ONES: [u64; 22] = {
+    let mut t = [0u64; 22];
+    let mut l = 1;
+    while l < 22 {
+        t[l] = t[l - 1] | 1 << (3 * (l - 1));
+        l += 1;
+    }
+    t
+};
+
 /// The quadtree key of pixel (x, y) at `level` (the 2D examples of seed 000 Figs. 4.7, 5.1):
 /// 1 followed by y x bit pairs, x the least significant.
 pub fn key2(x: u32, y: u32, level: u32) -> Key {
@@ -80,6 +102,7 @@ pub fn key2(x: u32, y: u32, level: u32) -> Key {
 }
 
 /// Pixel (x, y) and level of a quadtree key (the inverse of [`key2`]).
+#[inline]
 pub fn coords2(k: Key) -> (u32, [u32; 2]) {
     let l = (63 - k.max(1).leading_zeros()) / 2;
     let pick = |s: u32| (0..l).fold(0u32, |a, b| a | ((k >> (2 * b + s) & 1) as u32) << b);
@@ -114,5 +137,23 @@ mod tests {
         assert_eq!(child(0b1101, 0b011), 107);
         assert_eq!(level(ROOT), 0);
         assert_eq!(level(107), 2);
+    }
+
+    #[test]
+    fn far_faces_are_reached_by_coordinates_all_ones() {
+        for l in 0..=3u32 {
+            let n = 1u32 << l;
+            for z in 0..n {
+                for y in 0..n {
+                    for x in 0..n {
+                        let want = [x, y, z].contains(&(n - 1));
+                        assert_eq!(reaches_far_face(key(x, y, z, l)), want, "{l} {x} {y} {z}");
+                    }
+                }
+            }
+        }
+        let top = (1 << 20) - 1;
+        assert!(reaches_far_face(key(3, top, 5, 20)));
+        assert!(!reaches_far_face(key(3, top - 1, 5, 20)));
     }
 }

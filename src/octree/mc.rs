@@ -77,14 +77,17 @@ impl McTable {
     }
 
     /// The triangles of cell `p` with byte `v`, appended to `out`.
-    #[inline]
+    /// (A plain loop rather than `array::map` and `extend`, which the compiler may leave as
+    /// calls in the stores' traversals.)
+    #[inline(always)]
     pub fn emit(&self, p: [u32; 3], v: u8, out: &mut Vec<Tri>) {
-        let base = p.map(|c| c as f32 - 1.0);
+        let b = [p[0] as f32 - 1.0, p[1] as f32 - 1.0, p[2] as f32 - 1.0];
         let row = &self.tris[v as usize][..self.count(v)];
-        out.extend(
-            row.iter()
-                .map(|t| t.map(|m| [base[0] + m[0], base[1] + m[1], base[2] + m[2]])),
-        );
+        let at = |m: [f32; 3]| [b[0] + m[0], b[1] + m[1], b[2] + m[2]];
+        out.reserve(row.len());
+        for t in row {
+            out.push([at(t[0]), at(t[1]), at(t[2])]);
+        }
     }
 }
 

@@ -6,6 +6,7 @@
 //! its dual cell, whose corners are the voxels x−1..x, y−1..y, z−1..z ([`cell`], §3.1.1.5).
 //! A voxel is bit 6 (corner V6 = (x, y, z)) of the cell with the same index. The cell grid is
 //! a cube of side 2^depth ≥ the volume's largest side; voxels beyond the volume are empty.
+//! Marching Cubes also meshes the cells just past the grid's far faces, so meshes are closed.
 //!
 //! The three octrees are built bottom-up, level by level, straight from voxel slices in
 //! order of z ([`build`]); none of them, nor the dense grid's builder, needs the volume.
@@ -95,7 +96,9 @@ pub trait VoxelStore: Send + Sync {
     fn bytes(&self) -> usize;
     /// Every leaf: its key and value (a coarse leaf's value is 0 or 255).
     fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8));
-    /// Every cell with a surface (byte not 0 nor 255), with its coordinates.
+    /// Every cell with a surface (byte not 0 nor 255), with its coordinates, the cells just
+    /// past the far faces included (a coordinate equal to the side: not stored, their bytes
+    /// from the stored cells they border, [`cell::beyond_leaf`]), so that meshes close.
     fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8));
     /// Global Marching Cubes (seed 000 §3.1.2) into `out`, cleared first: every surface
     /// cell's triangles, in the store's own traversal order.

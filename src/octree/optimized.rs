@@ -8,6 +8,7 @@
 //! leaf, by stripping three bits at a time until a key is in the table (§5.1, Eq. 5.1).
 
 use super::build::Merge;
+use super::cell;
 use super::key::{self, Key, ROOT};
 use super::mc::{self, Tri};
 use super::table::{Entry, KeyTable};
@@ -229,11 +230,20 @@ impl VoxelStore for OptimizedOctree {
 
 impl OptimizedOctree {
     /// Every surface cell: one linear pass over the table's entries (seed 000 §4.3.4: only
-    /// leaves are stored, and a leaf with a byte other than 0 and 255 is a deepest cell).
+    /// leaves are stored, and a leaf with a byte other than 0 and 255 is a deepest cell),
+    /// with the cells past the far faces that the non-empty leaves there border.
     fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
+        let side = 1u32 << self.depth;
         for e in self.table.entries() {
-            if e.val != 0 && e.val != 255 {
-                f(key::coords(e.key).1, e.val);
+            let v = e.val;
+            if v.wrapping_sub(1) < 254 {
+                let c = key::coords(e.key).1;
+                f(c, v);
+                if cell::borders_far_cells(c, v, side) {
+                    cell::beyond_node(e.key, self.depth, v, &mut f);
+                }
+            } else if v == 255 && key::reaches_far_face(e.key) {
+                cell::beyond_node(e.key, self.depth, v, &mut f);
             }
         }
     }

@@ -3,6 +3,7 @@
 //! by level from the deepest), with the internal nodes as well.
 
 use super::build::Merge;
+use super::cell;
 use super::key::{self, Key, ROOT};
 use super::mc::{self, Tri};
 use super::optimized::MIXED;
@@ -150,9 +151,20 @@ impl VoxelStore for PlainHashOctree {
 impl PlainHashOctree {
     /// Every surface cell: one linear pass over the table's entries, internal nodes skipped.
     fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
+        let side = 1u32 << self.depth;
         for e in self.table.entries() {
-            if !e.internal && e.val != 0 && e.val != 255 {
-                f(key::coords(e.key).1, e.val);
+            let v = e.val;
+            if e.internal {
+                continue;
+            }
+            if v.wrapping_sub(1) < 254 {
+                let c = key::coords(e.key).1;
+                f(c, v);
+                if cell::borders_far_cells(c, v, side) {
+                    cell::beyond_node(e.key, self.depth, v, &mut f);
+                }
+            } else if v == 255 && key::reaches_far_face(e.key) {
+                cell::beyond_node(e.key, self.depth, v, &mut f);
             }
         }
     }

@@ -17,6 +17,7 @@
 //! per 8 children, no node for a run of homogeneous cells) over the same builder.
 
 use super::build::Merge;
+use super::cell;
 use super::key::{self, Key, ROOT};
 use super::mc::Tri;
 use super::{Finish, StoreKind, VoxelStore};
@@ -126,8 +127,14 @@ impl PointerOctree {
     fn surface<F: FnMut([u32; 3], u8)>(&self, n: &Node, level: u32, p: [u32; 3], f: &mut F) {
         match n {
             Node::Leaf(v) => {
-                if level == self.depth && *v != 0 && *v != 255 {
-                    f(p, *v);
+                let (s, side, v) = (self.depth - level, 1 << self.depth, *v);
+                if s == 0 && v != 0 && v != 255 {
+                    f(p, v);
+                    if cell::borders_far_cells(p, v, side) {
+                        cell::beyond_leaf_cold(p, 1, v, side, f);
+                    }
+                } else if v == 255 && p.iter().any(|&c| (c + 1) << s == side) {
+                    cell::beyond_leaf_cold(p.map(|c| c << s), 1 << s, v, side, f);
                 }
             }
             Node::Inner(ch) => {
