@@ -405,8 +405,6 @@ fn mc_round_trip(
     (total, gained, lost, behind_back_faces)
 }
 
-}
-
 fn fails_with(args: &[&str], parts: &[&str]) {
     let o = csgpix(args);
     let err = String::from_utf8_lossy(&o.stderr);

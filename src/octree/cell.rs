@@ -184,6 +184,36 @@ pub fn beyond_node(k: super::key::Key, depth: u32, v: u8, f: &mut impl FnMut([u3
     beyond_leaf(c.map(|c| c << s), 1 << s, v, 1 << depth, f);
 }
 
+/// One stored leaf of a hashed store (key `k`, byte `v`) to the surface traversal: a deepest
+/// surface cell to `f`, then the cells past the far faces it or a full leaf there borders.
+#[inline(always)]
+pub fn hashed_leaf(k: super::key::Key, v: u8, depth: u32, f: &mut impl FnMut([u32; 3], u8)) {
+    if v.wrapping_sub(1) < 254 {
+        let c = super::key::coords(k).1;
+        f(c, v);
+        if borders_far_cells(c, v, 1 << depth) {
+            beyond_node(k, depth, v, f);
+        }
+    } else if v == 255 && super::key::reaches_far_face(k) {
+        beyond_node(k, depth, v, f);
+    }
+}
+
+/// One leaf of a pointer tree at `level` and cell `p` (in its level's units) to the surface
+/// traversal, as [`hashed_leaf`].
+#[inline(always)]
+pub fn tree_leaf(p: [u32; 3], level: u32, depth: u32, v: u8, f: &mut impl FnMut([u32; 3], u8)) {
+    let (s, side) = (depth - level, 1 << depth);
+    if s == 0 && v != 0 && v != 255 {
+        f(p, v);
+        if borders_far_cells(p, v, side) {
+            beyond_leaf_cold(p, 1, v, side, f);
+        }
+    } else if v == 255 && p.iter().any(|&c| (c + 1) << s == side) {
+        beyond_leaf_cold(p.map(|c| c << s), 1 << s, v, side, f);
+    }
+}
+
 /// The byte of cell (x, y, z) with `voxel(i, j, k)` giving occupancy; cells read voxels
 /// x−1..x etc., so `voxel` must answer false outside the grid (including −1).
 pub fn cell_of(voxel: impl Fn(i64, i64, i64) -> bool, x: i64, y: i64, z: i64) -> u8 {

@@ -233,18 +233,8 @@ impl OptimizedOctree {
     /// leaves are stored, and a leaf with a byte other than 0 and 255 is a deepest cell),
     /// with the cells past the far faces that the non-empty leaves there border.
     fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
-        let side = 1u32 << self.depth;
         for e in self.table.entries() {
-            let v = e.val;
-            if v.wrapping_sub(1) < 254 {
-                let c = key::coords(e.key).1;
-                f(c, v);
-                if cell::borders_far_cells(c, v, side) {
-                    cell::beyond_node(e.key, self.depth, v, &mut f);
-                }
-            } else if v == 255 && key::reaches_far_face(e.key) {
-                cell::beyond_node(e.key, self.depth, v, &mut f);
-            }
+            cell::hashed_leaf(e.key, e.val, self.depth, &mut f);
         }
     }
 }

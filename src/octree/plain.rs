@@ -151,21 +151,8 @@ impl VoxelStore for PlainHashOctree {
 impl PlainHashOctree {
     /// Every surface cell: one linear pass over the table's entries, internal nodes skipped.
     fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
-        let side = 1u32 << self.depth;
-        for e in self.table.entries() {
-            let v = e.val;
-            if e.internal {
-                continue;
-            }
-            if v.wrapping_sub(1) < 254 {
-                let c = key::coords(e.key).1;
-                f(c, v);
-                if cell::borders_far_cells(c, v, side) {
-                    cell::beyond_node(e.key, self.depth, v, &mut f);
-                }
-            } else if v == 255 && key::reaches_far_face(e.key) {
-                cell::beyond_node(e.key, self.depth, v, &mut f);
-            }
+        for e in self.table.entries().iter().filter(|e| !e.internal) {
+            cell::hashed_leaf(e.key, e.val, self.depth, &mut f);
         }
     }
 }

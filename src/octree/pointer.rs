@@ -126,17 +126,7 @@ impl PointerOctree {
     /// Every surface cell, walking the tree depth first (children in location-code order).
     fn surface<F: FnMut([u32; 3], u8)>(&self, n: &Node, level: u32, p: [u32; 3], f: &mut F) {
         match n {
-            Node::Leaf(v) => {
-                let (s, side, v) = (self.depth - level, 1 << self.depth, *v);
-                if s == 0 && v != 0 && v != 255 {
-                    f(p, v);
-                    if cell::borders_far_cells(p, v, side) {
-                        cell::beyond_leaf_cold(p, 1, v, side, f);
-                    }
-                } else if v == 255 && p.iter().any(|&c| (c + 1) << s == side) {
-                    cell::beyond_leaf_cold(p.map(|c| c << s), 1 << s, v, side, f);
-                }
-            }
+            Node::Leaf(v) => cell::tree_leaf(p, level, self.depth, *v, f),
             Node::Inner(ch) => {
                 for (c, n) in ch.iter().enumerate() {
                     self.surface(n, level + 1, super::child_xyz(p, c as u32), f);
