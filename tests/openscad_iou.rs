@@ -147,21 +147,7 @@ fn off_faces(csg: &Path, lo: [f64; 3], hi: [f64; 3]) -> Vec<bool> {
     // The word's plane error at the far corner, 2^-(F+1)·(1 + x + y) pixels (thesis word).
     let v = grid.voxel();
     let tol = (1.0 + 2.0 * n as f64) / 2048.0 * v.x.max(v.y);
-    let planes: Vec<Vec<(DVec3, f64)>> = scene
-        .solids
-        .iter()
-        .map(|s| {
-            s.faces
-                .iter()
-                .map(|f| {
-                    let v = |i: usize| DVec3::from(s.vertices[f[i % f.len()]]);
-                    let nrm: DVec3 = (0..f.len()).map(|i| v(i).cross(v(i + 1))).sum();
-                    let nrm = nrm.normalize();
-                    (nrm, nrm.dot(v(0)))
-                })
-                .collect()
-        })
-        .collect();
+    let planes: Vec<_> = scene.solids.iter().map(common::face_planes).collect();
     (0..n * n * n)
         .map(|idx| {
             let p = grid.centre(idx % n, idx / n % n, idx / (n * n));

@@ -5,29 +5,15 @@
 
 mod common;
 
-use common::random_scene;
+use common::{face_planes as planes, random_scene};
 use csgpix::evaluate::direct;
 use csgpix::scad::parse_csg;
 use csgpix::slice::SliceEval;
-use csgpix::solid::{ConvexSolid, CsgScene};
+use csgpix::solid::CsgScene;
 use csgpix::voxelize::{voxelize, Grid, Route, Sampling, Slicer, Volume};
 use glam::DVec3;
 use proptest::prelude::*;
 use rtl_model::{Equations, WordFormat};
-
-/// Outward face planes (unit normal, offset) of a convex solid, by Newell's method.
-fn planes(s: &ConvexSolid) -> Vec<(DVec3, f64)> {
-    s.faces
-        .iter()
-        .map(|f| {
-            let v = |i: usize| DVec3::from(s.vertices[f[i % f.len()]]);
-            let n: DVec3 = (0..f.len()).map(|i| v(i).cross(v(i + 1))).sum();
-            let n = n.normalize();
-            let c: DVec3 = (0..f.len()).map(v).sum::<DVec3>() / f.len() as f64;
-            (n, n.dot(c))
-        })
-        .collect()
-}
 
 /// Signed distance-like value of p to a convex solid: the largest signed distance to its face
 /// planes (≤ 0 inside; within t of 0 exactly when p is within t of the boundary, up to the

@@ -9,13 +9,13 @@ use csgpix::mesh;
 use csgpix::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix::output::write_atomic;
 use csgpix::sculpt::{self, Frame, Latency, Sculptor, Step, Tool};
-use csgpix::voxelize::{memory_estimate, GridSpec, Slicer, Volume};
+use csgpix::voxelize::{memory_estimate, Slicer, Volume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::WordFormat;
 use serde::Serialize;
 
-use super::voxelize::{parse_bounds, parse_res, SamplingArg};
+use super::voxelize::{parse_res, GridArgs};
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -33,20 +33,8 @@ pub struct Args {
     /// Voxels along X, Y, Z for a `.csg` scene: N or NXxNYxNZ (default 128).
     #[arg(long, value_parser = parse_res)]
     res: Option<[usize; 3]>,
-    /// Instead of --res: cubic voxels of this side (scene units) covering the bounds.
-    #[arg(long, conflicts_with = "res")]
-    voxel: Option<f64>,
-    /// Add this many empty voxels on every side of a `.csg` scene's grid.
-    #[arg(long, default_value_t = 0)]
-    pad: usize,
-    /// How a `.csg` scene is sampled: `centre` (a voxel is inside when its centre is) or the
-    /// thesis's `slab` (docs/voxelization.md).
-    #[arg(long, value_enum, default_value_t)]
-    sampling: SamplingArg,
-    /// Region to voxelize, X0,Y0,Z0,X1,Y1,Z1 in scene units (a `.csg` scene; default: its
-    /// bounds).
-    #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
-    bounds: Option<(DVec3, DVec3)>,
+    #[command(flatten)]
+    grid: GridArgs,
     /// The tool: sphere:R, R in voxels (0 < R <= 128).
     #[arg(long, value_parser = sculpt::parse_tool)]
     tool: f64,
@@ -201,9 +189,7 @@ fn load(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let ext = a.input.extension().and_then(|e| e.to_str()).unwrap_or("");
     match ext.to_ascii_lowercase().as_str() {
         "csg" => load_scene(a),
-        "nrrd" if a.res.is_none() && a.bounds.is_none() && a.voxel.is_none() && a.pad == 0 => {
-            load_nrrd(&a.input, a.max_memory)
-        }
+        "nrrd" if a.res.is_none() && !a.grid.any() => load_nrrd(&a.input, a.max_memory),
         "nrrd" => Err("--res, --voxel, --pad and --bounds apply to .csg scenes only".into()),
         _ => Err(format!(
             "{}: the input must be a .csg scene or a .nrrd volume",
@@ -227,16 +213,10 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
     let name = a.input.display().to_string();
     let loaded = csgpix::sampled::load_scene(&a.input)?;
     let scene = &loaded.scene;
-    let spec = GridSpec {
-        res: a.res.or(a.voxel.is_none().then_some([128; 3])),
-        voxel: a.voxel,
-        pad: a.pad,
-    };
-    let grid = match a.bounds {
-        Some((lo, hi)) => spec.grid(lo, hi),
-        None => loaded.bounds().and_then(|(lo, hi)| spec.grid(lo, hi)),
-    }
-    .map_err(|e| format!("{name}: {e}"))?;
+    let grid = a
+        .grid
+        .grid(Some(a.res.unwrap_or([128; 3])), &loaded)
+        .map_err(|e| format!("{name}: {e}"))?;
     let threads = rayon::current_num_threads();
     let need = memory_estimate(&grid, scene.primitive_count(), threads)
         .saturating_add(octree::memory_estimate(StoreKind::Octree, grid.dims)?);
@@ -248,7 +228,7 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
             a.max_memory
         ));
     }
-    let slicer = Slicer::with_sampling(scene, grid, WordFormat::THESIS, a.sampling.sampling())
+    let slicer = Slicer::with_sampling(scene, grid, WordFormat::THESIS, a.grid.sampling.sampling())
         .map_err(|e| format!("{name}: {e}"))?
         .with_sampled(loaded.sampled);
     let store = octree::optimized::from_scene(&slicer, &scene.root, budget - need)?;

@@ -62,21 +62,8 @@ pub struct Args {
     /// Voxels along X, Y, Z: N for a cube, or NXxNYxNZ.
     #[arg(long, value_parser = parse_res, required_unless_present = "voxel")]
     res: Option<[usize; 3]>,
-    /// Instead of --res: cubic voxels of this side (scene units), as many as cover the
-    /// bounds, the grid centred on them.
-    #[arg(long, conflicts_with = "res")]
-    voxel: Option<f64>,
-    /// Add this many empty voxels on every side of the grid (the voxel size is kept).
-    #[arg(long, default_value_t = 0)]
-    pad: usize,
-    /// `centre`: a voxel is inside when its centre is inside the solid (binvox, OpenVDB);
-    /// `slab`: when the segment through its centre along Z meets each primitive (the thesis's
-    /// §4.4 slab, which dilates subtracted solids). docs/voxelization.md.
-    #[arg(long, value_enum, default_value_t)]
-    sampling: SamplingArg,
-    /// Region to voxelize, X0,Y0,Z0,X1,Y1,Z1 in scene units (default: the scene's bounds).
-    #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
-    bounds: Option<(DVec3, DVec3)>,
+    #[command(flatten)]
+    grid: GridArgs,
     /// Processor model: `cycle` simulates every P·Vz frame clock by clock; `word` uses the
     /// array's plane words (see --route); `float` exact intervals, the reference.
     #[arg(long, value_enum, default_value_t)]
@@ -126,6 +113,47 @@ pub struct Args {
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
+}
+
+/// The grid and sampling options `voxelize` and `sculpt` share (beside their own `--res`).
+#[derive(clap::Args, Debug)]
+pub struct GridArgs {
+    /// Instead of --res: cubic voxels of this side (scene units), as many as cover the
+    /// bounds, the grid centred on them.
+    #[arg(long, conflicts_with = "res")]
+    voxel: Option<f64>,
+    /// Add this many empty voxels on every side of the grid (the voxel size is kept).
+    #[arg(long, default_value_t = 0)]
+    pad: usize,
+    /// `centre`: a voxel is inside when its centre is inside the solid (binvox, OpenVDB);
+    /// `slab`: when the segment through its centre along Z meets each primitive (the thesis's
+    /// §4.4 slab, which dilates subtracted solids). docs/voxelization.md.
+    #[arg(long, value_enum, default_value_t)]
+    pub sampling: SamplingArg,
+    /// Region to voxelize, X0,Y0,Z0,X1,Y1,Z1 in scene units (default: the scene's bounds).
+    #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
+    pub bounds: Option<(DVec3, DVec3)>,
+}
+
+impl GridArgs {
+    /// The grid of `res` voxels per axis (or of `--voxel`) over `--bounds` or the scene's.
+    pub fn grid(&self, res: Option<[usize; 3]>, scene: &Loaded) -> Result<Grid, String> {
+        let spec = GridSpec {
+            res: res.filter(|_| self.voxel.is_none()),
+            voxel: self.voxel,
+            pad: self.pad,
+        };
+        let (lo, hi) = match self.bounds {
+            Some(b) => b,
+            None => scene.bounds()?,
+        };
+        spec.grid(lo, hi)
+    }
+
+    /// Whether any grid option was given (they apply to scenes only).
+    pub fn any(&self) -> bool {
+        self.voxel.is_some() || self.pad > 0 || self.bounds.is_some()
+    }
 }
 
 /// `--sampling`, shared with `sculpt`.
@@ -345,16 +373,10 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         csgpix::mesh::Format::of_path(p)?;
     }
     let loaded = load(&a)?;
-    let spec = GridSpec {
-        res: a.res,
-        voxel: a.voxel,
-        pad: a.pad,
-    };
-    let grid = match a.bounds {
-        Some((lo, hi)) => spec.grid(lo, hi),
-        None => loaded.bounds().and_then(|(lo, hi)| spec.grid(lo, hi)),
-    }
-    .map_err(|e| format!("{name}: {e}"))?;
+    let grid = a
+        .grid
+        .grid(a.res, &loaded)
+        .map_err(|e| format!("{name}: {e}"))?;
     let scene = &loaded.scene;
     let threads = a.threads.unwrap_or_else(rayon::current_num_threads).max(1);
     let mut need = memory_estimate(&grid, scene.primitive_count(), threads);
@@ -371,7 +393,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             a.max_memory
         ));
     }
-    let mut slicer = Slicer::with_sampling(scene, grid, a.word, a.sampling.sampling())
+    let mut slicer = Slicer::with_sampling(scene, grid, a.word, a.grid.sampling.sampling())
         .map_err(|e| format!("{name}: {e}"))?
         .with_sampled(loaded.sampled);
     slicer.panel = a.panel.0;
@@ -531,7 +553,7 @@ fn report(
     let table = BlistTable::compile(&scene.root);
     let r = Report {
         dims: slicer.grid.dims,
-        sampling: a.sampling.name(),
+        sampling: a.grid.sampling.name(),
         voxel: slicer.grid.voxel().to_array(),
         min: slicer.grid.min.to_array(),
         max: slicer.grid.max.to_array(),

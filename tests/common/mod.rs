@@ -47,3 +47,19 @@ pub fn csgpix(args: &[&str]) -> std::process::Output {
         .output()
         .expect("run csgpix")
 }
+
+/// Outward face planes (unit normal, offset) of a convex solid, by Newell's method: the
+/// geometry direct evaluation checks the slices against.
+pub fn face_planes(s: &csgpix::solid::ConvexSolid) -> Vec<(glam::DVec3, f64)> {
+    use glam::DVec3;
+    s.faces
+        .iter()
+        .map(|f| {
+            let v = |i: usize| DVec3::from(s.vertices[f[i % f.len()]]);
+            let n: DVec3 = (0..f.len()).map(|i| v(i).cross(v(i + 1))).sum();
+            let n = n.normalize();
+            let c: DVec3 = (0..f.len()).map(v).sum::<DVec3>() / f.len() as f64;
+            (n, n.dot(c))
+        })
+        .collect()
+}
