@@ -5,6 +5,7 @@
 //! and its reverse exactly once, and a positive signed volume.
 
 mod common;
+use common::volume;
 
 use csgpix::octree::mc::marching_cubes;
 use csgpix::octree::{from_volume, OptimizedOctree, StoreKind};
@@ -69,18 +70,6 @@ fn closed_volume(tris: &[Tri], what: &str) -> f64 {
         .sum();
     assert!(vol > 0.0, "{what}: signed volume {vol} (wound inward)");
     vol
-}
-
-fn volume(dims: [usize; 3], f: impl Fn(usize, usize, usize) -> bool) -> Volume {
-    let mut voxels = Vec::with_capacity(dims.iter().product());
-    for z in 0..dims[2] {
-        for y in 0..dims[1] {
-            for x in 0..dims[0] {
-                voxels.push(u8::from(f(x, y, z)));
-            }
-        }
-    }
-    Volume { dims, voxels }
 }
 
 /// Every store's global Marching Cubes mesh of `v`: closed, outward, the same signed volume;

@@ -2,6 +2,9 @@
 //! count invariants, Table 7.1's cube rows, every store against the dense grid and against
 //! the dual cells computed straight from the volume, and closed Marching Cubes meshes.
 
+mod common;
+use common::volume;
+
 use csgpix::blist::BlistEval;
 use csgpix::octree::cell::{case_of, cell_of, cut_edges};
 use csgpix::octree::key::{coords2, key, key2, parent};
@@ -23,19 +26,6 @@ fn store(kind: StoreKind, v: &Volume) -> Box<dyn VoxelStore> {
 
 fn all_stores(v: &Volume) -> Vec<Box<dyn VoxelStore>> {
     StoreKind::ALL.iter().map(|&k| store(k, v)).collect()
-}
-
-/// A volume from a voxel predicate.
-fn volume(dims: [usize; 3], f: impl Fn(usize, usize, usize) -> bool) -> Volume {
-    let mut voxels = Vec::with_capacity(dims.iter().product());
-    for z in 0..dims[2] {
-        for y in 0..dims[1] {
-            for x in 0..dims[0] {
-                voxels.push(u8::from(f(x, y, z)));
-            }
-        }
-    }
-    Volume { dims, voxels }
 }
 
 fn filled(v: &Volume, x: i64, y: i64, z: i64) -> bool {

@@ -63,3 +63,19 @@ pub fn face_planes(s: &csgpix::solid::ConvexSolid) -> Vec<(glam::DVec3, f64)> {
         })
         .collect()
 }
+
+/// A volume from a voxel predicate (1 inside, 0 outside; X fastest).
+pub fn volume(
+    dims: [usize; 3],
+    f: impl Fn(usize, usize, usize) -> bool,
+) -> csgpix::voxelize::Volume {
+    let mut voxels = Vec::with_capacity(dims.iter().product());
+    for z in 0..dims[2] {
+        for y in 0..dims[1] {
+            for x in 0..dims[0] {
+                voxels.push(u8::from(f(x, y, z)));
+            }
+        }
+    }
+    csgpix::voxelize::Volume { dims, voxels }
+}
