@@ -1,0 +1,615 @@
+//! OpenSCAD's 2D shapes and their extrusions (`linear_extrude`, `rotate_extrude`), `offset`,
+//! in the vertex layout of OpenSCAD 2021.01, as the `.csg` reader hands them to the array.
+//!
+//! The array draws convex solids (§5.2); everything else reaches it as a closed mesh
+//! primitive whose slices are the parity of ray crossings (§3.4.2, [`crate::trimesh`]):
+//!
+//! * a 2D boolean is never computed as a polygon: an extrusion maps each height (or angle) of
+//!   the plane one to one, so the extrusion of A − B is the extrusion of A minus that of B,
+//!   and the reader emits that CSG tree over the extruded leaves;
+//! * a `linear_extrude` of one convex outline without twist and with a uniform scale is convex
+//!   ([`convex_prism`]): the hull of its bottom and scaled top outlines;
+//! * every other extrusion is a closed triangle mesh ([`linear_mesh`], [`rotate_mesh`]): each
+//!   outline's side walls between consecutive slices (or angles), and its caps as a fan from
+//!   the outline's first vertex. A fan of a concave outline overlaps itself, but crossings are
+//!   counted by parity, under which the fan is the outline's interior (and several outlines,
+//!   holes included, are OpenSCAD's even-odd fill); every edge is in exactly two triangles.
+
+use glam::{DVec2, DVec3};
+
+/// A 2D shape: closed outlines, filled by the even-odd rule (OpenSCAD's `polygon` with
+/// `paths`: an outline inside another is a hole).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Poly2 {
+    pub paths: Vec<Vec<DVec2>>,
+}
+
+/// A 2D CSG tree over shapes, as the `.csg` file writes it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Region {
+    Poly(Poly2),
+    Union(Vec<Region>),
+    Intersection(Vec<Region>),
+    /// The first minus the others.
+    Difference(Vec<Region>),
+}
+
+/// A triangle in scene units.
+pub type Tri3 = [DVec3; 3];
+
+impl Poly2 {
+    /// `square(size, center)`: counter-clockwise from the corner nearest −∞.
+    pub fn square(w: f64, h: f64, center: bool) -> Poly2 {
+        let (x0, y0) = if center { (-w / 2.0, -h / 2.0) } else { (0.0, 0.0) };
+        let p = |x, y| DVec2::new(x, y);
+        Poly2 {
+            paths: vec![vec![p(x0, y0), p(x0 + w, y0), p(x0 + w, y0 + h), p(x0, y0 + h)]],
+        }
+    }
+
+    /// `circle(r)` with `fragments` points, point i at 360·i/fragments degrees (OpenSCAD's
+    /// `generate_circle`), from the exact-at-30°-and-45° sine and cosine `sincos`.
+    pub fn circle(r: f64, fragments: usize, sincos: impl Fn(f64) -> (f64, f64)) -> Poly2 {
+        let path = (0..fragments)
+            .map(|i| {
+                let (s, c) = sincos(360.0 * i as f64 / fragments as f64);
+                DVec2::new(r * c, r * s)
+            })
+            .collect();
+        Poly2 { paths: vec![path] }
+    }
+
+    /// Every outline under the plane's affine map `m` (row-major 2×3: x' = m[0]·(x, y, 1)).
+    pub fn transformed(&self, m: [[f64; 3]; 2]) -> Poly2 {
+        let map = |p: DVec2| {
+            DVec2::new(
+                m[0][0] * p.x + m[0][1] * p.y + m[0][2],
+                m[1][0] * p.x + m[1][1] * p.y + m[1][2],
+            )
+        };
+        Poly2 {
+            paths: self
+                .paths
+                .iter()
+                .map(|path| path.iter().map(|&p| map(p)).collect())
+                .collect(),
+        }
+    }
+
+    /// The one outline, counter-clockwise, when the shape is a single convex outline (repeated
+    /// points dropped; collinear points kept). None otherwise.
+    pub fn convex_outline(&self) -> Option<Vec<DVec2>> {
+        let [path] = self.paths.as_slice() else {
+            return None;
+        };
+        let mut p: Vec<DVec2> = path.clone();
+        p.dedup();
+        while p.len() > 1 && p.first() == p.last() {
+            p.pop();
+        }
+        if p.len() < 3 {
+            return None;
+        }
+        if signed_area(&p) < 0.0 {
+            p.reverse();
+        }
+        let n = p.len();
+        let scale = p.iter().map(|q| q.abs().max_element()).fold(0.0, f64::max);
+        let tol = 1e-12 * scale * scale;
+        let mut turns = 0.0;
+        for i in 0..n {
+            let (a, b, c) = (p[i], p[(i + 1) % n], p[(i + 2) % n]);
+            let cross = (b - a).perp_dot(c - b);
+            if cross < -tol {
+                return None;
+            }
+            turns += (b - a).angle_to(c - b);
+        }
+        // One turn round, not a star winding several times.
+        ((turns - std::f64::consts::TAU).abs() < 1e-6).then_some(p)
+    }
+
+    /// Every vertex.
+    pub fn points(&self) -> impl Iterator<Item = DVec2> + '_ {
+        self.paths.iter().flatten().copied()
+    }
+}
+
+/// The signed area of an outline (positive counter-clockwise).
+pub fn signed_area(p: &[DVec2]) -> f64 {
+    (0..p.len())
+        .map(|i| p[i].perp_dot(p[(i + 1) % p.len()]))
+        .sum::<f64>()
+        / 2.0
+}
+
+/// `linear_extrude`'s parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Linear {
+    pub height: f64,
+    pub center: bool,
+    /// Degrees; positive twists clockwise seen from +Z, as OpenSCAD's.
+    pub twist: f64,
+    pub slices: usize,
+    pub scale: [f64; 2],
+}
+
+impl Linear {
+    /// Bottom and top heights.
+    fn z(&self) -> (f64, f64) {
+        if self.center {
+            (-self.height / 2.0, self.height / 2.0)
+        } else {
+            (0.0, self.height)
+        }
+    }
+
+    /// Whether the solid of one convex outline is convex: no twist, one scale for X and Y.
+    pub fn keeps_convex(&self) -> bool {
+        self.twist == 0.0 && self.scale[0] == self.scale[1]
+    }
+
+    /// Point `p` of the outline at slice j of n.
+    fn at(&self, p: DVec2, j: usize, sincos: &dyn Fn(f64) -> (f64, f64)) -> DVec3 {
+        let t = j as f64 / self.slices as f64;
+        let (z0, z1) = self.z();
+        let s = DVec2::new(
+            1.0 + (self.scale[0] - 1.0) * t,
+            1.0 + (self.scale[1] - 1.0) * t,
+        );
+        let q = p * s;
+        let (sn, cs) = sincos(-self.twist * t);
+        DVec3::new(q.x * cs - q.y * sn, q.x * sn + q.y * cs, z0 + (z1 - z0) * t)
+    }
+}
+
+/// OpenSCAD 2021.01's slice count when `slices` is not given (`Calc::get_helix_slices`,
+/// `get_conical_helix_slices`, `get_diagonal_slices`): with a twist, enough that no slice
+/// turns more than `$fa` or runs longer than `$fs` along the outermost point's helix (or
+/// `$fn` per turn), at least one per 120°; with a non-uniform scale, one per `$fs` along the
+/// longest diagonal (or `$fn`); otherwise 1. `r_max` is the outline's largest radius.
+pub fn default_slices(l: &Linear, r_max: f64, fn_: f64, fa: f64, fs: f64, max_delta: f64) -> f64 {
+    let twist = l.twist.abs();
+    if twist > 0.0 {
+        let min_slices = (twist / 120.0).ceil().max(1.0);
+        if r_max < 1e-6 || !fn_.is_finite() {
+            return min_slices;
+        }
+        if fn_ > 0.0 {
+            return (twist / 360.0 * fn_).ceil().max(min_slices);
+        }
+        let fa_slices = (twist / fa).ceil();
+        let fs_slices = (helix_length(l, r_max) / fs).ceil();
+        return fa_slices.min(fs_slices).max(min_slices);
+    }
+    if l.scale[0] != l.scale[1] {
+        if max_delta < 1e-6 || !fn_.is_finite() {
+            return 1.0;
+        }
+        if fn_ > 0.0 {
+            return fn_.trunc().max(1.0);
+        }
+        return ((max_delta * max_delta + l.height * l.height).sqrt() / fs)
+            .ceil()
+            .max(1.0);
+    }
+    1.0
+}
+
+/// Length of the path of a point at radius r along the twisted, scaled extrusion, as
+/// OpenSCAD measures it: the planar spiral's length (Simpson's rule on 64 intervals) and the
+/// height as the legs of a right triangle.
+fn helix_length(l: &Linear, r: f64) -> f64 {
+    let s = (l.scale[0] + l.scale[1]) / 2.0;
+    let w = l.twist.abs().to_radians();
+    let dr = r * (s - 1.0);
+    let speed = |t: f64| {
+        let radius = r * (1.0 + (s - 1.0) * t);
+        (dr * dr + (radius * w).powi(2)).sqrt()
+    };
+    let n = 64;
+    let h = 1.0 / n as f64;
+    let sum: f64 = (0..=n)
+        .map(|i| {
+            let k = if i == 0 || i == n {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            k * speed(i as f64 * h)
+        })
+        .sum();
+    let planar = sum * h / 3.0;
+    (planar * planar + l.height * l.height).sqrt()
+}
+
+/// The convex solid of `linear_extrude` over one convex outline (counter-clockwise), no
+/// twist, scale `s` for both axes: vertices and faces counter-clockwise seen from outside.
+/// A zero scale makes the top a single apex.
+pub fn convex_prism(outline: &[DVec2], l: &Linear) -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
+    let n = outline.len();
+    let (z0, z1) = l.z();
+    let s = l.scale[0];
+    let mut v: Vec<[f64; 3]> = outline.iter().map(|p| [p.x, p.y, z0]).collect();
+    let mut faces: Vec<Vec<usize>> = vec![(0..n).rev().collect()];
+    if s == 0.0 {
+        v.push([0.0, 0.0, z1]);
+        faces.extend((0..n).map(|i| vec![i, (i + 1) % n, n]));
+    } else {
+        v.extend(outline.iter().map(|p| [p.x * s, p.y * s, z1]));
+        faces.push((n..2 * n).collect());
+        faces.extend((0..n).map(|i| {
+            let j = (i + 1) % n;
+            vec![i, j, n + j, n + i]
+        }));
+    }
+    (v, faces)
+}
+
+/// `linear_extrude` as a closed mesh: every outline's walls between consecutive slices (each
+/// quad split along its diagonal from the lower first corner), a fan cap at the bottom and,
+/// unless the top is scaled to a point, at the top.
+pub fn linear_mesh(poly: &Poly2, l: &Linear, sincos: &dyn Fn(f64) -> (f64, f64)) -> Vec<Tri3> {
+    let mut out = vec![];
+    for path in poly.paths.iter().filter(|p| p.len() >= 3) {
+        let n = path.len();
+        let ring = |j: usize| -> Vec<DVec3> { path.iter().map(|&p| l.at(p, j, sincos)).collect() };
+        let mut lower = ring(0);
+        fan(&lower, &mut out);
+        for j in 1..=l.slices {
+            let upper = ring(j);
+            for i in 0..n {
+                let k = (i + 1) % n;
+                push(&mut out, [lower[i], lower[k], upper[k]]);
+                push(&mut out, [lower[i], upper[k], upper[i]]);
+            }
+            lower = upper;
+        }
+        fan(&lower, &mut out);
+    }
+    out
+}
+
+/// `rotate_extrude` over `angle` degrees in `fragments` steps as a closed mesh: each outline
+/// (x the radius, y the height) swept about Z. A full turn starts at 180° (OpenSCAD's "start on
+/// the −X axis") and closes on itself; a part turn runs from +X counter-clockwise (clockwise
+/// for a negative angle) and is capped at both ends. Err when the outline has points on both
+/// sides of the axis.
+pub fn rotate_mesh(
+    poly: &Poly2,
+    angle: f64,
+    fragments: usize,
+    sincos: &dyn Fn(f64) -> (f64, f64),
+) -> Result<Vec<Tri3>, String> {
+    let (lo, hi) = poly
+        .points()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.x), b.max(p.x))
+        });
+    if lo < 0.0 && hi > 0.0 {
+        return Err("all points for rotate_extrude() must have the same X coordinate sign".into());
+    }
+    let full = angle.abs() >= 360.0;
+    let at = |j: usize| {
+        if full {
+            180.0 + 360.0 * j as f64 / fragments as f64
+        } else {
+            angle * j as f64 / fragments as f64
+        }
+    };
+    let mut out = vec![];
+    for path in poly.paths.iter().filter(|p| p.len() >= 3) {
+        let ring = |a: f64| -> Vec<DVec3> {
+            let (s, c) = sincos(a);
+            path.iter().map(|p| DVec3::new(p.x * c, p.x * s, p.y)).collect()
+        };
+        let first = ring(at(0));
+        let mut lower = first.clone();
+        let n = path.len();
+        for j in 1..=fragments {
+            let upper = if full && j == fragments {
+                first.clone()
+            } else {
+                ring(at(j))
+            };
+            for i in 0..n {
+                let k = (i + 1) % n;
+                push(&mut out, [lower[i], lower[k], upper[k]]);
+                push(&mut out, [lower[i], upper[k], upper[i]]);
+            }
+            lower = upper;
+        }
+        if !full {
+            fan(&first, &mut out);
+            fan(&lower, &mut out);
+        }
+    }
+    Ok(out)
+}
+
+/// A triangle unless two of its corners coincide (a ring on the axis, a top scaled to a point).
+fn push(out: &mut Vec<Tri3>, t: Tri3) {
+    if t[0] != t[1] && t[1] != t[2] && t[2] != t[0] {
+        out.push(t);
+    }
+}
+
+/// An outline's cap as a fan from its first vertex (overlapping where the outline is concave:
+/// by parity, the interior).
+fn fan(ring: &[DVec3], out: &mut Vec<Tri3>) {
+    for i in 1..ring.len().saturating_sub(1) {
+        push(out, [ring[0], ring[i], ring[i + 1]]);
+    }
+}
+
+/// How `offset` moves edges.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Offset {
+    /// `r`: round corners with `fragments` points per full turn.
+    Round { r: f64, fragments: usize },
+    /// `delta`: sharp (mitred) corners, or cut corners with `chamfer`.
+    Delta { delta: f64, chamfer: bool },
+}
+
+impl Offset {
+    fn amount(&self) -> f64 {
+        match *self {
+            Offset::Round { r, .. } => r,
+            Offset::Delta { delta, .. } => delta,
+        }
+    }
+}
+
+/// `offset` of a region, where csgpix can: a single convex outline by any amount, and a union
+/// by a positive amount (a Minkowski sum distributes over union). Err names what is not.
+pub fn offset(region: &Region, o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> Result<Region, String> {
+    match region {
+        Region::Union(parts) if o.amount() >= 0.0 => Ok(Region::Union(
+            parts
+                .iter()
+                .map(|p| offset(p, o, sincos))
+                .collect::<Result<_, _>>()?,
+        )),
+        Region::Poly(p) => {
+            let outline = p.convex_outline().ok_or(
+                "offset() of a concave or holed shape is not supported (csgpix offsets single convex outlines, and unions of them outward)",
+            )?;
+            Ok(Region::Poly(Poly2 {
+                paths: vec![offset_convex(&outline, o, sincos)],
+            }))
+        }
+        _ => Err("offset() of a 2D difference or intersection (or inward offset of a union) is not supported".into()),
+    }
+}
+
+/// A convex counter-clockwise outline offset: outward with round, mitred or chamfered
+/// corners; inward as the outline clipped by every edge moved in (all three agree there).
+fn offset_convex(p: &[DVec2], o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> Vec<DVec2> {
+    let n = p.len();
+    let normal = |i: usize| {
+        let e = p[(i + 1) % n] - p[i];
+        DVec2::new(e.y, -e.x).normalize_or_zero()
+    };
+    let d = o.amount();
+    if d < 0.0 {
+        return (0..n).fold(p.to_vec(), |poly, i| {
+            clip(&poly, normal(i), normal(i).dot(p[i]) + d)
+        });
+    }
+    let mut out = vec![];
+    for i in 0..n {
+        let (n0, n1) = (normal((i + n - 1) % n), normal(i));
+        match o {
+            Offset::Delta { chamfer: false, .. } => {
+                let bis = (n0 + n1).normalize_or_zero();
+                out.push(p[i] + bis * (d / bis.dot(n1).max(1e-12)));
+            }
+            Offset::Delta { chamfer: true, .. } => {
+                out.push(p[i] + n0 * d);
+                out.push(p[i] + n1 * d);
+            }
+            Offset::Round { fragments, .. } => {
+                let (a0, a1) = (n0.y.atan2(n0.x), n1.y.atan2(n1.x));
+                let mut turn = (a1 - a0).to_degrees();
+                if turn < 0.0 {
+                    turn += 360.0;
+                }
+                let steps = ((turn / 360.0) * fragments as f64).ceil().max(1.0) as usize;
+                for k in 0..=steps {
+                    let (s, c) = sincos(a0.to_degrees() + turn * k as f64 / steps as f64);
+                    out.push(p[i] + DVec2::new(c, s) * d);
+                }
+            }
+        }
+    }
+    out.dedup();
+    out
+}
+
+/// The part of a convex polygon where n·x ≤ c (Sutherland-Hodgman against one half-plane).
+fn clip(poly: &[DVec2], n: DVec2, c: f64) -> Vec<DVec2> {
+    let mut out = vec![];
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        let (da, db) = (n.dot(a) - c, n.dot(b) - c);
+        if da <= 0.0 {
+            out.push(a);
+        }
+        if (da < 0.0) != (db < 0.0) && da != db {
+            out.push(a + (b - a) * (da / (da - db)));
+        }
+    }
+    out
+}
+
+/// Every vertex of a region's shapes, for `hull()`; Err under a difference or intersection
+/// (their hull is not the hull of their operands' points).
+pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<(), String> {
+    match r {
+        Region::Poly(p) => out.extend(p.points()),
+        Region::Union(parts) => {
+            for p in parts {
+                region_points(p, out)?;
+            }
+        }
+        _ => {
+            return Err(
+                "hull() of a 2D difference or intersection is not supported (csgpix takes the hull of its children's vertices)"
+                    .into(),
+            )
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sc(a: f64) -> (f64, f64) {
+        a.to_radians().sin_cos()
+    }
+
+    fn closed(tris: &[Tri3]) -> bool {
+        let key = |p: DVec3| p.to_array().map(f64::to_bits);
+        let mut edges = std::collections::HashMap::new();
+        for t in tris {
+            for k in 0..3 {
+                let (a, b) = (key(t[k]), key(t[(k + 1) % 3]));
+                let e = if a < b { (a, b) } else { (b, a) };
+                *edges.entry(e).or_insert(0) += 1;
+            }
+        }
+        edges.values().all(|&n| n == 2)
+    }
+
+    /// Parity of the crossings of the ray from (x, y, z) towards +Z with the triangles.
+    fn inside(tris: &[Tri3], x: f64, y: f64, z: f64) -> bool {
+        let p = DVec2::new(x, y);
+        tris.iter()
+            .filter(|t| {
+                let [a, b, c] = t.map(|v| v.truncate());
+                let s = |u: DVec2, v: DVec2| (v - u).perp_dot(p - u);
+                let (d1, d2, d3) = (s(a, b), s(b, c), s(c, a));
+                let area = d1 + d2 + d3;
+                let hit = (d1 > 0.0 && d2 > 0.0 && d3 > 0.0) || (d1 < 0.0 && d2 < 0.0 && d3 < 0.0);
+                // Barycentric depth of the crossing.
+                hit && (t[0].z * d2 + t[1].z * d3 + t[2].z * d1) / area > z
+            })
+            .count()
+            % 2
+            == 1
+    }
+
+    #[test]
+    fn a_square_with_a_hole_extrudes_to_a_closed_mesh_with_the_hole() {
+        let mut p = Poly2::square(10.0, 10.0, true);
+        p.paths.extend(Poly2::square(4.0, 4.0, true).paths);
+        let l = Linear {
+            height: 5.0,
+            center: false,
+            twist: 0.0,
+            slices: 1,
+            scale: [1.0, 1.0],
+        };
+        let m = linear_mesh(&p, &l, &sc);
+        assert!(closed(&m));
+        assert!(inside(&m, 4.0, 0.5, 2.5));
+        assert!(!inside(&m, 0.5, 0.5, 2.5), "the hole");
+        assert!(!inside(&m, 6.0, 0.0, 2.5));
+        assert!(!inside(&m, 4.0, 0.5, -1.0), "below");
+    }
+
+    #[test]
+    fn a_concave_outline_extrudes_by_parity() {
+        // An L: the notch at (3, 3) is outside.
+        let l_shape = Poly2 {
+            paths: vec![[(0., 0.), (4., 0.), (4., 2.), (2., 2.), (2., 4.), (0., 4.)]
+                .map(|(x, y)| DVec2::new(x, y))
+                .to_vec()],
+        };
+        assert!(l_shape.convex_outline().is_none());
+        let l = Linear {
+            height: 1.0,
+            center: true,
+            twist: 45.0,
+            slices: 3,
+            scale: [1.0, 0.5],
+        };
+        let m = linear_mesh(&l_shape, &l, &sc);
+        assert!(closed(&m));
+        // Near the bottom the outline has barely turned or shrunk.
+        assert!(inside(&m, 0.5, 0.5, -0.49) && inside(&m, 3.0, 0.2, -0.49));
+        assert!(!inside(&m, 3.0, 3.0, -0.49), "the notch");
+    }
+
+    #[test]
+    fn a_torus_is_closed_with_fragments_times_points_vertices() {
+        let c = Poly2::circle(1.0, 8, sc).transformed([[1.0, 0.0, 3.0], [0.0, 1.0, 0.0]]);
+        let m = rotate_mesh(&c, 360.0, 12, &sc).unwrap();
+        assert!(closed(&m));
+        assert_eq!(m.len(), 2 * 8 * 12);
+        let mut v: Vec<_> = m.iter().flatten().map(|p| p.to_array().map(f64::to_bits)).collect();
+        v.sort_unstable();
+        v.dedup();
+        assert_eq!(v.len(), 8 * 12);
+        // A part turn is capped; a profile touching the axis closes at it.
+        let half = rotate_mesh(&Poly2::square(2.0, 1.0, false), 90.0, 3, &sc).unwrap();
+        assert!(closed(&half));
+        assert!(rotate_mesh(&Poly2::square(2.0, 1.0, true), 360.0, 6, &sc).is_err());
+    }
+
+    #[test]
+    fn offsets_of_a_square() {
+        let sq = Region::Poly(Poly2::square(2.0, 2.0, false));
+        let area = |r: &Region| match r {
+            Region::Poly(p) => signed_area(&p.paths[0]),
+            _ => f64::NAN,
+        };
+        let mitre = offset(&sq, Offset::Delta { delta: 1.0, chamfer: false }, &sc).unwrap();
+        assert!((area(&mitre) - 16.0).abs() < 1e-12);
+        let chamfer = offset(&sq, Offset::Delta { delta: 1.0, chamfer: true }, &sc).unwrap();
+        assert!((area(&chamfer) - 14.0).abs() < 1e-12);
+        let round = offset(&sq, Offset::Round { r: 1.0, fragments: 360 }, &sc).unwrap();
+        assert!((area(&round) - (4.0 + 8.0 + std::f64::consts::PI)).abs() < 1e-3);
+        let inward = offset(&sq, Offset::Round { r: -0.5, fragments: 8 }, &sc).unwrap();
+        assert!((area(&inward) - 1.0).abs() < 1e-12);
+        let diff = Region::Difference(vec![sq.clone(), sq.clone()]);
+        assert!(offset(&diff, Offset::Delta { delta: 1.0, chamfer: false }, &sc).is_err());
+    }
+
+    #[test]
+    fn a_convex_prism_is_the_square_extruded() {
+        let sq = Poly2::square(2.0, 3.0, false).convex_outline().unwrap();
+        let l = Linear {
+            height: 4.0,
+            center: false,
+            twist: 0.0,
+            slices: 1,
+            scale: [0.5, 0.5],
+        };
+        let (v, f) = convex_prism(&sq, &l);
+        assert_eq!((v.len(), f.len()), (8, 6));
+        assert_eq!(v[6], [1.0, 1.5, 4.0]);
+    }
+
+    #[test]
+    fn helix_slices_follow_openscad() {
+        // Measured with OpenSCAD 2021.01 on square([5, 3]) moved to x = 2 (r² = 58).
+        let l = |h: f64, twist: f64, s: f64| Linear {
+            height: h,
+            center: false,
+            twist,
+            slices: 0,
+            scale: [s, s],
+        };
+        let r = 58f64.sqrt();
+        assert_eq!(default_slices(&l(10.0, 90.0, 1.0), r, 0.0, 12.0, 2.0, 0.0), 8.0);
+        assert_eq!(default_slices(&l(10.0, 360.0, 1.0), r, 0.0, 12.0, 2.0, 0.0), 25.0);
+        assert_eq!(default_slices(&l(30.0, 90.0, 1.0), r, 0.0, 12.0, 2.0, 0.0), 8.0);
+        assert_eq!(default_slices(&l(10.0, 90.0, 1.0), r, 16.0, 12.0, 2.0, 0.0), 4.0);
+        assert_eq!(default_slices(&l(10.0, 90.0, 0.5), r, 0.0, 12.0, 2.0, 0.0), 7.0);
+    }
+}
