@@ -399,16 +399,16 @@ fn offset_convex(p: &[DVec2], o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> 
         });
     }
     let mut out = vec![];
-    for i in 0..n {
+    for (i, &corner) in p.iter().enumerate() {
         let (n0, n1) = (normal((i + n - 1) % n), normal(i));
         match o {
             Offset::Delta { chamfer: false, .. } => {
                 let bis = (n0 + n1).normalize_or_zero();
-                out.push(p[i] + bis * (d / bis.dot(n1).max(1e-12)));
+                out.push(corner + bis * (d / bis.dot(n1).max(1e-12)));
             }
             Offset::Delta { chamfer: true, .. } => {
-                out.push(p[i] + n0 * d);
-                out.push(p[i] + n1 * d);
+                out.push(corner + n0 * d);
+                out.push(corner + n1 * d);
             }
             Offset::Round { fragments, .. } => {
                 let (a0, a1) = (n0.y.atan2(n0.x), n1.y.atan2(n1.x));
@@ -419,7 +419,7 @@ fn offset_convex(p: &[DVec2], o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> 
                 let steps = ((turn / 360.0) * fragments as f64).ceil().max(1.0) as usize;
                 for k in 0..=steps {
                     let (s, c) = sincos(a0.to_degrees() + turn * k as f64 / steps as f64);
-                    out.push(p[i] + DVec2::new(c, s) * d);
+                    out.push(corner + DVec2::new(c, s) * d);
                 }
             }
         }
