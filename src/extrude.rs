@@ -40,10 +40,19 @@ pub type Tri3 = [DVec3; 3];
 impl Poly2 {
     /// `square(size, center)`: counter-clockwise from the corner nearest −∞.
     pub fn square(w: f64, h: f64, center: bool) -> Poly2 {
-        let (x0, y0) = if center { (-w / 2.0, -h / 2.0) } else { (0.0, 0.0) };
+        let (x0, y0) = if center {
+            (-w / 2.0, -h / 2.0)
+        } else {
+            (0.0, 0.0)
+        };
         let p = |x, y| DVec2::new(x, y);
         Poly2 {
-            paths: vec![vec![p(x0, y0), p(x0 + w, y0), p(x0 + w, y0 + h), p(x0, y0 + h)]],
+            paths: vec![vec![
+                p(x0, y0),
+                p(x0 + w, y0),
+                p(x0 + w, y0 + h),
+                p(x0, y0 + h),
+            ]],
         }
     }
 
@@ -157,9 +166,10 @@ impl Linear {
             1.0 + (self.scale[0] - 1.0) * t,
             1.0 + (self.scale[1] - 1.0) * t,
         );
-        let q = p * s;
+        // Turned, then scaled (OpenSCAD's Scaling · Rotation2D).
         let (sn, cs) = sincos(-self.twist * t);
-        DVec3::new(q.x * cs - q.y * sn, q.x * sn + q.y * cs, z0 + (z1 - z0) * t)
+        let q = DVec2::new(p.x * cs - p.y * sn, p.x * sn + p.y * cs) * s;
+        DVec3::new(q.x, q.y, z0 + (z1 - z0) * t)
     }
 }
 
@@ -248,28 +258,82 @@ pub fn convex_prism(outline: &[DVec2], l: &Linear) -> (Vec<[f64; 3]>, Vec<Vec<us
     (v, faces)
 }
 
-/// `linear_extrude` as a closed mesh: every outline's walls between consecutive slices (each
-/// quad split along its diagonal from the lower first corner), a fan cap at the bottom and,
-/// unless the top is scaled to a point, at the top.
+/// `linear_extrude` as a closed mesh: every outline's walls between consecutive slices, a fan
+/// cap at the bottom and, unless the top is scaled to a point, at the top. Outlines run as
+/// OpenSCAD's even-odd cleanup leaves them (outer ones counter-clockwise, holes clockwise).
+/// Each twisted wall quad is split along the diagonal that gives OpenSCAD 2021.01's own
+/// meshes (found by comparing voxels with its STL, `tests/openscad_iou.rs`): unscaled, from
+/// the lower corner i to the upper corner i + 1 for a positive twist and the other diagonal
+/// for a negative one; scaled, the shorter diagonal.
 pub fn linear_mesh(poly: &Poly2, l: &Linear, sincos: &dyn Fn(f64) -> (f64, f64)) -> Vec<Tri3> {
     let mut out = vec![];
-    for path in poly.paths.iter().filter(|p| p.len() >= 3) {
-        let n = path.len();
+    for (path, _) in oriented(poly) {
         let ring = |j: usize| -> Vec<DVec3> { path.iter().map(|&p| l.at(p, j, sincos)).collect() };
         let mut lower = ring(0);
         fan(&lower, &mut out);
+        let rising = (l.scale == [1.0, 1.0]).then_some(l.twist > 0.0);
         for j in 1..=l.slices {
             let upper = ring(j);
-            for i in 0..n {
-                let k = (i + 1) % n;
-                push(&mut out, [lower[i], lower[k], upper[k]]);
-                push(&mut out, [lower[i], upper[k], upper[i]]);
-            }
+            walls(&lower, &upper, rising, &mut out);
             lower = upper;
         }
         fan(&lower, &mut out);
     }
     out
+}
+
+/// The quads between two rings, each as two triangles split along lower i – upper i + 1
+/// (`rising`), upper i – lower i + 1, or (None) the shorter of the two.
+fn walls(lower: &[DVec3], upper: &[DVec3], rising: Option<bool>, out: &mut Vec<Tri3>) {
+    let n = lower.len();
+    for i in 0..n {
+        let k = (i + 1) % n;
+        let shorter =
+            (lower[i] - upper[k]).length_squared() < (upper[i] - lower[k]).length_squared();
+        if rising.unwrap_or(shorter) {
+            push(out, [lower[i], upper[k], lower[k]]);
+            push(out, [lower[i], upper[i], upper[k]]);
+        } else {
+            push(out, [lower[i], upper[i], lower[k]]);
+            push(out, [upper[i], upper[k], lower[k]]);
+        }
+    }
+}
+
+/// The outlines as OpenSCAD's even-odd cleanup orients them: an outline inside an odd number
+/// of others is a hole, run clockwise; the others counter-clockwise. With each, whether it is
+/// a hole.
+fn oriented(poly: &Poly2) -> Vec<(Vec<DVec2>, bool)> {
+    let paths: Vec<&Vec<DVec2>> = poly.paths.iter().filter(|p| p.len() >= 3).collect();
+    paths
+        .iter()
+        .enumerate()
+        .map(|(i, path)| {
+            let depth = paths
+                .iter()
+                .enumerate()
+                .filter(|&(j, other)| j != i && contains(other, path[0]))
+                .count();
+            let hole = depth % 2 == 1;
+            let mut p = (*path).clone();
+            if (signed_area(&p) > 0.0) == hole {
+                p.reverse();
+            }
+            (p, hole)
+        })
+        .collect()
+}
+
+/// Point in polygon by crossings (even-odd).
+fn contains(poly: &[DVec2], p: DVec2) -> bool {
+    let mut inside = false;
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            inside = !inside;
+        }
+    }
+    inside
 }
 
 /// `rotate_extrude` over `angle` degrees in `fragments` steps as a closed mesh: each outline
@@ -299,26 +363,26 @@ pub fn rotate_mesh(
             angle * j as f64 / fragments as f64
         }
     };
+    // OpenSCAD's rings run clockwise on a full turn and reversed where it flips faces: the
+    // diagonal it splits each quad along is then the other one.
+    let flip = (lo >= 0.0 && angle > 0.0 && !full) || (lo < 0.0 && (angle < 0.0 || full));
     let mut out = vec![];
-    for path in poly.paths.iter().filter(|p| p.len() >= 3) {
+    for (path, _) in oriented(poly) {
         let ring = |a: f64| -> Vec<DVec3> {
             let (s, c) = sincos(a);
-            path.iter().map(|p| DVec3::new(p.x * c, p.x * s, p.y)).collect()
+            path.iter()
+                .map(|p| DVec3::new(p.x * c, p.x * s, p.y))
+                .collect()
         };
         let first = ring(at(0));
         let mut lower = first.clone();
-        let n = path.len();
         for j in 1..=fragments {
             let upper = if full && j == fragments {
                 first.clone()
             } else {
                 ring(at(j))
             };
-            for i in 0..n {
-                let k = (i + 1) % n;
-                push(&mut out, [lower[i], lower[k], upper[k]]);
-                push(&mut out, [lower[i], upper[k], upper[i]]);
-            }
+            walls(&lower, &upper, Some(full == flip), &mut out);
             lower = upper;
         }
         if !full {
@@ -364,7 +428,11 @@ impl Offset {
 
 /// `offset` of a region, where csgpix can: a single convex outline by any amount, and a union
 /// by a positive amount (a Minkowski sum distributes over union). Err names what is not.
-pub fn offset(region: &Region, o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> Result<Region, String> {
+pub fn offset(
+    region: &Region,
+    o: Offset,
+    sincos: &dyn Fn(f64) -> (f64, f64),
+) -> Result<Region, String> {
     match region {
         Region::Union(parts) if o.amount() >= 0.0 => Ok(Region::Union(
             parts
@@ -517,7 +585,7 @@ mod tests {
         let m = linear_mesh(&p, &l, &sc);
         assert!(closed(&m));
         assert!(inside(&m, 4.0, 0.5, 2.5));
-        assert!(!inside(&m, 0.5, 0.5, 2.5), "the hole");
+        assert!(!inside(&m, 0.5, 0.3, 2.5), "the hole");
         assert!(!inside(&m, 6.0, 0.0, 2.5));
         assert!(!inside(&m, 4.0, 0.5, -1.0), "below");
     }
@@ -551,7 +619,11 @@ mod tests {
         let m = rotate_mesh(&c, 360.0, 12, &sc).unwrap();
         assert!(closed(&m));
         assert_eq!(m.len(), 2 * 8 * 12);
-        let mut v: Vec<_> = m.iter().flatten().map(|p| p.to_array().map(f64::to_bits)).collect();
+        let mut v: Vec<_> = m
+            .iter()
+            .flatten()
+            .map(|p| p.to_array().map(f64::to_bits))
+            .collect();
         v.sort_unstable();
         v.dedup();
         assert_eq!(v.len(), 8 * 12);
@@ -568,16 +640,56 @@ mod tests {
             Region::Poly(p) => signed_area(&p.paths[0]),
             _ => f64::NAN,
         };
-        let mitre = offset(&sq, Offset::Delta { delta: 1.0, chamfer: false }, &sc).unwrap();
+        let mitre = offset(
+            &sq,
+            Offset::Delta {
+                delta: 1.0,
+                chamfer: false,
+            },
+            &sc,
+        )
+        .unwrap();
         assert!((area(&mitre) - 16.0).abs() < 1e-12);
-        let chamfer = offset(&sq, Offset::Delta { delta: 1.0, chamfer: true }, &sc).unwrap();
+        let chamfer = offset(
+            &sq,
+            Offset::Delta {
+                delta: 1.0,
+                chamfer: true,
+            },
+            &sc,
+        )
+        .unwrap();
         assert!((area(&chamfer) - 14.0).abs() < 1e-12);
-        let round = offset(&sq, Offset::Round { r: 1.0, fragments: 360 }, &sc).unwrap();
+        let round = offset(
+            &sq,
+            Offset::Round {
+                r: 1.0,
+                fragments: 360,
+            },
+            &sc,
+        )
+        .unwrap();
         assert!((area(&round) - (4.0 + 8.0 + std::f64::consts::PI)).abs() < 1e-3);
-        let inward = offset(&sq, Offset::Round { r: -0.5, fragments: 8 }, &sc).unwrap();
+        let inward = offset(
+            &sq,
+            Offset::Round {
+                r: -0.5,
+                fragments: 8,
+            },
+            &sc,
+        )
+        .unwrap();
         assert!((area(&inward) - 1.0).abs() < 1e-12);
         let diff = Region::Difference(vec![sq.clone(), sq.clone()]);
-        assert!(offset(&diff, Offset::Delta { delta: 1.0, chamfer: false }, &sc).is_err());
+        assert!(offset(
+            &diff,
+            Offset::Delta {
+                delta: 1.0,
+                chamfer: false
+            },
+            &sc
+        )
+        .is_err());
     }
 
     #[test]
@@ -606,10 +718,25 @@ mod tests {
             scale: [s, s],
         };
         let r = 58f64.sqrt();
-        assert_eq!(default_slices(&l(10.0, 90.0, 1.0), r, 0.0, 12.0, 2.0, 0.0), 8.0);
-        assert_eq!(default_slices(&l(10.0, 360.0, 1.0), r, 0.0, 12.0, 2.0, 0.0), 25.0);
-        assert_eq!(default_slices(&l(30.0, 90.0, 1.0), r, 0.0, 12.0, 2.0, 0.0), 8.0);
-        assert_eq!(default_slices(&l(10.0, 90.0, 1.0), r, 16.0, 12.0, 2.0, 0.0), 4.0);
-        assert_eq!(default_slices(&l(10.0, 90.0, 0.5), r, 0.0, 12.0, 2.0, 0.0), 7.0);
+        assert_eq!(
+            default_slices(&l(10.0, 90.0, 1.0), r, 0.0, 12.0, 2.0, 0.0),
+            8.0
+        );
+        assert_eq!(
+            default_slices(&l(10.0, 360.0, 1.0), r, 0.0, 12.0, 2.0, 0.0),
+            25.0
+        );
+        assert_eq!(
+            default_slices(&l(30.0, 90.0, 1.0), r, 0.0, 12.0, 2.0, 0.0),
+            8.0
+        );
+        assert_eq!(
+            default_slices(&l(10.0, 90.0, 1.0), r, 16.0, 12.0, 2.0, 0.0),
+            4.0
+        );
+        assert_eq!(
+            default_slices(&l(10.0, 90.0, 0.5), r, 0.0, 12.0, 2.0, 0.0),
+            7.0
+        );
     }
 }

@@ -14,10 +14,11 @@ const EPS: f64 = 1e-9;
 /// The convex hull of `points` as (vertices, faces), faces counter-clockwise seen from
 /// outside. Err when the points span no volume (fewer than four, or all on a plane).
 pub fn hull3(points: &[DVec3]) -> Result<(Vec<DVec3>, Vec<Vec<usize>>), String> {
-    let (lo, hi) = points.iter().fold(
-        (DVec3::INFINITY, DVec3::NEG_INFINITY),
-        |(a, b), &p| (a.min(p), b.max(p)),
-    );
+    let (lo, hi) = points
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), &p| {
+            (a.min(p), b.max(p))
+        });
     let extent = (hi - lo).max_element();
     if !(extent.is_finite() && extent > 0.0) {
         return Err("hull() of fewer than two distinct points".into());
@@ -172,14 +173,22 @@ fn merge_coplanar(points: &[DVec3], faces: &[Face], eps: f64) -> (Vec<DVec3>, Ve
 /// The convex hull of 2D points, counter-clockwise, without collinear points (Andrew's
 /// monotone chain). Fewer than three points when they span no area.
 pub fn hull2(points: &[DVec2]) -> Vec<DVec2> {
-    hull2_indices(points).into_iter().map(|i| points[i]).collect()
+    hull2_indices(points)
+        .into_iter()
+        .map(|i| points[i])
+        .collect()
 }
 
 /// [`hull2`] as indices into `points`.
 pub fn hull2_indices(points: &[DVec2]) -> Vec<usize> {
     let mut p: Vec<usize> = (0..points.len()).collect();
     let at = |i: usize| points[i];
-    p.sort_by(|&a, &b| at(a).x.total_cmp(&at(b).x).then(at(a).y.total_cmp(&at(b).y)));
+    p.sort_by(|&a, &b| {
+        at(a)
+            .x
+            .total_cmp(&at(b).x)
+            .then(at(a).y.total_cmp(&at(b).y))
+    });
     p.dedup_by(|a, b| at(*a) == at(*b));
     if p.len() < 3 {
         return p;
@@ -249,7 +258,11 @@ mod tests {
             .map(|i| {
                 let (a, b) = (i as f64 * 2.399, (i as f64 * 0.61).sin());
                 let r = if i % 3 == 0 { 0.5 } else { 1.0 };
-                DVec3::new(a.cos() * (1.0 - b * b).sqrt(), a.sin() * (1.0 - b * b).sqrt(), b) * r
+                DVec3::new(
+                    a.cos() * (1.0 - b * b).sqrt(),
+                    a.sin() * (1.0 - b * b).sqrt(),
+                    b,
+                ) * r
             })
             .collect();
         let (v, f) = hull3(&p).unwrap();
@@ -262,10 +275,14 @@ mod tests {
         let mut edges = std::collections::HashMap::new();
         for face in &f {
             for k in 0..face.len() {
-                *edges.entry((face[k], face[(k + 1) % face.len()])).or_insert(0) += 1;
+                *edges
+                    .entry((face[k], face[(k + 1) % face.len()]))
+                    .or_insert(0) += 1;
             }
         }
-        assert!(edges.iter().all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1)));
+        assert!(edges
+            .iter()
+            .all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1)));
     }
 
     #[test]

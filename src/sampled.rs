@@ -163,7 +163,7 @@ impl Loaded {
 /// Read a `.csg` scene and every file it imports (relative to the scene's directory).
 pub fn load_scene(path: &Path) -> Result<Loaded, String> {
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{name}: {e}"))?;
+    let text = crate::scad::scene_text(path)?;
     let scene = parse_csg(&text, &name).map_err(|e| e.to_string())?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let sampled = load_imports(&scene, &name, &dir)?;
@@ -191,6 +191,19 @@ pub fn load_imports(
 
 /// Load one import; `at` says where it was named, for messages.
 fn load_import(imp: &Import, index: usize, at: &str, dir: &Path) -> Result<Sampled, String> {
+    let colour = imp
+        .colour
+        .map_or(1 + (index % 6) as u32, colour_code)
+        .min(255) as u8;
+    if let Some(tris) = &imp.mesh {
+        let mesh = TriMesh::from_f64(tris);
+        mesh.check_closed(&format!("{at}: `{}`", imp.file))?;
+        return Ok(Sampled {
+            shape: Shape::Mesh(mesh),
+            colour,
+            file: imp.file.clone(),
+        });
+    }
     let path: PathBuf = dir.join(&imp.file);
     if !path.is_file() {
         return Err(format!(
@@ -217,10 +230,6 @@ fn load_import(imp: &Import, index: usize, at: &str, dir: &Path) -> Result<Sampl
             Shape::Mesh(mesh.transformed(to_scene))
         }
     };
-    let colour = imp
-        .colour
-        .map_or(1 + (index % 6) as u32, colour_code)
-        .min(255) as u8;
     Ok(Sampled {
         shape,
         colour,
@@ -408,6 +417,7 @@ fn add_part(
         colour: None,
         line: 1,
         col: 1,
+        mesh: None,
     };
     let index = IMPORTED + scene.imports.len();
     let name = format!("--prim {}", b.name);

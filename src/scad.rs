@@ -72,6 +72,13 @@ use std::collections::{HashMap, VecDeque};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 use std::fmt;
 
+use glam::{DVec2, DVec3};
+
+use crate::extrude::{
+    convex_prism, default_slices, linear_mesh, offset, region_points, rotate_mesh, Linear, Offset,
+    Poly2, Region,
+};
+use crate::hull::hull3;
 use crate::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
 
 /// Deepest nesting of statements accepted: a top-level statement is at depth 1, so a cube may
@@ -103,6 +110,52 @@ const F_MINIMUM: f64 = 0.01;
 /// plane. OpenSCAD writes polyhedron coordinates with 6 significant digits, so faces of a
 /// convex polyhedron can be that far from flat in an exported file.
 const CONVEXITY_TOLERANCE: f64 = 1e-5;
+
+/// The `.csg` text of a scene file: a `.csg` file as it is; a `.scad` file exported to CSG by
+/// OpenSCAD (`openscad -o scene.csg FILE.scad` into a temporary directory, removed after),
+/// when `openscad` is on PATH. Errors are one line naming the file.
+pub fn scene_text(path: &std::path::Path) -> Result<String, String> {
+    let name = path.display();
+    let scad = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("scad"));
+    if !scad {
+        return std::fs::read_to_string(path).map_err(|e| format!("{name}: {e}"));
+    }
+    if !path.is_file() {
+        return Err(format!("{name}: no such file"));
+    }
+    let dir = tempfile::tempdir().map_err(|e| format!("{name}: a temporary directory: {e}"))?;
+    let out = dir.path().join("scene.csg");
+    let run = std::process::Command::new("openscad")
+        .arg("-o")
+        .arg(&out)
+        .arg(path)
+        .stdin(std::process::Stdio::null())
+        .output();
+    let run = match run {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            return Err(format!(
+                "{name}: reading .scad needs openscad on PATH (Debian: apt-get install openscad); \
+                 or export File → Export → Export as CSG and give the .csg"
+            ))
+        }
+        Err(e) => return Err(format!("{name}: running openscad: {e}")),
+        Ok(run) => run,
+    };
+    let text = std::fs::read_to_string(&out)
+        .ok()
+        .filter(|_| run.status.success());
+    text.ok_or_else(|| {
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        let line = stderr
+            .lines()
+            .find(|l| l.contains("ERROR"))
+            .or_else(|| stderr.lines().rfind(|l| !l.trim().is_empty()))
+            .unwrap_or("no output");
+        format!("{name}: openscad could not export it: {}", line.trim())
+    })
+}
 
 /// A problem in a `.csg` file, with its position (1-based line and column, in characters).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -616,6 +669,13 @@ enum NodeKind {
     Cylinder,
     Polyhedron,
     Import,
+    Square,
+    Circle,
+    Polygon,
+    LinearExtrude,
+    RotateExtrude,
+    Hull,
+    Offset,
 }
 
 /// How the children of an operation combine.
@@ -627,7 +687,7 @@ enum Op {
 }
 
 /// Every node this reader understands, by name.
-const NODES: [(&str, NodeKind); 12] = [
+const NODES: [(&str, NodeKind); 19] = [
     ("group", NodeKind::Group),
     ("union", NodeKind::Union),
     ("difference", NodeKind::Difference),
@@ -640,6 +700,13 @@ const NODES: [(&str, NodeKind); 12] = [
     ("cylinder", NodeKind::Cylinder),
     ("polyhedron", NodeKind::Polyhedron),
     ("import", NodeKind::Import),
+    ("square", NodeKind::Square),
+    ("circle", NodeKind::Circle),
+    ("polygon", NodeKind::Polygon),
+    ("linear_extrude", NodeKind::LinearExtrude),
+    ("rotate_extrude", NodeKind::RotateExtrude),
+    ("hull", NodeKind::Hull),
+    ("offset", NodeKind::Offset),
 ];
 
 impl NodeKind {
@@ -660,9 +727,20 @@ impl NodeKind {
     /// Parameters taken by position (in OpenSCAD's order), then those taken only by name.
     fn parameters(self) -> (&'static [&'static str], &'static [&'static str]) {
         match self {
-            NodeKind::Group | NodeKind::Union | NodeKind::Difference | NodeKind::Intersection => {
-                (&[], &[])
-            }
+            NodeKind::Group
+            | NodeKind::Union
+            | NodeKind::Difference
+            | NodeKind::Intersection
+            | NodeKind::Hull => (&[], &[]),
+            NodeKind::Square => (&["size", "center"], &[]),
+            NodeKind::Circle => (&["r"], &["d", "$fn", "$fa", "$fs"]),
+            NodeKind::Polygon => (&["points", "paths", "convexity"], &[]),
+            NodeKind::LinearExtrude => (
+                &["height", "center", "convexity", "twist", "slices", "scale"],
+                &["v", "$fn", "$fa", "$fs"],
+            ),
+            NodeKind::RotateExtrude => (&["angle", "convexity"], &["$fn", "$fa", "$fs"]),
+            NodeKind::Offset => (&["r"], &["delta", "chamfer", "$fn", "$fa", "$fs"]),
             NodeKind::Render => (&["convexity"], &[]),
             NodeKind::Multmatrix => (&["m"], &[]),
             NodeKind::Color => (&["c", "alpha"], &[]),
@@ -700,6 +778,17 @@ impl NodeKind {
                 | NodeKind::Cylinder
                 | NodeKind::Polyhedron
                 | NodeKind::Import
+                | NodeKind::Square
+                | NodeKind::Circle
+                | NodeKind::Polygon
+        )
+    }
+
+    /// Leaves of the plane (2D shapes).
+    fn is_flat(self) -> bool {
+        matches!(
+            self,
+            NodeKind::Square | NodeKind::Circle | NodeKind::Polygon
         )
     }
 
@@ -835,12 +924,37 @@ struct Frame {
     closer: Closer,
     ctx: Ctx,
     children: Vec<CsgNode>,
+    /// 2D children (shapes in the plane of the nearest extrusion).
+    flats: Vec<Region>,
+    /// Where the node stands, for messages.
+    pos: Pos,
+    /// An extrusion's or offset's parameters, read when it opened.
+    spec: Spec,
+    /// The transform above an extrusion (its children start from the identity).
+    placement: Option<Mat4>,
 }
 
-impl Frame {
-    fn finish(self) -> Option<CsgNode> {
-        (!self.ctx.skip).then(|| combine(self.kind.op(), self.children))
-    }
+/// What a finished statement gives its parent: a solid's tree or a 2D region.
+enum Item {
+    Solid(CsgNode),
+    Flat(Region, Pos),
+}
+
+/// The parameters of the nodes that act on 2D children.
+#[derive(Clone, Copy, Debug)]
+enum Spec {
+    None,
+    Linear(LinearArgs),
+    Rotate { angle: f64, res: (f64, f64, f64) },
+    Offset(Offset),
+}
+
+/// `linear_extrude` as read: the slices may be left to OpenSCAD's rule.
+#[derive(Clone, Copy, Debug)]
+struct LinearArgs {
+    linear: Linear,
+    slices: Option<usize>,
+    res: (f64, f64, f64),
 }
 
 /// What comes next at a statement position.
@@ -859,6 +973,9 @@ struct Reader<'a> {
     vertices: usize,
     open: Vec<Frame>,
     top: Vec<CsgNode>,
+    /// Solids and imports a `hull()` took in: they leave the scene at the end.
+    consumed_solids: Vec<usize>,
+    consumed_imports: Vec<usize>,
 }
 
 impl<'a> Reader<'a> {
@@ -870,6 +987,8 @@ impl<'a> Reader<'a> {
             vertices: 0,
             open: Vec::new(),
             top: Vec::new(),
+            consumed_solids: Vec::new(),
+            consumed_imports: Vec::new(),
         }
     }
 
@@ -888,7 +1007,7 @@ impl<'a> Reader<'a> {
                 Next::CloseBrace => self.close_brace(pos)?,
                 Next::Semicolon => {
                     self.parser.next()?;
-                    self.empty_statement();
+                    self.empty_statement()?;
                 }
                 Next::Statement => self.statement(pos)?,
             }
@@ -898,11 +1017,12 @@ impl<'a> Reader<'a> {
     fn end(mut self, pos: Pos) -> Result<CsgScene, Fail> {
         match self.open.pop() {
             None => {
-                let mut root = combine(Op::Union, self.top);
-                root.number_imports_after(self.solids.len());
+                let mut root = combine(Op::Union, std::mem::take(&mut self.top));
+                let (solids, imports) = self.drop_consumed(&mut root);
+                root.number_imports_after(solids.len());
                 Ok(CsgScene {
-                    solids: self.solids,
-                    imports: self.imports,
+                    solids,
+                    imports,
                     root,
                 })
             }
@@ -916,19 +1036,19 @@ impl<'a> Reader<'a> {
             Some(frame) if frame.closer == Closer::Single => fail(pos, unclosed(frame, "'}'")),
             Some(_) => {
                 self.parser.next()?;
-                let node = self.open.pop().and_then(Frame::finish);
-                self.deliver(node);
-                Ok(())
+                let node = self.pop_and_finish()?;
+                self.deliver(node)
             }
         }
     }
 
     /// A lone `;`: nothing inside braces, no children after `group()`.
-    fn empty_statement(&mut self) {
+    fn empty_statement(&mut self) -> Result<(), Fail> {
         if self.open.last().is_some_and(|f| f.closer == Closer::Single) {
-            let node = self.open.pop().and_then(Frame::finish);
-            self.deliver(node);
+            let node = self.pop_and_finish()?;
+            self.deliver(node)?;
         }
+        Ok(())
     }
 
     fn statement(&mut self, pos: Pos) -> Result<(), Fail> {
@@ -945,18 +1065,27 @@ impl<'a> Reader<'a> {
             let context = format!("after `{}(…)` (it takes no children)", head.kind.name());
             self.parser.expect_sym(b';', &context)?;
             let node = self.leaf(&head, &ctx)?;
-            self.deliver(node);
-            return Ok(());
+            return self.deliver(node);
         }
         let closer = match self.parser.eat_sym(b'{')? {
             Some(brace) => Closer::Brace(brace),
             None => Closer::Single,
+        };
+        let spec = flat_spec(&head)?;
+        let mut ctx = ctx;
+        let placement = match head.kind {
+            NodeKind::LinearExtrude | NodeKind::RotateExtrude => ctx.matrix.take(),
+            _ => None,
         };
         self.open.push(Frame {
             kind: head.kind,
             closer,
             ctx,
             children: Vec::new(),
+            flats: Vec::new(),
+            pos: head.pos,
+            spec,
+            placement,
         });
         Ok(())
     }
@@ -994,31 +1123,83 @@ impl<'a> Reader<'a> {
     }
 
     /// Hands a finished node (or nothing, for a skipped one) to the open operation, closing
-    /// the single-child operations it completes.
-    fn deliver(&mut self, mut node: Option<CsgNode>) {
+    /// the single-child operations it completes. A 2D shape outside every extrusion is
+    /// refused where it stands.
+    fn deliver(&mut self, mut node: Option<Item>) -> Result<(), Fail> {
         loop {
             let Some(frame) = self.open.last_mut() else {
-                self.top.extend(node);
-                return;
+                return match node {
+                    Some(Item::Flat(_, pos)) => fail(
+                        pos,
+                        "a 2D shape outside linear_extrude or rotate_extrude: csgpix voxelizes solids",
+                    ),
+                    Some(Item::Solid(n)) => {
+                        self.top.push(n);
+                        Ok(())
+                    }
+                    None => Ok(()),
+                };
             };
-            frame.children.extend(node);
-            if frame.closer != Closer::Single {
-                return;
+            match node {
+                Some(Item::Solid(n)) => frame.children.push(n),
+                Some(Item::Flat(r, _)) => frame.flats.push(r),
+                None => {}
             }
-            node = self.open.pop().and_then(Frame::finish);
+            if frame.closer != Closer::Single {
+                return Ok(());
+            }
+            node = self.pop_and_finish()?;
         }
     }
 
-    fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<CsgNode>, Fail> {
+    /// Closes the innermost open operation: what it gives its parent (nothing when skipped).
+    fn pop_and_finish(&mut self) -> Result<Option<Item>, Fail> {
+        let Some(frame) = self.open.pop() else {
+            return Ok(None);
+        };
+        if frame.ctx.skip {
+            return Ok(None);
+        }
+        let (kind, pos) = (frame.kind, frame.pos);
+        let mixed = !frame.children.is_empty() && !frame.flats.is_empty();
+        if mixed {
+            return fail(pos, format!("`{}` mixes 2D and 3D children", kind.name()));
+        }
+        match kind {
+            NodeKind::LinearExtrude | NodeKind::RotateExtrude => self.extrude(frame).map(Some),
+            NodeKind::Hull if frame.flats.is_empty() => self.hull3(frame).map(Some),
+            NodeKind::Hull => hull_flat(frame),
+            NodeKind::Offset => offset_flat(frame),
+            _ if !frame.flats.is_empty() => {
+                Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), pos)))
+            }
+            _ => Ok(Some(Item::Solid(combine(kind.op(), frame.children)))),
+        }
+    }
+
+    fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<Item>, Fail> {
         if head.kind == NodeKind::Import {
             let import = import(head, ctx)?;
             if ctx.skip {
                 return Ok(None);
             }
             self.imports.push(import);
-            return Ok(Some(CsgNode::Solid(IMPORTED + self.imports.len() - 1)));
+            return Ok(Some(Item::Solid(CsgNode::Solid(
+                IMPORTED + self.imports.len() - 1,
+            ))));
         }
         let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        if head.kind.is_flat() {
+            let poly = flat_shape(&head.params, budget)?;
+            let n = poly.points().count();
+            check_budget(n, budget, head.pos)?;
+            if ctx.skip {
+                return Ok(None);
+            }
+            self.vertices += n;
+            let poly = poly.transformed(plane_part(ctx.matrix.as_ref()));
+            return Ok(Some(Item::Flat(Region::Poly(poly), head.pos)));
+        }
         let shape = match head.kind {
             NodeKind::Cube => cube(&head.params)?,
             NodeKind::Sphere => sphere(&head.params, budget)?,
@@ -1032,8 +1213,511 @@ impl<'a> Reader<'a> {
         let solid = place(shape, ctx, head.pos)?;
         self.vertices += solid.vertices.len();
         self.solids.push(solid);
-        Ok(Some(CsgNode::Solid(self.solids.len() - 1)))
+        Ok(Some(Item::Solid(CsgNode::Solid(self.solids.len() - 1))))
     }
+
+    /// A finished `linear_extrude` or `rotate_extrude`: the CSG tree of its 2D children's
+    /// tree, each shape extruded (module [`crate::extrude`]).
+    fn extrude(&mut self, frame: Frame) -> Result<Item, Fail> {
+        let pos = frame.pos;
+        if frame.flats.is_empty() {
+            return Ok(Item::Solid(CsgNode::Empty));
+        }
+        let region = region_of(Op::Union, frame.flats);
+        let mut pts = vec![];
+        collect_points(&region, &mut pts);
+        let how = match frame.spec {
+            Spec::Linear(a) => Extrusion::Linear(linear_slices(a, &pts)),
+            Spec::Rotate { angle, res } => {
+                let r = pts.iter().map(|p| p.x.abs()).fold(0.0, f64::max);
+                let res = Resolution {
+                    fn_: res.0,
+                    fa: res.1,
+                    fs: res.2,
+                };
+                let f = (res.fragments_from_r(r) * angle.abs() / 360.0).max(1.0);
+                if f > MAX_FRAGMENTS as f64 {
+                    let msg =
+                        format!("{f} fragments is more than the {MAX_FRAGMENTS} csgpix accepts");
+                    return fail(pos, msg);
+                }
+                Extrusion::Rotate {
+                    angle,
+                    fragments: f as usize,
+                }
+            }
+            _ => return fail(pos, "internal: an extrusion without its parameters"),
+        };
+        let to = Placement {
+            matrix: frame.placement,
+            colour: frame.ctx.colour,
+            pos,
+            name: frame.kind.name(),
+        };
+        let node = self.extrude_region(&region, &how, &to)?;
+        Ok(Item::Solid(node))
+    }
+
+    /// One 2D tree extruded: its operations kept, its shapes extruded.
+    fn extrude_region(
+        &mut self,
+        r: &Region,
+        how: &Extrusion,
+        to: &Placement,
+    ) -> Result<CsgNode, Fail> {
+        let (op, parts) = match r {
+            Region::Poly(p) => return self.extrude_shape(p, how, to),
+            Region::Union(c) => (Op::Union, c),
+            Region::Intersection(c) => (Op::Intersection, c),
+            Region::Difference(c) => (Op::Difference, c),
+        };
+        let nodes = parts
+            .iter()
+            .map(|c| self.extrude_region(c, how, to))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(combine(op, nodes))
+    }
+
+    /// One shape extruded: a convex solid when it stays convex, else a closed mesh primitive.
+    fn extrude_shape(
+        &mut self,
+        p: &Poly2,
+        how: &Extrusion,
+        to: &Placement,
+    ) -> Result<CsgNode, Fail> {
+        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let n = p.points().count();
+        if let Extrusion::Linear(l) = how {
+            if let Some(outline) = p.convex_outline().filter(|_| l.keeps_convex()) {
+                let (vertices, faces) = convex_prism(&outline, l);
+                let ctx = Ctx {
+                    matrix: to.matrix,
+                    colour: to.colour,
+                    skip: false,
+                };
+                let solid = place(Shape { vertices, faces }, &ctx, to.pos)?;
+                self.vertices += solid.vertices.len();
+                self.solids.push(solid);
+                return Ok(CsgNode::Solid(self.solids.len() - 1));
+            }
+        }
+        let rings = match how {
+            Extrusion::Linear(l) => l.slices + 1,
+            Extrusion::Rotate { fragments, .. } => fragments + 1,
+        };
+        check_budget(n.saturating_mul(rings), budget, to.pos)?;
+        let tris = match how {
+            Extrusion::Linear(l) => linear_mesh(p, l, &sin_cos_degrees),
+            Extrusion::Rotate { angle, fragments } => {
+                rotate_mesh(p, *angle, *fragments, &sin_cos_degrees)
+                    .map_err(|msg| Fail { pos: to.pos, msg })?
+            }
+        };
+        if tris.is_empty() {
+            return Ok(CsgNode::Empty);
+        }
+        self.vertices += n * rings;
+        let m = to.matrix.unwrap_or(IDENTITY);
+        let tris: Vec<[Vec3; 3]> = tris
+            .iter()
+            .map(|t| t.map(|v| transform_point(&m, v.to_array())))
+            .collect();
+        if tris.iter().flatten().flatten().any(|&c| too_large(c)) {
+            let msg = format!("a coordinate exceeds {MAX_COORDINATE:e} in size");
+            return fail(to.pos, msg);
+        }
+        self.imports.push(Import {
+            file: format!("{} at {}", to.name, to.pos),
+            threshold: None,
+            matrix: None,
+            colour: to.colour,
+            line: to.pos.line,
+            col: to.pos.col,
+            mesh: Some(std::sync::Arc::new(tris)),
+        });
+        Ok(CsgNode::Solid(IMPORTED + self.imports.len() - 1))
+    }
+
+    /// The solids and imports, less those a `hull()` took in, and the tree's leaves renumbered
+    /// to match (imports still counted from [`IMPORTED`]).
+    fn drop_consumed(&mut self, root: &mut CsgNode) -> (Vec<ConvexSolid>, Vec<Import>) {
+        let keep = |n: usize, gone: &[usize]| -> (Vec<bool>, Vec<usize>) {
+            let mut k = vec![true; n];
+            gone.iter().for_each(|&i| k[i] = false);
+            let mut next = 0;
+            let map = k
+                .iter()
+                .map(|&kept| {
+                    next += usize::from(kept);
+                    next - usize::from(kept)
+                })
+                .collect();
+            (k, map)
+        };
+        let (ks, ms) = keep(self.solids.len(), &self.consumed_solids);
+        let (ki, mi) = keep(self.imports.len(), &self.consumed_imports);
+        root.for_each_leaf_mut(|n| {
+            if let CsgNode::Solid(i) = n {
+                *i = if *i >= IMPORTED {
+                    IMPORTED + mi[*i - IMPORTED]
+                } else {
+                    ms[*i]
+                };
+            }
+        });
+        let solids = std::mem::take(&mut self.solids);
+        let imports = std::mem::take(&mut self.imports);
+        (
+            solids
+                .into_iter()
+                .zip(ks)
+                .filter(|(_, k)| *k)
+                .map(|(s, _)| s)
+                .collect(),
+            imports
+                .into_iter()
+                .zip(ki)
+                .filter(|(_, k)| *k)
+                .map(|(s, _)| s)
+                .collect(),
+        )
+    }
+
+    /// A finished `hull()` of solids: one convex solid over every vertex of the solids and
+    /// generated meshes below it, which leave the scene.
+    fn hull3(&mut self, frame: Frame) -> Result<Item, Fail> {
+        let pos = frame.pos;
+        let mut leaves = vec![];
+        for c in &frame.children {
+            hull_leaves(c, &mut leaves).map_err(|msg| Fail { pos, msg })?;
+        }
+        let mut pts: Vec<DVec3> = vec![];
+        for &leaf in &leaves {
+            if leaf < IMPORTED {
+                pts.extend(self.solids[leaf].vertices.iter().map(|&v| DVec3::from(v)));
+                self.consumed_solids.push(leaf);
+                continue;
+            }
+            let import = &self.imports[leaf - IMPORTED];
+            let Some(mesh) = &import.mesh else {
+                let msg = format!("hull() of `import(\"{}\")` is not supported", import.file);
+                return fail(pos, msg);
+            };
+            pts.extend(mesh.iter().flatten().map(|&v| DVec3::from(v)));
+            self.consumed_imports.push(leaf - IMPORTED);
+        }
+        if pts.is_empty() {
+            return Ok(Item::Solid(CsgNode::Empty));
+        }
+        let (vertices, faces) = hull3(&pts).map_err(|msg| Fail { pos, msg })?;
+        let solid = ConvexSolid {
+            vertices: vertices.iter().map(|v| v.to_array()).collect(),
+            faces,
+            colour: frame.ctx.colour,
+            line: pos.line,
+        };
+        self.vertices += solid.vertices.len();
+        self.solids.push(solid);
+        Ok(Item::Solid(CsgNode::Solid(self.solids.len() - 1)))
+    }
+}
+
+/// Where an extrusion's solids go: the transform above it, its colour, for messages its
+/// position and name.
+struct Placement {
+    matrix: Option<Mat4>,
+    colour: Option<[f64; 4]>,
+    pos: Pos,
+    name: &'static str,
+}
+
+/// An extrusion, its slice or fragment count settled.
+enum Extrusion {
+    Linear(Linear),
+    Rotate { angle: f64, fragments: usize },
+}
+
+/// The leaves under a `hull()`: through unions only (the hull of a difference is not the hull
+/// of its operands' vertices).
+fn hull_leaves(n: &CsgNode, out: &mut Vec<usize>) -> Result<(), String> {
+    let mut stack = vec![n];
+    while let Some(n) = stack.pop() {
+        match n {
+            CsgNode::Solid(i) => out.push(*i),
+            CsgNode::Empty => {}
+            CsgNode::Union(c) => stack.extend(c.iter()),
+            _ => {
+                return Err(
+                    "hull() of a difference or intersection is not supported (csgpix takes the hull of its children's vertices)"
+                        .into(),
+                )
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A finished `hull()` of 2D shapes: the convex hull of their vertices.
+fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {
+    let pos = frame.pos;
+    let mut pts = vec![];
+    for r in &frame.flats {
+        region_points(r, &mut pts).map_err(|msg| Fail { pos, msg })?;
+    }
+    let h = crate::hull::hull2(&pts);
+    if h.len() < 3 {
+        return Ok(None);
+    }
+    Ok(Some(Item::Flat(
+        Region::Poly(Poly2 { paths: vec![h] }),
+        pos,
+    )))
+}
+
+/// A finished `offset()`.
+fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
+    let pos = frame.pos;
+    if !frame.children.is_empty() {
+        return fail(pos, "`offset` takes 2D children, found a solid");
+    }
+    if frame.flats.is_empty() {
+        return Ok(None);
+    }
+    let Spec::Offset(o) = frame.spec else {
+        return fail(pos, "internal: an offset without its parameters");
+    };
+    let region = region_of(Op::Union, frame.flats);
+    let r = offset(&region, o, &sin_cos_degrees).map_err(|msg| Fail { pos, msg })?;
+    Ok(Some(Item::Flat(r, pos)))
+}
+
+/// The 2D tree an operation makes of its 2D children.
+fn region_of(op: Op, mut parts: Vec<Region>) -> Region {
+    if parts.len() == 1 && op == Op::Union {
+        return parts.pop().unwrap_or(Region::Union(vec![]));
+    }
+    match op {
+        Op::Union => Region::Union(parts),
+        Op::Intersection => Region::Intersection(parts),
+        Op::Difference => Region::Difference(parts),
+    }
+}
+
+/// Every vertex of every shape of a 2D tree (for the slice and fragment counts).
+fn collect_points(r: &Region, out: &mut Vec<DVec2>) {
+    match r {
+        Region::Poly(p) => out.extend(p.points()),
+        Region::Union(c) | Region::Intersection(c) | Region::Difference(c) => {
+            c.iter().for_each(|c| collect_points(c, out))
+        }
+    }
+}
+
+/// `linear_extrude`'s slices: as given, or OpenSCAD 2021.01's count from the outlines.
+fn linear_slices(a: LinearArgs, pts: &[DVec2]) -> Linear {
+    let mut l = a.linear;
+    l.slices = match a.slices {
+        Some(n) => n,
+        None => {
+            let r = pts.iter().map(|p| p.length()).fold(0.0, f64::max);
+            let ds = DVec2::new(l.scale[0] - 1.0, l.scale[1] - 1.0);
+            let delta = pts.iter().map(|p| (*p * ds).length()).fold(0.0, f64::max);
+            let (fn_, fa, fs) = a.res;
+            default_slices(&l, r, fn_, fa, fs, delta).min(MAX_FRAGMENTS as f64) as usize
+        }
+    };
+    l
+}
+
+/// The plane part (x, y) of a transform, for 2D shapes.
+fn plane_part(m: Option<&Mat4>) -> [[f64; 3]; 2] {
+    let m = m.unwrap_or(&IDENTITY);
+    [[m[0][0], m[0][1], m[0][3]], [m[1][0], m[1][1], m[1][3]]]
+}
+
+/// `sin_degrees` and `cos_degrees` of an angle.
+fn sin_cos_degrees(a: f64) -> (f64, f64) {
+    (sin_degrees(a), cos_degrees(a))
+}
+
+/// The parameters of an extrusion or offset, read when the statement opens.
+fn flat_spec(head: &Head) -> Result<Spec, Fail> {
+    let p = &head.params;
+    let res = || -> Result<(f64, f64, f64), Fail> {
+        let r = Resolution::read(p)?;
+        Ok((r.fn_, r.fa, r.fs))
+    };
+    Ok(match head.kind {
+        NodeKind::LinearExtrude => Spec::Linear(linear_args(p, res()?)?),
+        NodeKind::RotateExtrude => {
+            let mut angle = p.number("angle")?.map_or(360.0, |a| a.0);
+            // OpenSCAD 2021.01: an angle outside (-360, 360] is a full turn.
+            if !(angle > -360.0 && angle <= 360.0) {
+                angle = 360.0;
+            }
+            if angle == 0.0 {
+                return fail(head.pos, "`rotate_extrude` needs a nonzero `angle`");
+            }
+            Spec::Rotate { angle, res: res()? }
+        }
+        NodeKind::Offset => {
+            let r = Resolution::read(p)?;
+            let o = match (p.number("r")?, p.number("delta")?) {
+                (Some((r_, at)), _) => {
+                    finite(r_, at, "`r`")?;
+                    Offset::Round {
+                        r: r_,
+                        fragments: r.fragments(r_.abs(), at)?,
+                    }
+                }
+                (None, Some((d, at))) => Offset::Delta {
+                    delta: finite(d, at, "`delta`")?,
+                    chamfer: p.boolean("chamfer")?,
+                },
+                (None, None) => Offset::Delta {
+                    delta: 1.0,
+                    chamfer: p.boolean("chamfer")?,
+                },
+            };
+            Spec::Offset(o)
+        }
+        _ => Spec::None,
+    })
+}
+
+fn finite(v: f64, at: Pos, what: &str) -> Result<f64, Fail> {
+    if v.is_finite() && v.abs() <= MAX_COORDINATE {
+        Ok(v)
+    } else {
+        fail(at, format!("{what} must be a finite number"))
+    }
+}
+
+/// `linear_extrude(height, center, convexity, twist, slices, scale)`.
+fn linear_args(p: &Params, res: (f64, f64, f64)) -> Result<LinearArgs, Fail> {
+    let height = match p.number("height")? {
+        Some((h, at)) => finite(h, at, "`height`")?,
+        None => 100.0,
+    };
+    let twist = match p.number("twist")? {
+        Some((t, at)) => finite(t, at, "`twist`")?,
+        None => 0.0,
+    };
+    let slices = match p.number("slices")? {
+        Some((n, at)) => {
+            if !(n.is_finite() && n < MAX_FRAGMENTS as f64) {
+                return fail(at, format!("`slices` must be below {MAX_FRAGMENTS}"));
+            }
+            Some((n.max(1.0)) as usize)
+        }
+        None => None,
+    };
+    let scale = match p.get("scale") {
+        None => [1.0, 1.0],
+        Some(v) => {
+            let s = match &v.kind {
+                Kind::Num(s) => [*s, *s],
+                _ => match v.list("`scale`")? {
+                    [x, y] => [x.number("`scale`")?, y.number("`scale`")?],
+                    _ => return fail(v.pos, "`scale` must be a number or [x, y]"),
+                },
+            };
+            if s.iter().any(|c| !(c.is_finite() && *c >= 0.0)) {
+                return fail(v.pos, "`scale` must not be negative");
+            }
+            s
+        }
+    };
+    Ok(LinearArgs {
+        linear: Linear {
+            height,
+            center: p.boolean("center")?,
+            twist,
+            slices: 1,
+            scale,
+        },
+        slices,
+        res,
+    })
+}
+
+/// `square`, `circle` or `polygon` as a shape in its own plane.
+fn flat_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
+    match p.node {
+        NodeKind::Square => {
+            let size = match p.get("size") {
+                None => [1.0, 1.0],
+                Some(v) => {
+                    let s = match &v.kind {
+                        Kind::Num(s) => [*s, *s],
+                        _ => match v.list("`size`")? {
+                            [x, y] => [x.number("`size`")?, y.number("`size`")?],
+                            _ => return fail(v.pos, "`size` must be a number or [x, y]"),
+                        },
+                    };
+                    if s.iter().any(|c| !(*c > 0.0 && *c <= MAX_COORDINATE)) {
+                        return fail(v.pos, "`size` must be positive");
+                    }
+                    s
+                }
+            };
+            Ok(Poly2::square(size[0], size[1], p.boolean("center")?))
+        }
+        NodeKind::Circle => {
+            let r = match radius(p, "d", "r")? {
+                Some(r) => positive(r, "the radius")?,
+                None => 1.0,
+            };
+            let n = Resolution::read(p)?.fragments(r, p.pos)?;
+            check_budget(n, budget, p.pos)?;
+            Ok(Poly2::circle(r, n, sin_cos_degrees))
+        }
+        _ => polygon(p, budget),
+    }
+}
+
+/// `polygon(points, paths)`: one outline of all points, or one per path (even-odd fill).
+fn polygon(p: &Params, budget: usize) -> Result<Poly2, Fail> {
+    let pts = p.require("points", "points = [[x, y], …]")?;
+    let pts = pts
+        .list("`points`")?
+        .iter()
+        .map(|v| match v.list("a point")? {
+            [x, y] | [x, y, _] => {
+                let q = DVec2::new(x.number("a point")?, y.number("a point")?);
+                if q.abs().max_element() > MAX_COORDINATE || !q.is_finite() {
+                    return fail(v.pos, "a point exceeds the coordinate limit");
+                }
+                Ok(q)
+            }
+            _ => fail(v.pos, "a point must be [x, y]"),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    check_budget(pts.len(), budget, p.pos)?;
+    let paths = match p.get("paths") {
+        None => vec![pts],
+        Some(v) => v
+            .list("`paths`")?
+            .iter()
+            .map(|path| {
+                path.list("a path")?
+                    .iter()
+                    .map(|i| {
+                        let k = i.number("a point index")?;
+                        if k.fract() != 0.0 || k < 0.0 || k >= pts.len() as f64 {
+                            let msg =
+                                format!("point index {k} is not one of the {} points", pts.len());
+                            return fail(i.pos, msg);
+                        }
+                        Ok(pts[k as usize])
+                    })
+                    .collect::<Result<Vec<_>, _>>()
+            })
+            .collect::<Result<Vec<_>, _>>()?,
+    };
+    Ok(Poly2 {
+        paths: paths.into_iter().filter(|p| p.len() >= 3).collect(),
+    })
 }
 
 /// `import(file = "x.stl" | "x.obj" | "x.nrrd", threshold = t)`: a mesh or a dataset named by
@@ -1078,6 +1762,7 @@ fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
         colour: ctx.colour,
         line: head.pos.line,
         col: head.pos.col,
+        mesh: None,
     })
 }
 

@@ -44,6 +44,9 @@ pub struct Import {
     /// Where the scene names it (1-based), for messages.
     pub line: usize,
     pub col: usize,
+    /// A mesh the scene itself made (an extrusion the array cannot draw as a convex solid,
+    /// [`crate::extrude`]): closed triangles in scene coordinates; `file` then names the node.
+    pub mesh: Option<std::sync::Arc<Vec<[[f64; 3]; 3]>>>,
 }
 
 /// Leaf numbers from which imports count while a scene is assembled (no scene holds this many
@@ -79,11 +82,17 @@ impl CsgScene {
     pub fn require_convex(&self, file: &str, what: &str) -> Result<(), String> {
         match self.imports.first() {
             None => Ok(()),
-            Some(i) => Err(format!(
-                "{file}:{}:{}: `import(\"{}\")`: {what} draws convex solids only; datasets and meshes \
-                 are voxelized (`csgpix voxelize`)",
-                i.line, i.col, i.file
-            )),
+            Some(i) => {
+                let name = match i.mesh {
+                    Some(_) => format!("`{}` (not a convex solid)", i.file),
+                    None => format!("`import(\"{}\")`", i.file),
+                };
+                Err(format!(
+                    "{file}:{}:{}: {name}: {what} draws convex solids only; datasets and meshes \
+                     are voxelized (`csgpix voxelize`)",
+                    i.line, i.col
+                ))
+            }
         }
     }
 }

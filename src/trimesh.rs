@@ -101,6 +101,18 @@ impl TriMesh {
         w.mesh
     }
 
+    /// The mesh of triangles in f64, equal coordinates welded.
+    pub fn from_f64(tris: &[[[f64; 3]; 3]]) -> TriMesh {
+        let mut w = Welder::default();
+        for t in tris {
+            // Fails only past 2^32 distinct vertices; the rest are dropped then.
+            if w.triangle(t.map(DVec3::from)).is_err() {
+                break;
+            }
+        }
+        w.mesh
+    }
+
     /// Smallest and largest coordinates of the vertices; `(+∞, -∞)` for no vertices.
     pub fn bounds(&self) -> (DVec3, DVec3) {
         self.vertices
@@ -128,9 +140,11 @@ impl TriMesh {
         }
     }
 
-    /// Ok when the mesh bounds a solid: every undirected edge belongs to exactly two
-    /// triangles, after dropping degenerate triangles (a repeated vertex index). Refuses an
-    /// empty mesh and indices past the vertices. The error is one line starting `FILE:`.
+    /// Ok when the mesh bounds a solid: every undirected edge belongs to an even number of
+    /// triangles (two, or four where two solids touch along an edge, as OpenSCAD's own meshes
+    /// often have: the parity of ray crossings is then still the inside), after dropping
+    /// degenerate triangles (a repeated vertex index). Refuses an empty mesh and indices past
+    /// the vertices. The error is one line starting `FILE:`.
     pub fn check_closed(&self, file: &str) -> Result<(), String> {
         let tris = self.proper_triangles(file)?;
         let mut uses: HashMap<(u32, u32), u32> = HashMap::with_capacity(tris.len() * 3 / 2);
@@ -138,7 +152,7 @@ impl TriMesh {
             *uses.entry(undirected(e)).or_default() += 1;
         }
         let count = |f: fn(u32) -> bool| uses.values().filter(|&&n| f(n)).count();
-        let (open, many) = (count(|n| n == 1), count(|n| n > 2));
+        let (open, many) = (count(|n| n == 1), count(|n| n > 2 && n % 2 == 1));
         if open == 0 && many == 0 {
             return Ok(());
         }
@@ -158,13 +172,13 @@ impl TriMesh {
         let (first_open, first_many) = if open > 0 {
             (first(|n| n == 1), String::new())
         } else {
-            (String::new(), first(|n| n > 2))
+            (String::new(), first(|n| n > 2 && n % 2 == 1))
         };
         Err(format!(
             "{file}: mesh is not closed: {open} edges belong to one triangle{first_open}, \
-             {many} to more than two{first_many}; close the holes and split the edges shared \
-             by more than two triangles (e.g. with MeshLab's or Blender's mesh repair) so the \
-             surface bounds a solid"
+             {many} to another odd number{first_many}; close the holes and remove the fins \
+             (e.g. with MeshLab's or Blender's mesh repair) so that every edge is shared by \
+             an even number of triangles and the surface bounds a solid"
         ))
     }
 

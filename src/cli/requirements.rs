@@ -102,8 +102,7 @@ struct Report {
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
     let at = |e: String| format!("{}:1:1: {e}", a.scene.display());
-    let text =
-        std::fs::read_to_string(&a.scene).map_err(|e| format!("{}: {e}", a.scene.display()))?;
+    let text = csgpix::scad::scene_text(&a.scene)?;
     let scene = parse_csg(&text, &a.scene.display().to_string()).map_err(|e| e.to_string())?;
     scene.require_convex(&a.scene.display().to_string(), "`requirements`")?;
     if !(a.precision > 0.0 && a.precision.is_finite()) {

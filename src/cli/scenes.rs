@@ -40,7 +40,10 @@ impl Scene {
         view: View,
         cfg: &ArrayConfig,
     ) -> Result<Scene, String> {
-        let is_csg = |p: &PathBuf| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("csg"));
+        let is_csg = |p: &PathBuf| {
+            p.extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("csg") || e.eq_ignore_ascii_case("scad"))
+        };
         match paths.iter().position(is_csg) {
             None => Self::load_lists(paths, clip),
             Some(_) if paths.len() > 1 => {
@@ -85,7 +88,7 @@ impl Scene {
     }
 
     fn load_csg(path: &Path, view: View, cfg: &ArrayConfig) -> Result<Scene, String> {
-        let text = read(path)?;
+        let text = csgpix::scad::scene_text(path)?;
         let scene = parse_csg(&text, &path.display().to_string()).map_err(|e| e.to_string())?;
         scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);

@@ -188,7 +188,7 @@ fn run_path(s: &mut Sculptor, path: &[DVec3]) -> Result<Vec<Step>, String> {
 fn load(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let ext = a.input.extension().and_then(|e| e.to_str()).unwrap_or("");
     match ext.to_ascii_lowercase().as_str() {
-        "csg" => load_scene(a),
+        "csg" | "scad" => load_scene(a),
         "nrrd" if a.res.is_none() && !a.grid.any() => load_nrrd(&a.input, a.max_memory),
         "nrrd" => Err("--res, --voxel, --pad and --bounds apply to .csg scenes only".into()),
         _ => Err(format!(

@@ -93,7 +93,7 @@ struct Report<'a> {
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
     let file = a.scene.display().to_string();
-    let text = std::fs::read_to_string(&a.scene).map_err(|e| format!("{file}: {e}"))?;
+    let text = csgpix::scad::scene_text(&a.scene)?;
     let sweep = Sweep {
         bits: a.bits.clone(),
         fragments: a.fragments.clone(),

@@ -238,7 +238,7 @@ fn print_area(r: &AreaReport) {
 }
 
 fn read_scene(path: &Path) -> Result<CsgScene, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = csgpix::scad::scene_text(path)?;
     let scene = parse_csg(&text, &path.display().to_string()).map_err(|e| e.to_string())?;
     scene.require_convex(&path.display().to_string(), "`throughput`")?;
     Ok(scene)
