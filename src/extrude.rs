@@ -512,6 +512,54 @@ fn clip(poly: &[DVec2], n: DVec2, c: f64) -> Vec<DVec2> {
     out
 }
 
+/// The shape a 2D tree covers, its booleans computed in the plane (the even-odd outlines of
+/// its parts combined by `i_overlay`, as OpenSCAD combines them with Clipper): for the
+/// extrusions that do not commute with booleans, those whose walls are triangulated between
+/// slices (a twist, a scale differing between X and Y).
+pub fn flatten(r: &Region) -> Poly2 {
+    Poly2 {
+        paths: contours(r)
+            .into_iter()
+            .flatten()
+            .map(|c| c.into_iter().map(DVec2::from).collect())
+            .collect(),
+    }
+}
+
+/// Shapes (outer outline, then holes) of a 2D tree.
+fn contours(r: &Region) -> Vec<Vec<Vec<[f64; 2]>>> {
+    use i_overlay::core::fill_rule::FillRule;
+    use i_overlay::core::overlay_rule::OverlayRule;
+    use i_overlay::float::single::SingleFloatOverlay;
+    let none: Vec<Vec<[f64; 2]>> = vec![];
+    let paths =
+        |s: Vec<Vec<Vec<[f64; 2]>>>| -> Vec<Vec<[f64; 2]>> { s.into_iter().flatten().collect() };
+    let (rule, parts) = match r {
+        Region::Poly(p) => {
+            let subj: Vec<Vec<[f64; 2]>> = p
+                .paths
+                .iter()
+                .map(|c| c.iter().map(|v| v.to_array()).collect())
+                .collect();
+            return subj.overlay(&none, OverlayRule::Subject, FillRule::EvenOdd);
+        }
+        Region::Union(c) => (OverlayRule::Union, c),
+        Region::Intersection(c) => (OverlayRule::Intersect, c),
+        Region::Difference(c) => (OverlayRule::Difference, c),
+    };
+    let mut it = parts.iter();
+    let Some(first) = it.next() else {
+        return vec![];
+    };
+    let mut acc = paths(contours(first));
+    for part in it {
+        let other = paths(contours(part));
+        // A union or difference with nothing is the shape itself; an intersection, nothing.
+        acc = paths(acc.overlay(&other, rule, FillRule::EvenOdd));
+    }
+    acc.overlay(&none, OverlayRule::Subject, FillRule::EvenOdd)
+}
+
 /// Every vertex of a region's shapes, for `hull()`; Err under a difference or intersection
 /// (their hull is not the hull of their operands' points).
 pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<(), String> {

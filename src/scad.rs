@@ -75,8 +75,8 @@ use std::fmt;
 use glam::{DVec2, DVec3};
 
 use crate::extrude::{
-    convex_prism, default_slices, linear_mesh, offset, region_points, rotate_mesh, Linear, Offset,
-    Poly2, Region,
+    convex_prism, default_slices, flatten, linear_mesh, offset, region_points, rotate_mesh, Linear,
+    Offset, Poly2, Region,
 };
 use crate::hull::hull3;
 use crate::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
@@ -924,8 +924,10 @@ struct Frame {
     closer: Closer,
     ctx: Ctx,
     children: Vec<CsgNode>,
-    /// 2D children (shapes in the plane of the nearest extrusion).
+    /// 2D children (shapes in the plane of the nearest extrusion), and where the first
+    /// 2D shape among them stands.
     flats: Vec<Region>,
+    first_flat: Option<Pos>,
     /// Where the node stands, for messages.
     pos: Pos,
     /// An extrusion's or offset's parameters, read when it opened.
@@ -1083,6 +1085,7 @@ impl<'a> Reader<'a> {
             ctx,
             children: Vec::new(),
             flats: Vec::new(),
+            first_flat: None,
             pos: head.pos,
             spec,
             placement,
@@ -1142,7 +1145,10 @@ impl<'a> Reader<'a> {
             };
             match node {
                 Some(Item::Solid(n)) => frame.children.push(n),
-                Some(Item::Flat(r, _)) => frame.flats.push(r),
+                Some(Item::Flat(r, at)) => {
+                    frame.flats.push(r);
+                    frame.first_flat.get_or_insert(at);
+                }
                 None => {}
             }
             if frame.closer != Closer::Single {
@@ -1165,13 +1171,20 @@ impl<'a> Reader<'a> {
         if mixed {
             return fail(pos, format!("`{}` mixes 2D and 3D children", kind.name()));
         }
+        let flat_at = frame.first_flat.unwrap_or(pos);
         match kind {
+            NodeKind::LinearExtrude | NodeKind::RotateExtrude if !frame.children.is_empty() => {
+                fail(
+                    pos,
+                    format!("`{}` takes 2D children, found a solid", kind.name()),
+                )
+            }
             NodeKind::LinearExtrude | NodeKind::RotateExtrude => self.extrude(frame).map(Some),
             NodeKind::Hull if frame.flats.is_empty() => self.hull3(frame).map(Some),
             NodeKind::Hull => hull_flat(frame),
             NodeKind::Offset => offset_flat(frame),
             _ if !frame.flats.is_empty() => {
-                Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), pos)))
+                Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), flat_at)))
             }
             _ => Ok(Some(Item::Solid(combine(kind.op(), frame.children)))),
         }
@@ -1223,7 +1236,13 @@ impl<'a> Reader<'a> {
         if frame.flats.is_empty() {
             return Ok(Item::Solid(CsgNode::Empty));
         }
-        let region = region_of(Op::Union, frame.flats);
+        let mut region = region_of(Op::Union, frame.flats);
+        // Twisted or unevenly scaled walls are triangulated between slices, which does not
+        // commute with booleans: those take the booleans in the plane first, as OpenSCAD.
+        let triangulated = matches!(frame.spec, Spec::Linear(a) if !a.linear.keeps_convex());
+        if triangulated && !matches!(region, Region::Poly(_)) {
+            region = Region::Poly(flatten(&region));
+        }
         let mut pts = vec![];
         collect_points(&region, &mut pts);
         let how = match frame.spec {
@@ -1460,6 +1479,7 @@ fn hull_leaves(n: &CsgNode, out: &mut Vec<usize>) -> Result<(), String> {
 /// A finished `hull()` of 2D shapes: the convex hull of their vertices.
 fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     let pos = frame.pos;
+    let at = frame.first_flat.unwrap_or(pos);
     let mut pts = vec![];
     for r in &frame.flats {
         region_points(r, &mut pts).map_err(|msg| Fail { pos, msg })?;
@@ -1468,10 +1488,7 @@ fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     if h.len() < 3 {
         return Ok(None);
     }
-    Ok(Some(Item::Flat(
-        Region::Poly(Poly2 { paths: vec![h] }),
-        pos,
-    )))
+    Ok(Some(Item::Flat(Region::Poly(Poly2 { paths: vec![h] }), at)))
 }
 
 /// A finished `offset()`.
@@ -1486,9 +1503,10 @@ fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     let Spec::Offset(o) = frame.spec else {
         return fail(pos, "internal: an offset without its parameters");
     };
+    let at = frame.first_flat.unwrap_or(pos);
     let region = region_of(Op::Union, frame.flats);
     let r = offset(&region, o, &sin_cos_degrees).map_err(|msg| Fail { pos, msg })?;
-    Ok(Some(Item::Flat(r, pos)))
+    Ok(Some(Item::Flat(r, at)))
 }
 
 /// The 2D tree an operation makes of its 2D children.
@@ -1730,8 +1748,14 @@ fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
         return fail(file.pos, "`file` must be a string");
     };
     let threshold = p.number("threshold")?;
-    let dataset = name.to_ascii_lowercase().ends_with(".nrrd")
-        || name.to_ascii_lowercase().ends_with(".nhdr");
+    let lower = name.to_ascii_lowercase();
+    let dataset = lower.ends_with(".nrrd") || lower.ends_with(".nhdr");
+    if !(dataset || lower.ends_with(".stl") || lower.ends_with(".obj")) {
+        return fail(
+            file.pos,
+            format!("`import(\"{name}\")`: csgpix imports .stl and .obj meshes and .nrrd datasets (not 2D files such as .dxf or .svg)"),
+        );
+    }
     match (dataset, threshold) {
         (true, None) => {
             return fail(
@@ -3003,12 +3027,17 @@ mod tests {
     #[test]
     fn errors_name_line_and_column() {
         assert_err(
-            "group() {\n  linear_extrude(height = 10) square(1);\n}",
+            "group() {\n  minkowski() { cube(1); sphere(1); }\n}",
             2,
             3,
-            "unsupported node `linear_extrude` (csgpix reads group",
+            "unsupported node `minkowski` (csgpix reads group",
         );
-        assert_err("hull() { cube(1); }", 1, 1, "unsupported node `hull`");
+        assert_err(
+            "projection() cube(1);",
+            1,
+            1,
+            "unsupported node `projection`",
+        );
         assert_err("cube(size = 1.2.3);", 1, 13, "malformed number `1.2.3`");
         assert_err("cube(size = 1e);", 1, 13, "malformed number `1e`");
         assert_err("cube(size = 1e999);", 1, 13, "out of range");
