@@ -411,7 +411,7 @@ fn fan(ring: &[DVec3], out: &mut Vec<Tri3>) {
 /// How `offset` moves edges.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Offset {
-    /// `r`: round corners with `fragments` points per full turn.
+    /// `r`: round corners, `fragments` steps to a full turn (Clipper's round join).
     Round { r: f64, fragments: usize },
     /// `delta`: sharp (mitred) corners, or cut corners with `chamfer`.
     Delta { delta: f64, chamfer: bool },
@@ -484,11 +484,15 @@ fn offset_convex(p: &[DVec2], o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> 
                 if turn < 0.0 {
                     turn += 360.0;
                 }
-                let steps = ((turn / 360.0) * fragments as f64).ceil().max(1.0) as usize;
-                for k in 0..=steps {
-                    let (s, c) = sincos(a0.to_degrees() + turn * k as f64 / steps as f64);
+                // Clipper's round join as OpenSCAD sets it up (arc tolerance from the circle's
+                // fragments): round(fragments · turn / 360) points a fragment's angle apart
+                // from the first edge's normal, then the second edge's.
+                let steps = ((turn / 360.0) * fragments as f64).round().max(1.0) as usize;
+                for k in 0..steps {
+                    let (s, c) = sincos(a0.to_degrees() + 360.0 * k as f64 / fragments as f64);
                     out.push(corner + DVec2::new(c, s) * d);
                 }
+                out.push(corner + n1 * d);
             }
         }
     }

@@ -1,5 +1,6 @@
-//! Reader for the OpenSCAD `.csg` subset that describes convex solids under CSG operations:
-//! what OpenSCAD writes with File → Export → Export as CSG.
+//! Reader for the OpenSCAD `.csg` subset csgpix draws and voxelizes: solids, 2D shapes under
+//! extrusions, hulls and offsets under CSG operations, as OpenSCAD writes them with File →
+//! Export → Export as CSG.
 //!
 //! # What is read
 //!
@@ -26,8 +27,22 @@
 //!   primitive ([`crate::solid::Import`], loaded by [`crate::sampled`]); `threshold` (ours, not
 //!   OpenSCAD's) is a dataset's iso value.
 //!
-//! Anything else (`linear_extrude`, `hull`, 2D shapes, …) is refused with an error
-//! naming the node, its line and column.
+//! * 2D shapes `square`, `circle`, `polygon(points, paths)` (several paths filled even-odd:
+//!   holes) under 2D `multmatrix`/`color`/`group`/`union`/`difference`/`intersection`, inside
+//!   `linear_extrude(height, center, twist, slices, scale)` or `rotate_extrude(angle)`; a 2D
+//!   shape outside an extrusion, or an operation mixing 2D and 3D children, is refused.
+//!   Extrusions follow OpenSCAD 2021.01's layout ([`crate::extrude`]): an untwisted, evenly
+//!   scaled extrusion of one convex outline is a convex solid; anything else is a closed mesh
+//!   primitive (an [`Import`] holding its triangles), and a 2D boolean becomes the same boolean
+//!   of the extruded shapes, except under a twist or uneven scale, where it is taken in the
+//!   plane first.
+//! * `hull()` of solids (one convex solid over their vertices; the solids leave the scene) or
+//!   of 2D shapes (a convex outline); not of a difference or intersection.
+//! * `offset(r | delta, chamfer)` of one convex outline, or outward of a union of them.
+//!
+//! Anything else (`minkowski`, `projection`, `text`, `surface`, 2D imports, …) is refused with
+//! an error naming the node, its line and column. [`scene_text`] turns a `.scad` file into
+//! this CSG text by running `openscad`.
 //!
 //! The tree is simplified without changing the solid it describes: a union or group with one
 //! child is that child, unions inside unions (and intersections inside intersections) are
