@@ -368,11 +368,11 @@ fn render_csg(text: &str, extra: &[&str]) -> (Option<i32>, String, bool) {
 
 #[test]
 fn unsupported_csg_nodes_are_named_with_line_and_column() {
-    let text = "group() {\n  cube(size = [1, 1, 1]);\n  linear_extrude(height = 2) square(1);\n}\n";
+    let text = "group() {\n  cube(size = [1, 1, 1]);\n  minkowski() { cube(1); sphere(1); }\n}\n";
     let (code, err, written) = render_csg(text, &[]);
     assert_eq!(code, Some(2));
     assert!(
-        err.contains("scene.csg:3:3") && err.contains("linear_extrude"),
+        err.contains("scene.csg:3:3") && err.contains("minkowski"),
         "{err}"
     );
     assert_eq!(err.lines().count(), 1, "{err}");
@@ -520,7 +520,7 @@ fn voxelize_refuses_bad_input_without_output() {
     let d = tmp();
     let out = d.path().join("v.nrrd");
     let bad = d.path().join("bad.csg");
-    std::fs::write(&bad, "cube(size = [1, 1, 1]);\nhull() { sphere(1); }\n").unwrap();
+    std::fs::write(&bad, "cube(size = [1, 1, 1]);\nminkowski() { sphere(1); }\n").unwrap();
     for args in [
         vec!["voxelize", s(&bad), "--res", "8", "-o", s(&out)],
         vec![
