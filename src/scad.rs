@@ -457,6 +457,17 @@ impl Value {
         }
     }
 
+    /// A number for both, or `[x, y]` (`scale`, a square's `size`).
+    fn pair(&self, what: &str) -> Result<[f64; 2], Fail> {
+        match &self.kind {
+            Kind::Num(s) => Ok([*s, *s]),
+            _ => match self.list(what)? {
+                [x, y] => Ok([x.number(what)?, y.number(what)?]),
+                _ => fail(self.pos, format!("{what} must be a number or [x, y]")),
+            },
+        }
+    }
+
     fn vec3(&self, what: &str) -> Result<Vec3, Fail> {
         match self.list(what)? {
             [x, y, z] => Ok([x.number(what)?, y.number(what)?, z.number(what)?]),
@@ -1648,13 +1659,7 @@ fn linear_args(p: &Params, res: (f64, f64, f64)) -> Result<LinearArgs, Fail> {
     let scale = match p.get("scale") {
         None => [1.0, 1.0],
         Some(v) => {
-            let s = match &v.kind {
-                Kind::Num(s) => [*s, *s],
-                _ => match v.list("`scale`")? {
-                    [x, y] => [x.number("`scale`")?, y.number("`scale`")?],
-                    _ => return fail(v.pos, "`scale` must be a number or [x, y]"),
-                },
-            };
+            let s = v.pair("`scale`")?;
             if s.iter().any(|c| !(c.is_finite() && *c >= 0.0)) {
                 return fail(v.pos, "`scale` must not be negative");
             }
@@ -1681,13 +1686,7 @@ fn flat_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
             let size = match p.get("size") {
                 None => [1.0, 1.0],
                 Some(v) => {
-                    let s = match &v.kind {
-                        Kind::Num(s) => [*s, *s],
-                        _ => match v.list("`size`")? {
-                            [x, y] => [x.number("`size`")?, y.number("`size`")?],
-                            _ => return fail(v.pos, "`size` must be a number or [x, y]"),
-                        },
-                    };
+                    let s = v.pair("`size`")?;
                     if s.iter().any(|c| !(*c > 0.0 && *c <= MAX_COORDINATE)) {
                         return fail(v.pos, "`size` must be positive");
                     }

@@ -520,7 +520,11 @@ fn voxelize_refuses_bad_input_without_output() {
     let d = tmp();
     let out = d.path().join("v.nrrd");
     let bad = d.path().join("bad.csg");
-    std::fs::write(&bad, "cube(size = [1, 1, 1]);\nminkowski() { sphere(1); }\n").unwrap();
+    std::fs::write(
+        &bad,
+        "cube(size = [1, 1, 1]);\nminkowski() { sphere(1); }\n",
+    )
+    .unwrap();
     for args in [
         vec!["voxelize", s(&bad), "--res", "8", "-o", s(&out)],
         vec![
