@@ -262,16 +262,16 @@ pub fn convex_prism(outline: &[DVec2], l: &Linear) -> (Vec<[f64; 3]>, Vec<Vec<us
 /// cap at the bottom and, unless the top is scaled to a point, at the top. Outlines run as
 /// OpenSCAD's even-odd cleanup leaves them (outer ones counter-clockwise, holes clockwise).
 /// Each twisted wall quad is split along the diagonal that gives OpenSCAD 2021.01's own
-/// meshes (found by comparing voxels with its STL, `tests/openscad_iou.rs`): unscaled, from
-/// the lower corner i to the upper corner i + 1 for a positive twist and the other diagonal
-/// for a negative one; scaled, the shorter diagonal.
+/// meshes (found by comparing voxels with its STL, `tests/openscad_iou.rs`): on an unscaled
+/// outer outline, from the lower corner i to the upper corner i + 1 for a positive twist and
+/// the other diagonal for a negative one; on holes and scaled outlines, the shorter diagonal.
 pub fn linear_mesh(poly: &Poly2, l: &Linear, sincos: &dyn Fn(f64) -> (f64, f64)) -> Vec<Tri3> {
     let mut out = vec![];
-    for (path, _) in oriented(poly) {
+    for (path, hole) in oriented(poly) {
         let ring = |j: usize| -> Vec<DVec3> { path.iter().map(|&p| l.at(p, j, sincos)).collect() };
         let mut lower = ring(0);
         fan(&lower, &mut out);
-        let rising = (l.scale == [1.0, 1.0]).then_some(l.twist > 0.0);
+        let rising = (!hole && l.scale == [1.0, 1.0]).then_some(l.twist > 0.0);
         for j in 1..=l.slices {
             let upper = ring(j);
             walls(&lower, &upper, rising, &mut out);
