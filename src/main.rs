@@ -28,6 +28,11 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    // Staged outputs are removed if the run is interrupted (src/output.rs).
+    if let Err(e) = csgpix::output::install_signal_cleanup() {
+        eprintln!("csgpix: cannot watch for signals: {e}");
+        return ExitCode::from(2);
+    }
     match cli::run(args) {
         Ok(code) => code,
         Err(e) => {

@@ -41,12 +41,25 @@ impl Format {
 /// Writes `tris` to `path` in the format of its extension, atomically.
 pub fn write(path: &Path, tris: &[Tri], comment: &str) -> Result<(), String> {
     let f = Format::of_path(path)?;
-    write_atomic(path, |w| match f {
+    write_atomic(path, |w| write_format(w, f, tris, comment))
+}
+
+/// Writes `tris` into `w` in format `f`.
+pub fn write_format(
+    w: &mut dyn Write,
+    f: Format,
+    tris: &[Tri],
+    comment: &str,
+) -> std::io::Result<()> {
+    match f {
         Format::Stl => write_stl(w, tris, comment),
         Format::Obj => write_obj(w, tris, comment),
         Format::Ply => write_ply(w, tris, comment),
-    })
+    }
 }
+
+/// The extensions [`Format::of_path`] knows.
+pub const EXTENSIONS: [&str; 3] = ["stl", "obj", "ply"];
 
 /// Unit normal of a counter-clockwise triangle (zero for a degenerate one).
 pub fn normal(t: &Tri) -> [f32; 3] {

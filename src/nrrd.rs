@@ -46,11 +46,18 @@ pub fn header(grid: &Grid, comment: &str) -> String {
 
 /// Write the volume (X fastest, then Y, then Z) whole or not at all.
 pub fn write(path: &Path, grid: &Grid, voxels: &[u8], comment: &str) -> Result<(), String> {
-    let head = header(grid, comment);
-    write_atomic(path, |w| {
-        w.write_all(head.as_bytes())?;
-        w.write_all(voxels)
-    })
+    write_atomic(path, |w| write_volume(w, grid, voxels, comment))
+}
+
+/// The NRRD file of the volume (X fastest, then Y, then Z), into `w`.
+pub fn write_volume(
+    w: &mut dyn Write,
+    grid: &Grid,
+    voxels: &[u8],
+    comment: &str,
+) -> std::io::Result<()> {
+    w.write_all(header(grid, comment).as_bytes())?;
+    w.write_all(voxels)
 }
 
 /// Read back a volume this module wrote: the sizes and the voxels (for tests and tools).

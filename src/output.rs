@@ -1,32 +1,663 @@
-//! Writing output files whole or not at all: write to a temporary file beside the target, then
-//! rename, so a failed run leaves no partial output.
+//! Output files, whole or not at all.
+//!
+//! A command names every file it will write before it computes anything ([`Outputs`]): each
+//! path is checked then (its extension, its directory, what it is), and a temporary file is
+//! created beside it, so a run that cannot write its outputs fails before it starts. The
+//! command stages each output into its temporary file as it goes and commits them all at its
+//! end; a run that fails on the way leaves nothing behind, and none of its earlier outputs.
+//!
+//! What a path names decides how it is written:
+//! - a regular file, or a new one: staged beside it, renamed over it at the commit. Symlinks
+//!   are followed, so the file a symlink names is replaced and the symlink stays.
+//! - a FIFO or a character device (`/dev/null`, a terminal, `/dev/stdout`): written through
+//!   at the commit, never replaced.
+//! - `-`: standard output, where the format allows it.
+//! - a directory, a block device or a socket: refused.
+//!
+//! SIGINT, SIGTERM and SIGHUP remove every staged file and directory before the process dies
+//! of the signal ([`install_signal_cleanup`]).
 
-use std::io::Write;
-use std::path::Path;
+use std::fs::File;
+use std::io::{Seek, Write};
+use std::path::{Path, PathBuf};
+use std::sync::{Mutex, MutexGuard};
 
-/// Write `path` atomically with the bytes `fill` produces.
+/// Staged paths a signal must remove: temporary files and directories not yet committed.
+static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// Held through a commit, and by the signal cleanup: a commit is never cut in half.
+static COMMIT: Mutex<()> = Mutex::new(());
+
+fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
+    PENDING.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+fn forget(path: &Path) {
+    pending().retain(|p| p != path);
+}
+
+/// On SIGINT, SIGTERM or SIGHUP remove every staged output, then die of the signal as its
+/// default action would (the shell sees the signal). Call once, from `main`.
+pub fn install_signal_cleanup() -> Result<(), String> {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
+        .map_err(|e| e.to_string())?;
+    std::thread::spawn(move || {
+        if let Some(sig) = signals.forever().next() {
+            // Held to the end: a commit in progress finishes first, and none starts after.
+            let _commit = COMMIT.lock().unwrap_or_else(|e| e.into_inner());
+            let mut staged = pending();
+            for p in staged.drain(..) {
+                let _ = std::fs::remove_file(&p).or_else(|_| std::fs::remove_dir_all(&p));
+            }
+            let _ = signal_hook::low_level::emulate_default_handler(sig);
+            std::process::exit(128 + sig);
+        }
+    });
+    Ok(())
+}
+
+/// A staged file: a named temporary file beside its target, removed on drop or on a signal.
+struct Staged {
+    file: Option<tempfile::NamedTempFile>,
+}
+
+impl Staged {
+    fn new_in(dir: &Path, name: &str) -> std::io::Result<Staged> {
+        let file = tempfile::Builder::new()
+            .prefix(&format!(".{name}."))
+            .suffix(".csgpix-tmp")
+            .tempfile_in(dir)?;
+        pending().push(file.path().to_path_buf());
+        Ok(Staged { file: Some(file) })
+    }
+
+    fn file(&mut self) -> &mut File {
+        self.file
+            .as_mut()
+            .expect("staged file present")
+            .as_file_mut()
+    }
+
+    /// Rename over `target` with `mode`.
+    fn persist(mut self, target: &Path, mode: u32) -> Result<(), String> {
+        let file = self.file.take().expect("staged file present");
+        let tmp = file.path().to_path_buf();
+        let r = set_mode(file.as_file(), mode)
+            .map_err(|e| format!("{}: {e}", target.display()))
+            .and_then(|()| {
+                file.persist(target)
+                    .map(drop)
+                    .map_err(|e| format!("{}: {}", target.display(), e.error))
+            });
+        forget(&tmp);
+        r
+    }
+}
+
+impl Drop for Staged {
+    fn drop(&mut self) {
+        if let Some(f) = self.file.take() {
+            let p = f.path().to_path_buf();
+            drop(f);
+            forget(&p);
+        }
+    }
+}
+
+#[cfg(unix)]
+fn set_mode(f: &File, mode: u32) -> std::io::Result<()> {
+    use std::os::unix::fs::PermissionsExt;
+    f.set_permissions(std::fs::Permissions::from_mode(mode))
+}
+
+#[cfg(not(unix))]
+fn set_mode(_: &File, _: u32) -> std::io::Result<()> {
+    Ok(())
+}
+
+/// Write `path` with the bytes `fill` produces, whole or not at all (one output alone; a
+/// command with several uses [`Outputs`]).
 pub fn write_atomic(
     path: &Path,
     fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
 ) -> Result<(), String> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    let err = |e: std::io::Error| format!("{}: {e}", path.display());
-    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(err)?;
-    {
-        let mut buf = std::io::BufWriter::new(tmp.as_file_mut());
+    let mut outs = Outputs::new();
+    let out = outs.file("output", path, &[])?;
+    outs.write(out, fill)?;
+    outs.commit()
+}
+
+/// Encode `img` as PNG into `w`.
+pub fn write_png(w: &mut dyn Write, img: &image::RgbImage) -> std::io::Result<()> {
+    let mut buf = std::io::Cursor::new(Vec::new());
+    img.write_to(&mut buf, image::ImageFormat::Png)
+        .map_err(std::io::Error::other)?;
+    w.write_all(buf.get_ref())
+}
+
+/// Where an output goes, found when it is named.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Target {
+    /// A regular file, or a new one (symlinks resolved), and the mode it gets.
+    File(PathBuf, u32),
+    /// A FIFO or a character device: opened and written at the commit.
+    Through(PathBuf),
+    /// Standard output.
+    Stdout,
+    /// A directory of files, new or existing (symlinks resolved).
+    Dir(PathBuf),
+}
+
+enum Stage {
+    /// Staged beside a regular file.
+    Named(Staged),
+    /// Staged in an unnamed temporary file, copied out at the commit.
+    Unnamed(File),
+    /// A staging directory beside the target directory, and the names written into it.
+    Dir(StagedDir, Vec<String>),
+}
+
+/// A staging directory, removed on drop or on a signal.
+struct StagedDir(PathBuf);
+
+impl Drop for StagedDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+        forget(&self.0);
+    }
+}
+
+struct Slot {
+    shown: String,
+    target: Target,
+    stage: Stage,
+}
+
+/// A handle to one output of an [`Outputs`] set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Out(usize);
+
+/// The outputs of one run: named first, staged while it runs, committed together.
+#[derive(Default)]
+pub struct Outputs {
+    slots: Vec<Slot>,
+}
+
+impl Outputs {
+    pub fn new() -> Outputs {
+        Outputs::default()
+    }
+
+    /// Name a file output of option `flag`: its extension must be one of `exts` (any case;
+    /// none checked when `exts` is empty, or when the path is a FIFO or a device).
+    pub fn file(&mut self, flag: &str, path: &Path, exts: &[&str]) -> Result<Out, String> {
+        self.named(flag, path, exts, false)
+    }
+
+    /// As [`Outputs::file`], and `-` means standard output.
+    pub fn file_or_stdout(
+        &mut self,
+        flag: &str,
+        path: &Path,
+        exts: &[&str],
+    ) -> Result<Out, String> {
+        self.named(flag, path, exts, true)
+    }
+
+    /// Name a directory output of option `flag` (created at the commit, with its parents).
+    pub fn dir(&mut self, flag: &str, path: &Path) -> Result<Out, String> {
+        let shown = path.display().to_string();
+        let err = |msg: String| format!("{flag} {shown}: {msg}");
+        if path.as_os_str() == "-" {
+            return Err(err(
+                "a directory of files cannot go to standard output".into()
+            ));
+        }
+        let resolved = resolve(path).map_err(err)?;
+        match std::fs::metadata(&resolved) {
+            Ok(m) if !m.is_dir() => return Err(err("exists and is not a directory".into())),
+            Ok(_) => {}
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+            Err(e) => return Err(err(e.to_string())),
+        }
+        let target = Target::Dir(resolved.clone());
+        self.check_unique(&target, &shown)?;
+        let (base, name) = existing_ancestor(&resolved).map_err(err)?;
+        let dir = tempfile::Builder::new()
+            .prefix(&format!(".{name}."))
+            .suffix(".csgpix-tmp")
+            .tempdir_in(&base)
+            .map_err(|e| err(format!("cannot write in {}: {e}", base.display())))?
+            .keep();
+        pending().push(dir.clone());
+        self.slots.push(Slot {
+            shown,
+            target,
+            stage: Stage::Dir(StagedDir(dir), Vec::new()),
+        });
+        Ok(Out(self.slots.len() - 1))
+    }
+
+    /// Does any output go to standard output? (Then reports go to standard error.)
+    pub fn uses_stdout(&self) -> bool {
+        self.slots.iter().any(|s| s.target == Target::Stdout)
+    }
+
+    /// The path an output was named by, for messages.
+    pub fn shown(&self, out: Out) -> &str {
+        &self.slots[out.0].shown
+    }
+
+    /// Stage the whole content of a file output.
+    pub fn write(
+        &mut self,
+        out: Out,
+        fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+    ) -> Result<(), String> {
+        let slot = &mut self.slots[out.0];
+        let shown = &slot.shown;
+        let err = |e: std::io::Error| format!("{shown}: {e}");
+        let file = match &mut slot.stage {
+            Stage::Named(s) => s.file(),
+            Stage::Unnamed(f) => f,
+            Stage::Dir(..) => return Err(format!("{shown}: is a directory output")),
+        };
+        file.set_len(0).map_err(err)?;
+        file.rewind().map_err(err)?;
+        let mut buf = std::io::BufWriter::new(file);
         fill(&mut buf).map_err(err)?;
-        buf.flush().map_err(err)?;
+        buf.flush().map_err(err)
     }
-    // A temporary file is created private; the output is an ordinary file.
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        let mode = std::fs::Permissions::from_mode(0o644);
-        tmp.as_file().set_permissions(mode).map_err(err)?;
+
+    /// Stage file `name` of a directory output with the bytes `fill` produces.
+    pub fn write_in(
+        &mut self,
+        out: Out,
+        name: &str,
+        fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+    ) -> Result<(), String> {
+        let path = self.stage_path(out, name)?;
+        let err = |e: std::io::Error| format!("{}: {e}", path.display());
+        let mut buf = std::io::BufWriter::new(File::create(&path).map_err(err)?);
+        fill(&mut buf).map_err(err)?;
+        buf.flush().map_err(err)
     }
-    tmp.persist(path).map_err(|e| err(e.error))?;
+
+    /// Where file `name` of a directory output is staged, for writers that take a path.
+    pub fn stage_path(&mut self, out: Out, name: &str) -> Result<PathBuf, String> {
+        let slot = &mut self.slots[out.0];
+        let Stage::Dir(dir, names) = &mut slot.stage else {
+            return Err(format!("{}: is not a directory output", slot.shown));
+        };
+        if name.contains('/') || name.starts_with('.') || name.is_empty() {
+            return Err(format!("{}: bad file name {name:?}", slot.shown));
+        }
+        if !names.iter().any(|n| n == name) {
+            names.push(name.to_string());
+        }
+        Ok(dir.0.join(name))
+    }
+
+    /// Put every staged output in place: renames first, then the outputs written through.
+    /// After a failure the outputs not yet committed are removed.
+    pub fn commit(mut self) -> Result<(), String> {
+        let _commit = COMMIT.lock().unwrap_or_else(|e| e.into_inner());
+        let slots = std::mem::take(&mut self.slots);
+        let (late, early): (Vec<Slot>, Vec<Slot>) = slots
+            .into_iter()
+            .partition(|s| matches!(s.target, Target::Through(_) | Target::Stdout));
+        early.into_iter().chain(late).try_for_each(commit_slot)
+    }
+
+    fn named(
+        &mut self,
+        flag: &str,
+        path: &Path,
+        exts: &[&str],
+        stdout: bool,
+    ) -> Result<Out, String> {
+        let shown = path.display().to_string();
+        let target = if path.as_os_str() == "-" {
+            if !stdout {
+                return Err(format!(
+                    "{flag} -: this output cannot go to standard output"
+                ));
+            }
+            Target::Stdout
+        } else {
+            classify(path).map_err(|e| format!("{flag} {shown}: {e}"))?
+        };
+        if let Target::File(..) = target {
+            check_extension(path, exts).map_err(|e| format!("{flag} {shown}: {e}"))?;
+        }
+        self.check_unique(&target, &shown)?;
+        let stage = match &target {
+            Target::File(p, _) => {
+                let (dir, name) = split(p);
+                Stage::Named(Staged::new_in(&dir, &name).map_err(|e| {
+                    format!("{flag} {shown}: cannot write in {}: {e}", dir.display())
+                })?)
+            }
+            _ => Stage::Unnamed(tempfile::tempfile().map_err(|e| format!("{flag} {shown}: {e}"))?),
+        };
+        self.slots.push(Slot {
+            shown,
+            target,
+            stage,
+        });
+        Ok(Out(self.slots.len() - 1))
+    }
+
+    fn check_unique(&self, target: &Target, shown: &str) -> Result<(), String> {
+        match self.slots.iter().find(|s| same_target(&s.target, target)) {
+            Some(s) if *target == Target::Stdout => Err(format!(
+                "only one output can be - (standard output): {} and {shown}",
+                s.shown
+            )),
+            Some(s) => Err(format!("{} and {shown} name the same file", s.shown)),
+            None => Ok(()),
+        }
+    }
+}
+
+fn same_target(a: &Target, b: &Target) -> bool {
+    match (a, b) {
+        (Target::File(p, _) | Target::Dir(p), Target::File(q, _) | Target::Dir(q)) => p == q,
+        (Target::Through(p), Target::Through(q)) => p == q,
+        (Target::Stdout, Target::Stdout) => true,
+        _ => false,
+    }
+}
+
+fn commit_slot(slot: Slot) -> Result<(), String> {
+    let err = |e: std::io::Error| format!("{}: {e}", slot.shown);
+    match (slot.target, slot.stage) {
+        (Target::File(p, mode), Stage::Named(s)) => s.persist(&p, mode),
+        (Target::Through(p), Stage::Unnamed(mut f)) => {
+            let mut dest = std::fs::OpenOptions::new()
+                .write(true)
+                .open(&p)
+                .map_err(err)?;
+            f.rewind().map_err(err)?;
+            std::io::copy(&mut f, &mut dest).map_err(err)?;
+            dest.flush().map_err(err)
+        }
+        (Target::Stdout, Stage::Unnamed(mut f)) => {
+            f.rewind().map_err(err)?;
+            let mut out = std::io::stdout().lock();
+            std::io::copy(&mut f, &mut out).map_err(err)?;
+            out.flush().map_err(err)
+        }
+        (Target::Dir(p), Stage::Dir(dir, names)) => commit_dir(&p, &dir.0, &names).map_err(err),
+        _ => unreachable!("stage made for its target"),
+    }
+}
+
+/// Rename the staging directory into place, or its files into an existing directory.
+fn commit_dir(target: &Path, dir: &Path, names: &[String]) -> std::io::Result<()> {
+    if !target.exists() {
+        if let Some(parent) = target.parent().filter(|p| !p.as_os_str().is_empty()) {
+            std::fs::create_dir_all(parent)?;
+        }
+        set_dir_mode(dir)?;
+        return std::fs::rename(dir, target);
+    }
+    for name in names {
+        std::fs::rename(dir.join(name), target.join(name))?;
+    }
     Ok(())
+}
+
+#[cfg(unix)]
+fn set_dir_mode(dir: &Path) -> std::io::Result<()> {
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(dir, std::fs::Permissions::from_mode(0o755))
+}
+
+#[cfg(not(unix))]
+fn set_dir_mode(_: &Path) -> std::io::Result<()> {
+    Ok(())
+}
+
+/// The directory and file name of a resolved file path.
+fn split(p: &Path) -> (PathBuf, String) {
+    let dir = match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    let name = p
+        .file_name()
+        .map_or("output".into(), |n| n.to_string_lossy().into_owned());
+    (dir, name)
+}
+
+/// The deepest existing directory on the way to `p`, and the first name below it.
+fn existing_ancestor(p: &Path) -> Result<(PathBuf, String), String> {
+    let mut cur = p.to_path_buf();
+    loop {
+        let (dir, name) = split(&cur);
+        match std::fs::metadata(&dir) {
+            Ok(m) if m.is_dir() => return Ok((dir, name)),
+            Ok(_) => return Err(format!("{} is not a directory", dir.display())),
+            Err(_) if dir != cur && dir.parent().is_some() => cur = dir,
+            Err(e) => return Err(format!("{}: {e}", dir.display())),
+        }
+    }
+}
+
+/// Follow symlinks (dangling ones too, up to 40) to the path that is written.
+fn resolve(path: &Path) -> Result<PathBuf, String> {
+    let mut p = path.to_path_buf();
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let link = std::fs::read_link(&p).map_err(|e| e.to_string())?;
+                p = match p.parent() {
+                    Some(dir) if link.is_relative() => dir.join(link),
+                    _ => link,
+                };
+            }
+            _ => return Ok(p),
+        }
+    }
+    Err("too many levels of symbolic links".into())
+}
+
+/// What a file output's path names, and so how it is written.
+fn classify(path: &Path) -> Result<Target, String> {
+    let p = resolve(path)?;
+    let meta = match std::fs::metadata(&p) {
+        Ok(m) => m,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            let (dir, _) = split(&p);
+            return match std::fs::metadata(&dir) {
+                Ok(m) if m.is_dir() => Ok(Target::File(p, 0o644)),
+                Ok(_) => Err(format!("{} is not a directory", dir.display())),
+                Err(e) => Err(format!("directory {}: {e}", dir.display())),
+            };
+        }
+        Err(e) => return Err(e.to_string()),
+    };
+    let ft = meta.file_type();
+    if ft.is_dir() {
+        return Err("is a directory".into());
+    }
+    if ft.is_file() {
+        // A shell's redirection seen through /dev/stdout or /proc/self/fd: write through.
+        if path.starts_with("/dev") || path.starts_with("/proc") {
+            return Ok(Target::Through(p));
+        }
+        return Ok(Target::File(p, mode_of(&meta)));
+    }
+    special(&p, &meta)
+}
+
+#[cfg(unix)]
+fn mode_of(meta: &std::fs::Metadata) -> u32 {
+    use std::os::unix::fs::PermissionsExt;
+    meta.permissions().mode() & 0o7777
+}
+
+#[cfg(not(unix))]
+fn mode_of(_: &std::fs::Metadata) -> u32 {
+    0o644
+}
+
+#[cfg(unix)]
+fn special(p: &Path, meta: &std::fs::Metadata) -> Result<Target, String> {
+    use std::os::unix::fs::FileTypeExt;
+    let ft = meta.file_type();
+    if ft.is_fifo() || ft.is_char_device() {
+        Ok(Target::Through(p.to_path_buf()))
+    } else if ft.is_block_device() {
+        Err("is a block device: csgpix writes files, FIFOs and character devices".into())
+    } else {
+        Err(
+            "is a socket or other special file: csgpix writes files, FIFOs and character devices"
+                .into(),
+        )
+    }
+}
+
+#[cfg(not(unix))]
+fn special(_: &Path, _: &std::fs::Metadata) -> Result<Target, String> {
+    Err("is not a regular file".into())
+}
+
+/// The name must end in one of `exts` (case-insensitive), so that `x.jpg` is not PNG bytes.
+fn check_extension(path: &Path, exts: &[&str]) -> Result<(), String> {
+    if exts.is_empty() {
+        return Ok(());
+    }
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    if ext.as_deref().is_some_and(|e| exts.contains(&e)) {
+        return Ok(());
+    }
+    let list: Vec<String> = exts.iter().map(|e| format!(".{e}")).collect();
+    let (last, rest) = list.split_last().expect("exts is not empty");
+    let names = match rest {
+        [] => last.clone(),
+        _ => format!("{} or {last}", rest.join(", ")),
+    };
+    Err(format!(
+        "the name must end in {names}: the extension names the format written"
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn names(dir: &Path) -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn nothing_is_written_until_the_commit_and_nothing_stays_without_it() {
+        let dir = tempfile::tempdir().unwrap();
+        let a = dir.path().join("a.png");
+        let mut outs = Outputs::new();
+        let o = outs.file("-o", &a, &["png"]).unwrap();
+        let s = outs.dir("--slices", &dir.path().join("s")).unwrap();
+        outs.write(o, |w| w.write_all(b"x")).unwrap();
+        outs.write_in(s, "z0.png", |w| w.write_all(b"y")).unwrap();
+        assert!(!a.exists());
+        drop(outs);
+        assert!(names(dir.path()).is_empty(), "{:?}", names(dir.path()));
+        assert!(pending().iter().all(|p| !p.starts_with(dir.path())));
+    }
+
+    #[test]
+    fn commit_puts_files_and_directories_in_place() {
+        let dir = tempfile::tempdir().unwrap();
+        let a = dir.path().join("a.png");
+        let mut outs = Outputs::new();
+        let o = outs.file("-o", &a, &["png"]).unwrap();
+        let s = outs.dir("--slices", &dir.path().join("s/t")).unwrap();
+        outs.write(o, |w| w.write_all(b"x")).unwrap();
+        outs.write_in(s, "z0.png", |w| w.write_all(b"y")).unwrap();
+        outs.commit().unwrap();
+        assert_eq!(names(dir.path()), ["a.png", "s"]);
+        assert_eq!(std::fs::read(&a).unwrap(), b"x");
+        assert_eq!(std::fs::read(dir.path().join("s/t/z0.png")).unwrap(), b"y");
+    }
+
+    #[test]
+    fn extensions_directories_and_missing_parents_are_refused_when_named() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut outs = Outputs::new();
+        let e = outs
+            .file("-o", &dir.path().join("x.jpg"), &["png"])
+            .unwrap_err();
+        assert!(e.contains("must end in .png"), "{e}");
+        let e = outs.file("-o", dir.path(), &[]).unwrap_err();
+        assert!(e.contains("is a directory"), "{e}");
+        let e = outs
+            .file("-o", &dir.path().join("no/x.png"), &["png"])
+            .unwrap_err();
+        assert!(e.contains("directory"), "{e}");
+        let e = outs.file("-o", Path::new("-"), &["png"]).unwrap_err();
+        assert!(e.contains("standard output"), "{e}");
+        outs.file_or_stdout("-o", Path::new("-"), &["png"]).unwrap();
+        let e = outs
+            .file_or_stdout("--preview", Path::new("-"), &["png"])
+            .unwrap_err();
+        assert!(e.contains("only one output"), "{e}");
+        let p = dir.path().join("a.png");
+        outs.file("-o", &p, &["png"]).unwrap();
+        let e = outs.file("--mesh", &p, &["png"]).unwrap_err();
+        assert!(e.contains("same file"), "{e}");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn symlinks_are_followed_and_kept() {
+        let dir = tempfile::tempdir().unwrap();
+        let real = dir.path().join("real.png");
+        let link = dir.path().join("link.png");
+        std::fs::write(&real, b"old").unwrap();
+        std::os::unix::fs::symlink("real.png", &link).unwrap();
+        write_atomic(&link, |w| w.write_all(b"new")).unwrap();
+        assert!(std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
+        assert_eq!(std::fs::read(&real).unwrap(), b"new");
+        // A dangling symlink: the file it names is created.
+        let dangling = dir.path().join("d.png");
+        std::os::unix::fs::symlink("made.png", &dangling).unwrap();
+        write_atomic(&dangling, |w| w.write_all(b"m")).unwrap();
+        assert_eq!(std::fs::read(dir.path().join("made.png")).unwrap(), b"m");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn an_existing_files_mode_is_kept() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("a.csv");
+        std::fs::write(&p, b"old").unwrap();
+        std::fs::set_permissions(&p, std::fs::Permissions::from_mode(0o600)).unwrap();
+        write_atomic(&p, |w| w.write_all(b"new")).unwrap();
+        let mode = std::fs::metadata(&p).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode, 0o600);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn character_devices_are_written_through() {
+        write_atomic(Path::new("/dev/null"), |w| w.write_all(b"discarded")).unwrap();
+        let m = std::fs::metadata("/dev/null").unwrap();
+        use std::os::unix::fs::FileTypeExt;
+        assert!(m.file_type().is_char_device());
+    }
 }

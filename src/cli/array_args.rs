@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use clap::ValueEnum;
-use csgpix::output::write_atomic;
+use csgpix::output::{Out, Outputs};
 use rtl_model::array::check_program;
 use rtl_model::probe::Recorder;
 use rtl_model::select::vectors::{derive_with_ties, Ties};
@@ -212,17 +212,35 @@ impl ArrayArgs {
         Ok((arr, cfg.stack_depth))
     }
 
-    /// Write the VCD and the SVG timing diagram, if asked for.
-    pub fn write_waves(&self, arr: &mut dyn Array) -> Result<(), String> {
+    /// Name the VCD and the SVG timing diagram among the run's outputs, if asked for.
+    pub fn wave_outputs(&self, outs: &mut Outputs) -> Result<[Option<Out>; 2], String> {
+        let vcd = self
+            .vcd
+            .as_ref()
+            .map(|p| outs.file_or_stdout("--vcd", p, &["vcd"]));
+        let svg = self
+            .wave
+            .as_ref()
+            .map(|p| outs.file_or_stdout("--wave", p, &["svg"]));
+        Ok([vcd.transpose()?, svg.transpose()?])
+    }
+
+    /// Stage the VCD and the SVG timing diagram named by [`ArrayArgs::wave_outputs`].
+    pub fn write_waves(
+        &self,
+        arr: &mut dyn Array,
+        outs: &mut Outputs,
+        [vcd, svg]: [Option<Out>; 2],
+    ) -> Result<(), String> {
         let Some(rec) = arr.take_probe() else {
             return Ok(());
         };
-        if let Some(path) = &self.vcd {
-            write_atomic(path, |w| rec.write_vcd(w))?;
+        if let Some(out) = vcd {
+            outs.write(out, |w| rec.write_vcd(w))?;
         }
-        if let Some(path) = &self.wave {
+        if let Some(out) = svg {
             let (t0, t1) = self.wave_clocks;
-            write_atomic(path, |w| rec.write_svg(w, 0, t0, t1))?;
+            outs.write(out, |w| rec.write_svg(w, 0, t0, t1))?;
         }
         Ok(())
     }

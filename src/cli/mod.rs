@@ -128,32 +128,44 @@ impl ViewArg {
     }
 }
 
-/// Write generated files into `out`, or with `check` only compare them with what is there:
-/// exit 1 when any differs (`gen-vectors`, `export-verilog`).
+/// A command's closing line: on standard output, or on standard error when an output goes
+/// to standard output (`-o -`).
+pub fn report_line(line: &str, to_stderr: bool) {
+    if to_stderr {
+        eprintln!("{line}");
+    } else {
+        println!("{line}");
+    }
+}
+
+/// Write generated files into `out`, all or none, or with `check` only compare them with
+/// what is there: exit 1 when any differs (`gen-vectors`, `export-verilog`).
 pub fn write_generated(
     files: &[(String, String)],
     out: &std::path::Path,
     check: bool,
 ) -> Result<ExitCode, String> {
-    if !check {
-        std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
-    }
-    let mut stale = 0;
-    for (name, text) in files {
-        let path = out.join(name);
-        if check {
-            if std::fs::read_to_string(&path).unwrap_or_default() != *text {
-                println!("differs: {}", path.display());
-                stale += 1;
-            }
+    if check {
+        let stale = files
+            .iter()
+            .map(|(name, text)| (out.join(name), text))
+            .filter(|(path, text)| std::fs::read_to_string(path).unwrap_or_default() != **text)
+            .inspect(|(path, _)| println!("differs: {}", path.display()))
+            .count();
+        return Ok(if stale == 0 {
+            ExitCode::SUCCESS
         } else {
-            csgpix::output::write_atomic(&path, |w| w.write_all(text.as_bytes()))?;
-            println!("wrote {}", path.display());
-        }
+            ExitCode::from(1)
+        });
     }
-    Ok(if stale == 0 {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
+    let mut outs = csgpix::output::Outputs::new();
+    let dir = outs.dir("--out", out)?;
+    for (name, text) in files {
+        outs.write_in(dir, name, |w| w.write_all(text.as_bytes()))?;
+    }
+    outs.commit()?;
+    for (name, _) in files {
+        println!("wrote {}", out.join(name).display());
+    }
+    Ok(ExitCode::SUCCESS)
 }

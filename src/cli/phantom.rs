@@ -6,7 +6,8 @@ use std::process::ExitCode;
 
 use clap::ValueEnum;
 use csgpix::dataset::phantom;
-use csgpix::nrrd::{write_nrrd, Encoding};
+use csgpix::nrrd::{nrrd_bytes, Encoding, Endian};
+use csgpix::output::Outputs;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -19,7 +20,7 @@ pub struct Args {
     /// Data encoding.
     #[arg(long, value_enum, default_value_t)]
     encoding: EncodingArg,
-    /// Output NRRD file (uint16).
+    /// Output NRRD file (uint16; `-`: standard output).
     #[arg(short = 'o', long)]
     out: PathBuf,
 }
@@ -32,6 +33,8 @@ enum EncodingArg {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
+    let mut outs = Outputs::new();
+    let out = outs.file_or_stdout("-o", &a.out, &["nrrd"])?;
     let n = a.size as usize;
     let encoding = match a.encoding {
         EncodingArg::Gzip => Encoding::Gzip,
@@ -41,7 +44,11 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         "csgpix phantom --size {n}: CT-head phantom after Figure 5.6 (skull 1000, tissue 400, \
          ventricles 100, dense sphere 1200)"
     );
-    write_nrrd(&a.out, &phantom(n), encoding, &comment)?;
-    println!("wrote {} ({n}x{n}x{n} uint16)", a.out.display());
+    let bytes = nrrd_bytes(&phantom(n), encoding, Endian::Little, &comment)?;
+    outs.write(out, |w| w.write_all(&bytes))?;
+    let to_stderr = outs.uses_stdout();
+    outs.commit()?;
+    let line = format!("wrote {} ({n}x{n}x{n} uint16)", a.out.display());
+    super::report_line(&line, to_stderr);
     Ok(ExitCode::SUCCESS)
 }

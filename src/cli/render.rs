@@ -1,12 +1,12 @@
 //! `csgpix render`: display lists or a `.csg` scene through the array, the composed scene
 //! (C, G) as an image.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
 use csgpix::compile::{clip_scene_ops, scene_ops};
-use csgpix::output::write_atomic;
+use csgpix::output::{Out, Outputs};
 use csgpix::palette::image_rgb;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::array::check_program;
@@ -38,7 +38,7 @@ pub struct Args {
     /// View direction for a `.csg` scene (the scene's bounds fill the array).
     #[arg(long, value_enum, default_value_t)]
     view: ViewArg,
-    /// Output PNG.
+    /// Output PNG (`-`: standard output).
     #[arg(short = 'o', long)]
     out: PathBuf,
     #[command(flatten)]
@@ -83,6 +83,12 @@ struct Report {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
+    let mut outs = Outputs::new();
+    let png = outs.file_or_stdout("-o", &a.out, &["png"])?;
+    let waves = a.array.wave_outputs(&mut outs)?;
+    if a.json && outs.uses_stdout() {
+        return Err("--json prints to standard output: write the outputs to files".into());
+    }
     let cfg = a.array.config()?;
     let scene = Scene::load(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)?;
     csgpix::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
@@ -123,7 +129,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         let (mut arr, levels) = a.array.build(&ops)?;
         stack_levels = levels;
         run_with_progress(arr.as_mut(), &ops)?;
-        a.array.write_waves(arr.as_mut())?;
+        a.array.write_waves(arr.as_mut(), &mut outs, waves)?;
         let st = arr.state();
         let depth = |p: &Pixel| Some(cfg.fmt.to_real(p.reg(Reg::C)));
         (
@@ -134,7 +140,9 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     };
     let image = image_rgb(&codes, a.shade.then_some(&depths[..]));
     let wall = t0.elapsed().as_secs_f64();
-    write_png(&a.out, cfg.width, cfg.height, &image)?;
+    write_png(&mut outs, png, cfg.width, cfg.height, &image)?;
+    let to_stdout = outs.uses_stdout();
+    outs.commit()?;
     let lists = &scene.lists;
     let report = Report {
         model: a.array.model.name(),
@@ -158,7 +166,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
         );
     } else {
-        println!(
+        let line = format!(
             "{}: {} objects, {} planes, {} cycles ({:.1} us at 10 MHz), {:.3} s wall",
             a.out.display(),
             report.objects,
@@ -167,6 +175,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             report.hardware_seconds * 1e6,
             wall
         );
+        super::report_line(&line, to_stdout);
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -193,13 +202,19 @@ pub fn run_with_progress(arr: &mut dyn Array, ops: &[Op]) -> Result<(), String> 
     Ok(())
 }
 
-/// The RGB of every pixel as a PNG, written whole or not at all.
-fn write_png(path: &Path, width: usize, height: usize, pixels: &[[u8; 3]]) -> Result<(), String> {
+/// Stage the RGB of every pixel as a PNG.
+fn write_png(
+    outs: &mut Outputs,
+    out: Out,
+    width: usize,
+    height: usize,
+    pixels: &[[u8; 3]],
+) -> Result<(), String> {
     let mut img = image::RgbImage::new(width as u32, height as u32);
     for (i, c) in pixels.iter().enumerate() {
         img.put_pixel((i % width) as u32, (i / width) as u32, image::Rgb(*c));
     }
-    write_atomic(path, |w| {
+    outs.write(out, |w| {
         let mut buf = std::io::Cursor::new(Vec::new());
         img.write_to(&mut buf, image::ImageFormat::Png)
             .map_err(std::io::Error::other)?;

@@ -7,13 +7,14 @@ use std::time::Instant;
 
 use csgpix::mesh;
 use csgpix::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
-use csgpix::output::write_atomic;
+use csgpix::output::Outputs;
 use csgpix::sculpt::{self, Frame, Latency, Sculptor, Step, Tool};
 use csgpix::voxelize::{memory_estimate, Slicer, Volume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::WordFormat;
 use serde::Serialize;
+use std::io::Write;
 
 use super::voxelize::{parse_res, GridArgs};
 
@@ -97,7 +98,15 @@ struct Report {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
-    mesh::Format::of_path(&a.out)?;
+    let mut outs = Outputs::new();
+    let mesh_out = outs.file("-o", &a.out, &mesh::EXTENSIONS)?;
+    let format = mesh::Format::of_path(&a.out)?;
+    let forces_out = a.forces.as_ref();
+    let forces_out = forces_out.map(|f| outs.file_or_stdout("--forces", f, &["csv"]));
+    let forces_out = forces_out.transpose()?;
+    if a.json && outs.uses_stdout() {
+        return Err("--json prints to standard output: write the outputs to files".into());
+    }
     if !(a.stiffness.is_finite() && a.stiffness >= 0.0) {
         return Err(format!(
             "--stiffness {}: must be a finite number >= 0",
@@ -124,12 +133,14 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let steps = run_path(&mut s, &path)?;
     let sculpt_seconds = t2.elapsed().as_secs_f64();
     let t3 = Instant::now();
-    if let Some(f) = &a.forces {
-        write_forces(f, &path, &steps)?;
+    if let Some(out) = forces_out {
+        outs.write(out, |w| write_forces(w, &path, &steps))?;
     }
     let comment = format!("csgpix sculpt {}", a.input.display());
     let tris = s.scene_triangles();
-    mesh::write(&a.out, &tris, &comment)?;
+    outs.write(mesh_out, |w| mesh::write_format(w, format, &tris, &comment))?;
+    let to_stderr = outs.uses_stdout();
+    outs.commit()?;
     let write_seconds = t3.elapsed().as_secs_f64();
     let secs: Vec<f64> = steps.iter().map(|s| s.seconds).collect();
     let latency = Latency::of(&secs);
@@ -159,7 +170,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         sculpt_seconds,
         write_seconds,
     };
-    print_report(&a, &r)?;
+    print_report(&a, &r, to_stderr)?;
     Ok(ExitCode::SUCCESS)
 }
 
@@ -236,8 +247,8 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
 }
 
 /// One row per step: position, contact, voxels and cells changed, ΔX, F, microseconds.
-fn write_forces(path: &Path, hips: &[DVec3], steps: &[Step]) -> Result<(), String> {
-    write_atomic(path, |w| {
+fn write_forces(w: &mut dyn Write, hips: &[DVec3], steps: &[Step]) -> std::io::Result<()> {
+    {
         writeln!(
             w,
             "step,x,y,z,contact,voxels,cells,dx,dy,dz,fx,fy,fz,f,micros"
@@ -259,10 +270,10 @@ fn write_forces(path: &Path, hips: &[DVec3], steps: &[Step]) -> Result<(), Strin
             )?;
         }
         Ok(())
-    })
+    }
 }
 
-fn print_report(a: &Args, r: &Report) -> Result<(), String> {
+fn print_report(a: &Args, r: &Report, to_stderr: bool) -> Result<(), String> {
     if a.json {
         println!(
             "{}",
@@ -270,7 +281,8 @@ fn print_report(a: &Args, r: &Report) -> Result<(), String> {
         );
         return Ok(());
     }
-    println!(
+    let say = |line: String| super::report_line(&line, to_stderr);
+    say(format!(
         "{}: {} steps ({} in contact), {} voxels {}, {} cells re-meshed; {} -> {} triangles",
         a.out.display(),
         r.steps,
@@ -280,8 +292,8 @@ fn print_report(a: &Args, r: &Report) -> Result<(), String> {
         r.cells_remeshed,
         r.triangles_before,
         r.triangles_after
-    );
-    println!(
+    ));
+    say(format!(
         "{} open edges; octree {} -> {} nodes (+{} from splits); step median {:.1} us, p99 {:.1} us, max {:.1} us",
         r.open_edges,
         r.nodes_before,
@@ -290,6 +302,6 @@ fn print_report(a: &Args, r: &Report) -> Result<(), String> {
         r.latency.median_us,
         r.latency.p99_us,
         r.latency.max_us
-    );
+    ));
     Ok(())
 }

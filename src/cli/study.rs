@@ -2,8 +2,10 @@
 //! through the array (depth-word fraction bits §2.3.1/§2.5, tessellation, slabs §4.4/§5.5,
 //! model), and write the figures as CSV and PNG charts.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
+
+use csgpix::output::{Out, Outputs};
 use std::time::Instant;
 
 use super::voxelize::SamplingArg;
@@ -104,6 +106,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         ovf_bits: a.ovf_bits,
         sampling: a.sampling.sampling(),
     };
+    let mut outs = Outputs::new();
+    let dir = outs.dir("-o", &a.out)?;
     let prep = prepare(&text, &file, sweep)?;
     check_memory(&prep, a.max_memory)?;
     let t0 = Instant::now();
@@ -115,7 +119,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         .scene
         .file_name()
         .map_or(file.clone(), |n| n.to_string_lossy().into());
-    write_outputs(&a.out, &points, &name)?;
+    write_outputs(&mut outs, dir, &points, &name)?;
+    outs.commit()?;
     report(&a, &prep, &points, &name, wall)
 }
 
@@ -149,32 +154,19 @@ fn progress(points: usize) -> ProgressBar {
     bar
 }
 
-/// Write study.csv and the charts into `dir`: everything into a temporary directory inside
-/// it first, then renamed into place, so a failure leaves no partial set of files.
-fn write_outputs(dir: &Path, points: &[Point], scene: &str) -> Result<(), String> {
-    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", dir.display());
-    let created = !dir.exists();
-    std::fs::create_dir_all(dir).map_err(|e| err(&e))?;
-    let result = (|| {
-        let tmp = tempfile::Builder::new()
-            .prefix(".study-")
-            .tempdir_in(dir)
-            .map_err(|e| err(&e))?;
-        let mut names = vec!["study.csv"];
-        std::fs::write(tmp.path().join("study.csv"), csv(points)).map_err(|e| err(&e))?;
-        for (name, chart) in charts(points, scene) {
-            chart.write_png(&tmp.path().join(name), 800, 560)?;
-            names.push(name);
-        }
-        for name in names {
-            std::fs::rename(tmp.path().join(name), dir.join(name)).map_err(|e| err(&e))?;
-        }
-        Ok(())
-    })();
-    if result.is_err() && created {
-        let _ = std::fs::remove_dir_all(dir);
+/// Stage study.csv and the charts as the files of directory output `dir`.
+fn write_outputs(
+    outs: &mut Outputs,
+    dir: Out,
+    points: &[Point],
+    scene: &str,
+) -> Result<(), String> {
+    let table = csv(points);
+    outs.write_in(dir, "study.csv", |w| w.write_all(table.as_bytes()))?;
+    for (name, chart) in charts(points, scene) {
+        chart.write_png(&outs.stage_path(dir, name)?, 800, 560)?;
     }
-    result
+    Ok(())
 }
 
 fn report(

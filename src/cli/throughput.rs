@@ -4,6 +4,8 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use csgpix::output::{Out, Outputs};
+
 use csgpix::panels::{count_cycles, estimate, panel_work, PanelScene, PanelWork, SceneEstimate};
 use csgpix::plot::{Chart, Series};
 use csgpix::project::Frame;
@@ -152,6 +154,12 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             a.screen.0, a.screen.1
         ));
     }
+    let mut outs = Outputs::new();
+    let plots = a
+        .plots
+        .as_ref()
+        .map(|d| outs.dir("--plots", d))
+        .transpose()?;
     let rows = table_2_1(&hw, a.screen, &panels);
     let scene = a
         .scene
@@ -174,8 +182,9 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         scene,
         area: a.area.map(|budget| area_report(budget, a.lut, &panels)),
     };
-    if let Some(dir) = &a.plots {
-        write_plots(dir, &hw, a.screen, report.scene.as_ref())?;
+    if let Some(dir) = plots {
+        write_plots(&mut outs, dir, &hw, a.screen, report.scene.as_ref())?;
+        outs.commit()?;
     }
     if a.json {
         let text = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
@@ -422,15 +431,16 @@ fn fmt_num(v: f64) -> String {
     }
 }
 
-/// Figure 2.12, Figure 5.11 and (with a scene) the scene's frame rates on panels.
+/// Stage Figure 2.12, Figure 5.11 and (with a scene) the scene's frame rates on panels as
+/// the files of directory output `out`.
 fn write_plots(
-    dir: &Path,
+    outs: &mut Outputs,
+    out: Out,
     hw: &Hardware,
     screen: (usize, usize),
     scene: Option<&SceneReport>,
 ) -> Result<(), String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let write = |c: Chart, name: &str| c.write_png(&dir.join(name), 800, 560);
+    let mut write = |c: Chart, name: &str| c.write_png(&outs.stage_path(out, name)?, 800, 560);
     write(figure_2_12(hw, screen), "figure-2.12.png")?;
     write(figure_5_11(hw, screen), "figure-5.11.png")?;
     if let Some(s) = scene {

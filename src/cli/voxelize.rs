@@ -1,7 +1,7 @@
 //! `csgpix voxelize`: a CSG scene, slice by slice through the array (§4.4), evaluated per
 //! slice (§4.5 Blist, §4.2 tree, §3.4.1 stack), written as a NRRD volume.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -10,7 +10,7 @@ use csgpix::blend::{BlendEval, Union};
 use csgpix::blist::{BlistEval, BlistTable};
 use csgpix::evaluate::{StackEval, TreeEval};
 use csgpix::octree::{self, StoreKind};
-use csgpix::output::write_atomic;
+use csgpix::output::{Out, Outputs};
 use csgpix::palette::rgb;
 use csgpix::sampled::{load_scene, parse_binding, scene_from_expr, Binding, Loaded};
 use csgpix::slice::SliceEval;
@@ -367,11 +367,48 @@ fn load(a: &Args) -> Result<Loaded, String> {
     }
 }
 
+/// The run's outputs, named before anything is computed.
+struct Named {
+    outs: Outputs,
+    nrrd: Out,
+    slices: Option<Out>,
+    preview: Option<Out>,
+    mesh: Option<(Out, csgpix::mesh::Format)>,
+}
+
+fn name_outputs(a: &Args) -> Result<Named, String> {
+    let mut outs = Outputs::new();
+    let nrrd = outs.file_or_stdout("-o", &a.out, &["nrrd"])?;
+    let slices = a
+        .slices
+        .as_ref()
+        .map(|d| outs.dir("--slices", d))
+        .transpose()?;
+    let preview = a.preview.as_ref();
+    let preview = preview.map(|p| outs.file_or_stdout("--preview", p, &["png"]));
+    let preview = preview.transpose()?;
+    let mesh = match &a.mesh {
+        Some(p) => {
+            let out = outs.file("--mesh", p, &csgpix::mesh::EXTENSIONS)?;
+            Some((out, csgpix::mesh::Format::of_path(p)?))
+        }
+        None => None,
+    };
+    if a.json && outs.uses_stdout() {
+        return Err("--json prints to standard output: write the outputs to files".into());
+    }
+    Ok(Named {
+        outs,
+        nrrd,
+        slices,
+        preview,
+        mesh,
+    })
+}
+
 pub fn run(a: Args) -> Result<ExitCode, String> {
     let name = input_name(&a);
-    if let Some(p) = &a.mesh {
-        csgpix::mesh::Format::of_path(p)?;
-    }
+    let mut named = name_outputs(&a)?;
     let loaded = load(&a)?;
     let grid = a
         .grid
@@ -433,19 +470,26 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         (false, true) => Values::Mixed,
         (false, false) => Values::Codes,
     };
-    if let Some(dir) = &a.slices {
-        write_slices(dir, &volume, grey)?;
+    let outs = &mut named.outs;
+    if let Some(dir) = named.slices {
+        write_slices(outs, dir, &volume, grey)?;
     }
-    if let Some(path) = &a.preview {
-        write_preview(path, &volume, grey)?;
+    if let Some(out) = named.preview {
+        write_preview(outs, out, &volume, grey)?;
     }
     let comment = format!("csgpix voxelize {name}");
-    let mesh = match &a.mesh {
-        Some(path) => Some(write_mesh(path, &grid, &volume, budget, &comment)?),
+    let mesh = match named.mesh {
+        Some(m) => Some(write_mesh(outs, m, &grid, &volume, budget, &comment)?),
         None => None,
     };
-    csgpix::nrrd::write(&a.out, &grid, &volume.voxels, &comment)?;
-    report(&a, scene, &slicer, eval.as_ref(), (work, store, mesh), wall)
+    let voxels = &volume.voxels;
+    outs.write(named.nrrd, |w| {
+        csgpix::nrrd::write_volume(w, &grid, voxels, &comment)
+    })?;
+    let to_stdout = outs.uses_stdout();
+    named.outs.commit()?;
+    let figures = (work, store, mesh);
+    report(&a, scene, &slicer, eval.as_ref(), figures, wall, to_stdout)
 }
 
 /// The `--mesh` figures of the JSON report.
@@ -459,13 +503,13 @@ struct MeshReport {
 /// The volume's surface by global Marching Cubes, in scene units (`--mesh`): closed, as the
 /// cells past the grid's far faces are meshed too (docs/octree.md).
 fn write_mesh(
-    path: &Path,
+    outs: &mut Outputs,
+    (out, format): (Out, csgpix::mesh::Format),
     grid: &Grid,
     v: &Volume,
     budget: u64,
     comment: &str,
 ) -> Result<MeshReport, String> {
-    csgpix::mesh::Format::of_path(path)?;
     let store = octree::OptimizedOctree::from_volume(v, budget)?;
     let frame = csgpix::sculpt::Frame::of_grid(grid);
     let tris: Vec<csgpix::mesh::Tri> = octree::mc::marching_cubes(&store)
@@ -473,7 +517,9 @@ fn write_mesh(
         .iter()
         .map(|t| t.map(|p| frame.to_scene(p)))
         .collect();
-    csgpix::mesh::write(path, &tris, comment)?;
+    outs.write(out, |w| {
+        csgpix::mesh::write_format(w, format, &tris, comment)
+    })?;
     Ok(MeshReport {
         mesh_triangles: tris.len(),
         mesh_open_edges: csgpix::mesh::open_edges(&tris),
@@ -548,7 +594,9 @@ fn report(
     eval: &dyn SliceEval,
     (work, store, mesh): (Work, Option<StoreReport>, Option<MeshReport>),
     wall: f64,
+    to_stderr: bool,
 ) -> Result<ExitCode, String> {
+    let say = |line: String| super::report_line(&line, to_stderr);
     let pixels = slicer.grid.slice_len();
     let table = BlistTable::compile(&scene.root);
     let r = Report {
@@ -596,7 +644,7 @@ fn report(
             serde_json::to_string_pretty(&r).map_err(|e| e.to_string())?
         );
     } else {
-        println!(
+        say(format!(
             "{}: {}x{}x{} voxels, {} filled; {} frames, {} clocks ({:.3} s at 10 MHz); {:.3} s wall",
             a.out.display(),
             r.dims[0],
@@ -607,24 +655,24 @@ fn report(
             work.cycles,
             r.hardware_seconds,
             wall
-        );
+        ));
         if work.simulated_pixel_clocks > 0 {
-            println!(
+            say(format!(
                 "simulated {} of the whole array's {} pixel-clocks ({:.1}%, --panel)",
                 work.simulated_pixel_clocks,
                 work.full_pixel_clocks,
                 100.0 * work.simulated_pixel_clocks as f64 / work.full_pixel_clocks.max(1) as f64
-            );
+            ));
         }
         if let Some(st) = &r.store {
-            println!(
+            say(format!(
                 "store {}: {} nodes ({} internal), {} bytes, built in {:.3} s",
                 st.kind.name(),
                 st.nodes,
                 st.internal_nodes,
                 st.bytes,
                 st.build_seconds
-            );
+            ));
         }
     }
     Ok(ExitCode::SUCCESS)
@@ -684,7 +732,7 @@ impl Values {
     }
 }
 
-fn write_preview(path: &Path, v: &Volume, grey: Values) -> Result<(), String> {
+fn write_preview(outs: &mut Outputs, out: Out, v: &Volume, grey: Values) -> Result<(), String> {
     let views: Vec<_> = (0..3).rev().map(|a| view(v, a)).collect();
     let scale = (256 / v.dims.iter().copied().max().unwrap_or(1)).max(1);
     let width: usize = views.iter().map(|x| x.0 * scale + 4).sum();
@@ -708,12 +756,7 @@ fn write_preview(path: &Path, v: &Volume, grey: Values) -> Result<(), String> {
         left += w * scale + 4;
         let _ = h;
     }
-    write_atomic(path, |w| {
-        let mut buf = std::io::Cursor::new(Vec::new());
-        img.write_to(&mut buf, image::ImageFormat::Png)
-            .map_err(std::io::Error::other)?;
-        w.write_all(buf.get_ref())
-    })
+    outs.write(out, |w| csgpix::output::write_png(w, &img))
 }
 
 /// Values shaded by depth as the palette view shades colours: nearest full, farthest 45%.
@@ -734,10 +777,9 @@ fn shaded(codes: &[u32], depths: &[Option<f64>], values: Values) -> Vec<[u8; 3]>
         .collect()
 }
 
-/// Every slice as `slice-KKKK.png` (palette colours, or grey values with `grey`), each
-/// written whole or not at all.
-fn write_slices(dir: &Path, v: &Volume, grey: Values) -> Result<(), String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+/// Every slice as `slice-KKKK.png` (palette colours, or grey values with `grey`), staged
+/// with the run's other outputs.
+fn write_slices(outs: &mut Outputs, dir: Out, v: &Volume, grey: Values) -> Result<(), String> {
     let [nx, ny, nz] = v.dims;
     for k in 0..nz {
         let mut img = image::RgbImage::new(nx as u32, ny as u32);
@@ -745,13 +787,8 @@ fn write_slices(dir: &Path, v: &Volume, grey: Values) -> Result<(), String> {
             let px = grey.rgb(c);
             img.put_pixel((i % nx) as u32, (i / nx) as u32, image::Rgb(px));
         }
-        let path = dir.join(format!("slice-{k:04}.png"));
-        write_atomic(&path, |w| {
-            let mut buf = std::io::Cursor::new(Vec::new());
-            img.write_to(&mut buf, image::ImageFormat::Png)
-                .map_err(std::io::Error::other)?;
-            w.write_all(buf.get_ref())
-        })?;
+        let name = format!("slice-{k:04}.png");
+        outs.write_in(dir, &name, |w| csgpix::output::write_png(w, &img))?;
     }
     Ok(())
 }

@@ -1,0 +1,296 @@
+//! Output files through the CLI: symlinks, FIFOs and devices written through, `-o -`, output
+//! names checked before the run, all outputs or none, nothing left behind by a signal
+//! (src/output.rs).
+
+mod common;
+use common::csgpix;
+
+use std::path::Path;
+use std::process::{Command, Stdio};
+
+const CUBE: &str = "vectors/thesis/cube.dl";
+const TWELVE: &str = "vectors/scenes/twelve.csg";
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// Every name in `dir`, sorted (hidden staging files included).
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+fn one_line_error(out: &std::process::Output) -> String {
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.starts_with("csgpix: "), "{err}");
+    err
+}
+
+#[cfg(unix)]
+#[test]
+fn a_symlinked_output_replaces_the_file_it_names_and_stays_a_symlink() {
+    let dir = tempfile::tempdir().unwrap();
+    let real = dir.path().join("real.png");
+    let link = dir.path().join("link.png");
+    std::fs::write(&real, b"old").unwrap();
+    std::os::unix::fs::symlink(&real, &link).unwrap();
+    let out = csgpix(&["render", CUBE, "-o", s(&link)]);
+    assert!(out.status.success(), "{out:?}");
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(std::fs::read(&real).unwrap().starts_with(b"\x89PNG"));
+    assert_eq!(names(dir.path()), ["link.png", "real.png"]);
+}
+
+#[cfg(unix)]
+#[test]
+fn a_fifo_is_written_through_not_replaced() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("out.nrrd");
+    let made = Command::new("mkfifo").arg(&fifo).status().unwrap();
+    assert!(made.success());
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read(fifo).unwrap())
+    };
+    let out = csgpix(&["voxelize", TWELVE, "--res", "16", "-o", s(&fifo)]);
+    assert!(out.status.success(), "{out:?}");
+    let bytes = reader.join().unwrap();
+    let file = dir.path().join("file.nrrd");
+    let out = csgpix(&["voxelize", TWELVE, "--res", "16", "-o", s(&file)]);
+    assert!(out.status.success(), "{out:?}");
+    assert_eq!(bytes, std::fs::read(&file).unwrap());
+    let ft = std::fs::symlink_metadata(&fifo).unwrap().file_type();
+    assert!(ft.is_fifo());
+}
+
+#[cfg(unix)]
+#[test]
+fn dev_null_stays_a_device() {
+    use std::os::unix::fs::FileTypeExt;
+    let out = csgpix(&["render", CUBE, "-o", "/dev/null"]);
+    assert!(out.status.success(), "{out:?}");
+    let m = std::fs::symlink_metadata("/dev/null").unwrap();
+    assert!(m.file_type().is_char_device());
+}
+
+#[test]
+fn dash_writes_the_same_bytes_to_standard_output_and_reports_on_standard_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("cube.png");
+    let to_file = csgpix(&["render", CUBE, "-o", s(&file)]);
+    assert!(to_file.status.success(), "{to_file:?}");
+    let to_stdout = csgpix(&["render", CUBE, "-o", "-"]);
+    assert!(to_stdout.status.success(), "{to_stdout:?}");
+    assert_eq!(to_stdout.stdout, std::fs::read(&file).unwrap());
+    assert!(String::from_utf8_lossy(&to_stdout.stderr).contains("cycles"));
+    // A NRRD volume too.
+    let nrrd = dir.path().join("v.nrrd");
+    let a = csgpix(&["voxelize", TWELVE, "--res", "12", "-o", s(&nrrd)]);
+    let b = csgpix(&["voxelize", TWELVE, "--res", "12", "-o", "-"]);
+    assert!(a.status.success() && b.status.success(), "{b:?}");
+    assert_eq!(b.stdout, std::fs::read(&nrrd).unwrap());
+}
+
+#[test]
+fn dash_is_refused_where_the_format_or_json_needs_standard_output() {
+    let e = one_line_error(&csgpix(&["render", CUBE, "--json", "-o", "-"]));
+    assert!(e.contains("--json"), "{e}");
+    let e = one_line_error(&csgpix(&[
+        "voxelize",
+        TWELVE,
+        "--res",
+        "8",
+        "--mesh",
+        "-",
+        "-o",
+        "/dev/null",
+    ]));
+    assert!(e.contains("--mesh"), "{e}");
+    let e = one_line_error(&csgpix(&[
+        "voxelize",
+        TWELVE,
+        "--res",
+        "8",
+        "--preview",
+        "-",
+        "-o",
+        "-",
+    ]));
+    assert!(e.contains("only one output"), "{e}");
+}
+
+#[test]
+fn output_extensions_are_checked_before_the_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: [(&[&str], &str); 5] = [
+        (&["render", CUBE, "-o"], "x.jpg"),
+        (&["voxelize", TWELVE, "--res", "8", "-o"], "x.raw"),
+        (&["phantom", "--size", "4", "-o"], "x.nhdr"),
+        (
+            &[
+                "voxelize",
+                TWELVE,
+                "--res",
+                "8",
+                "-o",
+                "/dev/null",
+                "--mesh",
+            ],
+            "x.off",
+        ),
+        (
+            &[
+                "voxelize",
+                TWELVE,
+                "--res",
+                "8",
+                "-o",
+                "/dev/null",
+                "--preview",
+            ],
+            "x.gif",
+        ),
+    ];
+    for (args, name) in cases {
+        let p = dir.path().join(name);
+        let mut all = args.to_vec();
+        all.push(s(&p));
+        let e = one_line_error(&csgpix(&all));
+        assert!(e.contains(name) && e.contains("must end in"), "{e}");
+    }
+    assert!(names(dir.path()).is_empty(), "{:?}", names(dir.path()));
+}
+
+#[test]
+fn a_run_that_cannot_write_its_output_leaves_no_side_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let out = csgpix(&[
+        "voxelize",
+        TWELVE,
+        "--res",
+        "16",
+        "--preview",
+        s(&d.join("p.png")),
+        "--mesh",
+        s(&d.join("m.stl")),
+        "--slices",
+        s(&d.join("slices")),
+        "-o",
+        s(&d.join("missing-dir/o.nrrd")),
+    ]);
+    let e = one_line_error(&out);
+    assert!(e.contains("missing-dir"), "{e}");
+    assert!(names(d).is_empty(), "{:?}", names(d));
+}
+
+#[test]
+fn a_run_that_fails_after_naming_its_outputs_leaves_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let bad = d.join("bad.csg");
+    std::fs::write(&bad, "cube(1);\nsphere(r = );\n").unwrap();
+    let out = csgpix(&[
+        "voxelize",
+        s(&bad),
+        "--res",
+        "16",
+        "--preview",
+        s(&d.join("p.png")),
+        "--slices",
+        s(&d.join("slices")),
+        "-o",
+        s(&d.join("o.nrrd")),
+    ]);
+    one_line_error(&out);
+    assert_eq!(names(d), ["bad.csg"]);
+}
+
+#[test]
+fn every_output_of_a_run_is_written_together() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let out = csgpix(&[
+        "voxelize",
+        TWELVE,
+        "--res",
+        "16",
+        "--preview",
+        s(&d.join("p.png")),
+        "--mesh",
+        s(&d.join("m.ply")),
+        "--slices",
+        s(&d.join("a/slices")),
+        "-o",
+        s(&d.join("o.nrrd")),
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    assert_eq!(names(d), ["a", "m.ply", "o.nrrd", "p.png"]);
+    assert_eq!(names(&d.join("a/slices")).len(), 16);
+}
+
+/// Start a long voxelization, wait until its outputs are staged, send `sig`, and check that
+/// the process died of it leaving nothing behind.
+#[cfg(unix)]
+fn interrupted(sig: i32) {
+    use std::os::unix::process::ExitStatusExt;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["voxelize", TWELVE, "--res", "256", "--model", "cycle"])
+        .args([
+            "--slices",
+            s(&d.join("slices")),
+            "--preview",
+            s(&d.join("p.png")),
+        ])
+        .args(["-o", s(&d.join("o.nrrd"))])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let t0 = std::time::Instant::now();
+    while names(d).len() < 3 {
+        assert!(t0.elapsed().as_secs() < 60, "outputs never staged");
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "finished before the signal"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    assert!(
+        names(d).iter().all(|n| n.ends_with(".csgpix-tmp")),
+        "{:?}",
+        names(d)
+    );
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    // SAFETY: kill(2) on our own child's pid.
+    assert_eq!(unsafe { libc::kill(child.id() as i32, sig) }, 0);
+    let status = child.wait().unwrap();
+    assert_eq!(status.signal(), Some(sig), "{status:?}");
+    assert!(names(d).is_empty(), "{:?}", names(d));
+}
+
+#[cfg(unix)]
+#[test]
+fn sigterm_leaves_no_staged_output() {
+    interrupted(libc::SIGTERM);
+}
+
+#[cfg(unix)]
+#[test]
+fn sigint_leaves_no_staged_output() {
+    interrupted(libc::SIGINT);
+}
