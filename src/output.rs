@@ -318,7 +318,7 @@ impl Outputs {
         stdout: bool,
     ) -> Result<Out, String> {
         let shown = path.display().to_string();
-        let target = if path.as_os_str() == "-" {
+        let target = if path.as_os_str() == "-" || names_stdout(path) {
             if !stdout {
                 return Err(format!(
                     "{flag} -: this output cannot go to standard output"
@@ -462,6 +462,13 @@ fn resolve(path: &Path) -> Result<PathBuf, String> {
         }
     }
     Err("too many levels of symbolic links".into())
+}
+
+/// The names of standard output a shell user writes: the same as `-`.
+fn names_stdout(path: &Path) -> bool {
+    ["/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"]
+        .iter()
+        .any(|p| path == Path::new(p))
 }
 
 /// What a file output's path names, and so how it is written.
