@@ -205,6 +205,11 @@ pub fn tiling(screen: (usize, usize), panel: (usize, usize)) -> (usize, usize) {
     (screen.0.div_ceil(panel.0), screen.1.div_ceil(panel.1))
 }
 
+/// A panel cut to the screen: at most the screen on each side.
+pub fn clamp_panel(panel: (usize, usize), screen: (usize, usize)) -> (usize, usize) {
+    (panel.0.min(screen.0), panel.1.min(screen.1))
+}
+
 /// The solids whose footprint touches each panel, row-major.
 pub fn bins(
     footprints: &[Option<Rect>],
@@ -378,7 +383,8 @@ pub struct PanelImage {
 /// moved to its origin, [`PanelScene::frame_ops`] and [`translate`]) on its own array of the
 /// `cycle` or `word` model; a panel whose program is empty is left as reset. Equal to the
 /// whole screen's image pixel for pixel (tests/panels_render.rs) while simulating only the
-/// panels the scene touches.
+/// panels the scene touches. A panel wider or taller than the screen is cut to it: the
+/// pixels past the screen are never shown, and would only cost memory and clocks.
 pub fn render_on_panels(
     ps: &PanelScene,
     panel: (usize, usize),
@@ -388,6 +394,7 @@ pub fn render_on_panels(
     use rtl_model::program::{CReg, Reg};
     use rtl_model::{Array, CycleArray, WordArray};
     let (w, h) = ps.screen;
+    let panel = clamp_panel(panel, ps.screen);
     let cfg = ps.panel_config(panel);
     let reset = CycleArray::new(ps.panel_config((1, 1)), set.clone())
         .state()
@@ -424,10 +431,9 @@ pub fn render_on_panels(
             Box::new(WordArray::new(cfg, set.clone()))
         };
         arr.run(&ops).map_err(|e| e.to_string())?;
-        let st = arr.state();
         for y in 0..panel.1.min(h - y0) {
             for x in 0..panel.0.min(w - x0) {
-                let p = &st.pixels[y * panel.0 + x];
+                let p = arr.pixel(x, y);
                 let i = (y0 + y) * w + x0 + x;
                 (img.colour[i], img.depth[i]) = (p.creg(CReg::G), p.reg(Reg::C));
             }

@@ -416,12 +416,11 @@ pub fn array_mask_in(
         Box::new(WordArray::new(cfg, set))
     };
     arr.run(&ops).map_err(|e| e.to_string())?;
-    let st = arr.state();
     let w = slicer.grid.dims[0];
     let mut mask = Mask::new(slicer.grid.slice_len());
     for y in 0..bx.height() {
         for x in 0..bx.width() {
-            if st.pixels[y * bx.width() + x].creg(CReg::G) != 0 {
+            if arr.pixel(x, y).creg(CReg::G) != 0 {
                 mask.set((bx.y0 + y) * w + bx.x0 + x, true);
             }
         }
@@ -789,28 +788,28 @@ pub fn voxelize(
     let source = source_for(slicer, route, &set)?;
     let mut work = counted_work(slicer, &set)?;
     let [nx, ny, nz] = slicer.grid.dims;
-    // Chunks of consecutive slabs, a few per thread, so masks can be swept forward.
+    // Chunks of consecutive slabs, a few per thread, so masks can be swept forward; each
+    // chunk's slices go straight into their place in the volume (one volume held, not two).
     let chunk = (nz / (4 * rayon::current_num_threads())).max(1);
-    let chunks: Vec<Chunk> = (0..nz.div_ceil(chunk))
-        .into_par_iter()
-        .map(|c| {
-            slab_chunk(
-                slicer,
-                &source,
-                eval,
-                tick,
-                c * chunk,
-                ((c + 1) * chunk).min(nz),
-            )
+    let mut voxels = vec![0u8; nx * ny * nz];
+    let counted: Vec<(u64, OpCounts)> = voxels
+        .par_chunks_mut(chunk * nx * ny)
+        .enumerate()
+        .map(|(c, place)| {
+            let a = c * chunk;
+            let (slices, simulated) =
+                slab_chunk(slicer, &source, eval, tick, a, (a + chunk).min(nz))?;
+            let mut ops = OpCounts::default();
+            for ((colours, counts), into) in slices.into_iter().zip(place.chunks_mut(nx * ny)) {
+                into.copy_from_slice(&colours);
+                ops += counts;
+            }
+            Ok((simulated, ops))
         })
         .collect::<Result<_, String>>()?;
-    let mut voxels = Vec::with_capacity(nx * ny * nz);
-    for (slices, simulated) in chunks {
+    for (simulated, ops) in counted {
         work.simulated_pixel_clocks += simulated;
-        for (colours, counts) in slices {
-            work.ops += counts;
-            voxels.extend_from_slice(&colours);
-        }
+        work.ops += ops;
     }
     work.filled = voxels.iter().filter(|&&v| v != 0).count();
     Ok((
@@ -822,14 +821,50 @@ pub fn voxelize(
     ))
 }
 
-/// Bytes a run needs at least: the volume, the per-pixel slab ranges of every primitive, and
-/// a slab's masks and labels per thread.
+/// An upper bound of a run's memory (docs/memory.md): the volume, the per-pixel slab ranges
+/// of every primitive, per thread a slab's masks and labels and the slices of the chunk in
+/// hand (an eighth of the volume at most, [`voxelize`]), and the process itself.
 pub fn memory_estimate(grid: &Grid, prims: usize, threads: usize) -> u64 {
     let [nx, ny, nz] = grid.dims.map(|d| d as u64);
-    let pixels = nx * ny;
+    let pixels = nx.saturating_mul(ny);
     let (prims, threads) = (prims as u64, threads as u64);
-    pixels * nz + prims * pixels * 8 + threads * pixels * (prims / 8 + 1 + 8)
+    let volume = pixels.saturating_mul(nz);
+    let chunk = (nz / (4 * threads.max(1))).max(1);
+    let per_thread = pixels.saturating_mul((prims / 8 + 1 + 8).saturating_add(chunk));
+    volume
+        .saturating_add(prims.saturating_mul(pixels).saturating_mul(8))
+        .saturating_add(threads.saturating_mul(per_thread))
+        .saturating_add(PROCESS_BYTES)
 }
+
+/// Filled voxels with an empty face neighbour (or on the grid's faces): where Marching Cubes
+/// puts triangles, so what a mesh's size follows.
+pub fn surface_voxels(v: &Volume) -> u64 {
+    let [nx, ny, nz] = v.dims;
+    let at = |i: usize, j: usize, k: usize| v.voxels[(k * ny + j) * nx + i] != 0;
+    let open = |i: usize, j: usize, k: usize| {
+        i == 0 || j == 0 || k == 0 || i + 1 == nx || j + 1 == ny || k + 1 == nz || {
+            !(at(i - 1, j, k)
+                && at(i + 1, j, k)
+                && at(i, j - 1, k)
+                && at(i, j + 1, k)
+                && at(i, j, k - 1)
+                && at(i, j, k + 1))
+        }
+    };
+    let mut n = 0;
+    for k in 0..nz {
+        for j in 0..ny {
+            for i in 0..nx {
+                n += u64::from(at(i, j, k) && open(i, j, k));
+            }
+        }
+    }
+    n
+}
+
+/// The process before any voxel: code, libraries, the scene.
+pub const PROCESS_BYTES: u64 = 16 << 20;
 
 /// Receives slice k's colour codes ([`voxelize_streaming`]); an error stops the run.
 pub type SliceSink<'a> = dyn FnMut(usize, &[u8]) -> Result<(), String> + 'a;

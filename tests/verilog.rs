@@ -568,7 +568,7 @@ fn expected_states(cfg: ArrayConfig, ops: &[Op], set: Equations) -> Expected {
     let lines = move |a: &CycleArray, k: u64, bit: Option<u32>, text: &mut String| {
         for y in 0..cfg.height {
             for x in 0..cfg.width {
-                *text += &state_hex(&cfg, &a.pixel(x, y), &a.internal(x, y), k, bit);
+                *text += &state_hex(&cfg, &a.gather(x, y), &a.internal(x, y), k, bit);
                 text.push('\n');
             }
         }

@@ -2,7 +2,7 @@
 
 use crate::probe::Recorder;
 use crate::program::{stack_effect, Op, ProgramError, Window};
-use crate::state::{ArchState, ArrayConfig};
+use crate::state::{ArchState, ArrayConfig, Pixel};
 
 /// A model of the pixel-processor array.
 pub trait Array {
@@ -20,6 +20,10 @@ pub trait Array {
 
     /// Every register of every pixel.
     fn state(&self) -> ArchState;
+
+    /// Every register of pixel (x, y): what a reader of one or two registers over the whole
+    /// array asks for, without a copy of every pixel.
+    fn pixel(&self, x: usize, y: usize) -> Pixel;
 
     /// Record the probed pixels from now on (`cycle`: every clock; `word`: every operation).
     fn attach_probe(&mut self, rec: Recorder);

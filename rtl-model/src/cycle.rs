@@ -414,7 +414,7 @@ impl CycleArray {
     }
 
     /// One pixel's registers gathered from the bit-planes.
-    pub fn pixel(&self, x: usize, y: usize) -> Pixel {
+    pub fn gather(&self, x: usize, y: usize) -> Pixel {
         let (w, lane) = (y * self.wpr + x / 64, x % 64);
         let bit = |v: &[u64], k: usize| v[k * self.nw + w] >> lane & 1;
         let word = |v: &[u64], n: usize| (0..n).fold(0u64, |acc, k| acc | bit(v, k) << k);
@@ -446,7 +446,7 @@ impl CycleArray {
             .collect();
         let t = plan.start + k as u64 + 1;
         for (i, x, y) in hits {
-            let px = self.pixel(x, y);
+            let px = self.gather(x, y);
             self.probe.as_mut().unwrap().sample(t, i, px);
         }
     }
@@ -455,7 +455,7 @@ impl CycleArray {
         let Some(rec) = &self.probe else { return };
         let t = self.seq.cycles;
         let pts: Vec<(usize, usize)> = rec.probes().to_vec();
-        let pxs: Vec<Pixel> = pts.iter().map(|&(x, y)| self.pixel(x, y)).collect();
+        let pxs: Vec<Pixel> = pts.iter().map(|&(x, y)| self.gather(x, y)).collect();
         let rec = self.probe.as_mut().unwrap();
         for (i, px) in pxs.into_iter().enumerate() {
             rec.sample(t, i, px);
@@ -467,6 +467,10 @@ impl CycleArray {
 impl Array for CycleArray {
     fn config(&self) -> &ArrayConfig {
         &self.cfg
+    }
+
+    fn pixel(&self, x: usize, y: usize) -> Pixel {
+        self.gather(x, y)
     }
 
     fn step(&mut self, op: &Op) -> Result<(), ProgramError> {
@@ -513,7 +517,7 @@ impl Array for CycleArray {
         ArchState {
             width: w,
             height: h,
-            pixels: (0..w * h).map(|i| self.pixel(i % w, i / w)).collect(),
+            pixels: (0..w * h).map(|i| self.gather(i % w, i / w)).collect(),
             sp: self.seq.sp,
         }
     }

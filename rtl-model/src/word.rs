@@ -165,6 +165,10 @@ impl Array for WordArray {
         &self.cfg
     }
 
+    fn pixel(&self, x: usize, y: usize) -> Pixel {
+        self.px[y * self.cfg.width + x]
+    }
+
     fn step(&mut self, op: &Op) -> Result<(), ProgramError> {
         self.seq.admit(op, self.ops, self.cfg.stack_depth)?;
         self.ops += 1;

@@ -66,9 +66,8 @@ pub struct ArrayArgs {
     /// Levels of the per-pixel clipping stack.
     #[arg(long, default_value_t = 8)]
     pub stack_depth: usize,
-    /// Refuse to build an array needing more memory than this many MiB.
-    #[arg(long, default_value_t = 4096)]
-    pub max_memory: u64,
+    #[command(flatten)]
+    pub mem: super::memory::MaxMemory,
     /// Write a VCD waveform of the probed pixels.
     #[arg(long, requires = "probe")]
     pub vcd: Option<PathBuf>,
@@ -191,16 +190,8 @@ impl ArrayArgs {
                 return Err("the float model is not an array: it has no registers or clock".into())
             }
         };
-        let mib = need.div_ceil(1 << 20);
-        if mib > self.max_memory {
-            return Err(format!(
-                "a {}x{} {} array needs about {mib} MiB, over the limit of {} MiB (raise --max-memory)",
-                cfg.width,
-                cfg.height,
-                self.model.name(),
-                self.max_memory
-            ));
-        }
+        let what = format!("a {}x{} {} array", cfg.width, cfg.height, self.model.name());
+        self.mem.check(need, &what, "lower --size")?;
         let set = self.equations()?;
         let mut arr: Box<dyn Array> = match self.model {
             Model::Word => Box::new(WordArray::new(cfg, set)),

@@ -4,6 +4,7 @@ mod array_args;
 mod blist;
 mod export_verilog;
 mod gen_vectors;
+mod memory;
 mod phantom;
 mod render;
 mod requirements;

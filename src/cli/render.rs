@@ -12,7 +12,6 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::array::check_program;
 use rtl_model::program::{CReg, Op, Reg};
 use rtl_model::Array;
-use rtl_model::Pixel;
 
 use serde::Serialize;
 
@@ -90,6 +89,9 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         return Err("--json prints to standard output: write the outputs to files".into());
     }
     let cfg = a.array.config()?;
+    a.array
+        .mem
+        .check(memory_estimate(&a, &cfg), "this render", "lower --size")?;
     let scene = Scene::load(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)?;
     csgpix::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
         .map_err(|(i, e)| scene.locate(i, &e))?;
@@ -130,13 +132,12 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         stack_levels = levels;
         run_with_progress(arr.as_mut(), &ops)?;
         a.array.write_waves(arr.as_mut(), &mut outs, waves)?;
-        let st = arr.state();
-        let depth = |p: &Pixel| Some(cfg.fmt.to_real(p.reg(Reg::C)));
-        (
-            st.pixels.iter().map(|p| p.creg(CReg::G)).collect(),
-            st.pixels.iter().map(depth).collect(),
-            arr.cycles(),
-        )
+        // G and C pixel by pixel: a copy of every register would be 64 bytes a pixel.
+        let (colour, depth): (Vec<u32>, Vec<Option<f64>>) = (0..cfg.pixels())
+            .map(|i| arr.pixel(i % cfg.width, i / cfg.width))
+            .map(|p| (p.creg(CReg::G), Some(cfg.fmt.to_real(p.reg(Reg::C)))))
+            .unzip();
+        (colour, depth, arr.cycles())
     };
     let image = image_rgb(&codes, a.shade.then_some(&depths[..]));
     let wall = t0.elapsed().as_secs_f64();
@@ -178,6 +179,39 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         super::report_line(&line, to_stdout);
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Bytes a render holds per pixel besides the array (docs/memory.md): G and C read out
+/// (4 + 16 bytes), the RGB image and the encoder's copy (3 + 3), the PNG (at most about 3).
+const IMAGE_BYTES: u64 = 29;
+
+/// The process before any pixel: code, libraries, the scene's planes.
+const BASE_BYTES: u64 = 16 << 20;
+
+/// An upper bound of a render's peak memory: the array (the whole screen's, or one panel's
+/// and the panels' C words), the image, the process.
+fn memory_estimate(a: &Args, cfg: &rtl_model::ArrayConfig) -> u64 {
+    let pixels = cfg.pixels() as u64;
+    let array = |c: &rtl_model::ArrayConfig| match a.array.model {
+        Model::Cycle => rtl_model::CycleArray::memory_bytes(c),
+        Model::Word => rtl_model::WordArray::memory_bytes(c),
+        Model::Float => 0,
+    };
+    let arrays = match a.panel.and_then(|p| p.0) {
+        Some([pw, ph]) if a.array.model != Model::Float => {
+            let (pw, ph) = csgpix::panels::clamp_panel((pw, ph), (cfg.width, cfg.height));
+            let panel = rtl_model::ArrayConfig {
+                width: pw,
+                height: ph,
+                ..*cfg
+            };
+            array(&panel).saturating_add(pixels * 8)
+        }
+        _ => array(cfg),
+    };
+    arrays
+        .saturating_add(pixels.saturating_mul(IMAGE_BYTES))
+        .saturating_add(BASE_BYTES)
 }
 
 /// Run a program, with a progress bar on a terminal when it is long enough to wait for.

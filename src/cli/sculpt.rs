@@ -57,9 +57,8 @@ pub struct Args {
     /// Write each step's contact, displacement and force to this CSV.
     #[arg(long)]
     forces: Option<PathBuf>,
-    /// Refuse runs needing more memory than this many MiB.
-    #[arg(long, default_value_t = 4096)]
-    max_memory: u64,
+    #[command(flatten)]
+    mem: super::memory::MaxMemory,
 }
 
 /// What a run did.
@@ -200,7 +199,7 @@ fn load(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let ext = a.input.extension().and_then(|e| e.to_str()).unwrap_or("");
     match ext.to_ascii_lowercase().as_str() {
         "csg" | "scad" => load_scene(a),
-        "nrrd" if a.res.is_none() && !a.grid.any() => load_nrrd(&a.input, a.max_memory),
+        "nrrd" if a.res.is_none() && !a.grid.any() => load_nrrd(&a.input, a.mem.bytes()),
         "nrrd" => Err("--res, --voxel, --pad and --bounds apply to .csg scenes only".into()),
         _ => Err(format!(
             "{}: the input must be a .csg scene or a .nrrd volume",
@@ -209,12 +208,12 @@ fn load(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     }
 }
 
-fn load_nrrd(p: &Path, max_memory: u64) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
+fn load_nrrd(p: &Path, budget: u64) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let bytes = std::fs::read(p).map_err(|e| format!("{}: {e}", p.display()))?;
     let at = |e: String| format!("{}: {e}", p.display());
     let (dims, voxels) = csgpix::nrrd::read(&bytes).map_err(at)?;
     let frame = sculpt::nrrd_frame(&bytes).map_err(at)?;
-    let store = OptimizedOctree::from_volume(&Volume { dims, voxels }, max_memory << 20)?;
+    let store = OptimizedOctree::from_volume(&Volume { dims, voxels }, budget)?;
     Ok((store, frame, dims))
 }
 
@@ -231,14 +230,8 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
     let threads = rayon::current_num_threads();
     let need = memory_estimate(&grid, scene.primitive_count(), threads)
         .saturating_add(octree::memory_estimate(StoreKind::Octree, grid.dims)?);
-    let budget = a.max_memory << 20;
-    if need > budget {
-        return Err(format!(
-            "this run needs about {} MiB, over --max-memory {}: lower --res or raise the limit",
-            need >> 20,
-            a.max_memory
-        ));
-    }
+    let budget = a.mem.bytes();
+    a.mem.check(need, "this run", "lower --res")?;
     let slicer = Slicer::with_sampling(scene, grid, WordFormat::THESIS, a.grid.sampling.sampling())
         .map_err(|e| format!("{name}: {e}"))?
         .with_sampled(loaded.sampled);

@@ -58,9 +58,8 @@ pub struct Args {
     /// The sampling convention of every voxelization (docs/voxelization.md).
     #[arg(long, value_enum, default_value_t)]
     sampling: SamplingArg,
-    /// Refuse sweeps needing more memory than this many MiB.
-    #[arg(long, default_value_t = 4096)]
-    max_memory: u64,
+    #[command(flatten)]
+    mem: super::memory::MaxMemory,
     /// Print every point as JSON.
     #[arg(long)]
     json: bool,
@@ -109,7 +108,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let mut outs = Outputs::new();
     let dir = outs.dir("-o", &a.out)?;
     let prep = prepare(&text, &file, sweep)?;
-    check_memory(&prep, a.max_memory)?;
+    check_memory(&prep, a.mem)?;
     let t0 = Instant::now();
     let bar = progress(prep.sweep.len());
     let points = prep.run(&|| bar.inc(1))?;
@@ -125,7 +124,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
 }
 
 /// The largest grid's voxelization, and the reference and float volumes kept beside it.
-fn check_memory(prep: &Prepared, max_mib: u64) -> Result<(), String> {
+fn check_memory(prep: &Prepared, mem: super::memory::MaxMemory) -> Result<(), String> {
     let slabs = prep.sweep.slabs.iter().copied().max().unwrap_or(1);
     let grid = prep.grid(slabs)?;
     let solids = prep
@@ -134,14 +133,8 @@ fn check_memory(prep: &Prepared, max_mib: u64) -> Result<(), String> {
         .map(|(_, s)| s.solids.len())
         .max()
         .unwrap_or(0);
-    let need = 3 * memory_estimate(&grid, solids, rayon::current_num_threads());
-    if need > max_mib << 20 {
-        return Err(format!(
-            "this sweep needs about {} MiB, over --max-memory {max_mib}: lower --res or --slabs",
-            need >> 20
-        ));
-    }
-    Ok(())
+    let need = memory_estimate(&grid, solids, rayon::current_num_threads()).saturating_mul(3);
+    mem.check(need, "this sweep", "lower --res or --slabs")
 }
 
 fn progress(points: usize) -> ProgressBar {

@@ -103,9 +103,8 @@ pub struct Args {
     /// Worker threads (default: all cores). The output does not depend on it.
     #[arg(long)]
     threads: Option<usize>,
-    /// Refuse runs needing more memory than this many MiB.
-    #[arg(long, default_value_t = 4096)]
-    max_memory: u64,
+    #[command(flatten)]
+    mem: super::memory::MaxMemory,
     /// Also build a voxel store of the volume's dual cells, slice by slice while voxelizing
     /// (seed 000 Ch. 4; docs/octree.md), and report its nodes, bytes and build time.
     #[arg(long, value_enum)]
@@ -299,6 +298,8 @@ pub fn parse_bounds(s: &str) -> Result<(DVec3, DVec3), String> {
 #[derive(Serialize)]
 struct Report {
     dims: [usize; 3],
+    /// The voxelization's memory estimate, bytes, checked before it ran (docs/memory.md).
+    memory_estimate: u64,
     /// `centre` or `slab` (--sampling).
     sampling: &'static str,
     /// Voxel size in scene units, and the grid's box.
@@ -423,13 +424,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     if let Some(st) = a.store {
         need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
     }
-    if need > a.max_memory << 20 {
-        return Err(format!(
-            "this run needs about {} MiB, over --max-memory {}: lower --res or raise the limit",
-            need >> 20,
-            a.max_memory
-        ));
-    }
+    a.mem.check(need, "this run", "lower --res")?;
     let mut slicer = Slicer::with_sampling(scene, grid, a.word, a.grid.sampling.sampling())
         .map_err(|e| format!("{name}: {e}"))?
         .with_sampled(loaded.sampled);
@@ -455,7 +450,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         .build()
         .map_err(|e| e.to_string())?;
     let tick = || bar.inc(1);
-    let budget = (a.max_memory << 20).saturating_sub(need);
+    let budget = a.mem.bytes().saturating_sub(need);
     let (volume, work, store) = match a.store {
         None => pool
             .install(|| voxelize(&slicer, route, set, eval.as_ref(), &tick))
@@ -489,16 +484,32 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let to_stdout = outs.uses_stdout();
     named.outs.commit()?;
     let figures = (work, store, mesh);
-    report(&a, scene, &slicer, eval.as_ref(), figures, wall, to_stdout)
+    report(
+        &a,
+        scene,
+        &slicer,
+        eval.as_ref(),
+        figures,
+        wall,
+        to_stdout,
+        need,
+    )
 }
 
 /// The `--mesh` figures of the JSON report.
 #[derive(Serialize, Clone, Copy, Debug)]
 struct MeshReport {
     mesh_triangles: usize,
+    /// The mesh step's memory estimate, bytes, checked before it ran (docs/memory.md).
+    mesh_memory_estimate: u64,
     /// Edges not in exactly two triangles (0: closed).
     mesh_open_edges: usize,
 }
+
+/// Bytes the mesh step holds per surface voxel beyond the octree's estimate: Marching
+/// Cubes' triangles (about 3 a surface voxel, 36 bytes each, and their copy in scene units)
+/// and the writer's welded vertices; measured 196-404 bytes (docs/memory.md).
+const MESH_BYTES_PER_SURFACE_VOXEL: u64 = 420;
 
 /// The volume's surface by global Marching Cubes, in scene units (`--mesh`): closed, as the
 /// cells past the grid's far faces are meshed too (docs/octree.md).
@@ -510,6 +521,16 @@ fn write_mesh(
     budget: u64,
     comment: &str,
 ) -> Result<MeshReport, String> {
+    let surface = csgpix::voxelize::surface_voxels(v);
+    let need = octree::memory_estimate(octree::StoreKind::Octree, v.dims)?
+        .saturating_add(surface.saturating_mul(MESH_BYTES_PER_SURFACE_VOXEL));
+    if need > budget {
+        return Err(format!(
+            "--mesh: the mesh of {surface} surface voxels needs about {} MiB more, over \
+             --max-memory: lower --res or raise the limit",
+            need.div_ceil(1 << 20)
+        ));
+    }
     let store = octree::OptimizedOctree::from_volume(v, budget)?;
     let frame = csgpix::sculpt::Frame::of_grid(grid);
     let tris: Vec<csgpix::mesh::Tri> = octree::mc::marching_cubes(&store)
@@ -522,6 +543,7 @@ fn write_mesh(
     })?;
     Ok(MeshReport {
         mesh_triangles: tris.len(),
+        mesh_memory_estimate: need,
         mesh_open_edges: csgpix::mesh::open_edges(&tris),
     })
 }
@@ -593,13 +615,13 @@ fn report(
     slicer: &Slicer,
     eval: &dyn SliceEval,
     (work, store, mesh): (Work, Option<StoreReport>, Option<MeshReport>),
-    wall: f64,
-    to_stderr: bool,
+    (wall, to_stderr, memory_estimate): (f64, bool, u64),
 ) -> Result<ExitCode, String> {
     let say = |line: String| super::report_line(&line, to_stderr);
     let pixels = slicer.grid.slice_len();
     let table = BlistTable::compile(&scene.root);
     let r = Report {
+        memory_estimate,
         dims: slicer.grid.dims,
         sampling: a.grid.sampling.name(),
         voxel: slicer.grid.voxel().to_array(),
