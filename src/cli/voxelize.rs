@@ -484,16 +484,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let to_stdout = outs.uses_stdout();
     named.outs.commit()?;
     let figures = (work, store, mesh);
-    report(
-        &a,
-        scene,
-        &slicer,
-        eval.as_ref(),
-        figures,
-        wall,
-        to_stdout,
-        need,
-    )
+    let run = (wall, to_stdout, need);
+    report(&a, scene, &slicer, eval.as_ref(), figures, run)
 }
 
 /// The `--mesh` figures of the JSON report.
