@@ -252,6 +252,31 @@ fn volume_ops(
     Ok(())
 }
 
+/// [`CompileError::field`] of an error about the whole program, not one plane.
+pub const WHOLE_PROGRAM: usize = usize::MAX;
+
+/// The most operations a clipping program may have (about 40 bytes each, and as many
+/// windows per pixel): beyond it the program's memory and time grow with the square of the
+/// literals in a product, and it is refused before it is built.
+pub const MAX_CLIP_OPS: u64 = 1 << 22;
+
+/// An upper bound of [`clip_scene_ops`]'s length: a literal's own operations are at most
+/// 2·planes + 2 (so are a volume's, with its AND), and each literal draws its product's
+/// other volumes, applies and composes.
+pub fn clip_ops_bound(lists: &[DisplayList], products: &[Vec<(usize, bool)>]) -> u64 {
+    let per = |o: usize| 2 * lists[o].planes.len() as u64 + 2;
+    products
+        .iter()
+        .map(|prod| {
+            let vol = prod
+                .iter()
+                .map(|&(o, _)| per(o))
+                .fold(0, u64::saturating_add);
+            (prod.len() as u64).saturating_mul(vol.saturating_add(3))
+        })
+        .fold(0, u64::saturating_add)
+}
+
 /// The thesis evaluation of a clipping function (§5.2.1): for every literal of every product
 /// of its sum-of-products form, draw the literal, clip it by the other literals of the product
 /// and compose it into the scene. Errors name the list they came from.
@@ -282,6 +307,22 @@ pub fn clip_scene_ops(
             },
         )
     })?;
+    let bound = clip_ops_bound(lists, &products);
+    if bound > MAX_CLIP_OPS {
+        let msg = format!(
+            "the clipping program would have up to {bound} operations, over {MAX_CLIP_OPS}: \
+             §5.2.1 draws every literal clipped by the rest of its product, so a difference \
+             of n solids costs n² (voxelize evaluates it in Blist, linear in n)"
+        );
+        return Err((
+            0,
+            CompileError {
+                plane: 0,
+                field: WHOLE_PROGRAM,
+                msg,
+            },
+        ));
+    }
     let mut ops = vec![];
     for prod in &products {
         for (k, &(obj, neg)) in prod.iter().enumerate() {

@@ -303,9 +303,12 @@ pub fn project(
     let maxdepth = fmt.to_real(fmt.maxdepth());
     let deepest = frame.deepest(scene);
     if deepest >= maxdepth {
+        // The fewest integer bits whose maxdepth (2^I) is beyond the deepest point.
+        let int = (deepest.log2().floor() as u32 + 1).max(fmt.int + 1);
         return Err(format!(
             "the scene is {deepest:.0} depth units deep on a {width}x{height} array, beyond \
-             maxdepth {maxdepth}: use a smaller --size or more integer bits in --word"
+             maxdepth {maxdepth}: use --word {}/{int}/{} or a smaller --size",
+            fmt.frac, fmt.ovf
         ));
     }
     let mut lists = display_lists(scene, &frame, max_slope(fmt, width, height));

@@ -487,7 +487,9 @@ pub fn parse_path(text: &str, file: &str) -> Result<Vec<DVec3>, String> {
         out.push(parse_row(&fields, line.len(), file, n + 1)?);
     }
     if out.is_empty() {
-        return Err(format!("{file}:1:1: no tool positions (rows x,y,z)"));
+        return Err(format!(
+            "{file}: no tool positions: give one row x,y,z per step"
+        ));
     }
     Ok(out)
 }

@@ -367,7 +367,7 @@ pub fn prepare(text: &str, file: &str, sweep: Sweep) -> Result<Prepared, String>
     }
     let (mut min, mut max) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
     for (_, s) in &scenes {
-        let g = Grid::of_scene(s, [1, 1, 1]).map_err(|e| format!("{file}:1:1: {e}"))?;
+        let g = Grid::of_scene(s, [1, 1, 1]).map_err(|e| format!("{file}: {e}"))?;
         (min, max) = (min.min(g.min), max.max(g.max));
     }
     let p = Prepared {
@@ -380,7 +380,7 @@ pub fn prepare(text: &str, file: &str, sweep: Sweep) -> Result<Prepared, String>
         for &bits in &p.sweep.bits {
             for (_, s) in &p.scenes {
                 p.slicer(s, bits, slabs)
-                    .map_err(|e| format!("{file}:1:1: {e}"))?;
+                    .map_err(|e| format!("{file}: {e}"))?;
             }
         }
     }

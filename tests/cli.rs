@@ -395,8 +395,9 @@ fn csg_scenes_refuse_clip_and_other_scenes_and_too_deep_arrays() {
     let rod = "cube(size = [1, 1, 100]);\n";
     let (code, err, written) = render_csg(rod, &["--view", "top"]);
     assert_eq!((code, written), (Some(2), false));
+    // A whole-scene error: no line and column, the fix named (2^12 > 3100).
     assert!(
-        err.contains("scene.csg:1:1") && err.contains("maxdepth"),
+        err.contains("scene.csg: the scene is") && err.contains("use --word 10/12/11"),
         "{err}"
     );
 }

@@ -276,7 +276,7 @@ fn paths_parse_with_a_header_and_report_line_and_column() {
     );
     assert_eq!(
         parse_path("x,y,z\n", "p.csv").unwrap_err(),
-        "p.csv:1:1: no tool positions (rows x,y,z)"
+        "p.csv: no tool positions: give one row x,y,z per step"
     );
 }
 

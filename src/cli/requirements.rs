@@ -101,7 +101,7 @@ struct Report {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
-    let at = |e: String| format!("{}:1:1: {e}", a.scene.display());
+    let at = |e: String| format!("{}: {e}", a.scene.display());
     let text = csgpix::scad::scene_text(&a.scene)?;
     let scene = parse_csg(&text, &a.scene.display().to_string()).map_err(|e| e.to_string())?;
     scene.require_convex(&a.scene.display().to_string(), "`requirements`")?;
@@ -228,8 +228,12 @@ fn render_program(a: &Args, scene: &CsgScene) -> Result<(usize, u64), String> {
     let Some(clip) = clip else {
         return Ok((0, 0));
     };
-    let ops = clip_scene_ops(&lists, &clip, &cfg.fmt, cfg.colour_bits)
-        .map_err(|(i, e)| format!("solid {}: {}", i + 1, e.msg))?;
+    let ops = clip_scene_ops(&lists, &clip, &cfg.fmt, cfg.colour_bits).map_err(|(i, e)| match e
+        .field
+    {
+        csgpix::compile::WHOLE_PROGRAM => e.msg,
+        _ => format!("solid {}: {}", i + 1, e.msg),
+    })?;
     let levels = check_program(&ops, 64).map_err(|e| e.to_string())?;
     Ok((
         levels,

@@ -93,7 +93,7 @@ impl Scene {
         scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);
         let Projected { lists, clip } = project(&scene, view, w, h, &cfg.fmt)
-            .map_err(|e| format!("{}:1:1: {e}", path.display()))?;
+            .map_err(|e| format!("{}: {e}", path.display()))?;
         let origins = scene
             .solids
             .iter()
@@ -113,6 +113,12 @@ impl Scene {
 
     /// A compile error on list `i`, as `file:line:col: message`.
     pub fn locate(&self, i: usize, e: &CompileError) -> String {
+        if e.field == csgpix::compile::WHOLE_PROGRAM {
+            let path = match &self.origins[i] {
+                Origin::List { path, .. } | Origin::Solid { path, .. } => path,
+            };
+            return format!("{}: {}", path.display(), e.msg);
+        }
         match &self.origins[i] {
             Origin::List { path, text } => {
                 let (line, col) = field_position(text, e.plane, e.field).unwrap_or((1, 1));
