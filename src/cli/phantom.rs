@@ -23,6 +23,15 @@ pub struct Args {
     /// Output NRRD file (uint16; `-`: standard output).
     #[arg(short = 'o', long)]
     out: PathBuf,
+    #[command(flatten)]
+    mem: super::memory::MaxMemory,
+}
+
+/// An upper bound of the phantom's memory (docs/memory.md): the samples (f32, 4 bytes each),
+/// the uint16 data (2 each), the file's bytes (2 each: header and data joined, or gzip's
+/// output), a spare 2 for the encoder, the process.
+fn memory_estimate(n: u64) -> u64 {
+    n.pow(3) * (4 + 2 + 2 + 2) + (16 << 20)
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, Default)]
@@ -36,6 +45,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let mut outs = Outputs::new();
     let out = outs.file_or_stdout("-o", &a.out, &["nrrd"])?;
     let n = a.size as usize;
+    a.mem
+        .check(memory_estimate(n as u64), "this phantom", "lower --size")?;
     let encoding = match a.encoding {
         EncodingArg::Gzip => Encoding::Gzip,
         EncodingArg::Raw => Encoding::Raw,

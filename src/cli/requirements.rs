@@ -55,6 +55,20 @@ pub struct Args {
     /// Print as JSON.
     #[arg(long)]
     json: bool,
+    #[command(flatten)]
+    mem: super::memory::MaxMemory,
+}
+
+/// Bytes per pixel of a slice the analysis holds (footprints and the slicer's per-pixel
+/// state): measured 12.6-16 on three scenes at 4096², docs/memory.md.
+const BYTES_PER_PIXEL: u64 = 20;
+
+/// An upper bound of the analysis's memory: per pixel of a slice, and the process.
+fn memory_estimate(dims: [usize; 3]) -> u64 {
+    let pixels = (dims[0] as u64).saturating_mul(dims[1] as u64);
+    pixels
+        .saturating_mul(BYTES_PER_PIXEL)
+        .saturating_add(16 << 20)
 }
 
 #[derive(Serialize)]
@@ -116,6 +130,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         None => Grid::of_scene(&scene, a.res),
     }
     .map_err(at)?;
+    a.mem
+        .check(memory_estimate(grid.dims), "this analysis", "lower --res")?;
     let slicer = Slicer::with_sampling(&scene, grid, a.word, a.sampling.sampling()).map_err(at)?;
     let report = analyse(&a, &scene, &slicer).map_err(at)?;
     if a.json {

@@ -100,9 +100,10 @@ pub struct Args {
     /// outward (outside the grid counts as empty); --json reports its triangles and open edges.
     #[arg(long)]
     mesh: Option<PathBuf>,
-    /// Worker threads (default: all cores). The output does not depend on it.
-    #[arg(long)]
-    threads: Option<usize>,
+    /// Worker threads, 1 to 256 (default: all cores). The output does not depend on it;
+    /// each thread holds a slab's masks, counted in the memory estimate.
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
+    threads: Option<u16>,
     #[command(flatten)]
     mem: super::memory::MaxMemory,
     /// Also build a voxel store of the volume's dual cells, slice by slice while voxelizing
@@ -416,7 +417,9 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         .grid(a.res, &loaded)
         .map_err(|e| format!("{name}: {e}"))?;
     let scene = &loaded.scene;
-    let threads = a.threads.unwrap_or_else(rayon::current_num_threads).max(1);
+    let threads = a
+        .threads
+        .map_or_else(rayon::current_num_threads, usize::from);
     let mut need = memory_estimate(&grid, scene.primitive_count(), threads);
     for s in &loaded.sampled {
         need = need.saturating_add(s.memory_estimate(&grid));

@@ -1,0 +1,166 @@
+//! Memory limits through the CLI: estimates checked before allocating, `--max-memory` whose
+//! default follows `ulimit -v`, limits that cannot wrap, bounded `--threads` (docs/memory.md).
+
+use std::path::Path;
+use std::process::Command;
+
+/// Run csgpix under `ulimit -v KIB` (address space), in a temporary directory beside the
+/// crate's files, and return its output.
+fn under_ulimit(kib: u64, args: &[&str]) -> std::process::Output {
+    let cmd = format!("ulimit -v {kib}; exec \"$0\" \"$@\"");
+    Command::new("sh")
+        .arg("-c")
+        .arg(cmd)
+        .arg(env!("CARGO_BIN_EXE_csgpix"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run sh")
+}
+
+fn refused(out: &std::process::Output, needle: &str) {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.contains(needle), "{err}");
+}
+
+#[test]
+fn large_runs_are_refused_under_ulimit_before_allocating() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
+    let (png, nrrd, phantom, stl) = (o("r.png"), o("v.nrrd"), o("p.nrrd"), o("s.stl"));
+    let cases: Vec<Vec<&str>> = vec![
+        vec![
+            "render",
+            "vectors/thesis/cube.dl",
+            "--size",
+            "8192x8192",
+            "-o",
+            &png,
+        ],
+        vec![
+            "render",
+            "vectors/thesis/cube.dl",
+            "--size",
+            "8192x8192",
+            "--model",
+            "word",
+            "-o",
+            &png,
+        ],
+        vec![
+            "voxelize",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            "1500",
+            "-o",
+            &nrrd,
+        ],
+        vec!["phantom", "--size", "1024", "-o", &phantom],
+        vec![
+            "requirements",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            "16384",
+        ],
+        vec![
+            "sculpt",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            "1500",
+            "--tool",
+            "sphere:1",
+            "--path",
+            "vectors/paths/carve.csv",
+            "-o",
+            &stl,
+        ],
+    ];
+    // 1 GiB of address space: the default --max-memory is then 7/8 GiB.
+    for args in cases {
+        let out = under_ulimit(1 << 20, &args);
+        refused(&out, "--max-memory");
+    }
+    assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none());
+}
+
+#[test]
+fn a_difference_of_thousands_of_solids_is_refused_by_render_and_voxelized_in_blist() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("holes.csg");
+    let mut text = String::from("difference() {\n cube(size = [10, 10, 10]);\n");
+    for i in 0..5000 {
+        let (x, y, z) = (i % 10, i / 10 % 10, i / 100 % 10);
+        text += &format!(
+            " multmatrix([[1,0,0,{x}],[0,1,0,{y}],[0,0,1,{z}],[0,0,0,1]]) cube(size = [0.5, 0.5, 0.5]);\n"
+        );
+    }
+    std::fs::write(&scene, text + "}\n").unwrap();
+    let s = scene.to_str().unwrap();
+    let png = dir.path().join("h.png");
+    let out = under_ulimit(
+        1 << 20,
+        &["render", s, "--size", "32x32", "-o", png.to_str().unwrap()],
+    );
+    refused(&out, "holes.csg: the clipping program would have up to");
+    assert!(!png.exists());
+    let out = under_ulimit(1 << 20, &["requirements", s, "--res", "16"]);
+    refused(&out, "clipping program");
+    // Blist is linear in the solids: the same scene voxelizes under the same limit.
+    let nrrd = dir.path().join("h.nrrd");
+    let out = under_ulimit(
+        1 << 20,
+        &["voxelize", s, "--res", "16", "-o", nrrd.to_str().unwrap()],
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(nrrd.exists());
+}
+
+#[test]
+fn limits_that_would_wrap_and_unbounded_threads_are_refused() {
+    let nrrd = std::env::temp_dir().join("csgpix-never-written.nrrd");
+    let n = nrrd.to_str().unwrap();
+    let base = [
+        "voxelize",
+        "vectors/scenes/twelve.csg",
+        "--res",
+        "8",
+        "-o",
+        n,
+    ];
+    for extra in [
+        &["--max-memory", "18446744073709551615"][..],
+        &["--max-memory", "8796093022209"],
+        &["--max-memory", "0"],
+        &["--threads", "0"],
+        &["--threads", "100000"],
+    ] {
+        let out = under_ulimit(1 << 22, &[&base[..], extra].concat());
+        refused(&out, extra[0]);
+    }
+    assert!(!Path::new(n).exists());
+    // The largest limit is accepted and does not wrap into a small one.
+    let out = under_ulimit(
+        1 << 22,
+        &[&base[..], &["--max-memory", "8796093022208"]].concat(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::remove_file(n).unwrap();
+}
+
+#[test]
+fn the_default_limit_follows_ulimit() {
+    let out = under_ulimit(1 << 20, &["voxelize", "--help"]);
+    let help = String::from_utf8_lossy(&out.stdout);
+    // 1 GiB less an eighth.
+    assert!(help.contains("[default: 896]"), "{help}");
+}
