@@ -137,10 +137,14 @@ impl DisplayList {
     /// Returns a syntax error, or an I/O error reported at line 0, column 0.
     pub fn read(path: &Path) -> Result<DisplayList, ParseError> {
         let file = path.display().to_string();
-        match std::fs::read_to_string(path) {
-            Ok(text) => Self::parse(&text, &file),
-            Err(err) => Err(Spot::new(0, 0, err.to_string()).into_error(&file)),
+        let bytes = match std::fs::read(path) {
+            Ok(bytes) => bytes,
+            Err(err) => return Err(Spot::new(0, 0, err.to_string()).into_error(&file)),
+        };
+        if let Some((line, col, msg)) = crate::input::bad_utf8(&bytes) {
+            return Err(Spot::new(line, col, msg).into_error(&file));
         }
+        Self::parse(&String::from_utf8_lossy(&bytes), &file)
     }
 
     /// Writes the canonical text form: two tab-separated rows per plane,

@@ -11,6 +11,7 @@ pub mod evaluate;
 pub mod extrude;
 pub mod float;
 pub mod hull;
+pub mod input;
 pub mod mesh;
 pub mod nrrd;
 pub mod octree;

@@ -95,6 +95,27 @@ pub fn read(bytes: &[u8]) -> Result<([usize; 3], Vec<u8>), String> {
 /// are refused before anything is allocated; [`parse_nrrd_limited`] takes another limit.
 pub const MAX_SAMPLES: usize = 1 << 30;
 
+/// Bytes a sample may cost a reader and its caller: the data as stored (at most 8), the
+/// `f32` sample (4), and as much again for a dataset built from it.
+pub const BYTES_PER_SAMPLE: u64 = 16;
+
+/// The samples [`parse_nrrd`] accepts now: [`MAX_SAMPLES`], or fewer after
+/// [`limit_samples_to_memory`].
+static SAMPLE_LIMIT: std::sync::atomic::AtomicUsize =
+    std::sync::atomic::AtomicUsize::new(MAX_SAMPLES);
+
+/// Refuse, from now on, volumes whose samples would cost more than `bytes`
+/// ([`BYTES_PER_SAMPLE`] each): a gzip member that inflates past a run's memory limit is
+/// refused by its header's `sizes`, before a byte is decoded.
+pub fn limit_samples_to_memory(bytes: u64) {
+    let n = (bytes / BYTES_PER_SAMPLE).min(MAX_SAMPLES as u64) as usize;
+    SAMPLE_LIMIT.store(n, std::sync::atomic::Ordering::Relaxed);
+}
+
+fn sample_limit() -> usize {
+    SAMPLE_LIMIT.load(std::sync::atomic::Ordering::Relaxed)
+}
+
 /// A 3D scalar volume: samples on the lattice `origin + directions · (i, j, k)`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Nrrd {
@@ -330,7 +351,7 @@ pub fn read_nrrd(path: &Path) -> Result<Nrrd, String> {
 /// Every error is one line, `FILE:LINE:COL: what was expected`, at the offending header field
 /// or value; problems with the samples themselves read `FILE: data: ...`.
 pub fn parse_nrrd(bytes: &[u8], file: &str, dir: Option<&Path>) -> Result<Nrrd, String> {
-    parse_nrrd_limited(bytes, file, dir, MAX_SAMPLES)
+    parse_nrrd_limited(bytes, file, dir, sample_limit())
 }
 
 /// [`parse_nrrd`] with another limit on the number of samples.
@@ -625,7 +646,11 @@ fn data_bytes(h: &Header, sizes: [usize; 3], ty: SampleType, max: usize) -> Resu
         (Some(c), Some(b)) if c <= max => Ok(b),
         _ => {
             let [x, y, z] = sizes;
-            let msg = format!("sizes {x}×{y}×{z} exceed the limit of {max} samples");
+            let why = match max < MAX_SAMPLES {
+                true => " (--max-memory)",
+                false => "",
+            };
+            let msg = format!("sizes {x}×{y}×{z} exceed the limit of {max} samples{why}");
             Err(h.err(h.need("sizes")?, 0, msg))
         }
     }
@@ -840,12 +865,10 @@ fn fetch(h: &Header, plan: &Plan, bytes: &[u8], dir: Option<&Path>) -> Result<Ve
     let got = match h.get("data file") {
         Some(f) => {
             let path = data_path(h, f, dir)?;
-            let open = |p: &Path| {
-                let file = std::fs::File::open(p)?;
-                match file.metadata()?.is_file() {
-                    true => Ok(file),
-                    false => Err(std::io::Error::other("not a regular file")),
-                }
+            // Looked at before it is opened: opening a FIFO would wait for a writer.
+            let open = |p: &Path| match std::fs::metadata(p)?.is_file() {
+                true => std::fs::File::open(p),
+                false => Err(std::io::Error::other("not a regular file")),
             };
             let file = open(&path).map_err(|e| {
                 h.err(

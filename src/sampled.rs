@@ -398,7 +398,16 @@ fn add_part(
         return Ok(tree);
     }
     let ext = b.file.extension().map(|x| x.to_ascii_lowercase());
-    let dataset = ext.as_ref().is_some_and(|x| x == "nrrd" || x == "nhdr");
+    let ext = ext.as_ref().and_then(|x| x.to_str()).unwrap_or("");
+    if !["nrrd", "nhdr", "stl", "obj"].contains(&ext) {
+        return Err(format!(
+            "--prim {}: {}: csgpix reads .csg scenes, .stl and .obj meshes and .nrrd \
+             datasets (PLY, OFF and others: convert to STL or OBJ)",
+            b.name,
+            b.file.display()
+        ));
+    }
+    let dataset = ext == "nrrd" || ext == "nhdr";
     if dataset != b.threshold.is_some() {
         return Err(format!(
             "--prim {}: {}",

@@ -135,7 +135,7 @@ pub fn scene_text(path: &std::path::Path) -> Result<String, String> {
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("scad"));
     if !scad {
-        return std::fs::read_to_string(path).map_err(|e| format!("{name}: {e}"));
+        return crate::input::read_text(path);
     }
     if !path.is_file() {
         return Err(format!("{name}: no such file"));

@@ -531,52 +531,32 @@ fn parse_row(
     Ok(DVec3::from_array(v))
 }
 
-/// The frame of a NRRD header (`space origin`, diagonal `space directions`; without them,
-/// voxel (0, 0, 0) at the origin and unit voxels).
-pub fn nrrd_frame(bytes: &[u8]) -> Result<Frame, String> {
-    let end = bytes
-        .windows(2)
-        .position(|w| w == b"\n\n")
-        .ok_or("no blank line after the NRRD header")?;
-    let head = String::from_utf8_lossy(&bytes[..end]);
-    let field = |name: &str| head.lines().find_map(|l| l.strip_prefix(name)).map(vectors);
-    let origin = match field("space origin:") {
-        Some(v) if v.len() == 1 && v[0].len() == 3 => DVec3::from_slice(&v[0]),
-        Some(_) => return Err("space origin: expected (x,y,z)".into()),
-        None => DVec3::ZERO,
-    };
-    let voxel = match field("space directions:") {
-        Some(v) if v.len() == 3 && v.iter().all(|d| d.len() == 3) => diagonal(&v)?,
-        Some(_) => return Err("space directions: expected three (x,y,z) vectors".into()),
-        None => DVec3::ONE,
-    };
-    Ok(Frame { origin, voxel })
-}
-
-/// The numbers of each `(a,b,c)` group of a header value (unparsable numbers become NaN).
-fn vectors(s: &str) -> Vec<Vec<f64>> {
-    s.split('(')
-        .skip(1)
-        .map(|g| {
-            g.split(')')
-                .next()
-                .unwrap_or("")
-                .split(',')
-                .map(|x| x.trim().parse().unwrap_or(f64::NAN))
-                .collect()
-        })
-        .collect()
-}
-
-fn diagonal(d: &[Vec<f64>]) -> Result<DVec3, String> {
-    let axis_aligned = (0..3).all(|i| (0..3).all(|j| i == j || d[i][j] == 0.0));
-    let v = DVec3::new(d[0][0], d[1][1], d[2][2]);
-    if !axis_aligned || !v.is_finite() || v.min_element() <= 0.0 {
-        return Err(
-            "space directions: only positive axis-aligned voxel steps are supported".into(),
-        );
+/// The frame of a NRRD volume read by [`crate::nrrd::read_nrrd`] (`space origin`, and
+/// `space directions` or `spacings`): the octree's cells are axis-aligned, so the steps must
+/// be positive and along the axes.
+pub fn nrrd_frame(n: &crate::nrrd::Nrrd) -> Result<Frame, String> {
+    let d = n.directions;
+    let voxel = DVec3::new(d.x_axis.x, d.y_axis.y, d.z_axis.z);
+    let off = [
+        d.x_axis.y, d.x_axis.z, d.y_axis.x, d.y_axis.z, d.z_axis.x, d.z_axis.y,
+    ];
+    if off.iter().any(|&v| v != 0.0) || !voxel.is_finite() || voxel.min_element() <= 0.0 {
+        return Err("space directions: sculpting needs positive axis-aligned voxel steps".into());
     }
-    Ok(v)
+    Ok(Frame {
+        origin: n.origin,
+        voxel,
+    })
+}
+
+/// The filled voxels of a NRRD volume: samples at or above `threshold`, or, without one,
+/// samples other than 0 (a volume `voxelize` wrote: 0 is empty, a colour code is filled).
+pub fn nrrd_voxels(n: &crate::nrrd::Nrrd, threshold: Option<f64>) -> Vec<u8> {
+    let inside = |v: f32| match threshold {
+        Some(t) => f64::from(v) >= t,
+        None => v != 0.0,
+    };
+    n.samples.iter().map(|&v| u8::from(inside(v))).collect()
 }
 
 /// Step latency figures, microseconds.

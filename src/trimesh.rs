@@ -66,10 +66,17 @@ impl TriMesh {
     /// [`TriMesh::parse`]). Errors are one line starting with the path.
     pub fn read(path: &Path) -> Result<TriMesh, String> {
         let file = path.display().to_string();
+        let ext = path.extension().and_then(|e| e.to_str());
+        let obj = match ext.map(str::to_ascii_lowercase).as_deref() {
+            Some("obj") => true,
+            Some("stl") => false,
+            _ => {
+                return Err(format!(
+                    "{file}: a mesh is read from .stl or .obj (the extension names the format)"
+                ))
+            }
+        };
         let bytes = std::fs::read(path).map_err(|e| format!("{file}: cannot read: {e}"))?;
-        let obj = path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("obj"));
         TriMesh::parse(&bytes, &file, obj)
     }
 
@@ -484,24 +491,19 @@ mod stl {
     use super::text::{finite, show, words, Word};
     use super::{TriMesh, Welder};
 
-    /// ASCII when it starts with `solid` and reads as ASCII, binary otherwise. When neither
-    /// reads, the ASCII error is reported for a text file (only printable ASCII and
-    /// whitespace) and the binary one otherwise.
+    /// ASCII when it starts with `solid` and reads as ASCII, binary otherwise. A file that
+    /// starts with `solid` and does not read as ASCII gets the ASCII error (with its line and
+    /// column, a stray byte included) unless its length is exactly a binary STL's, 84 + 50·n
+    /// for the count in its header: some binary headers start with `solid` too.
     pub fn parse(bytes: &[u8], file: &str) -> Result<TriMesh, String> {
         if bytes.trim_ascii_start().starts_with(b"solid") {
             match ascii(bytes, file) {
                 Ok(m) => return Ok(m),
-                Err(e) if !binary_length_fits(bytes) && is_text(bytes) => return Err(e),
+                Err(e) if !binary_length_fits(bytes) => return Err(e),
                 Err(_) => {}
             }
         }
         binary(bytes, file)
-    }
-
-    fn is_text(bytes: &[u8]) -> bool {
-        bytes
-            .iter()
-            .all(|b| b.is_ascii_graphic() || b.is_ascii_whitespace())
     }
 
     /// The triangle count of the header, if there is a header.

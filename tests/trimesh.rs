@@ -716,6 +716,11 @@ fn read_picks_the_format_by_extension() {
         e.starts_with(&format!("{}: cannot read", missing.display())),
         "{e}"
     );
+    // Any other extension is refused before the file is read (a PLY is not an STL).
+    let ply = dir.path().join("t.ply");
+    std::fs::write(&ply, "ply\nformat ascii 1.0\n").unwrap();
+    let e = TriMesh::read(&ply).unwrap_err();
+    assert!(e.contains(".stl or .obj"), "{e}");
 }
 
 fn err(text: &str, file: &str, obj: bool) -> String {

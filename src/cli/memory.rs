@@ -25,6 +25,12 @@ impl MaxMemory {
         self.mib << 20
     }
 
+    /// Make the file readers refuse what would not fit: NRRD volumes are refused by their
+    /// header's `sizes`, before their data (gzip or raw) is read.
+    pub fn limit_readers(&self) {
+        csgpix::nrrd::limit_samples_to_memory(self.bytes());
+    }
+
     /// Refuse `need` bytes of `what` when over the limit, saying how to lower it (`fix`).
     pub fn check(&self, need: u64, what: &str, fix: &str) -> Result<(), String> {
         if need <= self.bytes() {

@@ -115,6 +115,7 @@ struct Report {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
+    a.mem.limit_readers();
     let at = |e: String| format!("{}: {e}", a.scene.display());
     let text = csgpix::scad::scene_text(&a.scene)?;
     let scene = parse_csg(&text, &a.scene.display().to_string()).map_err(|e| e.to_string())?;

@@ -137,7 +137,7 @@ impl Scene {
 }
 
 fn read(p: &Path) -> Result<String, String> {
-    std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))
+    csgpix::input::read_text(p)
 }
 
 /// The name `--clip` uses for the `i`-th object: A … Z, then O26, O27, …

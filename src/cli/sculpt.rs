@@ -1,7 +1,7 @@
 //! `csgpix sculpt`: a spherical tool carved (or added) along a path through the optimized
 //! hash-based octree of a scene or a stored volume (seed 000 Ch. 5-6; docs/sculpting.md).
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -29,8 +29,13 @@ use super::voxelize::{parse_res, GridArgs};
     case bytes rewritten and re-meshed, and the spring force F = k·(P_s − P_c), P_s where the\n  \
     contact began (seed 000 §6; docs/sculpting.md).")]
 pub struct Args {
-    /// A `.csg` scene (voxelized as by `voxelize`) or a `.nrrd` volume `voxelize` wrote.
+    /// A `.csg` scene (voxelized as by `voxelize`) or a `.nrrd` volume: one `voxelize`
+    /// wrote, or a dataset with `--threshold`.
     input: PathBuf,
+    /// For a `.nrrd` input: a voxel is filled where its sample is at or above this value
+    /// (default: where it is not 0).
+    #[arg(long, value_parser = finite)]
+    threshold: Option<f64>,
     /// Voxels along X, Y, Z for a `.csg` scene: N or NXxNYxNZ (default 128).
     #[arg(long, value_parser = parse_res)]
     res: Option<[usize; 3]>,
@@ -97,6 +102,7 @@ struct Report {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
+    a.mem.limit_readers();
     let mut outs = Outputs::new();
     let mesh_out = outs.file("-o", &a.out, &mesh::EXTENSIONS)?;
     let format = mesh::Format::of_path(&a.out)?;
@@ -112,8 +118,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             a.stiffness
         ));
     }
-    let text =
-        std::fs::read_to_string(&a.path).map_err(|e| format!("{}: {e}", a.path.display()))?;
+    let text = csgpix::input::read_text(&a.path)?;
     let path = sculpt::parse_path(&text, &a.path.display().to_string())?;
     let t0 = Instant::now();
     let (store, frame, dims) = load(&a)?;
@@ -194,12 +199,22 @@ fn run_path(s: &mut Sculptor, path: &[DVec3]) -> Result<Vec<Step>, String> {
     Ok(steps)
 }
 
+fn finite(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        _ => Err(format!("{s:?}: expected a finite number")),
+    }
+}
+
 /// The store, its frame and the volume's dims, from a `.csg` scene or a `.nrrd` volume.
 fn load(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let ext = a.input.extension().and_then(|e| e.to_str()).unwrap_or("");
     match ext.to_ascii_lowercase().as_str() {
+        "csg" | "scad" if a.threshold.is_some() => {
+            Err("--threshold applies to .nrrd volumes only".into())
+        }
         "csg" | "scad" => load_scene(a),
-        "nrrd" if a.res.is_none() && !a.grid.any() => load_nrrd(&a.input, a.mem.bytes()),
+        "nrrd" if a.res.is_none() && !a.grid.any() => load_nrrd(a),
         "nrrd" => Err("--res, --voxel, --pad and --bounds apply to .csg scenes only".into()),
         _ => Err(format!(
             "{}: the input must be a .csg scene or a .nrrd volume",
@@ -208,12 +223,16 @@ fn load(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     }
 }
 
-fn load_nrrd(p: &Path, budget: u64) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
-    let bytes = std::fs::read(p).map_err(|e| format!("{}: {e}", p.display()))?;
-    let at = |e: String| format!("{}: {e}", p.display());
-    let (dims, voxels) = csgpix::nrrd::read(&bytes).map_err(at)?;
-    let frame = sculpt::nrrd_frame(&bytes).map_err(at)?;
-    let store = OptimizedOctree::from_volume(&Volume { dims, voxels }, budget)?;
+/// A NRRD volume through the general reader (raw or gzip, any sample type, `spacings` or
+/// `space directions`), filled where `--threshold` says.
+fn load_nrrd(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
+    let p = &a.input;
+    let n = csgpix::nrrd::read_nrrd(p)?;
+    let frame = sculpt::nrrd_frame(&n).map_err(|e| format!("{}: {e}", p.display()))?;
+    let dims = n.sizes;
+    let voxels = sculpt::nrrd_voxels(&n, a.threshold);
+    drop(n);
+    let store = OptimizedOctree::from_volume(&Volume { dims, voxels }, a.mem.bytes())?;
     Ok((store, frame, dims))
 }
 

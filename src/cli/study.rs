@@ -93,6 +93,7 @@ struct Report<'a> {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
+    a.mem.limit_readers();
     let file = a.scene.display().to_string();
     let text = csgpix::scad::scene_text(&a.scene)?;
     let sweep = Sweep {

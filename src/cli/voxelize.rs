@@ -293,7 +293,20 @@ pub fn parse_bounds(s: &str) -> Result<(DVec3, DVec3), String> {
     let [x0, y0, z0, x1, y1, z1] = v[..] else {
         return Err("expected X0,Y0,Z0,X1,Y1,Z1".into());
     };
-    Ok((DVec3::new(x0, y0, z0), DVec3::new(x1, y1, z1)))
+    let (lo, hi) = (DVec3::new(x0, y0, z0), DVec3::new(x1, y1, z1));
+    let extent = hi - lo;
+    if !(lo.is_finite() && hi.is_finite()) {
+        return Err("every bound must be a finite number".into());
+    }
+    if !extent.is_finite() {
+        return Err(format!(
+            "the extent {extent} overflows: bounds must be within ±1e307"
+        ));
+    }
+    if extent.min_element() <= 0.0 {
+        return Err("each X1, Y1, Z1 must be greater than its X0, Y0, Z0".into());
+    }
+    Ok((lo, hi))
 }
 
 #[derive(Serialize)]
@@ -409,6 +422,7 @@ fn name_outputs(a: &Args) -> Result<Named, String> {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
+    a.mem.limit_readers();
     let name = input_name(&a);
     let mut named = name_outputs(&a)?;
     let loaded = load(&a)?;
