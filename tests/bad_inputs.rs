@@ -1,0 +1,293 @@
+//! Bad inputs through the CLI: one line, the place named, exit status 2, nothing written
+//! (docs/stability.md, "Bad input").
+
+mod common;
+use common::csgpix;
+
+use std::io::Write;
+use std::path::Path;
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// The one-line message of a refused run (exit 2), without the `csgpix: ` prefix.
+fn refused(args: &[&str]) -> String {
+    let out = csgpix(args);
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    err.trim_end().trim_start_matches("csgpix: ").to_string()
+}
+
+#[test]
+fn invalid_utf8_is_located_in_every_text_input() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let put = |name: &str, bytes: &[u8]| {
+        let p = d.join(name);
+        std::fs::write(&p, bytes).unwrap();
+        p
+    };
+    let out = s(&d.join("o.nrrd")).to_string();
+    let csg = put("u.csg", b"cube(size = [1, 1, 1]);\n  sphere(r = \xff);\n");
+    let e = refused(&["voxelize", s(&csg), "--res", "8", "-o", &out]);
+    assert_eq!(
+        e,
+        format!(
+            "{}:2:14: invalid UTF-8 (byte 0xFF): text inputs are UTF-8",
+            s(&csg)
+        )
+    );
+    let dl = put("u.dl", b"# a list\n\xc3\xa9\xfe\n");
+    let e = refused(&["render", s(&dl), "-o", s(&d.join("o.png"))]);
+    assert!(
+        e.starts_with(&format!("{}:2:2: invalid UTF-8 (byte 0xFE)", s(&dl))),
+        "{e}"
+    );
+    let path = put("p.csv", b"0,0,0\n\xff,1,1\n");
+    let e = refused(&[
+        "sculpt",
+        "vectors/scenes/twelve.csg",
+        "--res",
+        "8",
+        "--tool",
+        "sphere:1",
+        "--path",
+        s(&path),
+        "-o",
+        s(&d.join("o.stl")),
+    ]);
+    assert!(
+        e.starts_with(&format!("{}:2:1: invalid UTF-8", s(&path))),
+        "{e}"
+    );
+    let obj = put("u.obj", b"v 0 0 0\nv 1 0 \xff\n");
+    let e = refused(&[
+        "voxelize",
+        "--expr",
+        "A",
+        "--prim",
+        &format!("A={}", s(&obj)),
+        "--res",
+        "8",
+        "-o",
+        &out,
+    ]);
+    assert!(e.starts_with(&format!("{}:2:7: ", s(&obj))), "{e}");
+    assert!(!Path::new(&out).exists());
+}
+
+#[test]
+fn an_ascii_stl_with_a_bad_byte_gets_the_ascii_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let stl = dir.path().join("a.stl");
+    std::fs::write(
+        &stl,
+        b"solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 \xff\n",
+    )
+    .unwrap();
+    let out = dir.path().join("o.nrrd");
+    let prim = format!("A={}", s(&stl));
+    let e = refused(&[
+        "voxelize",
+        "--expr",
+        "A",
+        "--prim",
+        &prim,
+        "--res",
+        "8",
+        "-o",
+        s(&out),
+    ]);
+    assert!(e.starts_with(&format!("{}:4:15: ", s(&stl))), "{e}");
+    assert!(!e.contains("binary"), "{e}");
+}
+
+#[test]
+fn bounds_that_overflow_or_are_not_numbers_are_refused() {
+    for (bounds, needle) in [
+        (
+            "--bounds=-1e308,-1e308,-1e308,1e308,1e308,1e308",
+            "overflows",
+        ),
+        ("--bounds=0,0,0,nan,1,1", "finite"),
+        ("--bounds=0,0,0,inf,1,1", "finite"),
+        ("--bounds=0,0,0,1,-1,1", "greater than"),
+    ] {
+        let e = refused(&[
+            "requirements",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            "8",
+            bounds,
+        ]);
+        assert!(e.contains(needle), "{bounds}: {e}");
+    }
+}
+
+#[test]
+fn unknown_mesh_extensions_are_refused_by_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let ply = dir.path().join("m.ply");
+    std::fs::write(&ply, "ply\nformat ascii 1.0\nend_header\n").unwrap();
+    let out = dir.path().join("o.nrrd");
+    let prim = format!("A={}", s(&ply));
+    let e = refused(&[
+        "voxelize",
+        "--expr",
+        "A",
+        "--prim",
+        &prim,
+        "--res",
+        "8",
+        "-o",
+        s(&out),
+    ]);
+    assert!(e.contains(".stl and .obj") && e.contains("PLY"), "{e}");
+}
+
+#[cfg(unix)]
+#[test]
+fn a_nrrd_data_file_that_is_a_fifo_is_refused_before_it_is_opened() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("data.raw");
+    assert!(std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let nrrd = dir.path().join("d.nrrd");
+    std::fs::write(
+        &nrrd,
+        "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\ndata file: data.raw\n\n",
+    )
+    .unwrap();
+    let out = dir.path().join("o.nrrd");
+    let prim = format!("A={},threshold=1", s(&nrrd));
+    // Opening the FIFO would wait for a writer forever; the run must end at once.
+    let e = refused(&[
+        "voxelize",
+        "--expr",
+        "A",
+        "--prim",
+        &prim,
+        "--res",
+        "8",
+        "-o",
+        s(&out),
+    ]);
+    assert!(e.starts_with(&format!("{}:6:12: ", s(&nrrd))), "{e}");
+    assert!(e.contains("not a regular file"), "{e}");
+}
+
+#[test]
+fn a_gzip_bomb_is_refused_by_its_sizes_before_it_is_decoded() {
+    let dir = tempfile::tempdir().unwrap();
+    let nrrd = dir.path().join("bomb.nrrd");
+    let mut f = std::fs::File::create(&nrrd).unwrap();
+    f.write_all(b"NRRD0004\ntype: uint8\ndimension: 3\nsizes: 1024 1024 256\nencoding: gzip\n\n")
+        .unwrap();
+    // 256 MiB of zeros in a quarter of a MiB.
+    let mut gz = flate2::write::GzEncoder::new(f, flate2::Compression::best());
+    let zeros = vec![0u8; 1 << 20];
+    for _ in 0..256 {
+        gz.write_all(&zeros).unwrap();
+    }
+    gz.finish().unwrap();
+    assert!(std::fs::metadata(&nrrd).unwrap().len() < 1 << 20);
+    let out = dir.path().join("o.nrrd");
+    let prim = format!("A={},threshold=1", s(&nrrd));
+    let e = refused(&[
+        "voxelize",
+        "--expr",
+        "A",
+        "--prim",
+        &prim,
+        "--res",
+        "8",
+        "--max-memory",
+        "256",
+        "-o",
+        s(&out),
+    ]);
+    assert!(e.starts_with(&format!("{}:4:", s(&nrrd))), "{e}");
+    assert!(e.contains("--max-memory") && e.contains("samples"), "{e}");
+    assert!(!out.exists());
+}
+
+#[test]
+fn sculpt_reads_the_gzip_phantom_and_honours_spacings() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let carve = "vectors/paths/carve.csv";
+    let stl = d.join("head.stl");
+    let out = csgpix(&[
+        "sculpt",
+        "vectors/scenes/phantom.nrrd",
+        "--threshold",
+        "300",
+        "--tool",
+        "sphere:1",
+        "--path",
+        carve,
+        "--json",
+        "-o",
+        s(&stl),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v["triangles_before"].as_u64().unwrap() > 1000, "{v}");
+    // The same 4³ block of filled samples at spacings 1 and 2: the mesh doubles.
+    let extent = |spacing: u32| {
+        let nrrd = d.join(format!("s{spacing}.nrrd"));
+        let mut bytes = format!(
+            "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 6 6 6\nspacings: {spacing} {spacing} {spacing}\nencoding: raw\n\n"
+        )
+        .into_bytes();
+        for k in 0..6 {
+            for j in 0..6 {
+                for i in 0..6 {
+                    let inner = [i, j, k].iter().all(|&c| (1..5).contains(&c));
+                    bytes.push(u8::from(inner));
+                }
+            }
+        }
+        std::fs::write(&nrrd, bytes).unwrap();
+        let path = d.join("far.csv");
+        std::fs::write(&path, "1000,1000,1000\n").unwrap();
+        let obj = d.join(format!("s{spacing}.obj"));
+        let out = csgpix(&[
+            "sculpt",
+            s(&nrrd),
+            "--tool",
+            "sphere:1",
+            "--path",
+            s(&path),
+            "-o",
+            s(&obj),
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = std::fs::read_to_string(&obj).unwrap();
+        let xs: Vec<f64> = text
+            .lines()
+            .filter_map(|l| l.strip_prefix("v "))
+            .map(|l| l.split_whitespace().next().unwrap().parse().unwrap())
+            .collect();
+        let (lo, hi) = xs
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+        hi - lo
+    };
+    let (one, two) = (extent(1), extent(2));
+    assert!(one > 2.0, "{one}");
+    assert!((two - 2.0 * one).abs() < 1e-9, "{one} {two}");
+}
