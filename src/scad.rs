@@ -183,7 +183,9 @@ pub struct ScadError {
 
 impl fmt::Display for ScadError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}:{}: {}", self.file, self.line, self.col, self.msg)
+        // One line always: a string literal quoted in the message may hold line breaks.
+        let msg = self.msg.replace('\r', "\\r").replace('\n', "\\n");
+        write!(f, "{}:{}:{}: {msg}", self.file, self.line, self.col)
     }
 }
 

@@ -1,0 +1,9 @@
+//! OBJ meshes.
+#![no_main]
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|bytes: &[u8]| {
+    if let Err(e) = csgpix::trimesh::TriMesh::parse(bytes, "f.obj", true) {
+        assert!(!e.contains('\n'), "two lines: {e}");
+    }
+});

@@ -1,0 +1,56 @@
+//! Inputs the fuzzers found (fuzz/regressions/TARGET/*), each through the same checks as its
+//! fuzz target (fuzz/fuzz_targets): the parser returns, and an error is one line.
+
+use std::path::Path;
+
+/// The parser's error for `bytes` as fuzz target `target` runs it, if any.
+fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
+    match target {
+        "csg" => {
+            let text = csgpix::input::text(bytes.to_vec(), "f.csg").ok()?;
+            csgpix::scad::parse_csg(&text, "f.csg")
+                .err()
+                .map(|e| e.to_string())
+        }
+        "display_list" => match csgpix::input::text(bytes.to_vec(), "f.dl") {
+            Ok(text) => csgpix::display_list::DisplayList::parse(&text, "f.dl")
+                .err()
+                .map(|e| e.to_string()),
+            Err(e) => Some(e),
+        },
+        "nrrd" => {
+            let dir = Path::new("/nonexistent-csgpix-fuzz");
+            csgpix::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), 1 << 20).err()
+        }
+        "stl" => csgpix::trimesh::TriMesh::parse(bytes, "f.stl", false).err(),
+        "obj" => csgpix::trimesh::TriMesh::parse(bytes, "f.obj", true).err(),
+        other => panic!("no checks for fuzz target {other}"),
+    }
+}
+
+#[test]
+fn every_input_the_fuzzers_found_gets_a_one_line_answer() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions");
+    let mut seen = 0;
+    for target in std::fs::read_dir(&root).unwrap() {
+        let target = target.unwrap().path();
+        let name = target.file_name().unwrap().to_string_lossy().into_owned();
+        for input in std::fs::read_dir(&target).unwrap() {
+            let input = input.unwrap().path();
+            let bytes = std::fs::read(&input).unwrap();
+            if let Some(e) = error_of(&name, &bytes) {
+                assert!(!e.contains('\n'), "{}: two lines: {e}", input.display());
+            }
+            seen += 1;
+        }
+    }
+    assert!(seen > 0, "no regression inputs under {}", root.display());
+}
+
+#[test]
+fn a_file_name_with_line_breaks_is_quoted_on_one_line() {
+    let e = csgpix::scad::parse_csg("import(file = \"a\nb.dxf\");\n", "t.csg").unwrap_err();
+    let e = e.to_string();
+    assert!(!e.contains('\n'), "{e}");
+    assert!(e.contains("a\\nb.dxf"), "{e}");
+}
