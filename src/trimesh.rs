@@ -493,13 +493,15 @@ mod stl {
 
     /// ASCII when it starts with `solid` and reads as ASCII, binary otherwise. A file that
     /// starts with `solid` and does not read as ASCII gets the ASCII error (with its line and
-    /// column, a stray byte included) unless its length is exactly a binary STL's, 84 + 50·n
-    /// for the count in its header: some binary headers start with `solid` too.
+    /// column, a stray byte included) unless it looks binary: its length is exactly a binary
+    /// STL's, 84 + 50·n for the count in its header, or it holds a NUL byte, which text never
+    /// does and a binary STL's count and attribute words nearly always do (some binary headers
+    /// start with `solid` too).
     pub fn parse(bytes: &[u8], file: &str) -> Result<TriMesh, String> {
         if bytes.trim_ascii_start().starts_with(b"solid") {
             match ascii(bytes, file) {
                 Ok(m) => return Ok(m),
-                Err(e) if !binary_length_fits(bytes) => return Err(e),
+                Err(e) if !binary_length_fits(bytes) && !bytes.contains(&0) => return Err(e),
                 Err(_) => {}
             }
         }
