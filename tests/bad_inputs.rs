@@ -20,6 +20,12 @@ fn refused(args: &[&str]) -> String {
     err.trim_end().trim_start_matches("csgpix: ").to_string()
 }
 
+/// The refusal of `voxelize --expr A --prim A=PRIM --res 8 EXTRA… -o OUT`.
+fn refused_prim(prim: &str, out: &Path, extra: &[&str]) -> String {
+    let head = ["voxelize", "--expr", "A", "--prim", prim, "--res", "8"];
+    refused(&[&head[..], extra, &["-o", s(out)]].concat())
+}
+
 #[test]
 fn invalid_utf8_is_located_in_every_text_input() {
     let dir = tempfile::tempdir().unwrap();
@@ -63,17 +69,7 @@ fn invalid_utf8_is_located_in_every_text_input() {
         "{e}"
     );
     let obj = put("u.obj", b"v 0 0 0\nv 1 0 \xff\n");
-    let e = refused(&[
-        "voxelize",
-        "--expr",
-        "A",
-        "--prim",
-        &format!("A={}", s(&obj)),
-        "--res",
-        "8",
-        "-o",
-        &out,
-    ]);
+    let e = refused_prim(&format!("A={}", s(&obj)), Path::new(&out), &[]);
     assert!(e.starts_with(&format!("{}:2:7: ", s(&obj))), "{e}");
     assert!(!Path::new(&out).exists());
 }
@@ -89,17 +85,7 @@ fn an_ascii_stl_with_a_bad_byte_gets_the_ascii_error() {
     .unwrap();
     let out = dir.path().join("o.nrrd");
     let prim = format!("A={}", s(&stl));
-    let e = refused(&[
-        "voxelize",
-        "--expr",
-        "A",
-        "--prim",
-        &prim,
-        "--res",
-        "8",
-        "-o",
-        s(&out),
-    ]);
+    let e = refused_prim(&prim, &out, &[]);
     assert!(e.starts_with(&format!("{}:4:15: ", s(&stl))), "{e}");
     assert!(!e.contains("binary"), "{e}");
 }
@@ -133,17 +119,7 @@ fn unknown_mesh_extensions_are_refused_by_name() {
     std::fs::write(&ply, "ply\nformat ascii 1.0\nend_header\n").unwrap();
     let out = dir.path().join("o.nrrd");
     let prim = format!("A={}", s(&ply));
-    let e = refused(&[
-        "voxelize",
-        "--expr",
-        "A",
-        "--prim",
-        &prim,
-        "--res",
-        "8",
-        "-o",
-        s(&out),
-    ]);
+    let e = refused_prim(&prim, &out, &[]);
     assert!(e.contains(".stl and .obj") && e.contains("PLY"), "{e}");
 }
 
@@ -166,17 +142,7 @@ fn a_nrrd_data_file_that_is_a_fifo_is_refused_before_it_is_opened() {
     let out = dir.path().join("o.nrrd");
     let prim = format!("A={},threshold=1", s(&nrrd));
     // Opening the FIFO would wait for a writer forever; the run must end at once.
-    let e = refused(&[
-        "voxelize",
-        "--expr",
-        "A",
-        "--prim",
-        &prim,
-        "--res",
-        "8",
-        "-o",
-        s(&out),
-    ]);
+    let e = refused_prim(&prim, &out, &[]);
     assert!(e.starts_with(&format!("{}:6:12: ", s(&nrrd))), "{e}");
     assert!(e.contains("not a regular file"), "{e}");
 }
@@ -198,19 +164,7 @@ fn a_gzip_bomb_is_refused_by_its_sizes_before_it_is_decoded() {
     assert!(std::fs::metadata(&nrrd).unwrap().len() < 1 << 20);
     let out = dir.path().join("o.nrrd");
     let prim = format!("A={},threshold=1", s(&nrrd));
-    let e = refused(&[
-        "voxelize",
-        "--expr",
-        "A",
-        "--prim",
-        &prim,
-        "--res",
-        "8",
-        "--max-memory",
-        "256",
-        "-o",
-        s(&out),
-    ]);
+    let e = refused_prim(&prim, &out, &["--max-memory", "256"]);
     assert!(e.starts_with(&format!("{}:4:", s(&nrrd))), "{e}");
     assert!(e.contains("--max-memory") && e.contains("samples"), "{e}");
     assert!(!out.exists());
