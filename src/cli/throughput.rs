@@ -76,6 +76,8 @@ pub struct Args {
     /// Print every number as JSON.
     #[arg(long)]
     json: bool,
+    #[command(flatten)]
+    mem: super::memory::MaxMemory,
 }
 
 /// A positive number, or a fraction A/B.
@@ -292,7 +294,7 @@ fn scene_report(
         .map_err(|e| format!("{}: {e}", path.display()))?;
     let set = Equations::Derived.set();
     let counted = count_cycles(&set);
-    let simulated = |cfg: &ArrayConfig, ops: &[Op]| simulate(cfg, &set, ops);
+    let simulated = |cfg: &ArrayConfig, ops: &[Op]| simulate(cfg, &set, ops, a.mem);
     let count: &csgpix::panels::Counter = if a.simulate { &simulated } else { &counted };
     let all = vec![true; ps.lists.len()];
     let one = counted(&ps.panel_config(a.screen), &ps.frame_ops(&all)?)?;
@@ -323,18 +325,16 @@ fn scene_report(
     })
 }
 
-/// The largest cycle-model array `--simulate` builds, in MiB.
-const SIMULATE_MIB: u64 = 4096;
-
-/// Run a program on a cycle-model array of configuration `cfg` and read its clock counter.
-fn simulate(cfg: &ArrayConfig, set: &rtl_model::EquationSet, ops: &[Op]) -> Result<u64, String> {
-    let mib = CycleArray::memory_bytes(cfg).div_ceil(1 << 20);
-    if mib > SIMULATE_MIB {
-        return Err(format!(
-            "--simulate: a {}x{} panel needs about {mib} MiB, over {SIMULATE_MIB} MiB (use smaller panels)",
-            cfg.width, cfg.height
-        ));
-    }
+/// Run a program on a cycle-model array of configuration `cfg` and read its clock counter,
+/// the array's memory checked against `--max-memory` first.
+fn simulate(
+    cfg: &ArrayConfig,
+    set: &rtl_model::EquationSet,
+    ops: &[Op],
+    mem: super::memory::MaxMemory,
+) -> Result<u64, String> {
+    let what = format!("--simulate: a {}x{} panel", cfg.width, cfg.height);
+    mem.check(CycleArray::memory_bytes(cfg), &what, "use smaller panels")?;
     let mut arr = CycleArray::new(*cfg, set.clone());
     arr.run(ops).map_err(|e| e.to_string())?;
     Ok(arr.cycles())
