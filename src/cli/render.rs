@@ -188,8 +188,8 @@ const IMAGE_BYTES: u64 = 29;
 /// The process before any pixel: code, libraries, the scene's planes.
 const BASE_BYTES: u64 = 16 << 20;
 
-/// An upper bound of a render's peak memory: the array (the whole screen's, or one panel's
-/// and the panels' C words), the image, the process.
+/// An upper bound of a render's peak memory: the array (the whole screen's, or one panel's,
+/// the panels' C words and their lists of solids), the image, the process.
 fn memory_estimate(a: &Args, cfg: &rtl_model::ArrayConfig) -> u64 {
     let pixels = cfg.pixels() as u64;
     let array = |c: &rtl_model::ArrayConfig| match a.array.model {
@@ -205,7 +205,12 @@ fn memory_estimate(a: &Args, cfg: &rtl_model::ArrayConfig) -> u64 {
                 height: ph,
                 ..*cfg
             };
-            array(&panel).saturating_add(pixels * 8)
+            // Per panel its list of solids (a vector and an index at least, 32 bytes).
+            let (cols, rows) = csgpix::panels::tiling((cfg.width, cfg.height), (pw, ph));
+            let lists = (cols as u64 * rows as u64).saturating_mul(32);
+            array(&panel)
+                .saturating_add(pixels * 8)
+                .saturating_add(lists)
         }
         _ => array(cfg),
     };
