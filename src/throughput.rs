@@ -199,8 +199,8 @@ pub struct PixelCost {
 
 /// The pixel processor of `export-verilog` (derived SGENE, 8-level stack, thesis word).
 pub const PIXEL_COST: PixelCost = PixelCost {
-    lut4: 227,
-    lut6: 112,
+    lut4: 179,
+    lut6: 107,
     flip_flops: 172,
 };
 

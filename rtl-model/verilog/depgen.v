@@ -8,7 +8,7 @@
 // after the value, the shift), and adds 0 until d's bit 0 has arrived (`en`). Carries are
 // cleared with bit 0 of each plane. Node i of level j (i < min(2^(j+1), N)) reads node
 // i mod 2^j of level j-1.
-module depgen_tree #(parameter N = 16, LEVELS = 4) (
+module depgen #(parameter N = 16, LEVELS = 4) (
     input wire clk, rst,
     input wire first,
     input wire root,
@@ -20,6 +20,11 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
     // (df[j] also marks bit 0 of a plane at the input of level j).
     reg r_v;
     reg [DL-1:0] dd, df;
+    // Shifted in at the bottom; the top bit falls off (and is not read).
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [DL:0] dd_next = {dd, d};
+    wire [DL:0] df_next = {df, first};
+    /* verilator lint_on UNUSEDSIGNAL */
     // val[j*N + i]: node i at the input of level j (level 0: the root, on every lane).
     wire [(LEVELS+1)*N-1:0] val;
     assign val[N-1:0] = {N{r_v}};
@@ -30,8 +35,8 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
             df <= {DL{1'b0}};
         end else begin
             r_v <= root;
-            dd <= {dd, d};
-            df <= {df, first};
+            dd <= dd_next[DL-1:0];
+            df <= df_next[DL-1:0];
         end
     end
     genvar j, i;
@@ -39,7 +44,11 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
         for (j = 0; j < LEVELS; j = j + 1) begin : lv
             localparam NODES = (2 << j) < N ? (2 << j) : N;
             wire fin = df[j];
-            reg [NODES-1:0] v, cy;
+            reg [NODES-1:0] v;
+            // Node 0 is never an adder (bit j of 0 is 0), so cy[0] is never read.
+            /* verilator lint_off UNUSEDSIGNAL */
+            reg [NODES-1:0] cy;
+            /* verilator lint_on UNUSEDSIGNAL */
             reg en;
             // d's bit 0 is here, or it came earlier in this plane.
             wire den = df[2*j] | en & ~fin;
@@ -47,7 +56,7 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
             wire [NODES-1:0] vn, cn;
             for (i = 0; i < NODES; i = i + 1) begin : node
                 wire vi = val[j*N + i % (1 << j)];
-                if (i >> j & 1) begin : adder
+                if (((i >> j) % 2) == 1) begin : adder
                     wire cin = ~fin & cy[i];
                     assign vn[i] = vi ^ add ^ cin;
                     assign cn[i] = vi & add | cin & (vi ^ add);

@@ -27,7 +27,9 @@ module pixel #(parameter F = 10, I = 10, O = 11, CB = 8, SD = 8) (
     input wire dec_push,
     input wire stk_en,
     input wire [1:0] stk_op,
+    /* verilator lint_off UNUSEDSIGNAL */
     input wire [5:0] sp,
+    /* verilator lint_on UNUSEDSIGNAL */
     input wire rst,
     input wire col_bit, row_bit,
     output wire [CB-1:0] image,
@@ -48,10 +50,13 @@ module pixel #(parameter F = 10, I = 10, O = 11, CB = 8, SD = 8) (
     wire [3:0] cur = {rC[0], rB[0], rF[0], rA[0]};
     wire src = cur[tr_src];
     wire one = ~is_sign;  // the Put-1 word 011...1
-    wire [3:0] hit = tr_en ? 4'b0001 << tr_dst : 4'b0000;
-    wire nF = hit[1] ? put_src & src | keep & rF[0] | put1 & one : rF[0];
-    wire nB = hit[2] ? put_src & src | keep & rB[0] | put1 & one : rB[0];
-    wire nC = hit[3] ? put_src & src | keep & rC[0] | put1 & one : rC[0];
+    // A is never a transfer's destination: F, B, C are (tr_dst 1, 2, 3).
+    wire hit_F = tr_en & tr_dst == 2'd1;
+    wire hit_B = tr_en & tr_dst == 2'd2;
+    wire hit_C = tr_en & tr_dst == 2'd3;
+    wire nF = hit_F ? put_src & src | keep & rF[0] | put1 & one : rF[0];
+    wire nB = hit_B ? put_src & src | keep & rB[0] | put1 & one : rB[0];
+    wire nC = hit_C ? put_src & src | keep & rC[0] | put1 & one : rC[0];
     wire csrc = tr_cpair == 2'd1 ? rD[0] : rE[0];
     wire cen = tr_en & col_en;
     wire nE = cen && tr_cpair == 2'd1 ? put_src & csrc | keep & rE[0] | put0 & int_bit : rE[0];
@@ -82,9 +87,12 @@ module pixel #(parameter F = 10, I = 10, O = 11, CB = 8, SD = 8) (
         front_S1, front_S2};
     wire [1:0] code = pairs[2 * dec_pos +: 2];
 
-    // clipping stack: one bit per level, the stack pointer sp is the controller's.
-    wire top = stack[sp - 6'd1];
-    wire under = stack[sp - 6'd2];
+    // clipping stack: one bit per level, the stack pointer sp is the controller's; si is
+    // sp as wide as an index into the stack (programs never leave 0..SD).
+    localparam SW = SD > 1 ? $clog2(SD) : 1;
+    wire [SW-1:0] si = sp[SW-1:0];
+    wire top = stack[si - 1'b1];
+    wire under = stack[si - 2'd2];
 
     always @(posedge clk) begin
         if (rst) begin
@@ -112,12 +120,12 @@ module pixel #(parameter F = 10, I = 10, O = 11, CB = 8, SD = 8) (
             end
             if (st_en) carry <= col_bit & row_bit | cin & (col_bit ^ row_bit);
             if (dec_latch) {s_hi, s_lo} <= code;
-            if (dec_push) stack[sp] <= clip_LL;
+            if (dec_push) stack[si] <= clip_LL;
             if (stk_en)
                 case (stk_op)
-                    2'd0: stack[sp - 6'd2] <= under & top;
-                    2'd1: stack[sp - 6'd2] <= under | top;
-                    2'd2: stack[sp - 6'd1] <= ~top;
+                    2'd0: stack[si - 2'd2] <= under & top;
+                    2'd1: stack[si - 2'd2] <= under | top;
+                    2'd2: stack[si - 1'b1] <= ~top;
                     default: {s_hi, s_lo} <= {~top, 1'b1};
                 endcase
         end

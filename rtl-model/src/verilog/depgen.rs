@@ -1,5 +1,5 @@
 //! DEPGEN's trees of bit-serial adders (seed 001 §2.4, after Pixel-Planes) as Verilog: the
-//! module `depgen_tree`, instantiated twice by `pixel_array` (the x tree with root 0 and
+//! module `depgen`, instantiated twice by `pixel_array` (the x tree with root 0 and
 //! coefficient dx on the column lines, the y tree with root c0 and coefficient dy on the row
 //! lines). It computes what [`crate::depgen::DepGen`] computes, pipelined.
 //!
@@ -18,7 +18,7 @@
 //! and level `j` taps it after `2j + 1`. Between the value's bit 0 and the coefficient's bit 0
 //! a level adds 0 (`en`), so the previous plane's high bits never leak into the shift.
 
-/// `depgen_tree #(N, LEVELS)`: N lines, LEVELS levels (at least ceil log2 N; `pixel_array`
+/// `depgen #(N, LEVELS)`: N lines, LEVELS levels (at least ceil log2 N; `pixel_array`
 /// gives both trees the larger of its two so their latencies agree).
 pub fn module() -> String {
     "// DEPGEN, seed 001 §2.4 (after Pixel-Planes): a tree of registered bit-serial adders that
@@ -31,7 +31,7 @@ pub fn module() -> String {
 // after the value, the shift), and adds 0 until d's bit 0 has arrived (`en`). Carries are
 // cleared with bit 0 of each plane. Node i of level j (i < min(2^(j+1), N)) reads node
 // i mod 2^j of level j-1.
-module depgen_tree #(parameter N = 16, LEVELS = 4) (
+module depgen #(parameter N = 16, LEVELS = 4) (
     input wire clk, rst,
     input wire first,
     input wire root,
@@ -43,6 +43,11 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
     // (df[j] also marks bit 0 of a plane at the input of level j).
     reg r_v;
     reg [DL-1:0] dd, df;
+    // Shifted in at the bottom; the top bit falls off (and is not read).
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [DL:0] dd_next = {dd, d};
+    wire [DL:0] df_next = {df, first};
+    /* verilator lint_on UNUSEDSIGNAL */
     // val[j*N + i]: node i at the input of level j (level 0: the root, on every lane).
     wire [(LEVELS+1)*N-1:0] val;
     assign val[N-1:0] = {N{r_v}};
@@ -53,8 +58,8 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
             df <= {DL{1'b0}};
         end else begin
             r_v <= root;
-            dd <= {dd, d};
-            df <= {df, first};
+            dd <= dd_next[DL-1:0];
+            df <= df_next[DL-1:0];
         end
     end
     genvar j, i;
@@ -62,7 +67,11 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
         for (j = 0; j < LEVELS; j = j + 1) begin : lv
             localparam NODES = (2 << j) < N ? (2 << j) : N;
             wire fin = df[j];
-            reg [NODES-1:0] v, cy;
+            reg [NODES-1:0] v;
+            // Node 0 is never an adder (bit j of 0 is 0), so cy[0] is never read.
+            /* verilator lint_off UNUSEDSIGNAL */
+            reg [NODES-1:0] cy;
+            /* verilator lint_on UNUSEDSIGNAL */
             reg en;
             // d's bit 0 is here, or it came earlier in this plane.
             wire den = df[2*j] | en & ~fin;
@@ -70,7 +79,7 @@ module depgen_tree #(parameter N = 16, LEVELS = 4) (
             wire [NODES-1:0] vn, cn;
             for (i = 0; i < NODES; i = i + 1) begin : node
                 wire vi = val[j*N + i % (1 << j)];
-                if (i >> j & 1) begin : adder
+                if (((i >> j) % 2) == 1) begin : adder
                     wire cin = ~fin & cy[i];
                     assign vn[i] = vi ^ add ^ cin;
                     assign cn[i] = vi & add | cin & (vi ^ add);

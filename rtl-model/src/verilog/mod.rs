@@ -54,10 +54,23 @@ fn cost_script() -> String {
         "{px}synth -top pixel -flatten\nabc -lut 6\nopt_clean\nlog COST pixel lut6\nstat\n"
     );
     // One DEPGEN tree of the 16×16 array (16 lines, 4 levels); an array has two.
-    let dg = "design -reset\nread_verilog depgen.v\nchparam -set N 16 -set LEVELS 4 depgen_tree\n";
-    v += &format!("{dg}synth -top depgen_tree\nlog COST depgen generic\nstat\n");
-    v += &format!("{dg}synth -top depgen_tree -lut 4\nlog COST depgen lut4\nstat\n");
+    let dg = "design -reset\nread_verilog depgen.v\nchparam -set N 16 -set LEVELS 4 depgen\n";
+    v += &format!("{dg}synth -top depgen\nlog COST depgen generic\nstat\n");
+    v += &format!("{dg}synth -top depgen -lut 4\nlog COST depgen lut4\nstat\n");
     v
+}
+
+/// The synthesizable sources of `pixel_array`, leaves first, one a line: a filelist for
+/// `verilator -f`, `iverilog -c` and synthesis scripts.
+pub fn filelist() -> String {
+    let srcs = [
+        "sgene_derived.v",
+        "comparator.v",
+        "depgen.v",
+        "pixel.v",
+        "pixel_array.v",
+    ];
+    srcs.iter().map(|f| format!("{f}\n")).collect()
 }
 
 /// Every generated file, `(name, text)`, in a fixed order.
@@ -88,6 +101,7 @@ pub fn files() -> Result<Vec<(String, String)>, String> {
     out.push(("depgen.v".to_string(), depgen::module()));
     out.push(("pixel_array.v".to_string(), pixel::array_module(&cfg)));
     out.push(("tb_array.v".to_string(), pixel::testbench(&cfg)));
+    out.push(("pixel_array.f".to_string(), filelist()));
     out.push(("cost.ys".to_string(), cost_script()));
     Ok(out)
 }

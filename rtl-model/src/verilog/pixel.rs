@@ -5,7 +5,7 @@
 //!   in clock k), D E G (colour), the latched code S_hi S_lo, the pixel's DEPGEN adder (one
 //!   carry flip-flop), the comparator, SGENE (`derived`), TRANSD/TRANSC and the clipping stack.
 //! * [`array_module`]: `pixel_array`, NX×NY pixels sharing the control word, and DEPGEN's
-//!   two trees (`depgen_tree`, [`super::depgen`], §2.4): the x tree puts `x·dx` on column
+//!   two trees (`depgen`, [`super::depgen`], §2.4): the x tree puts `x·dx` on column
 //!   line x, the y tree `c0 + y·dy` on row line y (modulo 2^N_D, LSB first), from the plane
 //!   coefficients' bits in the control word; pixel (x, y) adds column x and row y.
 //! * [`testbench`]: `tb_array` reads a control stream (`$readmemh`) and the expected state of
@@ -110,12 +110,16 @@ const PORTS: [(&str, usize); 24] = [
 fn port_decls() -> String {
     PORTS
         .iter()
-        .map(|(n, w)| {
-            if *w == 1 {
-                format!("    input wire {n},\n")
-            } else {
-                format!("    input wire [{}:0] {n},\n", w - 1)
-            }
+        .map(|(n, w)| match (*n, *w) {
+            (_, 1) => format!("    input wire {n},\n"),
+            // The controller's pointer serves any stack depth; a pixel reads the bits its
+            // own stack needs (`si`).
+            ("sp", _) => format!(
+                "    /* verilator lint_off UNUSEDSIGNAL */\n    input wire [{}:0] {n},\n    \
+                 /* verilator lint_on UNUSEDSIGNAL */\n",
+                w - 1
+            ),
+            _ => format!("    input wire [{}:0] {n},\n", w - 1),
         })
         .collect()
 }
@@ -160,10 +164,13 @@ module pixel #(parameter F = {ff}, I = {ii}, O = {oo}, CB = {cb}, SD = {sd}) (
     wire [3:0] cur = {{rC[0], rB[0], rF[0], rA[0]}};
     wire src = cur[tr_src];
     wire one = ~is_sign;  // the Put-1 word 011...1
-    wire [3:0] hit = tr_en ? 4'b0001 << tr_dst : 4'b0000;
-    wire nF = hit[1] ? put_src & src | keep & rF[0] | put1 & one : rF[0];
-    wire nB = hit[2] ? put_src & src | keep & rB[0] | put1 & one : rB[0];
-    wire nC = hit[3] ? put_src & src | keep & rC[0] | put1 & one : rC[0];
+    // A is never a transfer's destination: F, B, C are (tr_dst 1, 2, 3).
+    wire hit_F = tr_en & tr_dst == 2'd1;
+    wire hit_B = tr_en & tr_dst == 2'd2;
+    wire hit_C = tr_en & tr_dst == 2'd3;
+    wire nF = hit_F ? put_src & src | keep & rF[0] | put1 & one : rF[0];
+    wire nB = hit_B ? put_src & src | keep & rB[0] | put1 & one : rB[0];
+    wire nC = hit_C ? put_src & src | keep & rC[0] | put1 & one : rC[0];
     wire csrc = tr_cpair == 2'd1 ? rD[0] : rE[0];
     wire cen = tr_en & col_en;
     wire nE = cen && tr_cpair == 2'd1 ? put_src & csrc | keep & rE[0] | put0 & int_bit : rE[0];
@@ -194,9 +201,12 @@ module pixel #(parameter F = {ff}, I = {ii}, O = {oo}, CB = {cb}, SD = {sd}) (
         front_S1, front_S2}};
     wire [1:0] code = pairs[2 * dec_pos +: 2];
 
-    // clipping stack: one bit per level, the stack pointer sp is the controller's.
-    wire top = stack[sp - 6'd1];
-    wire under = stack[sp - 6'd2];
+    // clipping stack: one bit per level, the stack pointer sp is the controller's; si is
+    // sp as wide as an index into the stack (programs never leave 0..SD).
+    localparam SW = SD > 1 ? $clog2(SD) : 1;
+    wire [SW-1:0] si = sp[SW-1:0];
+    wire top = stack[si - 1'b1];
+    wire under = stack[si - 2'd2];
 
     always @(posedge clk) begin
         if (rst) begin
@@ -224,12 +234,12 @@ module pixel #(parameter F = {ff}, I = {ii}, O = {oo}, CB = {cb}, SD = {sd}) (
             end
             if (st_en) carry <= col_bit & row_bit | cin & (col_bit ^ row_bit);
             if (dec_latch) {{s_hi, s_lo}} <= code;
-            if (dec_push) stack[sp] <= clip_LL;
+            if (dec_push) stack[si] <= clip_LL;
             if (stk_en)
                 case (stk_op)
-                    2'd0: stack[sp - 6'd2] <= under & top;
-                    2'd1: stack[sp - 6'd2] <= under | top;
-                    2'd2: stack[sp - 6'd1] <= ~top;
+                    2'd0: stack[si - 2'd2] <= under & top;
+                    2'd1: stack[si - 2'd2] <= under | top;
+                    2'd2: stack[si - 1'b1] <= ~top;
                     default: {{s_hi, s_lo}} <= {{~top, 1'b1}};
                 endcase
         end
@@ -251,7 +261,7 @@ endmodule
 }
 
 /// `pixel_array`: NX×NY pixels on the broadcast control word and DEPGEN's two trees
-/// (`depgen_tree`, §2.4): the x tree puts `x·dx` on column line x, the y tree `c0 + y·dy` on
+/// (`depgen`, §2.4): the x tree puts `x·dx` on column line x, the y tree `c0 + y·dy` on
 /// row line y, and pixel (x, y) adds the two. Both trees get the larger number of levels, so
 /// a plane's bit k presented on `dg_*` reaches every pixel `LEVELS + 1` clocks later.
 pub fn array_module(cfg: &ArrayConfig) -> String {
@@ -268,9 +278,9 @@ module pixel_array #(parameter NX = {nx}, NY = {ny}) (
     localparam LEVELS = $clog2(NX) > $clog2(NY) ? $clog2(NX) : $clog2(NY);
     wire [NX-1:0] col;
     wire [NY-1:0] row;
-    depgen_tree #(.N(NX), .LEVELS(LEVELS)) xtree(.clk(clk), .rst(rst), .first(dg_first),
+    depgen #(.N(NX), .LEVELS(LEVELS)) xtree(.clk(clk), .rst(rst), .first(dg_first),
         .root(1'b0), .d(dg_dx), .line(col));
-    depgen_tree #(.N(NY), .LEVELS(LEVELS)) ytree(.clk(clk), .rst(rst), .first(dg_first),
+    depgen #(.N(NY), .LEVELS(LEVELS)) ytree(.clk(clk), .rst(rst), .first(dg_first),
         .root(dg_c0), .d(dg_dy), .line(row));
     genvar x, y;
     generate
@@ -278,7 +288,11 @@ module pixel_array #(parameter NX = {nx}, NY = {ny}) (
             for (x = 0; x < NX; x = x + 1) begin : gx
                 pixel p(.clk(clk),
 {conns}                    .col_bit(col[x]), .row_bit(row[y]),
-                    .image(image[(y * NX + x) * {cb} +: {cb}]), .state());
+                    // The observation port serves the one-pixel checks; the array
+                    // reads its pixels through `image`.
+                    /* verilator lint_off PINCONNECTEMPTY */
+                    .image(image[(y * NX + x) * {cb} +: {cb}]), .state()
+                    /* verilator lint_on PINCONNECTEMPTY */);
             end
         end
     endgenerate

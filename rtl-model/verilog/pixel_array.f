@@ -1,0 +1,5 @@
+sgene_derived.v
+comparator.v
+depgen.v
+pixel.v
+pixel_array.v
