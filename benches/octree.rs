@@ -26,7 +26,7 @@ use csgpix::octree::key::Key;
 use csgpix::octree::mc::marching_cubes;
 use csgpix::octree::{depth_for, from_volume, StoreKind};
 use csgpix::scad::parse_csg;
-use csgpix::voxelize::{voxelize, Grid, Route, Sampling, Slicer, Volume};
+use csgpix::voxel::{voxelize, Grid, Route, Sampling, Slicer, Volume};
 use glam::DVec3;
 use rtl_model::{Equations, WordFormat};
 use serde_json::{json, Value};

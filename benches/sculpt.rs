@@ -25,7 +25,7 @@ use std::time::Instant;
 use csgpix::octree::{self, optimized::Leaves, OptimizedOctree, VoxelStore};
 use csgpix::scad::parse_csg;
 use csgpix::sculpt::{Frame, Latency, Sculptor, Tool};
-use csgpix::voxelize::{Grid, Sampling, Slicer};
+use csgpix::voxel::{Grid, Sampling, Slicer};
 use glam::DVec3;
 use rtl_model::WordFormat;
 use serde_json::{json, Value};
@@ -77,7 +77,7 @@ fn twelve(n: usize) -> (OptimizedOctree, Frame, f64) {
     // The thesis's slab sampling, under which docs/octree.md and docs/sculpting.md were measured.
     let slicer =
         Slicer::with_sampling(&scene, grid, WordFormat::THESIS, Sampling::Slab).expect("slicer");
-    let store = octree::optimized::from_scene(&slicer, &scene.root, u64::MAX).expect("store");
+    let store = csgpix::octree_from_scene(&slicer, &scene.root, u64::MAX).expect("store");
     (store, Frame::of_grid(&grid), 8.6)
 }
 

@@ -29,7 +29,7 @@ use csgpix::evaluate::{colour_labels, direct, LeafOrder, StackEval, TreeEval};
 use csgpix::scad::parse_csg;
 use csgpix::slice::{Labels, Mask, OpCounts, SliceEval};
 use csgpix::solid::{ConvexSolid, CsgNode, CsgScene};
-use csgpix::voxelize::{voxelize, word_ranges, Grid, Route, Sampling, SlabRanges, Slicer, Volume};
+use csgpix::voxel::{voxelize, word_ranges, Grid, Route, Sampling, SlabRanges, Slicer, Volume};
 use fidget::context::Tree;
 use fidget::jit::JitShape;
 use fidget::shape::EzShape;

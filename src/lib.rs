@@ -1,33 +1,60 @@
-//! csgpix: scenes, formats and studies around the pixel-processor array of `rtl-model`.
+//! csgpix: the 2D CSG pixel-processor array of a 2005 thesis (seed 001), simulated clock by
+//! clock, and what it is used for: rendering scenes, voxelizing them slice by slice, storing
+//! and sculpting the voxels.
+//!
+//! This crate is the facade over the subsystems, each its own crate:
+//!
+//! | crate | re-exported as | what |
+//! |---|---|---|
+//! | `rtl-model` | [`rtl_model`] | the processor: depth word, DEPGEN, comparator, select logic, clipping stack, the `cycle` and `word` arrays |
+//! | `csgpix-scene` | [`scene`] | display lists, expressions, `.csg` scenes, meshes, NRRD, grids and volumes, outputs |
+//! | `csgpix-draw` | [`draw`] | scenes → display lists → array operations, the `float` model, panels, throughput |
+//! | `csgpix-voxel` | [`voxel`] | slices from the array, masks, the Blist and baseline evaluators, requirements |
+//! | `csgpix-sculpt` | [`sculpt`] | the hashed octree of seed 000, its baselines, Marching Cubes, sculpting |
+//!
+//! and holds what joins them: the accuracy/cost [`study`], charts ([`plot`]), PNG output
+//! ([`png`]) and [`octree_from_scene`]. Every module of the subsystems is also reachable
+//! under its own name (`csgpix::scad`, `csgpix::blist`, …).
 
-pub mod blend;
-pub mod blist;
-pub mod clip_expr;
-pub mod compile;
-pub mod csg_expr;
-pub mod dataset;
-pub mod display_list;
-pub mod evaluate;
-pub mod extrude;
-pub mod float;
-pub mod hull;
-pub mod input;
-pub mod mesh;
-pub mod nrrd;
-pub mod octree;
-pub mod output;
-pub mod palette;
-pub mod panels;
 pub mod plot;
-pub mod polygon;
-pub mod project;
-pub mod requirements;
-pub mod sampled;
-pub mod scad;
-pub mod sculpt;
-pub mod slice;
-pub mod solid;
+pub mod png;
 pub mod study;
-pub mod throughput;
-pub mod trimesh;
-pub mod voxelize;
+
+pub use csgpix_draw as draw;
+pub use csgpix_scene as scene;
+pub use csgpix_sculpt as sculpt;
+pub use csgpix_voxel as voxel;
+pub use rtl_model;
+
+pub use csgpix_draw::{compile, float, palette, panels, polygon, project, throughput};
+pub use csgpix_scene::{
+    clip_expr, csg_expr, dataset, display_list, extrude, grid, hull, input, mesh, nrrd, output,
+    scad, solid, trimesh,
+};
+pub use csgpix_sculpt::octree;
+pub use csgpix_voxel::{blend, blist, evaluate, requirements, sampled, slice};
+
+use csgpix_scene::solid::CsgNode;
+use csgpix_sculpt::octree::{OptimizedOctree, StoreBuilder};
+use csgpix_voxel::{Route, Slicer};
+
+/// The optimized octree of a sliced scene (`tree` its CSG tree), fed slice by slice from the
+/// voxelizer's interval route with the Blist (seed 000 §4.3.4: no dense volume of the scene
+/// is made); `budget` bounds the leaves kept while building, in bytes.
+pub fn octree_from_scene(
+    slicer: &Slicer,
+    tree: &CsgNode,
+    budget: u64,
+) -> Result<OptimizedOctree, String> {
+    let eval = csgpix_voxel::blist::BlistEval::new(tree);
+    let mut b = csgpix_sculpt::octree::optimized::builder(slicer.grid.dims, budget)?;
+    csgpix_voxel::voxelize_streaming(
+        slicer,
+        Route::Intervals,
+        rtl_model::Equations::Derived.set(),
+        &eval,
+        &|| {},
+        &mut |k, s| b.push(k, s),
+    )?;
+    b.finish_store()
+}

@@ -42,7 +42,7 @@ use crate::float::rounding_bound;
 use crate::plot::{Chart, Series};
 use crate::scad::parse_csg;
 use crate::solid::CsgScene;
-use crate::voxelize::{float_interval, voxelize, Grid, Route, Sampling, Slicer, Volume};
+use crate::voxel::{float_interval, voxelize, Grid, Route, Sampling, Slicer, Volume};
 
 /// The thesis's clock, 10 MHz (§2.5).
 pub const CLOCK_HZ: f64 = 1e7;
@@ -567,7 +567,7 @@ fn word_interval(fmt: &WordFormat, planes: &[PlaneWord], x: i64, y: i64) -> Opti
             p.h,
         )
     });
-    crate::voxelize::ray_interval(values, f64::NEG_INFINITY, f64::INFINITY)
+    crate::voxel::ray_interval(values, f64::NEG_INFINITY, f64::INFINITY)
 }
 
 /// The CSV header; `wall_s` is last so runs compare without it.

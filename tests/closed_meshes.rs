@@ -10,7 +10,7 @@ use common::volume;
 use csgpix::octree::mc::marching_cubes;
 use csgpix::octree::{from_volume, OptimizedOctree, StoreKind};
 use csgpix::sculpt::{Frame, Sculptor, Tool};
-use csgpix::voxelize::Volume;
+use csgpix::voxel::Volume;
 use glam::DVec3;
 use std::collections::HashMap;
 

@@ -12,7 +12,7 @@ use csgpix::octree::mc::marching_cubes;
 use csgpix::octree::table::KeyTable;
 use csgpix::octree::{from_volume, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix::scad::parse_csg;
-use csgpix::voxelize::{voxelize, voxelize_streaming, Grid, Route, Slicer, Volume};
+use csgpix::voxel::{voxelize, voxelize_streaming, Grid, Route, Slicer, Volume};
 use glam::DVec3;
 use proptest::prelude::*;
 use rtl_model::{Equations, WordFormat};

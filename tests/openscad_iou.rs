@@ -143,7 +143,7 @@ fn off_faces(csg: &Path, lo: [f64; 3], hi: [f64; 3]) -> Vec<bool> {
     let Ok(scene) = csgpix::scad::parse_csg(&text, "x.csg") else {
         return vec![true; n * n * n];
     };
-    let grid = csgpix::voxelize::Grid::new([n; 3], DVec3::from(lo), DVec3::from(hi)).unwrap();
+    let grid = csgpix::voxel::Grid::new([n; 3], DVec3::from(lo), DVec3::from(hi)).unwrap();
     // The word's plane error at the far corner, 2^-(F+1)·(1 + x + y) pixels (thesis word).
     let v = grid.voxel();
     let tol = (1.0 + 2.0 * n as f64) / 2048.0 * v.x.max(v.y);

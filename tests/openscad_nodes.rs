@@ -9,7 +9,7 @@ use csgpix::blist::BlistEval;
 use csgpix::sampled::load_imports;
 use csgpix::scad::parse_csg;
 use csgpix::solid::{CsgNode, CsgScene};
-use csgpix::voxelize::{voxelize, Grid, Route, Slicer, Volume};
+use csgpix::voxel::{voxelize, Grid, Route, Slicer, Volume};
 use glam::DVec3;
 use rtl_model::{Equations, WordFormat};
 

@@ -6,10 +6,10 @@ mod common;
 
 use common::random_scene;
 use csgpix::blist::BlistEval;
-use csgpix::requirements::footprints;
 use csgpix::scad::parse_csg;
 use csgpix::solid::CsgScene;
-use csgpix::voxelize::{voxelize, Grid, Route, Slicer, Volume, Work};
+use csgpix::voxel::footprints;
+use csgpix::voxel::{voxelize, Grid, Route, Slicer, Volume, Work};
 use proptest::prelude::*;
 use rtl_model::{Equations, WordFormat};
 

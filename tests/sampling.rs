@@ -10,7 +10,7 @@ use csgpix::evaluate::direct;
 use csgpix::scad::parse_csg;
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
-use csgpix::voxelize::{voxelize, Grid, Route, Sampling, Slicer, Volume};
+use csgpix::voxel::{voxelize, Grid, Route, Sampling, Slicer, Volume};
 use glam::DVec3;
 use proptest::prelude::*;
 use rtl_model::{Equations, WordFormat};

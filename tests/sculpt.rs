@@ -10,7 +10,7 @@ use std::collections::HashMap;
 use csgpix::mesh::{self, Tri};
 use csgpix::octree::{mc, OptimizedOctree, VoxelStore};
 use csgpix::sculpt::{parse_path, parse_tool, Frame, Sculptor, Tool};
-use csgpix::voxelize::Volume;
+use csgpix::voxel::Volume;
 use glam::DVec3;
 use proptest::prelude::*;
 

@@ -5,7 +5,7 @@ mod common;
 
 use common::random_scene;
 use csgpix::scad::parse_csg;
-use csgpix::voxelize::{array_mask, float_ranges, word_ranges, Grid, Sampling, Slicer};
+use csgpix::voxel::{array_mask, float_ranges, word_ranges, Grid, Sampling, Slicer};
 use proptest::prelude::*;
 use rtl_model::{Equations, WordFormat};
 

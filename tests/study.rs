@@ -51,7 +51,7 @@ fn small_sweep() -> Vec<Point> {
         res: 16,
         int_bits: 10,
         ovf_bits: 11,
-        sampling: csgpix::voxelize::Sampling::Centre,
+        sampling: csgpix::voxel::Sampling::Centre,
     };
     let text = scene_text("cube-minus-cylinder");
     prepare(&text, "cube-minus-cylinder.csg", sweep)

@@ -13,7 +13,7 @@ use csgpix::evaluate::{direct, StackEval, TreeEval};
 use csgpix::sampled::{load_imports, load_scene, Loaded};
 use csgpix::slice::SliceEval;
 use csgpix::solid::{CsgScene, Import};
-use csgpix::voxelize::{voxelize, word_ranges, Grid, Route, Slicer, Volume};
+use csgpix::voxel::{voxelize, word_ranges, Grid, Route, Slicer, Volume};
 use rtl_model::{Equations, WordFormat};
 
 fn root() -> PathBuf {

@@ -8,7 +8,7 @@ use csgpix::float::rounding_bound;
 use csgpix::scad::parse_csg;
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
-use csgpix::voxelize::{
+use csgpix::voxel::{
     float_interval, float_ranges, voxelize, word_ranges, Grid, Route, Slicer, Volume,
 };
 use rtl_model::{Equations, WordFormat};

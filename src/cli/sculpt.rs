@@ -9,7 +9,7 @@ use csgpix::mesh;
 use csgpix::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix::output::Outputs;
 use csgpix::sculpt::{self, Frame, Latency, Sculptor, Step, Tool};
-use csgpix::voxelize::{memory_estimate, Slicer, Volume};
+use csgpix::voxel::{memory_estimate, Slicer, Volume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::WordFormat;
@@ -254,7 +254,7 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
     let slicer = Slicer::with_sampling(scene, grid, WordFormat::THESIS, a.grid.sampling.sampling())
         .map_err(|e| format!("{name}: {e}"))?
         .with_sampled(loaded.sampled);
-    let store = octree::optimized::from_scene(&slicer, &scene.root, budget - need)?;
+    let store = csgpix::octree_from_scene(&slicer, &scene.root, budget - need)?;
     Ok((store, Frame::of_grid(&grid), grid.dims))
 }
 

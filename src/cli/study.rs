@@ -11,7 +11,7 @@ use std::time::Instant;
 use super::voxelize::SamplingArg;
 use clap::ValueEnum;
 use csgpix::study::{charts, csv, prepare, Model, Point, Prepared, Sweep};
-use csgpix::voxelize::memory_estimate;
+use csgpix::voxel::memory_estimate;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 

@@ -15,7 +15,7 @@ use csgpix::palette::rgb;
 use csgpix::sampled::{load_scene, parse_binding, scene_from_expr, Binding, Loaded};
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
-use csgpix::voxelize::{
+use csgpix::voxel::{
     memory_estimate, voxelize, voxelize_streaming, Grid, GridSpec, Route, Sampling, Slicer, Volume,
     Work,
 };
@@ -530,7 +530,7 @@ fn write_mesh(
     budget: u64,
     comment: &str,
 ) -> Result<MeshReport, String> {
-    let surface = csgpix::voxelize::surface_voxels(v);
+    let surface = csgpix::voxel::surface_voxels(v);
     let need = octree::memory_estimate(octree::StoreKind::Octree, v.dims)?
         .saturating_add(surface.saturating_mul(MESH_BYTES_PER_SURFACE_VOXEL));
     if need > budget {
@@ -757,7 +757,7 @@ impl Values {
     fn rgb(self, c: u8) -> [u8; 3] {
         match self {
             Values::Grey => [c; 3],
-            Values::Mixed if c >= csgpix::voxelize::GREY_BASE => [c; 3],
+            Values::Mixed if c >= csgpix::voxel::GREY_BASE => [c; 3],
             _ => rgb(c as u32),
         }
     }
@@ -787,7 +787,7 @@ fn write_preview(outs: &mut Outputs, out: Out, v: &Volume, grey: Values) -> Resu
         left += w * scale + 4;
         let _ = h;
     }
-    outs.write(out, |w| csgpix::output::write_png(w, &img))
+    outs.write(out, |w| csgpix::png::write_png(w, &img))
 }
 
 /// Values shaded by depth as the palette view shades colours: nearest full, farthest 45%.
@@ -819,7 +819,7 @@ fn write_slices(outs: &mut Outputs, dir: Out, v: &Volume, grey: Values) -> Resul
             img.put_pixel((i % nx) as u32, (i / nx) as u32, image::Rgb(px));
         }
         let name = format!("slice-{k:04}.png");
-        outs.write_in(dir, &name, |w| csgpix::output::write_png(w, &img))?;
+        outs.write_in(dir, &name, |w| csgpix::png::write_png(w, &img))?;
     }
     Ok(())
 }

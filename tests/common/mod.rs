@@ -65,10 +65,7 @@ pub fn face_planes(s: &csgpix::solid::ConvexSolid) -> Vec<(glam::DVec3, f64)> {
 }
 
 /// A volume from a voxel predicate (1 inside, 0 outside; X fastest).
-pub fn volume(
-    dims: [usize; 3],
-    f: impl Fn(usize, usize, usize) -> bool,
-) -> csgpix::voxelize::Volume {
+pub fn volume(dims: [usize; 3], f: impl Fn(usize, usize, usize) -> bool) -> csgpix::voxel::Volume {
     let mut voxels = Vec::with_capacity(dims.iter().product());
     for z in 0..dims[2] {
         for y in 0..dims[1] {
@@ -77,5 +74,5 @@ pub fn volume(
             }
         }
     }
-    csgpix::voxelize::Volume { dims, voxels }
+    csgpix::voxel::Volume { dims, voxels }
 }

@@ -12,10 +12,10 @@ use std::time::Instant;
 use glam::DVec3;
 use serde::Serialize;
 
-use crate::mesh::Tri;
 use crate::octree::cell::{BEYOND, CORNERS};
 use crate::octree::key::{self, Key};
 use crate::octree::{mc, OptimizedOctree, VoxelStore};
+use csgpix_scene::mesh::Tri;
 
 /// Largest tool radius, in voxels: a step then touches at most (2·128 + 2)³ cells.
 pub const MAX_RADIUS: f64 = 128.0;
@@ -30,7 +30,7 @@ pub struct Frame {
 
 impl Frame {
     /// The frame of a voxelization grid.
-    pub fn of_grid(g: &crate::voxelize::Grid) -> Frame {
+    pub fn of_grid(g: &csgpix_scene::grid::Grid) -> Frame {
         Frame {
             origin: g.centre(0, 0, 0),
             voxel: g.voxel(),
@@ -531,10 +531,10 @@ fn parse_row(
     Ok(DVec3::from_array(v))
 }
 
-/// The frame of a NRRD volume read by [`crate::nrrd::read_nrrd`] (`space origin`, and
+/// The frame of a NRRD volume read by [`csgpix_scene::nrrd::read_nrrd`] (`space origin`, and
 /// `space directions` or `spacings`): the octree's cells are axis-aligned, so the steps must
 /// be positive and along the axes.
-pub fn nrrd_frame(n: &crate::nrrd::Nrrd) -> Result<Frame, String> {
+pub fn nrrd_frame(n: &csgpix_scene::nrrd::Nrrd) -> Result<Frame, String> {
     let d = n.directions;
     let voxel = DVec3::new(d.x_axis.x, d.y_axis.y, d.z_axis.z);
     let off = [
@@ -551,7 +551,7 @@ pub fn nrrd_frame(n: &crate::nrrd::Nrrd) -> Result<Frame, String> {
 
 /// The filled voxels of a NRRD volume: samples at or above `threshold`, or, without one,
 /// samples other than 0 (a volume `voxelize` wrote: 0 is empty, a colour code is filled).
-pub fn nrrd_voxels(n: &crate::nrrd::Nrrd, threshold: Option<f64>) -> Vec<u8> {
+pub fn nrrd_voxels(n: &csgpix_scene::nrrd::Nrrd, threshold: Option<f64>) -> Vec<u8> {
     let inside = |v: f32| match threshold {
         Some(t) => f64::from(v) >= t,
         None => v != 0.0,

@@ -14,9 +14,9 @@
 
 use rtl_model::WordFormat;
 
-use crate::clip_expr::{Clip, Literal};
 use crate::compile::INTERIOR_COLOUR;
-use crate::display_list::DisplayList;
+use csgpix_scene::clip_expr::{Clip, Literal};
+use csgpix_scene::display_list::DisplayList;
 
 /// Which face bounds an interval: (object, plane), or none at ±infinity.
 type Tag = Option<(usize, usize)>;
@@ -43,7 +43,7 @@ pub struct FloatImage {
     pub screen_rule: Vec<bool>,
 }
 
-fn value(p: &crate::display_list::DlPlane, x: f64, y: f64) -> f64 {
+fn value(p: &csgpix_scene::display_list::DlPlane, x: f64, y: f64) -> f64 {
     p.z0 + x * p.dzx + y * p.dzy
 }
 

@@ -19,7 +19,7 @@
 use std::collections::HashMap;
 
 use crate::slice::{self, Labels, Mask, OpCounts, SliceEval};
-use crate::solid::CsgNode;
+use csgpix_scene::solid::CsgNode;
 
 // ---------------------------------------------------------------------------------------------
 // Reference evaluation and tree measures

@@ -25,7 +25,7 @@ use super::mc_tables::{EDGE_TABLE, TRI_TABLE};
 use super::VoxelStore;
 
 /// A triangle in voxel units.
-pub type Tri = crate::mesh::Tri;
+pub type Tri = csgpix_scene::mesh::Tri;
 
 /// A triangle soup in voxel units.
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -30,7 +30,7 @@ pub enum CsgNode {
 
 /// A primitive read from a file rather than drawn from planes (§3.2: "volumetric shapes
 /// defined ... by data sets read from disk"): a volume dataset with an iso threshold, or a
-/// closed triangle mesh. The scene only names it; [`crate::sampled`] loads it.
+/// closed triangle mesh. The scene only names it; `csgpix_voxel::sampled` loads it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Import {
     /// The file as written in the scene (relative paths are relative to the scene's file).

@@ -5,11 +5,11 @@
 //! differs is where the mask comes from:
 //!
 //! * a **dataset** (`import("head.nrrd", threshold = t)`): voxel v is inside when the sample
-//!   at v's centre, trilinearly interpolated, is at or above t ([`crate::dataset`]); the
+//!   at v's centre, trilinearly interpolated, is at or above t ([`csgpix_scene::dataset`]); the
 //!   import's transform maps the dataset into the scene;
 //! * a **mesh** (`import("part.stl")`, OBJ too): its triangles are polygons, each a plane cut
 //!   by three planes perpendicular to the screen (§5.3.1); along every pixel's ray the depths
-//!   where the ray crosses them are found exactly ([`crate::trimesh`]), and the solid's
+//!   where the ray crosses them are found exactly ([`csgpix_scene::trimesh`]), and the solid's
 //!   interior is the odd parity of the crossings in front, the XOR of §3.4.2 (crossings in
 //!   front of the first slab are the "0th slice"). The inside intervals then meet the slabs
 //!   under the same sampling convention and depth-word quantization as the convex solids
@@ -19,14 +19,15 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat4, DVec3};
 
-use crate::dataset::Dataset;
-use crate::nrrd::read_nrrd;
-use crate::project::colour_code;
-use crate::scad::parse_csg;
+use crate::ranges::toggle_run;
 use crate::slice::Mask;
-use crate::solid::{CsgNode, CsgScene, Import, IMPORTED};
-use crate::trimesh::TriMesh;
-use crate::voxelize::{toggle_run, Grid};
+use csgpix_draw::project::colour_code;
+use csgpix_scene::dataset::Dataset;
+use csgpix_scene::grid::Grid;
+use csgpix_scene::nrrd::read_nrrd;
+use csgpix_scene::scad::parse_csg;
+use csgpix_scene::solid::{CsgNode, CsgScene, Import, IMPORTED};
+use csgpix_scene::trimesh::TriMesh;
 
 /// What a sampled primitive is.
 pub enum Shape {
@@ -163,7 +164,7 @@ impl Loaded {
 /// Read a `.csg` scene and every file it imports (relative to the scene's directory).
 pub fn load_scene(path: &Path) -> Result<Loaded, String> {
     let name = path.display().to_string();
-    let text = crate::scad::scene_text(path)?;
+    let text = csgpix_scene::scad::scene_text(path)?;
     let scene = parse_csg(&text, &name).map_err(|e| e.to_string())?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let sampled = load_imports(&scene, &name, &dir)?;
@@ -324,7 +325,7 @@ pub fn parse_binding(s: &str) -> Result<Binding, String> {
 /// The scene of a CSG expression (§4.3.2's "named primitives") whose names are bound to
 /// files. `expr_name` names the expression in messages (`--expr`).
 pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded, String> {
-    let e = crate::csg_expr::parse(expr).map_err(|e| format!("--expr: {e}"))?;
+    let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| format!("--expr: {e}"))?;
     if let Some(b) = bindings.iter().find(|b| !e.names.contains(&b.name)) {
         return Err(format!(
             "--prim {}: the expression has no primitive `{}`",

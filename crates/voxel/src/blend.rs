@@ -17,7 +17,7 @@
 //! negative. That reading is implemented.
 
 use crate::evaluate::{Compile, Op, Postfix};
-use crate::solid::CsgNode;
+use csgpix_scene::solid::CsgNode;
 
 /// How a union blends (§3.3 gives both).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -95,7 +95,7 @@ pub const SOLID: u8 = 255;
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::csg_expr::parse;
+    use csgpix_scene::csg_expr::parse;
 
     fn blend(expr: &str, union: Union, prims: &[u8]) -> u8 {
         let e = parse(expr).unwrap();

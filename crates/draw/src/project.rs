@@ -18,9 +18,9 @@
 
 use glam::{DMat3, DVec3};
 
-use crate::clip_expr::Clip;
-use crate::display_list::{DisplayList, DlPlane};
-use crate::solid::{ConvexSolid, CsgNode, CsgScene};
+use csgpix_scene::clip_expr::Clip;
+use csgpix_scene::display_list::{DisplayList, DlPlane};
+use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene};
 use rtl_model::WordFormat;
 
 /// Depth of the scene's nearest point, in depth units (pixels).

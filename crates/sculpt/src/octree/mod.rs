@@ -24,7 +24,7 @@ pub mod pointer;
 pub mod pointer_block;
 pub mod table;
 
-use crate::voxelize::Volume;
+use csgpix_scene::grid::Volume;
 use key::Key;
 
 pub use dense::DenseGrid;

@@ -24,7 +24,7 @@
 //! * The modifiers `%` (background) and `*` (disable) drop the statement, as OpenSCAD leaves
 //!   such nodes out of the rendered result; `#` (highlight) is ignored; `!` is refused.
 //! * `import(file = "x.stl" | "x.obj" | "x.nrrd", threshold = t)` names a mesh or a dataset
-//!   primitive ([`crate::solid::Import`], loaded by [`crate::sampled`]); `threshold` (ours, not
+//!   primitive ([`crate::solid::Import`], loaded by `csgpix_voxel::sampled`); `threshold` (ours, not
 //!   OpenSCAD's) is a dataset's iso value.
 //!
 //! * 2D shapes `square`, `circle`, `polygon(points, paths)` (several paths filled even-odd:
@@ -1755,7 +1755,7 @@ fn polygon(p: &Params, budget: usize) -> Result<Poly2, Fail> {
 }
 
 /// `import(file = "x.stl" | "x.obj" | "x.nrrd", threshold = t)`: a mesh or a dataset named by
-/// the scene, loaded later ([`crate::sampled`]). A dataset needs `threshold`; a mesh must not
+/// the scene, loaded later (`csgpix_voxel::sampled`). A dataset needs `threshold`; a mesh must not
 /// have one. `scale` other than 1 is refused (OpenSCAD applies it to 2D files only).
 fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
     let p = &head.params;
@@ -2613,7 +2613,7 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    const EXAMPLE: &str = include_str!("../vectors/scenes/cube-minus-cylinder.csg");
+    const EXAMPLE: &str = include_str!("../../../vectors/scenes/cube-minus-cylinder.csg");
 
     /// Every node kind, for the mutation fuzzing.
     const ALL_NODES: &str = "group() {\n\

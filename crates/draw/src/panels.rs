@@ -21,13 +21,13 @@ use rtl_model::program::Op;
 use rtl_model::{ArrayConfig, EquationSet, WordFormat};
 use serde::Serialize;
 
-use crate::clip_expr::Clip;
 use crate::compile::clip_scene_ops;
-use crate::display_list::DisplayList;
 use crate::project::{
     clip_of, display_lists, max_slope, project, silhouette_planes, Frame, View, DEPTH_MARGIN,
 };
-use crate::solid::{CsgNode, CsgScene};
+use csgpix_scene::clip_expr::Clip;
+use csgpix_scene::display_list::DisplayList;
+use csgpix_scene::solid::{CsgNode, CsgScene};
 
 /// An inclusive pixel rectangle: x0, y0, x1, y1.
 pub type Rect = (usize, usize, usize, usize);

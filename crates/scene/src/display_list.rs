@@ -437,9 +437,9 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    const CUBE: &str = include_str!("../vectors/thesis/cube.dl");
-    const BOX1: &str = include_str!("../vectors/thesis/box1.dl");
-    const BOX2: &str = include_str!("../vectors/thesis/box2.dl");
+    const CUBE: &str = include_str!("../../../vectors/thesis/cube.dl");
+    const BOX1: &str = include_str!("../../../vectors/thesis/box1.dl");
+    const BOX2: &str = include_str!("../../../vectors/thesis/box2.dl");
 
     fn parse(text: &str) -> Result<DisplayList, ParseError> {
         DisplayList::parse(text, "t.dl")

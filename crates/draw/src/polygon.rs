@@ -3,7 +3,7 @@
 //! K is the signed distance in pixels from the edge (K ≥ 0 inside). A line is a thin
 //! rectangle: four perpendicular planes around the segment.
 
-use crate::display_list::{DisplayList, DlPlane};
+use csgpix_scene::display_list::{DisplayList, DlPlane};
 
 /// The plane a polygon lies in: depth Z0 + x·dZx + y·dZy.
 #[derive(Clone, Copy, Debug, PartialEq)]

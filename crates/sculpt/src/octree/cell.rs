@@ -301,7 +301,7 @@ impl CellLayers {
     }
 
     /// The next cell layer from the next voxel slice: colour codes (0 = empty), `w` per row,
-    /// X fastest (a [`crate::voxelize::Volume`] slice). Voxels beyond `w` or the slice's rows
+    /// X fastest (a [`csgpix_scene::grid::Volume`] slice). Voxels beyond `w` or the slice's rows
     /// are empty; slices wider than the side are cut. Rows with no voxel in this slice nor
     /// the previous one are cleared without looking at each cell.
     pub fn next(&mut self, slice: &[u8], w: usize) -> &[u8] {

@@ -97,7 +97,7 @@ impl Finish for Leaves {
 impl OptimizedOctree {
     /// The optimized octree of a whole volume, fed slice by slice (for sculpting and tests;
     /// [`super::builder`] gives the same store boxed).
-    pub fn from_volume(v: &crate::voxelize::Volume, budget: u64) -> Result<Self, String> {
+    pub fn from_volume(v: &csgpix_scene::grid::Volume, budget: u64) -> Result<Self, String> {
         use super::StoreBuilder;
         let need = super::memory_estimate(StoreKind::Octree, v.dims)?;
         if need > budget {
@@ -239,24 +239,15 @@ impl OptimizedOctree {
     }
 }
 
-/// The optimized octree of a sliced scene (`tree` its CSG tree), fed slice by slice from the
-/// voxelizer's interval route with the Blist (seed 000 §4.3.4: no dense volume of the scene
-/// is made); `budget` bounds the leaves kept while building, in bytes.
-pub fn from_scene(
-    slicer: &crate::voxelize::Slicer,
-    tree: &crate::solid::CsgNode,
-    budget: u64,
-) -> Result<OptimizedOctree, String> {
-    let eval = crate::blist::BlistEval::new(tree);
-    let depth = super::depth_for(slicer.grid.dims)?;
-    let mut b = super::build_tree(depth, slicer.grid.dims[0], Leaves::new(depth, budget));
-    crate::voxelize::voxelize_streaming(
-        slicer,
-        crate::voxelize::Route::Intervals,
-        rtl_model::Equations::Derived.set(),
-        &eval,
-        &|| {},
-        &mut |k, s| super::StoreBuilder::push(&mut b, k, s),
-    )?;
-    b.finish_store()
+/// A builder of the optimized octree over a volume of `dims`, fed slice by slice in order of
+/// k ([`StoreBuilder::push`](super::StoreBuilder::push)) so that no dense volume is made
+/// (seed 000 §4.3.4); `budget` bounds the leaves kept while building, in bytes.
+/// [`finish_store`](super::TreeBuilder::finish_store) gives the octree.
+pub fn builder(dims: [usize; 3], budget: u64) -> Result<super::TreeBuilder<Leaves>, String> {
+    let depth = super::depth_for(dims)?;
+    Ok(super::build_tree(
+        depth,
+        dims[0],
+        Leaves::new(depth, budget),
+    ))
 }

@@ -17,8 +17,8 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat3, DVec3};
 
+use crate::grid::Grid;
 use crate::output::write_atomic;
-use crate::voxelize::Grid;
 
 /// The header for `grid`: axis 0 is X (fastest), 1 is Y, 2 is Z, in scene units.
 pub fn header(grid: &Grid, comment: &str) -> String {

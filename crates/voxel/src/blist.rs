@@ -26,7 +26,7 @@ use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
 use crate::slice::{self, Labels, Mask, OpCounts, SliceEval};
-use crate::solid::CsgNode;
+use csgpix_scene::solid::CsgNode;
 
 /// One entry BL[p] of the Blist table (§4.3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -10,8 +10,8 @@
 use rtl_model::program::{Coeffs, Op};
 use rtl_model::WordFormat;
 
-use crate::clip_expr::Clip;
-use crate::display_list::{DisplayList, DlPlane};
+use csgpix_scene::clip_expr::Clip;
+use csgpix_scene::display_list::{DisplayList, DlPlane};
 
 /// The colour Put 0 writes when a front plane is clipped by the screen: the object's inside.
 /// Code 7 is light grey in the palette (`src/palette.rs`).

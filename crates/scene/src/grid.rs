@@ -1,0 +1,193 @@
+//! The voxel grid laid over a scene and the volumes voxelized on it (§4.4).
+
+use glam::DVec3;
+
+use crate::solid::CsgScene;
+
+/// The voxel grid: `dims` voxels spanning the box `min`..`max` in scene units.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Grid {
+    pub dims: [usize; 3],
+    pub min: DVec3,
+    pub max: DVec3,
+}
+
+impl Grid {
+    /// A grid over the scene's bounds (every solid's vertices, so subtracted solids count).
+    pub fn of_scene(scene: &CsgScene, dims: [usize; 3]) -> Result<Grid, String> {
+        let pts = scene.solids.iter().flat_map(|s| s.vertices.iter());
+        let (min, max) = pts.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), p| {
+            (a.min(DVec3::from(*p)), b.max(DVec3::from(*p)))
+        });
+        if !min.is_finite() {
+            return Err("the scene has no solids: give --bounds".into());
+        }
+        Grid::new(dims, min, max)
+    }
+
+    /// A grid over an explicit box.
+    pub fn new(dims: [usize; 3], min: DVec3, max: DVec3) -> Result<Grid, String> {
+        if dims.contains(&0) {
+            return Err(format!(
+                "resolution {dims:?}: every side needs at least one voxel"
+            ));
+        }
+        if !(min.is_finite() && max.is_finite()) || (max - min).min_element() <= 0.0 {
+            return Err(format!(
+                "bounds {min} .. {max} must be finite with every side positive"
+            ));
+        }
+        Ok(Grid { dims, min, max })
+    }
+
+    /// Size of one voxel in scene units.
+    pub fn voxel(&self) -> DVec3 {
+        (self.max - self.min)
+            / DVec3::new(
+                self.dims[0] as f64,
+                self.dims[1] as f64,
+                self.dims[2] as f64,
+            )
+    }
+
+    /// Centre of voxel (i, j, k) in scene units.
+    pub fn centre(&self, i: usize, j: usize, k: usize) -> DVec3 {
+        self.min + (DVec3::new(i as f64, j as f64, k as f64) + 0.5) * self.voxel()
+    }
+
+    /// Voxels in one slice.
+    pub fn slice_len(&self) -> usize {
+        self.dims[0] * self.dims[1]
+    }
+}
+
+/// Most voxels a grid may have along one axis (a `--voxel` size far below the scene's extent
+/// is refused here rather than by the memory estimate's arithmetic).
+pub const MAX_GRID_SIDE: usize = 1 << 20;
+
+/// How a grid is laid over a region: voxels per axis (`res`) or a cubic voxel size
+/// (`voxel`, the grid centred on the region with whole voxels covering it), then `pad`
+/// empty voxels added on every side.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GridSpec {
+    pub res: Option<[usize; 3]>,
+    pub voxel: Option<f64>,
+    pub pad: usize,
+}
+
+impl GridSpec {
+    /// The grid over the box `lo`..`hi`.
+    pub fn grid(&self, lo: DVec3, hi: DVec3) -> Result<Grid, String> {
+        let inner = match (self.res, self.voxel) {
+            (Some(dims), None) => Grid::new(dims, lo, hi)?,
+            (None, Some(size)) => Self::cubic(size, lo, hi)?,
+            _ => return Err("give the grid as a resolution or a voxel size, not both".into()),
+        };
+        let v = inner.voxel();
+        let pad = self.pad.min(MAX_GRID_SIDE);
+        let dims = inner.dims.map(|d| d.saturating_add(2 * pad));
+        if dims.iter().any(|&d| d > MAX_GRID_SIDE) {
+            return Err(format!(
+                "a grid of {dims:?} voxels: at most {MAX_GRID_SIDE} per axis"
+            ));
+        }
+        let margin = v * pad as f64;
+        Grid::new(dims, inner.min - margin, inner.max + margin)
+    }
+
+    /// Cubic voxels of side `size`: as many as cover each side of the box, centred on it.
+    fn cubic(size: f64, lo: DVec3, hi: DVec3) -> Result<Grid, String> {
+        if !(size.is_finite() && size > 0.0) {
+            return Err(format!("voxel size {size}: must be a positive number"));
+        }
+        let extent = hi - lo;
+        let mut dims = [0usize; 3];
+        for (d, e) in dims.iter_mut().zip(extent.to_array()) {
+            // A side that is a whole number of voxels (to rounding) gets exactly that many.
+            let n = (e / size * (1.0 - 1e-12)).ceil().max(1.0);
+            if n.is_nan() || n > MAX_GRID_SIDE as f64 {
+                return Err(format!(
+                    "voxel size {size} over an extent of {e}: more than {MAX_GRID_SIDE} voxels per axis"
+                ));
+            }
+            *d = n as usize;
+        }
+        let side = DVec3::new(dims[0] as f64, dims[1] as f64, dims[2] as f64) * size;
+        let centre = (lo + hi) / 2.0;
+        Grid::new(dims, centre - side / 2.0, centre + side / 2.0)
+    }
+}
+
+/// A voxelized scene: colour codes, X fastest, then Y, then Z; 0 is empty.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Volume {
+    pub dims: [usize; 3],
+    pub voxels: Vec<u8>,
+}
+
+pub fn surface_voxels(v: &Volume) -> u64 {
+    let [nx, ny, nz] = v.dims;
+    let at = |i: usize, j: usize, k: usize| v.voxels[(k * ny + j) * nx + i] != 0;
+    let open = |i: usize, j: usize, k: usize| {
+        i == 0 || j == 0 || k == 0 || i + 1 == nx || j + 1 == ny || k + 1 == nz || {
+            !(at(i - 1, j, k)
+                && at(i + 1, j, k)
+                && at(i, j - 1, k)
+                && at(i, j + 1, k)
+                && at(i, j, k - 1)
+                && at(i, j, k + 1))
+        }
+    };
+    let mut n = 0;
+    for k in 0..nz {
+        for j in 0..ny {
+            for i in 0..nx {
+                n += u64::from(at(i, j, k) && open(i, j, k));
+            }
+        }
+    }
+    n
+}
+
+#[cfg(test)]
+mod grid_tests {
+    use super::*;
+
+    fn spec(res: Option<[usize; 3]>, voxel: Option<f64>, pad: usize) -> GridSpec {
+        GridSpec { res, voxel, pad }
+    }
+
+    #[test]
+    fn cubic_voxels_cover_the_bounds_centred() {
+        let g = spec(None, Some(0.5), 0)
+            .grid(DVec3::new(1.0, 2.0, 3.0), DVec3::new(63.0, 3.2, 4.0))
+            .unwrap();
+        // 62 / 0.5 = 124 exactly; 1.2 / 0.5 = 2.4 → 3 voxels, centred; 1 / 0.5 = 2.
+        assert_eq!(g.dims, [124, 3, 2]);
+        assert_eq!(g.voxel(), DVec3::splat(0.5));
+        assert_eq!(g.min.x, 1.0);
+        assert!((g.min.y - (2.6 - 0.75)).abs() < 1e-12);
+        assert_eq!(g.max.z, 4.0);
+    }
+
+    #[test]
+    fn padding_adds_empty_voxels_of_the_same_size() {
+        let g = spec(Some([10, 20, 5]), None, 2)
+            .grid(DVec3::ZERO, DVec3::new(10.0, 10.0, 10.0))
+            .unwrap();
+        assert_eq!(g.dims, [14, 24, 9]);
+        assert_eq!(g.voxel(), DVec3::new(1.0, 0.5, 2.0));
+        assert_eq!(g.min, DVec3::new(-2.0, -1.0, -4.0));
+        assert_eq!(g.max, DVec3::new(12.0, 11.0, 14.0));
+    }
+
+    #[test]
+    fn bad_grids_are_refused() {
+        let (lo, hi) = (DVec3::ZERO, DVec3::ONE);
+        assert!(spec(None, Some(0.0), 0).grid(lo, hi).is_err());
+        assert!(spec(None, Some(f64::NAN), 0).grid(lo, hi).is_err());
+        assert!(spec(None, Some(1e-9), 0).grid(lo, hi).is_err());
+        assert!(spec(None, None, 0).grid(lo, hi).is_err());
+        assert!(spec(Some([4; 3]), None, usize::MAX).grid(lo, hi).is_err());
+    }
+}

@@ -1,0 +1,60 @@
+//! csgpix voxelization: CSG scenes slice by slice (§4.4; DESIGN.md, "From images to voxels").
+//!
+//! The grid's X and Y map to the array's pixels and its Z to depth: slab k lies between
+//! Z-plane(k) and Z-plane(k + 1). The slice of primitive P is what the array shows for P·Vz,
+//! drawn the thesis way (§5.2.1): @(P)·Vz + @(Vz)·P, P's own surface inside the slab or the
+//! slab's front plane inside P, composed by the second stage. A pixel shows something exactly
+//! when P meets the slab along the pixel's ray.
+//!
+//! # Sampling conventions ([`Sampling`])
+//!
+//! * `centre` (the default): voxel (i, j, k) is inside primitive P when its centre is inside
+//!   P. Pixel (i, j) samples the ray at the centre's X and Y; Vz is one least unit of the
+//!   depth word thick, at the centre's depth. Point membership commutes with CSG, so the
+//!   volume is the point membership of the CSG solid at every centre.
+//! * `slab` (the thesis's §4.4 slab): voxel (i, j, k) is inside P when the segment through
+//!   the voxel's centre parallel to Z, from its front face up to (not including) its back
+//!   face, meets P. The slab's clipping planes are the voxel's front face and a plane one least
+//!   unit of the depth word before its back face, so every depth word belongs to exactly one
+//!   slab. CSG over such classifications dilates every subtracted solid by up to a voxel.
+//!
+//! # Routes to the same masks
+//!
+//! * [`Route::Array`]: the processor itself (`cycle` or `word`), one frame per primitive per
+//!   slab; the reference, and the only route that reports clocks.
+//! * [`Route::Intervals`]: the same plane words the array computes (Z0 + x·dZx + y·dZy in the
+//!   depth word, §2.3.1), reduced once per pixel to the interval of depths where P lies, then
+//!   intersected with every slab. Tests prove it gives the processor's masks voxel for voxel.
+//! * [`Route::Float`]: the same intervals in exact f64 arithmetic: the reference geometry.
+
+//!
+//! # The pipeline, block by block
+//!
+//! Scene → [`Slicer`] (the grid on the array, `slicer`) → per-pixel slab ranges (`ranges`)
+//! or the array's own masks (`masks`) → where each primitive is (`footprint`) → per-slab
+//! masks evaluated by a [`SliceEval`](slice::SliceEval) (the Blist §4.3-4.5, the tree §4.2,
+//! the slice stack §3.4.1) → colour codes slice by slice (`drive`).
+
+pub mod blend;
+pub mod blist;
+pub mod drive;
+pub mod evaluate;
+pub mod footprint;
+pub mod masks;
+pub mod ranges;
+pub mod requirements;
+pub mod sampled;
+pub mod slice;
+pub mod slicer;
+
+pub use csgpix_scene::grid::{surface_voxels, Grid, GridSpec, Volume, MAX_GRID_SIDE};
+pub use drive::{
+    grey_code, memory_estimate, voxelize, voxelize_streaming, SliceSink, Work, GREY_BASE,
+    PROCESS_BYTES,
+};
+pub use footprint::{footprints, touched_panels, Footprint, PixelBox};
+pub use masks::{array_mask, array_mask_in, slice_ops};
+pub use ranges::{
+    float_interval, float_ranges, mesh_runs, ray_interval, toggle_run, word_ranges, SlabRanges,
+};
+pub use slicer::{voxel_slope, Route, Sampling, Slicer, DEFAULT_PANEL};

@@ -1,0 +1,174 @@
+//! The interval routes to slab masks: the array's plane words, or exact f64, reduced once
+//! per pixel to the slabs a primitive meets.
+
+use csgpix_scene::display_list::DlPlane;
+use csgpix_scene::trimesh::TriMesh;
+
+use crate::sampled::SlabRuns;
+use crate::slice::Mask;
+use crate::slicer::Slicer;
+
+/// Per pixel, the slabs primitive P meets: `first..=last` (empty when first > last).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SlabRanges(pub Vec<(u32, u32)>);
+
+impl SlabRanges {
+    /// Per slab k, the pixels whose membership differs between slab k − 1 and slab k: those
+    /// whose range starts at k or ended at k − 1 (slab 0: none).
+    pub fn toggles(&self, slabs: usize) -> Vec<Vec<u32>> {
+        let mut t = vec![vec![]; slabs];
+        for (i, &run) in self.0.iter().enumerate() {
+            toggle_run(&mut t, i, run);
+        }
+        t
+    }
+
+    /// The mask of slab k.
+    pub fn mask(&self, k: usize) -> Mask {
+        let k = k as u32;
+        Mask::from_fn(self.0.len(), |i| {
+            let (a, b) = self.0[i];
+            a <= k && k <= b
+        })
+    }
+}
+
+/// The slabs whose window ([`Slicer::window`]) a depth interval [lo, hi] (in raw word units)
+/// meets, both ends closed.
+fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
+    const EMPTY: (u32, u32) = (1, 0);
+    let (z0, s) = (slicer.z_plane(0) as i128, slicer.slab_raw as i128);
+    let (a, b) = slicer.window();
+    let (a, b) = (a as i128, b as i128);
+    let last_slab = slicer.grid.dims[2] as i128 - 1;
+    if lo > hi {
+        return EMPTY;
+    }
+    // Slab k's window is [z0 + k·s + a, z0 + k·s + b] in raw units: it meets [lo, hi] when
+    // z0 + k·s + a <= hi and z0 + k·s + b >= lo, i.e. k <= ⌊(hi − z0 − a) / s⌋ and
+    // k >= ⌈(lo − z0 − b) / s⌉.
+    let last = (hi - z0 - a).div_euclid(s).min(last_slab);
+    let first = (lo - z0 - b + s - 1).div_euclid(s).max(0);
+    if first > last || last < 0 || first > last_slab {
+        return EMPTY;
+    }
+    (first as u32, last as u32)
+}
+
+/// [`Route::Intervals`]: the array's own plane words (DEPGEN's Z0 + x·dZx + y·dZy, wrapped to
+/// the word) reduced to the interval of depths inside P: behind every front plane, before
+/// every back plane, K ≥ 0 on every perpendicular plane.
+pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges, String> {
+    let fmt = &slicer.fmt;
+    let coeffs: Vec<(rtl_model::Coeffs, &DlPlane)> = slicer.lists[prim]
+        .planes
+        .iter()
+        .map(|p| {
+            csgpix_draw::compile::coeffs(fmt, p.z0, p.dzx, p.dzy)
+                .map(|c| (c, p))
+                .map_err(|(_, msg)| format!("solid {}: {msg}", prim + 1))
+        })
+        .collect::<Result<_, _>>()?;
+    let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
+    let mut out = Vec::with_capacity(w * h);
+    for y in 0..h as i64 {
+        for x in 0..w as i64 {
+            let values = coeffs
+                .iter()
+                .map(|(c, p)| (fmt.wrap(c.c0 + x * c.dx + y * c.dy) as i128, p.y, p.h));
+            let (lo, hi) = ray_interval(values, i128::MIN, i128::MAX).unwrap_or((1, 0));
+            out.push(slabs_of(slicer, lo, hi));
+        }
+    }
+    Ok(SlabRanges(out))
+}
+
+/// The exact depth interval [lo, hi] of primitive `prim` along pixel (x, y)'s ray, in depth
+/// units (None when the ray misses it; lo or hi infinite when no plane bounds that side).
+pub fn float_interval(slicer: &Slicer, prim: usize, x: usize, y: usize) -> Option<(f64, f64)> {
+    let values = slicer.lists[prim]
+        .planes
+        .iter()
+        .map(|p| (p.z0 + x as f64 * p.dzx + y as f64 * p.dzy, p.y, p.h));
+    ray_interval(values, f64::NEG_INFINITY, f64::INFINITY)
+}
+
+/// The depths inside a convex solid along one ray, from its planes' values there as
+/// (value, Y, H): behind every front plane (H), before every back plane, and none at all where
+/// a perpendicular plane (Y) is negative (K < 0, §2.3.3). Starts from [lo, hi]; None when
+/// empty.
+pub fn ray_interval<T: PartialOrd + Copy + Default>(
+    planes: impl IntoIterator<Item = (T, bool, bool)>,
+    mut lo: T,
+    mut hi: T,
+) -> Option<(T, T)> {
+    for (v, y, h) in planes {
+        match (y, h) {
+            (true, _) if v < T::default() => return None,
+            (true, _) => {}
+            (false, true) if v > lo => lo = v,
+            (false, false) if v < hi => hi = v,
+            _ => {}
+        }
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
+/// A depth (real units) in raw word units, rounded up or down. Slab planes are whole raw
+/// units: z <= hi exactly when z <= floor(hi), z >= lo exactly when z >= ceil(lo).
+fn raw_depth(slicer: &Slicer, v: f64, up: bool) -> i128 {
+    let one = (1u64 << slicer.fmt.frac) as f64;
+    let r = if up {
+        (v * one).ceil()
+    } else {
+        (v * one).floor()
+    };
+    r.clamp(-1e30, 1e30) as i128
+}
+
+/// Record that pixel i enters slab `first` and leaves after slab `last` (an empty run,
+/// first > last, records nothing): the flips [`SlabRanges::toggles`] and
+/// [`SlabRuns::toggles`] list per slab.
+pub fn toggle_run(t: &mut [Vec<u32>], i: usize, (first, last): (u32, u32)) {
+    if first > last {
+        return;
+    }
+    if first > 0 && (first as usize) < t.len() {
+        t[first as usize].push(i as u32);
+    }
+    if (last as usize) + 1 < t.len() {
+        t[last as usize + 1].push(i as u32);
+    }
+}
+
+/// [`Route::Float`]: the same slabs from the exact intervals.
+pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
+    let raw = |v, up| raw_depth(slicer, v, up);
+    let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
+    let out = (0..w * h)
+        .map(|i| match float_interval(slicer, prim, i % w, i / w) {
+            Some((lo, hi)) => slabs_of(slicer, raw(lo, true), raw(hi, false)),
+            None => (1, 0),
+        })
+        .collect();
+    SlabRanges(out)
+}
+
+/// Per pixel, the slabs a closed mesh fills: the crossings of the pixel's ray with its
+/// triangles (§5.3.1), paired by parity (§3.4.2), each inside interval reduced to slabs as
+/// [`float_ranges`] reduces a convex solid's.
+pub fn mesh_runs(slicer: &Slicer, mesh: &TriMesh) -> SlabRuns {
+    let [w, h, _] = slicer.grid.dims;
+    let raw = |v, up| raw_depth(slicer, v, up);
+    let crossings = mesh.crossings(|p| slicer.frame.to_pixel(p), w, h);
+    SlabRuns::merged(
+        crossings
+            .iter()
+            .map(|c| {
+                c.chunks_exact(2)
+                    .map(|p| slabs_of(slicer, raw(p[0], true), raw(p[1], false)))
+                    .collect()
+            })
+            .collect(),
+    )
+}

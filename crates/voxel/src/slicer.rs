@@ -1,0 +1,223 @@
+//! A scene set up for slicing (§4.4): the grid laid on the array, the display lists in its
+//! frame, the slabs and the sampling convention.
+
+use glam::{DMat3, DVec3};
+use rtl_model::{ArrayConfig, WordFormat};
+
+use csgpix_draw::project::{display_lists, max_slope, silhouette_planes, Frame, DEPTH_MARGIN};
+use csgpix_scene::display_list::DisplayList;
+use csgpix_scene::grid::Grid;
+use csgpix_scene::solid::CsgScene;
+
+use crate::blend::BlendEval;
+use crate::sampled::Sampled;
+
+/// How slab masks are computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Route {
+    /// The processor, clock by clock (`cycle`) or word by word (`word`).
+    Array { cycle: bool },
+    /// The array's plane words reduced to per-pixel depth intervals.
+    Intervals,
+    /// Exact f64 intervals.
+    Float,
+}
+
+/// Which depths of a voxel's ray classify it against a primitive (docs/voxelization.md).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Sampling {
+    /// The voxel's centre: Vz one least unit of the depth word thick, at the centre's depth.
+    #[default]
+    Centre,
+    /// The thesis's slab (§4.4): the segment through the centre from the voxel's front face
+    /// up to one least unit before its back face.
+    Slab,
+}
+
+/// The slope limit of centre sampling: every face whose slope the word can carry across the
+/// array stays a sloped plane. Rendering caps slopes at maxdepth per pixel ([`max_slope`]),
+/// which moves a steep face by up to a pixel; here a face in the depth range at some pixel of
+/// the array stays within the word at every pixel (|Z| ≤ maxdepth + slope·(W + H + 2) ≤ the
+/// largest word, the 2 for the half pixel the grid's corners lie beyond the outer pixel
+/// centres), so the perpendicular approximation moves a face by at most
+/// maxdepth / slope pixels: with the thesis's word 1/16 of a pixel at 64×64, 1/4 at 256×256.
+pub fn voxel_slope(fmt: &WordFormat, width: usize, height: usize) -> f64 {
+    let maxdepth = fmt.to_real(fmt.maxdepth());
+    let headroom = fmt.to_real(fmt.max_word()) - maxdepth;
+    (headroom / (width + height + 2) as f64).max(max_slope(fmt, width, height))
+}
+
+/// Panel size the array route prunes to by default. Any size gives the same voxels; smaller
+/// panels simulate fewer pixels around small primitives (docs/requirements.md).
+pub const DEFAULT_PANEL: [usize; 2] = [32, 32];
+
+/// A scene set up for slicing: its display lists in the grid's frame and the slabs.
+pub struct Slicer {
+    pub grid: Grid,
+    pub fmt: WordFormat,
+    /// One display list per solid (§5.2), in the frame of [`Slicer::frame`].
+    pub lists: Vec<DisplayList>,
+    /// Raw depth-word units per slab (a whole number, so slab planes are exact words; even
+    /// under centre sampling, so the voxel centres are exact words too).
+    pub slab_raw: i64,
+    /// Which depths of each slab classify its voxels ([`Slicer::window`]).
+    pub sampling: Sampling,
+    /// Faces steeper than this (depth units per pixel) are drawn as perpendicular planes
+    /// through their trace at depth 0 ([`csgpix_draw::project`]), moving them by at most
+    /// maxdepth / slope_limit pixels inside the depth range.
+    pub slope_limit: f64,
+    /// Colour code of each solid (its display list's colour).
+    pub colours: Vec<u8>,
+    /// Panels of this many pixels: the array route simulates, for each primitive, only the
+    /// panels and slabs its footprint touches ([`crate::requirements`]). None simulates the
+    /// whole array for every frame. Either way the voxels are the same (tested).
+    pub panel: Option<[usize; 2]>,
+    /// Where the grid lies on the array: scene point → (pixel x, pixel y, depth).
+    pub frame: Frame,
+    /// Imported primitives (datasets, meshes), after the solids: primitive
+    /// `lists.len() + j` ([`crate::sampled`]). Must match the scene's imports.
+    pub sampled: Vec<Sampled>,
+    /// Imports the scene names (checked against `sampled` before a run).
+    pub imports: usize,
+    /// Voxels won by a dataset take its grey value (§4.5), not its colour code.
+    pub grey: bool,
+    /// Grey-valued output by the blending operators of §3.3 instead of labels.
+    pub blend: Option<BlendEval>,
+}
+
+impl Slicer {
+    /// Lay the grid on the array under centre sampling ([`Slicer::with_sampling`] for the
+    /// other): X, Y to pixels (voxel centres at integer pixel coordinates), Z to depth, slab k
+    /// at DEPTH_MARGIN + k·q depth units, q as large as the word's depth range allows.
+    pub fn new(scene: &CsgScene, grid: Grid, fmt: WordFormat) -> Result<Slicer, String> {
+        Slicer::with_sampling(scene, grid, fmt, Sampling::Centre)
+    }
+
+    /// [`Slicer::new`] under the given sampling convention. Centre sampling needs an even
+    /// number of raw units per slab (so the voxel centre is a word), at least 2.
+    pub fn with_sampling(
+        scene: &CsgScene,
+        grid: Grid,
+        fmt: WordFormat,
+        sampling: Sampling,
+    ) -> Result<Slicer, String> {
+        let one = 1i64 << fmt.frac;
+        let margin_raw = DEPTH_MARGIN as i64 * one;
+        let room = fmt.maxdepth() - 2 * margin_raw;
+        let mut slab_raw = room / grid.dims[2] as i64;
+        if sampling == Sampling::Centre {
+            slab_raw &= !1;
+        }
+        if slab_raw < 1 {
+            return Err(format!(
+                "{} slices do not fit the depth word ({} fraction and {} integer bits): \
+                 use fewer slices or a wider word (e.g. 10/11/12)",
+                grid.dims[2], fmt.frac, fmt.int
+            ));
+        }
+        let frame = Self::frame_of(&grid, fmt.to_real(slab_raw));
+        let (w, h) = (grid.dims[0], grid.dims[1]);
+        let slope_limit = match sampling {
+            Sampling::Slab => max_slope(&fmt, w, h),
+            Sampling::Centre => voxel_slope(&fmt, w, h),
+        };
+        let mut lists = display_lists(scene, &frame, slope_limit);
+        for (dl, solid) in lists.iter_mut().zip(&scene.solids) {
+            let colour = dl.planes.first().map_or(1, |p| p.colour);
+            dl.planes.extend(silhouette_planes(&frame, solid, colour));
+        }
+        let colours = lists
+            .iter()
+            .map(|dl| dl.planes.first().map_or(1, |p| p.colour.min(255) as u8))
+            .collect();
+        Ok(Slicer {
+            grid,
+            fmt,
+            lists,
+            slab_raw,
+            sampling,
+            slope_limit,
+            colours,
+            panel: Some(DEFAULT_PANEL),
+            frame,
+            sampled: vec![],
+            imports: scene.imports.len(),
+            grey: false,
+            blend: None,
+        })
+    }
+
+    /// Add the scene's loaded imports (in the scene's order), with their colours.
+    pub fn with_sampled(mut self, sampled: Vec<Sampled>) -> Slicer {
+        self.colours.extend(sampled.iter().map(|s| s.colour));
+        self.sampled = sampled;
+        self
+    }
+
+    /// Primitives of every kind.
+    pub fn primitive_count(&self) -> usize {
+        self.lists.len() + self.sampled.len()
+    }
+
+    /// Primitive p when it is an imported dataset.
+    pub fn dataset(&self, p: usize) -> Option<&Sampled> {
+        let j = p.checked_sub(self.lists.len())?;
+        self.sampled.get(j).filter(|s| s.is_dataset())
+    }
+
+    /// Every import the scene names is loaded ([`Slicer::with_sampled`]).
+    pub(crate) fn check_imports(&self) -> Result<(), String> {
+        if self.sampled.len() != self.imports {
+            return Err(format!(
+                "the scene imports {} files but {} are loaded",
+                self.imports,
+                self.sampled.len()
+            ));
+        }
+        Ok(())
+    }
+
+    fn frame_of(grid: &Grid, q: f64) -> Frame {
+        let v = grid.voxel();
+        Frame {
+            basis: DMat3::IDENTITY,
+            min: grid.min,
+            scale: DVec3::new(1.0 / v.x, 1.0 / v.y, q / v.z),
+            offset: DVec3::new(-0.5, -0.5, DEPTH_MARGIN),
+        }
+    }
+
+    /// Depth (raw word) of Z-plane(k), the front of slab k.
+    pub fn z_plane(&self, k: usize) -> i64 {
+        ((DEPTH_MARGIN as i64) << self.fmt.frac) + k as i64 * self.slab_raw
+    }
+
+    /// The depths (raw words, both ends included) that classify slab k's voxels, as offsets
+    /// from Z-plane(k): the whole slab up to one raw unit before Z-plane(k + 1) (`slab`), or
+    /// the voxel centre's word and the next (`centre`: Vz one least unit thick; the array
+    /// shows nothing between a front and a back clipping plane at the same word).
+    pub fn window(&self) -> (i64, i64) {
+        match self.sampling {
+            Sampling::Slab => (0, self.slab_raw - 1),
+            Sampling::Centre => (self.slab_raw / 2, self.slab_raw / 2 + 1),
+        }
+    }
+
+    /// Vz of slab k as a display list: its front and back clipping planes at the two ends
+    /// of [`Slicer::window`] (one least unit apart under centre sampling).
+    pub fn slab_list(&self, k: usize, colour: u32) -> DisplayList {
+        let z = |raw: i64| self.fmt.to_real(raw);
+        let (a, b) = self.window();
+        let z0 = self.z_plane(k);
+        DisplayList::slab(z(z0 + a), z(z0 + b), colour)
+    }
+
+    /// The array configuration slices run on.
+    pub fn config(&self) -> ArrayConfig {
+        ArrayConfig {
+            fmt: self.fmt,
+            ..ArrayConfig::new(self.grid.dims[0], self.grid.dims[1])
+        }
+    }
+}
