@@ -11,6 +11,7 @@ pub mod clip_expr;
 pub mod csg_expr;
 pub mod dataset;
 pub mod display_list;
+pub mod error;
 pub mod extrude;
 pub mod grid;
 pub mod hull;
@@ -21,3 +22,5 @@ pub mod output;
 pub mod scad;
 pub mod solid;
 pub mod trimesh;
+
+pub use error::{Error, Location, Result};

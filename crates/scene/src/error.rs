@@ -1,0 +1,90 @@
+//! The error of every scene reader and writer: one line, located in its input where it has a
+//! place there (`FILE:LINE:COL: message`), never naming a command-line flag (the CLI adds
+//! those).
+
+use std::fmt;
+
+/// Where in an input a problem is: 1-based line and column (in characters). Binary inputs
+/// are located by byte offset instead, as line 0 and column = offset + 1.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Location {
+    /// The input's name as the user gave it (a path, or a name such as `<expr>`).
+    pub file: String,
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column, in characters.
+    pub col: usize,
+}
+
+impl fmt::Display for Location {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}:{}", self.file, self.line, self.col)
+    }
+}
+
+/// A scene error: what went wrong and, for bad input, where.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub struct Error {
+    /// Where in its input, when the problem has a place there.
+    pub location: Option<Location>,
+    /// What went wrong, one line.
+    pub message: String,
+}
+
+/// A scene result.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // One line always: a quoted name or literal may hold line breaks.
+        let msg = self.message.replace('\r', "\\r").replace('\n', "\\n");
+        match &self.location {
+            Some(at) => write!(f, "{at}: {msg}"),
+            None => f.write_str(&msg),
+        }
+    }
+}
+
+impl Error {
+    /// An error at `file:line:col`.
+    pub fn at(file: impl Into<String>, line: usize, col: usize, message: impl Into<String>) -> Self {
+        let file = file.into();
+        Error {
+            location: Some(Location { file, line, col }),
+            message: message.into(),
+        }
+    }
+
+    /// An error with no place in an input.
+    pub fn msg(message: impl Into<String>) -> Self {
+        Error {
+            location: None,
+            message: message.into(),
+        }
+    }
+
+    /// The same error, its message after `what: ` (e.g. the primitive it concerns).
+    pub fn context(mut self, what: impl fmt::Display) -> Self {
+        self.message = format!("{what}: {}", self.message);
+        self
+    }
+}
+
+impl From<String> for Error {
+    fn from(message: String) -> Self {
+        Error::msg(message)
+    }
+}
+
+impl From<&str> for Error {
+    fn from(message: &str) -> Self {
+        Error::msg(message)
+    }
+}
+
+/// For callers that still speak in one-line strings (the command line).
+impl From<Error> for String {
+    fn from(e: Error) -> String {
+        e.to_string()
+    }
+}
