@@ -6,9 +6,12 @@
 //! `word` models are measured against; `panels` and `throughput` are §2.5 and §5.5.
 
 pub mod compile;
+pub mod error;
 pub mod float;
 pub mod palette;
 pub mod panels;
 pub mod polygon;
 pub mod project;
 pub mod throughput;
+
+pub use error::{Error, Result};

@@ -5,7 +5,10 @@
 //! Stores are built slice by slice from whatever hands them slices (a voxelizer, a dataset):
 //! this crate knows scenes' volumes and grids, not how they are voxelized.
 
+pub mod error;
 pub mod octree;
 pub mod sculpt;
 
 pub use sculpt::*;
+
+pub use error::{Error, Result};

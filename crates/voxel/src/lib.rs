@@ -38,6 +38,7 @@
 pub mod blend;
 pub mod blist;
 pub mod drive;
+pub mod error;
 pub mod evaluate;
 pub mod footprint;
 pub mod masks;
@@ -58,3 +59,5 @@ pub use ranges::{
     float_interval, float_ranges, mesh_runs, ray_interval, toggle_run, word_ranges, SlabRanges,
 };
 pub use slicer::{voxel_slope, Route, Sampling, Slicer, DEFAULT_PANEL};
+
+pub use error::{Error, Result};

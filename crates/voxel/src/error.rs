@@ -1,0 +1,60 @@
+//! The error of `csgpix-voxel`:
+//! its own problems, one line each, and those of the crates it builds on, kept whole (with their `FILE:LINE:COL` location). No message names a command-line flag.
+
+use csgpix_scene::Location;
+
+/// An error of `csgpix-voxel`.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum Error {
+    /// A scene error.
+    #[error(transparent)]
+    Scene(#[from] csgpix_scene::Error),
+    /// A drawing error.
+    #[error(transparent)]
+    Draw(#[from] csgpix_draw::Error),
+    /// A problem of this crate's own, one line.
+    #[error("{0}")]
+    Msg(String),
+}
+
+/// A `csgpix-voxel` result.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+impl Error {
+    /// Where in its input the problem is, when it has a place there.
+    pub fn location(&self) -> Option<&Location> {
+        match self {
+            Error::Scene(e) => e.location.as_ref(),
+            Error::Draw(e) => e.location(),
+            Error::Msg(_) => None,
+        }
+    }
+
+    /// The same error, its message after `what: ` (e.g. the primitive it concerns).
+    pub fn context(self, what: impl std::fmt::Display) -> Self {
+        match self {
+            Error::Scene(e) => Error::Scene(e.context(what)),
+            Error::Draw(e) => Error::Draw(e.context(what)),
+            Error::Msg(m) => Error::Msg(format!("{what}: {m}")),
+        }
+    }
+}
+
+impl From<String> for Error {
+    fn from(m: String) -> Self {
+        Error::Msg(m)
+    }
+}
+
+impl From<&str> for Error {
+    fn from(m: &str) -> Self {
+        Error::Msg(m.to_string())
+    }
+}
+
+/// For callers that still speak in one-line strings (the command line).
+impl From<Error> for String {
+    fn from(e: Error) -> String {
+        e.to_string()
+    }
+}
