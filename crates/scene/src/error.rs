@@ -47,7 +47,12 @@ impl fmt::Display for Error {
 
 impl Error {
     /// An error at `file:line:col`.
-    pub fn at(file: impl Into<String>, line: usize, col: usize, message: impl Into<String>) -> Self {
+    pub fn at(
+        file: impl Into<String>,
+        line: usize,
+        col: usize,
+        message: impl Into<String>,
+    ) -> Self {
         let file = file.into();
         Error {
             location: Some(Location { file, line, col }),

@@ -1,5 +1,6 @@
 //! The error of `csgpix-sculpt`:
-//! its own problems, one line each, and those of the crates it builds on, kept whole (with their `FILE:LINE:COL` location). No message names a command-line flag.
+//! its own problems, one line each, and those of the crates it builds on, kept whole (with their
+//! `FILE:LINE:COL` location). No message names a command-line flag.
 
 use csgpix_scene::Location;
 
