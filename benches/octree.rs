@@ -1,4 +1,4 @@
-//! The voxel stores of seed 000 Ch. 7 side by side (`src/octree`, `docs/octree.md`): build
+//! The voxel stores of seed 000 Ch. 7 side by side (`crates/sculpt/src/octree`, `docs/octree.md`): build
 //! time, nodes and bytes of the optimized hash-based octree (§4.3.4), the plain hash-based
 //! octree (§4.3.3), the pointer-based octree as the thesis builds it (§4.3.2, §4.2.2), a
 //! stronger pointer octree (`pointer-block`) and a dense grid, and global Marching Cubes from

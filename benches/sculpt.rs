@@ -1,4 +1,4 @@
-//! Sculpting step latency (seed 000 Ch. 5-6; `src/sculpt.rs`, docs/sculpting.md): a spherical
+//! Sculpting step latency (seed 000 Ch. 5-6; `crates/sculpt/src/sculpt.rs`, docs/sculpting.md): a spherical
 //! tool of R = 4 and 8 voxels carving a groove around a ball, a cube and
 //! `vectors/scenes/twelve.csg`, each held in the optimized hash-based octree.
 //!

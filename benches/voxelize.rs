@@ -17,7 +17,7 @@
 //!   −a; JIT-compiled, evaluated one Z-slice per call at the voxel centres ([`Grid::centre`]),
 //!   inside when the value is <= 0. Its wall time includes building and compiling the
 //!   expression. It samples the centre point where csgpix samples the centre's Z-segment
-//!   (`src/voxelize.rs`), so the two may differ at surfaces only: the agreement figures count
+//!   (`crates/voxel/src/drive.rs`), so the two may differ at surfaces only: the agreement figures count
 //!   differing voxels and how many of them lie on a surface of either volume.
 //! * phases: the word route's work split into passes (slicer setup, per-pixel slab ranges,
 //!   toggle lists, the slab-mask sweep, evaluation, colour codes, assembly), each pass over
@@ -44,7 +44,7 @@ const FMT: WordFormat = WordFormat::THESIS;
 // ---------------------------------------------------------------------------------------------
 // Evaluators
 
-/// THE BLIST PLUG: the §4.5 Blist evaluator (`src/blist.rs`). This is the only place it
+/// THE BLIST PLUG: the §4.5 Blist evaluator (`crates/voxel/src/blist.rs`). This is the only place it
 /// enters the bench; every table, summary and JSON figure picks it up as `blist`. Return
 /// `None` to measure without it.
 fn blist(scene: &CsgScene) -> Option<Box<dyn SliceEval>> {

@@ -28,7 +28,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    // Staged outputs are removed if the run is interrupted (src/output.rs).
+    // Staged outputs are removed if the run is interrupted (crates/scene/src/output.rs).
     if let Err(e) = csgpix::output::install_signal_cleanup() {
         eprintln!("csgpix: cannot watch for signals: {e}");
         return ExitCode::from(2);

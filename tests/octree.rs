@@ -1,4 +1,4 @@
-//! The voxel stores of seed 000 Ch. 4 (`src/octree`): the thesis's worked examples, the node
+//! The voxel stores of seed 000 Ch. 4 (`crates/sculpt/src/octree`): the thesis's worked examples, the node
 //! count invariants, Table 7.1's cube rows, every store against the dense grid and against
 //! the dual cells computed straight from the volume, and closed Marching Cubes meshes.
 

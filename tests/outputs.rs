@@ -1,6 +1,6 @@
 //! Output files through the CLI: symlinks, FIFOs and devices written through, `-o -`, output
 //! names checked before the run, all outputs or none, nothing left behind by a signal
-//! (src/output.rs).
+//! (crates/scene/src/output.rs).
 
 mod common;
 use common::csgpix;

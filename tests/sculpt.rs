@@ -1,4 +1,4 @@
-//! Sculpting (seed 000 Ch. 5-6, `src/sculpt.rs`): the incremental mesh after random steps is
+//! Sculpting (seed 000 Ch. 5-6, `crates/sculpt/src/sculpt.rs`): the incremental mesh after random steps is
 //! the full Marching Cubes of the final store, the store holds the volume a plain dense model
 //! of the carve gives, the surface stays closed, hand-counted steps, the spring force, path and
 //! tool parsing, the mesh files and the command line.

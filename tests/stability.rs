@@ -4,7 +4,7 @@
 //! sub-pixel primitives, scenes of 1000+ primitives and trees 100,000 deep.
 //!
 //! Expected values are worked out by hand from the thesis's rules (§2.3.3-2.3.5, §2.4.1) and
-//! written in the tests; the float reference (`src/float.rs`) is run beside the array and
+//! written in the tests; the float reference (`crates/draw/src/float.rs`) is run beside the array and
 //! compared. Measured numbers are printed: `cargo test --release --test stability --
 //! --nocapture`.
 
@@ -853,7 +853,7 @@ fn a_thousand_and_twenty_four_primitives() {
 
 // ---------------------------------------------------------------------------------------------
 // CSG trees 100,000 deep (tests/blist.rs covers Blist compilation of 100,000-level trees and
-// tests/cli_blist.rs a 60,000-deep EXPR; src/scad.rs the reader's limit on a string).
+// tests/cli_blist.rs a 60,000-deep EXPR; crates/scene/src/scad.rs the reader's limit on a string).
 
 #[test]
 fn trees_100000_deep_from_a_file_are_refused_in_one_line() {
