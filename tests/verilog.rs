@@ -1,11 +1,13 @@
 //! The Verilog twin (docs/verilog.md): regenerated; SGENE simulated under Icarus Verilog and
 //! Verilator against the golden vectors, proved with Yosys, and costed; the pixel array with
 //! DEPGEN's trees co-simulated against the `cycle` model on thesis scenes, every register of
-//! every pixel after every clock.
+//! every pixel after every clock, also as `csgpix export-verilog --scene` writes it for a
+//! user to run.
 //!
 //! Expected figures come from the golden vectors and docs/select-logic.md (rows per signal;
-//! the printed set's 15 + 11 faulty rows) and from `CycleArray`, never from the generator
-//! (which only supplies the layout of a pixel's `state` word, `pixel::state_fields`).
+//! the printed set's 15 + 11 faulty rows) and from `CycleArray` (observed clock by clock by
+//! `verilog::stimulus::expected_states`), never from the generator (which only supplies the
+//! layout of a pixel's `state` word, `pixel::state_fields`).
 
 mod common;
 use common::csgpix;
@@ -18,9 +20,9 @@ use csgpix::clip_expr::Clip;
 use csgpix::compile::{clip_scene_ops, scene_ops};
 use csgpix::display_list::DisplayList;
 use rtl_model::array::check_program;
-use rtl_model::cycle::{Clock, Internal};
 use rtl_model::program::{translate, CReg, Op};
-use rtl_model::{ArchState, Array, ArrayConfig, CycleArray, Equations, Pixel};
+use rtl_model::verilog::stimulus::expected_states;
+use rtl_model::{ArchState, Array, ArrayConfig, CycleArray, Equations};
 
 /// Care rows per signal, as docs/select-logic.md lists them (`csgpix verify-select`).
 const ROWS: [(&str, u64); 9] = [
@@ -512,124 +514,6 @@ fn cycle_final(cfg: ArrayConfig, ops: &[Op]) -> (ArchState, u64) {
     (arr.state(), arr.cycles())
 }
 
-/// What tb_array must see: every pixel's `state` after every clock, from the cycle model.
-struct Expected {
-    /// One hex line per pixel (row-major) per clock, clocks 1 ..= cycles + 1 (the idle clock
-    /// that carries `last` changes nothing).
-    text: String,
-    /// The clock each operation ends with.
-    ends: Vec<u64>,
-    cycles: u64,
-    last: ArchState,
-}
-
-/// A pixel's `state` word (fields of `pixel::state_fields`, LSB first) from the cycle model's
-/// registers, in hex. `k` is the comparator's bit counter (bits taken of the current word).
-/// The Verilog registers circulate (bit k of the word at bit 0 in clock k), so after clock
-/// `bit` of a window they hold the model's word rotated right by `bit + 1` (colour registers:
-/// by the colour bits moved so far); `bit` is `None` outside windows.
-fn state_hex(cfg: &ArrayConfig, p: &Pixel, i: &Internal, k: u64, bit: Option<u32>) -> String {
-    let rot = |v: u64, w: usize, moved: usize| {
-        let r = moved % w;
-        let mask = if w == 64 { !0 } else { (1u64 << w) - 1 };
-        let v = v & mask;
-        if r == 0 {
-            v
-        } else {
-            (v >> r | v << (w - r)) & mask
-        }
-    };
-    let (nd, cb) = (cfg.fmt.bits() as usize, cfg.colour_bits as usize);
-    let moved = bit.map_or(0, |b| b as usize + 1);
-    use rtl_model::verilog::pixel::state_fields;
-    let mut bits: Vec<bool> = vec![];
-    for (name, w) in state_fields(cfg) {
-        let v: u64 = match name {
-            "A" | "F" | "B" | "C" => {
-                let r = ["A", "F", "B", "C"]
-                    .iter()
-                    .position(|r| *r == name)
-                    .unwrap();
-                rot(p.depth[r] as u64, nd, moved)
-            }
-            "D" | "E" | "G" => {
-                let r = ["D", "E", "G"].iter().position(|r| *r == name).unwrap();
-                rot(p.colour[r] as u64, cb, moved.min(cb))
-            }
-            "S_hi" => p.sel.0 as u64,
-            "S_lo" => p.sel.1 as u64,
-            "N" => p.flags.n as u64,
-            "J" => p.flags.j as u64,
-            "T" => p.flags.t as u64,
-            "M" => p.flags.m as u64,
-            "lt" => i.lt as u64,
-            "eq" => i.eq as u64,
-            "ovf" => i.ovf as u64,
-            "sign" => i.sign as u64,
-            "k" => k,
-            "carry" => i.carry as u64,
-            "stack" => p.stack,
-            other => panic!("state field {other} has no cycle-model register"),
-        };
-        bits.extend((0..w).map(|b| b < 64 && v >> b & 1 == 1));
-    }
-    (0..bits.len().div_ceil(4))
-        .rev()
-        .map(|d| {
-            let v = (0..4)
-                .filter(|b| bits.get(d * 4 + b) == Some(&true))
-                .fold(0, |a, b| a | 1 << b);
-            char::from_digit(v, 16).unwrap()
-        })
-        .collect()
-}
-
-/// Run `ops` on the cycle model clock by clock ([`CycleArray::observe`]) and write down every
-/// register of every pixel after every clock.
-fn expected_states(cfg: ArrayConfig, ops: &[Op], set: Equations) -> Expected {
-    use std::cell::RefCell;
-    use std::rc::Rc;
-    check_program(ops, cfg.stack_depth).unwrap();
-    let mut arr = CycleArray::new(cfg, set.set());
-    // The comparator's bit counter (5 bits for the thesis word) and the lines so far.
-    let kmod = cfg.fmt.bits().next_power_of_two() as u64;
-    let out = Rc::new((RefCell::new(String::new()), RefCell::new(0u64)));
-    let seen = Rc::clone(&out);
-    let lines = move |a: &CycleArray, k: u64, bit: Option<u32>, text: &mut String| {
-        for y in 0..cfg.height {
-            for x in 0..cfg.width {
-                *text += &state_hex(&cfg, &a.gather(x, y), &a.internal(x, y), k, bit);
-                text.push('\n');
-            }
-        }
-    };
-    let mut next = 1;
-    arr.observe(Box::new(move |a: &CycleArray, c: Clock| {
-        assert_eq!(c.t, next, "the observer sees every clock once, in order");
-        next += 1;
-        let mut k = seen.1.borrow_mut();
-        if c.compared {
-            *k = (c.bit.unwrap() as u64 + 1) % kmod;
-        }
-        lines(a, *k, c.bit, &mut seen.0.borrow_mut());
-    }));
-    let mut ends = vec![];
-    for op in ops {
-        arr.step(op).unwrap();
-        ends.push(arr.cycles());
-    }
-    arr.finish();
-    let k = *out.1.borrow();
-    let mut text = out.0.borrow().clone();
-    lines(&arr, k, None, &mut text);
-    Expected {
-        text,
-        ends,
-        cycles: arr.cycles(),
-        last: arr.state(),
-    }
-}
-
 /// Stand-ins for checked-in Verilog files: (file name, source).
 type Overrides<'a> = &'a [(&'a str, String)];
 
@@ -658,7 +542,7 @@ fn cosim_with(
     set: Equations,
 ) -> Result<usize, String> {
     use rtl_model::verilog::pixel;
-    let want = expected_states(cfg, ops, set);
+    let want = expected_states(cfg, ops, &set.set())?;
     let tmp = tempfile::tempdir().unwrap();
     let ctl = pixel::control_stream(&cfg, &set.set(), ops);
     std::fs::write(tmp.path().join("control.hex"), ctl).unwrap();
@@ -916,6 +800,172 @@ fn array_cosimulation_catches_a_depgen_tree_that_drops_carries() {
         "{err}"
     );
     eprintln!("caught: {err}");
+}
+
+/// `export-verilog --scene` for the cube's window at (56, 90) into `dir`: its standard output.
+fn export_cube(dir: &Path) -> String {
+    let out = csgpix(&[
+        "export-verilog",
+        "--scene",
+        "vectors/thesis/cube.dl",
+        "--origin",
+        "56,90",
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(
+        out.status.success(),
+        "{text}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    text
+}
+
+/// The CLI writes what the co-simulation tests run: the stimulus and expected states of the
+/// test's own program for the window, the checked-in Verilog, and the image the array must
+/// draw (the cube's left vertex: at least 3 colours).
+#[test]
+fn export_verilog_scene_writes_the_cosimulation_files() {
+    use rtl_model::verilog::pixel;
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path().join("cube");
+    export_cube(&dir);
+    let read = |f: &str| std::fs::read_to_string(dir.join(f)).unwrap();
+    let cfg = ArrayConfig::new(16, 16);
+    let ops = thesis_program(&["cube"], None, 56, 90);
+    let set = Equations::Derived.set();
+    assert_eq!(read("control.hex"), pixel::control_stream(&cfg, &set, &ops));
+    let want = expected_states(cfg, &ops, &set).unwrap();
+    assert_eq!(read("expected.hex"), want.text);
+    assert_eq!(want.summary(), "CLOCKS 294 OPS 9 MISMATCHES 0");
+    assert!(read("run.sh").contains("want='CLOCKS 294 OPS 9 MISMATCHES 0'"));
+    for f in [
+        "sgene_derived.v",
+        "comparator.v",
+        "depgen.v",
+        "pixel.v",
+        "pixel_array.v",
+    ] {
+        assert_eq!(
+            read(f),
+            std::fs::read_to_string(vdir().join(f)).unwrap(),
+            "{f}"
+        );
+    }
+    for f in ["tb_array.v", "pixel_array.f"] {
+        assert_eq!(
+            read(f),
+            std::fs::read_to_string(vdir().join(f)).unwrap(),
+            "{f}"
+        );
+    }
+    let png = image::open(dir.join("expected.png")).unwrap().to_rgb8();
+    assert_eq!(png.dimensions(), (16, 16));
+    let colours: BTreeSet<[u8; 3]> = png.pixels().map(|p| p.0).collect();
+    assert!(colours.len() >= 3, "{colours:?}");
+}
+
+/// Run the shell command the CLI printed after `label` (`icarus:`), as a user would.
+fn printed_command(stdout: &str, label: &str) -> Output {
+    let cmd = stdout
+        .lines()
+        .find_map(|l| l.trim_start().strip_prefix(label))
+        .unwrap_or_else(|| panic!("no {label} line:\n{stdout}"));
+    run(
+        "sh",
+        &["-c", cmd.trim()],
+        Path::new(env!("CARGO_MANIFEST_DIR")),
+    )
+}
+
+/// The printed Icarus command on the exported directory: 0 mismatches in 294 clocks, the
+/// summary the CLI said to expect. Then one line of expected.hex changed (bit 0 of A, pixel
+/// (7, 5) after clock 101): run.sh exits 1 and the testbench names that clock, pixel and
+/// register with both values.
+#[test]
+fn export_verilog_scene_runs_under_icarus_as_printed() {
+    if !rtl_tools() {
+        return;
+    }
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path().join("cube");
+    let stdout = export_cube(&dir);
+    assert!(stdout.contains("it must print \"CLOCKS 294 OPS 9 MISMATCHES 0\""));
+    let text = ok(
+        &printed_command(&stdout, "icarus:"),
+        "printed icarus command",
+    );
+    assert!(
+        text.lines().any(|l| l == "CLOCKS 294 OPS 9 MISMATCHES 0"),
+        "{text}"
+    );
+    assert!(!text.contains("MISMATCH "), "{text}");
+    let hex = std::fs::read_to_string(dir.join("expected.hex")).unwrap();
+    let mut lines: Vec<String> = hex.lines().map(String::from).collect();
+    let (clock, x, y) = (101, 7, 5);
+    let i = (clock - 1) * 256 + y * 16 + x;
+    let a = u32::from_str_radix(&lines[i][lines[i].len() - 8..], 16).unwrap();
+    let n = lines[i].len();
+    lines[i].replace_range(n - 8.., &format!("{:08x}", a ^ 1));
+    std::fs::write(dir.join("expected.hex"), lines.join("\n") + "\n").unwrap();
+    let out = run("sh", &["run.sh"], &dir);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    let mismatch = format!("MISMATCH {clock} {x} {y} A {:x} {a:x}", a ^ 1);
+    assert!(text.lines().any(|l| l == mismatch), "{mismatch}:\n{text}");
+    assert!(
+        text.lines().any(|l| l == "CLOCKS 294 OPS 9 MISMATCHES 1"),
+        "{text}"
+    );
+}
+
+/// Refused runs of `export-verilog --scene` exit 2 with one line (a display-list error at its
+/// FILE:LINE:COL; a window where a plane leaves the depth word, at the plane's Z0; an
+/// expected-state file over --max-memory) and leave no file: no new directory, nothing added
+/// to an existing one, no staging left beside them.
+#[test]
+fn export_verilog_scene_refusals_leave_no_files() {
+    let tmp = tempfile::tempdir().unwrap();
+    let bad = tmp.path().join("bad.dl");
+    std::fs::write(&bad, "# a plane\n46.06\t-1.0\t1.18\t2\n1\t0\tx\n").unwrap();
+    let old = tmp.path().join("old");
+    std::fs::create_dir(&old).unwrap();
+    std::fs::write(old.join("keep.txt"), "kept").unwrap();
+    let bad = bad.to_str().unwrap();
+    let cube = "vectors/thesis/cube.dl";
+    let cases: [(&[&str], String); 3] = [
+        (&["--scene", bad], format!("{bad}:3:5: ")),
+        (
+            &["--scene", cube, "--origin", "1000000,1000000"],
+            format!("{cube}:8:1: Z0 + x*dZx + y*dZy = "),
+        ),
+        (
+            &["--scene", cube, "--max-memory", "1"],
+            "expected.hex (294 clocks x 256 pixels x 45 bytes) needs about".into(),
+        ),
+    ];
+    for (args, start) in cases {
+        for dir in [tmp.path().join("new"), old.clone()] {
+            let d = dir.to_str().unwrap();
+            let out = csgpix(&[&["export-verilog"][..], args, &["-o", d]].concat());
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+            assert_eq!(err.lines().count(), 1, "{err}");
+            assert!(
+                err.starts_with(&format!("csgpix: {start}")),
+                "{start}: {err}"
+            );
+            let mut left: Vec<String> = std::fs::read_dir(tmp.path())
+                .unwrap()
+                .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                .collect();
+            left.sort();
+            assert_eq!(left, ["bad.dl", "old"], "{args:?}");
+            let kept: Vec<_> = std::fs::read_dir(&old).unwrap().collect();
+            assert_eq!(kept.len(), 1, "{args:?}");
+        }
+    }
 }
 
 /// Speed of the cycle model against the Verilated array on the thesis cube, at 16×16 and

@@ -1,7 +1,8 @@
 //! A Verilog-2005 twin of the select logic (SGENE, seed 001 §2.3.3-2.3.5), written from the
 //! same equation sets the Rust models evaluate, the bit-serial comparator, one pixel processor
 //! and an array of them with DEPGEN's adder trees (§2.4, [`depgen`]) driven by a per-clock
-//! control stream ([`pixel`]), and the files that check them.
+//! control stream ([`pixel`]), and the files that check them; [`stimulus`] is what the array's
+//! testbench runs and must see for a program (`csgpix export-verilog --scene`).
 //!
 //! [`files`] is everything `csgpix export-verilog` writes (checked in under
 //! `rtl-model/verilog/`); docs/verilog.md says how each file is used.
@@ -11,6 +12,7 @@ pub mod comparator;
 pub mod depgen;
 pub mod pixel;
 pub mod sgene;
+pub mod stimulus;
 
 use crate::select::pla::Pla;
 use crate::select::{Equations, Table, GOLDEN};

@@ -9,9 +9,9 @@
 //!   line x, the y tree `c0 + y·dy` on row line y (modulo 2^N_D, LSB first), from the plane
 //!   coefficients' bits in the control word; pixel (x, y) adds column x and row y.
 //! * [`testbench`]: `tb_array` reads a control stream (`$readmemh`) and the expected state of
-//!   every pixel after every clock (written by the tests from the `cycle` model), clocks the
-//!   stream into the array and compares every register of every pixel after every clock,
-//!   naming the clock, the pixel and the register of each mismatch.
+//!   every pixel after every clock (written from the `cycle` model by [`super::stimulus`]),
+//!   clocks the stream into the array and compares every register of every pixel after every
+//!   clock, naming the clock, the pixel and the register of each mismatch.
 //! * [`control_stream`]: the stream of a program, one word per clock, from [`Window::of`] and
 //!   the same sequencing as the models (pending transfer, stack pointer, DEPGEN fill).
 //!
@@ -63,6 +63,10 @@ pub const FIELDS: [(&str, usize, usize); 30] = [
 
 /// Bits of the control word.
 pub const CW: usize = 48;
+
+/// The testbenches hold at most 2^this control words (`MAXCLK`): longer streams are refused
+/// before they are written.
+pub const MAX_CLOCKS_LOG2: u32 = 20;
 
 fn field(name: &str) -> (usize, usize) {
     let f = FIELDS.iter().find(|f| f.0 == name).expect("field");
@@ -360,7 +364,7 @@ fn tb_common(cfg: &ArrayConfig, name: &str) -> String {
         .collect();
     format!(
         "module {name};
-    localparam NX = {nx}, NY = {ny}, CW = {CW}, MAXCLK = 1 << 20;
+    localparam NX = {nx}, NY = {ny}, CW = {CW}, MAXCLK = 1 << {MAX_CLOCKS_LOG2};
     localparam SW = {sw};
     reg clk = 0, rst = 1;
     reg [CW-1:0] mem [0:MAXCLK-1];

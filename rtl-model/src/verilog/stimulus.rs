@@ -1,0 +1,292 @@
+//! What `tb_array` runs and what it must see (docs/verilog.md, "Running tb_array from the
+//! CLI"): the Verilog files it is built from for an array configuration ([`array_files`]), the
+//! expected state of every pixel after every clock, taken from the `cycle` model clock by clock
+//! ([`expected_states`], through [`CycleArray::observe`]), and a script that builds and runs
+//! it ([`run_script`]). The stimulus itself is [`super::pixel::control_stream`].
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use super::pixel::{self, state_fields, state_width};
+use crate::array::{check_program, Array};
+use crate::cycle::{Clock, Internal};
+use crate::program::{CReg, Op};
+use crate::select::{EquationSet, Equations};
+use crate::state::{ArchState, ArrayConfig, Pixel};
+use crate::CycleArray;
+
+/// Build and run `tb_array` under Icarus Verilog, in the directory of the files.
+pub const ICARUS: &str =
+    "iverilog -g2005 -o tb_array.vvp -f pixel_array.f tb_array.v && vvp -n tb_array.vvp";
+
+/// Build and run `tb_array` under Verilator, in the directory of the files (Verilator's
+/// default warnings: none from these files).
+pub const VERILATOR: &str = "verilator --binary --timing -j 2 --top-module tb_array \
+    -f pixel_array.f tb_array.v && obj_dir/Vtb_array";
+
+/// The files `tb_array` is built from for `cfg`, `(name, text)`: the synthesizable modules
+/// with the derived SGENE (`pixel_array.f` lists them, leaves first), the testbench and the
+/// filelist. For the 16×16 thesis array they are the checked-in files.
+pub fn array_files(cfg: &ArrayConfig) -> Vec<(String, String)> {
+    let set = Equations::Derived.set();
+    [
+        ("sgene_derived.v", super::sgene::module(&set)),
+        ("comparator.v", super::comparator::module(&cfg.fmt)),
+        ("depgen.v", super::depgen::module()),
+        ("pixel.v", pixel::pixel_module(cfg, &set)),
+        ("pixel_array.v", pixel::array_module(cfg)),
+        ("tb_array.v", pixel::testbench(cfg)),
+        ("pixel_array.f", super::filelist()),
+    ]
+    .into_iter()
+    .map(|(n, t)| (n.to_string(), t))
+    .collect()
+}
+
+/// The most clocks a control stream may have: `tb_array` holds 2^20 words, the idle clock
+/// that carries `last` included.
+pub const MAX_CYCLES: u64 = (1 << pixel::MAX_CLOCKS_LOG2) - 1;
+
+/// Bytes of one line of the expected-state file: a pixel's `state` in hex and a newline.
+pub fn line_bytes(cfg: &ArrayConfig) -> u64 {
+    state_width(cfg).div_ceil(4) as u64 + 1
+}
+
+/// Bytes of the expected-state file of a program of `cycles` clocks: one line per pixel for
+/// every clock and for the idle clock after them.
+pub fn expected_bytes(cfg: &ArrayConfig, cycles: u64) -> u64 {
+    (cycles + 1)
+        .saturating_mul(cfg.pixels() as u64)
+        .saturating_mul(line_bytes(cfg))
+}
+
+/// What tb_array must see: every pixel's `state` after every clock, from the cycle model.
+pub struct Expected {
+    /// One hex line per pixel (row-major) per clock, clocks 1 ..= cycles + 1 (the idle clock
+    /// that carries `last` changes nothing).
+    pub text: String,
+    /// The clock each operation ends with.
+    pub ends: Vec<u64>,
+    pub cycles: u64,
+    /// The architectural state after the program (its G registers are the image).
+    pub last: ArchState,
+}
+
+impl Expected {
+    /// The line `tb_array` prints when every register matched: the program's clocks and the
+    /// idle one, its operations and the flush window when there is one.
+    pub fn summary(&self) -> String {
+        let flush = self.ends.last().is_some_and(|&e| self.cycles > e) as usize;
+        format!(
+            "CLOCKS {} OPS {} MISMATCHES 0",
+            self.cycles + 1,
+            self.ends.len() + flush
+        )
+    }
+
+    /// The colour code (G) of every pixel after the program, row-major: the image.
+    pub fn image(&self) -> Vec<u32> {
+        self.last.pixels.iter().map(|p| p.creg(CReg::G)).collect()
+    }
+}
+
+/// A pixel's `state` word (fields of [`state_fields`], LSB first) from the cycle model's
+/// registers, in hex. `k` is the comparator's bit counter (bits taken of the current word).
+/// The Verilog registers circulate (bit k of the word at bit 0 in clock k), so after clock
+/// `bit` of a window they hold the model's word rotated right by `bit + 1` (colour registers:
+/// by the colour bits moved so far); `bit` is `None` outside windows.
+fn state_hex(cfg: &ArrayConfig, p: &Pixel, i: &Internal, k: u64, bit: Option<u32>) -> String {
+    let (nd, cb) = (cfg.fmt.bits() as usize, cfg.colour_bits as usize);
+    let moved = bit.map_or(0, |b| b as usize + 1);
+    let mut bits: Vec<bool> = vec![];
+    for (name, w) in state_fields(cfg) {
+        let v: u64 = match name {
+            "A" | "F" | "B" | "C" => {
+                let r = ["A", "F", "B", "C"].iter().position(|r| *r == name);
+                rotate(p.depth[r.unwrap()] as u64, nd, moved)
+            }
+            "D" | "E" | "G" => {
+                let r = ["D", "E", "G"].iter().position(|r| *r == name);
+                rotate(p.colour[r.unwrap()] as u64, cb, moved.min(cb))
+            }
+            "S_hi" => p.sel.0 as u64,
+            "S_lo" => p.sel.1 as u64,
+            "N" => p.flags.n as u64,
+            "J" => p.flags.j as u64,
+            "T" => p.flags.t as u64,
+            "M" => p.flags.m as u64,
+            "lt" => i.lt as u64,
+            "eq" => i.eq as u64,
+            "ovf" => i.ovf as u64,
+            "sign" => i.sign as u64,
+            "k" => k,
+            "carry" => i.carry as u64,
+            "stack" => p.stack,
+            other => panic!("state field {other} has no cycle-model register"),
+        };
+        bits.extend((0..w).map(|b| b < 64 && v >> b & 1 == 1));
+    }
+    hex(&bits)
+}
+
+/// The low `w` bits of `v` rotated right by `moved` (modulo `w`).
+fn rotate(v: u64, w: usize, moved: usize) -> u64 {
+    let r = moved % w;
+    let mask = if w == 64 { !0 } else { (1u64 << w) - 1 };
+    let v = v & mask;
+    if r == 0 {
+        v
+    } else {
+        (v >> r | v << (w - r)) & mask
+    }
+}
+
+/// Bits, LSB first, as hex digits, most significant first.
+fn hex(bits: &[bool]) -> String {
+    (0..bits.len().div_ceil(4))
+        .rev()
+        .map(|d| {
+            let v = (0..4)
+                .filter(|b| bits.get(d * 4 + b) == Some(&true))
+                .fold(0, |a, b| a | 1 << b);
+            char::from_digit(v, 16).unwrap()
+        })
+        .collect()
+}
+
+/// Every pixel's `state` line, row-major.
+fn push_lines(cfg: &ArrayConfig, a: &CycleArray, k: u64, bit: Option<u32>, text: &mut String) {
+    for y in 0..cfg.height {
+        for x in 0..cfg.width {
+            *text += &state_hex(cfg, &a.gather(x, y), &a.internal(x, y), k, bit);
+            text.push('\n');
+        }
+    }
+}
+
+/// Run `ops` on the cycle model with equations `set`, clock by clock
+/// ([`CycleArray::observe`]), and write down every register of every pixel after every clock
+/// and after the idle clock that follows. The text is [`expected_bytes`] long: check that
+/// first.
+pub fn expected_states(
+    cfg: ArrayConfig,
+    ops: &[Op],
+    set: &EquationSet,
+) -> Result<Expected, String> {
+    check_program(ops, cfg.stack_depth).map_err(|e| e.to_string())?;
+    let mut arr = CycleArray::new(cfg, set.clone());
+    // The comparator's bit counter (5 bits for the thesis word) and the lines so far.
+    let kmod = cfg.fmt.bits().next_power_of_two() as u64;
+    let out = Rc::new((RefCell::new(String::new()), RefCell::new(0u64)));
+    let seen = Rc::clone(&out);
+    let mut next = 1;
+    arr.observe(Box::new(move |a: &CycleArray, c: Clock| {
+        assert_eq!(c.t, next, "the observer sees every clock once, in order");
+        next += 1;
+        let mut k = seen.1.borrow_mut();
+        if c.compared {
+            *k = (c.bit.unwrap() as u64 + 1) % kmod;
+        }
+        push_lines(&cfg, a, *k, c.bit, &mut seen.0.borrow_mut());
+    }));
+    let mut ends = vec![];
+    for op in ops {
+        arr.step(op).map_err(|e| e.to_string())?;
+        ends.push(arr.cycles());
+    }
+    arr.finish();
+    let k = *out.1.borrow();
+    let mut text = out.0.take();
+    push_lines(&cfg, &arr, k, None, &mut text);
+    Ok(Expected {
+        text,
+        ends,
+        cycles: arr.cycles(),
+        last: arr.state(),
+    })
+}
+
+/// `run.sh`: build and run `tb_array` in the script's directory under Icarus (`sh run.sh`)
+/// or Verilator (`sh run.sh verilator`), the output also in `tb_array.log`; exit 0 only when
+/// the testbench prints `summary` ([`Expected::summary`]).
+pub fn run_script(summary: &str) -> String {
+    format!(
+        "#!/bin/sh
+# Run tb_array on control.hex and expected.hex in this directory (csgpix export-verilog
+# --scene): sh run.sh [icarus|verilator]. Exit 0 only when it prints:
+# {summary}
+set -e
+cd \"$(dirname \"$0\")\"
+want='{summary}'
+case \"${{1:-icarus}}\" in
+    icarus) ( {ICARUS} ) | tee tb_array.log ;;
+    verilator) ( {VERILATOR} ) | tee tb_array.log ;;
+    *) echo \"usage: sh run.sh [icarus|verilator]\" >&2; exit 2 ;;
+esac
+if grep -qx \"$want\" tb_array.log; then
+    echo \"PASS: $want\"
+else
+    echo \"FAIL: expected $want\" >&2
+    exit 1
+fi
+"
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::array::program_cycles;
+    use crate::program::Coeffs;
+
+    /// A front and a back plane, a clipping plane with NOT and apply, close and compose.
+    fn program() -> Vec<Op> {
+        let plane = |c0, dx, dy, colour, h| Op::Plane {
+            coeffs: Coeffs { c0, dx, dy },
+            colour,
+            interior: 5,
+            l: false,
+            s: true,
+            h,
+            y: false,
+        };
+        let clip = Op::ClipPlane {
+            coeffs: Coeffs {
+                c0: 60 << 10,
+                dx: 500,
+                dy: 0,
+            },
+            h: true,
+            y: false,
+            x: false,
+        };
+        vec![
+            plane(40 << 10, 300, -200, 2, true),
+            plane(90 << 10, -100, 400, 3, false),
+            Op::Close { l: false },
+            clip,
+            Op::ClipNot,
+            Op::ClipApply,
+            Op::Compose { p: true },
+        ]
+    }
+
+    /// The size `export-verilog --scene` bounds before simulating is the file's to the byte,
+    /// a line per pixel per clock and for the idle clock; the stream has as many words; the
+    /// summary counts the flush window that carries out Compose's code.
+    #[test]
+    fn expected_bytes_is_the_length_of_the_expected_states() {
+        let cfg = ArrayConfig::new(5, 3);
+        let (ops, set) = (program(), Equations::Derived.set());
+        let e = expected_states(cfg, &ops, &set).unwrap();
+        let cycles = program_cycles(&cfg, &set, &ops);
+        assert_eq!(e.cycles, cycles);
+        assert_eq!(e.text.len() as u64, expected_bytes(&cfg, cycles));
+        assert_eq!(e.text.lines().count() as u64, (cycles + 1) * 15);
+        let stream = pixel::control_stream(&cfg, &set, &ops);
+        assert_eq!(stream.lines().count() as u64, cycles + 1);
+        let want = format!("CLOCKS {} OPS {} MISMATCHES 0", cycles + 1, ops.len() + 1);
+        assert_eq!(e.summary(), want);
+        assert!(run_script(&want).contains(&format!("want='{want}'")));
+    }
+}
