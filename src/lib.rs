@@ -61,7 +61,7 @@ pub fn octree_from_scene(
             b.push(k, s).map_err(|e| {
                 let line = e.to_string();
                 refused = Some(e);
-                line.into()
+                line
             })
         },
     );
