@@ -123,7 +123,7 @@ impl Merge for Nothing {
         v.into()
     }
 
-    fn internal(&mut self, _: Key, _: [u16; 8]) -> Result<u16, String> {
+    fn internal(&mut self, _: Key, _: [u16; 8]) -> csgpix::sculpt::Result<u16> {
         Ok(256)
     }
 }

@@ -40,21 +40,34 @@ use csgpix_voxel::{Route, Slicer};
 
 /// The optimized octree of a sliced scene (`tree` its CSG tree), fed slice by slice from the
 /// voxelizer's interval route with the Blist (seed 000 §4.3.4: no dense volume of the scene
-/// is made); `budget` bounds the leaves kept while building, in bytes.
+/// is made); `budget` bounds the leaves kept while building, in bytes. The store's own
+/// errors come back whole (e.g. [`csgpix_sculpt::Error::OverBudget`]), the voxelizer's as
+/// their message.
 pub fn octree_from_scene(
     slicer: &Slicer,
     tree: &CsgNode,
     budget: u64,
-) -> Result<OptimizedOctree, String> {
+) -> csgpix_sculpt::Result<OptimizedOctree> {
     let eval = csgpix_voxel::blist::BlistEval::new(tree);
     let mut b = csgpix_sculpt::octree::optimized::builder(slicer.grid.dims, budget)?;
-    csgpix_voxel::voxelize_streaming(
+    let mut refused = None;
+    let streamed = csgpix_voxel::voxelize_streaming(
         slicer,
         Route::Intervals,
         rtl_model::Equations::Derived.set(),
         &eval,
         &|| {},
-        &mut |k, s| b.push(k, s),
-    )?;
+        &mut |k, s| {
+            b.push(k, s).map_err(|e| {
+                let line = e.to_string();
+                refused = Some(e);
+                line
+            })
+        },
+    );
+    if let Some(e) = refused {
+        return Err(e);
+    }
+    streamed.map_err(|e| csgpix_sculpt::Error::Msg(e.to_string()))?;
     b.finish_store()
 }

@@ -380,7 +380,7 @@ fn a_store_built_while_voxelizing_equals_one_built_from_the_volume() {
         set,
         &eval,
         &|| {},
-        &mut |k, s| b.push(k, s),
+        &mut |k, s| Ok(b.push(k, s)?),
     )
     .unwrap();
     let streamed = b.finish().unwrap();

@@ -255,27 +255,31 @@ fn paths_parse_with_a_header_and_report_line_and_column() {
         vec![DVec3::new(1.0, 2.0, 3.0), DVec3::new(4.0, 5.0, 6.5)]
     );
     assert_eq!(
-        parse_path("x,y,z\n1,2,3\n1, b,3\n", "p.csv").unwrap_err(),
+        parse_path("x,y,z\n1,2,3\n1, b,3\n", "p.csv")
+            .unwrap_err()
+            .to_string(),
         "p.csv:3:4: \"b\" is not a number"
     );
     assert_eq!(
-        parse_path("1,2,3,4\n", "p.csv").unwrap_err(),
+        parse_path("1,2,3,4\n", "p.csv").unwrap_err().to_string(),
         "p.csv:1:7: expected 3 fields x,y,z, found 4"
     );
     assert_eq!(
-        parse_path("1,2\n", "p.csv").unwrap_err(),
+        parse_path("1,2\n", "p.csv").unwrap_err().to_string(),
         "p.csv:1:4: expected 3 fields x,y,z, found 2"
     );
     assert_eq!(
-        parse_path("1,2,3\nx,y,z\n", "p.csv").unwrap_err(),
+        parse_path("1,2,3\nx,y,z\n", "p.csv")
+            .unwrap_err()
+            .to_string(),
         "p.csv:2:1: \"x\" is not a number"
     );
     assert_eq!(
-        parse_path("1,inf,3\n", "p.csv").unwrap_err(),
+        parse_path("1,inf,3\n", "p.csv").unwrap_err().to_string(),
         "p.csv:1:3: \"inf\" is not a finite number"
     );
     assert_eq!(
-        parse_path("x,y,z\n", "p.csv").unwrap_err(),
+        parse_path("x,y,z\n", "p.csv").unwrap_err().to_string(),
         "p.csv: no tool positions: give one row x,y,z per step"
     );
 }

@@ -4,6 +4,7 @@ mod array_args;
 mod blist;
 mod export_verilog;
 mod gen_vectors;
+mod lib_errors;
 mod memory;
 mod phantom;
 mod render;

@@ -275,7 +275,12 @@ fn on_panels(
         return Err("--panel and --probe do not go together: probes watch the whole array".into());
     }
     let ps = csgpix::panels::PanelScene::new(csg, a.view.into(), (cfg.width, cfg.height), cfg.fmt)
-        .map_err(|e| format!("{}: {e}", a.scenes[0].display()))?;
+        .map_err(|e| format!("{}: {}", a.scenes[0].display(), super::lib_errors::draw(e)))?;
     let cycle = a.array.model == Model::Cycle;
-    csgpix::panels::render_on_panels(&ps, panel, cycle, &a.array.equations()?)
+    Ok(csgpix::panels::render_on_panels(
+        &ps,
+        panel,
+        cycle,
+        &a.array.equations()?,
+    )?)
 }

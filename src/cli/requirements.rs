@@ -242,7 +242,8 @@ fn render_program(a: &Args, scene: &CsgScene) -> Result<(usize, u64), String> {
         fmt: a.word,
         ..ArrayConfig::new(w, h)
     };
-    let Projected { lists, clip } = project(scene, a.view.into(), w, h, &cfg.fmt)?;
+    let Projected { lists, clip } =
+        project(scene, a.view.into(), w, h, &cfg.fmt).map_err(super::lib_errors::draw)?;
     let Some(clip) = clip else {
         return Ok((0, 0));
     };

@@ -93,7 +93,7 @@ impl Scene {
         scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);
         let Projected { lists, clip } = project(&scene, view, w, h, &cfg.fmt)
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+            .map_err(|e| format!("{}: {}", path.display(), super::lib_errors::draw(e)))?;
         let origins = scene
             .solids
             .iter()

@@ -16,6 +16,7 @@ use rtl_model::WordFormat;
 use serde::Serialize;
 use std::io::Write;
 
+use super::lib_errors;
 use super::voxelize::{parse_res, GridArgs};
 
 #[derive(clap::Args, Debug)]
@@ -42,7 +43,7 @@ pub struct Args {
     #[command(flatten)]
     grid: GridArgs,
     /// The tool: sphere:R, R in voxels (0 < R <= 128).
-    #[arg(long, value_parser = sculpt::parse_tool)]
+    #[arg(long, value_parser = parse_tool)]
     tool: f64,
     /// Add material instead of removing it.
     #[arg(long)]
@@ -130,7 +131,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         stiffness: a.stiffness,
     };
     let t1 = Instant::now();
-    let mut s = Sculptor::new(store, frame, dims, tool)?;
+    let mut s = Sculptor::new(store, frame, dims, tool).map_err(lib_errors::sculpt)?;
     let initial_mesh_seconds = t1.elapsed().as_secs_f64();
     let triangles_before = s.mesh.len();
     let t2 = Instant::now();
@@ -199,6 +200,11 @@ fn run_path(s: &mut Sculptor, path: &[DVec3]) -> Result<Vec<Step>, String> {
     Ok(steps)
 }
 
+/// `--tool`: `sphere:R`, R in voxels.
+fn parse_tool(s: &str) -> Result<f64, String> {
+    sculpt::parse_tool(s).map_err(lib_errors::sculpt)
+}
+
 fn finite(s: &str) -> Result<f64, String> {
     match s.trim().parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
@@ -232,7 +238,8 @@ fn load_nrrd(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let dims = n.sizes;
     let voxels = sculpt::nrrd_voxels(&n, a.threshold);
     drop(n);
-    let store = OptimizedOctree::from_volume(&Volume { dims, voxels }, a.mem.bytes())?;
+    let store = OptimizedOctree::from_volume(&Volume { dims, voxels }, a.mem.bytes())
+        .map_err(lib_errors::sculpt)?;
     Ok((store, frame, dims))
 }
 
@@ -254,7 +261,8 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
     let slicer = Slicer::with_sampling(scene, grid, WordFormat::THESIS, a.grid.sampling.sampling())
         .map_err(|e| format!("{name}: {e}"))?
         .with_sampled(loaded.sampled);
-    let store = csgpix::octree_from_scene(&slicer, &scene.root, budget - need)?;
+    let store = csgpix::octree_from_scene(&slicer, &scene.root, budget - need)
+        .map_err(lib_errors::sculpt)?;
     Ok((store, Frame::of_grid(&grid), grid.dims))
 }
 

@@ -291,10 +291,12 @@ fn scene_report(
     let scene = read_scene(path)?;
     let fmt = scene_word(a, &scene)?;
     let ps = PanelScene::new(&scene, a.view.into(), a.screen, fmt)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
+        .map_err(|e| format!("{}: {}", path.display(), super::lib_errors::draw(e)))?;
     let set = Equations::Derived.set();
     let counted = count_cycles(&set);
-    let simulated = |cfg: &ArrayConfig, ops: &[Op]| simulate(cfg, &set, ops, a.mem);
+    let simulated = |cfg: &ArrayConfig, ops: &[Op]| {
+        simulate(cfg, &set, ops, a.mem).map_err(csgpix::draw::Error::Msg)
+    };
     let count: &csgpix::panels::Counter = if a.simulate { &simulated } else { &counted };
     let all = vec![true; ps.lists.len()];
     let one = counted(&ps.panel_config(a.screen), &ps.frame_ops(&all)?)?;

@@ -25,6 +25,7 @@ use rtl_model::{Equations, WordFormat};
 use serde::Serialize;
 
 use super::array_args::parse_word;
+use super::lib_errors;
 use super::EquationsArg;
 
 #[derive(clap::Args, Debug)]
@@ -540,7 +541,7 @@ fn write_mesh(
             need.div_ceil(1 << 20)
         ));
     }
-    let store = octree::OptimizedOctree::from_volume(v, budget)?;
+    let store = octree::OptimizedOctree::from_volume(v, budget).map_err(lib_errors::sculpt)?;
     let frame = csgpix::sculpt::Frame::of_grid(grid);
     let tris: Vec<csgpix::mesh::Tri> = octree::mc::marching_cubes(&store)
         .triangles
@@ -569,18 +570,18 @@ fn with_store(
     budget: u64,
 ) -> Result<(Volume, Work, Option<StoreReport>), String> {
     let dims = slicer.grid.dims;
-    let mut b = octree::builder(kind, dims, budget)?;
+    let mut b = octree::builder(kind, dims, budget).map_err(lib_errors::sculpt)?;
     let mut voxels = Vec::with_capacity(dims.iter().product());
     let mut build = std::time::Duration::ZERO;
     let work = voxelize_streaming(slicer, route, set, eval, tick, &mut |k, s| {
         voxels.extend_from_slice(s);
         let t = Instant::now();
-        let r = b.push(k, s);
+        let r = b.push(k, s).map_err(lib_errors::sculpt);
         build += t.elapsed();
         r
     })?;
     let t = Instant::now();
-    let st = b.finish()?;
+    let st = b.finish().map_err(lib_errors::sculpt)?;
     build += t.elapsed();
     let r = StoreReport {
         kind,

@@ -19,10 +19,14 @@ pub const INTERIOR_COLOUR: u32 = 7;
 
 /// A plane the array cannot take, located by plane index (0-based) and field (0-based: Z0,
 /// dZx, dZy, colour) so the caller can point at the file position.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CompileError {
+    /// Index of the plane in its display list (0-based).
     pub plane: usize,
+    /// The field at fault, 0-based in the plane's row (0 Z0, 1 dZx, 2 dZy, 3 colour, …),
+    /// or [`WHOLE_PROGRAM`].
     pub field: usize,
+    /// What is wrong, one line.
     pub msg: String,
 }
 

@@ -27,10 +27,13 @@ type Span = Vec<(f64, Tag, f64, Tag)>;
 /// The float image and, per pixel, how close the hardware's decisions come to a tie.
 #[derive(Clone, Debug)]
 pub struct FloatImage {
+    /// Pixels per row.
     pub width: usize,
+    /// Rows.
     pub height: usize,
     /// Visible depth, `None` for background.
     pub depth: Vec<Option<f64>>,
+    /// Colour code per pixel (row-major), 0 for background.
     pub colour: Vec<u32>,
     /// The smallest gap, in depth units, between any two plane values at this pixel, or
     /// between a plane value and 0 or maxdepth: below twice the rounding bound the word model
@@ -231,9 +234,13 @@ pub enum Verdict {
 /// Counts of each [`Verdict`] over an image, and the unexplained pixels (index y·W + x).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Agreement {
+    /// Pixels where both models show the same.
     pub equal: usize,
+    /// Pixels that differ where a decision is within rounding of a tie ([`Verdict::NearTie`]).
     pub near_tie: usize,
+    /// Pixels that differ by the thesis's rule for back planes in front of the screen ([`Verdict::ScreenRule`]).
     pub screen_rule: usize,
+    /// Pixels that differ with no explanation (index y·W + x).
     pub unexplained: Vec<usize>,
 }
 

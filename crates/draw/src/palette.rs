@@ -33,7 +33,7 @@ pub fn rgb(code: u32) -> [u8; 3] {
 const FAR_SHADE: f64 = 0.45;
 
 /// RGB of every pixel. With `depths` (one per pixel, `None` where nothing is drawn) a pixel is
-/// shaded by depth: the nearest drawn depth at full colour, the farthest at [`FAR_SHADE`], so
+/// shaded by depth: the nearest drawn depth at full colour, the farthest at 0.45 of it, so
 /// faces of one colour stay apart. Background (code 0) stays black.
 pub fn image_rgb(codes: &[u32], depths: Option<&[Option<f64>]>) -> Vec<[u8; 3]> {
     let Some(depths) = depths else {

@@ -29,12 +29,16 @@ use csgpix_scene::clip_expr::Clip;
 use csgpix_scene::display_list::DisplayList;
 use csgpix_scene::solid::{CsgNode, CsgScene};
 
+use crate::{Error, Result};
+
 /// An inclusive pixel rectangle: x0, y0, x1, y1.
 pub type Rect = (usize, usize, usize, usize);
 
 /// A scene projected onto the whole screen, ready to be cut into panels.
 pub struct PanelScene {
+    /// The screen, S_n × S_m pixels (§2.5).
     pub screen: (usize, usize),
+    /// The depth word of every panel.
     pub fmt: WordFormat,
     /// One display list per solid, in screen coordinates (as `render` draws them).
     pub lists: Vec<DisplayList>,
@@ -53,7 +57,7 @@ impl PanelScene {
         view: View,
         screen: (usize, usize),
         fmt: WordFormat,
-    ) -> Result<PanelScene, String> {
+    ) -> Result<PanelScene> {
         let (w, h) = screen;
         // The lists `render` draws (with the outline planes projection adds where the screen
         // rule would draw a solid beside itself), and for slices the faces with every
@@ -91,18 +95,18 @@ impl PanelScene {
 
     /// The program drawing the solids in `present` (the rest are nothing), in screen
     /// coordinates; empty when the tree leaves nothing to draw.
-    pub fn frame_ops(&self, present: &[bool]) -> Result<Vec<Op>, String> {
+    pub fn frame_ops(&self, present: &[bool]) -> Result<Vec<Op>> {
         let Some(clip) = clip_of(&restrict(&self.root, present)) else {
             return Ok(vec![]);
         };
         let colour_bits = colour_bits(&self.fmt);
         clip_scene_ops(&self.lists, &clip, &self.fmt, colour_bits)
-            .map_err(|(i, e)| format!("solid {}: {e}", i + 1))
+            .map_err(|(solid, error)| Error::Solid { solid, error })
     }
 
     /// The P·Vz program of solid `prim` (§4.4, §5.2.1: @(P)·Vz + @(Vz)·P) for a slab one
     /// depth unit thick; every slab's program has the same operations, so the same clocks.
-    pub fn slice_ops(&self, prim: usize) -> Result<Vec<Op>, String> {
+    pub fn slice_ops(&self, prim: usize) -> Result<Vec<Op>> {
         let colour = self.slice_lists[prim]
             .planes
             .first()
@@ -113,7 +117,7 @@ impl PanelScene {
         ];
         let expr = Clip::And(Box::new(Clip::Obj(0)), Box::new(Clip::Obj(1)));
         clip_scene_ops(&lists, &expr, &self.fmt, colour_bits(&self.fmt))
-            .map_err(|(_, e)| format!("solid {}: {e}", prim + 1))
+            .map_err(|(_, error)| Error::Solid { solid: prim, error })
     }
 
     /// The configuration of one n × m panel's array.
@@ -191,6 +195,7 @@ pub use rtl_model::program::translate;
 pub struct PanelWork {
     /// Column and row of the panel in the tiling.
     pub col: usize,
+    /// Row of the panel in the tiling (see `col`).
     pub row: usize,
     /// Solids binned to it (0-based, file order).
     pub prims: Vec<usize>,
@@ -230,10 +235,10 @@ pub fn bins(
 }
 
 /// Clocks of a program on an array, by a counter: [`program_cycles`] or a run of a model.
-pub type Counter<'a> = dyn Fn(&ArrayConfig, &[Op]) -> Result<u64, String> + 'a;
+pub type Counter<'a> = dyn Fn(&ArrayConfig, &[Op]) -> Result<u64> + 'a;
 
 /// The rtl-model's count of a program's clocks (equal to running it on either model).
-pub fn count_cycles(set: &EquationSet) -> impl Fn(&ArrayConfig, &[Op]) -> Result<u64, String> + '_ {
+pub fn count_cycles(set: &EquationSet) -> impl Fn(&ArrayConfig, &[Op]) -> Result<u64> + '_ {
     move |cfg, ops| Ok(program_cycles(cfg, set, ops))
 }
 
@@ -246,18 +251,18 @@ pub fn panel_work(
     ps: &PanelScene,
     panel: (usize, usize),
     count: &Counter,
-) -> Result<Vec<PanelWork>, String> {
+) -> Result<Vec<PanelWork>> {
     let (cols, rows) = tiling(ps.screen, panel);
     if cols * rows > MAX_PANELS {
-        return Err(format!(
+        return Err(Error::Msg(format!(
             "{cols}x{rows} panels of {}x{}: more than {MAX_PANELS} to bin (use larger panels)",
             panel.0, panel.1
-        ));
+        )));
     }
     let cfg = ps.panel_config(panel);
     let slice: Vec<u64> = (0..ps.lists.len())
         .map(|p| count(&cfg, &ps.slice_ops(p)?))
-        .collect::<Result<_, String>>()?;
+        .collect::<Result<_>>()?;
     let mut cache: HashMap<Vec<usize>, u64> = HashMap::new();
     let mut out = vec![];
     for (k, prims) in bins(&ps.footprints, ps.screen, panel)
@@ -294,6 +299,7 @@ pub fn presence(prims: &[usize], n: usize) -> Vec<bool> {
 /// A scene's frame and slice rates on n × m panels, measured and by the formula.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct SceneEstimate {
+    /// The panel, n × m pixels.
     pub panel: (usize, usize),
     /// Panels tiling the screen (columns × rows).
     pub panels: usize,
@@ -307,14 +313,18 @@ pub struct SceneEstimate {
     pub slowest: (usize, usize),
     /// Clocks of the slowest panel's frame: the frame's clocks.
     pub frame_cycles: u64,
+    /// Seconds of the frame at the clock period t (§2.5).
     pub frame_s: f64,
+    /// Frames per second.
     pub fps: f64,
     /// Clocks of the slowest panel's slice.
     pub slice_cycles: u64,
+    /// Slices per second (§4.4: one P·Vz program a slice).
     pub slices_per_s: f64,
     /// Eq. 2.5 (Table 2.1 reading): the scene's surfaces spread evenly over S_n·S_m/(n·m)
     /// panels at N_D clocks each.
     pub formula_frame_s: f64,
+    /// Frames per second by eq. 2.5.
     pub formula_fps: f64,
     /// Eq. 5.1 with P_R = the panels' surfaces per second (eq. 2.5 × 1/t) and N_s = the
     /// scene's surfaces.
@@ -370,6 +380,7 @@ pub fn estimate(
 pub struct PanelImage {
     /// Per screen pixel, row-major: the colour code in G and the depth word in C.
     pub colour: Vec<u32>,
+    /// Per screen pixel, row-major: the depth word in C.
     pub depth: Vec<i64>,
     /// Panels whose program draws anything, and so were simulated.
     pub simulated_panels: usize,
@@ -390,7 +401,7 @@ pub fn render_on_panels(
     panel: (usize, usize),
     cycle: bool,
     set: &EquationSet,
-) -> Result<PanelImage, String> {
+) -> Result<PanelImage> {
     use rtl_model::program::{CReg, Reg};
     use rtl_model::{Array, CycleArray, WordArray};
     let (w, h) = ps.screen;

@@ -5,11 +5,16 @@
 
 use csgpix_scene::display_list::{DisplayList, DlPlane};
 
+use crate::{Error, Result};
+
 /// The plane a polygon lies in: depth Z0 + x·dZx + y·dZy.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Support {
+    /// Depth at pixel (0, 0).
     pub z0: f64,
+    /// Depth step per pixel along x.
     pub dzx: f64,
+    /// Depth step per pixel along y.
     pub dzy: f64,
 }
 
@@ -34,16 +39,12 @@ fn perpendicular(a: (f64, f64), b: (f64, f64), inside_left: bool) -> Option<DlPl
 }
 
 /// A convex polygon with vertices in pixel coordinates, in either winding.
-pub fn polygon(
-    support: Support,
-    colour: u32,
-    vertices: &[(f64, f64)],
-) -> Result<DisplayList, String> {
+pub fn polygon(support: Support, colour: u32, vertices: &[(f64, f64)]) -> Result<DisplayList> {
     if vertices.len() < 3 {
-        return Err(format!(
+        return Err(Error::Msg(format!(
             "a polygon needs at least 3 vertices, got {}",
             vertices.len()
-        ));
+        )));
     }
     let n = vertices.len();
     let cross = |i: usize| {
@@ -81,7 +82,7 @@ pub fn line(
     a: (f64, f64),
     b: (f64, f64),
     width: f64,
-) -> Result<DisplayList, String> {
+) -> Result<DisplayList> {
     let (ex, ey) = (b.0 - a.0, b.1 - a.1);
     let len = (ex * ex + ey * ey).sqrt();
     if len < 1e-12 || width <= 0.0 {

@@ -23,6 +23,8 @@ use csgpix_scene::display_list::{DisplayList, DlPlane};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene};
 use rtl_model::WordFormat;
 
+use crate::{Error, Result};
+
 /// Depth of the scene's nearest point, in depth units (pixels).
 pub const DEPTH_MARGIN: f64 = 4.0;
 
@@ -65,6 +67,7 @@ pub fn max_slope(fmt: &WordFormat, width: usize, height: usize) -> f64 {
 /// Where the scene lands on the array.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Frame {
+    /// Rows: the scene directions of screen u (right), v (down) and w (into the screen).
     pub basis: DMat3,
     /// Minimum (u, v, w) of the scene in view coordinates.
     pub min: DVec3,
@@ -76,7 +79,7 @@ pub struct Frame {
 
 impl Frame {
     /// Fit `scene` into a `width`×`height` array.
-    pub fn fit(scene: &CsgScene, view: View, width: usize, height: usize) -> Result<Frame, String> {
+    pub fn fit(scene: &CsgScene, view: View, width: usize, height: usize) -> Result<Frame> {
         let basis = view.basis();
         let pts = scene
             .solids
@@ -278,7 +281,9 @@ pub fn display_lists(scene: &CsgScene, frame: &Frame, slope_limit: f64) -> Vec<D
 /// its tree (None when the tree is empty: nothing is drawn).
 #[derive(Clone, Debug)]
 pub struct Projected {
+    /// One display list per solid, in scene order (§5.2).
     pub lists: Vec<DisplayList>,
+    /// The clipping function of the CSG tree (§5.2.1), None when nothing is drawn.
     pub clip: Option<Clip>,
 }
 
@@ -291,7 +296,7 @@ pub fn project(
     width: usize,
     height: usize,
     fmt: &WordFormat,
-) -> Result<Projected, String> {
+) -> Result<Projected> {
     let clip = clip_of(&scene.root);
     if clip.is_none() || scene.solids.is_empty() {
         return Ok(Projected {
@@ -305,11 +310,13 @@ pub fn project(
     if deepest >= maxdepth {
         // The fewest integer bits whose maxdepth (2^I) is beyond the deepest point.
         let int = (deepest.log2().floor() as u32 + 1).max(fmt.int + 1);
-        return Err(format!(
-            "the scene is {deepest:.0} depth units deep on a {width}x{height} array, beyond \
-             maxdepth {maxdepth}: use --word {}/{int}/{} or a smaller --size",
-            fmt.frac, fmt.ovf
-        ));
+        return Err(Error::DeeperThanMaxdepth {
+            detail: format!(
+                "the scene is {deepest:.0} depth units deep on a {width}x{height} array, \
+                 beyond maxdepth {maxdepth}"
+            ),
+            suggested: WordFormat { int, ..*fmt },
+        });
     }
     let mut lists = display_lists(scene, &frame, max_slope(fmt, width, height));
     // A back face in front of the screen meets the row "A < 0 <= B: Put 1" of §2.3.3, which

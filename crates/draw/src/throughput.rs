@@ -81,12 +81,14 @@ pub enum Reading {
 }
 
 impl Reading {
+    /// Every reading, in the order of Table 2.1's discussion.
     pub const ALL: [Reading; 3] = [
         Reading::PrintedMp1,
         Reading::PrintedMpPanels,
         Reading::Table,
     ];
 
+    /// The reading's name in reports.
     pub fn name(self) -> &'static str {
         match self {
             Reading::PrintedMp1 => "printed, M_P = 1",
@@ -123,11 +125,15 @@ pub fn slices_per_second(surfaces_per_second: f64, surfaces_per_primitive: f64) 
 /// One row of Table 2.1 under every reading of eq. 2.5.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PanelRow {
+    /// The panel, n × m pixels.
     pub panel: (usize, usize),
     /// S_n·S_m / (n·m).
     pub panels: f64,
+    /// Surfaces per second by eq. 2.5 as printed, with M_P = 1.
     pub printed_mp1: f64,
+    /// Surfaces per second by eq. 2.5 as printed, M_P the number of panels.
     pub printed_mp_panels: f64,
+    /// Surfaces per second as Table 2.1 gives them.
     pub table: f64,
     /// Surfaces per second under the Table 2.1 reading (`table / t`), the P_R of eq. 5.1.
     pub table_per_second: f64,
@@ -192,8 +198,11 @@ mod tests {
 /// `tests/verilog.rs` runs Yosys and checks these figures against it (docs/verilog.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct PixelCost {
+    /// LUT4s of `synth -lut 4`.
     pub lut4: u64,
+    /// LUT6s of `synth` + `abc -lut 6`.
     pub lut6: u64,
+    /// Flip-flops.
     pub flip_flops: u64,
 }
 
@@ -208,9 +217,13 @@ pub const PIXEL_COST: PixelCost = PixelCost {
 /// pixel processors: DEPGEN's trees and the controller, shared by a panel, are not costed.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct AreaRow {
+    /// The panel, n × m pixels.
     pub panel: (usize, usize),
+    /// LUTs of its pixel processors.
     pub luts: u64,
+    /// Flip-flops of its pixel processors.
     pub flip_flops: u64,
+    /// Do they fit the budget?
     pub fits: bool,
 }
 

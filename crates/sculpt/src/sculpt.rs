@@ -14,8 +14,11 @@ use serde::Serialize;
 
 use crate::octree::cell::{BEYOND, CORNERS};
 use crate::octree::key::{self, Key};
-use crate::octree::{mc, OptimizedOctree, VoxelStore};
+use crate::octree::{mc, OptimizedOctree, SurfaceWalk, VoxelStore};
 use csgpix_scene::mesh::Tri;
+use csgpix_scene::Error as SceneError;
+
+use crate::{Error, Result};
 
 /// Largest tool radius, in voxels: a step then touches at most (2·128 + 2)³ cells.
 pub const MAX_RADIUS: f64 = 128.0;
@@ -24,7 +27,9 @@ pub const MAX_RADIUS: f64 = 128.0;
 /// Marching Cubes works in voxel units with the same origin (`octree::mc`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Frame {
+    /// Scene position of voxel (0, 0, 0)'s centre.
     pub origin: DVec3,
+    /// Size of a voxel along each axis, in scene units.
     pub voxel: DVec3,
 }
 
@@ -93,7 +98,7 @@ impl CellMesh {
     pub fn of_store(store: &OptimizedOctree) -> CellMesh {
         let mut m = CellMesh::default();
         let mut scratch = Vec::with_capacity(CELL_TRIS);
-        store.for_each_surface_cell(&mut |p, v| m.set(p, v, &mut scratch));
+        store.walk_surface(|p, v| m.set(p, v, &mut scratch));
         m
     }
 
@@ -146,6 +151,7 @@ impl CellMesh {
         self.live
     }
 
+    /// No triangle?
     pub fn is_empty(&self) -> bool {
         self.live == 0
     }
@@ -196,17 +202,19 @@ pub struct Tool {
 }
 
 /// `sphere:R` (R in voxels).
-pub fn parse_tool(s: &str) -> Result<f64, String> {
+pub fn parse_tool(s: &str) -> Result<f64> {
+    let bad = |reason: String| Error::BadTool {
+        spec: s.to_string(),
+        reason,
+    };
     let r = s
         .strip_prefix("sphere:")
-        .ok_or_else(|| format!("--tool {s:?}: expected sphere:R (R in voxels)"))?;
-    let r: f64 = r
-        .trim()
-        .parse()
-        .map_err(|e| format!("--tool {s:?}: radius: {e}"))?;
-    check_radius(r).map_err(|e| format!("--tool {s:?}: {e}"))
+        .ok_or_else(|| bad("expected sphere:R (R in voxels)".into()))?;
+    let r: f64 = r.trim().parse().map_err(|e| bad(format!("radius: {e}")))?;
+    check_radius(r).map_err(bad)
 }
 
+/// The radius if it is in (0, [`MAX_RADIUS`]], else why not.
 fn check_radius(r: f64) -> Result<f64, String> {
     if r.is_finite() && r > 0.0 && r <= MAX_RADIUS {
         Ok(r)
@@ -219,8 +227,11 @@ fn check_radius(r: f64) -> Result<f64, String> {
 
 /// The sculpting state: the store, its per-cell mesh and the haptic contact.
 pub struct Sculptor {
+    /// The optimized octree being sculpted (§4.3.4).
     pub store: OptimizedOctree,
+    /// Its mesh, one entry per surface cell (local Marching Cubes, §5.2).
     pub mesh: CellMesh,
+    /// Where the voxels sit in the scene.
     pub frame: Frame,
     tool: Tool,
     /// Voxels the tool may change: 0..limit on each axis.
@@ -269,10 +280,10 @@ impl Sculptor {
         frame: Frame,
         dims: [usize; 3],
         tool: Tool,
-    ) -> Result<Sculptor, String> {
+    ) -> Result<Sculptor> {
         check_radius(tool.radius)?;
         if !(tool.stiffness.is_finite() && tool.stiffness >= 0.0) {
-            return Err("--stiffness must be a finite number >= 0".into());
+            return Err(Error::BadStiffness);
         }
         let side = store.side() as u32;
         let limit = dims.map(|d| (d.min(u32::MAX as usize) as u32).min(side));
@@ -297,7 +308,7 @@ impl Sculptor {
     }
 
     /// One haptic step with the tool's centre (the HIP) at `hip`, in scene units.
-    pub fn step(&mut self, hip: DVec3) -> Result<Step, String> {
+    pub fn step(&mut self, hip: DVec3) -> Result<Step> {
         let t0 = Instant::now();
         let nodes = self.store.node_count();
         let contact = self.collide(self.frame.to_voxel(hip));
@@ -382,7 +393,7 @@ impl Sculptor {
     /// Rewrites the byte of every cell having a changed voxel as a corner (the changed voxels
     /// ⊕ {0, 1}³, seed 000 §5.2 and the digest's general rule) and re-meshes exactly the cells
     /// whose byte changed. Returns how many.
-    fn update(&mut self) -> Result<u32, String> {
+    fn update(&mut self) -> Result<u32> {
         if self.flips.is_empty() {
             return Ok(0);
         }
@@ -403,7 +414,7 @@ impl Sculptor {
     /// Applies the corner flips of the mask box at `lo` (dims `n`) to the store and the mesh.
     /// The cells past the grid's far faces are not stored: once the stored cells are set,
     /// each is re-meshed with the byte read from the stored cell it borders.
-    fn apply_masks(&mut self, lo: [u32; 3], n: [usize; 3]) -> Result<u32, String> {
+    fn apply_masks(&mut self, lo: [u32; 3], n: [usize; 3]) -> Result<u32> {
         let side = self.store.side() as u32;
         let at = |i: usize| {
             [
@@ -470,7 +481,7 @@ impl Sculptor {
 /// Tool positions from a CSV file's text: columns x, y, z in scene units, one row per
 /// position; blank lines and `#` comments are skipped, and the first row may be a header
 /// (no field of it a number). Errors read `file:line:col: message`.
-pub fn parse_path(text: &str, file: &str) -> Result<Vec<DVec3>, String> {
+pub fn parse_path(text: &str, file: &str) -> Result<Vec<DVec3>> {
     let mut out = Vec::new();
     let mut first = true;
     for (n, raw) in text.lines().enumerate() {
@@ -487,9 +498,9 @@ pub fn parse_path(text: &str, file: &str) -> Result<Vec<DVec3>, String> {
         out.push(parse_row(&fields, line.len(), file, n + 1)?);
     }
     if out.is_empty() {
-        return Err(format!(
+        return Err(Error::Msg(format!(
             "{file}: no tool positions: give one row x,y,z per step"
-        ));
+        )));
     }
     Ok(out)
 }
@@ -506,27 +517,25 @@ fn fields(line: &str) -> Vec<(usize, &str)> {
         .collect()
 }
 
-fn parse_row(
-    fields: &[(usize, &str)],
-    len: usize,
-    file: &str,
-    line: usize,
-) -> Result<DVec3, String> {
+fn parse_row(fields: &[(usize, &str)], len: usize, file: &str, line: usize) -> Result<DVec3> {
     if fields.len() != 3 {
         let col = fields.get(3).map_or(len + 1, |f| f.0);
-        return Err(format!(
-            "{file}:{line}:{col}: expected 3 fields x,y,z, found {}",
-            fields.len()
-        ));
+        let found = fields.len();
+        let msg = format!("expected 3 fields x,y,z, found {found}");
+        return Err(Error::Scene(SceneError::at(file, line, col, msg)));
     }
     let mut v = [0.0; 3];
     for (i, (col, f)) in fields.iter().enumerate() {
         let f = f.trim();
-        v[i] = match f.parse::<f64>() {
-            Ok(x) if x.is_finite() => x,
-            Ok(_) => return Err(format!("{file}:{line}:{col}: {f:?} is not a finite number")),
-            Err(_) => return Err(format!("{file}:{line}:{col}: {f:?} is not a number")),
+        let msg = match f.parse::<f64>() {
+            Ok(x) if x.is_finite() => {
+                v[i] = x;
+                continue;
+            }
+            Ok(_) => format!("{f:?} is not a finite number"),
+            Err(_) => format!("{f:?} is not a number"),
         };
+        return Err(Error::Scene(SceneError::at(file, line, *col, msg)));
     }
     Ok(DVec3::from_array(v))
 }
@@ -534,7 +543,7 @@ fn parse_row(
 /// The frame of a NRRD volume read by [`csgpix_scene::nrrd::read_nrrd`] (`space origin`, and
 /// `space directions` or `spacings`): the octree's cells are axis-aligned, so the steps must
 /// be positive and along the axes.
-pub fn nrrd_frame(n: &csgpix_scene::nrrd::Nrrd) -> Result<Frame, String> {
+pub fn nrrd_frame(n: &csgpix_scene::nrrd::Nrrd) -> Result<Frame> {
     let d = n.directions;
     let voxel = DVec3::new(d.x_axis.x, d.y_axis.y, d.z_axis.z);
     let off = [
@@ -562,10 +571,15 @@ pub fn nrrd_voxels(n: &csgpix_scene::nrrd::Nrrd, threshold: Option<f64>) -> Vec<
 /// Step latency figures, microseconds.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct Latency {
+    /// Steps timed.
     pub steps: usize,
+    /// Median step, µs.
     pub median_us: f64,
+    /// 99th percentile (nearest rank), µs.
     pub p99_us: f64,
+    /// Slowest step, µs.
     pub max_us: f64,
+    /// Mean step, µs.
     pub mean_us: f64,
 }
 

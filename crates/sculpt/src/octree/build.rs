@@ -11,6 +11,7 @@
 //! pointer octree links children to parents.
 
 use super::key::{self, Key};
+use crate::{Error, Result};
 
 /// What a store does with the nodes the pyramid decides.
 pub trait Merge {
@@ -32,7 +33,7 @@ pub trait Merge {
         self.leaf(v)
     }
     /// A parent with key `key` whose children (location codes 0..8) are nodes of the tree.
-    fn internal(&mut self, key: Key, children: [Self::Node; 8]) -> Result<Self::Node, String>;
+    fn internal(&mut self, key: Key, children: [Self::Node; 8]) -> Result<Self::Node>;
 }
 
 /// One level's pending layers.
@@ -56,6 +57,7 @@ pub struct Pyramid<M: Merge> {
     cells_filled: usize,
     /// Parent layers made from cell layers so far.
     cells_z: u32,
+    /// The store's side of the build: what it keeps of each decided node.
     pub merge: M,
     /// Cell layers received.
     layers: usize,
@@ -101,15 +103,15 @@ impl<M: Merge> Pyramid<M> {
     }
 
     /// The next layer of cells (side² case bytes, X fastest).
-    pub fn push_cells(&mut self, cells: &[u8]) -> Result<(), String> {
+    pub fn push_cells(&mut self, cells: &[u8]) -> Result<()> {
         let d = self.depth as usize;
         let n2 = 1usize << (2 * d);
         if self.layers >= 1 << d || cells.len() < n2 {
-            return Err(format!(
+            return Err(Error::Msg(format!(
                 "cell layer {} of {} cells: not a layer of this octree",
                 self.layers,
                 cells.len()
-            ));
+            )));
         }
         self.layers += 1;
         if d == 0 {
@@ -139,7 +141,7 @@ impl<M: Merge> Pyramid<M> {
     }
 
     /// Level l has one more layer: at two, join them into a layer of level l − 1.
-    fn layer_done(&mut self, l: usize) -> Result<(), String> {
+    fn layer_done(&mut self, l: usize) -> Result<()> {
         if l == 0 {
             self.root = Some(std::mem::take(&mut self.levels[0].buf[0]));
             return Ok(());
@@ -155,7 +157,7 @@ impl<M: Merge> Pyramid<M> {
     }
 
     /// Parents at level l − 1 of the two layers held at level l.
-    fn join(&mut self, l: usize) -> Result<(), String> {
+    fn join(&mut self, l: usize) -> Result<()> {
         let (upper, lower) = self.levels.split_at_mut(l);
         let (child, par) = (&mut lower[0], &mut upper[l - 1]);
         let (n, np) = (child.n, par.n);
@@ -180,14 +182,14 @@ impl<M: Merge> Pyramid<M> {
     }
 
     /// The root, once every layer is in.
-    pub fn finish(self) -> Result<(M, M::Node, u64), String> {
+    pub fn finish(self) -> Result<(M, M::Node, u64)> {
         match self.root {
             Some(r) => Ok((self.merge, r, self.internal)),
-            None => Err(format!(
+            None => Err(Error::Msg(format!(
                 "the octree got {} of {} cell layers",
                 self.layers,
                 1usize << self.depth
-            )),
+            ))),
         }
     }
 }
@@ -199,7 +201,7 @@ fn decide<M: Merge>(
     level: usize,
     p: [usize; 3],
     kids: [M::Node; 8],
-) -> Result<M::Node, String> {
+) -> Result<M::Node> {
     let first = M::homogeneous(&kids[0]);
     if let Some(v) = first {
         if kids[1..].iter().all(|k| M::homogeneous(k) == first) {
@@ -220,7 +222,7 @@ fn join_cells<M: Merge>(
     d: usize,
     pz: u32,
     out: &mut [M::Node],
-) -> Result<(), String> {
+) -> Result<()> {
     let s = 1usize << d;
     let np = s / 2;
     let word = |at: usize| {

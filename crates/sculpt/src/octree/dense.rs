@@ -1,10 +1,9 @@
 //! The dense grid: one case byte per cell (seed 000 §3.1.1.5's `CellData[res³]`), the
 //! baseline every octree is checked against.
 
-use super::cell::CellLayers;
 use super::key::{self, Key};
-use super::mc::{self, Tri};
-use super::{check_order, StoreBuilder, StoreKind, VoxelStore};
+use super::{Slices, StoreBuilder, StoreKind, SurfaceWalk, VoxelStore};
+use crate::Result;
 
 /// side³ cells, X fastest, then Y, then Z.
 #[derive(Clone, Debug)]
@@ -15,43 +14,34 @@ pub struct DenseGrid {
 
 /// Cell layers appended as they come.
 pub struct Builder {
-    layers: CellLayers,
+    slices: Slices,
     cells: Vec<u8>,
-    width: usize,
-    next: usize,
-    depth: u32,
 }
 
 impl Builder {
+    /// A builder of a grid of side 2^depth from slices `width` voxels wide.
     pub fn new(depth: u32, width: usize) -> Builder {
         let side = 1usize << depth;
         Builder {
-            layers: CellLayers::new(side),
+            slices: Slices::new(depth, width),
             cells: Vec::with_capacity(side * side * side),
-            width,
-            next: 0,
-            depth,
         }
     }
 }
 
 impl StoreBuilder for Builder {
-    fn push(&mut self, k: usize, slice: &[u8]) -> Result<(), String> {
-        check_order(k, self.next, self.depth)?;
-        self.next += 1;
-        let layer = self.layers.next(slice, self.width);
+    fn push(&mut self, k: usize, slice: &[u8]) -> Result<()> {
+        let layer = self.slices.push(k, slice)?;
         self.cells.extend_from_slice(layer);
         Ok(())
     }
 
-    fn finish(mut self: Box<Self>) -> Result<Box<dyn VoxelStore>, String> {
-        while self.next < 1 << self.depth {
-            self.next += 1;
-            let layer = self.layers.next_empty();
+    fn finish(mut self: Box<Self>) -> Result<Box<dyn VoxelStore>> {
+        while let Some(layer) = self.slices.pad() {
             self.cells.extend_from_slice(layer);
         }
         Ok(Box::new(DenseGrid {
-            depth: self.depth,
+            depth: self.slices.depth(),
             cells: std::mem::take(&mut self.cells),
         }))
     }
@@ -97,21 +87,11 @@ impl VoxelStore for DenseGrid {
             f(key::key(x as u32, y as u32, z as u32, self.depth), v);
         }
     }
-
-    fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
-        self.surface(f);
-    }
-
-    fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
-        out.clear();
-        let t = mc::table();
-        self.surface(|p, v| t.emit(p, v, out));
-    }
 }
 
-impl DenseGrid {
+impl SurfaceWalk for DenseGrid {
     /// Every surface cell, scanning all cells in order.
-    fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
+    fn walk_surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
         let s = 1usize << self.depth;
         for (i, &v) in self.cells.iter().enumerate() {
             if v != 0 && v != 255 {

@@ -30,6 +30,7 @@ pub type Tri = csgpix_scene::mesh::Tri;
 /// A triangle soup in voxel units.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Mesh {
+    /// The triangles, each three corners in voxel units.
     pub triangles: Vec<Tri>,
 }
 

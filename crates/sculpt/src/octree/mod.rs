@@ -15,6 +15,7 @@
 pub mod build;
 pub mod cell;
 pub mod dense;
+pub mod hashed;
 pub mod key;
 pub mod mc;
 pub mod mc_tables;
@@ -23,7 +24,9 @@ pub mod plain;
 pub mod pointer;
 pub mod pointer_block;
 pub mod table;
+pub mod tree;
 
+use crate::{Error, Result};
 use csgpix_scene::grid::Volume;
 use key::Key;
 
@@ -52,6 +55,7 @@ pub enum StoreKind {
 }
 
 impl StoreKind {
+    /// Every store, in the order reports list them.
     pub const ALL: [StoreKind; 5] = [
         StoreKind::Octree,
         StoreKind::Pointer,
@@ -60,6 +64,7 @@ impl StoreKind {
         StoreKind::Dense,
     ];
 
+    /// The store's name on the command line and in reports.
     pub fn name(self) -> &'static str {
         match self {
             StoreKind::Octree => "octree",
@@ -71,8 +76,11 @@ impl StoreKind {
     }
 }
 
-/// A store of cells (seed 000 §3.1.1.5) that sculpting and Marching Cubes can use.
-pub trait VoxelStore: Send + Sync {
+/// A store of cells (seed 000 §3.1.1.5) that sculpting and Marching Cubes can use. Its
+/// surface traversal and global Marching Cubes come from [`Surface`], which every
+/// [`SurfaceWalk`] has.
+pub trait VoxelStore: Send + Sync + Surface {
+    /// Which store this is.
     fn kind(&self) -> StoreKind;
     /// Levels below the root: the cell grid has side 2^depth.
     fn depth(&self) -> u32;
@@ -96,17 +104,68 @@ pub trait VoxelStore: Send + Sync {
     fn bytes(&self) -> usize;
     /// Every leaf: its key and value (a coarse leaf's value is 0 or 255).
     fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8));
+}
+
+/// A store's own surface traversal, generic in what it calls so that Marching Cubes emits
+/// each cell's triangles without a call through a pointer: the one surface method a store
+/// writes ([`Surface`] follows from it).
+pub trait SurfaceWalk {
     /// Every cell with a surface (byte not 0 nor 255), with its coordinates, the cells just
     /// past the far faces included (a coordinate equal to the side: not stored, their bytes
     /// from the stored cells they border, [`cell::beyond_leaf`]), so that meshes close.
+    fn walk_surface<F: FnMut([u32; 3], u8)>(&self, f: F);
+}
+
+/// The surface of a store, callable through `dyn` [`VoxelStore`]: what every
+/// [`SurfaceWalk`] gives.
+pub trait Surface {
+    /// Every surface cell, as [`SurfaceWalk::walk_surface`] visits them.
     fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8));
     /// Global Marching Cubes (seed 000 §3.1.2) into `out`, cleared first: every surface
     /// cell's triangles, in the store's own traversal order.
+    fn marching_cubes_into(&self, out: &mut Vec<mc::Tri>);
+}
+
+impl<S: SurfaceWalk> Surface for S {
+    fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
+        self.walk_surface(f);
+    }
+
     fn marching_cubes_into(&self, out: &mut Vec<mc::Tri>) {
         out.clear();
         let t = mc::table();
-        self.for_each_surface_cell(&mut |p, v| t.emit(p, v, out));
+        self.walk_surface(|p, v| t.emit(p, v, out));
     }
+}
+
+/// A building store's memory: bytes charged against a budget.
+#[derive(Clone, Copy, Debug)]
+pub struct Budget {
+    /// Bytes charged so far.
+    pub used: u64,
+    /// Bytes allowed.
+    pub limit: u64,
+}
+
+impl Budget {
+    /// `used` bytes charged against `limit`.
+    pub fn new(used: u64, limit: u64) -> Budget {
+        Budget { used, limit }
+    }
+
+    /// Charge `bytes` more; [`Error::OverBudget`] once past the limit.
+    pub fn charge(&mut self, bytes: u64) -> Result<()> {
+        self.used += bytes;
+        check_budget(self.used, self.limit)
+    }
+}
+
+/// [`Error::OverBudget`] when `need` bytes are more than `budget`.
+pub fn check_budget(need: u64, budget: u64) -> Result<()> {
+    if need > budget {
+        return Err(Error::OverBudget { need, budget });
+    }
+    Ok(())
 }
 
 /// The coordinates of child `c` (location code z·4 + y·2 + x, Fig. 4.1) of the node at `p`.
@@ -121,20 +180,20 @@ pub fn child_xyz(p: [u32; 3], c: u32) -> [u32; 3] {
 /// Takes voxel slices in order of z and builds a store.
 pub trait StoreBuilder {
     /// Voxel slice `k` (colour codes, 0 empty, X fastest, the volume's width per row).
-    fn push(&mut self, k: usize, slice: &[u8]) -> Result<(), String>;
+    fn push(&mut self, k: usize, slice: &[u8]) -> Result<()>;
     /// The store, once every slice is in (missing slices up to the side are empty).
-    fn finish(self: Box<Self>) -> Result<Box<dyn VoxelStore>, String>;
+    fn finish(self: Box<Self>) -> Result<Box<dyn VoxelStore>>;
 }
 
 /// Levels of the octree over a volume of `dims`: the side is the next power of two.
-pub fn depth_for(dims: [usize; 3]) -> Result<u32, String> {
+pub fn depth_for(dims: [usize; 3]) -> Result<u32> {
     let side = dims.iter().copied().max().unwrap_or(1).max(1);
     let depth = side.next_power_of_two().trailing_zeros();
     if depth > key::MAX_DEPTH {
-        return Err(format!(
+        return Err(Error::Msg(format!(
             "a side of {side} voxels needs {depth} octree levels; at most {} fit a key",
             key::MAX_DEPTH
-        ));
+        )));
     }
     Ok(depth)
 }
@@ -142,7 +201,7 @@ pub fn depth_for(dims: [usize; 3]) -> Result<u32, String> {
 /// Bytes a build needs before its nodes: the slice and cell layers, the pyramid, and for
 /// the dense grid its cells. The octrees' nodes are counted as they are made, against the
 /// budget given to [`builder`].
-pub fn memory_estimate(kind: StoreKind, dims: [usize; 3]) -> Result<u64, String> {
+pub fn memory_estimate(kind: StoreKind, dims: [usize; 3]) -> Result<u64> {
     let depth = depth_for(dims)?;
     let side = 1u64 << depth;
     let layers = cell::CellLayers::bytes(side as usize);
@@ -159,16 +218,8 @@ pub fn memory_estimate(kind: StoreKind, dims: [usize; 3]) -> Result<u64, String>
 }
 
 /// A builder for a volume of `dims` that refuses to hold more than `budget` bytes.
-pub fn builder(
-    kind: StoreKind,
-    dims: [usize; 3],
-    budget: u64,
-) -> Result<Box<dyn StoreBuilder>, String> {
-    let need = memory_estimate(kind, dims)?;
-    if need > budget {
-        return Err(over_budget(need, budget));
-    }
-    let depth = depth_for(dims)?;
+pub fn builder(kind: StoreKind, dims: [usize; 3], budget: u64) -> Result<Box<dyn StoreBuilder>> {
+    let depth = checked_depth(kind, dims, budget)?;
     Ok(match kind {
         StoreKind::Dense => Box::new(dense::Builder::new(depth, dims[0])),
         StoreKind::Octree => Box::new(build_tree(
@@ -186,92 +237,129 @@ pub fn builder(
     })
 }
 
-/// The error of a store over its memory budget.
-pub fn over_budget(need: u64, budget: u64) -> String {
-    format!(
-        "the voxel store needs more than {} MiB (limit {} MiB): lower --res or raise --max-memory",
-        need >> 20,
-        budget >> 20
-    )
+/// The depth of a store of `kind` over `dims`, once its [`memory_estimate`] fits `budget`.
+fn checked_depth(kind: StoreKind, dims: [usize; 3], budget: u64) -> Result<u32> {
+    check_budget(memory_estimate(kind, dims)?, budget)?;
+    depth_for(dims)
 }
 
 /// A store built from a whole volume, slice by slice.
-pub fn from_volume(
-    kind: StoreKind,
-    v: &Volume,
-    budget: u64,
-) -> Result<Box<dyn VoxelStore>, String> {
+pub fn from_volume(kind: StoreKind, v: &Volume, budget: u64) -> Result<Box<dyn VoxelStore>> {
     let mut b = builder(kind, v.dims, budget)?;
-    let n = v.dims[0] * v.dims[1];
-    for (k, s) in v.voxels.chunks(n.max(1)).enumerate().take(v.dims[2]) {
+    push_volume(b.as_mut(), v)?;
+    b.finish()
+}
+
+/// Every slice of `v` into `b`, in order of z.
+fn push_volume(b: &mut dyn StoreBuilder, v: &Volume) -> Result<()> {
+    let n = (v.dims[0] * v.dims[1]).max(1);
+    for (k, s) in v.voxels.chunks(n).enumerate().take(v.dims[2]) {
         b.push(k, s)?;
     }
-    b.finish()
+    Ok(())
 }
 
 /// What turns a [`build::Pyramid`]'s result into a store.
 pub trait Finish: build::Merge + Sized {
+    /// The store built.
     type Store: VoxelStore + 'static;
-    fn finish(self, root: Self::Node, internal: u64, depth: u32) -> Result<Self::Store, String>;
+    /// The store of a finished pyramid: its `root`, its `internal` node count and its `depth`.
+    fn finish(self, root: Self::Node, internal: u64, depth: u32) -> Result<Self::Store>;
 }
 
-/// The octree builder: cell layers into a pyramid.
-pub struct TreeBuilder<M: Finish> {
+/// Voxel slices in order of z made cell layers (§3.1.1.5): what every builder does with a
+/// slice before its store takes the layer.
+pub struct Slices {
     cells: cell::CellLayers,
-    pyramid: build::Pyramid<M>,
     width: usize,
     next: usize,
     depth: u32,
 }
 
-pub fn build_tree<M: Finish>(depth: u32, width: usize, merge: M) -> TreeBuilder<M> {
-    TreeBuilder {
-        cells: cell::CellLayers::new(1 << depth),
-        pyramid: build::Pyramid::new(depth, merge),
-        width,
-        next: 0,
-        depth,
+impl Slices {
+    /// Slices `width` voxels wide for a cell grid of side 2^depth.
+    pub fn new(depth: u32, width: usize) -> Slices {
+        Slices {
+            cells: cell::CellLayers::new(1 << depth),
+            width,
+            next: 0,
+            depth,
+        }
+    }
+
+    /// Levels below the root of the cell grid.
+    pub fn depth(&self) -> u32 {
+        self.depth
+    }
+
+    /// The cell layer slice `k` completes. Slices must come in order, and not past the side.
+    pub fn push(&mut self, k: usize, slice: &[u8]) -> Result<&[u8]> {
+        let next = self.next;
+        if k != next {
+            return Err(Error::Msg(format!(
+                "voxel slice {k} arrived, slice {next} was expected"
+            )));
+        }
+        if k >= 1 << self.depth {
+            return Err(Error::Msg(format!(
+                "voxel slice {k} is past the octree's side {}",
+                1usize << self.depth
+            )));
+        }
+        self.next += 1;
+        Ok(self.cells.next(slice, self.width))
+    }
+
+    /// The cell layer of the next missing slice (empty) up to the side, None once every
+    /// slice is in.
+    pub fn pad(&mut self) -> Option<&[u8]> {
+        if self.next >= 1 << self.depth {
+            return None;
+        }
+        self.next += 1;
+        Some(self.cells.next_empty())
     }
 }
 
-/// Slices must come in order, and not past the side.
-fn check_order(k: usize, next: usize, depth: u32) -> Result<(), String> {
-    if k != next {
-        return Err(format!(
-            "voxel slice {k} arrived, slice {next} was expected"
-        ));
+/// The octree builder: cell layers into a pyramid.
+pub struct TreeBuilder<M: Finish> {
+    slices: Slices,
+    pyramid: build::Pyramid<M>,
+}
+
+/// An octree builder for a cell grid of side 2^depth from slices `width` voxels wide,
+/// `merge` deciding what the store keeps.
+pub fn build_tree<M: Finish>(depth: u32, width: usize, merge: M) -> TreeBuilder<M> {
+    TreeBuilder {
+        slices: Slices::new(depth, width),
+        pyramid: build::Pyramid::new(depth, merge),
     }
-    if k >= 1 << depth {
-        return Err(format!(
-            "voxel slice {k} is past the octree's side {}",
-            1usize << depth
-        ));
-    }
-    Ok(())
 }
 
 impl<M: Finish> StoreBuilder for TreeBuilder<M> {
-    fn push(&mut self, k: usize, slice: &[u8]) -> Result<(), String> {
-        check_order(k, self.next, self.depth)?;
-        self.next += 1;
-        let layer = self.cells.next(slice, self.width);
+    fn push(&mut self, k: usize, slice: &[u8]) -> Result<()> {
+        let layer = self.slices.push(k, slice)?;
         self.pyramid.push_cells(layer)
     }
 
-    fn finish(self: Box<Self>) -> Result<Box<dyn VoxelStore>, String> {
+    fn finish(self: Box<Self>) -> Result<Box<dyn VoxelStore>> {
         Ok(Box::new(self.finish_store()?))
     }
 }
 
 impl<M: Finish> TreeBuilder<M> {
     /// The store itself (not boxed), once every slice is in.
-    pub fn finish_store(mut self) -> Result<M::Store, String> {
-        while self.next < 1 << self.depth {
-            self.next += 1;
-            let layer = self.cells.next_empty();
+    pub fn finish_store(mut self) -> Result<M::Store> {
+        while let Some(layer) = self.slices.pad() {
             self.pyramid.push_cells(layer)?;
         }
         let (merge, root, internal) = self.pyramid.finish()?;
-        merge.finish(root, internal, self.depth)
+        merge.finish(root, internal, self.slices.depth())
+    }
+
+    /// The store of a whole volume, slice by slice.
+    pub fn store_of(mut self, v: &Volume) -> Result<M::Store> {
+        push_volume(&mut self, v)?;
+        self.finish_store()
     }
 }

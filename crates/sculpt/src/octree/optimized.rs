@@ -8,11 +8,11 @@
 //! leaf, by stripping three bits at a time until a key is in the table (§5.1, Eq. 5.1).
 
 use super::build::Merge;
-use super::cell;
+use super::hashed::{self, Levels};
 use super::key::{self, Key, ROOT};
-use super::mc::{self, Tri};
 use super::table::{Entry, KeyTable};
-use super::{Finish, StoreKind, VoxelStore};
+use super::{Finish, StoreKind, SurfaceWalk, VoxelStore};
+use crate::{Error, Result};
 
 /// A node that has children, while building.
 pub const MIXED: u16 = 256;
@@ -27,22 +27,12 @@ pub struct OptimizedOctree {
 
 /// The leaves of each level, collected while building (seed 000 §4.3.4 step 2: what is known
 /// about homogeneous sub-spaces is kept only until the table is filled).
-pub struct Leaves {
-    lists: Vec<Vec<Entry>>,
-    count: u64,
-    budget: u64,
-}
-
-/// Bytes per leaf while building: its place in a level list and in the table, and a bucket.
-const BUILD_BYTES: u64 = 16 + 16 + 8;
+pub struct Leaves(Levels);
 
 impl Leaves {
+    /// No leaf yet, for a tree of `depth` levels within `budget` bytes.
     pub fn new(depth: u32, budget: u64) -> Leaves {
-        Leaves {
-            lists: vec![Vec::new(); depth as usize + 1],
-            count: 0,
-            budget,
-        }
+        Leaves(Levels::new(depth, budget))
     }
 }
 
@@ -61,18 +51,16 @@ impl Merge for Leaves {
         v.into()
     }
 
-    fn internal(&mut self, k: Key, kids: [u16; 8]) -> Result<u16, String> {
-        let list = &mut self.lists[key::level(k) as usize + 1];
+    fn internal(&mut self, k: Key, kids: [u16; 8]) -> Result<u16> {
+        let list = self.0.level(key::level(k) + 1);
+        let before = list.len();
         for (c, &n) in kids.iter().enumerate() {
             if n != MIXED {
                 list.push(Entry::new(key::child(k, c as u8), n as u8, false));
-                self.count += 1;
             }
         }
-        let need = self.count * BUILD_BYTES;
-        if need > self.budget {
-            return Err(super::over_budget(need, self.budget));
-        }
+        let added = list.len() - before;
+        self.0.charge(added as u64)?;
         Ok(MIXED)
     }
 }
@@ -80,12 +68,11 @@ impl Merge for Leaves {
 impl Finish for Leaves {
     type Store = OptimizedOctree;
 
-    fn finish(mut self, root: u16, internal: u64, depth: u32) -> Result<OptimizedOctree, String> {
+    fn finish(mut self, root: u16, internal: u64, depth: u32) -> Result<OptimizedOctree> {
         if root != MIXED {
-            self.lists[0].push(Entry::new(ROOT, root as u8, false));
+            self.0.level(0).push(Entry::new(ROOT, root as u8, false));
         }
-        // Deepest level first (§4.3.4 step 3): cells head their chains.
-        let table = KeyTable::from_lists(self.lists.into_iter().rev().collect())?;
+        let table = self.0.into_table()?;
         Ok(OptimizedOctree {
             depth,
             table,
@@ -97,56 +84,33 @@ impl Finish for Leaves {
 impl OptimizedOctree {
     /// The optimized octree of a whole volume, fed slice by slice (for sculpting and tests;
     /// [`super::builder`] gives the same store boxed).
-    pub fn from_volume(v: &csgpix_scene::grid::Volume, budget: u64) -> Result<Self, String> {
-        use super::StoreBuilder;
-        let need = super::memory_estimate(StoreKind::Octree, v.dims)?;
-        if need > budget {
-            return Err(super::over_budget(need, budget));
-        }
-        let depth = super::depth_for(v.dims)?;
-        let mut b = super::build_tree(depth, v.dims[0], Leaves::new(depth, budget));
-        let n = (v.dims[0] * v.dims[1]).max(1);
-        for (k, s) in v.voxels.chunks(n).enumerate().take(v.dims[2]) {
-            b.push(k, s)?;
-        }
-        b.finish_store()
+    pub fn from_volume(v: &csgpix_scene::grid::Volume, budget: u64) -> Result<Self> {
+        let depth = super::checked_depth(StoreKind::Octree, v.dims, budget)?;
+        super::build_tree(depth, v.dims[0], Leaves::new(depth, budget)).store_of(v)
     }
 
     /// The deepest key of cell (x, y, z), if it is in the grid.
     pub fn cell_key(&self, x: u32, y: u32, z: u32) -> Option<Key> {
-        let side = 1u64 << self.depth;
-        [x, y, z]
-            .iter()
-            .all(|&c| u64::from(c) < side)
-            .then(|| key::key(x, y, z, self.depth))
+        hashed::cell_key(self.depth, x, y, z)
     }
 
     /// The leaf holding cell (x, y, z): the cell's own key, or the nearest ancestor in the
     /// table (seed 000 §5.1 step 3, Eq. 5.1). None outside the grid.
     pub fn find(&self, x: u32, y: u32, z: u32) -> Option<(Key, u8)> {
-        let mut k = self.cell_key(x, y, z)?;
-        loop {
-            if let Some(e) = self.table.get(k) {
-                return Some((k, e.val));
-            }
-            if k <= ROOT {
-                return None;
-            }
-            k = key::parent(k);
-        }
+        hashed::find(&self.table, self.depth, x, y, z)
     }
 
     /// Makes cell (x, y, z) a leaf of its own: the coarse leaf holding it is removed and,
     /// level by level down to the cell, the 8 children of the node on the path are inserted
     /// with its value, the one on the path split further (seed 000 §5.2 scenario 2, split
     /// along the path only). Returns the cell's key.
-    pub fn split_to(&mut self, x: u32, y: u32, z: u32) -> Result<Key, String> {
+    pub fn split_to(&mut self, x: u32, y: u32, z: u32) -> Result<Key> {
         let target = self
             .cell_key(x, y, z)
-            .ok_or_else(|| format!("cell ({x}, {y}, {z}) is outside the octree"))?;
+            .ok_or_else(|| Error::Msg(format!("cell ({x}, {y}, {z}) is outside the octree")))?;
         let (found, v) = self
             .find(x, y, z)
-            .ok_or_else(|| format!("cell ({x}, {y}, {z}) has no leaf"))?;
+            .ok_or_else(|| Error::Msg(format!("cell ({x}, {y}, {z}) has no leaf")))?;
         if found == target {
             return Ok(target);
         }
@@ -166,14 +130,14 @@ impl OptimizedOctree {
     }
 
     /// Sets cell (x, y, z)'s byte, splitting its coarse leaf first.
-    pub fn set_cell(&mut self, x: u32, y: u32, z: u32, v: u8) -> Result<(), String> {
+    pub fn set_cell(&mut self, x: u32, y: u32, z: u32, v: u8) -> Result<()> {
         let k = self.split_to(x, y, z)?;
         match self.table.get_mut(k) {
             Some(slot) => {
                 *slot = v;
                 Ok(())
             }
-            None => Err(format!("cell ({x}, {y}, {z}) vanished")),
+            None => Err(Error::Msg(format!("cell ({x}, {y}, {z}) vanished"))),
         }
     }
 
@@ -214,28 +178,14 @@ impl VoxelStore for OptimizedOctree {
     }
 
     fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8)) {
-        self.table.entries().iter().for_each(|e| f(e.key, e.val));
-    }
-
-    fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
-        self.surface(f);
-    }
-
-    fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
-        out.clear();
-        let t = mc::table();
-        self.surface(|p, v| t.emit(p, v, out));
+        hashed::leaves(&self.table).for_each(|e| f(e.key, e.val));
     }
 }
 
-impl OptimizedOctree {
-    /// Every surface cell: one linear pass over the table's entries (seed 000 §4.3.4: only
-    /// leaves are stored, and a leaf with a byte other than 0 and 255 is a deepest cell),
-    /// with the cells past the far faces that the non-empty leaves there border.
-    fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
-        for e in self.table.entries() {
-            cell::hashed_leaf(e.key, e.val, self.depth, &mut f);
-        }
+impl SurfaceWalk for OptimizedOctree {
+    /// One linear pass over the table's entries (seed 000 §4.3.4: only leaves are stored).
+    fn walk_surface<F: FnMut([u32; 3], u8)>(&self, f: F) {
+        hashed::walk_surface(&self.table, self.depth, f);
     }
 }
 
@@ -243,7 +193,7 @@ impl OptimizedOctree {
 /// k ([`StoreBuilder::push`](super::StoreBuilder::push)) so that no dense volume is made
 /// (seed 000 §4.3.4); `budget` bounds the leaves kept while building, in bytes.
 /// [`finish_store`](super::TreeBuilder::finish_store) gives the octree.
-pub fn builder(dims: [usize; 3], budget: u64) -> Result<super::TreeBuilder<Leaves>, String> {
+pub fn builder(dims: [usize; 3], budget: u64) -> Result<super::TreeBuilder<Leaves>> {
     let depth = super::depth_for(dims)?;
     Ok(super::build_tree(
         depth,

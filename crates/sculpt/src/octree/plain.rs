@@ -3,12 +3,12 @@
 //! by level from the deepest), with the internal nodes as well.
 
 use super::build::Merge;
-use super::cell;
+use super::hashed::{self, Levels};
 use super::key::{self, Key, ROOT};
-use super::mc::{self, Tri};
 use super::optimized::MIXED;
 use super::table::{Entry, KeyTable};
-use super::{Finish, StoreKind, VoxelStore};
+use super::{Finish, StoreKind, SurfaceWalk, VoxelStore};
+use crate::Result;
 
 /// The plain hash-based octree.
 #[derive(Clone, Debug)]
@@ -19,22 +19,12 @@ pub struct PlainHashOctree {
 }
 
 /// Every node of each level (key, value, internal?), collected while building.
-pub struct All {
-    lists: Vec<Vec<Entry>>,
-    count: u64,
-    budget: u64,
-}
-
-/// Bytes per node while building: its place in a level list and in the table, and a bucket.
-const BUILD_BYTES: u64 = 16 + 16 + 8;
+pub struct All(Levels);
 
 impl All {
+    /// No node yet, for a tree of `depth` levels within `budget` bytes.
     pub fn new(depth: u32, budget: u64) -> All {
-        All {
-            lists: vec![Vec::new(); depth as usize + 1],
-            count: 0,
-            budget,
-        }
+        All(Levels::new(depth, budget))
     }
 }
 
@@ -53,8 +43,8 @@ impl Merge for All {
         v.into()
     }
 
-    fn internal(&mut self, k: Key, kids: [u16; 8]) -> Result<u16, String> {
-        let list = &mut self.lists[key::level(k) as usize + 1];
+    fn internal(&mut self, k: Key, kids: [u16; 8]) -> Result<u16> {
+        let list = self.0.level(key::level(k) + 1);
         for (c, &n) in kids.iter().enumerate() {
             list.push(Entry::new(
                 key::child(k, c as u8),
@@ -62,11 +52,7 @@ impl Merge for All {
                 n == MIXED,
             ));
         }
-        self.count += 8;
-        let need = self.count * BUILD_BYTES;
-        if need > self.budget {
-            return Err(super::over_budget(need, self.budget));
-        }
+        self.0.charge(8)?;
         Ok(MIXED)
     }
 }
@@ -74,9 +60,11 @@ impl Merge for All {
 impl Finish for All {
     type Store = PlainHashOctree;
 
-    fn finish(mut self, root: u16, internal: u64, depth: u32) -> Result<PlainHashOctree, String> {
-        self.lists[0].push(Entry::new(ROOT, (root & 255) as u8, root == MIXED));
-        let table = KeyTable::from_lists(self.lists.into_iter().rev().collect())?;
+    fn finish(mut self, root: u16, internal: u64, depth: u32) -> Result<PlainHashOctree> {
+        self.0
+            .level(0)
+            .push(Entry::new(ROOT, (root & 255) as u8, root == MIXED));
+        let table = self.0.into_table()?;
         Ok(PlainHashOctree {
             depth,
             table,
@@ -89,20 +77,7 @@ impl PlainHashOctree {
     /// The leaf holding cell (x, y, z): its key or the nearest stored ancestor (the first one
     /// found is a leaf: an internal ancestor would have its children stored).
     pub fn find(&self, x: u32, y: u32, z: u32) -> Option<(Key, u8)> {
-        let side = 1u64 << self.depth;
-        if [x, y, z].iter().any(|&c| u64::from(c) >= side) {
-            return None;
-        }
-        let mut k = key::key(x, y, z, self.depth);
-        loop {
-            if let Some(e) = self.table.get(k) {
-                return Some((k, e.val));
-            }
-            if k <= ROOT {
-                return None;
-            }
-            k = key::parent(k);
-        }
+        hashed::find(&self.table, self.depth, x, y, z)
     }
 }
 
@@ -132,27 +107,13 @@ impl VoxelStore for PlainHashOctree {
     }
 
     fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8)) {
-        for e in self.table.entries().iter().filter(|e| !e.internal) {
-            f(e.key, e.val);
-        }
-    }
-
-    fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
-        self.surface(f);
-    }
-
-    fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
-        out.clear();
-        let t = mc::table();
-        self.surface(|p, v| t.emit(p, v, out));
+        hashed::leaves(&self.table).for_each(|e| f(e.key, e.val));
     }
 }
 
-impl PlainHashOctree {
-    /// Every surface cell: one linear pass over the table's entries, internal nodes skipped.
-    fn surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
-        for e in self.table.entries().iter().filter(|e| !e.internal) {
-            cell::hashed_leaf(e.key, e.val, self.depth, &mut f);
-        }
+impl SurfaceWalk for PlainHashOctree {
+    /// One linear pass over the table's entries, internal nodes skipped.
+    fn walk_surface<F: FnMut([u32; 3], u8)>(&self, f: F) {
+        hashed::walk_surface(&self.table, self.depth, f);
     }
 }

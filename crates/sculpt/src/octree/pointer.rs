@@ -17,16 +17,18 @@
 //! per 8 children, no node for a run of homogeneous cells) over the same builder.
 
 use super::build::Merge;
-use super::cell;
-use super::key::{self, Key, ROOT};
-use super::mc::Tri;
-use super::{Finish, StoreKind, VoxelStore};
+use super::key::{Key, ROOT};
+use super::tree::{self, PointerNode};
+use super::{Budget, Finish, StoreKind, SurfaceWalk, VoxelStore};
+use crate::Result;
 
 /// A node: its own allocation, a label (0 empty, 255 full, a cell's case byte, or mixed) and
 /// the addresses of its 8 children when mixed.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Node {
+    /// A leaf: 0 empty, 255 full, or a deepest cell's case byte.
     Leaf(u8),
+    /// An internal node: the addresses of its 8 children, by location code.
     Inner([Box<Node>; 8]),
 }
 
@@ -40,15 +42,21 @@ pub struct PointerOctree {
 
 /// Allocates every node while building (seed 000 §4.2.2).
 pub struct Nodes {
-    nodes: u64,
-    budget: u64,
+    /// The nodes' bytes, the root's included.
+    budget: Budget,
 }
 
 impl Nodes {
+    /// Nothing built yet but the root, within `budget` bytes.
     pub fn new(budget: u64) -> Nodes {
-        Nodes { nodes: 1, budget }
+        Nodes {
+            budget: Budget::new(NODE_BYTES, budget),
+        }
     }
 }
+
+/// Bytes of a node.
+const NODE_BYTES: u64 = std::mem::size_of::<Node>() as u64;
 
 /// A node being built: `None` only for a slot the pyramid has not filled yet.
 pub type Slot = Option<Box<Node>>;
@@ -83,12 +91,8 @@ impl Merge for Nodes {
         })
     }
 
-    fn internal(&mut self, _: Key, kids: [Slot; 8]) -> Result<Slot, String> {
-        self.nodes += 8;
-        let need = self.nodes * std::mem::size_of::<Node>() as u64;
-        if need > self.budget {
-            return Err(super::over_budget(need, self.budget));
-        }
+    fn internal(&mut self, _: Key, kids: [Slot; 8]) -> Result<Slot> {
+        self.budget.charge(8 * NODE_BYTES)?;
         let kids = kids.map(|k| k.unwrap_or_else(|| Box::new(Node::Leaf(0))));
         Ok(Some(Box::new(Node::Inner(kids))))
     }
@@ -97,7 +101,7 @@ impl Merge for Nodes {
 impl Finish for Nodes {
     type Store = PointerOctree;
 
-    fn finish(self, root: Slot, internal: u64, depth: u32) -> Result<PointerOctree, String> {
+    fn finish(self, root: Slot, internal: u64, depth: u32) -> Result<PointerOctree> {
         Ok(PointerOctree {
             depth,
             root: root.ok_or("the pointer octree has no root")?,
@@ -111,27 +115,20 @@ impl PointerOctree {
     pub fn root(&self) -> &Node {
         &self.root
     }
+}
 
-    fn leaves(n: &Node, k: Key, f: &mut dyn FnMut(Key, u8)) {
-        match n {
-            Node::Leaf(v) => f(k, *v),
-            Node::Inner(ch) => {
-                for (c, n) in ch.iter().enumerate() {
-                    Self::leaves(n, key::child(k, c as u8), f);
-                }
-            }
+impl PointerNode for Node {
+    fn leaf(&self) -> Option<u8> {
+        match self {
+            Node::Leaf(v) => Some(*v),
+            Node::Inner(_) => None,
         }
     }
 
-    /// Every surface cell, walking the tree depth first (children in location-code order).
-    fn surface<F: FnMut([u32; 3], u8)>(&self, n: &Node, level: u32, p: [u32; 3], f: &mut F) {
-        match n {
-            Node::Leaf(v) => cell::tree_leaf(p, level, self.depth, *v, f),
-            Node::Inner(ch) => {
-                for (c, n) in ch.iter().enumerate() {
-                    self.surface(n, level + 1, super::child_xyz(p, c as u32), f);
-                }
-            }
+    fn child(&self, c: usize) -> &Node {
+        match self {
+            Node::Inner(ch) => &ch[c],
+            Node::Leaf(_) => panic!("a leaf has no children"),
         }
     }
 }
@@ -147,29 +144,12 @@ impl VoxelStore for PointerOctree {
 
     /// Walks down from the root (seed 000 §4.3.2).
     fn cell(&self, x: u32, y: u32, z: u32) -> u8 {
-        let side = 1u64 << self.depth;
-        if [x, y, z].iter().any(|&c| u64::from(c) >= side) {
-            return 0;
-        }
-        let mut n: &Node = &self.root;
-        for l in (0..self.depth).rev() {
-            match n {
-                Node::Leaf(v) => return *v,
-                Node::Inner(ch) => {
-                    let c = (x >> l & 1) | (y >> l & 1) << 1 | (z >> l & 1) << 2;
-                    n = &ch[c as usize];
-                }
-            }
-        }
-        match n {
-            Node::Leaf(v) => *v,
-            Node::Inner(_) => 0,
-        }
+        tree::cell(&*self.root, self.depth, x, y, z)
     }
 
     /// Every node: the root and 8 per internal node.
     fn node_count(&self) -> usize {
-        8 * self.internal + 1
+        tree::node_count(self.internal)
     }
 
     fn internal_count(&self) -> usize {
@@ -182,16 +162,13 @@ impl VoxelStore for PointerOctree {
     }
 
     fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8)) {
-        Self::leaves(&self.root, ROOT, f);
+        tree::leaves(&*self.root, ROOT, f);
     }
+}
 
-    fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
-        self.surface(&self.root, 0, [0; 3], &mut |p, v| f(p, v));
-    }
-
-    fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
-        out.clear();
-        let t = super::mc::table();
-        self.surface(&self.root, 0, [0; 3], &mut |p, v| t.emit(p, v, out));
+impl SurfaceWalk for PointerOctree {
+    /// Depth first, children in location-code order.
+    fn walk_surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
+        tree::surface(&*self.root, 0, [0; 3], self.depth, &mut f);
     }
 }

@@ -6,15 +6,17 @@
 //! from the root. [`super::pointer`] is the thesis's own construction and layout.
 
 use super::build::Merge;
-use super::cell;
-use super::key::{self, Key, ROOT};
-use super::mc::Tri;
-use super::{Finish, StoreKind, VoxelStore};
+use super::key::{Key, ROOT};
+use super::tree::{self, PointerNode};
+use super::{Budget, Finish, StoreKind, SurfaceWalk, VoxelStore};
+use crate::Result;
 
 /// A node: a leaf's value (0 / 255 homogeneous, or a cell's byte) or 8 children.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum PNode {
+    /// A leaf: 0 empty, 255 full, or a deepest cell's case byte.
     Leaf(u8),
+    /// An internal node: its 8 children in one block, by location code.
     Inner(Box<[PNode; 8]>),
 }
 
@@ -34,15 +36,21 @@ pub struct BlockPointerOctree {
 
 /// Links children to parents while building.
 pub struct Links {
-    nodes: u64,
-    budget: u64,
+    /// The nodes' bytes, the root's included.
+    budget: Budget,
 }
 
 impl Links {
+    /// Nothing built yet but the root, within `budget` bytes.
     pub fn new(budget: u64) -> Links {
-        Links { nodes: 1, budget }
+        Links {
+            budget: Budget::new(NODE_BYTES, budget),
+        }
     }
 }
+
+/// Bytes of a node.
+const NODE_BYTES: u64 = std::mem::size_of::<PNode>() as u64;
 
 impl Merge for Links {
     type Node = PNode;
@@ -62,12 +70,8 @@ impl Merge for Links {
         PNode::Leaf(v)
     }
 
-    fn internal(&mut self, _: Key, kids: [PNode; 8]) -> Result<PNode, String> {
-        self.nodes += 8;
-        let need = self.nodes * std::mem::size_of::<PNode>() as u64;
-        if need > self.budget {
-            return Err(super::over_budget(need, self.budget));
-        }
+    fn internal(&mut self, _: Key, kids: [PNode; 8]) -> Result<PNode> {
+        self.budget.charge(8 * NODE_BYTES)?;
         Ok(PNode::Inner(Box::new(kids)))
     }
 }
@@ -75,7 +79,7 @@ impl Merge for Links {
 impl Finish for Links {
     type Store = BlockPointerOctree;
 
-    fn finish(self, root: PNode, internal: u64, depth: u32) -> Result<BlockPointerOctree, String> {
+    fn finish(self, root: PNode, internal: u64, depth: u32) -> Result<BlockPointerOctree> {
         Ok(BlockPointerOctree {
             depth,
             root,
@@ -89,27 +93,20 @@ impl BlockPointerOctree {
     pub fn root(&self) -> &PNode {
         &self.root
     }
+}
 
-    fn leaves(&self, n: &PNode, k: Key, f: &mut dyn FnMut(Key, u8)) {
-        match n {
-            PNode::Leaf(v) => f(k, *v),
-            PNode::Inner(ch) => {
-                for (c, n) in ch.iter().enumerate() {
-                    self.leaves(n, key::child(k, c as u8), f);
-                }
-            }
+impl PointerNode for PNode {
+    fn leaf(&self) -> Option<u8> {
+        match self {
+            PNode::Leaf(v) => Some(*v),
+            PNode::Inner(_) => None,
         }
     }
 
-    /// Every surface cell, walking the tree depth first (children in location-code order).
-    fn surface<F: FnMut([u32; 3], u8)>(&self, n: &PNode, level: u32, p: [u32; 3], f: &mut F) {
-        match n {
-            PNode::Leaf(v) => cell::tree_leaf(p, level, self.depth, *v, f),
-            PNode::Inner(ch) => {
-                for (c, n) in ch.iter().enumerate() {
-                    self.surface(n, level + 1, super::child_xyz(p, c as u32), f);
-                }
-            }
+    fn child(&self, c: usize) -> &PNode {
+        match self {
+            PNode::Inner(ch) => &ch[c],
+            PNode::Leaf(_) => panic!("a leaf has no children"),
         }
     }
 }
@@ -125,29 +122,12 @@ impl VoxelStore for BlockPointerOctree {
 
     /// Walks down from the root (seed 000 §4.3.2).
     fn cell(&self, x: u32, y: u32, z: u32) -> u8 {
-        let side = 1u64 << self.depth;
-        if [x, y, z].iter().any(|&c| u64::from(c) >= side) {
-            return 0;
-        }
-        let mut n = &self.root;
-        for l in (0..self.depth).rev() {
-            match n {
-                PNode::Leaf(v) => return *v,
-                PNode::Inner(ch) => {
-                    let c = (x >> l & 1) | (y >> l & 1) << 1 | (z >> l & 1) << 2;
-                    n = &ch[c as usize];
-                }
-            }
-        }
-        match n {
-            PNode::Leaf(v) => *v,
-            PNode::Inner(_) => 0,
-        }
+        tree::cell(&self.root, self.depth, x, y, z)
     }
 
     /// Every node: the root and 8 per internal node.
     fn node_count(&self) -> usize {
-        8 * self.internal + 1
+        tree::node_count(self.internal)
     }
 
     fn internal_count(&self) -> usize {
@@ -160,16 +140,13 @@ impl VoxelStore for BlockPointerOctree {
     }
 
     fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8)) {
-        self.leaves(&self.root, ROOT, f);
+        tree::leaves(&self.root, ROOT, f);
     }
+}
 
-    fn for_each_surface_cell(&self, f: &mut dyn FnMut([u32; 3], u8)) {
-        self.surface(&self.root, 0, [0; 3], &mut |p, v| f(p, v));
-    }
-
-    fn marching_cubes_into(&self, out: &mut Vec<Tri>) {
-        out.clear();
-        let t = super::mc::table();
-        self.surface(&self.root, 0, [0; 3], &mut |p, v| t.emit(p, v, out));
+impl SurfaceWalk for BlockPointerOctree {
+    /// Depth first, children in location-code order.
+    fn walk_surface<F: FnMut([u32; 3], u8)>(&self, mut f: F) {
+        tree::surface(&self.root, 0, [0; 3], self.depth, &mut f);
     }
 }

@@ -7,6 +7,7 @@
 //! (the thesis sizes it "according to the resolution"; it gives no n).
 
 use super::key::Key;
+use crate::Result;
 
 /// End of a chain.
 const NIL: u32 = u32::MAX;
@@ -15,9 +16,12 @@ const NIL: u32 = u32::MAX;
 /// the plain hash-based octree, whether it is an internal node.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Entry {
+    /// The node's location key (§4.3.3, Fig. 4.1).
     pub key: Key,
     next: u32,
+    /// A cell's case byte, or 0 / 255 for a homogeneous leaf.
     pub val: u8,
+    /// An internal node (the plain hash-based octree only).
     pub internal: bool,
 }
 
@@ -63,7 +67,7 @@ impl KeyTable {
     /// through a small scratch buffer, then one pass linking neighbours of one bucket. The
     /// build reads and writes the entries in sequence instead of touching a random bucket
     /// head and chain tail per insert.
-    pub fn from_lists(lists: Vec<Vec<Entry>>) -> Result<KeyTable, String> {
+    pub fn from_lists(lists: Vec<Vec<Entry>>) -> Result<KeyTable> {
         let n: usize = lists.iter().map(Vec::len).sum();
         if u32::try_from(n).map_or(true, |n| n == NIL) {
             return Err("more than 2^32 - 1 octree nodes".into());
@@ -118,7 +122,7 @@ impl KeyTable {
 
     /// Appends a node that is not in the table yet at the end of its chain (the build: no
     /// duplicate check). Refuses past 2^32 − 1 entries.
-    pub fn push(&mut self, key: Key, val: u8, internal: bool) -> Result<(), String> {
+    pub fn push(&mut self, key: Key, val: u8, internal: bool) -> Result<()> {
         let i = u32::try_from(self.entries.len())
             .ok()
             .filter(|&i| i != NIL)
@@ -189,7 +193,7 @@ impl KeyTable {
     }
 
     /// Inserts a node at the end of its chain, or changes its value if it is there.
-    pub fn insert(&mut self, key: Key, val: u8, internal: bool) -> Result<(), String> {
+    pub fn insert(&mut self, key: Key, val: u8, internal: bool) -> Result<()> {
         match self.index(key) {
             Some(i) => {
                 self.entries[i].val = val;
@@ -247,10 +251,12 @@ impl KeyTable {
         &self.entries
     }
 
+    /// Entries stored.
     pub fn len(&self) -> usize {
         self.entries.len()
     }
 
+    /// No entry stored?
     pub fn is_empty(&self) -> bool {
         self.entries.is_empty()
     }

@@ -1,0 +1,86 @@
+//! What the two hash-based octrees share (seed 000 §4.3.3, §4.3.4): nodes collected level
+//! by level while building and sealed into one [`KeyTable`] deepest level first, a cell found
+//! by its key or its nearest stored ancestor (§5.1, Eq. 5.1), and the leaves and surface read
+//! in one linear pass over the table. The optimized octree stores leaves only, the plain one
+//! internal nodes as well, which every reading skips.
+
+use super::cell;
+use super::key::{self, Key, ROOT};
+use super::table::{Entry, KeyTable};
+use super::Budget;
+use crate::Result;
+
+/// Bytes per node while building: its place in a level list and in the table, and a bucket.
+pub const BUILD_BYTES: u64 = 16 + 16 + 8;
+
+/// The nodes of each level (0 the root's), collected while building (seed 000 §4.3.4 step
+/// 2: what is known about homogeneous sub-spaces is kept only until the table is filled).
+pub struct Levels {
+    lists: Vec<Vec<Entry>>,
+    budget: Budget,
+}
+
+impl Levels {
+    /// No node yet, for a tree of `depth` levels within `budget` bytes.
+    pub fn new(depth: u32, budget: u64) -> Levels {
+        Levels {
+            lists: vec![Vec::new(); depth as usize + 1],
+            budget: Budget::new(0, budget),
+        }
+    }
+
+    /// The nodes of `level` so far.
+    pub fn level(&mut self, level: u32) -> &mut Vec<Entry> {
+        &mut self.lists[level as usize]
+    }
+
+    /// Charge `nodes` more nodes of [`BUILD_BYTES`] against the budget.
+    pub fn charge(&mut self, nodes: u64) -> Result<()> {
+        self.budget.charge(nodes * BUILD_BYTES)
+    }
+
+    /// The table of every node, deepest level first (§4.3.4 step 3: cells head their
+    /// chains).
+    pub fn into_table(self) -> Result<KeyTable> {
+        KeyTable::from_lists(self.lists.into_iter().rev().collect())
+    }
+}
+
+/// The stored node holding cell (x, y, z) of a tree of `depth` levels: the cell's own key or
+/// the nearest ancestor in `table` (seed 000 §5.1 step 3, Eq. 5.1). None outside the grid.
+/// The first one found is a leaf: an internal ancestor would have its children stored.
+pub fn find(table: &KeyTable, depth: u32, x: u32, y: u32, z: u32) -> Option<(Key, u8)> {
+    let mut k = cell_key(depth, x, y, z)?;
+    loop {
+        if let Some(e) = table.get(k) {
+            return Some((k, e.val));
+        }
+        if k <= ROOT {
+            return None;
+        }
+        k = key::parent(k);
+    }
+}
+
+/// The deepest key of cell (x, y, z), if it is in the grid of side 2^depth.
+pub fn cell_key(depth: u32, x: u32, y: u32, z: u32) -> Option<Key> {
+    let side = 1u64 << depth;
+    [x, y, z]
+        .iter()
+        .all(|&c| u64::from(c) < side)
+        .then(|| key::key(x, y, z, depth))
+}
+
+/// The leaves of `table`, internal nodes skipped.
+pub fn leaves(table: &KeyTable) -> impl Iterator<Item = &Entry> {
+    table.entries().iter().filter(|e| !e.internal)
+}
+
+/// Every surface cell of a tree of `depth` levels: one linear pass over the table's leaves
+/// (a leaf with a byte other than 0 and 255 is a deepest cell), with the cells past the far
+/// faces that the non-empty leaves there border.
+pub fn walk_surface<F: FnMut([u32; 3], u8)>(table: &KeyTable, depth: u32, mut f: F) {
+    for e in leaves(table) {
+        cell::hashed_leaf(e.key, e.val, depth, &mut f);
+    }
+}
