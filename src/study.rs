@@ -1,6 +1,5 @@
 //! Speed against accuracy: a sweep of the knobs a user trades when voxelizing a scene through
-//! the array (DESIGN.md, "They trade speed for accuracy, so every knob that does so is
-//! measured").
+//! the array: users trade speed for accuracy, so every knob that does so is measured.
 //!
 //! The knobs:
 //!
@@ -11,8 +10,8 @@
 //!   scene text ([`with_fragments`]): more faces, more planes per P·Vz frame;
 //! * **slabs** along Z (§4.4): one P·Vz frame per primitive per slab, so slices per second
 //!   P_sp = P_R / N_s (§5.5, eq. 5.1);
-//! * **model** `cycle`, `word` or `float` (DESIGN.md, "One processor, three models"): the same
-//!   voxels from `cycle` and `word`, at very different simulator cost.
+//! * **model** `cycle`, `word` or `float` (one processor, three models, docs/rendering.md):
+//!   the same voxels from `cycle` and `word`, at very different simulator cost.
 //!
 //! # What is measured, per point
 //!
@@ -47,34 +46,16 @@ use crate::voxel::{float_interval, voxelize, Grid, Route, Sampling, Slicer, Volu
 /// The thesis's clock, 10 MHz (§2.5).
 pub const CLOCK_HZ: f64 = 1e7;
 
-/// A processor model (DESIGN.md, "One processor, three models").
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Model {
-    /// Every P·Vz frame on the bit-serial array, clock by clock.
-    Cycle,
-    /// The array's plane words reduced to depth intervals (`voxelize --model word`, proven
-    /// equal to the word array voxel for voxel).
-    Word,
-    /// Exact f64 intervals of the same planes: not hardware.
-    Float,
-}
+pub use csgpix_draw::Model;
 
-impl Model {
-    pub fn name(self) -> &'static str {
-        match self {
-            Model::Cycle => "cycle",
-            Model::Word => "word",
-            Model::Float => "float",
-        }
-    }
-
-    fn route(self) -> Route {
-        match self {
-            Model::Cycle => Route::Array { cycle: true },
-            Model::Word => Route::Intervals,
-            Model::Float => Route::Float,
-        }
+/// How a study runs a model's frames: `cycle` every P·Vz frame on the bit-serial array,
+/// `word` the array's plane words reduced to depth intervals (proven equal to the word array
+/// voxel for voxel), `float` exact intervals of the same planes.
+fn route(model: Model) -> Route {
+    match model {
+        Model::Cycle => Route::Array { cycle: true },
+        Model::Word => Route::Intervals,
+        Model::Float => Route::Float,
     }
 }
 
@@ -475,7 +456,7 @@ fn run_model(
     let t0 = Instant::now();
     let (vol, work) = voxelize(
         slicer,
-        model.route(),
+        route(model),
         Equations::Derived.set(),
         &eval,
         &|| {},

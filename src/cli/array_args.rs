@@ -11,28 +11,9 @@ use rtl_model::select::vectors::{derive_with_ties, Ties};
 use rtl_model::Op;
 use rtl_model::{Array, ArrayConfig, CycleArray, EquationSet, Equations, WordArray, WordFormat};
 
+pub use csgpix::draw::Model;
+
 use super::EquationsArg;
-
-#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
-pub enum Model {
-    /// Bit-serial, clock by clock, bit-sliced.
-    #[default]
-    Cycle,
-    /// One word per pixel, no clock.
-    Word,
-    /// Exact f64 ray casting of the same planes: the reference, not hardware.
-    Float,
-}
-
-impl Model {
-    pub fn name(self) -> &'static str {
-        match self {
-            Model::Cycle => "cycle",
-            Model::Word => "word",
-            Model::Float => "float",
-        }
-    }
-}
 
 /// How the `derived` equations settle the ties the thesis leaves to the user.
 #[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
@@ -52,7 +33,7 @@ pub struct ArrayArgs {
     #[arg(long, default_value = "250x250", value_parser = parse_size)]
     pub size: (usize, usize),
     /// Processor model.
-    #[arg(long, value_enum, default_value_t)]
+    #[arg(long, value_parser = super::model_parser(), default_value = "cycle")]
     pub model: Model,
     /// Select equations.
     #[arg(long, value_enum, default_value_t)]

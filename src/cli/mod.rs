@@ -19,6 +19,7 @@ mod voxelize;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
+use csgpix::draw::Model;
 use csgpix::project::View;
 use rtl_model::Equations;
 
@@ -61,6 +62,13 @@ pub enum Cmd {
     Study(study::Args),
     /// Write the project's CT-head phantom (Figure 5.6's dataset) as NRRD.
     Phantom(phantom::Args),
+}
+
+/// `--model`: the names of [`Model`], each with its summary in `--help`.
+pub fn model_parser() -> impl clap::builder::TypedValueParser<Value = Model> {
+    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+    let values = Model::ALL.map(|m| PossibleValue::new(m.name()).help(m.summary()));
+    PossibleValuesParser::new(values).map(|s| s.parse::<Model>().expect("a possible value"))
 }
 
 /// Which equation set SGENE uses.

@@ -9,7 +9,6 @@ use csgpix::output::{Out, Outputs};
 use std::time::Instant;
 
 use super::voxelize::SamplingArg;
-use clap::ValueEnum;
 use csgpix::study::{charts, csv, prepare, Model, Point, Prepared, Sweep};
 use csgpix::voxel::memory_estimate;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -44,8 +43,8 @@ pub struct Args {
     /// Models to run: `cycle` (every frame clock by clock: the same voxels and clocks as
     /// `word`, at 20 to 300 times its wall time, so not run unless asked), `word` (the array's
     /// plane words), `float` (exact, not hardware).
-    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [ModelArg::Word, ModelArg::Float])]
-    models: Vec<ModelArg>,
+    #[arg(long, value_parser = super::model_parser(), value_delimiter = ',', default_value = "word,float")]
+    models: Vec<Model>,
     /// Voxels along X and Y (the array is RES×RES pixels).
     #[arg(long, default_value_t = 32)]
     res: usize,
@@ -63,23 +62,6 @@ pub struct Args {
     /// Print every point as JSON.
     #[arg(long)]
     json: bool,
-}
-
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
-enum ModelArg {
-    Cycle,
-    Word,
-    Float,
-}
-
-impl From<ModelArg> for Model {
-    fn from(m: ModelArg) -> Model {
-        match m {
-            ModelArg::Cycle => Model::Cycle,
-            ModelArg::Word => Model::Word,
-            ModelArg::Float => Model::Float,
-        }
-    }
 }
 
 #[derive(Serialize)]

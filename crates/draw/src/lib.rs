@@ -29,6 +29,7 @@
 pub mod compile;
 pub mod error;
 pub mod float;
+pub mod model;
 pub mod palette;
 pub mod panels;
 pub mod polygon;
@@ -36,3 +37,4 @@ pub mod project;
 pub mod throughput;
 
 pub use error::{Error, Result};
+pub use model::Model;
