@@ -3,6 +3,7 @@
 
 use serde::Serialize;
 
+use crate::error::Result;
 use crate::ranges::{word_ranges, SlabRanges};
 use crate::slicer::Slicer;
 
@@ -95,7 +96,7 @@ impl Footprint {
 }
 
 /// The footprint of every primitive of a sliced scene.
-pub fn footprints(slicer: &Slicer) -> Result<Vec<Footprint>, String> {
+pub fn footprints(slicer: &Slicer) -> Result<Vec<Footprint>> {
     use rayon::prelude::*;
     let w = slicer.grid.dims[0];
     (0..slicer.lists.len())

@@ -58,6 +58,6 @@ pub use masks::{array_mask, array_mask_in, slice_ops};
 pub use ranges::{
     float_interval, float_ranges, mesh_runs, ray_interval, toggle_run, word_ranges, SlabRanges,
 };
-pub use slicer::{voxel_slope, Route, Sampling, Slicer, DEFAULT_PANEL};
+pub use slicer::{voxel_slope, Route, Sampling, Slicer, SlicerOptions, DEFAULT_PANEL};
 
-pub use error::{Error, Result};
+pub use error::{BindingProblem, Error, Result};

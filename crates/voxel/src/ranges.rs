@@ -4,6 +4,7 @@
 use csgpix_scene::display_list::DlPlane;
 use csgpix_scene::trimesh::TriMesh;
 
+use crate::error::Result;
 use crate::sampled::SlabRuns;
 use crate::slice::Mask;
 use crate::slicer::Slicer;
@@ -58,7 +59,7 @@ fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
 /// [`Route::Intervals`]: the array's own plane words (DEPGEN's Z0 + x·dZx + y·dZy, wrapped to
 /// the word) reduced to the interval of depths inside P: behind every front plane, before
 /// every back plane, K ≥ 0 on every perpendicular plane.
-pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges, String> {
+pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges> {
     let fmt = &slicer.fmt;
     let coeffs: Vec<(rtl_model::Coeffs, &DlPlane)> = slicer.lists[prim]
         .planes
