@@ -35,8 +35,11 @@ use csgpix_scene::Location;
 pub enum Shape {
     /// A dataset and its iso value; `to_file` maps scene points into the dataset's own space.
     Dataset {
+        /// The samples.
         data: Box<Dataset>,
+        /// The iso value: samples at or above it are inside.
         threshold: f64,
+        /// Scene space → the dataset's own space.
         to_file: DMat4,
     },
     /// A closed mesh, in scene coordinates.
@@ -45,6 +48,7 @@ pub enum Shape {
 
 /// A loaded import.
 pub struct Sampled {
+    /// What it is.
     pub shape: Shape,
     /// Palette code (1..=15) of its voxels, as for a convex solid.
     pub colour: u8,
@@ -106,6 +110,7 @@ impl Sampled {
         }
     }
 
+    /// Whether it is a dataset (not a mesh).
     pub fn is_dataset(&self) -> bool {
         matches!(self.shape, Shape::Dataset { .. })
     }
@@ -131,7 +136,9 @@ fn corners(lo: DVec3, hi: DVec3) -> impl Iterator<Item = DVec3> {
 
 /// A scene and its loaded imports (`sampled[j]` is the primitive `solids.len() + j`).
 pub struct Loaded {
+    /// The scene: its solids, its imports named, its tree.
     pub scene: CsgScene,
+    /// Its imports, loaded, in the scene's order.
     pub sampled: Vec<Sampled>,
 }
 
@@ -362,6 +369,15 @@ pub fn parse_binding(s: &str) -> Result<Binding> {
 /// The scene of a CSG expression (§4.3.2's "named primitives") whose names are bound to
 /// files: [`Error::Expr`] when it does not parse, [`Error::Unbound`] for a name bound to no
 /// file, [`Error::Binding`] for a binding that does not fit.
+///
+/// ```
+/// use csgpix_voxel::sampled::scene_from_expr;
+/// use csgpix_voxel::Error;
+///
+/// let unbound = scene_from_expr("A + B", &[]).err();
+/// assert_eq!(unbound, Some(Error::Unbound { name: "A".into() }));
+/// assert!(matches!(scene_from_expr("A +", &[]), Err(Error::Expr(_))));
+/// ```
 pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded> {
     let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| Error::Expr(e.to_string()))?;
     if let Some(b) = bindings.iter().find(|b| !e.names.contains(&b.name)) {

@@ -17,7 +17,10 @@ use crate::sampled::Sampled;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Route {
     /// The processor, clock by clock (`cycle`) or word by word (`word`).
-    Array { cycle: bool },
+    Array {
+        /// The clock-by-clock model; false for the word-by-word one.
+        cycle: bool,
+    },
     /// The array's plane words reduced to per-pixel depth intervals.
     Intervals,
     /// Exact f64 intervals.
@@ -125,6 +128,24 @@ impl Slicer {
     /// word's depth range allows (even under centre sampling, so the voxel centre is a word;
     /// at least 1). Fails when the slabs do not fit the word, or when `opts.sampled` does not
     /// hold one loaded import per import the scene names ([`Error::ImportsNotLoaded`]).
+    ///
+    /// ```
+    /// use csgpix_voxel::{Error, Grid, Sampling, Slicer, SlicerOptions};
+    /// use glam::DVec3;
+    ///
+    /// let scene = csgpix_scene::scad::parse_csg("cube(size = [2, 2, 2]);", "c.csg").unwrap();
+    /// let grid = Grid::new([8, 8, 4], DVec3::ZERO, DVec3::splat(2.0)).unwrap();
+    /// let opts = SlicerOptions { sampling: Sampling::Slab, ..SlicerOptions::default() };
+    /// let s = Slicer::new(&scene, grid, opts).unwrap();
+    /// // Slab k starts at Z-plane(k): the slabs share the word's depth range evenly.
+    /// assert_eq!(s.z_plane(1) - s.z_plane(0), s.slab_raw);
+    /// assert_eq!(s.window(), (0, s.slab_raw - 1));
+    ///
+    /// // A scene naming a file needs it loaded.
+    /// let imports = csgpix_scene::scad::parse_csg("import(\"part.stl\");", "i.csg").unwrap();
+    /// let err = Slicer::new(&imports, grid, SlicerOptions::default()).err();
+    /// assert_eq!(err, Some(Error::ImportsNotLoaded { named: 1, loaded: 0 }));
+    /// ```
     pub fn new(scene: &CsgScene, grid: Grid, opts: SlicerOptions) -> Result<Slicer> {
         let SlicerOptions {
             fmt,
