@@ -403,7 +403,7 @@ fn label_colours(slicer: &Slicer, k: usize, labels: &[u32]) -> Vec<u8> {
         .collect()
 }
 
-/// First value `--grey` gives a dataset's grey levels: 1..=15 stay the palette's codes.
+/// First value [`Slicer::grey`] gives a dataset's grey levels: 1..=15 stay the palette's codes.
 pub const GREY_BASE: u8 = 16;
 
 /// A grey level 1..=255 as a voxel value GREY_BASE..=255 beside the colour codes.
