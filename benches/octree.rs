@@ -26,9 +26,9 @@ use csgpix::octree::key::Key;
 use csgpix::octree::mc::marching_cubes;
 use csgpix::octree::{depth_for, from_volume, StoreKind};
 use csgpix::scad::parse_csg;
-use csgpix::voxel::{voxelize, Grid, Route, Sampling, Slicer, Volume};
+use csgpix::voxel::{voxelize, Grid, Route, Sampling, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
-use rtl_model::{Equations, WordFormat};
+use rtl_model::Equations;
 use serde_json::{json, Value};
 
 /// Store budget: the bench's largest store is far below it.
@@ -163,8 +163,15 @@ fn volume(s: &Scene, res: usize) -> (Volume, f64) {
     }
     .expect("grid");
     // The thesis's slab sampling, under which docs/octree.md and docs/sculpting.md were measured.
-    let slicer =
-        Slicer::with_sampling(&scene, grid, WordFormat::THESIS, Sampling::Slab).expect("slicer");
+    let slicer = Slicer::new(
+        &scene,
+        grid,
+        SlicerOptions {
+            sampling: Sampling::Slab,
+            ..SlicerOptions::default()
+        },
+    )
+    .expect("slicer");
     let eval = BlistEval::new(&scene.root);
     let t0 = Instant::now();
     let (v, _) = voxelize(

@@ -25,9 +25,8 @@ use std::time::Instant;
 use csgpix::octree::{self, optimized::Leaves, OptimizedOctree, VoxelStore};
 use csgpix::scad::parse_csg;
 use csgpix::sculpt::{Frame, Latency, Sculptor, Tool};
-use csgpix::voxel::{Grid, Sampling, Slicer};
+use csgpix::voxel::{Grid, Sampling, Slicer, SlicerOptions};
 use glam::DVec3;
-use rtl_model::WordFormat;
 use serde_json::{json, Value};
 
 const TWELVE: &str = include_str!("../vectors/scenes/twelve.csg");
@@ -75,8 +74,15 @@ fn twelve(n: usize) -> (OptimizedOctree, Frame, f64) {
     let scene = parse_csg(TWELVE, "twelve.csg").expect("scene");
     let grid = Grid::new([n; 3], DVec3::splat(-15.0), DVec3::splat(15.0)).expect("grid");
     // The thesis's slab sampling, under which docs/octree.md and docs/sculpting.md were measured.
-    let slicer =
-        Slicer::with_sampling(&scene, grid, WordFormat::THESIS, Sampling::Slab).expect("slicer");
+    let slicer = Slicer::new(
+        &scene,
+        grid,
+        SlicerOptions {
+            sampling: Sampling::Slab,
+            ..SlicerOptions::default()
+        },
+    )
+    .expect("slicer");
     let store = csgpix::octree_from_scene(&slicer, &scene.root, u64::MAX).expect("store");
     (store, Frame::of_grid(&grid), 8.6)
 }

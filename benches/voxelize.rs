@@ -29,7 +29,9 @@ use csgpix::evaluate::{colour_labels, direct, LeafOrder, StackEval, TreeEval};
 use csgpix::scad::parse_csg;
 use csgpix::slice::{Labels, Mask, OpCounts, SliceEval};
 use csgpix::solid::{ConvexSolid, CsgNode, CsgScene};
-use csgpix::voxel::{voxelize, word_ranges, Grid, Route, Sampling, SlabRanges, Slicer, Volume};
+use csgpix::voxel::{
+    voxelize, word_ranges, Grid, Route, Sampling, SlabRanges, Slicer, SlicerOptions, Volume,
+};
 use fidget::context::Tree;
 use fidget::jit::JitShape;
 use fidget::shape::EzShape;
@@ -87,14 +89,31 @@ fn grid(scene: &CsgScene, n: usize) -> Grid {
 /// docs/voxelize-bench.md were measured (the peer comparison counts the difference from
 /// centre sampling).
 fn slicer(scene: &CsgScene, n: usize) -> Slicer {
-    Slicer::with_sampling(scene, grid(scene, n), FMT, Sampling::Slab).expect("slicer")
+    Slicer::new(
+        scene,
+        grid(scene, n),
+        SlicerOptions {
+            fmt: FMT,
+            sampling: Sampling::Slab,
+            ..SlicerOptions::default()
+        },
+    )
+    .expect("slicer")
 }
 
 /// Membership of the volume under centre sampling (csgpix's default), for the agreement
 /// with the peer, which samples voxel centres too.
 fn centre_inside(scene: &CsgScene, n: usize, route: Route, eval: &dyn SliceEval) -> Vec<bool> {
-    let slicer =
-        Slicer::with_sampling(scene, grid(scene, n), FMT, Sampling::Centre).expect("slicer");
+    let slicer = Slicer::new(
+        scene,
+        grid(scene, n),
+        SlicerOptions {
+            fmt: FMT,
+            sampling: Sampling::Centre,
+            ..SlicerOptions::default()
+        },
+    )
+    .expect("slicer");
     let (v, _) =
         voxelize(&slicer, route, Equations::Derived.set(), eval, &|| {}).expect("voxelize");
     inside_of(&v)

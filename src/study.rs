@@ -41,7 +41,9 @@ use crate::float::rounding_bound;
 use crate::plot::{Chart, Series};
 use crate::scad::parse_csg;
 use crate::solid::CsgScene;
-use crate::voxel::{float_interval, voxelize, Grid, Route, Sampling, Slicer, Volume};
+use crate::voxel::{
+    float_interval, voxelize, Grid, Route, Sampling, Slicer, SlicerOptions, Volume,
+};
 
 /// The thesis's clock, 10 MHz (§2.5).
 pub const CLOCK_HZ: f64 = 1e7;
@@ -376,7 +378,12 @@ impl Prepared {
 
     fn slicer(&self, scene: &CsgScene, bits: u32, slabs: usize) -> Result<Slicer, String> {
         let (grid, word) = (self.grid(slabs)?, self.sweep.word(bits)?);
-        Slicer::with_sampling(scene, grid, word, self.sweep.sampling)
+        let opts = SlicerOptions {
+            fmt: word,
+            sampling: self.sweep.sampling,
+            ..SlicerOptions::default()
+        };
+        Ok(Slicer::new(scene, grid, opts)?)
     }
 
     /// Every point, slabs outermost, then fragments, bits and models (each ascending).

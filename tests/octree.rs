@@ -12,10 +12,10 @@ use csgpix::octree::mc::marching_cubes;
 use csgpix::octree::table::KeyTable;
 use csgpix::octree::{from_volume, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix::scad::parse_csg;
-use csgpix::voxel::{voxelize, voxelize_streaming, Grid, Route, Slicer, Volume};
+use csgpix::voxel::{voxelize, voxelize_streaming, Grid, Route, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
 use proptest::prelude::*;
-use rtl_model::{Equations, WordFormat};
+use rtl_model::Equations;
 use std::collections::HashMap;
 
 const BUDGET: u64 = 8 << 30;
@@ -167,7 +167,7 @@ fn voxelized(text: &str, name: &str, res: usize, half: Option<f64>) -> Volume {
         Some(h) => Grid::new([res; 3], DVec3::splat(-h), DVec3::splat(h)).unwrap(),
         None => Grid::of_scene(&scene, [res; 3]).unwrap(),
     };
-    let slicer = Slicer::new(&scene, grid, WordFormat::THESIS).unwrap();
+    let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
     let eval = BlistEval::new(&scene.root);
     voxelize(
         &slicer,
@@ -341,7 +341,7 @@ fn streaming_voxelization_gives_voxelizes_slices_and_work() {
         let slicer = Slicer::new(
             &scene,
             Grid::of_scene(&scene, [20, 18, 17]).unwrap(),
-            WordFormat::THESIS,
+            SlicerOptions::default(),
         )
         .unwrap();
         let eval = BlistEval::new(&scene.root);
@@ -349,12 +349,19 @@ fn streaming_voxelization_gives_voxelizes_slices_and_work() {
         let (vol, work) = voxelize(&slicer, route, set.clone(), &eval, &|| {}).unwrap();
         let mut voxels = vec![];
         let mut next = 0;
-        let w2 = voxelize_streaming(&slicer, route, set, &eval, &|| {}, &mut |k, s| {
-            assert_eq!(k, next);
-            next += 1;
-            voxels.extend_from_slice(s);
-            Ok(())
-        })
+        let w2 = voxelize_streaming::<csgpix::voxel::Error>(
+            &slicer,
+            route,
+            set,
+            &eval,
+            &|| {},
+            &mut |k, s| {
+                assert_eq!(k, next);
+                next += 1;
+                voxels.extend_from_slice(s);
+                Ok(())
+            },
+        )
         .unwrap();
         assert_eq!(voxels, vol.voxels, "{name}");
         assert_eq!(w2, work, "{name}");
@@ -367,7 +374,7 @@ fn a_store_built_while_voxelizing_equals_one_built_from_the_volume() {
     let slicer = Slicer::new(
         &scene,
         Grid::of_scene(&scene, [40; 3]).unwrap(),
-        WordFormat::THESIS,
+        SlicerOptions::default(),
     )
     .unwrap();
     let eval = BlistEval::new(&scene.root);
@@ -380,7 +387,7 @@ fn a_store_built_while_voxelizing_equals_one_built_from_the_volume() {
         set,
         &eval,
         &|| {},
-        &mut |k, s| Ok(b.push(k, s)?),
+        &mut |k, s| b.push(k, s).map_err(String::from),
     )
     .unwrap();
     let streamed = b.finish().unwrap();

@@ -9,9 +9,9 @@ use csgpix::blist::BlistEval;
 use csgpix::sampled::load_imports;
 use csgpix::scad::parse_csg;
 use csgpix::solid::{CsgNode, CsgScene};
-use csgpix::voxel::{voxelize, Grid, Route, Slicer, Volume};
+use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
-use rtl_model::{Equations, WordFormat};
+use rtl_model::Equations;
 
 fn parse(text: &str) -> CsgScene {
     parse_csg(text, "t.csg").unwrap_or_else(|e| panic!("{e}"))
@@ -22,9 +22,11 @@ fn voxels(text: &str, lo: f64, hi: f64, n: usize) -> Volume {
     let scene = parse(text);
     let sampled = load_imports(&scene, "t.csg", std::path::Path::new(".")).unwrap();
     let grid = Grid::new([n; 3], DVec3::splat(lo), DVec3::splat(hi)).unwrap();
-    let slicer = Slicer::new(&scene, grid, WordFormat::THESIS)
-        .unwrap()
-        .with_sampled(sampled);
+    let opts = SlicerOptions {
+        sampled,
+        ..SlicerOptions::default()
+    };
+    let slicer = Slicer::new(&scene, grid, opts).unwrap();
     let eval = BlistEval::new(&scene.root);
     voxelize(
         &slicer,

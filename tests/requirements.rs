@@ -9,9 +9,9 @@ use csgpix::blist::BlistEval;
 use csgpix::scad::parse_csg;
 use csgpix::solid::CsgScene;
 use csgpix::voxel::footprints;
-use csgpix::voxel::{voxelize, Grid, Route, Slicer, Volume, Work};
+use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions, Volume, Work};
 use proptest::prelude::*;
-use rtl_model::{Equations, WordFormat};
+use rtl_model::Equations;
 
 fn scene(name: &str) -> CsgScene {
     let path = format!("{}/vectors/scenes/{name}.csg", env!("CARGO_MANIFEST_DIR"));
@@ -19,8 +19,11 @@ fn scene(name: &str) -> CsgScene {
 }
 
 fn run(s: &CsgScene, dims: [usize; 3], cycle: bool, panel: Option<[usize; 2]>) -> (Volume, Work) {
-    let mut slicer = Slicer::new(s, Grid::of_scene(s, dims).unwrap(), WordFormat::THESIS).unwrap();
-    slicer.panel = panel;
+    let opts = SlicerOptions {
+        panel,
+        ..SlicerOptions::default()
+    };
+    let slicer = Slicer::new(s, Grid::of_scene(s, dims).unwrap(), opts).unwrap();
     let eval = BlistEval::new(&s.root);
     voxelize(
         &slicer,
@@ -75,7 +78,7 @@ fn a_corner_primitive_touches_the_corner_only() {
     let slicer = Slicer::new(
         &s,
         Grid::of_scene(&s, [20, 20, 20]).unwrap(),
-        WordFormat::THESIS,
+        SlicerOptions::default(),
     )
     .unwrap();
     let f = footprints(&slicer).unwrap();

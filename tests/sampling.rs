@@ -10,10 +10,10 @@ use csgpix::evaluate::direct;
 use csgpix::scad::parse_csg;
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
-use csgpix::voxel::{voxelize, Grid, Route, Sampling, Slicer, Volume};
+use csgpix::voxel::{voxelize, Grid, Route, Sampling, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
 use proptest::prelude::*;
-use rtl_model::{Equations, WordFormat};
+use rtl_model::Equations;
 
 /// Signed distance-like value of p to a convex solid: the largest signed distance to its face
 /// planes (≤ 0 inside; within t of 0 exactly when p is within t of the boundary, up to the
@@ -26,7 +26,15 @@ fn signed(planes: &[(DVec3, f64)], p: DVec3) -> f64 {
 }
 
 fn run(scene: &CsgScene, grid: Grid, sampling: Sampling, route: Route) -> (Slicer, Volume) {
-    let slicer = Slicer::with_sampling(scene, grid, WordFormat::THESIS, sampling).unwrap();
+    let slicer = Slicer::new(
+        scene,
+        grid,
+        SlicerOptions {
+            sampling,
+            ..SlicerOptions::default()
+        },
+    )
+    .unwrap();
     let eval = csgpix::blist::BlistEval::new(&scene.root);
     let eval: &dyn SliceEval = &eval;
     let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), eval, &|| {}).unwrap();

@@ -5,9 +5,9 @@ mod common;
 
 use common::random_scene;
 use csgpix::scad::parse_csg;
-use csgpix::voxel::{array_mask, float_ranges, word_ranges, Grid, Sampling, Slicer};
+use csgpix::voxel::{array_mask, float_ranges, word_ranges, Grid, Sampling, Slicer, SlicerOptions};
 use proptest::prelude::*;
-use rtl_model::{Equations, WordFormat};
+use rtl_model::Equations;
 
 /// Mismatches (slab, primitive, pixel) between the array and the interval route, and voxels
 /// where the interval route differs from float.
@@ -19,7 +19,15 @@ fn compare(
 ) -> (Vec<(usize, usize, usize)>, usize) {
     let scene = parse_csg(text, "scene.csg").unwrap();
     let grid = Grid::of_scene(&scene, dims).unwrap();
-    let slicer = Slicer::with_sampling(&scene, grid, WordFormat::THESIS, sampling).unwrap();
+    let slicer = Slicer::new(
+        &scene,
+        grid,
+        SlicerOptions {
+            sampling,
+            ..SlicerOptions::default()
+        },
+    )
+    .unwrap();
     let mut bad = vec![];
     let mut vs_float = 0;
     for prim in 0..scene.solids.len() {

@@ -13,8 +13,8 @@ use csgpix::evaluate::{direct, StackEval, TreeEval};
 use csgpix::sampled::{load_imports, load_scene, Loaded};
 use csgpix::slice::SliceEval;
 use csgpix::solid::{CsgScene, Import};
-use csgpix::voxel::{voxelize, word_ranges, Grid, Route, Slicer, Volume};
-use rtl_model::{Equations, WordFormat};
+use csgpix::voxel::{voxelize, word_ranges, Grid, Route, Slicer, SlicerOptions, Volume};
+use rtl_model::Equations;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -26,9 +26,11 @@ fn scene_path(name: &str) -> PathBuf {
 
 fn slicer(l: Loaded, grid: Grid) -> (Slicer, CsgScene) {
     let scene = l.scene.clone();
-    let s = Slicer::new(&l.scene, grid, WordFormat::THESIS)
-        .unwrap()
-        .with_sampled(l.sampled);
+    let opts = SlicerOptions {
+        sampled: l.sampled,
+        ..SlicerOptions::default()
+    };
+    let s = Slicer::new(&l.scene, grid, opts).unwrap();
     (s, scene)
 }
 

@@ -9,9 +9,9 @@ use csgpix::scad::parse_csg;
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
 use csgpix::voxel::{
-    float_interval, float_ranges, voxelize, word_ranges, Grid, Route, Slicer, Volume,
+    float_interval, float_ranges, voxelize, word_ranges, Grid, Route, Slicer, SlicerOptions, Volume,
 };
-use rtl_model::{Equations, WordFormat};
+use rtl_model::Equations;
 
 fn scene(name: &str) -> CsgScene {
     let path = format!("{}/vectors/scenes/{name}.csg", env!("CARGO_MANIFEST_DIR"));
@@ -23,7 +23,12 @@ fn run(s: &CsgScene, n: usize, route: Route, threads: usize) -> Volume {
 }
 
 fn run_with(s: &CsgScene, n: usize, route: Route, threads: usize, eval: &dyn SliceEval) -> Volume {
-    let slicer = Slicer::new(s, Grid::of_scene(s, [n, n, n]).unwrap(), WordFormat::THESIS).unwrap();
+    let slicer = Slicer::new(
+        s,
+        Grid::of_scene(s, [n, n, n]).unwrap(),
+        SlicerOptions::default(),
+    )
+    .unwrap();
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -113,7 +118,7 @@ fn word_differs_from_float_only_within_the_rounding_bound() {
         let slicer = Slicer::new(
             &s,
             Grid::of_scene(&s, [n, n, n]).unwrap(),
-            WordFormat::THESIS,
+            SlicerOptions::default(),
         )
         .unwrap();
         let (mut differ, mut total) = (0, 0);
@@ -171,7 +176,7 @@ fn tree_evaluation_matches_direct_evaluation_of_the_masks() {
     let slicer = Slicer::new(
         &s,
         Grid::of_scene(&s, [n, n, n]).unwrap(),
-        WordFormat::THESIS,
+        SlicerOptions::default(),
     )
     .unwrap();
     let v = run(&s, n, Route::Intervals, 2);

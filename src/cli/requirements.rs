@@ -11,7 +11,7 @@ use csgpix::requirements::DepthLayout;
 use csgpix::scad::parse_csg;
 use csgpix::solid::CsgScene;
 use csgpix::voxel::{footprints, touched_panels, Footprint, PixelBox};
-use csgpix::voxel::{slice_ops, Grid, Slicer};
+use csgpix::voxel::{slice_ops, Grid, Slicer, SlicerOptions};
 use glam::DVec3;
 use rtl_model::array::{check_program, program_cycles};
 use rtl_model::{ArrayConfig, Equations, WordFormat};
@@ -134,7 +134,12 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     .map_err(at)?;
     a.mem
         .check(memory_estimate(grid.dims), "this analysis", "lower --res")?;
-    let slicer = Slicer::with_sampling(&scene, grid, a.word, a.sampling.sampling()).map_err(at)?;
+    let opts = SlicerOptions {
+        fmt: a.word,
+        sampling: a.sampling.sampling(),
+        ..SlicerOptions::default()
+    };
+    let slicer = Slicer::new(&scene, grid, opts).map_err(|e| at(e.into()))?;
     let report = analyse(&a, &scene, &slicer).map_err(at)?;
     if a.json {
         let text = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;

@@ -9,10 +9,9 @@ use csgpix::mesh;
 use csgpix::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix::output::Outputs;
 use csgpix::sculpt::{self, Frame, Latency, Sculptor, Step, Tool};
-use csgpix::voxel::{memory_estimate, Slicer, Volume};
+use csgpix::voxel::{memory_estimate, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
-use rtl_model::WordFormat;
 use serde::Serialize;
 use std::io::Write;
 
@@ -258,9 +257,12 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
         .saturating_add(octree::memory_estimate(StoreKind::Octree, grid.dims)?);
     let budget = a.mem.bytes();
     a.mem.check(need, "this run", "lower --res")?;
-    let slicer = Slicer::with_sampling(scene, grid, WordFormat::THESIS, a.grid.sampling.sampling())
-        .map_err(|e| format!("{name}: {e}"))?
-        .with_sampled(loaded.sampled);
+    let opts = SlicerOptions {
+        sampling: a.grid.sampling.sampling(),
+        sampled: loaded.sampled,
+        ..SlicerOptions::default()
+    };
+    let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
     let store = csgpix::octree_from_scene(&slicer, &scene.root, budget - need)
         .map_err(lib_errors::sculpt)?;
     Ok((store, Frame::of_grid(&grid), grid.dims))

@@ -16,8 +16,8 @@ use csgpix::sampled::{load_scene, parse_binding, scene_from_expr, Binding, Loade
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
 use csgpix::voxel::{
-    memory_estimate, voxelize, voxelize_streaming, Grid, GridSpec, Route, Sampling, Slicer, Volume,
-    Work,
+    memory_estimate, voxelize, voxelize_streaming, BindingProblem, Error, Grid, GridSpec, Route,
+    Sampling, Slicer, SlicerOptions, Volume, Work,
 };
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -146,7 +146,7 @@ impl GridArgs {
         };
         let (lo, hi) = match self.bounds {
             Some(b) => b,
-            None => scene.bounds()?,
+            None => scene.bounds().map_err(flag_message)?,
         };
         spec.grid(lo, hi)
     }
@@ -377,9 +377,26 @@ fn input_name(a: &Args) -> String {
 
 fn load(a: &Args) -> Result<Loaded, String> {
     match (&a.scene, &a.expr) {
-        (Some(p), _) => load_scene(p),
-        (None, Some(e)) => scene_from_expr(e, &a.prim),
+        (Some(p), _) => load_scene(p).map_err(flag_message),
+        (None, Some(e)) => scene_from_expr(e, &a.prim).map_err(flag_message),
         (None, None) => Err("give a scene file or --expr".into()),
+    }
+}
+
+/// A loading error in the words of this command's flags (`--bounds`, `--expr`, `--prim`).
+pub fn flag_message(e: Error) -> String {
+    match e {
+        Error::NeedsBounds => format!("{e}: give --bounds"),
+        Error::Expr(m) => format!("--expr: {m}"),
+        Error::Unbound { name } => {
+            format!("--expr: primitive `{name}` needs a file: --prim {name}=FILE")
+        }
+        Error::Binding {
+            name,
+            problem: BindingProblem::NotInExpression,
+        } => format!("--prim {name}: the expression has no primitive `{name}`"),
+        Error::Binding { name, problem } => format!("--prim {name}: {problem}"),
+        e => e.to_string(),
     }
 }
 
@@ -443,12 +460,15 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
     }
     a.mem.check(need, "this run", "lower --res")?;
-    let mut slicer = Slicer::with_sampling(scene, grid, a.word, a.grid.sampling.sampling())
-        .map_err(|e| format!("{name}: {e}"))?
-        .with_sampled(loaded.sampled);
-    slicer.panel = a.panel.0;
-    slicer.grey = a.grey;
-    slicer.blend = a.blend.map(|u| BlendEval::new(&scene.root, u));
+    let opts = SlicerOptions {
+        fmt: a.word,
+        sampling: a.grid.sampling.sampling(),
+        panel: a.panel.0,
+        grey: a.grey,
+        blend: a.blend.map(|u| BlendEval::new(&scene.root, u)),
+        sampled: loaded.sampled,
+    };
+    let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
     let eval = evaluator(a.eval, scene);
     let route = match (a.model, a.route) {
         (ModelArg::Cycle, _) => Route::Array { cycle: true },

@@ -25,7 +25,12 @@ pub enum Union {
     /// C = max(C_s, C_d).
     Max,
     /// C = k_s·C_s + k_d·C_d.
-    Sum { ks: f64, kd: f64 },
+    Sum {
+        /// k_s, the factor of the source (the right operand).
+        ks: f64,
+        /// k_d, the factor of the destination (the left operand).
+        kd: f64,
+    },
 }
 
 /// A tree as blending operations on grey slices.
@@ -36,6 +41,7 @@ pub struct BlendEval {
 }
 
 impl BlendEval {
+    /// The blending program of `tree`, its unions blending by `union`.
     pub fn new(tree: &CsgNode, union: Union) -> BlendEval {
         BlendEval {
             program: Postfix::compile(tree, Compile::default()),

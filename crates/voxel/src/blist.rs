@@ -28,18 +28,18 @@ use std::collections::BinaryHeap;
 use crate::slice::{self, Labels, Mask, OpCounts, SliceEval};
 use csgpix_scene::solid::CsgNode;
 
-/// One entry BL[p] of the Blist table (§4.3).
+/// One entry `BL[p]` of the Blist table (§4.3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BlistRow {
-    /// BL[p].primitiveReference: the primitive (the tree's `Solid` index).
+    /// `BL[p].primitiveReference`: the primitive (the tree's `Solid` index).
     pub prim: usize,
-    /// BL[p].name: 0 for "no name"; a voxel whose label is this name (or 0) is classified
+    /// `BL[p].name`: 0 for "no name"; a voxel whose label is this name (or 0) is classified
     /// against this primitive.
     pub name: u32,
-    /// BL[p].sign: `true` is `+`. A voxel whose classification against the primitive equals the
-    /// sign takes the stamp; otherwise its label becomes 0 ("the next primitive decides").
+    /// `BL[p].sign`: `true` is `+`. A voxel whose classification against the primitive equals
+    /// the sign takes the stamp; otherwise its label becomes 0 ("the next primitive decides").
     pub sign: bool,
-    /// BL[p].stamp: the name of the next primitive that must classify the voxel when its
+    /// `BL[p].stamp`: the name of the next primitive that must classify the voxel when its
     /// classification equals the sign (IN's name when the voxel is then known to be in).
     pub stamp: u32,
 }
@@ -80,6 +80,24 @@ impl BlistTable {
     /// `(A−B)−C`). `Empty`, and operators without children, are nothing, as everywhere in the
     /// project (an empty intersection too); constants are folded away before step 2, since a
     /// Blist row needs a primitive.
+    ///
+    /// ```
+    /// use csgpix_voxel::blist::BlistTable;
+    /// use csgpix_voxel::evaluate::direct;
+    ///
+    /// // (A + B) − C: positive form (A + B)·C', one row per primitive, left to right.
+    /// let e = csgpix_scene::csg_expr::parse("(A + B) - C").unwrap();
+    /// let t = BlistTable::compile(&e.root);
+    /// let rows: Vec<_> = t.rows.iter().map(|r| (r.prim, r.name, r.sign, r.stamp)).collect();
+    /// // A: in → C decides (name 1); out → B decides. B: out → OUT (2). C: out → IN (1).
+    /// assert_eq!(rows, [(0, 0, true, 1), (1, 0, false, 2), (2, 1, false, 1)]);
+    /// assert_eq!((t.in_name, t.label_bits), (1, 2));
+    /// // ClassifyAgainstBlist agrees with the tree at every combination of A, B and C.
+    /// for bits in 0..8 {
+    ///     let inside = |p: usize| bits >> p & 1 == 1;
+    ///     assert_eq!(t.classify(inside, None), direct(&e.root, inside));
+    /// }
+    /// ```
     pub fn compile(root: &CsgNode) -> BlistTable {
         let mut tree = Tree::default();
         match tree.positive_form(root) {
@@ -99,9 +117,9 @@ impl BlistTable {
 
     /// Procedure ClassifyAgainstBlist (§4.3.3) for one voxel: `inside(i)` is its classification
     /// against primitive i. The label starts at 0; row p classifies the voxel when the label is
-    /// 0 or BL[p].name, and then writes BL[p].stamp if the classification equals BL[p].sign, else
-    /// 0. The voxel is in when the final label is IN's name. `trace` receives the label after
-    /// every row (the label column of Table 4.2).
+    /// 0 or `BL[p].name`, and then writes `BL[p].stamp` if the classification equals
+    /// `BL[p].sign`, else 0. The voxel is in when the final label is IN's name. `trace`
+    /// receives the label after every row (the label column of Table 4.2).
     pub fn classify(&self, inside: impl Fn(usize) -> bool, trace: Option<&mut Vec<u32>>) -> bool {
         self.run(inside, trace, &mut RowTests::default()).0 == self.in_name
     }
@@ -513,7 +531,7 @@ impl Names {
 /// (plane b holds bit b of 64 labels), so `label = 0`, `label = BL[p].name` and the write of the
 /// stamp are a few word operations per row, as the per-pixel hardware would do them.
 ///
-/// Colour (§4.5): "If (Inprimitive(BL[p]) && v.label = IN.name) v.color = BL[p].color": the voxel
+/// Colour (§4.5): `If (Inprimitive(BL[p]) && v.label = IN.name) v.color = BL[p].color`: the voxel
 /// takes the colour of the row that moves its label to IN's name while it is inside that row's
 /// primitive. IN's name is locked from the row that first stamps it to the end, so no later row
 /// can classify the voxel again: that colour is final. The thesis leaves voxels that reach IN
@@ -524,10 +542,12 @@ impl Names {
 /// written on classifying rows; where §4.5 gives a colour this rule gives the same one.
 #[derive(Clone, Debug)]
 pub struct BlistEval {
+    /// The Blist of the tree (§4.3.2).
     pub table: BlistTable,
 }
 
 impl BlistEval {
+    /// The evaluator of `tree`: its Blist compiled once.
     pub fn new(tree: &CsgNode) -> BlistEval {
         BlistEval {
             table: BlistTable::compile(tree),

@@ -6,6 +6,7 @@ use rtl_model::EquationSet;
 
 use csgpix_scene::grid::{Grid, Volume};
 
+use crate::error::Result;
 use crate::footprint::{footprints, Footprint, PixelBox};
 use crate::masks::{array_mask_in, slice_ops};
 use crate::ranges::{float_ranges, mesh_runs, word_ranges, SlabRanges};
@@ -98,7 +99,7 @@ impl ConvexSource {
         b: usize,
         simulated: &mut u64,
         f: &mut dyn FnMut(usize, &[Mask]),
-    ) -> Result<(), String> {
+    ) -> Result<()> {
         match self {
             ConvexSource::Ranges(r) => {
                 let mut masks: Vec<Mask> = r.iter().map(|(r, _)| r.mask(a)).collect();
@@ -124,7 +125,7 @@ impl ConvexSource {
                             *simulated += px_clocks;
                             Ok(m)
                         })
-                        .collect::<Result<Vec<_>, String>>()?;
+                        .collect::<Result<Vec<_>>>()?;
                     f(k, &masks);
                 }
             }
@@ -142,7 +143,7 @@ impl Source {
         b: usize,
         simulated: &mut u64,
         f: &mut dyn FnMut(usize, &[Mask]),
-    ) -> Result<(), String> {
+    ) -> Result<()> {
         if self.sampled.is_empty() {
             return self.convex.sweep_convex(slicer, a, b, simulated, f);
         }
@@ -178,7 +179,7 @@ fn frame_mask(
     cycle: bool,
     set: &EquationSet,
     fp: Option<&Footprint>,
-) -> Result<(Mask, u64), String> {
+) -> Result<(Mask, u64)> {
     let [w, h] = [slicer.grid.dims[0], slicer.grid.dims[1]];
     let bx = match (fp, slicer.panel) {
         (None, _) | (_, None) => PixelBox {
@@ -205,7 +206,7 @@ pub fn voxelize(
     set: EquationSet,
     eval: &dyn SliceEval,
     tick: &(dyn Fn() + Sync),
-) -> Result<(Volume, Work), String> {
+) -> Result<(Volume, Work)> {
     use rayon::prelude::*;
     let source = source_for(slicer, route, &set)?;
     let mut work = counted_work(slicer, &set)?;
@@ -228,7 +229,7 @@ pub fn voxelize(
             }
             Ok((simulated, ops))
         })
-        .collect::<Result<_, String>>()?;
+        .collect::<Result<_>>()?;
     for (simulated, ops) in counted {
         work.simulated_pixel_clocks += simulated;
         work.ops += ops;
@@ -264,22 +265,24 @@ pub fn memory_estimate(grid: &Grid, prims: usize, threads: usize) -> u64 {
 /// The process before any voxel: code, libraries, the scene.
 pub const PROCESS_BYTES: u64 = 16 << 20;
 
-/// Receives slice k's colour codes ([`voxelize_streaming`]); an error stops the run.
-pub type SliceSink<'a> = dyn FnMut(usize, &[u8]) -> Result<(), String> + 'a;
+/// Receives slice k's colour codes ([`voxelize_streaming`]); an error (of the sink's own
+/// type `E`) stops the run.
+pub type SliceSink<'a, E = crate::Error> = dyn FnMut(usize, &[u8]) -> Result<(), E> + 'a;
 
 /// [`voxelize`] handing each slice's colour codes to `sink` in order of k (0, 1, …) instead of
 /// assembling a volume, for stores built slice by slice (seed 000 §4.3.4; `src/octree`).
 /// Slabs are voxelized in parallel a batch at a time (a few slabs per thread), so at most a
 /// batch of slices is held; the slices, and the returned [`Work`], are those of [`voxelize`]
-/// (tested). `sink` may stop the run with an error.
-pub fn voxelize_streaming(
+/// (tested). `sink` may stop the run with an error of its own type, returned as it is; the
+/// run's own errors are returned as `E` too.
+pub fn voxelize_streaming<E: From<crate::Error>>(
     slicer: &Slicer,
     route: Route,
     set: EquationSet,
     eval: &dyn SliceEval,
     tick: &(dyn Fn() + Sync),
-    sink: &mut SliceSink,
-) -> Result<Work, String> {
+    sink: &mut SliceSink<E>,
+) -> Result<Work, E> {
     use rayon::prelude::*;
     let source = source_for(slicer, route, &set)?;
     let mut work = counted_work(slicer, &set)?;
@@ -294,7 +297,7 @@ pub fn voxelize_streaming(
             .collect::<Vec<_>>()
             .into_par_iter()
             .map(|a| slab_chunk(slicer, &source, eval, tick, a, (a + chunk).min(end)))
-            .collect::<Result<_, String>>()?;
+            .collect::<Result<_>>()?;
         let slices = chunks.into_iter().flat_map(|(s, sim)| {
             work.simulated_pixel_clocks += sim;
             s
@@ -309,8 +312,7 @@ pub fn voxelize_streaming(
 }
 
 /// Where a run's per-slab masks come from, by route.
-fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source, String> {
-    slicer.check_imports()?;
+fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source> {
     let nz = slicer.grid.dims[2];
     let sampled = slicer
         .sampled
@@ -331,7 +333,7 @@ fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source
     })
 }
 
-fn convex_source(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<ConvexSource, String> {
+fn convex_source(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<ConvexSource> {
     use rayon::prelude::*;
     let (prims, nz) = (slicer.lists.len(), slicer.grid.dims[2]);
     Ok(match route {
@@ -361,7 +363,7 @@ fn convex_source(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Con
 }
 
 /// The clocks and frames of a run, counted from the programs: the same on every route.
-fn counted_work(slicer: &Slicer, set: &EquationSet) -> Result<Work, String> {
+fn counted_work(slicer: &Slicer, set: &EquationSet) -> Result<Work> {
     let cfg = slicer.config();
     let [nx, ny, nz] = slicer.grid.dims;
     let prims = slicer.lists.len();
@@ -401,7 +403,7 @@ fn label_colours(slicer: &Slicer, k: usize, labels: &[u32]) -> Vec<u8> {
         .collect()
 }
 
-/// First value `--grey` gives a dataset's grey levels: 1..=15 stay the palette's codes.
+/// First value [`Slicer::grey`] gives a dataset's grey levels: 1..=15 stay the palette's codes.
 pub const GREY_BASE: u8 = 16;
 
 /// A grey level 1..=255 as a voxel value GREY_BASE..=255 beside the colour codes.
@@ -441,7 +443,7 @@ fn slab_chunk(
     tick: &(dyn Fn() + Sync),
     a: usize,
     b: usize,
-) -> Result<Chunk, String> {
+) -> Result<Chunk> {
     let (mut out, mut simulated) = (vec![], 0);
     source.sweep(slicer, a, b, &mut simulated, &mut |k, masks| {
         let mut counts = OpCounts::default();

@@ -227,7 +227,12 @@ pub enum Op {
     /// Short-circuit (§4.2): if the top equals `absorb`, the rest of the chain cannot change it,
     /// so jump to instruction `to` leaving the top as the chain's value. Only in programs
     /// compiled with [`Compile::short_circuit`].
-    Guard { absorb: bool, to: usize },
+    Guard {
+        /// The value that decides the chain (false for ∩ and −, true for ∪).
+        absorb: bool,
+        /// The instruction after the chain.
+        to: usize,
+    },
 }
 
 /// How to flatten a tree into a [`Postfix`] program.
@@ -319,6 +324,7 @@ impl Postfix {
         Postfix { ops, peak }
     }
 
+    /// The instructions, in execution order.
     pub fn ops(&self) -> &[Op] {
         &self.ops
     }
@@ -491,6 +497,7 @@ impl TreeEval {
         }
     }
 
+    /// The postfix program run at every voxel.
     pub fn program(&self) -> &Postfix {
         &self.prog
     }
@@ -634,6 +641,7 @@ impl StackEval {
         self
     }
 
+    /// The postfix program swept over whole slices.
     pub fn program(&self) -> &Postfix {
         &self.prog
     }

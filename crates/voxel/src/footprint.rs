@@ -3,27 +3,35 @@
 
 use serde::Serialize;
 
+use crate::error::Result;
 use crate::ranges::{word_ranges, SlabRanges};
 use crate::slicer::Slicer;
 
 /// A rectangle of pixels, `x0..x1` × `y0..y1` (half-open).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct PixelBox {
+    /// First column.
     pub x0: usize,
+    /// First row.
     pub y0: usize,
+    /// One past the last column.
     pub x1: usize,
+    /// One past the last row.
     pub y1: usize,
 }
 
 impl PixelBox {
+    /// Columns.
     pub fn width(&self) -> usize {
         self.x1 - self.x0
     }
 
+    /// Rows.
     pub fn height(&self) -> usize {
         self.y1 - self.y0
     }
 
+    /// Pixels, width × height.
     pub fn pixels(&self) -> usize {
         self.width() * self.height()
     }
@@ -95,7 +103,7 @@ impl Footprint {
 }
 
 /// The footprint of every primitive of a sliced scene.
-pub fn footprints(slicer: &Slicer) -> Result<Vec<Footprint>, String> {
+pub fn footprints(slicer: &Slicer) -> Result<Vec<Footprint>> {
     use rayon::prelude::*;
     let w = slicer.grid.dims[0];
     (0..slicer.lists.len())

@@ -8,6 +8,7 @@ use rtl_model::{Array, ArrayConfig, CycleArray, EquationSet, WordArray};
 use csgpix_draw::compile::clip_scene_ops;
 use csgpix_scene::clip_expr::Clip;
 
+use crate::error::{Error, Result};
 use crate::footprint::PixelBox;
 use crate::slice::Mask;
 use crate::slicer::Slicer;
@@ -20,7 +21,7 @@ pub fn array_mask(
     k: usize,
     cycle: bool,
     set: EquationSet,
-) -> Result<(Mask, u64), String> {
+) -> Result<(Mask, u64)> {
     let [w, h] = [slicer.grid.dims[0], slicer.grid.dims[1]];
     let all = PixelBox {
         x0: 0,
@@ -44,7 +45,7 @@ pub fn array_mask_in(
     cycle: bool,
     set: EquationSet,
     bx: PixelBox,
-) -> Result<(Mask, u64), String> {
+) -> Result<(Mask, u64)> {
     let mut ops = slice_ops(slicer, prim, k)?;
     rtl_model::program::translate(&mut ops, bx.x0, bx.y0);
     let full = slicer.config();
@@ -52,7 +53,8 @@ pub fn array_mask_in(
         width: bx.width(),
         height: bx.height(),
         // Only the clipping-stack levels the frame uses (its unused levels would hold 0).
-        stack_depth: check_program(&ops, full.stack_depth).map_err(|e| e.to_string())?,
+        stack_depth: check_program(&ops, full.stack_depth)
+            .map_err(|e| Error::Msg(e.to_string()))?,
         ..full
     };
     let mut arr: Box<dyn Array> = if cycle {
@@ -60,7 +62,7 @@ pub fn array_mask_in(
     } else {
         Box::new(WordArray::new(cfg, set))
     };
-    arr.run(&ops).map_err(|e| e.to_string())?;
+    arr.run(&ops).map_err(|e| Error::Msg(e.to_string()))?;
     let w = slicer.grid.dims[0];
     let mut mask = Mask::new(slicer.grid.slice_len());
     for y in 0..bx.height() {
@@ -74,11 +76,11 @@ pub fn array_mask_in(
 }
 
 /// The P·Vz program of primitive `prim` and slab `k` (§5.2.1: @(P)·Vz + @(Vz)·P).
-pub fn slice_ops(slicer: &Slicer, prim: usize, k: usize) -> Result<Vec<rtl_model::Op>, String> {
+pub fn slice_ops(slicer: &Slicer, prim: usize, k: usize) -> Result<Vec<rtl_model::Op>> {
     let p = &slicer.lists[prim];
     let lists = [p.clone(), slicer.slab_list(k, slicer.colours[prim] as u32)];
     let expr = Clip::And(Box::new(Clip::Obj(0)), Box::new(Clip::Obj(1)));
     let cfg = slicer.config();
     clip_scene_ops(&lists, &expr, &cfg.fmt, cfg.colour_bits)
-        .map_err(|(_, e)| format!("solid {}: {e}", prim + 1))
+        .map_err(|(_, e)| Error::Msg(format!("solid {}: {e}", prim + 1)))
 }

@@ -4,6 +4,7 @@
 use csgpix_scene::display_list::DlPlane;
 use csgpix_scene::trimesh::TriMesh;
 
+use crate::error::Result;
 use crate::sampled::SlabRuns;
 use crate::slice::Mask;
 use crate::slicer::Slicer;
@@ -55,10 +56,10 @@ fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
     (first as u32, last as u32)
 }
 
-/// [`Route::Intervals`]: the array's own plane words (DEPGEN's Z0 + x·dZx + y·dZy, wrapped to
-/// the word) reduced to the interval of depths inside P: behind every front plane, before
-/// every back plane, K ≥ 0 on every perpendicular plane.
-pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges, String> {
+/// [`Route::Intervals`](crate::Route::Intervals): the array's own plane words (DEPGEN's
+/// Z0 + x·dZx + y·dZy, wrapped to the word) reduced to the interval of depths inside P:
+/// behind every front plane, before every back plane, K ≥ 0 on every perpendicular plane.
+pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges> {
     let fmt = &slicer.fmt;
     let coeffs: Vec<(rtl_model::Coeffs, &DlPlane)> = slicer.lists[prim]
         .planes
@@ -141,7 +142,7 @@ pub fn toggle_run(t: &mut [Vec<u32>], i: usize, (first, last): (u32, u32)) {
     }
 }
 
-/// [`Route::Float`]: the same slabs from the exact intervals.
+/// [`Route::Float`](crate::Route::Float): the same slabs from the exact intervals.
 pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
     let raw = |v, up| raw_depth(slicer, v, up);
     let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);

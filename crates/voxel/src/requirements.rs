@@ -14,9 +14,13 @@ use rtl_model::WordFormat;
 /// How slicing lays a scene `extent` scene units deep into `slabs` slabs on a `w`×`h` array.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DepthLayout {
+    /// The grid's depth (Z extent), scene units.
     pub extent: f64,
+    /// Slabs (Z voxels).
     pub slabs: usize,
+    /// Array width, pixels.
     pub w: usize,
+    /// Array height, pixels.
     pub h: usize,
 }
 

@@ -19,6 +19,7 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat4, DVec3};
 
+use crate::error::{BindingProblem, Error, Result};
 use crate::ranges::toggle_run;
 use crate::slice::Mask;
 use csgpix_draw::project::colour_code;
@@ -28,13 +29,17 @@ use csgpix_scene::nrrd::read_nrrd;
 use csgpix_scene::scad::parse_csg;
 use csgpix_scene::solid::{CsgNode, CsgScene, Import, IMPORTED};
 use csgpix_scene::trimesh::TriMesh;
+use csgpix_scene::Location;
 
 /// What a sampled primitive is.
 pub enum Shape {
     /// A dataset and its iso value; `to_file` maps scene points into the dataset's own space.
     Dataset {
+        /// The samples.
         data: Box<Dataset>,
+        /// The iso value: samples at or above it are inside.
         threshold: f64,
+        /// Scene space → the dataset's own space.
         to_file: DMat4,
     },
     /// A closed mesh, in scene coordinates.
@@ -43,6 +48,7 @@ pub enum Shape {
 
 /// A loaded import.
 pub struct Sampled {
+    /// What it is.
     pub shape: Shape,
     /// Palette code (1..=15) of its voxels, as for a convex solid.
     pub colour: u8,
@@ -104,6 +110,7 @@ impl Sampled {
         }
     }
 
+    /// Whether it is a dataset (not a mesh).
     pub fn is_dataset(&self) -> bool {
         matches!(self.shape, Shape::Dataset { .. })
     }
@@ -129,19 +136,22 @@ fn corners(lo: DVec3, hi: DVec3) -> impl Iterator<Item = DVec3> {
 
 /// A scene and its loaded imports (`sampled[j]` is the primitive `solids.len() + j`).
 pub struct Loaded {
+    /// The scene: its solids, its imports named, its tree.
     pub scene: CsgScene,
+    /// Its imports, loaded, in the scene's order.
     pub sampled: Vec<Sampled>,
 }
 
 impl Loaded {
     /// A grid over every primitive's bounds (subtracted ones too).
-    pub fn grid(&self, dims: [usize; 3]) -> Result<Grid, String> {
+    pub fn grid(&self, dims: [usize; 3]) -> Result<Grid> {
         let (lo, hi) = self.bounds()?;
-        Grid::new(dims, lo, hi)
+        Ok(Grid::new(dims, lo, hi)?)
     }
 
-    /// The box around every primitive (subtracted ones too).
-    pub fn bounds(&self) -> Result<(DVec3, DVec3), String> {
+    /// The box around every primitive (subtracted ones too); [`Error::NeedsBounds`] when
+    /// there is no primitive.
+    pub fn bounds(&self) -> Result<(DVec3, DVec3)> {
         let solid_pts = self.scene.solids.iter().flat_map(|s| s.vertices.iter());
         let mut lo = DVec3::INFINITY;
         let mut hi = DVec3::NEG_INFINITY;
@@ -155,48 +165,85 @@ impl Loaded {
             hi = hi.max(b);
         }
         if !lo.is_finite() {
-            return Err("the scene has no primitives: give --bounds".into());
+            return Err(Error::NeedsBounds);
         }
         Ok((lo, hi))
     }
 }
 
 /// Read a `.csg` scene and every file it imports (relative to the scene's directory).
-pub fn load_scene(path: &Path) -> Result<Loaded, String> {
+pub fn load_scene(path: &Path) -> Result<Loaded> {
     let name = path.display().to_string();
     let text = csgpix_scene::scad::scene_text(path)?;
-    let scene = parse_csg(&text, &name).map_err(|e| e.to_string())?;
+    let scene = parse_csg(&text, &name).map_err(located)?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let sampled = load_imports(&scene, &name, &dir)?;
     Ok(Loaded { scene, sampled })
 }
 
+/// A `.csg` reader's error as a scene error located where it is.
+fn located(e: csgpix_scene::scad::ScadError) -> Error {
+    csgpix_scene::Error::at(e.file, e.line, e.col, e.msg).into()
+}
+
 /// Load the scene's imports; `scene_file` names the scene in messages, `dir` is where
 /// relative paths start.
-pub fn load_imports(
-    scene: &CsgScene,
-    scene_file: &str,
-    dir: &Path,
-) -> Result<Vec<Sampled>, String> {
+pub fn load_imports(scene: &CsgScene, scene_file: &str, dir: &Path) -> Result<Vec<Sampled>> {
     let first = scene.solids.len();
     scene
         .imports
         .iter()
         .enumerate()
         .map(|(j, imp)| {
-            let at = format!("{scene_file}:{}:{}", imp.line, imp.col);
-            load_import(imp, first + j, &at, dir)
+            let at = Location {
+                file: scene_file.to_string(),
+                line: imp.line,
+                col: imp.col,
+            };
+            load_import(imp, first + j, &Origin::Scene(at), dir)
         })
         .collect()
 }
 
-/// Load one import; `at` says where it was named, for messages.
-fn load_import(imp: &Import, index: usize, at: &str, dir: &Path) -> Result<Sampled, String> {
+/// Where an import was named, for messages.
+enum Origin<'a> {
+    /// By `import(…)` in a scene file.
+    Scene(Location),
+    /// By a primitive name's binding ([`Binding`]).
+    Binding(&'a str),
+}
+
+impl Origin<'_> {
+    /// The import's file is missing.
+    fn missing(&self, file: &str, path: PathBuf) -> Error {
+        let problem = BindingProblem::NoSuchFile {
+            file: file.to_string(),
+            path,
+        };
+        match self {
+            Origin::Scene(at) => {
+                csgpix_scene::Error::at(&at.file, at.line, at.col, problem.to_string()).into()
+            }
+            Origin::Binding(name) => Error::Binding {
+                name: name.to_string(),
+                problem,
+            },
+        }
+    }
+}
+
+/// Load one import (primitive `index`); `origin` says where it was named.
+fn load_import(imp: &Import, index: usize, origin: &Origin, dir: &Path) -> Result<Sampled> {
     let colour = imp
         .colour
         .map_or(1 + (index % 6) as u32, colour_code)
         .min(255) as u8;
     if let Some(tris) = &imp.mesh {
+        // A mesh the scene made itself (an extrusion): named by the node, not a file.
+        let at = match origin {
+            Origin::Scene(at) => at.to_string(),
+            Origin::Binding(name) => name.to_string(),
+        };
         let mesh = TriMesh::from_f64(tris);
         mesh.check_closed(&format!("{at}: `{}`", imp.file))?;
         return Ok(Sampled {
@@ -207,11 +254,7 @@ fn load_import(imp: &Import, index: usize, at: &str, dir: &Path) -> Result<Sampl
     }
     let path: PathBuf = dir.join(&imp.file);
     if !path.is_file() {
-        return Err(format!(
-            "{at}: `import(\"{}\")`: no such file {}",
-            imp.file,
-            path.display()
-        ));
+        return Err(origin.missing(&imp.file, path));
     }
     let to_scene = imp.matrix.map_or(DMat4::IDENTITY, |m| {
         DMat4::from_cols_array_2d(&m).transpose()
@@ -279,18 +322,21 @@ impl SlabRuns {
     }
 }
 
-/// A primitive name of a CSG expression bound to a file (`--prim NAME=FILE[,threshold=T]`):
+/// A primitive name of a CSG expression bound to a file (`NAME=FILE[,threshold=T]`):
 /// a `.csg` scene (its whole tree stands for the name), a dataset (`.nrrd`, with its
 /// threshold) or a mesh (`.stl`, `.obj`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Binding {
+    /// The primitive name (letters, digits, `_`; a letter first).
     pub name: String,
+    /// The file it stands for.
     pub file: PathBuf,
+    /// A dataset's iso value (§3.2): samples at or above it are inside.
     pub threshold: Option<f64>,
 }
 
-/// `NAME=FILE[,threshold=T]`.
-pub fn parse_binding(s: &str) -> Result<Binding, String> {
+/// A binding from its text, `NAME=FILE[,threshold=T]`.
+pub fn parse_binding(s: &str) -> Result<Binding> {
     let (name, rest) = s
         .split_once('=')
         .ok_or_else(|| format!("{s:?}: expected NAME=FILE[,threshold=T]"))?;
@@ -301,7 +347,7 @@ pub fn parse_binding(s: &str) -> Result<Binding, String> {
                 .parse()
                 .map_err(|e| format!("{s:?}: threshold {t:?}: {e}"))?;
             if !t.is_finite() {
-                return Err(format!("{s:?}: the threshold must be finite"));
+                return Err(format!("{s:?}: the threshold must be finite").into());
             }
             (f, Some(t))
         }
@@ -311,9 +357,7 @@ pub fn parse_binding(s: &str) -> Result<Binding, String> {
     let ok = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
         && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
     if !ok {
-        return Err(format!(
-            "{s:?}: {name:?} is not a primitive name (letters, digits, _)"
-        ));
+        return Err(format!("{s:?}: {name:?} is not a primitive name (letters, digits, _)").into());
     }
     Ok(Binding {
         name: name.to_string(),
@@ -323,31 +367,38 @@ pub fn parse_binding(s: &str) -> Result<Binding, String> {
 }
 
 /// The scene of a CSG expression (§4.3.2's "named primitives") whose names are bound to
-/// files. `expr_name` names the expression in messages (`--expr`).
-pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded, String> {
-    let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| format!("--expr: {e}"))?;
+/// files: [`Error::Expr`] when it does not parse, [`Error::Unbound`] for a name bound to no
+/// file, [`Error::Binding`] for a binding that does not fit.
+///
+/// ```
+/// use csgpix_voxel::sampled::scene_from_expr;
+/// use csgpix_voxel::Error;
+///
+/// let unbound = scene_from_expr("A + B", &[]).err();
+/// assert_eq!(unbound, Some(Error::Unbound { name: "A".into() }));
+/// assert!(matches!(scene_from_expr("A +", &[]), Err(Error::Expr(_))));
+/// ```
+pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded> {
+    let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| Error::Expr(e.to_string()))?;
     if let Some(b) = bindings.iter().find(|b| !e.names.contains(&b.name)) {
-        return Err(format!(
-            "--prim {}: the expression has no primitive `{}`",
-            b.name, b.name
-        ));
+        return Err(binding(b, BindingProblem::NotInExpression));
     }
+    // Every name bound before any file is read.
     if let Some(name) = e
         .names
         .iter()
         .find(|n| !bindings.iter().any(|b| &b.name == *n))
     {
-        return Err(format!(
-            "--expr: primitive `{name}` needs a file: --prim {name}=FILE"
-        ));
+        return Err(Error::Unbound { name: name.clone() });
     }
     let mut scene = CsgScene::convex(vec![], CsgNode::Empty);
     let mut sampled = vec![];
     let mut parts = vec![];
     for name in &e.names {
-        let b = bindings.iter().find(|b| &b.name == name).ok_or_else(|| {
-            format!("--expr: primitive `{name}` needs a file: --prim {name}=FILE")
-        })?;
+        let b = bindings
+            .iter()
+            .find(|b| &b.name == name)
+            .ok_or_else(|| Error::Unbound { name: name.clone() })?;
         parts.push(add_part(&mut scene, &mut sampled, b)?);
     }
     let mut root = e.root.clone();
@@ -364,21 +415,14 @@ pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded, Strin
 
 /// Add one bound file's primitives to `scene`; its tree, with solids numbered in `scene` and
 /// imports as `IMPORTED + j`.
-fn add_part(
-    scene: &mut CsgScene,
-    sampled: &mut Vec<Sampled>,
-    b: &Binding,
-) -> Result<CsgNode, String> {
+fn add_part(scene: &mut CsgScene, sampled: &mut Vec<Sampled>, b: &Binding) -> Result<CsgNode> {
     let is_csg = b
         .file
         .extension()
         .is_some_and(|x| x.eq_ignore_ascii_case("csg"));
     if is_csg {
         if b.threshold.is_some() {
-            return Err(format!(
-                "--prim {}: a threshold applies to datasets only",
-                b.name
-            ));
+            return Err(binding(b, BindingProblem::ThresholdOnScene));
         }
         let part = load_scene(&b.file)?;
         let (so, io) = (scene.solids.len(), scene.imports.len());
@@ -401,24 +445,15 @@ fn add_part(
     let ext = b.file.extension().map(|x| x.to_ascii_lowercase());
     let ext = ext.as_ref().and_then(|x| x.to_str()).unwrap_or("");
     if !["nrrd", "nhdr", "stl", "obj"].contains(&ext) {
-        return Err(format!(
-            "--prim {}: {}: csgpix reads .csg scenes, .stl and .obj meshes and .nrrd \
-             datasets (PLY, OFF and others: convert to STL or OBJ)",
-            b.name,
-            b.file.display()
-        ));
+        return Err(binding(b, BindingProblem::UnknownFormat(b.file.clone())));
     }
     let dataset = ext == "nrrd" || ext == "nhdr";
     if dataset != b.threshold.is_some() {
-        return Err(format!(
-            "--prim {}: {}",
-            b.name,
-            if dataset {
-                "a dataset needs its iso value: NAME=FILE.nrrd,threshold=T"
-            } else {
-                "a threshold applies to datasets (.nrrd) only"
-            }
-        ));
+        let problem = match dataset {
+            true => BindingProblem::NeedsThreshold,
+            false => BindingProblem::ThresholdOnMesh,
+        };
+        return Err(binding(b, problem));
     }
     let import = Import {
         file: b.file.display().to_string(),
@@ -430,14 +465,21 @@ fn add_part(
         mesh: None,
     };
     let index = IMPORTED + scene.imports.len();
-    let name = format!("--prim {}", b.name);
     let loaded = load_import(
         &import,
         scene.solids.len() + scene.imports.len(),
-        &name,
+        &Origin::Binding(&b.name),
         Path::new(""),
     )?;
     scene.imports.push(import);
     sampled.push(loaded);
     Ok(CsgNode::Solid(index))
+}
+
+/// `b`'s binding is wrong.
+fn binding(b: &Binding, problem: BindingProblem) -> Error {
+    Error::Binding {
+        name: b.name.clone(),
+        problem,
+    }
 }

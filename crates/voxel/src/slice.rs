@@ -46,18 +46,22 @@ impl Mask {
         m
     }
 
+    /// Pixels of the mask.
     pub fn len(&self) -> usize {
         self.len
     }
 
+    /// Whether the mask has no pixel at all.
     pub fn is_empty(&self) -> bool {
         self.len == 0
     }
 
+    /// Whether pixel i is set.
     pub fn get(&self, i: usize) -> bool {
         self.words[i / 64] >> (i % 64) & 1 == 1
     }
 
+    /// Set pixel i to `v`.
     pub fn set(&mut self, i: usize, v: bool) {
         let bit = 1u64 << (i % 64);
         if v {

@@ -10,13 +10,17 @@ use csgpix_scene::grid::Grid;
 use csgpix_scene::solid::CsgScene;
 
 use crate::blend::BlendEval;
+use crate::error::{Error, Result};
 use crate::sampled::Sampled;
 
 /// How slab masks are computed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Route {
     /// The processor, clock by clock (`cycle`) or word by word (`word`).
-    Array { cycle: bool },
+    Array {
+        /// The clock-by-clock model; false for the word-by-word one.
+        cycle: bool,
+    },
     /// The array's plane words reduced to per-pixel depth intervals.
     Intervals,
     /// Exact f64 intervals.
@@ -52,9 +56,43 @@ pub fn voxel_slope(fmt: &WordFormat, width: usize, height: usize) -> f64 {
 /// panels simulate fewer pixels around small primitives (docs/requirements.md).
 pub const DEFAULT_PANEL: [usize; 2] = [32, 32];
 
-/// A scene set up for slicing: its display lists in the grid's frame and the slabs.
+/// How to slice a scene: everything [`Slicer::new`] takes beside the scene and the grid.
+pub struct SlicerOptions {
+    /// The depth word (§2.3.1).
+    pub fmt: WordFormat,
+    /// Which depths of a voxel's ray classify it.
+    pub sampling: Sampling,
+    /// Panels the array route prunes to ([`Slicer::panel`]); None simulates the whole array.
+    pub panel: Option<[usize; 2]>,
+    /// Voxels won by a dataset take its grey value (§4.5), not its colour code.
+    pub grey: bool,
+    /// Grey-valued output by the blending operators of §3.3 instead of labels.
+    pub blend: Option<BlendEval>,
+    /// The scene's imports, loaded, in the scene's order ([`crate::sampled::load_imports`]):
+    /// as many as the scene names.
+    pub sampled: Vec<Sampled>,
+}
+
+impl Default for SlicerOptions {
+    /// The thesis's word, centre sampling, [`DEFAULT_PANEL`] panels, colour codes, no imports.
+    fn default() -> Self {
+        SlicerOptions {
+            fmt: WordFormat::THESIS,
+            sampling: Sampling::Centre,
+            panel: Some(DEFAULT_PANEL),
+            grey: false,
+            blend: None,
+            sampled: vec![],
+        }
+    }
+}
+
+/// A scene set up for slicing: its display lists in the grid's frame and the slabs. Built
+/// whole by [`Slicer::new`]; its fields are there to be read.
 pub struct Slicer {
+    /// The voxel grid: X, Y on the array's pixels, Z on the slabs.
     pub grid: Grid,
+    /// The depth word (§2.3.1).
     pub fmt: WordFormat,
     /// One display list per solid (§5.2), in the frame of [`Slicer::frame`].
     pub lists: Vec<DisplayList>,
@@ -64,10 +102,10 @@ pub struct Slicer {
     /// Which depths of each slab classify its voxels ([`Slicer::window`]).
     pub sampling: Sampling,
     /// Faces steeper than this (depth units per pixel) are drawn as perpendicular planes
-    /// through their trace at depth 0 ([`csgpix_draw::project`]), moving them by at most
+    /// through their trace at depth 0 (`csgpix_draw::project`), moving them by at most
     /// maxdepth / slope_limit pixels inside the depth range.
     pub slope_limit: f64,
-    /// Colour code of each solid (its display list's colour).
+    /// Colour code of each primitive: a solid's display-list colour, then each import's.
     pub colours: Vec<u8>,
     /// Panels of this many pixels: the array route simulates, for each primitive, only the
     /// panels and slabs its footprint touches ([`crate::requirements`]). None simulates the
@@ -76,10 +114,8 @@ pub struct Slicer {
     /// Where the grid lies on the array: scene point → (pixel x, pixel y, depth).
     pub frame: Frame,
     /// Imported primitives (datasets, meshes), after the solids: primitive
-    /// `lists.len() + j` ([`crate::sampled`]). Must match the scene's imports.
+    /// `lists.len() + j` ([`crate::sampled`]), one per import of the scene.
     pub sampled: Vec<Sampled>,
-    /// Imports the scene names (checked against `sampled` before a run).
-    pub imports: usize,
     /// Voxels won by a dataset take its grey value (§4.5), not its colour code.
     pub grey: bool,
     /// Grey-valued output by the blending operators of §3.3 instead of labels.
@@ -87,34 +123,44 @@ pub struct Slicer {
 }
 
 impl Slicer {
-    /// Lay the grid on the array under centre sampling ([`Slicer::with_sampling`] for the
-    /// other): X, Y to pixels (voxel centres at integer pixel coordinates), Z to depth, slab k
-    /// at DEPTH_MARGIN + k·q depth units, q as large as the word's depth range allows.
-    pub fn new(scene: &CsgScene, grid: Grid, fmt: WordFormat) -> Result<Slicer, String> {
-        Slicer::with_sampling(scene, grid, fmt, Sampling::Centre)
-    }
-
-    /// [`Slicer::new`] under the given sampling convention. Centre sampling needs an even
-    /// number of raw units per slab (so the voxel centre is a word), at least 2.
-    pub fn with_sampling(
-        scene: &CsgScene,
-        grid: Grid,
-        fmt: WordFormat,
-        sampling: Sampling,
-    ) -> Result<Slicer, String> {
-        let one = 1i64 << fmt.frac;
-        let margin_raw = DEPTH_MARGIN as i64 * one;
-        let room = fmt.maxdepth() - 2 * margin_raw;
-        let mut slab_raw = room / grid.dims[2] as i64;
-        if sampling == Sampling::Centre {
-            slab_raw &= !1;
-        }
-        if slab_raw < 1 {
-            return Err(format!(
-                "{} slices do not fit the depth word ({} fraction and {} integer bits): \
-                 use fewer slices or a wider word (e.g. 10/11/12)",
-                grid.dims[2], fmt.frac, fmt.int
-            ));
+    /// Lay the grid on the array (§4.4): X, Y to pixels (voxel centres at integer pixel
+    /// coordinates), Z to depth, slab k at DEPTH_MARGIN + k·q depth units, q as large as the
+    /// word's depth range allows (even under centre sampling, so the voxel centre is a word;
+    /// at least 1). Fails when the slabs do not fit the word, or when `opts.sampled` does not
+    /// hold one loaded import per import the scene names ([`Error::ImportsNotLoaded`]).
+    ///
+    /// ```
+    /// use csgpix_voxel::{Error, Grid, Sampling, Slicer, SlicerOptions};
+    /// use glam::DVec3;
+    ///
+    /// let scene = csgpix_scene::scad::parse_csg("cube(size = [2, 2, 2]);", "c.csg").unwrap();
+    /// let grid = Grid::new([8, 8, 4], DVec3::ZERO, DVec3::splat(2.0)).unwrap();
+    /// let opts = SlicerOptions { sampling: Sampling::Slab, ..SlicerOptions::default() };
+    /// let s = Slicer::new(&scene, grid, opts).unwrap();
+    /// // Slab k starts at Z-plane(k): the slabs share the word's depth range evenly.
+    /// assert_eq!(s.z_plane(1) - s.z_plane(0), s.slab_raw);
+    /// assert_eq!(s.window(), (0, s.slab_raw - 1));
+    ///
+    /// // A scene naming a file needs it loaded.
+    /// let imports = csgpix_scene::scad::parse_csg("import(\"part.stl\");", "i.csg").unwrap();
+    /// let err = Slicer::new(&imports, grid, SlicerOptions::default()).err();
+    /// assert_eq!(err, Some(Error::ImportsNotLoaded { named: 1, loaded: 0 }));
+    /// ```
+    pub fn new(scene: &CsgScene, grid: Grid, opts: SlicerOptions) -> Result<Slicer> {
+        let SlicerOptions {
+            fmt,
+            sampling,
+            panel,
+            grey,
+            blend,
+            sampled,
+        } = opts;
+        let slab_raw = slab_raw(&grid, &fmt, sampling)?;
+        if sampled.len() != scene.imports.len() {
+            return Err(Error::ImportsNotLoaded {
+                named: scene.imports.len(),
+                loaded: sampled.len(),
+            });
         }
         let frame = Self::frame_of(&grid, fmt.to_real(slab_raw));
         let (w, h) = (grid.dims[0], grid.dims[1]);
@@ -122,14 +168,11 @@ impl Slicer {
             Sampling::Slab => max_slope(&fmt, w, h),
             Sampling::Centre => voxel_slope(&fmt, w, h),
         };
-        let mut lists = display_lists(scene, &frame, slope_limit);
-        for (dl, solid) in lists.iter_mut().zip(&scene.solids) {
-            let colour = dl.planes.first().map_or(1, |p| p.colour);
-            dl.planes.extend(silhouette_planes(&frame, solid, colour));
-        }
+        let lists = solid_lists(scene, &frame, slope_limit);
         let colours = lists
             .iter()
             .map(|dl| dl.planes.first().map_or(1, |p| p.colour.min(255) as u8))
+            .chain(sampled.iter().map(|s| s.colour))
             .collect();
         Ok(Slicer {
             grid,
@@ -139,20 +182,12 @@ impl Slicer {
             sampling,
             slope_limit,
             colours,
-            panel: Some(DEFAULT_PANEL),
+            panel,
             frame,
-            sampled: vec![],
-            imports: scene.imports.len(),
-            grey: false,
-            blend: None,
+            sampled,
+            grey,
+            blend,
         })
-    }
-
-    /// Add the scene's loaded imports (in the scene's order), with their colours.
-    pub fn with_sampled(mut self, sampled: Vec<Sampled>) -> Slicer {
-        self.colours.extend(sampled.iter().map(|s| s.colour));
-        self.sampled = sampled;
-        self
     }
 
     /// Primitives of every kind.
@@ -164,18 +199,6 @@ impl Slicer {
     pub fn dataset(&self, p: usize) -> Option<&Sampled> {
         let j = p.checked_sub(self.lists.len())?;
         self.sampled.get(j).filter(|s| s.is_dataset())
-    }
-
-    /// Every import the scene names is loaded ([`Slicer::with_sampled`]).
-    pub(crate) fn check_imports(&self) -> Result<(), String> {
-        if self.sampled.len() != self.imports {
-            return Err(format!(
-                "the scene imports {} files but {} are loaded",
-                self.imports,
-                self.sampled.len()
-            ));
-        }
-        Ok(())
     }
 
     fn frame_of(grid: &Grid, q: f64) -> Frame {
@@ -220,4 +243,35 @@ impl Slicer {
             ..ArrayConfig::new(self.grid.dims[0], self.grid.dims[1])
         }
     }
+}
+
+/// Raw depth-word units per slab: as many as the word's depth range allows between its
+/// margins, even under centre sampling (so the voxel centre is a word).
+fn slab_raw(grid: &Grid, fmt: &WordFormat, sampling: Sampling) -> Result<i64> {
+    let one = 1i64 << fmt.frac;
+    let margin_raw = DEPTH_MARGIN as i64 * one;
+    let room = fmt.maxdepth() - 2 * margin_raw;
+    let mut slab_raw = room / grid.dims[2] as i64;
+    if sampling == Sampling::Centre {
+        slab_raw &= !1;
+    }
+    if slab_raw < 1 {
+        return Err(Error::Msg(format!(
+            "{} slices do not fit the depth word ({} fraction and {} integer bits): \
+             use fewer slices or a wider word (e.g. 10/11/12)",
+            grid.dims[2], fmt.frac, fmt.int
+        )));
+    }
+    Ok(slab_raw)
+}
+
+/// One display list per solid in `frame` (§5.2), its silhouette planes added so that it
+/// shows nothing outside its outline at any depth.
+fn solid_lists(scene: &CsgScene, frame: &Frame, slope_limit: f64) -> Vec<DisplayList> {
+    let mut lists = display_lists(scene, frame, slope_limit);
+    for (dl, solid) in lists.iter_mut().zip(&scene.solids) {
+        let colour = dl.planes.first().map_or(1, |p| p.colour);
+        dl.planes.extend(silhouette_planes(frame, solid, colour));
+    }
+    lists
 }
