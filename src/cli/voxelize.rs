@@ -8,6 +8,7 @@ use std::time::Instant;
 use clap::ValueEnum;
 use csgpix::blend::{BlendEval, Union};
 use csgpix::blist::{BlistEval, BlistTable};
+use csgpix::draw::Model;
 use csgpix::evaluate::{StackEval, TreeEval};
 use csgpix::octree::{self, StoreKind};
 use csgpix::output::{Out, Outputs};
@@ -67,8 +68,8 @@ pub struct Args {
     grid: GridArgs,
     /// Processor model: `cycle` simulates every P·Vz frame clock by clock; `word` uses the
     /// array's plane words (see --route); `float` exact intervals, the reference.
-    #[arg(long, value_enum, default_value_t)]
-    model: ModelArg,
+    #[arg(long, value_parser = super::model_parser(), default_value = "word")]
+    model: Model,
     /// For `word`: `intervals` reduces the array's plane words to depth intervals (proven
     /// voxel for voxel equal to the array); `array` runs every P·Vz frame on the word array.
     #[arg(long, value_enum, default_value_t)]
@@ -224,14 +225,6 @@ struct StoreReport {
     bytes_per_node: f64,
     /// Time spent in the store's builder (slices in, store out), voxelization excluded.
     build_seconds: f64,
-}
-
-#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
-enum ModelArg {
-    Cycle,
-    #[default]
-    Word,
-    Float,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
@@ -471,10 +464,10 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
     let eval = evaluator(a.eval, scene);
     let route = match (a.model, a.route) {
-        (ModelArg::Cycle, _) => Route::Array { cycle: true },
-        (ModelArg::Word, RouteArg::Array) => Route::Array { cycle: false },
-        (ModelArg::Word, RouteArg::Intervals) => Route::Intervals,
-        (ModelArg::Float, _) => Route::Float,
+        (Model::Cycle, _) => Route::Array { cycle: true },
+        (Model::Word, RouteArg::Array) => Route::Array { cycle: false },
+        (Model::Word, RouteArg::Intervals) => Route::Intervals,
+        (Model::Float, _) => Route::Float,
     };
     let set = Equations::from(a.equations).set();
     let t0 = Instant::now();
@@ -657,15 +650,11 @@ fn report(
         voxel: slicer.grid.voxel().to_array(),
         min: slicer.grid.min.to_array(),
         max: slicer.grid.max.to_array(),
-        model: match a.model {
-            ModelArg::Cycle => "cycle",
-            ModelArg::Word => "word",
-            ModelArg::Float => "float",
-        },
+        model: a.model.name(),
         route: match (a.model, a.route) {
-            (ModelArg::Cycle, _) | (ModelArg::Word, RouteArg::Array) => "array",
-            (ModelArg::Word, RouteArg::Intervals) => "intervals",
-            (ModelArg::Float, _) => "float",
+            (Model::Cycle, _) | (Model::Word, RouteArg::Array) => "array",
+            (Model::Word, RouteArg::Intervals) => "intervals",
+            (Model::Float, _) => "float",
         },
         eval: match a.eval {
             EvalArg::Blist => "blist",
