@@ -137,7 +137,7 @@ impl Scene {
 }
 
 fn read(p: &Path) -> Result<String, String> {
-    csgpix::input::read_text(p)
+    Ok(csgpix::input::read_text(p)?)
 }
 
 /// The name `--clip` uses for the `i`-th object: A … Z, then O26, O27, …

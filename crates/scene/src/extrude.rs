@@ -17,6 +17,8 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::Result;
+
 /// A 2D shape: closed outlines, filled by the even-odd rule (OpenSCAD's `polygon` with
 /// `paths`: an outline inside another is a hole).
 #[derive(Clone, Debug, PartialEq)]
@@ -346,7 +348,7 @@ pub fn rotate_mesh(
     angle: f64,
     fragments: usize,
     sincos: &dyn Fn(f64) -> (f64, f64),
-) -> Result<Vec<Tri3>, String> {
+) -> Result<Vec<Tri3>> {
     let (lo, hi) = poly
         .points()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
@@ -428,11 +430,7 @@ impl Offset {
 
 /// `offset` of a region, where csgpix can: a single convex outline by any amount, and a union
 /// by a positive amount (a Minkowski sum distributes over union). Err names what is not.
-pub fn offset(
-    region: &Region,
-    o: Offset,
-    sincos: &dyn Fn(f64) -> (f64, f64),
-) -> Result<Region, String> {
+pub fn offset(region: &Region, o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> Result<Region> {
     match region {
         Region::Union(parts) if o.amount() >= 0.0 => Ok(Region::Union(
             parts
@@ -566,7 +564,7 @@ fn contours(r: &Region) -> Vec<Vec<Vec<[f64; 2]>>> {
 
 /// Every vertex of a region's shapes, for `hull()`; Err under a difference or intersection
 /// (their hull is not the hull of their operands' points).
-pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<(), String> {
+pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<()> {
     match r {
         Region::Poly(p) => out.extend(p.points()),
         Region::Union(parts) => {

@@ -3,6 +3,7 @@
 use glam::DVec3;
 
 use crate::solid::CsgScene;
+use crate::{Error, Kind, Result};
 
 /// The voxel grid: `dims` voxels spanning the box `min`..`max` in scene units.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -14,28 +15,30 @@ pub struct Grid {
 
 impl Grid {
     /// A grid over the scene's bounds (every solid's vertices, so subtracted solids count).
-    pub fn of_scene(scene: &CsgScene, dims: [usize; 3]) -> Result<Grid, String> {
+    /// A scene without solids has none: the error is then of kind [`Kind::NeedsBounds`].
+    pub fn of_scene(scene: &CsgScene, dims: [usize; 3]) -> Result<Grid> {
         let pts = scene.solids.iter().flat_map(|s| s.vertices.iter());
         let (min, max) = pts.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), p| {
             (a.min(DVec3::from(*p)), b.max(DVec3::from(*p)))
         });
         if !min.is_finite() {
-            return Err("the scene has no solids: give --bounds".into());
+            let msg = "the scene has no solids: give the grid's bounds";
+            return Err(Error::of_kind(Kind::NeedsBounds, msg));
         }
         Grid::new(dims, min, max)
     }
 
     /// A grid over an explicit box.
-    pub fn new(dims: [usize; 3], min: DVec3, max: DVec3) -> Result<Grid, String> {
+    pub fn new(dims: [usize; 3], min: DVec3, max: DVec3) -> Result<Grid> {
         if dims.contains(&0) {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "resolution {dims:?}: every side needs at least one voxel"
-            ));
+            )));
         }
         if !(min.is_finite() && max.is_finite()) || (max - min).min_element() <= 0.0 {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "bounds {min} .. {max} must be finite with every side positive"
-            ));
+            )));
         }
         Ok(Grid { dims, min, max })
     }
@@ -77,7 +80,7 @@ pub struct GridSpec {
 
 impl GridSpec {
     /// The grid over the box `lo`..`hi`.
-    pub fn grid(&self, lo: DVec3, hi: DVec3) -> Result<Grid, String> {
+    pub fn grid(&self, lo: DVec3, hi: DVec3) -> Result<Grid> {
         let inner = match (self.res, self.voxel) {
             (Some(dims), None) => Grid::new(dims, lo, hi)?,
             (None, Some(size)) => Self::cubic(size, lo, hi)?,
@@ -87,18 +90,20 @@ impl GridSpec {
         let pad = self.pad.min(MAX_GRID_SIDE);
         let dims = inner.dims.map(|d| d.saturating_add(2 * pad));
         if dims.iter().any(|&d| d > MAX_GRID_SIDE) {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "a grid of {dims:?} voxels: at most {MAX_GRID_SIDE} per axis"
-            ));
+            )));
         }
         let margin = v * pad as f64;
         Grid::new(dims, inner.min - margin, inner.max + margin)
     }
 
     /// Cubic voxels of side `size`: as many as cover each side of the box, centred on it.
-    fn cubic(size: f64, lo: DVec3, hi: DVec3) -> Result<Grid, String> {
+    fn cubic(size: f64, lo: DVec3, hi: DVec3) -> Result<Grid> {
         if !(size.is_finite() && size > 0.0) {
-            return Err(format!("voxel size {size}: must be a positive number"));
+            return Err(Error::msg(format!(
+                "voxel size {size}: must be a positive number"
+            )));
         }
         let extent = hi - lo;
         let mut dims = [0usize; 3];
@@ -106,9 +111,9 @@ impl GridSpec {
             // A side that is a whole number of voxels (to rounding) gets exactly that many.
             let n = (e / size * (1.0 - 1e-12)).ceil().max(1.0);
             if n.is_nan() || n > MAX_GRID_SIDE as f64 {
-                return Err(format!(
+                return Err(Error::msg(format!(
                     "voxel size {size} over an extent of {e}: more than {MAX_GRID_SIDE} voxels per axis"
-                ));
+                )));
             }
             *d = n as usize;
         }

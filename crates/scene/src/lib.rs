@@ -23,4 +23,4 @@ pub mod scad;
 pub mod solid;
 pub mod trimesh;
 
-pub use error::{Error, Location, Result};
+pub use error::{Error, Kind, Location, Result};

@@ -79,7 +79,7 @@ impl CsgScene {
     }
 
     /// Refuse a scene with imported primitives, for the commands that only draw planes.
-    pub fn require_convex(&self, file: &str, what: &str) -> Result<(), String> {
+    pub fn require_convex(&self, file: &str, what: &str) -> crate::Result<()> {
         match self.imports.first() {
             None => Ok(()),
             Some(i) => {
@@ -87,11 +87,11 @@ impl CsgScene {
                     Some(_) => format!("`{}` (not a convex solid)", i.file),
                     None => format!("`import(\"{}\")`", i.file),
                 };
-                Err(format!(
-                    "{file}:{}:{}: {name}: {what} draws convex solids only; datasets and meshes \
-                     are voxelized (`csgpix voxelize`)",
-                    i.line, i.col
-                ))
+                let msg = format!(
+                    "{name}: {what} draws convex solids only; datasets and meshes are \
+                     voxelized (`csgpix voxelize`)"
+                );
+                Err(crate::Error::at(file, i.line, i.col, msg))
             }
         }
     }

@@ -137,7 +137,7 @@ impl Loaded {
     /// A grid over every primitive's bounds (subtracted ones too).
     pub fn grid(&self, dims: [usize; 3]) -> Result<Grid, String> {
         let (lo, hi) = self.bounds()?;
-        Grid::new(dims, lo, hi)
+        Grid::new(dims, lo, hi).map_err(String::from)
     }
 
     /// The box around every primitive (subtracted ones too).
