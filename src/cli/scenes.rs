@@ -73,8 +73,7 @@ impl Scene {
             None => None,
             Some(text) => {
                 let names: Vec<String> = (0..lists.len()).map(object_name).collect();
-                let e = Clip::parse(text, &names)
-                    .map_err(|e| format!("--clip:1:{}: {}", e.col, e.msg))?;
+                let e = Clip::parse(text, &names).map_err(|e| e.in_file("--clip").to_string())?;
                 Some(e)
             }
         };

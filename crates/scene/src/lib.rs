@@ -12,6 +12,7 @@ pub mod csg_expr;
 pub mod dataset;
 pub mod display_list;
 pub mod error;
+pub mod expr;
 pub mod extrude;
 pub mod grid;
 pub mod hull;

@@ -325,7 +325,10 @@ pub fn parse_binding(s: &str) -> Result<Binding, String> {
 /// The scene of a CSG expression (§4.3.2's "named primitives") whose names are bound to
 /// files. `expr_name` names the expression in messages (`--expr`).
 pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded, String> {
-    let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| format!("--expr: {e}"))?;
+    let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| {
+        let col = e.location.as_ref().map_or(1, |at| at.col);
+        format!("--expr: {col}: {}", e.message)
+    })?;
     if let Some(b) = bindings.iter().find(|b| !e.names.contains(&b.name)) {
         return Err(format!(
             "--prim {}: the expression has no primitive `{}`",
