@@ -52,6 +52,23 @@ impl Clip {
     /// # Errors
     ///
     /// The first problem, located at its column in [`expr::INPUT`], line 1.
+    ///
+    /// # Examples
+    ///
+    /// The thesis's `A.!B`, drawn as one product of two literals:
+    ///
+    /// ```
+    /// use csgpix_scene::clip_expr::Clip;
+    ///
+    /// let names = ["A".to_string(), "B".to_string()];
+    /// let clip = Clip::parse("A.!B", &names)?;
+    /// assert_eq!(clip.products()?, vec![vec![(0, false), (1, true)]]);
+    /// assert!(clip.eval(&[true, false]) && !clip.eval(&[true, true]));
+    ///
+    /// let err = Clip::parse("A-B", &names).unwrap_err();
+    /// assert_eq!(err.to_string(), "<expr>:1:2: expected '+', '.' or the end, found '-'");
+    /// # Ok::<(), csgpix_scene::Error>(())
+    /// ```
     pub fn parse(text: &str, names: &[String]) -> Result<Clip> {
         let known = |name: &str| {
             names.iter().position(|n| n == name).ok_or_else(|| {

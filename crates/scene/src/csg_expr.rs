@@ -53,6 +53,28 @@ const GRAMMAR: Grammar = Grammar {
 /// # Errors
 ///
 /// The first problem, located at its column in [`expr::INPUT`], line 1.
+///
+/// # Examples
+///
+/// The tree of Figure 4.4:
+///
+/// ```
+/// use csgpix_scene::csg_expr::parse;
+/// use csgpix_scene::solid::CsgNode::{Difference, Intersection, Solid, Union};
+///
+/// let e = parse("(A+B)-((C+(D-E)).(F+G))")?;
+/// assert_eq!(e.names, ["A", "B", "C", "D", "E", "F", "G"]);
+/// let Difference(sides) = &e.root else { panic!() };
+/// assert_eq!(sides[0], Union(vec![Solid(0), Solid(1)]));
+/// assert!(matches!(&sides[1], Intersection(c) if c.len() == 2));
+///
+/// let err = parse("A+(B.C").unwrap_err();
+/// assert_eq!(
+///     err.in_file("EXPR").to_string(),
+///     "EXPR:1:7: expected ')' to close the '(' at column 3"
+/// );
+/// # Ok::<(), csgpix_scene::Error>(())
+/// ```
 pub fn parse(text: &str) -> Result<CsgExpr> {
     let mut names: Vec<String> = vec![];
     let intern = |name: &str| {

@@ -18,6 +18,7 @@ pub const INDEX_TOLERANCE: f64 = 1e-9;
 /// A volume ready to sample: the NRRD and the inverse of its axis steps.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Dataset {
+    /// The volume and its lattice.
     pub nrrd: Nrrd,
     inverse: DMat3,
 }

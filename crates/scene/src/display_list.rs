@@ -104,6 +104,24 @@ impl DisplayList {
     /// # Errors
     ///
     /// Returns the first syntax error, located by line and column.
+    ///
+    /// # Examples
+    ///
+    /// A slab between depths 10 and 20 in colour 5: its front plane, its back plane, the
+    /// terminator.
+    ///
+    /// ```
+    /// use csgpix_scene::display_list::DisplayList;
+    ///
+    /// let text = "10 0 0 5\n1 0 0\n20 0 0 5\n0 0 0\n0 0 0 1234\n";
+    /// let list = DisplayList::parse(text, "slab.dl")?;
+    /// assert_eq!(list, DisplayList::slab(10.0, 20.0, 5));
+    /// assert!(list.planes[0].h && !list.planes[1].h);
+    ///
+    /// let err = DisplayList::parse("10 0 0 5\n1 0 x\n", "bad.dl").unwrap_err();
+    /// assert_eq!(err.location.unwrap().to_string(), "bad.dl:2:5");
+    /// # Ok::<(), csgpix_scene::Error>(())
+    /// ```
     pub fn parse(text: &str, file: &str) -> Result<DisplayList> {
         Parser::new(text)
             .parse()

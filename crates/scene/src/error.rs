@@ -61,6 +61,14 @@ impl fmt::Display for Error {
 
 impl Error {
     /// An error at `file:line:col`.
+    ///
+    /// ```
+    /// use csgpix_scene::Error;
+    ///
+    /// let e = Error::at("a.dl", 3, 7, "expected a number");
+    /// assert_eq!(e.to_string(), "a.dl:3:7: expected a number");
+    /// assert_eq!(e.in_file("b.dl").to_string(), "b.dl:3:7: expected a number");
+    /// ```
     pub fn at(
         file: impl Into<String>,
         line: usize,

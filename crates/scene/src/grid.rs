@@ -8,8 +8,11 @@ use crate::{Error, Kind, Result};
 /// The voxel grid: `dims` voxels spanning the box `min`..`max` in scene units.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Grid {
+    /// Voxels along X, Y and Z.
     pub dims: [usize; 3],
+    /// The box's low corner.
     pub min: DVec3,
+    /// The box's high corner.
     pub max: DVec3,
 }
 
@@ -73,8 +76,11 @@ pub const MAX_GRID_SIDE: usize = 1 << 20;
 /// empty voxels added on every side.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GridSpec {
+    /// Voxels along X, Y and Z.
     pub res: Option<[usize; 3]>,
+    /// Side of a cubic voxel, in scene units.
     pub voxel: Option<f64>,
+    /// Empty voxels added on every side.
     pub pad: usize,
 }
 
@@ -126,10 +132,14 @@ impl GridSpec {
 /// A voxelized scene: colour codes, X fastest, then Y, then Z; 0 is empty.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Volume {
+    /// Voxels along X, Y and Z.
     pub dims: [usize; 3],
+    /// One colour code a voxel, `(k·ny + j)·nx + i` for voxel (i, j, k).
     pub voxels: Vec<u8>,
 }
 
+/// The filled voxels on the volume's surface: those with an empty 6-neighbour or on the
+/// grid's border.
 pub fn surface_voxels(v: &Volume) -> u64 {
     let [nx, ny, nz] = v.dims;
     let at = |i: usize, j: usize, k: usize| v.voxels[(k * ny + j) * nx + i] != 0;

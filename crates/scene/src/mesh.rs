@@ -15,8 +15,11 @@ pub type Tri = [[f32; 3]; 3];
 /// Mesh file formats, chosen by the output's extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
+    /// Binary STL (`.stl`).
     Stl,
+    /// Wavefront OBJ (`.obj`).
     Obj,
+    /// Binary PLY (`.ply`).
     Ply,
 }
 

@@ -200,13 +200,21 @@ impl Nrrd {
 /// The scalar types of the NRRD format spec (§5 `type`), all but 64-bit integers and `block`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum SampleType {
+    /// `int8`.
     Int8,
+    /// `uint8`.
     Uint8,
+    /// `int16`.
     Int16,
+    /// `uint16`.
     Uint16,
+    /// `int32`.
     Int32,
+    /// `uint32`.
     Uint32,
+    /// `float` (32-bit).
     Float,
+    /// `double` (64-bit).
     Double,
 }
 
@@ -337,7 +345,9 @@ pub enum Encoding {
 /// Byte order of multi-byte samples (`endian:`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Endian {
+    /// Least significant byte first.
     Little,
+    /// Most significant byte first.
     Big,
 }
 

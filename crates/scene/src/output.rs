@@ -179,6 +179,7 @@ pub struct Outputs {
 }
 
 impl Outputs {
+    /// No outputs yet.
     pub fn new() -> Outputs {
         Outputs::default()
     }

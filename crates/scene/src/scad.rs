@@ -178,6 +178,27 @@ pub fn scene_text(path: &std::path::Path) -> crate::Result<String> {
 }
 
 /// Reads a `.csg` file's text into a scene; `file` is only used in error messages.
+///
+/// # Errors
+///
+/// The first problem, at its line and column in `file`.
+///
+/// # Examples
+///
+/// ```
+/// use csgpix_scene::scad::parse_csg;
+/// use csgpix_scene::solid::CsgNode;
+///
+/// let text = "difference() {\n  cube(size = [2, 2, 2], center = true);\n  \
+///             sphere($fn = 8, r = 1.2);\n}\n";
+/// let scene = parse_csg(text, "scene.csg")?;
+/// assert_eq!(scene.solids.len(), 2);
+/// assert!(matches!(scene.root, CsgNode::Difference(ref c) if c.len() == 2));
+///
+/// let err = parse_csg("cube(size = [1, 1]);", "bad.csg").unwrap_err();
+/// assert!(err.to_string().starts_with("bad.csg:1:"));
+/// # Ok::<(), csgpix_scene::Error>(())
+/// ```
 pub fn parse_csg(text: &str, file: &str) -> crate::Result<CsgScene> {
     Reader::new(text)
         .run()

@@ -31,7 +31,9 @@ use crate::{Error, Result};
 /// the orientation of the triangles does not matter to [`TriMesh::crossings`].
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TriMesh {
+    /// The vertices, each once.
     pub vertices: Vec<DVec3>,
+    /// Triangles as indices into `vertices`.
     pub triangles: Vec<[u32; 3]>,
 }
 
@@ -231,7 +233,7 @@ impl TriMesh {
     /// most 2^-17 pixel; coordinates beyond ±2^31 pixels are clamped there), and a pixel
     /// centre is covered by a triangle when the exact integer edge functions of the
     /// counter-clockwise projected triangle are positive at the centre moved by an
-    /// infinitesimal `(ε, ε²)` ([`Edge::covers`]). The moved point lies on no projected edge,
+    /// infinitesimal `(ε, ε²)` (`Edge::covers`). The moved point lies on no projected edge,
     /// so a ray through a shared edge or vertex counts one crossing where the surface passes
     /// and zero or two where it grazes, triangles seen edge-on count nothing, and a ray along
     /// a face follows the half-open convention (a box `[x0, x1)` covers pixel `x0`, not
