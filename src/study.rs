@@ -350,7 +350,7 @@ pub fn prepare(text: &str, file: &str, sweep: Sweep) -> Result<Prepared, String>
     }
     let (mut min, mut max) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
     for (_, s) in &scenes {
-        let g = Grid::of_scene(s, [1, 1, 1]).map_err(|e| format!("{file}: {e}"))?;
+        let g = Grid::of_scene(s, [1, 1, 1]).map_err(|e| format!("{file}: {}", bounds_hint(e)))?;
         (min, max) = (min.min(g.min), max.max(g.max));
     }
     let p = Prepared {
@@ -370,10 +370,22 @@ pub fn prepare(text: &str, file: &str, sweep: Sweep) -> Result<Prepared, String>
     Ok(p)
 }
 
+/// A grid error as the command line words it: a scene without solids needs `--bounds`.
+fn bounds_hint(e: csgpix_scene::Error) -> String {
+    match e.kind {
+        csgpix_scene::Kind::NeedsBounds => "the scene has no solids: give --bounds".into(),
+        _ => e.to_string(),
+    }
+}
+
 impl Prepared {
     /// The grid of `slabs` slabs: the same box for every tessellation and word.
     pub fn grid(&self, slabs: usize) -> Result<Grid, String> {
-        Grid::new([self.sweep.res, self.sweep.res, slabs], self.min, self.max)
+        Ok(Grid::new(
+            [self.sweep.res, self.sweep.res, slabs],
+            self.min,
+            self.max,
+        )?)
     }
 
     fn slicer(&self, scene: &CsgScene, bits: u32, slabs: usize) -> Result<Slicer, String> {

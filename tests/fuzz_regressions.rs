@@ -16,14 +16,20 @@ fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
             Ok(text) => csgpix::display_list::DisplayList::parse(&text, "f.dl")
                 .err()
                 .map(|e| e.to_string()),
-            Err(e) => Some(e),
+            Err(e) => Some(e.to_string()),
         },
         "nrrd" => {
             let dir = Path::new("/nonexistent-csgpix-fuzz");
-            csgpix::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), 1 << 20).err()
+            csgpix::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), 1 << 20)
+                .err()
+                .map(|e| e.to_string())
         }
-        "stl" => csgpix::trimesh::TriMesh::parse(bytes, "f.stl", false).err(),
-        "obj" => csgpix::trimesh::TriMesh::parse(bytes, "f.obj", true).err(),
+        "stl" => csgpix::trimesh::TriMesh::parse(bytes, "f.stl", false)
+            .err()
+            .map(|e| e.to_string()),
+        "obj" => csgpix::trimesh::TriMesh::parse(bytes, "f.obj", true)
+            .err()
+            .map(|e| e.to_string()),
         other => panic!("no checks for fuzz target {other}"),
     }
 }

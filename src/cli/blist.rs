@@ -28,7 +28,7 @@ pub struct Args {
 }
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
-    let e = csg_expr::parse(&a.expr).map_err(|e| format!("EXPR:1:{}: {}", e.col, e.msg))?;
+    let e = csg_expr::parse(&a.expr).map_err(|e| e.in_file("EXPR").to_string())?;
     let table = BlistTable::compile(&e.root);
     let bits = a.trace.as_deref().map(|b| trace_bits(b, &e)).transpose()?;
     let trace = bits.as_ref().map(|bits| {

@@ -238,7 +238,7 @@ fn write_image(
             image::Rgb(*c),
         );
     }
-    outs.write_in(out, "expected.png", |w| csgpix::png::write_png(w, &img))
+    Ok(outs.write_in(out, "expected.png", |w| csgpix::png::write_png(w, &img))?)
 }
 
 /// What was written and how to run it: the command lines `run.sh` holds, from the directory.

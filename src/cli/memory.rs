@@ -28,7 +28,7 @@ impl MaxMemory {
     /// Make the file readers refuse what would not fit: NRRD volumes are refused by their
     /// header's `sizes`, before their data (gzip or raw) is read.
     pub fn limit_readers(&self) {
-        csgpix::nrrd::limit_samples_to_memory(self.bytes());
+        csgpix::nrrd::limit_samples_to_memory(self.bytes(), "--max-memory");
     }
 
     /// Refuse `need` bytes of `what` when over the limit, saying how to lower it (`fix`).

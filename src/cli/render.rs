@@ -258,7 +258,8 @@ fn write_png(
         img.write_to(&mut buf, image::ImageFormat::Png)
             .map_err(std::io::Error::other)?;
         w.write_all(buf.get_ref())
-    })
+    })?;
+    Ok(())
 }
 
 /// Draw a `.csg` scene on panels (`--panel`): only the panels its solids touch are simulated.

@@ -73,8 +73,7 @@ impl Scene {
             None => None,
             Some(text) => {
                 let names: Vec<String> = (0..lists.len()).map(object_name).collect();
-                let e = Clip::parse(text, &names)
-                    .map_err(|e| format!("--clip:1:{}: {}", e.col, e.msg))?;
+                let e = Clip::parse(text, &names).map_err(|e| e.in_file("--clip").to_string())?;
                 Some(e)
             }
         };
@@ -137,7 +136,7 @@ impl Scene {
 }
 
 fn read(p: &Path) -> Result<String, String> {
-    csgpix::input::read_text(p)
+    Ok(csgpix::input::read_text(p)?)
 }
 
 /// The name `--clip` uses for the `i`-th object: A … Z, then O26, O27, …

@@ -149,7 +149,7 @@ impl GridArgs {
             Some(b) => b,
             None => scene.bounds().map_err(flag_message)?,
         };
-        spec.grid(lo, hi)
+        Ok(spec.grid(lo, hi)?)
     }
 
     /// Whether any grid option was given (they apply to scenes only).
@@ -797,7 +797,7 @@ fn write_preview(outs: &mut Outputs, out: Out, v: &Volume, grey: Values) -> Resu
         left += w * scale + 4;
         let _ = h;
     }
-    outs.write(out, |w| csgpix::png::write_png(w, &img))
+    Ok(outs.write(out, |w| csgpix::png::write_png(w, &img))?)
 }
 
 /// Values shaded by depth as the palette view shades colours: nearest full, farthest 45%.

@@ -301,13 +301,13 @@ pub fn clip_scene_ops(
             },
         ));
     }
-    let products = expr.products().map_err(|msg| {
+    let products = expr.products().map_err(|e| {
         (
             0,
             CompileError {
                 plane: 0,
                 field: 0,
-                msg,
+                msg: e.message,
             },
         )
     })?;

@@ -7,167 +7,102 @@
 //! product of the other literals (the clipping stack) and composed into the scene (second
 //! stage), so the union of products is the nearest surface at each pixel.
 
-use std::fmt;
+use crate::expr::{self, BinOp, Grammar, Node};
+use crate::{Error, Result};
 
 /// A parsed clipping function; objects are numbered by their position in the scene.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Clip {
+    /// Object i.
     Obj(usize),
+    /// The complement `!e`.
     Not(Box<Clip>),
+    /// The intersection `a.b`.
     And(Box<Clip>, Box<Clip>),
+    /// The union `a+b`.
     Or(Box<Clip>, Box<Clip>),
 }
 
 /// A literal: object index and whether it is complemented.
 pub type Literal = (usize, bool);
 
-/// Why an expression was refused, with its 1-based column.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ClipError {
-    pub col: usize,
-    pub msg: String,
-}
-
-impl fmt::Display for ClipError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.col, self.msg)
-    }
-}
-
-impl std::error::Error for ClipError {}
-
-/// Nesting deeper than this is refused rather than risking the stack.
+/// Nesting deeper than this is refused rather than risking the stack (the whole expression
+/// is the first level; [`Clip::products`] and [`Clip::eval`] recurse).
 pub const MAX_DEPTH: usize = 200;
 
 /// Products in the sum-of-products form beyond this are refused.
 pub const MAX_PRODUCTS: usize = 4096;
 
-struct Parser<'a> {
-    chars: Vec<(usize, char)>,
-    pos: usize,
-    names: &'a [String],
-    depth: usize,
-}
-
-impl Parser<'_> {
-    /// The next non-blank character (blanks are skipped for good).
-    fn peek(&mut self) -> Option<char> {
-        while self
-            .chars
-            .get(self.pos)
-            .is_some_and(|c| c.1.is_whitespace())
-        {
-            self.pos += 1;
-        }
-        self.chars.get(self.pos).map(|c| c.1)
-    }
-
-    fn col(&self) -> usize {
-        self.chars
-            .get(self.pos)
-            .map_or_else(|| self.chars.last().map_or(1, |c| c.0 + 2), |c| c.0 + 1)
-    }
-
-    fn err<T>(&mut self, msg: String) -> Result<T, ClipError> {
-        self.peek();
-        Err(ClipError {
-            col: self.col(),
-            msg,
-        })
-    }
-
-    fn enter(&mut self) -> Result<(), ClipError> {
-        self.depth += 1;
-        if self.depth > MAX_DEPTH {
-            return self.err(format!("expression nested deeper than {MAX_DEPTH}"));
-        }
-        Ok(())
-    }
-
-    fn expr(&mut self) -> Result<Clip, ClipError> {
-        self.enter()?;
-        let mut e = self.term()?;
-        while self.peek() == Some('+') {
-            self.pos += 1;
-            e = Clip::Or(Box::new(e), Box::new(self.term()?));
-        }
-        self.depth -= 1;
-        Ok(e)
-    }
-
-    fn term(&mut self) -> Result<Clip, ClipError> {
-        let mut e = self.factor()?;
-        while self.peek() == Some('.') {
-            self.pos += 1;
-            e = Clip::And(Box::new(e), Box::new(self.factor()?));
-        }
-        Ok(e)
-    }
-
-    fn factor(&mut self) -> Result<Clip, ClipError> {
-        match self.peek() {
-            Some('!') => {
-                self.pos += 1;
-                self.enter()?;
-                let f = self.factor()?;
-                self.depth -= 1;
-                Ok(Clip::Not(Box::new(f)))
-            }
-            Some('(') => {
-                self.pos += 1;
-                let e = self.expr()?;
-                if self.peek() != Some(')') {
-                    return self.err("expected ')'".into());
-                }
-                self.pos += 1;
-                Ok(e)
-            }
-            Some(c) if c.is_ascii_alphabetic() => self.name(),
-            Some(c) => self.err(format!("expected an object name, '!' or '(', found {c:?}")),
-            None => self.err("expected an object name, '!' or '(', found the end".into()),
-        }
-    }
-
-    fn name(&mut self) -> Result<Clip, ClipError> {
-        let start = self.pos;
-        let word = |c: &(usize, char)| c.1.is_ascii_alphanumeric() || c.1 == '_';
-        while self.chars.get(self.pos).is_some_and(word) {
-            self.pos += 1;
-        }
-        let name: String = self.chars[start..self.pos].iter().map(|c| c.1).collect();
-        match self.names.iter().position(|n| *n == name) {
-            Some(i) => Ok(Clip::Obj(i)),
-            None => Err(ClipError {
-                col: self.chars[start].0 + 1,
-                msg: format!(
-                    "unknown object {name:?}; the scene names {}",
-                    self.names.join(", ")
-                ),
-            }),
-        }
-    }
-}
+/// Clipping functions: no difference, and no `)` expected where none is open.
+const GRAMMAR: Grammar = Grammar {
+    difference: false,
+    noun: "an object",
+    max_nesting: MAX_DEPTH - 1,
+    max_depth: MAX_DEPTH,
+    depth_at_operand: true,
+    misplaced: |c, open| match open {
+        Some(_) => "expected ')'".to_string(),
+        None => format!("expected '+', '.' or the end, found {}", expr::found(c)),
+    },
+};
 
 impl Clip {
     /// Parse `text` over the object names `names` (e.g. A, B, …).
-    pub fn parse(text: &str, names: &[String]) -> Result<Clip, ClipError> {
-        let chars: Vec<(usize, char)> = text.chars().enumerate().collect();
-        let mut p = Parser {
-            chars,
-            pos: 0,
-            names,
-            depth: 0,
+    ///
+    /// # Errors
+    ///
+    /// The first problem, located at its column in [`expr::INPUT`], line 1.
+    ///
+    /// # Examples
+    ///
+    /// The thesis's `A.!B`, drawn as one product of two literals:
+    ///
+    /// ```
+    /// use csgpix_scene::clip_expr::Clip;
+    ///
+    /// let names = ["A".to_string(), "B".to_string()];
+    /// let clip = Clip::parse("A.!B", &names)?;
+    /// assert_eq!(clip.products()?, vec![vec![(0, false), (1, true)]]);
+    /// assert!(clip.eval(&[true, false]) && !clip.eval(&[true, true]));
+    ///
+    /// let err = Clip::parse("A-B", &names).unwrap_err();
+    /// assert_eq!(err.to_string(), "<expr>:1:2: expected '+', '.' or the end, found '-'");
+    /// # Ok::<(), csgpix_scene::Error>(())
+    /// ```
+    pub fn parse(text: &str, names: &[String]) -> Result<Clip> {
+        let known = |name: &str| {
+            names.iter().position(|n| n == name).ok_or_else(|| {
+                format!(
+                    "unknown object {name:?}; the scene names {}",
+                    names.join(", ")
+                )
+            })
         };
-        let e = p.expr()?;
-        if let Some(c) = p.peek() {
-            return p.err(format!("expected '+', '.' or the end, found {c:?}"));
-        }
-        Ok(e)
+        let tree = expr::parse(text, &GRAMMAR, known)?;
+        Ok(tree.lower(|node, kids| match node {
+            Node::Name(i) => Clip::Obj(*i),
+            Node::Not(_) => Clip::Not(Box::new(kids.into_iter().next().expect("one operand"))),
+            Node::Chain(op, _) => {
+                let join = match op {
+                    BinOp::Union => Clip::Or,
+                    BinOp::Intersection => Clip::And,
+                    BinOp::Difference => unreachable!("clipping functions have no difference"),
+                };
+                // A chain means the left-deep tree: `A+B+C` is `(A+B)+C`.
+                let mut kids = kids.into_iter();
+                let first = kids.next().expect("a chain has operands");
+                kids.fold(first, |a, b| join(Box::new(a), Box::new(b)))
+            }
+        }))
     }
 
     /// Sum-of-products form: a list of products, each a list of distinct literals; products
     /// that contain a literal and its complement are dropped (they are empty volumes).
-    pub fn products(&self) -> Result<Vec<Vec<Literal>>, String> {
+    ///
+    /// # Errors
+    ///
+    /// When the form has more than [`MAX_PRODUCTS`] products.
+    pub fn products(&self) -> Result<Vec<Vec<Literal>>> {
         let mut out = self.nnf_products(false)?;
         for p in &mut out {
             p.sort();
@@ -179,7 +114,7 @@ impl Clip {
         Ok(out)
     }
 
-    fn nnf_products(&self, neg: bool) -> Result<Vec<Vec<Literal>>, String> {
+    fn nnf_products(&self, neg: bool) -> Result<Vec<Vec<Literal>>> {
         let (both, is_and) = match (self, neg) {
             (Clip::Obj(i), _) => return Ok(vec![vec![(*i, neg)]]),
             (Clip::Not(e), _) => return e.nnf_products(!neg),
@@ -193,9 +128,9 @@ impl Clip {
             pa.len() + pb.len()
         };
         if n > MAX_PRODUCTS {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "the expression expands to more than {MAX_PRODUCTS} products"
-            ));
+            )));
         }
         Ok(if is_and {
             pa.iter()
@@ -259,15 +194,22 @@ mod tests {
         );
     }
 
+    fn col(e: crate::Error) -> usize {
+        e.location.expect("a located error").col
+    }
+
     #[test]
     fn errors_name_the_column() {
         let n = names(2);
-        assert_eq!(Clip::parse("A.!C", &n).unwrap_err().col, 4);
-        assert_eq!(Clip::parse("A..B", &n).unwrap_err().col, 3);
-        assert_eq!(Clip::parse("(A.B", &n).unwrap_err().col, 5);
-        assert_eq!(Clip::parse("A B", &n).unwrap_err().col, 3);
+        assert_eq!(col(Clip::parse("A.!C", &n).unwrap_err()), 4);
+        assert_eq!(col(Clip::parse("A..B", &n).unwrap_err()), 3);
+        assert_eq!(col(Clip::parse("(A.B", &n).unwrap_err()), 5);
+        assert_eq!(col(Clip::parse("A B", &n).unwrap_err()), 3);
         let deep = format!("{}A{}", "(".repeat(10_000), ")".repeat(10_000));
-        assert!(Clip::parse(&deep, &n).unwrap_err().msg.contains("deeper"));
+        assert!(Clip::parse(&deep, &n)
+            .unwrap_err()
+            .message
+            .contains("deeper"));
         let nots = format!("{}A", "!".repeat(10_000));
         assert!(Clip::parse(&nots, &n).is_err());
     }
@@ -302,7 +244,10 @@ mod fuzz {
             let names = vec!["A".to_string(), "B".to_string()];
             match Clip::parse(&text, &names) {
                 Ok(e) => { e.products().ok(); }
-                Err(err) => prop_assert!(err.col >= 1 && err.col <= text.chars().count() + 1),
+                Err(err) => {
+                    let col = err.location.expect("a located error").col;
+                    prop_assert!(col >= 1 && col <= text.chars().count() + 1)
+                }
             }
         }
     }

@@ -11,13 +11,13 @@
 //! (`A+B+C` is `Union[A, B, C]`, `A-B-C` is `Difference[A, B, C]`), which every consumer reads
 //! as the left-deep binary tree `(A+B)+C` the chain means. `A+(B+C)` stays nested.
 //!
-//! The parser is an operator-precedence (shunting-yard) loop over explicit stacks: no input can
-//! overflow the call stack, and nesting (open parentheses plus pending `!`) deeper than
-//! [`MAX_DEPTH`] is refused with the column where it happens.
+//! The grammar and its parser are [`crate::expr`]'s, shared with clipping functions; nesting
+//! (open parentheses plus pending `!`) deeper than [`MAX_DEPTH`] is refused with the column
+//! where it happens, and no input overflows the stack.
 
-use std::fmt;
-
+use crate::expr::{self, BinOp, Grammar, Node};
 use crate::solid::CsgNode;
+use crate::Result;
 
 /// Parentheses and `!` nested deeper than this are refused.
 pub const MAX_DEPTH: usize = 10_000;
@@ -25,298 +25,76 @@ pub const MAX_DEPTH: usize = 10_000;
 /// A parsed expression: the tree and the primitive names, `names[i]` for `Solid(i)`.
 #[derive(Debug)]
 pub struct CsgExpr {
+    /// The tree, in the shape written (§4.3.2).
     pub root: CsgNode,
+    /// The primitive names in order of first appearance.
     pub names: Vec<String>,
 }
 
-/// Why an expression was refused, with the 1-based column (in characters) where it was seen.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct CsgExprError {
-    pub col: usize,
-    pub msg: String,
-}
-
-impl fmt::Display for CsgExprError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.col, self.msg)
-    }
-}
-
-impl std::error::Error for CsgExprError {}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum BinOp {
-    Union,
-    Intersection,
-    Difference,
-}
-
-impl BinOp {
-    fn of(c: char) -> Option<BinOp> {
-        match c {
-            '+' => Some(BinOp::Union),
-            '.' => Some(BinOp::Intersection),
-            '-' => Some(BinOp::Difference),
-            _ => None,
-        }
-    }
-
-    /// `.` above `+` and `-`.
-    fn precedence(self) -> u8 {
-        match self {
-            BinOp::Intersection => 2,
-            BinOp::Union | BinOp::Difference => 1,
-        }
-    }
-
-    fn node(self, children: Vec<CsgNode>) -> CsgNode {
-        match self {
-            BinOp::Union => CsgNode::Union(children),
-            BinOp::Intersection => CsgNode::Intersection(children),
-            BinOp::Difference => CsgNode::Difference(children),
-        }
-    }
-
-    /// The children of `n` if it is this operator's node.
-    fn chain(self, n: &mut CsgNode) -> Option<&mut Vec<CsgNode>> {
-        match (self, n) {
-            (BinOp::Union, CsgNode::Union(c))
-            | (BinOp::Intersection, CsgNode::Intersection(c))
-            | (BinOp::Difference, CsgNode::Difference(c)) => Some(c),
-            _ => None,
-        }
-    }
-}
-
-/// What waits on the operator stack.
-#[derive(Clone, Copy, Debug)]
-enum Pending {
-    Not,
-    /// An open parenthesis and its column.
-    Open(usize),
-    Bin(BinOp),
-}
-
-/// An operand and whether it was written in parentheses (then it is never flattened into a
-/// chain, so that `(A+B)+C` and `A+(B+C)` keep their shapes).
-struct Operand {
-    node: CsgNode,
-    closed: bool,
-}
-
-/// What [`Parser::operator`] read.
-enum After {
-    /// A binary operator: an operand is expected next.
-    Operator,
-    /// `)`: still an operator, `)` or the end next.
-    Close,
-    End,
-}
-
-struct Parser {
-    chars: Vec<char>,
-    pos: usize,
-    ops: Vec<Pending>,
-    operands: Vec<Operand>,
-    names: Vec<String>,
-    /// Open parentheses and pending `!` on `ops`.
-    depth: usize,
-}
-
-impl Parser {
-    /// The next non-blank character, or None at the end.
-    fn peek(&mut self) -> Option<char> {
-        while self.chars.get(self.pos).is_some_and(|c| c.is_whitespace()) {
-            self.pos += 1;
-        }
-        self.chars.get(self.pos).copied()
-    }
-
-    fn col(&self) -> usize {
-        self.pos + 1
-    }
-
-    fn err<T>(&self, col: usize, msg: impl Into<String>) -> Result<T, CsgExprError> {
-        Err(CsgExprError {
-            col,
-            msg: msg.into(),
-        })
-    }
-
-    fn found(c: Option<char>) -> String {
-        c.map_or_else(|| "the end".to_string(), |c| format!("{c:?}"))
-    }
-
-    fn nest(&mut self, p: Pending) -> Result<(), CsgExprError> {
-        self.depth += 1;
-        if self.depth > MAX_DEPTH {
-            return self.err(
-                self.col(),
-                format!("expression nested deeper than {MAX_DEPTH}"),
-            );
-        }
-        self.ops.push(p);
-        self.pos += 1;
-        Ok(())
-    }
-
-    /// Where an operand is expected: `!`, `(` or a name. True when an operand is complete.
-    fn operand(&mut self) -> Result<bool, CsgExprError> {
-        match self.peek() {
-            Some('!') => self.nest(Pending::Not).map(|_| false),
-            Some('(') => {
-                let col = self.col();
-                self.nest(Pending::Open(col)).map(|_| false)
-            }
-            Some(c) if c.is_ascii_alphabetic() => {
-                let node = CsgNode::Solid(self.name());
-                self.push_operand(node, false);
-                Ok(true)
-            }
-            c => self.err(
-                self.col(),
-                format!(
-                    "expected a primitive name, '!' or '(', found {}",
-                    Self::found(c)
-                ),
-            ),
-        }
-    }
-
-    /// Read a name; its index, new names appended.
-    fn name(&mut self) -> usize {
-        let start = self.pos;
-        let word = |c: &char| c.is_ascii_alphanumeric() || *c == '_';
-        while self.chars.get(self.pos).is_some_and(word) {
-            self.pos += 1;
-        }
-        let name: String = self.chars[start..self.pos].iter().collect();
-        match self.names.iter().position(|n| *n == name) {
-            Some(i) => i,
-            None => {
-                self.names.push(name);
-                self.names.len() - 1
-            }
-        }
-    }
-
-    /// A complete operand: the `!`s waiting right before it apply to it first (tightest).
-    fn push_operand(&mut self, mut node: CsgNode, mut closed: bool) {
-        while let Some(Pending::Not) = self.ops.last() {
-            self.ops.pop();
-            self.depth -= 1;
-            node = CsgNode::Complement(Box::new(node));
-            closed = true;
-        }
-        self.operands.push(Operand { node, closed });
-    }
-
-    /// Combine the two top operands with `op`, extending an unparenthesized chain of `op`.
-    fn reduce(&mut self, op: BinOp) {
-        let (Some(right), Some(mut left)) = (self.operands.pop(), self.operands.pop()) else {
-            unreachable!("a binary operator always has two operands below it");
-        };
-        let node = match op.chain(&mut left.node) {
-            Some(children) if !left.closed => {
-                children.push(right.node);
-                left.node
-            }
-            _ => op.node(vec![left.node, right.node]),
-        };
-        self.operands.push(Operand {
-            node,
-            closed: false,
-        });
-    }
-
-    /// Reduce the binary operators on top of the stack while `keep_going` says so.
-    fn reduce_while(&mut self, keep_going: impl Fn(BinOp) -> bool) {
-        while let Some(&Pending::Bin(op)) = self.ops.last() {
-            if !keep_going(op) {
-                break;
-            }
-            self.ops.pop();
-            self.reduce(op);
-        }
-    }
-
-    /// Where an operator, `)` or the end is expected.
-    fn operator(&mut self) -> Result<After, CsgExprError> {
-        let c = self.peek();
-        if let Some(op) = c.and_then(BinOp::of) {
-            // Left-associative: reduce everything of the same or higher precedence first.
-            self.reduce_while(|top| top.precedence() >= op.precedence());
-            self.ops.push(Pending::Bin(op));
-            self.pos += 1;
-            return Ok(After::Operator);
-        }
-        match c {
-            Some(')') => {
-                self.reduce_while(|_| true);
-                if !matches!(self.ops.pop(), Some(Pending::Open(_))) {
-                    return self.err(self.col(), "')' without a matching '('");
-                }
-                self.depth -= 1;
-                self.pos += 1;
-                let Some(inner) = self.operands.pop() else {
-                    unreachable!("a closed parenthesis holds an operand");
-                };
-                self.push_operand(inner.node, true);
-                Ok(After::Close)
-            }
-            None => {
-                self.reduce_while(|_| true);
-                if let Some(&Pending::Open(col)) = self.ops.last() {
-                    return self.err(
-                        self.col(),
-                        format!("expected ')' to close the '(' at column {col}"),
-                    );
-                }
-                Ok(After::End)
-            }
-            c => self.err(
-                self.col(),
-                format!(
-                    "expected '+', '-', '.', ')' or the end, found {}",
-                    Self::found(c)
-                ),
-            ),
-        }
-    }
-}
+/// CSG expressions: every operator, messages naming primitives.
+const GRAMMAR: Grammar = Grammar {
+    difference: true,
+    noun: "a primitive",
+    max_nesting: MAX_DEPTH,
+    max_depth: MAX_DEPTH,
+    depth_at_operand: false,
+    misplaced: |c, open| match (c, open) {
+        (None, Some(col)) => format!("expected ')' to close the '(' at column {col}"),
+        (Some(')'), None) => "')' without a matching '('".to_string(),
+        (c, _) => format!(
+            "expected '+', '-', '.', ')' or the end, found {}",
+            expr::found(c)
+        ),
+    },
+};
 
 /// Parse `text` into a tree and its primitive names.
-pub fn parse(text: &str) -> Result<CsgExpr, CsgExprError> {
-    let mut p = Parser {
-        chars: text.chars().collect(),
-        pos: 0,
-        ops: vec![],
-        operands: vec![],
-        names: vec![],
-        depth: 0,
+///
+/// # Errors
+///
+/// The first problem, located at its column in [`expr::INPUT`], line 1.
+///
+/// # Examples
+///
+/// The tree of Figure 4.4:
+///
+/// ```
+/// use csgpix_scene::csg_expr::parse;
+/// use csgpix_scene::solid::CsgNode::{Difference, Intersection, Solid, Union};
+///
+/// let e = parse("(A+B)-((C+(D-E)).(F+G))")?;
+/// assert_eq!(e.names, ["A", "B", "C", "D", "E", "F", "G"]);
+/// let Difference(sides) = &e.root else { panic!() };
+/// assert_eq!(sides[0], Union(vec![Solid(0), Solid(1)]));
+/// assert!(matches!(&sides[1], Intersection(c) if c.len() == 2));
+///
+/// let err = parse("A+(B.C").unwrap_err();
+/// assert_eq!(
+///     err.in_file("EXPR").to_string(),
+///     "EXPR:1:7: expected ')' to close the '(' at column 3"
+/// );
+/// # Ok::<(), csgpix_scene::Error>(())
+/// ```
+pub fn parse(text: &str) -> Result<CsgExpr> {
+    let mut names: Vec<String> = vec![];
+    let intern = |name: &str| {
+        let i = names.iter().position(|n| n == name);
+        Ok(i.unwrap_or_else(|| {
+            names.push(name.to_string());
+            names.len() - 1
+        }))
     };
-    // Two states: an operand is expected (at the start, after an operator, `!` or `(`), or an
-    // operator, `)` or the end is (after a name or `)`).
-    let mut want_operand = true;
-    loop {
-        if want_operand {
-            want_operand = !p.operand()?;
-        } else {
-            match p.operator()? {
-                After::Operator => want_operand = true,
-                After::Close => {}
-                After::End => break,
-            }
+    let tree = expr::parse(text, &GRAMMAR, intern)?;
+    let root = tree.lower(|node, kids| match node {
+        Node::Name(i) => CsgNode::Solid(*i),
+        Node::Not(_) => {
+            CsgNode::Complement(Box::new(kids.into_iter().next().expect("one operand")))
         }
-    }
-    let root = p.operands.pop().map(|o| o.node);
-    match root {
-        Some(root) if p.operands.is_empty() && p.ops.is_empty() => Ok(CsgExpr {
-            root,
-            names: p.names,
-        }),
-        _ => unreachable!("the parser ends with exactly one operand"),
-    }
+        Node::Chain(BinOp::Union, _) => CsgNode::Union(kids),
+        Node::Chain(BinOp::Intersection, _) => CsgNode::Intersection(kids),
+        Node::Chain(BinOp::Difference, _) => CsgNode::Difference(kids),
+    });
+    Ok(CsgExpr { root, names })
 }
 
 #[cfg(test)]
@@ -391,7 +169,7 @@ mod tests {
 
     #[test]
     fn errors_name_the_column() {
-        let col = |t: &str| parse(t).unwrap_err().col;
+        let col = |t: &str| parse(t).unwrap_err().location.unwrap().col;
         assert_eq!(col(""), 1);
         assert_eq!(col("A..B"), 3);
         assert_eq!(col("(A.B"), 5);
@@ -402,15 +180,15 @@ mod tests {
         assert_eq!(col("()"), 2);
         assert_eq!(col("A!B"), 2);
         assert_eq!(col("_A"), 1);
-        assert!(parse("(A.B").unwrap_err().msg.contains("column 1"));
+        assert!(parse("(A.B").unwrap_err().message.contains("column 1"));
     }
 
     #[test]
     fn deep_nesting_is_refused_without_overflow() {
         let deep = format!("{}A{}", "(".repeat(100_000), ")".repeat(100_000));
         let e = parse(&deep).unwrap_err();
-        assert_eq!(e.col, MAX_DEPTH + 1);
-        assert!(e.msg.contains("deeper"));
+        assert_eq!(e.location.unwrap().col, MAX_DEPTH + 1);
+        assert!(e.message.contains("deeper"));
         assert!(parse(&format!("{}A", "!".repeat(100_000))).is_err());
         // At the limit it parses; the tree is dropped without recursion.
         let ok = format!("{}A{}", "(".repeat(MAX_DEPTH), ")".repeat(MAX_DEPTH));
@@ -435,7 +213,10 @@ mod fuzz {
         fn parser_never_panics(text in "[AB_1!().+\\- x]{0,40}|\\PC{0,40}") {
             match parse(&text) {
                 Ok(e) => prop_assert!(!e.names.is_empty()),
-                Err(err) => prop_assert!(err.col >= 1 && err.col <= text.chars().count() + 1),
+                Err(err) => {
+                    let col = err.location.expect("a located error").col;
+                    prop_assert!(col >= 1 && col <= text.chars().count() + 1)
+                }
             }
         }
     }

@@ -10,6 +10,7 @@ use glam::{DMat3, DVec3};
 
 use crate::nrrd::{invertible, Nrrd, SampleType};
 pub use crate::nrrd::{write_nrrd, Encoding};
+use crate::{Error, Result};
 
 /// Lattice tolerance, in index units: points this close outside the lattice still sample.
 pub const INDEX_TOLERANCE: f64 = 1e-9;
@@ -17,6 +18,7 @@ pub const INDEX_TOLERANCE: f64 = 1e-9;
 /// A volume ready to sample: the NRRD and the inverse of its axis steps.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Dataset {
+    /// The volume and its lattice.
     pub nrrd: Nrrd,
     inverse: DMat3,
 }
@@ -24,16 +26,18 @@ pub struct Dataset {
 impl Dataset {
     /// The dataset of `nrrd`, whose axis steps must span 3D (be invertible) and whose
     /// samples must fill its sizes.
-    pub fn new(nrrd: Nrrd) -> Result<Dataset, String> {
+    pub fn new(nrrd: Nrrd) -> Result<Dataset> {
         let count = nrrd.sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n));
         if count != Some(nrrd.samples.len()) || nrrd.samples.is_empty() {
             let [x, y, z] = nrrd.sizes;
             let n = nrrd.samples.len();
-            return Err(format!("dataset: {n} samples for sizes {x}×{y}×{z}"));
+            return Err(Error::msg(format!(
+                "dataset: {n} samples for sizes {x}×{y}×{z}"
+            )));
         }
         if !invertible(&nrrd.directions) || !nrrd.origin.is_finite() {
             let msg = "dataset: expected a finite origin and 3 independent axis steps";
-            return Err(format!("{msg}, found {:?}", nrrd.directions));
+            return Err(Error::msg(format!("{msg}, found {:?}", nrrd.directions)));
         }
         let inverse = nrrd.directions.inverse();
         Ok(Dataset { nrrd, inverse })
@@ -329,11 +333,13 @@ mod tests {
         n.directions.z_axis = n.directions.x_axis * 2.0 - n.directions.y_axis;
         assert!(Dataset::new(n.clone())
             .unwrap_err()
+            .to_string()
             .contains("independent axis steps"));
         n.directions = DMat3::IDENTITY;
         n.samples.pop();
         assert!(Dataset::new(n)
             .unwrap_err()
+            .to_string()
             .contains("119 samples for sizes 5×4×6"));
     }
 

@@ -17,6 +17,8 @@
 
 use std::fmt::{self, Display};
 use std::path::Path;
+
+use crate::{Error, Result};
 use std::vec;
 
 /// Largest colour code of a real plane; a greater colour marks the dummy
@@ -53,28 +55,6 @@ pub struct DisplayList {
     /// [`MAX_PLANE_COLOUR`] (the thesis uses 1234).
     pub terminator: u32,
 }
-
-/// A display-list syntax error, located by 1-based line and column
-/// (line 0, column 0 for I/O errors).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ParseError {
-    /// Name of the file being parsed.
-    pub file: String,
-    /// 1-based line number.
-    pub line: usize,
-    /// 1-based column number, counted in characters.
-    pub col: usize,
-    /// What was expected and what was found.
-    pub msg: String,
-}
-
-impl Display for ParseError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}:{}: {}", self.file, self.line, self.col, self.msg)
-    }
-}
-
-impl std::error::Error for ParseError {}
 
 /// 1-based (line, column) of field `field` (0-based) of the first row of plane `plane`
 /// (0-based) in display-list text: each plane is two data rows, blank and `#` lines skipped.
@@ -124,7 +104,25 @@ impl DisplayList {
     /// # Errors
     ///
     /// Returns the first syntax error, located by line and column.
-    pub fn parse(text: &str, file: &str) -> Result<DisplayList, ParseError> {
+    ///
+    /// # Examples
+    ///
+    /// A slab between depths 10 and 20 in colour 5: its front plane, its back plane, the
+    /// terminator.
+    ///
+    /// ```
+    /// use csgpix_scene::display_list::DisplayList;
+    ///
+    /// let text = "10 0 0 5\n1 0 0\n20 0 0 5\n0 0 0\n0 0 0 1234\n";
+    /// let list = DisplayList::parse(text, "slab.dl")?;
+    /// assert_eq!(list, DisplayList::slab(10.0, 20.0, 5));
+    /// assert!(list.planes[0].h && !list.planes[1].h);
+    ///
+    /// let err = DisplayList::parse("10 0 0 5\n1 0 x\n", "bad.dl").unwrap_err();
+    /// assert_eq!(err.location.unwrap().to_string(), "bad.dl:2:5");
+    /// # Ok::<(), csgpix_scene::Error>(())
+    /// ```
+    pub fn parse(text: &str, file: &str) -> Result<DisplayList> {
         Parser::new(text)
             .parse()
             .map_err(|spot| spot.into_error(file))
@@ -135,7 +133,7 @@ impl DisplayList {
     /// # Errors
     ///
     /// Returns a syntax error, or an I/O error reported at line 0, column 0.
-    pub fn read(path: &Path) -> Result<DisplayList, ParseError> {
+    pub fn read(path: &Path) -> Result<DisplayList> {
         let file = path.display().to_string();
         let bytes = match std::fs::read(path) {
             Ok(bytes) => bytes,
@@ -187,13 +185,8 @@ impl Spot {
         }
     }
 
-    fn into_error(self, file: &str) -> ParseError {
-        ParseError {
-            file: file.to_owned(),
-            line: self.line,
-            col: self.col,
-            msg: self.msg,
-        }
+    fn into_error(self, file: &str) -> Error {
+        Error::at(file, self.line, self.col, self.msg)
     }
 }
 
@@ -441,7 +434,7 @@ mod tests {
     const BOX1: &str = include_str!("../../../vectors/thesis/box1.dl");
     const BOX2: &str = include_str!("../../../vectors/thesis/box2.dl");
 
-    fn parse(text: &str) -> Result<DisplayList, ParseError> {
+    fn parse(text: &str) -> Result<DisplayList> {
         DisplayList::parse(text, "t.dl")
     }
 
@@ -449,8 +442,13 @@ mod tests {
     /// contains `needle`.
     fn assert_error(text: &str, line: usize, col: usize, needle: &str) {
         let err = parse(text).expect_err("parse should fail");
-        assert_eq!((err.line, err.col), (line, col), "{err}");
-        assert!(err.msg.contains(needle), "`{}` lacks `{needle}`", err.msg);
+        let at = err.location.as_ref().expect("a located error");
+        assert_eq!((at.line, at.col), (line, col), "{err}");
+        assert!(
+            err.message.contains(needle),
+            "`{}` lacks `{needle}`",
+            err.message
+        );
     }
 
     fn plane(z0: f64, dzx: f64, dzy: f64, colour: u32, hyl: [bool; 3]) -> DlPlane {
@@ -672,8 +670,9 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("missing.dl");
         let err = DisplayList::read(&path).unwrap_err();
-        assert_eq!((err.line, err.col), (0, 0));
-        assert!(err.file.ends_with("missing.dl"));
+        let at = err.location.expect("a located error");
+        assert_eq!((at.line, at.col), (0, 0));
+        assert!(at.file.ends_with("missing.dl"));
         std::fs::write(&path, CUBE).unwrap();
         assert_eq!(DisplayList::read(&path).unwrap(), parse(CUBE).unwrap());
     }
@@ -752,7 +751,8 @@ mod tests {
                 mutate(&mut bytes, edit);
             }
             if let Err(err) = parse(&String::from_utf8_lossy(&bytes)) {
-                prop_assert!(err.line >= 1 && err.col >= 1);
+                let at = err.location.expect("a located error");
+                prop_assert!(at.line >= 1 && at.col >= 1);
             }
         }
     }

@@ -29,6 +29,20 @@ pub struct Error {
     pub location: Option<Location>,
     /// What went wrong, one line.
     pub message: String,
+    /// Which case it is, where a caller words or handles one differently.
+    pub kind: Kind,
+}
+
+/// The cases of [`Error`] a caller may need to tell apart (to name its own option, say).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum Kind {
+    /// Any other problem: the message says it all.
+    #[default]
+    Other,
+    /// A grid was asked over a scene with no solids, so it has no bounds of its own: the
+    /// caller has to give a box.
+    NeedsBounds,
 }
 
 /// A scene result.
@@ -47,6 +61,14 @@ impl fmt::Display for Error {
 
 impl Error {
     /// An error at `file:line:col`.
+    ///
+    /// ```
+    /// use csgpix_scene::Error;
+    ///
+    /// let e = Error::at("a.dl", 3, 7, "expected a number");
+    /// assert_eq!(e.to_string(), "a.dl:3:7: expected a number");
+    /// assert_eq!(e.in_file("b.dl").to_string(), "b.dl:3:7: expected a number");
+    /// ```
     pub fn at(
         file: impl Into<String>,
         line: usize,
@@ -57,6 +79,7 @@ impl Error {
         Error {
             location: Some(Location { file, line, col }),
             message: message.into(),
+            kind: Kind::Other,
         }
     }
 
@@ -65,7 +88,25 @@ impl Error {
         Error {
             location: None,
             message: message.into(),
+            kind: Kind::Other,
         }
+    }
+
+    /// An error of kind `kind`, with no place in an input.
+    pub fn of_kind(kind: Kind, message: impl Into<String>) -> Self {
+        Error {
+            kind,
+            ..Error::msg(message)
+        }
+    }
+
+    /// The same error located in `file` instead (the caller's name for the input, e.g. the
+    /// option an expression came from); unchanged when it has no location.
+    pub fn in_file(mut self, file: impl Into<String>) -> Self {
+        if let Some(at) = &mut self.location {
+            at.file = file.into();
+        }
+        self
     }
 
     /// The same error, its message after `what: ` (e.g. the primitive it concerns).

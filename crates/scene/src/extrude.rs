@@ -17,18 +17,24 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::Result;
+
 /// A 2D shape: closed outlines, filled by the even-odd rule (OpenSCAD's `polygon` with
 /// `paths`: an outline inside another is a hole).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Poly2 {
+    /// The outlines, each a closed polygon (the last point joins the first).
     pub paths: Vec<Vec<DVec2>>,
 }
 
 /// A 2D CSG tree over shapes, as the `.csg` file writes it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Region {
+    /// A shape.
     Poly(Poly2),
+    /// Everything in any child.
     Union(Vec<Region>),
+    /// Everything in every child.
     Intersection(Vec<Region>),
     /// The first minus the others.
     Difference(Vec<Region>),
@@ -68,7 +74,7 @@ impl Poly2 {
         Poly2 { paths: vec![path] }
     }
 
-    /// Every outline under the plane's affine map `m` (row-major 2×3: x' = m[0]·(x, y, 1)).
+    /// Every outline under the plane's affine map `m` (row-major 2×3: `x' = m[0]·(x, y, 1)`).
     pub fn transformed(&self, m: [[f64; 3]; 2]) -> Poly2 {
         let map = |p: DVec2| {
             DVec2::new(
@@ -135,11 +141,15 @@ pub fn signed_area(p: &[DVec2]) -> f64 {
 /// `linear_extrude`'s parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Linear {
+    /// Height along +Z.
     pub height: f64,
+    /// Centred on z = 0 rather than standing on it.
     pub center: bool,
     /// Degrees; positive twists clockwise seen from +Z, as OpenSCAD's.
     pub twist: f64,
+    /// Layers from bottom to top (at least 1).
     pub slices: usize,
+    /// X and Y scale of the top against the bottom.
     pub scale: [f64; 2],
 }
 
@@ -346,7 +356,7 @@ pub fn rotate_mesh(
     angle: f64,
     fragments: usize,
     sincos: &dyn Fn(f64) -> (f64, f64),
-) -> Result<Vec<Tri3>, String> {
+) -> Result<Vec<Tri3>> {
     let (lo, hi) = poly
         .points()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
@@ -412,9 +422,19 @@ fn fan(ring: &[DVec3], out: &mut Vec<Tri3>) {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Offset {
     /// `r`: round corners, `fragments` steps to a full turn (Clipper's round join).
-    Round { r: f64, fragments: usize },
+    Round {
+        /// Distance, outward when positive.
+        r: f64,
+        /// Steps to a full turn of a round corner.
+        fragments: usize,
+    },
     /// `delta`: sharp (mitred) corners, or cut corners with `chamfer`.
-    Delta { delta: f64, chamfer: bool },
+    Delta {
+        /// Distance, outward when positive.
+        delta: f64,
+        /// Cut the corners instead of mitring them.
+        chamfer: bool,
+    },
 }
 
 impl Offset {
@@ -428,11 +448,7 @@ impl Offset {
 
 /// `offset` of a region, where csgpix can: a single convex outline by any amount, and a union
 /// by a positive amount (a Minkowski sum distributes over union). Err names what is not.
-pub fn offset(
-    region: &Region,
-    o: Offset,
-    sincos: &dyn Fn(f64) -> (f64, f64),
-) -> Result<Region, String> {
+pub fn offset(region: &Region, o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> Result<Region> {
     match region {
         Region::Union(parts) if o.amount() >= 0.0 => Ok(Region::Union(
             parts
@@ -566,7 +582,7 @@ fn contours(r: &Region) -> Vec<Vec<Vec<[f64; 2]>>> {
 
 /// Every vertex of a region's shapes, for `hull()`; Err under a difference or intersection
 /// (their hull is not the hull of their operands' points).
-pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<(), String> {
+pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<()> {
     match r {
         Region::Poly(p) => out.extend(p.points()),
         Region::Union(parts) => {

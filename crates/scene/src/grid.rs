@@ -3,39 +3,45 @@
 use glam::DVec3;
 
 use crate::solid::CsgScene;
+use crate::{Error, Kind, Result};
 
 /// The voxel grid: `dims` voxels spanning the box `min`..`max` in scene units.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Grid {
+    /// Voxels along X, Y and Z.
     pub dims: [usize; 3],
+    /// The box's low corner.
     pub min: DVec3,
+    /// The box's high corner.
     pub max: DVec3,
 }
 
 impl Grid {
     /// A grid over the scene's bounds (every solid's vertices, so subtracted solids count).
-    pub fn of_scene(scene: &CsgScene, dims: [usize; 3]) -> Result<Grid, String> {
+    /// A scene without solids has none: the error is then of kind [`Kind::NeedsBounds`].
+    pub fn of_scene(scene: &CsgScene, dims: [usize; 3]) -> Result<Grid> {
         let pts = scene.solids.iter().flat_map(|s| s.vertices.iter());
         let (min, max) = pts.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), p| {
             (a.min(DVec3::from(*p)), b.max(DVec3::from(*p)))
         });
         if !min.is_finite() {
-            return Err("the scene has no solids: give --bounds".into());
+            let msg = "the scene has no solids: give the grid's bounds";
+            return Err(Error::of_kind(Kind::NeedsBounds, msg));
         }
         Grid::new(dims, min, max)
     }
 
     /// A grid over an explicit box.
-    pub fn new(dims: [usize; 3], min: DVec3, max: DVec3) -> Result<Grid, String> {
+    pub fn new(dims: [usize; 3], min: DVec3, max: DVec3) -> Result<Grid> {
         if dims.contains(&0) {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "resolution {dims:?}: every side needs at least one voxel"
-            ));
+            )));
         }
         if !(min.is_finite() && max.is_finite()) || (max - min).min_element() <= 0.0 {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "bounds {min} .. {max} must be finite with every side positive"
-            ));
+            )));
         }
         Ok(Grid { dims, min, max })
     }
@@ -70,14 +76,17 @@ pub const MAX_GRID_SIDE: usize = 1 << 20;
 /// empty voxels added on every side.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GridSpec {
+    /// Voxels along X, Y and Z.
     pub res: Option<[usize; 3]>,
+    /// Side of a cubic voxel, in scene units.
     pub voxel: Option<f64>,
+    /// Empty voxels added on every side.
     pub pad: usize,
 }
 
 impl GridSpec {
     /// The grid over the box `lo`..`hi`.
-    pub fn grid(&self, lo: DVec3, hi: DVec3) -> Result<Grid, String> {
+    pub fn grid(&self, lo: DVec3, hi: DVec3) -> Result<Grid> {
         let inner = match (self.res, self.voxel) {
             (Some(dims), None) => Grid::new(dims, lo, hi)?,
             (None, Some(size)) => Self::cubic(size, lo, hi)?,
@@ -87,18 +96,20 @@ impl GridSpec {
         let pad = self.pad.min(MAX_GRID_SIDE);
         let dims = inner.dims.map(|d| d.saturating_add(2 * pad));
         if dims.iter().any(|&d| d > MAX_GRID_SIDE) {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "a grid of {dims:?} voxels: at most {MAX_GRID_SIDE} per axis"
-            ));
+            )));
         }
         let margin = v * pad as f64;
         Grid::new(dims, inner.min - margin, inner.max + margin)
     }
 
     /// Cubic voxels of side `size`: as many as cover each side of the box, centred on it.
-    fn cubic(size: f64, lo: DVec3, hi: DVec3) -> Result<Grid, String> {
+    fn cubic(size: f64, lo: DVec3, hi: DVec3) -> Result<Grid> {
         if !(size.is_finite() && size > 0.0) {
-            return Err(format!("voxel size {size}: must be a positive number"));
+            return Err(Error::msg(format!(
+                "voxel size {size}: must be a positive number"
+            )));
         }
         let extent = hi - lo;
         let mut dims = [0usize; 3];
@@ -106,9 +117,9 @@ impl GridSpec {
             // A side that is a whole number of voxels (to rounding) gets exactly that many.
             let n = (e / size * (1.0 - 1e-12)).ceil().max(1.0);
             if n.is_nan() || n > MAX_GRID_SIDE as f64 {
-                return Err(format!(
+                return Err(Error::msg(format!(
                     "voxel size {size} over an extent of {e}: more than {MAX_GRID_SIDE} voxels per axis"
-                ));
+                )));
             }
             *d = n as usize;
         }
@@ -121,10 +132,14 @@ impl GridSpec {
 /// A voxelized scene: colour codes, X fastest, then Y, then Z; 0 is empty.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Volume {
+    /// Voxels along X, Y and Z.
     pub dims: [usize; 3],
+    /// One colour code a voxel, `(k·ny + j)·nx + i` for voxel (i, j, k).
     pub voxels: Vec<u8>,
 }
 
+/// The filled voxels on the volume's surface: those with an empty 6-neighbour or on the
+/// grid's border.
 pub fn surface_voxels(v: &Volume) -> u64 {
     let [nx, ny, nz] = v.dims;
     let at = |i: usize, j: usize, k: usize| v.voxels[(k * ny + j) * nx + i] != 0;

@@ -8,12 +8,14 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::Result;
+
 /// Relative tolerance: a point closer than this times the extent to a face's plane is on it.
 const EPS: f64 = 1e-9;
 
 /// The convex hull of `points` as (vertices, faces), faces counter-clockwise seen from
 /// outside. Err when the points span no volume (fewer than four, or all on a plane).
-pub fn hull3(points: &[DVec3]) -> Result<(Vec<DVec3>, Vec<Vec<usize>>), String> {
+pub fn hull3(points: &[DVec3]) -> Result<(Vec<DVec3>, Vec<Vec<usize>>)> {
     let (lo, hi) = points
         .iter()
         .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), &p| {

@@ -2,19 +2,21 @@
 
 use std::path::Path;
 
+use crate::{Error, Result};
+
 /// The text of `path`; its name in errors is `path` as given.
-pub fn read_text(path: &Path) -> Result<String, String> {
+pub fn read_text(path: &Path) -> Result<String> {
     let name = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| format!("{name}: {e}"))?;
+    let bytes = std::fs::read(path).map_err(|e| Error::msg(format!("{name}: {e}")))?;
     text(bytes, &name)
 }
 
 /// `bytes` as text, or `FILE:LINE:COL: invalid UTF-8 …` at the first bad byte: LINE counts
 /// from 1, COL is 1 + the characters before it on its line.
-pub fn text(bytes: Vec<u8>, file: &str) -> Result<String, String> {
+pub fn text(bytes: Vec<u8>, file: &str) -> Result<String> {
     String::from_utf8(bytes).map_err(|e| {
         let (line, col, msg) = bad_utf8(e.as_bytes()).expect("invalid UTF-8 has a first bad byte");
-        format!("{file}:{line}:{col}: {msg}")
+        Error::at(file, line, col, msg)
     })
 }
 
@@ -43,16 +45,18 @@ mod tests {
 
     #[test]
     fn the_first_bad_byte_is_located_by_line_and_character() {
-        let e = text(b"cube();\n  \xc3\xa9x\xff;\n".to_vec(), "a.csg").unwrap_err();
+        let e = text(b"cube();\n  \xc3\xa9x\xff;\n".to_vec(), "a.csg")
+            .unwrap_err()
+            .to_string();
         // Line 2: two spaces, é (one character, two bytes), x, then the bad byte.
         assert_eq!(
             e,
             "a.csg:2:5: invalid UTF-8 (byte 0xFF): text inputs are UTF-8"
         );
-        let e = text(b"\x80".to_vec(), "b").unwrap_err();
+        let e = text(b"\x80".to_vec(), "b").unwrap_err().to_string();
         assert!(e.starts_with("b:1:1: "), "{e}");
         // A sequence cut short at the end.
-        let e = text(b"ab\xe2\x82".to_vec(), "c").unwrap_err();
+        let e = text(b"ab\xe2\x82".to_vec(), "c").unwrap_err().to_string();
         assert!(e.starts_with("c:1:3: "), "{e}");
         assert_eq!(text(b"ok\n".to_vec(), "d").unwrap(), "ok\n");
     }

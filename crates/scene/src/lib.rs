@@ -6,12 +6,20 @@
 //! datasets as primitives (§3.2-3.3); the voxel grid and volumes (§4.4); mesh and volume
 //! writers, and outputs written whole or not at all. No processor here: `csgpix-draw` turns
 //! scenes into array operations.
+//!
+//! Clipping functions and CSG expressions share one grammar and parser ([`expr`]). Every
+//! fallible function returns the crate's [`Result`]: an [`Error`] is one line, located
+//! `FILE:LINE:COL` ([`Location`]) where its input has a place for it, and never names a
+//! command-line option (callers add those, e.g. by [`Error::in_file`] or [`Kind`]).
+
+#![warn(missing_docs)]
 
 pub mod clip_expr;
 pub mod csg_expr;
 pub mod dataset;
 pub mod display_list;
 pub mod error;
+pub mod expr;
 pub mod extrude;
 pub mod grid;
 pub mod hull;
@@ -23,4 +31,4 @@ pub mod scad;
 pub mod solid;
 pub mod trimesh;
 
-pub use error::{Error, Location, Result};
+pub use error::{Error, Kind, Location, Result};

@@ -7,6 +7,7 @@ use std::io::Write;
 use std::path::Path;
 
 use crate::output::write_atomic;
+use crate::{Error, Result};
 
 /// A triangle: three vertices, counter-clockwise seen from outside.
 pub type Tri = [[f32; 3]; 3];
@@ -14,14 +15,17 @@ pub type Tri = [[f32; 3]; 3];
 /// Mesh file formats, chosen by the output's extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
+    /// Binary STL (`.stl`).
     Stl,
+    /// Wavefront OBJ (`.obj`).
     Obj,
+    /// Binary PLY (`.ply`).
     Ply,
 }
 
 impl Format {
     /// The format of `path` from its extension (`.stl`, `.obj`, `.ply`, any case).
-    pub fn of_path(path: &Path) -> Result<Format, String> {
+    pub fn of_path(path: &Path) -> Result<Format> {
         let ext = path
             .extension()
             .and_then(|e| e.to_str())
@@ -30,16 +34,16 @@ impl Format {
             Some("stl") => Ok(Format::Stl),
             Some("obj") => Ok(Format::Obj),
             Some("ply") => Ok(Format::Ply),
-            _ => Err(format!(
+            _ => Err(Error::msg(format!(
                 "{}: the mesh format comes from the extension: .stl, .obj or .ply",
                 path.display()
-            )),
+            ))),
         }
     }
 }
 
 /// Writes `tris` to `path` in the format of its extension, atomically.
-pub fn write(path: &Path, tris: &[Tri], comment: &str) -> Result<(), String> {
+pub fn write(path: &Path, tris: &[Tri], comment: &str) -> Result<()> {
     let f = Format::of_path(path)?;
     write_atomic(path, |w| write_format(w, f, tris, comment))
 }

@@ -19,6 +19,7 @@ use glam::{DMat3, DVec3};
 
 use crate::grid::Grid;
 use crate::output::write_atomic;
+use crate::{Error, Result};
 
 /// The header for `grid`: axis 0 is X (fastest), 1 is Y, 2 is Z, in scene units.
 pub fn header(grid: &Grid, comment: &str) -> String {
@@ -45,7 +46,7 @@ pub fn header(grid: &Grid, comment: &str) -> String {
 }
 
 /// Write the volume (X fastest, then Y, then Z) whole or not at all.
-pub fn write(path: &Path, grid: &Grid, voxels: &[u8], comment: &str) -> Result<(), String> {
+pub fn write(path: &Path, grid: &Grid, voxels: &[u8], comment: &str) -> Result<()> {
     write_atomic(path, |w| write_volume(w, grid, voxels, comment))
 }
 
@@ -61,7 +62,7 @@ pub fn write_volume(
 }
 
 /// Read back a volume this module wrote: the sizes and the voxels (for tests and tools).
-pub fn read(bytes: &[u8]) -> Result<([usize; 3], Vec<u8>), String> {
+pub fn read(bytes: &[u8]) -> Result<([usize; 3], Vec<u8>)> {
     let split = bytes
         .windows(2)
         .position(|w| w == b"\n\n")
@@ -79,11 +80,17 @@ pub fn read(bytes: &[u8]) -> Result<([usize; 3], Vec<u8>), String> {
         .map(|s| s.parse().map_err(|e| format!("sizes: {e}")))
         .collect::<Result<_, String>>()?;
     let [nx, ny, nz] = dims[..] else {
-        return Err(format!("sizes: expected 3, found {}", dims.len()));
+        return Err(Error::msg(format!(
+            "sizes: expected 3, found {}",
+            dims.len()
+        )));
     };
     let data = bytes[split + 2..].to_vec();
     if data.len() != nx * ny * nz {
-        return Err(format!("{} data bytes for {nx}x{ny}x{nz}", data.len()));
+        return Err(Error::msg(format!(
+            "{} data bytes for {nx}x{ny}x{nz}",
+            data.len()
+        )));
     }
     Ok(([nx, ny, nz], data))
 }
@@ -104,12 +111,25 @@ pub const BYTES_PER_SAMPLE: u64 = 16;
 static SAMPLE_LIMIT: std::sync::atomic::AtomicUsize =
     std::sync::atomic::AtomicUsize::new(MAX_SAMPLES);
 
+/// What set [`SAMPLE_LIMIT`], named after the limit in messages.
+static SAMPLE_LIMIT_SOURCE: std::sync::Mutex<&str> = std::sync::Mutex::new("a memory limit");
+
 /// Refuse, from now on, volumes whose samples would cost more than `bytes`
 /// ([`BYTES_PER_SAMPLE`] each): a gzip member that inflates past a run's memory limit is
-/// refused by its header's `sizes`, before a byte is decoded.
-pub fn limit_samples_to_memory(bytes: u64) {
+/// refused by its header's `sizes`, before a byte is decoded. `source` names the limit in
+/// that error (e.g. the option that set it).
+pub fn limit_samples_to_memory(bytes: u64, source: &'static str) {
     let n = (bytes / BYTES_PER_SAMPLE).min(MAX_SAMPLES as u64) as usize;
     SAMPLE_LIMIT.store(n, std::sync::atomic::Ordering::Relaxed);
+    *SAMPLE_LIMIT_SOURCE
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner) = source;
+}
+
+fn sample_limit_source() -> &'static str {
+    *SAMPLE_LIMIT_SOURCE
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
 fn sample_limit() -> usize {
@@ -141,17 +161,20 @@ impl Nrrd {
         origin: DVec3,
         directions: DMat3,
         sample_type: SampleType,
-    ) -> Result<Nrrd, String> {
+    ) -> Result<Nrrd> {
         let count = sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n));
         if count != Some(samples.len()) || samples.is_empty() {
             let [x, y, z] = sizes;
-            return Err(format!("{} samples for sizes {x}×{y}×{z}", samples.len()));
+            return Err(Error::msg(format!(
+                "{} samples for sizes {x}×{y}×{z}",
+                samples.len()
+            )));
         }
         if let Some(i) = samples.iter().position(|v| !v.is_finite()) {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "sample {i} is {}: expected finite values",
                 samples[i]
-            ));
+            )));
         }
         let range = samples
             .iter()
@@ -177,13 +200,21 @@ impl Nrrd {
 /// The scalar types of the NRRD format spec (§5 `type`), all but 64-bit integers and `block`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum SampleType {
+    /// `int8`.
     Int8,
+    /// `uint8`.
     Uint8,
+    /// `int16`.
     Int16,
+    /// `uint16`.
     Uint16,
+    /// `int32`.
     Int32,
+    /// `uint32`.
     Uint32,
+    /// `float` (32-bit).
     Float,
+    /// `double` (64-bit).
     Double,
 }
 
@@ -314,7 +345,9 @@ pub enum Encoding {
 /// Byte order of multi-byte samples (`endian:`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Endian {
+    /// Least significant byte first.
     Little,
+    /// Most significant byte first.
     Big,
 }
 
@@ -329,16 +362,16 @@ pub(crate) fn invertible(d: &DMat3) -> bool {
 // --- Reading -----------------------------------------------------------------------------------
 
 /// Read a NRRD file; a detached `data file:` is found relative to the file's directory.
-pub fn read_nrrd(path: &Path) -> Result<Nrrd, String> {
+pub fn read_nrrd(path: &Path) -> Result<Nrrd> {
     let name = path.display().to_string();
     let len = std::fs::metadata(path)
         .map_err(|e| format!("{name}: {e}"))?
         .len();
     let cap = MAX_SAMPLES as u64 * 8 + (1 << 20);
     if len > cap {
-        return Err(format!(
+        return Err(Error::msg(format!(
             "{name}: {len} bytes: larger than any volume of {MAX_SAMPLES} samples"
-        ));
+        )));
     }
     let bytes = std::fs::read(path).map_err(|e| format!("{name}: {e}"))?;
     parse_nrrd(&bytes, &name, path.parent())
@@ -350,7 +383,7 @@ pub fn read_nrrd(path: &Path) -> Result<Nrrd, String> {
 ///
 /// Every error is one line, `FILE:LINE:COL: what was expected`, at the offending header field
 /// or value; problems with the samples themselves read `FILE: data: ...`.
-pub fn parse_nrrd(bytes: &[u8], file: &str, dir: Option<&Path>) -> Result<Nrrd, String> {
+pub fn parse_nrrd(bytes: &[u8], file: &str, dir: Option<&Path>) -> Result<Nrrd> {
     parse_nrrd_limited(bytes, file, dir, sample_limit())
 }
 
@@ -360,7 +393,7 @@ pub fn parse_nrrd_limited(
     file: &str,
     dir: Option<&Path>,
     max_samples: usize,
-) -> Result<Nrrd, String> {
+) -> Result<Nrrd> {
     let h = split_header(bytes, file)?;
     let plan = plan(&h, max_samples)?;
     let (origin, directions) = geometry(&h)?;
@@ -370,12 +403,12 @@ pub fn parse_nrrd_limited(
         .map(|b| plan.ty.decode(b, plan.big) as f32)
         .collect();
     Nrrd::new(plan.sizes, samples, origin, directions, plan.ty)
-        .map_err(|e| format!("{file}: data: {e}"))
+        .map_err(|e| Error::msg(format!("{file}: data: {e}")))
 }
 
 /// `FILE:LINE:COL: message`.
-fn at(file: &str, line: usize, col: usize, msg: impl Display) -> String {
-    format!("{file}:{line}:{col}: {msg}")
+fn at(file: &str, line: usize, col: usize, msg: impl Display) -> Error {
+    Error::at(file, line, col, msg.to_string())
 }
 
 /// One `field: value` line: where its value starts (1-based) and the value.
@@ -401,7 +434,7 @@ impl<'a> Header<'a> {
         self.fields.get(name).copied()
     }
 
-    fn need(&self, name: &str) -> Result<Field<'a>, String> {
+    fn need(&self, name: &str) -> Result<Field<'a>> {
         self.get(name).ok_or_else(|| {
             let msg = format!("expected a `{name}:` field before the end of the header");
             at(self.file, self.end, 1, msg)
@@ -409,12 +442,12 @@ impl<'a> Header<'a> {
     }
 
     /// An error `offset` bytes into field `f`'s value.
-    fn err(&self, f: Field, offset: usize, msg: impl Display) -> String {
+    fn err(&self, f: Field, offset: usize, msg: impl Display) -> Error {
         at(self.file, f.line, f.col + offset, msg)
     }
 
     /// Record line `line`, `text`: a field, a `key:=value` pair (ignored) or a comment.
-    fn add(&mut self, line: usize, text: &'a str) -> Result<(), String> {
+    fn add(&mut self, line: usize, text: &'a str) -> Result<()> {
         if text.starts_with('#') {
             return Ok(());
         }
@@ -496,7 +529,7 @@ fn canonical(name: &str) -> Option<&'static str> {
 }
 
 /// The header's lines up to the blank line (or the end of the bytes).
-fn split_header<'a>(bytes: &'a [u8], file: &'a str) -> Result<Header<'a>, String> {
+fn split_header<'a>(bytes: &'a [u8], file: &'a str) -> Result<Header<'a>> {
     let mut h = Header {
         file,
         fields: BTreeMap::new(),
@@ -534,7 +567,7 @@ fn split_header<'a>(bytes: &'a [u8], file: &'a str) -> Result<Header<'a>, String
     Ok(h)
 }
 
-fn check_magic(text: &str, file: &str) -> Result<(), String> {
+fn check_magic(text: &str, file: &str) -> Result<()> {
     match text.strip_prefix("NRRD000") {
         Some("1" | "2" | "3" | "4" | "5") => Ok(()),
         _ => Err(at(
@@ -579,7 +612,7 @@ struct Plan {
     byte_skip: Option<u64>,
 }
 
-fn plan(h: &Header, max_samples: usize) -> Result<Plan, String> {
+fn plan(h: &Header, max_samples: usize) -> Result<Plan> {
     dimension(h)?;
     let ty = sample_type(h)?;
     let sizes = sizes(h)?;
@@ -598,7 +631,7 @@ fn plan(h: &Header, max_samples: usize) -> Result<Plan, String> {
     })
 }
 
-fn dimension(h: &Header) -> Result<(), String> {
+fn dimension(h: &Header) -> Result<()> {
     let f = h.need("dimension")?;
     match f.value.trim() {
         "3" => Ok(()),
@@ -610,7 +643,7 @@ fn dimension(h: &Header) -> Result<(), String> {
     }
 }
 
-fn sample_type(h: &Header) -> Result<SampleType, String> {
+fn sample_type(h: &Header) -> Result<SampleType> {
     let f = h.need("type")?;
     SampleType::parse(f.value).ok_or_else(|| {
         let msg = format!(
@@ -622,7 +655,7 @@ fn sample_type(h: &Header) -> Result<SampleType, String> {
     })
 }
 
-fn sizes(h: &Header) -> Result<[usize; 3], String> {
+fn sizes(h: &Header) -> Result<[usize; 3]> {
     let f = h.need("sizes")?;
     let w = words(f.value);
     if w.len() != 3 {
@@ -639,7 +672,7 @@ fn sizes(h: &Header) -> Result<[usize; 3], String> {
 }
 
 /// The data bytes `sizes` need, refused past `max_samples` samples.
-fn data_bytes(h: &Header, sizes: [usize; 3], ty: SampleType, max: usize) -> Result<usize, String> {
+fn data_bytes(h: &Header, sizes: [usize; 3], ty: SampleType, max: usize) -> Result<usize> {
     let count = sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n));
     let bytes = count.and_then(|c| c.checked_mul(ty.size()));
     match (count, bytes) {
@@ -647,8 +680,8 @@ fn data_bytes(h: &Header, sizes: [usize; 3], ty: SampleType, max: usize) -> Resu
         _ => {
             let [x, y, z] = sizes;
             let why = match max < MAX_SAMPLES {
-                true => " (--max-memory)",
-                false => "",
+                true => format!(" ({})", sample_limit_source()),
+                false => String::new(),
             };
             let msg = format!("sizes {x}×{y}×{z} exceed the limit of {max} samples{why}");
             Err(h.err(h.need("sizes")?, 0, msg))
@@ -656,7 +689,7 @@ fn data_bytes(h: &Header, sizes: [usize; 3], ty: SampleType, max: usize) -> Resu
     }
 }
 
-fn encoding(h: &Header) -> Result<Encoding, String> {
+fn encoding(h: &Header) -> Result<Encoding> {
     let f = h.need("encoding")?;
     match f.value.trim().to_ascii_lowercase().as_str() {
         "raw" => Ok(Encoding::Raw),
@@ -670,7 +703,7 @@ fn encoding(h: &Header) -> Result<Encoding, String> {
 }
 
 /// Whether samples are big-endian; the spec requires `endian:` for multi-byte types.
-fn big_endian(h: &Header, ty: SampleType) -> Result<bool, String> {
+fn big_endian(h: &Header, ty: SampleType) -> Result<bool> {
     match (h.get("endian"), ty.size()) {
         (None, 1) => Ok(false),
         (None, n) => {
@@ -686,7 +719,7 @@ fn big_endian(h: &Header, ty: SampleType) -> Result<bool, String> {
 }
 
 /// `line skip` and `byte skip` (-1: the data are the file's last bytes, raw encoding only).
-fn skips(h: &Header, encoding: Encoding) -> Result<(usize, Option<u64>), String> {
+fn skips(h: &Header, encoding: Encoding) -> Result<(usize, Option<u64>)> {
     let lines = match h.get("line skip") {
         None => 0,
         Some(f) => f.value.trim().parse::<usize>().map_err(|_| {
@@ -718,7 +751,7 @@ fn skips(h: &Header, encoding: Encoding) -> Result<(usize, Option<u64>), String>
 
 /// `space origin` (default 0) and the axis steps: `space directions`, else `spacings`
 /// (diagonal), else unit steps. Coordinates are taken as scene units whatever the `space`.
-fn geometry(h: &Header) -> Result<(DVec3, DMat3), String> {
+fn geometry(h: &Header) -> Result<(DVec3, DMat3)> {
     check_space(h)?;
     let origin = match h.get("space origin") {
         Some(f) => origin(h, f)?,
@@ -741,7 +774,7 @@ fn geometry(h: &Header) -> Result<(DVec3, DMat3), String> {
 }
 
 /// The space must be 3D: `space dimension: 3`, and no `space` with a time axis.
-fn check_space(h: &Header) -> Result<(), String> {
+fn check_space(h: &Header) -> Result<()> {
     if let Some(f) = h.get("space dimension") {
         if f.value.trim() != "3" {
             let msg = format!("expected space dimension 3, found `{}`", f.value);
@@ -758,14 +791,14 @@ fn check_space(h: &Header) -> Result<(), String> {
     Ok(())
 }
 
-fn origin(h: &Header, f: Field) -> Result<DVec3, String> {
+fn origin(h: &Header, f: Field) -> Result<DVec3> {
     match vectors(h, f)?[..] {
         [(_, Some(v))] => Ok(v),
         _ => Err(h.err(f, 0, "expected one vector `(x,y,z)`")),
     }
 }
 
-fn directions(h: &Header, f: Field) -> Result<DMat3, String> {
+fn directions(h: &Header, f: Field) -> Result<DMat3> {
     let list = vectors(h, f)?;
     if list.len() != 3 {
         let msg = format!("expected 3 vectors (one per axis), found {}", list.len());
@@ -781,7 +814,7 @@ fn directions(h: &Header, f: Field) -> Result<DMat3, String> {
     Ok(DMat3::from_cols(cols[0], cols[1], cols[2]))
 }
 
-fn spacings(h: &Header, f: Field) -> Result<DMat3, String> {
+fn spacings(h: &Header, f: Field) -> Result<DMat3> {
     let w = words(f.value);
     if w.len() != 3 {
         return Err(h.err(f, 0, format!("expected 3 spacings, found {}", w.len())));
@@ -800,7 +833,7 @@ fn number(s: &str) -> Option<f64> {
 }
 
 /// The `(x,y,z)` vectors and `none`s of a value, each with its byte offset.
-fn vectors(h: &Header, f: Field) -> Result<Vec<(usize, Option<DVec3>)>, String> {
+fn vectors(h: &Header, f: Field) -> Result<Vec<(usize, Option<DVec3>)>> {
     let s = f.value;
     let mut out = Vec::new();
     let mut i = 0;
@@ -823,7 +856,7 @@ fn vectors(h: &Header, f: Field) -> Result<Vec<(usize, Option<DVec3>)>, String> 
 }
 
 /// The three components of `inner`, found `off` bytes into `f`'s value.
-fn vector(h: &Header, f: Field, off: usize, inner: &str) -> Result<DVec3, String> {
+fn vector(h: &Header, f: Field, off: usize, inner: &str) -> Result<DVec3> {
     let parts: Vec<&str> = inner.split(',').collect();
     if parts.len() != 3 {
         let msg = format!("expected 3 components, found {}", parts.len());
@@ -861,7 +894,7 @@ enum Fault {
 }
 
 /// The data bytes, exactly as many as the plan needs: from `data file:` or after the header.
-fn fetch(h: &Header, plan: &Plan, bytes: &[u8], dir: Option<&Path>) -> Result<Vec<u8>, String> {
+fn fetch(h: &Header, plan: &Plan, bytes: &[u8], dir: Option<&Path>) -> Result<Vec<u8>> {
     let got = match h.get("data file") {
         Some(f) => {
             let path = data_path(h, f, dir)?;
@@ -891,7 +924,7 @@ fn fetch(h: &Header, plan: &Plan, bytes: &[u8], dir: Option<&Path>) -> Result<Ve
 }
 
 /// The one data file named; lists and numbered series (`LIST`, `%d`) are not supported.
-fn data_path(h: &Header, f: Field, dir: Option<&Path>) -> Result<PathBuf, String> {
+fn data_path(h: &Header, f: Field, dir: Option<&Path>) -> Result<PathBuf> {
     let v = f.value.trim();
     if v.starts_with("LIST") || (v.contains('%') && words(v).len() >= 4) || v.is_empty() {
         let msg = "expected one data file name (lists and numbered series are not supported)";
@@ -967,7 +1000,7 @@ fn tail<R: Read + Seek>(mut r: R, n: usize) -> Result<Vec<u8>, Fault> {
 }
 
 /// The error for `e`, at the header field that asked for what was not there.
-fn fault(h: &Header, plan: &Plan, e: Fault) -> String {
+fn fault(h: &Header, plan: &Plan, e: Fault) -> Error {
     let field = |name: &str| h.get(name).ok_or_else(|| format!("{}: data", h.file));
     let gz = plan.encoding == Encoding::Gzip;
     let place = match &e {
@@ -997,7 +1030,7 @@ fn fault(h: &Header, plan: &Plan, e: Fault) -> String {
     };
     match place {
         Ok(f) => h.err(f, 0, msg),
-        Err(prefix) => format!("{prefix}: {msg}"),
+        Err(prefix) => Error::msg(format!("{prefix}: {msg}")),
     }
 }
 
@@ -1005,12 +1038,7 @@ fn fault(h: &Header, plan: &Plan, e: Fault) -> String {
 
 /// Write `nrrd` as an attached-header NRRD (format version 4) in its own sample type,
 /// little-endian, whole or not at all. Gzip output is deterministic (no name, mtime 0).
-pub fn write_nrrd(
-    path: &Path,
-    nrrd: &Nrrd,
-    encoding: Encoding,
-    comment: &str,
-) -> Result<(), String> {
+pub fn write_nrrd(path: &Path, nrrd: &Nrrd, encoding: Encoding, comment: &str) -> Result<()> {
     let bytes = nrrd_bytes(nrrd, encoding, Endian::Little, comment)
         .map_err(|e| format!("{}: {e}", path.display()))?;
     write_atomic(path, |w| w.write_all(&bytes))
@@ -1024,17 +1052,17 @@ pub fn nrrd_bytes(
     encoding: Encoding,
     endian: Endian,
     comment: &str,
-) -> Result<Vec<u8>, String> {
+) -> Result<Vec<u8>> {
     let d = nrrd.directions;
     if !nrrd.origin.is_finite() || !d.is_finite() {
         return Err("space origin and directions must be finite".into());
     }
     if Some(nrrd.samples.len()) != nrrd.sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n)) {
-        return Err(format!(
+        return Err(Error::msg(format!(
             "{} samples for sizes {:?}",
             nrrd.samples.len(),
             nrrd.sizes
-        ));
+        )));
     }
     let big = endian == Endian::Big;
     let ty = nrrd.sample_type;
@@ -1045,7 +1073,7 @@ pub fn nrrd_bytes(
     let head = general_header(nrrd, encoding, endian, comment);
     match encoding {
         Encoding::Raw => Ok([head.into_bytes(), data].concat()),
-        Encoding::Gzip => gzip(head.into_bytes(), &data).map_err(|e| e.to_string()),
+        Encoding::Gzip => gzip(head.into_bytes(), &data).map_err(|e| Error::msg(e.to_string())),
     }
 }
 
@@ -1131,13 +1159,13 @@ mod tests {
 
     const F: &str = "f.nrrd";
 
-    fn parse(bytes: &[u8]) -> Result<Nrrd, String> {
+    fn parse(bytes: &[u8]) -> Result<Nrrd> {
         parse_nrrd(bytes, F, None)
     }
 
     /// The error for `bytes`, checked to be one line.
     fn error(bytes: &[u8]) -> String {
-        let e = parse(bytes).unwrap_err();
+        let e = parse(bytes).unwrap_err().to_string();
         assert!(!e.contains('\n'), "{e}");
         e
     }
@@ -1279,7 +1307,9 @@ mod tests {
         }
         let h = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\
                  data file: nowhere.raw\n";
-        let e = parse_nrrd(h.as_bytes(), F, Some(dir.path())).unwrap_err();
+        let e = parse_nrrd(h.as_bytes(), F, Some(dir.path()))
+            .unwrap_err()
+            .to_string();
         assert!(
             e.starts_with("f.nrrd:6:12: expected a readable data file"),
             "{e}"
@@ -1535,6 +1565,7 @@ mod tests {
         let small = parse_nrrd_limited(&file(&format!("{U8}\n"), &[0; 8]), F, None, 7);
         assert!(small
             .unwrap_err()
+            .to_string()
             .starts_with("f.nrrd:4:8: sizes 2×2×2 exceed the limit of 7"));
     }
 
@@ -1550,7 +1581,9 @@ mod tests {
     }
 
     fn check(bytes: &[u8]) {
-        if let Err(e) = parse_nrrd(bytes, F, Some(Path::new("/nonexistent-dir"))) {
+        if let Err(e) =
+            parse_nrrd(bytes, F, Some(Path::new("/nonexistent-dir"))).map_err(|e| e.to_string())
+        {
             assert!(!e.contains('\n') && !e.is_empty(), "{e}");
         }
     }

@@ -22,6 +22,8 @@ use std::io::{Seek, Write};
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard};
 
+use crate::{Error, Result};
+
 /// Staged paths a signal must remove: temporary files and directories not yet committed.
 static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
@@ -38,7 +40,7 @@ fn forget(path: &Path) {
 
 /// On SIGINT, SIGTERM or SIGHUP remove every staged output, then die of the signal as its
 /// default action would (the shell sees the signal). Call once, from `main`.
-pub fn install_signal_cleanup() -> Result<(), String> {
+pub fn install_signal_cleanup() -> Result<()> {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
     let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
         .map_err(|e| e.to_string())?;
@@ -80,15 +82,15 @@ impl Staged {
     }
 
     /// Rename over `target` with `mode`.
-    fn persist(mut self, target: &Path, mode: u32) -> Result<(), String> {
+    fn persist(mut self, target: &Path, mode: u32) -> Result<()> {
         let file = self.file.take().expect("staged file present");
         let tmp = file.path().to_path_buf();
         let r = set_mode(file.as_file(), mode)
-            .map_err(|e| format!("{}: {e}", target.display()))
+            .map_err(|e| Error::msg(format!("{}: {e}", target.display())))
             .and_then(|()| {
                 file.persist(target)
                     .map(drop)
-                    .map_err(|e| format!("{}: {}", target.display(), e.error))
+                    .map_err(|e| Error::msg(format!("{}: {}", target.display(), e.error)))
             });
         forget(&tmp);
         r
@@ -121,7 +123,7 @@ fn set_mode(_: &File, _: u32) -> std::io::Result<()> {
 pub fn write_atomic(
     path: &Path,
     fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
-) -> Result<(), String> {
+) -> Result<()> {
     let mut outs = Outputs::new();
     let out = outs.file("output", path, &[])?;
     outs.write(out, fill)?;
@@ -177,36 +179,32 @@ pub struct Outputs {
 }
 
 impl Outputs {
+    /// No outputs yet.
     pub fn new() -> Outputs {
         Outputs::default()
     }
 
     /// Name a file output of option `flag`: its extension must be one of `exts` (any case;
     /// none checked when `exts` is empty, or when the path is a FIFO or a device).
-    pub fn file(&mut self, flag: &str, path: &Path, exts: &[&str]) -> Result<Out, String> {
+    pub fn file(&mut self, flag: &str, path: &Path, exts: &[&str]) -> Result<Out> {
         self.named(flag, path, exts, false)
     }
 
     /// As [`Outputs::file`], and `-` means standard output.
-    pub fn file_or_stdout(
-        &mut self,
-        flag: &str,
-        path: &Path,
-        exts: &[&str],
-    ) -> Result<Out, String> {
+    pub fn file_or_stdout(&mut self, flag: &str, path: &Path, exts: &[&str]) -> Result<Out> {
         self.named(flag, path, exts, true)
     }
 
     /// Name a directory output of option `flag` (created at the commit, with its parents).
-    pub fn dir(&mut self, flag: &str, path: &Path) -> Result<Out, String> {
+    pub fn dir(&mut self, flag: &str, path: &Path) -> Result<Out> {
         let shown = path.display().to_string();
-        let err = |msg: String| format!("{flag} {shown}: {msg}");
+        let err = |msg: String| Error::msg(format!("{flag} {shown}: {msg}"));
         if path.as_os_str() == "-" {
             return Err(err(
                 "a directory of files cannot go to standard output".into()
             ));
         }
-        let resolved = resolve(path).map_err(err)?;
+        let resolved = resolve(path).map_err(|e| err(e.message))?;
         match std::fs::metadata(&resolved) {
             Ok(m) if !m.is_dir() => return Err(err("exists and is not a directory".into())),
             Ok(_) => {}
@@ -215,7 +213,7 @@ impl Outputs {
         }
         let target = Target::Dir(resolved.clone());
         self.check_unique(&target, &shown)?;
-        let (base, name) = existing_ancestor(&resolved).map_err(err)?;
+        let (base, name) = existing_ancestor(&resolved).map_err(|e| err(e.message))?;
         let dir = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
             .suffix(".csgpix-tmp")
@@ -246,14 +244,14 @@ impl Outputs {
         &mut self,
         out: Out,
         fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
-    ) -> Result<(), String> {
+    ) -> Result<()> {
         let slot = &mut self.slots[out.0];
         let shown = &slot.shown;
-        let err = |e: std::io::Error| format!("{shown}: {e}");
+        let err = |e: std::io::Error| Error::msg(format!("{shown}: {e}"));
         let file = match &mut slot.stage {
             Stage::Named(s) => s.file(),
             Stage::Unnamed(f) => f,
-            Stage::Dir(..) => return Err(format!("{shown}: is a directory output")),
+            Stage::Dir(..) => return Err(Error::msg(format!("{shown}: is a directory output"))),
         };
         file.set_len(0).map_err(err)?;
         file.rewind().map_err(err)?;
@@ -268,22 +266,28 @@ impl Outputs {
         out: Out,
         name: &str,
         fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
-    ) -> Result<(), String> {
+    ) -> Result<()> {
         let path = self.stage_path(out, name)?;
-        let err = |e: std::io::Error| format!("{}: {e}", path.display());
+        let err = |e: std::io::Error| Error::msg(format!("{}: {e}", path.display()));
         let mut buf = std::io::BufWriter::new(File::create(&path).map_err(err)?);
         fill(&mut buf).map_err(err)?;
         buf.flush().map_err(err)
     }
 
     /// Where file `name` of a directory output is staged, for writers that take a path.
-    pub fn stage_path(&mut self, out: Out, name: &str) -> Result<PathBuf, String> {
+    pub fn stage_path(&mut self, out: Out, name: &str) -> Result<PathBuf> {
         let slot = &mut self.slots[out.0];
         let Stage::Dir(dir, names) = &mut slot.stage else {
-            return Err(format!("{}: is not a directory output", slot.shown));
+            return Err(Error::msg(format!(
+                "{}: is not a directory output",
+                slot.shown
+            )));
         };
         if name.contains('/') || name.starts_with('.') || name.is_empty() {
-            return Err(format!("{}: bad file name {name:?}", slot.shown));
+            return Err(Error::msg(format!(
+                "{}: bad file name {name:?}",
+                slot.shown
+            )));
         }
         if !names.iter().any(|n| n == name) {
             names.push(name.to_string());
@@ -293,7 +297,7 @@ impl Outputs {
 
     /// Put every staged output in place: renames first, then the outputs written through.
     /// After a failure the outputs not yet committed are removed.
-    pub fn commit(mut self) -> Result<(), String> {
+    pub fn commit(mut self) -> Result<()> {
         let _commit = COMMIT.lock().unwrap_or_else(|e| e.into_inner());
         let slots = std::mem::take(&mut self.slots);
         let (late, early): (Vec<Slot>, Vec<Slot>) = slots
@@ -302,19 +306,13 @@ impl Outputs {
         early.into_iter().chain(late).try_for_each(commit_slot)
     }
 
-    fn named(
-        &mut self,
-        flag: &str,
-        path: &Path,
-        exts: &[&str],
-        stdout: bool,
-    ) -> Result<Out, String> {
+    fn named(&mut self, flag: &str, path: &Path, exts: &[&str], stdout: bool) -> Result<Out> {
         let shown = path.display().to_string();
         let target = if path.as_os_str() == "-" || names_stdout(path) {
             if !stdout {
-                return Err(format!(
+                return Err(Error::msg(format!(
                     "{flag} -: this output cannot go to standard output"
-                ));
+                )));
             }
             Target::Stdout
         } else {
@@ -341,13 +339,16 @@ impl Outputs {
         Ok(Out(self.slots.len() - 1))
     }
 
-    fn check_unique(&self, target: &Target, shown: &str) -> Result<(), String> {
+    fn check_unique(&self, target: &Target, shown: &str) -> Result<()> {
         match self.slots.iter().find(|s| same_target(&s.target, target)) {
-            Some(s) if *target == Target::Stdout => Err(format!(
+            Some(s) if *target == Target::Stdout => Err(Error::msg(format!(
                 "only one output can be - (standard output): {} and {shown}",
                 s.shown
-            )),
-            Some(s) => Err(format!("{} and {shown} name the same file", s.shown)),
+            ))),
+            Some(s) => Err(Error::msg(format!(
+                "{} and {shown} name the same file",
+                s.shown
+            ))),
             None => Ok(()),
         }
     }
@@ -362,8 +363,8 @@ fn same_target(a: &Target, b: &Target) -> bool {
     }
 }
 
-fn commit_slot(slot: Slot) -> Result<(), String> {
-    let err = |e: std::io::Error| format!("{}: {e}", slot.shown);
+fn commit_slot(slot: Slot) -> Result<()> {
+    let err = |e: std::io::Error| Error::msg(format!("{}: {e}", slot.shown));
     match (slot.target, slot.stage) {
         (Target::File(p, mode), Stage::Named(s)) => s.persist(&p, mode),
         (Target::Through(p), Stage::Unnamed(mut f)) => {
@@ -425,21 +426,21 @@ fn split(p: &Path) -> (PathBuf, String) {
 }
 
 /// The deepest existing directory on the way to `p`, and the first name below it.
-fn existing_ancestor(p: &Path) -> Result<(PathBuf, String), String> {
+fn existing_ancestor(p: &Path) -> Result<(PathBuf, String)> {
     let mut cur = p.to_path_buf();
     loop {
         let (dir, name) = split(&cur);
         match std::fs::metadata(&dir) {
             Ok(m) if m.is_dir() => return Ok((dir, name)),
-            Ok(_) => return Err(format!("{} is not a directory", dir.display())),
+            Ok(_) => return Err(Error::msg(format!("{} is not a directory", dir.display()))),
             Err(_) if dir != cur && dir.parent().is_some() => cur = dir,
-            Err(e) => return Err(format!("{}: {e}", dir.display())),
+            Err(e) => return Err(Error::msg(format!("{}: {e}", dir.display()))),
         }
     }
 }
 
 /// Follow symlinks (dangling ones too, up to 40) to the path that is written.
-fn resolve(path: &Path) -> Result<PathBuf, String> {
+fn resolve(path: &Path) -> Result<PathBuf> {
     let mut p = path.to_path_buf();
     for _ in 0..40 {
         match std::fs::symlink_metadata(&p) {
@@ -464,7 +465,7 @@ fn names_stdout(path: &Path) -> bool {
 }
 
 /// What a file output's path names, and so how it is written.
-fn classify(path: &Path) -> Result<Target, String> {
+fn classify(path: &Path) -> Result<Target> {
     let p = resolve(path)?;
     let meta = match std::fs::metadata(&p) {
         Ok(m) => m,
@@ -472,11 +473,11 @@ fn classify(path: &Path) -> Result<Target, String> {
             let (dir, _) = split(&p);
             return match std::fs::metadata(&dir) {
                 Ok(m) if m.is_dir() => Ok(Target::File(p, 0o644)),
-                Ok(_) => Err(format!("{} is not a directory", dir.display())),
-                Err(e) => Err(format!("directory {}: {e}", dir.display())),
+                Ok(_) => Err(Error::msg(format!("{} is not a directory", dir.display()))),
+                Err(e) => Err(Error::msg(format!("directory {}: {e}", dir.display()))),
             };
         }
-        Err(e) => return Err(e.to_string()),
+        Err(e) => return Err(Error::msg(e.to_string())),
     };
     let ft = meta.file_type();
     if ft.is_dir() {
@@ -504,7 +505,7 @@ fn mode_of(_: &std::fs::Metadata) -> u32 {
 }
 
 #[cfg(unix)]
-fn special(p: &Path, meta: &std::fs::Metadata) -> Result<Target, String> {
+fn special(p: &Path, meta: &std::fs::Metadata) -> Result<Target> {
     use std::os::unix::fs::FileTypeExt;
     let ft = meta.file_type();
     if ft.is_fifo() || ft.is_char_device() {
@@ -520,12 +521,12 @@ fn special(p: &Path, meta: &std::fs::Metadata) -> Result<Target, String> {
 }
 
 #[cfg(not(unix))]
-fn special(_: &Path, _: &std::fs::Metadata) -> Result<Target, String> {
+fn special(_: &Path, _: &std::fs::Metadata) -> Result<Target> {
     Err("is not a regular file".into())
 }
 
 /// The name must end in one of `exts` (case-insensitive), so that `x.jpg` is not PNG bytes.
-fn check_extension(path: &Path, exts: &[&str]) -> Result<(), String> {
+fn check_extension(path: &Path, exts: &[&str]) -> Result<()> {
     if exts.is_empty() {
         return Ok(());
     }
@@ -542,9 +543,9 @@ fn check_extension(path: &Path, exts: &[&str]) -> Result<(), String> {
         [] => last.clone(),
         _ => format!("{} or {last}", rest.join(", ")),
     };
-    Err(format!(
+    Err(Error::msg(format!(
         "the name must end in {names}: the extension names the format written"
-    ))
+    )))
 }
 
 #[cfg(test)]
@@ -596,24 +597,30 @@ mod tests {
         let mut outs = Outputs::new();
         let e = outs
             .file("-o", &dir.path().join("x.jpg"), &["png"])
-            .unwrap_err();
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("must end in .png"), "{e}");
-        let e = outs.file("-o", dir.path(), &[]).unwrap_err();
+        let e = outs.file("-o", dir.path(), &[]).unwrap_err().to_string();
         assert!(e.contains("is a directory"), "{e}");
         let e = outs
             .file("-o", &dir.path().join("no/x.png"), &["png"])
-            .unwrap_err();
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("directory"), "{e}");
-        let e = outs.file("-o", Path::new("-"), &["png"]).unwrap_err();
+        let e = outs
+            .file("-o", Path::new("-"), &["png"])
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("standard output"), "{e}");
         outs.file_or_stdout("-o", Path::new("-"), &["png"]).unwrap();
         let e = outs
             .file_or_stdout("--preview", Path::new("-"), &["png"])
-            .unwrap_err();
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("only one output"), "{e}");
         let p = dir.path().join("a.png");
         outs.file("-o", &p, &["png"]).unwrap();
-        let e = outs.file("--mesh", &p, &["png"]).unwrap_err();
+        let e = outs.file("--mesh", &p, &["png"]).unwrap_err().to_string();
         assert!(e.contains("same file"), "{e}");
     }
 

@@ -95,6 +95,7 @@ use crate::extrude::{
 };
 use crate::hull::hull3;
 use crate::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
+use crate::Error;
 
 /// Deepest nesting of statements accepted: a top-level statement is at depth 1, so a cube may
 /// sit inside at most 999 groups.
@@ -129,7 +130,7 @@ const CONVEXITY_TOLERANCE: f64 = 1e-5;
 /// The `.csg` text of a scene file: a `.csg` file as it is; a `.scad` file exported to CSG by
 /// OpenSCAD (`openscad -o scene.csg FILE.scad` into a temporary directory, removed after),
 /// when `openscad` is on PATH. Errors are one line naming the file.
-pub fn scene_text(path: &std::path::Path) -> Result<String, String> {
+pub fn scene_text(path: &std::path::Path) -> crate::Result<String> {
     let name = path.display();
     let scad = path
         .extension()
@@ -138,9 +139,10 @@ pub fn scene_text(path: &std::path::Path) -> Result<String, String> {
         return crate::input::read_text(path);
     }
     if !path.is_file() {
-        return Err(format!("{name}: no such file"));
+        return Err(Error::msg(format!("{name}: no such file")));
     }
-    let dir = tempfile::tempdir().map_err(|e| format!("{name}: a temporary directory: {e}"))?;
+    let dir = tempfile::tempdir()
+        .map_err(|e| Error::msg(format!("{name}: a temporary directory: {e}")))?;
     let out = dir.path().join("scene.csg");
     let run = std::process::Command::new("openscad")
         .arg("-o")
@@ -150,12 +152,12 @@ pub fn scene_text(path: &std::path::Path) -> Result<String, String> {
         .output();
     let run = match run {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "{name}: reading .scad needs openscad on PATH (Debian: apt-get install openscad); \
                  or export File → Export → Export as CSG and give the .csg"
-            ))
+            )))
         }
-        Err(e) => return Err(format!("{name}: running openscad: {e}")),
+        Err(e) => return Err(Error::msg(format!("{name}: running openscad: {e}"))),
         Ok(run) => run,
     };
     let text = std::fs::read_to_string(&out)
@@ -168,37 +170,39 @@ pub fn scene_text(path: &std::path::Path) -> Result<String, String> {
             .find(|l| l.contains("ERROR"))
             .or_else(|| stderr.lines().rfind(|l| !l.trim().is_empty()))
             .unwrap_or("no output");
-        format!("{name}: openscad could not export it: {}", line.trim())
+        Error::msg(format!(
+            "{name}: openscad could not export it: {}",
+            line.trim()
+        ))
     })
 }
-
-/// A problem in a `.csg` file, with its position (1-based line and column, in characters).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ScadError {
-    pub file: String,
-    pub line: usize,
-    pub col: usize,
-    pub msg: String,
-}
-
-impl fmt::Display for ScadError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        // One line always: a string literal quoted in the message may hold line breaks.
-        let msg = self.msg.replace('\r', "\\r").replace('\n', "\\n");
-        write!(f, "{}:{}:{}: {msg}", self.file, self.line, self.col)
-    }
-}
-
-impl std::error::Error for ScadError {}
 
 /// Reads a `.csg` file's text into a scene; `file` is only used in error messages.
-pub fn parse_csg(text: &str, file: &str) -> Result<CsgScene, ScadError> {
-    Reader::new(text).run().map_err(|fail| ScadError {
-        file: file.to_string(),
-        line: fail.pos.line,
-        col: fail.pos.col,
-        msg: fail.msg,
-    })
+///
+/// # Errors
+///
+/// The first problem, at its line and column in `file`.
+///
+/// # Examples
+///
+/// ```
+/// use csgpix_scene::scad::parse_csg;
+/// use csgpix_scene::solid::CsgNode;
+///
+/// let text = "difference() {\n  cube(size = [2, 2, 2], center = true);\n  \
+///             sphere($fn = 8, r = 1.2);\n}\n";
+/// let scene = parse_csg(text, "scene.csg")?;
+/// assert_eq!(scene.solids.len(), 2);
+/// assert!(matches!(scene.root, CsgNode::Difference(ref c) if c.len() == 2));
+///
+/// let err = parse_csg("cube(size = [1, 1]);", "bad.csg").unwrap_err();
+/// assert!(err.to_string().starts_with("bad.csg:1:"));
+/// # Ok::<(), csgpix_scene::Error>(())
+/// ```
+pub fn parse_csg(text: &str, file: &str) -> crate::Result<CsgScene> {
+    Reader::new(text)
+        .run()
+        .map_err(|fail| Error::at(file, fail.pos.line, fail.pos.col, fail.msg))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1356,8 +1360,10 @@ impl<'a> Reader<'a> {
         let tris = match how {
             Extrusion::Linear(l) => linear_mesh(p, l, &sin_cos_degrees),
             Extrusion::Rotate { angle, fragments } => {
-                rotate_mesh(p, *angle, *fragments, &sin_cos_degrees)
-                    .map_err(|msg| Fail { pos: to.pos, msg })?
+                rotate_mesh(p, *angle, *fragments, &sin_cos_degrees).map_err(|e| Fail {
+                    pos: to.pos,
+                    msg: e.message,
+                })?
             }
         };
         if tris.is_empty() {
@@ -1456,7 +1462,10 @@ impl<'a> Reader<'a> {
         if pts.is_empty() {
             return Ok(Item::Solid(CsgNode::Empty));
         }
-        let (vertices, faces) = hull3(&pts).map_err(|msg| Fail { pos, msg })?;
+        let (vertices, faces) = hull3(&pts).map_err(|e| Fail {
+            pos,
+            msg: e.message,
+        })?;
         let solid = ConvexSolid {
             vertices: vertices.iter().map(|v| v.to_array()).collect(),
             faces,
@@ -1510,7 +1519,10 @@ fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     let at = frame.first_flat.unwrap_or(pos);
     let mut pts = vec![];
     for r in &frame.flats {
-        region_points(r, &mut pts).map_err(|msg| Fail { pos, msg })?;
+        region_points(r, &mut pts).map_err(|e| Fail {
+            pos,
+            msg: e.message,
+        })?;
     }
     let h = crate::hull::hull2(&pts);
     if h.len() < 3 {
@@ -1533,7 +1545,10 @@ fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     };
     let at = frame.first_flat.unwrap_or(pos);
     let region = region_of(Op::Union, frame.flats);
-    let r = offset(&region, o, &sin_cos_degrees).map_err(|msg| Fail { pos, msg })?;
+    let r = offset(&region, o, &sin_cos_degrees).map_err(|e| Fail {
+        pos,
+        msg: e.message,
+    })?;
     Ok(Some(Item::Flat(r, at)))
 }
 
@@ -2636,8 +2651,9 @@ mod tests {
     /// Checks the error's position and that its message contains `part`.
     fn assert_err(text: &str, line: usize, col: usize, part: &str) {
         let e = parse_csg(text, "test.csg").expect_err("should be refused");
-        assert_eq!((e.line, e.col), (line, col), "{e}");
-        assert!(e.msg.contains(part), "{e}");
+        let at = e.location.as_ref().expect("a located error");
+        assert_eq!((at.line, at.col), (line, col), "{e}");
+        assert!(e.message.contains(part), "{e}");
     }
 
     fn only_solid(text: &str) -> ConvexSolid {
@@ -3176,8 +3192,9 @@ mod tests {
                 scene.solids.iter().for_each(assert_outward);
             }
             Err(e) => {
-                assert!(e.line >= 1 && e.col >= 1, "{e}");
-                assert!(e.line <= text.lines().count() + 1, "{e}");
+                let at = e.location.as_ref().expect("a located error");
+                assert!(at.line >= 1 && at.col >= 1, "{e}");
+                assert!(at.line <= text.lines().count() + 1, "{e}");
             }
         }
     }

@@ -4,6 +4,7 @@
 /// A convex polyhedron in scene coordinates.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConvexSolid {
+    /// The corners, in scene coordinates.
     pub vertices: Vec<[f64; 3]>,
     /// Faces as vertex indices, counter-clockwise seen from outside (outward normals by the
     /// right-hand rule).
@@ -17,8 +18,11 @@ pub struct ConvexSolid {
 /// A CSG tree whose leaves index [`CsgScene::solids`].
 #[derive(Clone, Debug, PartialEq)]
 pub enum CsgNode {
+    /// Primitive i of the scene (a leaf).
     Solid(usize),
+    /// Everything in any child.
     Union(Vec<CsgNode>),
+    /// Everything in every child.
     Intersection(Vec<CsgNode>),
     /// The first child minus all the others.
     Difference(Vec<CsgNode>),
@@ -41,8 +45,9 @@ pub struct Import {
     pub matrix: Option<[[f64; 4]; 4]>,
     /// RGBA from `color(...)`, if any.
     pub colour: Option<[f64; 4]>,
-    /// Where the scene names it (1-based), for messages.
+    /// The line where the scene names it (1-based), for messages.
     pub line: usize,
+    /// The column there (1-based, in characters).
     pub col: usize,
     /// A mesh the scene itself made (an extrusion the array cannot draw as a convex solid,
     /// [`crate::extrude`]): closed triangles in scene coordinates; `file` then names the node.
@@ -58,8 +63,11 @@ pub const IMPORTED: usize = usize::MAX / 2;
 /// (§4.3.2); only where a primitive's slice comes from differs.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CsgScene {
+    /// The convex solids, leaves `0..solids.len()`.
     pub solids: Vec<ConvexSolid>,
+    /// The imported primitives, the leaves after the solids.
     pub imports: Vec<Import>,
+    /// The tree over both.
     pub root: CsgNode,
 }
 
@@ -79,7 +87,7 @@ impl CsgScene {
     }
 
     /// Refuse a scene with imported primitives, for the commands that only draw planes.
-    pub fn require_convex(&self, file: &str, what: &str) -> Result<(), String> {
+    pub fn require_convex(&self, file: &str, what: &str) -> crate::Result<()> {
         match self.imports.first() {
             None => Ok(()),
             Some(i) => {
@@ -87,11 +95,11 @@ impl CsgScene {
                     Some(_) => format!("`{}` (not a convex solid)", i.file),
                     None => format!("`import(\"{}\")`", i.file),
                 };
-                Err(format!(
-                    "{file}:{}:{}: {name}: {what} draws convex solids only; datasets and meshes \
-                     are voxelized (`csgpix voxelize`)",
-                    i.line, i.col
-                ))
+                let msg = format!(
+                    "{name}: {what} draws convex solids only; datasets and meshes are \
+                     voxelized (`csgpix voxelize`)"
+                );
+                Err(crate::Error::at(file, i.line, i.col, msg))
             }
         }
     }

@@ -25,12 +25,15 @@ use glam::{DMat3, DMat4, DVec3};
 use rayon::prelude::*;
 
 use crate::mesh::Tri;
+use crate::{Error, Result};
 
 /// A triangle mesh with shared vertices. A solid when closed ([`TriMesh::check_closed`]);
 /// the orientation of the triangles does not matter to [`TriMesh::crossings`].
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TriMesh {
+    /// The vertices, each once.
     pub vertices: Vec<DVec3>,
+    /// Triangles as indices into `vertices`.
     pub triangles: Vec<[u32; 3]>,
 }
 
@@ -42,7 +45,7 @@ struct Welder {
 }
 
 impl Welder {
-    fn vertex(&mut self, p: DVec3) -> Result<u32, String> {
+    fn vertex(&mut self, p: DVec3) -> Result<u32> {
         let key = p.to_array().map(|c| (c + 0.0).to_bits());
         if let Some(&i) = self.at.get(&key) {
             return Ok(i);
@@ -54,7 +57,7 @@ impl Welder {
         Ok(i)
     }
 
-    fn triangle(&mut self, t: [DVec3; 3]) -> Result<(), String> {
+    fn triangle(&mut self, t: [DVec3; 3]) -> Result<()> {
         let t = [self.vertex(t[0])?, self.vertex(t[1])?, self.vertex(t[2])?];
         self.mesh.triangles.push(t);
         Ok(())
@@ -64,16 +67,16 @@ impl Welder {
 impl TriMesh {
     /// Reads a mesh file: OBJ when the extension is `.obj` (any case), STL otherwise (see
     /// [`TriMesh::parse`]). Errors are one line starting with the path.
-    pub fn read(path: &Path) -> Result<TriMesh, String> {
+    pub fn read(path: &Path) -> Result<TriMesh> {
         let file = path.display().to_string();
         let ext = path.extension().and_then(|e| e.to_str());
         let obj = match ext.map(str::to_ascii_lowercase).as_deref() {
             Some("obj") => true,
             Some("stl") => false,
             _ => {
-                return Err(format!(
+                return Err(Error::msg(format!(
                     "{file}: a mesh is read from .stl or .obj (the extension names the format)"
-                ))
+                )))
             }
         };
         let bytes = std::fs::read(path).map_err(|e| format!("{file}: cannot read: {e}"))?;
@@ -87,7 +90,7 @@ impl TriMesh {
     /// fan-triangulated) and ignores other statements. Equal coordinates are welded into one
     /// vertex, so an STL (which repeats vertices) comes out shared. Errors are one line:
     /// `FILE:LINE:COL: …` for text, `FILE: … byte offset …` for binary STL. Never panics.
-    pub fn parse(bytes: &[u8], file: &str, obj: bool) -> Result<TriMesh, String> {
+    pub fn parse(bytes: &[u8], file: &str, obj: bool) -> Result<TriMesh> {
         if obj {
             obj::parse(bytes, file)
         } else {
@@ -152,7 +155,7 @@ impl TriMesh {
     /// often have: the parity of ray crossings is then still the inside), after dropping
     /// degenerate triangles (a repeated vertex index). Refuses an empty mesh and indices past
     /// the vertices. The error is one line starting `FILE:`.
-    pub fn check_closed(&self, file: &str) -> Result<(), String> {
+    pub fn check_closed(&self, file: &str) -> Result<()> {
         let tris = self.proper_triangles(file)?;
         let mut uses: HashMap<(u32, u32), u32> = HashMap::with_capacity(tris.len() * 3 / 2);
         for e in tris.iter().flat_map(edges) {
@@ -181,17 +184,17 @@ impl TriMesh {
         } else {
             (String::new(), first(|n| n > 2 && n % 2 == 1))
         };
-        Err(format!(
+        Err(Error::msg(format!(
             "{file}: mesh is not closed: {open} edges belong to one triangle{first_open}, \
              {many} to another odd number{first_many}; close the holes and remove the fins \
              (e.g. with MeshLab's or Blender's mesh repair) so that every edge is shared by \
              an even number of triangles and the surface bounds a solid"
-        ))
+        )))
     }
 
     /// The triangles without a repeated index; errors for an index past the vertices or
     /// when none is left.
-    fn proper_triangles(&self, file: &str) -> Result<Vec<[u32; 3]>, String> {
+    fn proper_triangles(&self, file: &str) -> Result<Vec<[u32; 3]>> {
         let n = self.vertices.len();
         if let Some((k, i)) = self
             .triangles
@@ -199,9 +202,9 @@ impl TriMesh {
             .enumerate()
             .find_map(|(k, t)| t.iter().find(|&&i| i as usize >= n).map(|&i| (k, i)))
         {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "{file}: triangle {k} refers to vertex {i}, but the mesh has {n} vertices"
-            ));
+            )));
         }
         let tris: Vec<[u32; 3]> = self
             .triangles
@@ -210,11 +213,11 @@ impl TriMesh {
             .copied()
             .collect();
         if tris.is_empty() {
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "{file}: mesh has no triangles (after dropping {} degenerate ones); a solid \
                  needs a closed surface",
                 self.triangles.len()
-            ));
+            )));
         }
         Ok(tris)
     }
@@ -230,7 +233,7 @@ impl TriMesh {
     /// most 2^-17 pixel; coordinates beyond ±2^31 pixels are clamped there), and a pixel
     /// centre is covered by a triangle when the exact integer edge functions of the
     /// counter-clockwise projected triangle are positive at the centre moved by an
-    /// infinitesimal `(ε, ε²)` ([`Edge::covers`]). The moved point lies on no projected edge,
+    /// infinitesimal `(ε, ε²)` (`Edge::covers`). The moved point lies on no projected edge,
     /// so a ray through a shared edge or vertex counts one crossing where the surface passes
     /// and zero or two where it grazes, triangles seen edge-on count nothing, and a ray along
     /// a face follows the half-open convention (a box `[x0, x1)` covers pixel `x0`, not
@@ -490,6 +493,7 @@ mod stl {
 
     use super::text::{finite, show, words, Word};
     use super::{TriMesh, Welder};
+    use crate::{Error, Result};
 
     /// ASCII when it starts with `solid` and reads as ASCII, binary otherwise. A file that
     /// starts with `solid` and does not read as ASCII gets the ASCII error (with its line and
@@ -497,7 +501,7 @@ mod stl {
     /// STL's, 84 + 50·n for the count in its header, or it holds a NUL byte, which text never
     /// does and a binary STL's count and attribute words nearly always do (some binary headers
     /// start with `solid` too).
-    pub fn parse(bytes: &[u8], file: &str) -> Result<TriMesh, String> {
+    pub fn parse(bytes: &[u8], file: &str) -> Result<TriMesh> {
         if bytes.trim_ascii_start().starts_with(b"solid") {
             match ascii(bytes, file) {
                 Ok(m) => return Ok(m),
@@ -520,31 +524,31 @@ mod stl {
 
     /// 80-byte header, u32 count, then per triangle a normal, three vertices (f32 LE) and a
     /// 2-byte attribute. Bytes past the last triangle are ignored.
-    fn binary(bytes: &[u8], file: &str) -> Result<TriMesh, String> {
+    fn binary(bytes: &[u8], file: &str) -> Result<TriMesh> {
         let len = bytes.len() as u64;
         let n = count(bytes).ok_or_else(|| {
             format!("{file}: binary STL truncated at byte offset {len}: the header needs 84 bytes")
         })?;
         if len < 84 + 50 * n {
             let k = (len - 84) / 50;
-            return Err(format!(
+            return Err(Error::msg(format!(
                 "{file}: binary STL truncated at byte offset {len}: the header promises {n} \
                  triangles ({} bytes), triangle {k} starts at byte offset {} and is incomplete",
                 84 + 50 * n,
                 84 + 50 * k
-            ));
+            )));
         }
         let mut w = Welder::default();
         for (k, rec) in bytes[84..].chunks_exact(50).take(n as usize).enumerate() {
             let t = [0, 1, 2].map(|i| vertex(&rec[12 + 12 * i..24 + 12 * i]));
             match t {
                 [Some(a), Some(b), Some(c)] => w.triangle([a, b, c]),
-                _ => Err(format!(
+                _ => Err(Error::msg(format!(
                     "triangle {k} (byte offset {}) has a coordinate that is not a finite number",
                     84 + 50 * k
-                )),
+                ))),
             }
-            .map_err(|e| format!("{file}: binary STL: {e}"))?;
+            .map_err(|e| Error::msg(format!("{file}: binary STL: {e}")))?;
         }
         Ok(w.mesh)
     }
@@ -561,7 +565,7 @@ mod stl {
     type Words<'a> = Peekable<Box<dyn Iterator<Item = Word<'a>> + 'a>>;
 
     /// Reads `solid name`, facets, `endsolid name`, possibly several solids.
-    fn ascii(bytes: &[u8], file: &str) -> Result<TriMesh, String> {
+    fn ascii(bytes: &[u8], file: &str) -> Result<TriMesh> {
         let mut p = Ascii {
             words: (Box::new(words(bytes)) as Box<dyn Iterator<Item = Word>>).peekable(),
             file,
@@ -601,26 +605,22 @@ mod stl {
     }
 
     impl<'a> Ascii<'a> {
-        fn error(&self, w: Word, what: &str) -> String {
-            format!(
-                "{}:{}:{}: {what}, found `{}`",
-                self.file,
-                w.line,
-                w.col,
-                show(w.text)
-            )
+        fn error(&self, w: Word, what: &str) -> Error {
+            let msg = format!("{what}, found `{}`", show(w.text));
+            Error::at(self.file, w.line, w.col, msg)
         }
 
-        fn at_end(&self, what: &str) -> String {
+        fn at_end(&self, what: &str) -> Error {
             let (l, c) = self.end;
-            format!("{}:{l}:{c}: {what}, found the end of the file", self.file)
+            let msg = format!("{what}, found the end of the file");
+            Error::at(self.file, l, c, msg)
         }
 
-        fn next(&mut self, what: &str) -> Result<Word<'a>, String> {
+        fn next(&mut self, what: &str) -> Result<Word<'a>> {
             self.words.next().ok_or_else(|| self.at_end(what))
         }
 
-        fn keyword(&mut self, k: &str) -> Result<Word<'a>, String> {
+        fn keyword(&mut self, k: &str) -> Result<Word<'a>> {
             let w = self.next(&format!("expected `{k}`"))?;
             if w.text.eq_ignore_ascii_case(k.as_bytes()) {
                 Ok(w)
@@ -629,7 +629,7 @@ mod stl {
             }
         }
 
-        fn number(&mut self) -> Result<f64, String> {
+        fn number(&mut self) -> Result<f64> {
             let w = self.next("expected a number")?;
             finite(w.text).ok_or_else(|| self.error(w, "expected a finite number"))
         }
@@ -639,14 +639,14 @@ mod stl {
         }
 
         /// `solid` and the rest of its line (the name).
-        fn solid(&mut self) -> Result<(), String> {
+        fn solid(&mut self) -> Result<()> {
             let w = self.keyword("solid")?;
             self.skip_line(w.line);
             Ok(())
         }
 
         /// `facet normal n n n outer loop (vertex x y z)×3 endloop endfacet`, after `facet`.
-        fn facet(&mut self, facet: Word) -> Result<(), String> {
+        fn facet(&mut self, facet: Word) -> Result<()> {
             self.keyword("normal")?;
             for _ in 0..3 {
                 self.number()?;
@@ -665,18 +665,13 @@ mod stl {
                 v.push(DVec3::new(self.number()?, self.number()?, self.number()?));
             }
             let [a, b, c] = v[..] else {
-                return Err(format!(
-                    "{}:{}:{}: this facet has {} vertices; an STL facet has 3",
-                    self.file,
-                    facet.line,
-                    facet.col,
-                    v.len()
-                ));
+                let msg = format!("this facet has {} vertices; an STL facet has 3", v.len());
+                return Err(Error::at(self.file, facet.line, facet.col, msg));
             };
             self.keyword("endfacet")?;
             self.welder
                 .triangle([a, b, c])
-                .map_err(|e| format!("{}:{}:{}: {e}", self.file, facet.line, facet.col))
+                .map_err(|e| Error::at(self.file, facet.line, facet.col, e.message))
         }
     }
 }
@@ -687,15 +682,16 @@ mod obj {
 
     use super::text::{finite, line_words, show};
     use super::{TriMesh, Welder};
+    use crate::{Error, Result};
 
     /// Reads `v` and `f` statements, ignoring the others; comments start with `#`.
-    pub fn parse(bytes: &[u8], file: &str) -> Result<TriMesh, String> {
+    pub fn parse(bytes: &[u8], file: &str) -> Result<TriMesh> {
         let mut vs: Vec<DVec3> = Vec::new();
         let mut w = Welder::default();
         for (i, line) in bytes.split(|&b| b == b'\n').enumerate() {
             let line = line.split(|&b| b == b'#').next().unwrap_or_default();
             let mut words = line_words(line);
-            let at = |col: usize, what: String| format!("{file}:{}:{col}: {what}", i + 1);
+            let at = |col: usize, what: String| Error::at(file, i + 1, col, what);
             match words.next() {
                 Some((_, b"v")) => {
                     vs.push(vertex(&mut words, line.len() + 1).map_err(|(c, e)| at(c, e))?)
@@ -749,7 +745,7 @@ mod obj {
         }
         for k in 1..refs.len() - 1 {
             let t = [refs[0], refs[k], refs[k + 1]].map(|r| vs[r]);
-            w.triangle(t).map_err(|e| (col, e))?;
+            w.triangle(t).map_err(|e| (col, e.message))?;
         }
         Ok(())
     }

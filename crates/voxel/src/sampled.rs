@@ -175,15 +175,10 @@ impl Loaded {
 pub fn load_scene(path: &Path) -> Result<Loaded> {
     let name = path.display().to_string();
     let text = csgpix_scene::scad::scene_text(path)?;
-    let scene = parse_csg(&text, &name).map_err(located)?;
+    let scene = parse_csg(&text, &name)?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let sampled = load_imports(&scene, &name, &dir)?;
     Ok(Loaded { scene, sampled })
-}
-
-/// A `.csg` reader's error as a scene error located where it is.
-fn located(e: csgpix_scene::scad::ScadError) -> Error {
-    csgpix_scene::Error::at(e.file, e.line, e.col, e.msg).into()
 }
 
 /// Load the scene's imports; `scene_file` names the scene in messages, `dir` is where
@@ -379,7 +374,11 @@ pub fn parse_binding(s: &str) -> Result<Binding> {
 /// assert!(matches!(scene_from_expr("A +", &[]), Err(Error::Expr(_))));
 /// ```
 pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded> {
-    let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| Error::Expr(e.to_string()))?;
+    let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| {
+        // The expression is one line: its column is the place to name.
+        let col = e.location.as_ref().map_or(1, |at| at.col);
+        Error::Expr(format!("{col}: {}", e.message))
+    })?;
     if let Some(b) = bindings.iter().find(|b| !e.names.contains(&b.name)) {
         return Err(binding(b, BindingProblem::NotInExpression));
     }
