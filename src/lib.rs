@@ -24,6 +24,7 @@ pub use csgpix_draw as draw;
 pub use csgpix_scene as scene;
 pub use csgpix_sculpt as sculpt;
 pub use csgpix_voxel as voxel;
+pub use glam;
 pub use rtl_model;
 
 pub use csgpix_draw::{compile, float, palette, panels, polygon, project, throughput};
@@ -71,3 +72,8 @@ pub fn octree_from_scene(
     streamed.map_err(|e| csgpix_sculpt::Error::Msg(e.to_string()))?;
     b.finish_store()
 }
+
+/// The README's Rust blocks, run as doctests so its library example stays true.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
