@@ -96,8 +96,10 @@ impl PanelScene {
             return Ok(vec![]);
         };
         let colour_bits = colour_bits(&self.fmt);
-        clip_scene_ops(&self.lists, &clip, &self.fmt, colour_bits)
-            .map_err(|(i, e)| format!("solid {}: {e}", i + 1))
+        clip_scene_ops(&self.lists, &clip, &self.fmt, colour_bits).map_err(|(i, e)| match e.field {
+            crate::compile::WHOLE_PROGRAM => e.msg,
+            _ => format!("solid {}: {e}", i + 1),
+        })
     }
 
     /// The P·Vz program of solid `prim` (§4.4, §5.2.1: @(P)·Vz + @(Vz)·P) for a slab one
