@@ -394,3 +394,43 @@ fn a_signal_ends_a_run_waiting_on_a_fifo_without_a_reader() {
     assert_eq!(status.signal(), Some(libc::SIGTERM), "{status:?}");
     assert_eq!(names(dir.path()), ["out.png"]);
 }
+
+/// `--vcd`, `--wave` and `--forces` are named with `-o` and go with it: a path that cannot
+/// be written, whichever it is, leaves none of the others (nor their staging files).
+#[test]
+fn side_outputs_of_render_and_sculpt_go_with_the_output_or_not_at_all() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let p = |name: &str| s(&d.join(name)).to_string();
+    let render = |vcd: &str, png: &str| {
+        let probe = ["render", CUBE, "--probe", "0,0", "--vcd", vcd];
+        csgpix(&[&probe[..], &["--wave", &p("w.svg"), "-o", png]].concat())
+    };
+    let sculpt = |forces: &str, mesh: &str| {
+        let head = ["sculpt", TWELVE, "--res", "16", "--tool", "sphere:1"];
+        let tail = [
+            "--path",
+            "vectors/paths/carve.csv",
+            "--forces",
+            forces,
+            "-o",
+            mesh,
+        ];
+        csgpix(&[&head[..], &tail[..]].concat())
+    };
+    let runs = [
+        render(&p("w.vcd"), &p("missing/r.png")),
+        render(&p("missing/w.vcd"), &p("r.png")),
+        sculpt(&p("f.csv"), &p("missing/c.stl")),
+        sculpt(&p("missing/f.csv"), &p("c.stl")),
+    ];
+    for out in runs {
+        let e = one_line_error(&out);
+        assert!(e.contains("missing"), "{e}");
+        assert!(names(d).is_empty(), "{:?}", names(d));
+    }
+    // The same runs with every path writable write everything.
+    assert!(render(&p("w.vcd"), &p("r.png")).status.success());
+    assert!(sculpt(&p("f.csv"), &p("c.stl")).status.success());
+    assert_eq!(names(d), ["c.stl", "f.csv", "r.png", "w.svg", "w.vcd"]);
+}
