@@ -245,3 +245,80 @@ fn sculpt_reads_the_gzip_phantom_and_honours_spacings() {
     assert!(one > 2.0, "{one}");
     assert!((two - 2.0 * one).abs() < 1e-9, "{one} {two}");
 }
+
+/// Errors about the whole clipping function name the scene (or `--clip`), not a place in the
+/// first solid or list: the products of §5.2.1, the size of the program, a concave volume.
+#[test]
+fn whole_scene_clipping_errors_name_the_scene_or_clip_not_a_face() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // 13 intersected unions of two: 2^13 products.
+    let mut text = String::from("intersection() {\n");
+    for _ in 0..13 {
+        text += " union() { cube(size = [2, 2, 2]); \
+                 multmatrix([[1,0,0,0.5],[0,1,0,0.5],[0,0,1,0.5],[0,0,0,1]]) cube(size = [2, 2, 2]); }\n";
+    }
+    let many = d.join("many.csg");
+    std::fs::write(&many, text + "}\n").unwrap();
+    // A difference of 600 solids: 600² literals drawn, over the program limit.
+    let mut text = String::from("difference() {\n cube(size = [10, 10, 10]);\n");
+    for i in 0..600 {
+        let (x, y) = (i % 20, i / 20);
+        text += &format!(
+            " multmatrix([[1,0,0,{x}],[0,1,0,{y}],[0,0,1,1],[0,0,0,1]]) cube(size = [0.5, 0.5, 0.5]);\n"
+        );
+    }
+    let holes = d.join("holes.csg");
+    std::fs::write(&holes, text + "}\n").unwrap();
+    let png = d.join("o.png");
+    let (m, h, o) = (s(&many), s(&holes), s(&png));
+    for (args, want) in [
+        (
+            vec!["render", m, "--size", "64x64", "-o", o],
+            format!("{m}: the expression expands to more than 4096 products"),
+        ),
+        (
+            vec!["requirements", m, "--res", "16"],
+            format!("{m}: the expression expands"),
+        ),
+        (
+            vec!["throughput", "--scene", m, "--screen", "64x64"],
+            format!("{m}: the expression expands"),
+        ),
+        (
+            vec!["throughput", "--scene", h, "--screen", "64x64"],
+            format!("{h}: the clipping program would have"),
+        ),
+    ] {
+        let e = refused(&args);
+        assert!(e.starts_with(&want), "{args:?}: {e}");
+        assert!(
+            e.contains("Blist") && !e.contains("face 1") && !e.contains("solid 1"),
+            "{e}"
+        );
+    }
+    // Display lists are clipped by --clip: A..Z, 2^13 products.
+    let cube = "vectors/thesis/cube.dl";
+    let mut args = vec!["render"; 1];
+    args.extend([cube; 26]);
+    let clip = "(A+B).(C+D).(E+F).(G+H).(I+J).(K+L).(M+N).(O+P).(Q+R).(S+T).(U+V).(W+X).(Y+Z)";
+    args.extend(["--clip", clip, "-o", o]);
+    let e = refused(&args);
+    assert!(e.starts_with("--clip: the expression expands"), "{e}");
+    // A concave list in --clip: the list named, no line of it.
+    let concave = d.join("concave.dl");
+    std::fs::write(
+        &concave,
+        "# concave\n\n46.06 -1.0 1.18 2\n1 0 1\n38.28 1.0 0 1\n0 0 1\n0 0 0 1234\n",
+    )
+    .unwrap();
+    let c = s(&concave);
+    let e = refused(&["render", cube, c, "--clip", "A.B", "-o", o]);
+    assert!(
+        e.starts_with(&format!(
+            "{c}: a concave display list cannot be a clipping volume"
+        )),
+        "{e}"
+    );
+    assert!(!png.exists());
+}

@@ -294,3 +294,143 @@ fn sigterm_leaves_no_staged_output() {
 fn sigint_leaves_no_staged_output() {
     interrupted(libc::SIGINT);
 }
+
+/// A signal while the slices are being written, one file after another into their staging
+/// directory: the directory goes, whatever file the run was creating in it.
+#[cfg(unix)]
+#[test]
+fn a_signal_while_slices_are_written_leaves_no_staging_directory() {
+    use std::os::unix::process::ExitStatusExt;
+    for _ in 0..3 {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        let mut child = Command::new(env!("CARGO_BIN_EXE_csgpix"))
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(["voxelize", TWELVE, "--res", "48x48x4000"])
+            .args(["--slices", s(&d.join("slices")), "-o", s(&d.join("o.nrrd"))])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        let staged_slices = || {
+            let staging = names(d).into_iter().find(|n| n.starts_with(".slices."))?;
+            std::fs::read_dir(d.join(staging)).ok().map(Iterator::count)
+        };
+        let t0 = std::time::Instant::now();
+        while staged_slices().unwrap_or(0) < 20 {
+            assert!(t0.elapsed().as_secs() < 60, "slices never staged");
+            assert!(child.try_wait().unwrap().is_none(), "finished first");
+            std::thread::yield_now();
+        }
+        // SAFETY: kill(2) on our own child's pid.
+        assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGINT) }, 0);
+        let status = child.wait().unwrap();
+        assert_eq!(status.signal(), Some(libc::SIGINT), "{status:?}");
+        assert!(names(d).is_empty(), "{:?}", names(d));
+    }
+}
+
+/// `-o /dev/fd/3` (or `/dev/stderr`, or a shell's `>(…)`) naming a pipe: written through.
+#[cfg(unix)]
+#[test]
+fn a_pipe_named_through_dev_fd_is_written_through() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("cube.png");
+    let to_file = csgpix(&["render", CUBE, "-o", s(&file)]);
+    assert!(to_file.status.success(), "{to_file:?}");
+    // fd 3 is the pipe this test reads as standard output; csgpix's own goes to /dev/null.
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg("exec \"$0\" render \"$1\" -o /dev/fd/3 3>&1 >/dev/null")
+        .arg(env!("CARGO_BIN_EXE_csgpix"))
+        .arg(CUBE)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{out:?}");
+    assert_eq!(out.stdout, std::fs::read(&file).unwrap());
+}
+
+/// Writing through to a FIFO nobody reads waits, as `cat > fifo` does, but a signal still
+/// ends the run.
+#[cfg(unix)]
+#[test]
+fn a_signal_ends_a_run_waiting_on_a_fifo_without_a_reader() {
+    use std::os::unix::process::ExitStatusExt;
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("out.png");
+    assert!(Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let mut child = Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["render", CUBE, "-o", s(&fifo)])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    // The render takes milliseconds; then it waits to open the FIFO.
+    std::thread::sleep(std::time::Duration::from_millis(700));
+    assert!(
+        child.try_wait().unwrap().is_none(),
+        "did not wait for a reader"
+    );
+    // SAFETY: kill(2) on our own child's pid.
+    assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGTERM) }, 0);
+    let t0 = std::time::Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if t0.elapsed().as_secs() >= 10 {
+            child.kill().unwrap();
+            child.wait().unwrap();
+            panic!("SIGTERM did not end a run waiting on a FIFO");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    assert_eq!(status.signal(), Some(libc::SIGTERM), "{status:?}");
+    assert_eq!(names(dir.path()), ["out.png"]);
+}
+
+/// `--vcd`, `--wave` and `--forces` are named with `-o` and go with it: a path that cannot
+/// be written, whichever it is, leaves none of the others (nor their staging files).
+#[test]
+fn side_outputs_of_render_and_sculpt_go_with_the_output_or_not_at_all() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let p = |name: &str| s(&d.join(name)).to_string();
+    let render = |vcd: &str, png: &str| {
+        let probe = ["render", CUBE, "--probe", "0,0", "--vcd", vcd];
+        csgpix(&[&probe[..], &["--wave", &p("w.svg"), "-o", png]].concat())
+    };
+    let sculpt = |forces: &str, mesh: &str| {
+        let head = ["sculpt", TWELVE, "--res", "16", "--tool", "sphere:1"];
+        let tail = [
+            "--path",
+            "vectors/paths/carve.csv",
+            "--forces",
+            forces,
+            "-o",
+            mesh,
+        ];
+        csgpix(&[&head[..], &tail[..]].concat())
+    };
+    let runs = [
+        render(&p("w.vcd"), &p("missing/r.png")),
+        render(&p("missing/w.vcd"), &p("r.png")),
+        sculpt(&p("f.csv"), &p("missing/c.stl")),
+        sculpt(&p("missing/f.csv"), &p("c.stl")),
+    ];
+    for out in runs {
+        let e = one_line_error(&out);
+        assert!(e.contains("missing"), "{e}");
+        assert!(names(d).is_empty(), "{:?}", names(d));
+    }
+    // The same runs with every path writable write everything.
+    assert!(render(&p("w.vcd"), &p("r.png")).status.success());
+    assert!(sculpt(&p("f.csv"), &p("c.stl")).status.success());
+    assert_eq!(names(d), ["c.stl", "f.csv", "r.png", "w.svg", "w.vcd"]);
+}

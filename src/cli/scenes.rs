@@ -112,11 +112,15 @@ impl Scene {
 
     /// A compile error on list `i`, as `file:line:col: message`.
     pub fn locate(&self, i: usize, e: &CompileError) -> String {
-        if e.field == csgpix::compile::WHOLE_PROGRAM {
-            let path = match &self.origins[i] {
-                Origin::List { path, .. } | Origin::Solid { path, .. } => path,
-            };
-            return format!("{}: {}", path.display(), e.msg);
+        use csgpix::compile::{WHOLE_LIST, WHOLE_PROGRAM};
+        match (&self.origins[i], e.field) {
+            // Display lists are clipped by --clip: the whole program is its.
+            (Origin::List { .. }, WHOLE_PROGRAM) => return format!("--clip: {}", e.msg),
+            (
+                Origin::List { path, .. } | Origin::Solid { path, .. },
+                WHOLE_PROGRAM | WHOLE_LIST,
+            ) => return format!("{}: {}", path.display(), e.msg),
+            _ => {}
         }
         match &self.origins[i] {
             Origin::List { path, text } => {

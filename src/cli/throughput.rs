@@ -299,7 +299,9 @@ fn scene_report(
     };
     let count: &csgpix::panels::Counter = if a.simulate { &simulated } else { &counted };
     let all = vec![true; ps.lists.len()];
-    let one = counted(&ps.panel_config(a.screen), &ps.frame_ops(&all)?)?;
+    let in_scene = |e: csgpix::draw::Error| format!("{}: {e}", path.display());
+    let ops = ps.frame_ops(&all).map_err(in_scene)?;
+    let one = counted(&ps.panel_config(a.screen), &ops)?;
     let mut estimates = vec![];
     let mut per_panel = None;
     for &p in panels {

@@ -259,6 +259,9 @@ fn volume_ops(
 /// [`CompileError::field`] of an error about the whole program, not one plane.
 pub const WHOLE_PROGRAM: usize = usize::MAX;
 
+/// [`CompileError::field`] of an error about a whole list (the one the error names).
+pub const WHOLE_LIST: usize = usize::MAX - 1;
+
 /// The most operations a clipping program may have (about 40 bytes each, and as many
 /// windows per pixel): beyond it the program's memory and time grow with the square of the
 /// literals in a product, and it is refused before it is built.
@@ -291,23 +294,30 @@ pub fn clip_scene_ops(
     colour_bits: u32,
 ) -> Result<Vec<Op>, (usize, CompileError)> {
     if let Some(i) = lists.iter().position(|l| l.is_concave()) {
-        let msg = "a concave display list cannot be a clipping volume".to_string();
+        let msg = "a concave display list cannot be a clipping volume: leave it out of --clip \
+                   (lists are composed without one) or split it into convex lists"
+            .to_string();
         return Err((
             i,
             CompileError {
                 plane: 0,
-                field: 4,
+                field: WHOLE_LIST,
                 msg,
             },
         ));
     }
     let products = expr.products().map_err(|e| {
+        let msg = format!(
+            "{}: §5.2.1 draws a clipping function product by product, so write it with \
+             fewer (voxelize evaluates a .csg tree in Blist, without products)",
+            e.message
+        );
         (
             0,
             CompileError {
                 plane: 0,
-                field: 0,
-                msg: e.message,
+                field: WHOLE_PROGRAM,
+                msg,
             },
         )
     })?;

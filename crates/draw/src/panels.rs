@@ -100,8 +100,12 @@ impl PanelScene {
             return Ok(vec![]);
         };
         let colour_bits = colour_bits(&self.fmt);
-        clip_scene_ops(&self.lists, &clip, &self.fmt, colour_bits)
-            .map_err(|(solid, error)| Error::Solid { solid, error })
+        clip_scene_ops(&self.lists, &clip, &self.fmt, colour_bits).map_err(|(solid, error)| {
+            match error.field {
+                crate::compile::WHOLE_PROGRAM => Error::Msg(error.msg),
+                _ => Error::Solid { solid, error },
+            }
+        })
     }
 
     /// The P·Vz program of solid `prim` (§4.4, §5.2.1: @(P)·Vz + @(Vz)·P) for a slab one

@@ -9,13 +9,14 @@
 //! What a path names decides how it is written:
 //! - a regular file, or a new one: staged beside it, renamed over it at the commit. Symlinks
 //!   are followed, so the file a symlink names is replaced and the symlink stays.
-//! - a FIFO or a character device (`/dev/null`, a terminal, `/dev/stdout`): written through
-//!   at the commit, never replaced.
+//! - a FIFO, a pipe named through `/dev/fd` or a character device (`/dev/null`, a terminal,
+//!   `/dev/stdout`): written through at the commit, never replaced.
 //! - `-`: standard output, where the format allows it.
 //! - a directory, a block device or a socket: refused.
 //!
 //! SIGINT, SIGTERM and SIGHUP remove every staged file and directory before the process dies
-//! of the signal ([`install_signal_cleanup`]).
+//! of the signal ([`install_signal_cleanup`]); they wait for a commit's renames, never for
+//! an output written through.
 
 use std::fs::File;
 use std::io::{Seek, Write};
@@ -50,13 +51,35 @@ pub fn install_signal_cleanup() -> Result<()> {
             let _commit = COMMIT.lock().unwrap_or_else(|e| e.into_inner());
             let mut staged = pending();
             for p in staged.drain(..) {
-                let _ = std::fs::remove_file(&p).or_else(|_| std::fs::remove_dir_all(&p));
+                remove_staged(&p);
             }
             let _ = signal_hook::low_level::emulate_default_handler(sig);
             std::process::exit(128 + sig);
         }
     });
     Ok(())
+}
+
+/// Remove a staged file, or a staged directory and its files. The run is still going while
+/// a signal's cleanup runs, and may be creating files in a staging directory by path (one
+/// slice after another): the directory is renamed first, so that nothing new can appear in
+/// it, then removed.
+fn remove_staged(p: &Path) {
+    if std::fs::symlink_metadata(p).is_ok_and(|m| !m.is_dir()) {
+        let _ = std::fs::remove_file(p);
+        return;
+    }
+    let doomed = p.with_extension("csgpix-rm");
+    let dir = match std::fs::rename(p, &doomed) {
+        Ok(()) => doomed,
+        Err(_) => p.to_path_buf(),
+    };
+    for _ in 0..100 {
+        match std::fs::remove_dir_all(&dir) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => continue,
+            _ => return,
+        }
+    }
 }
 
 /// A staged file: a named temporary file beside its target, removed on drop or on a signal.
@@ -66,11 +89,13 @@ struct Staged {
 
 impl Staged {
     fn new_in(dir: &Path, name: &str) -> std::io::Result<Staged> {
+        // Held from before the file exists: a signal's cleanup cannot miss it.
+        let mut staged = pending();
         let file = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
             .suffix(".csgpix-tmp")
             .tempfile_in(dir)?;
-        pending().push(file.path().to_path_buf());
+        staged.push(file.path().to_path_buf());
         Ok(Staged { file: Some(file) })
     }
 
@@ -214,13 +239,16 @@ impl Outputs {
         let target = Target::Dir(resolved.clone());
         self.check_unique(&target, &shown)?;
         let (base, name) = existing_ancestor(&resolved).map_err(|e| err(e.message))?;
+        // Held from before the directory exists: a signal's cleanup cannot miss it.
+        let mut staged = pending();
         let dir = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
             .suffix(".csgpix-tmp")
             .tempdir_in(&base)
             .map_err(|e| err(format!("cannot write in {}: {e}", base.display())))?
             .keep();
-        pending().push(dir.clone());
+        staged.push(dir.clone());
+        drop(staged);
         self.slots.push(Slot {
             shown,
             target,
@@ -297,13 +325,21 @@ impl Outputs {
 
     /// Put every staged output in place: renames first, then the outputs written through.
     /// After a failure the outputs not yet committed are removed.
+    ///
+    /// The renames hold off a signal's cleanup, so that a set of files is never half
+    /// renamed. Writing through does not: it can wait on a FIFO without a reader or a full
+    /// pipe for as long as it likes, and SIGINT must still end the run (nothing of it is
+    /// staged under a name by then).
     pub fn commit(mut self) -> Result<()> {
-        let _commit = COMMIT.lock().unwrap_or_else(|e| e.into_inner());
         let slots = std::mem::take(&mut self.slots);
         let (late, early): (Vec<Slot>, Vec<Slot>) = slots
             .into_iter()
             .partition(|s| matches!(s.target, Target::Through(_) | Target::Stdout));
-        early.into_iter().chain(late).try_for_each(commit_slot)
+        {
+            let _commit = COMMIT.lock().unwrap_or_else(|e| e.into_inner());
+            early.into_iter().try_for_each(commit_slot)?;
+        }
+        late.into_iter().try_for_each(commit_slot)
     }
 
     fn named(&mut self, flag: &str, path: &Path, exts: &[&str], stdout: bool) -> Result<Out> {
@@ -466,6 +502,14 @@ fn names_stdout(path: &Path) -> bool {
 
 /// What a file output's path names, and so how it is written.
 fn classify(path: &Path) -> Result<Target> {
+    // What the kernel finds at the end of every link decides first: /proc's links to pipes
+    // (`-o /dev/fd/3`, `-o >(gzip > v.nrrd.gz)`, `-o /dev/stderr` into a pipe) name no path
+    // that can be followed by hand, and are opened as they are named.
+    if let Ok(meta) = std::fs::metadata(path) {
+        if !meta.is_file() && !meta.is_dir() {
+            return special(path, &meta);
+        }
+    }
     let p = resolve(path)?;
     let meta = match std::fs::metadata(&p) {
         Ok(m) => m,
@@ -656,6 +700,35 @@ mod tests {
         write_atomic(&p, |w| w.write_all(b"new")).unwrap();
         let mode = std::fs::metadata(&p).unwrap().permissions().mode() & 0o777;
         assert_eq!(mode, 0o600);
+    }
+
+    #[test]
+    fn a_staged_directory_is_removed_while_files_are_still_created_in_it() {
+        let dir = tempfile::tempdir().unwrap();
+        for _ in 0..20 {
+            let staged = dir.path().join(".s.x.csgpix-tmp");
+            std::fs::create_dir(&staged).unwrap();
+            let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+            let writer = {
+                let (staged, stop) = (staged.clone(), stop.clone());
+                std::thread::spawn(move || {
+                    // As a run writes its slices: one file after another, by path, until
+                    // the directory is gone.
+                    let mut n = 0;
+                    while !stop.load(std::sync::atomic::Ordering::Relaxed) {
+                        let _ = std::fs::write(staged.join(format!("z{n:05}.png")), b"x");
+                        n += 1;
+                    }
+                })
+            };
+            while std::fs::read_dir(&staged).unwrap().count() < 50 {
+                std::thread::yield_now();
+            }
+            remove_staged(&staged);
+            stop.store(true, std::sync::atomic::Ordering::Relaxed);
+            writer.join().unwrap();
+            assert!(names(dir.path()).is_empty(), "{:?}", names(dir.path()));
+        }
     }
 
     #[cfg(unix)]
