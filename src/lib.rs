@@ -1,3 +1,5 @@
+#![warn(missing_docs)]
+
 //! csgpix: the 2D CSG pixel-processor array of a 2005 thesis (seed 001), simulated clock by
 //! clock, and what it is used for: rendering scenes, voxelizing them slice by slice, storing
 //! and sculpting the voxels.

@@ -11,19 +11,26 @@ use std::sync::Once;
 /// One curve: its legend and its points, drawn joined in the order given.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Series {
+    /// The legend.
     pub label: String,
+    /// (x, y) points, joined in this order.
     pub points: Vec<(f64, f64)>,
 }
 
 /// A chart of curves over shared axes.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Chart {
+    /// The title above the plot.
     pub title: String,
+    /// The X axis's label.
     pub x_label: String,
+    /// The Y axis's label.
     pub y_label: String,
-    /// Logarithmic axes (every value on a log axis must be > 0).
+    /// A logarithmic X axis (every x must then be > 0).
     pub log_x: bool,
+    /// A logarithmic Y axis (every y must then be > 0).
     pub log_y: bool,
+    /// The curves.
     pub series: Vec<Series>,
 }
 

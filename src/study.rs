@@ -70,6 +70,7 @@ pub struct Sweep {
     pub fragments: Vec<u32>,
     /// Slabs along Z.
     pub slabs: Vec<usize>,
+    /// Models run at every point.
     pub models: Vec<Model>,
     /// Voxels along X and Y (array pixels per side).
     pub res: usize,
@@ -131,6 +132,7 @@ impl Sweep {
         self.bits.len() * self.fragments.len() * self.slabs.len() * self.models.len()
     }
 
+    /// Whether the sweep has no point.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -139,16 +141,21 @@ impl Sweep {
 /// One point of the sweep and what it measured.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Point {
+    /// The processor model run.
     pub model: Model,
     /// Fraction bits F.
     pub frac_bits: u32,
     /// Bits per depth word = clocks per plane window (§2.5).
     pub n_d: u32,
+    /// `$fn` of every sphere and cylinder.
     pub fragments: u32,
+    /// Voxels along X and Y.
     pub res: usize,
+    /// Slabs along Z.
     pub slabs: usize,
     /// Voxels in the grid.
     pub voxels: usize,
+    /// Voxels filled.
     pub filled: usize,
     /// FNV-1a digest of the volume's membership (filled or empty per voxel), in hex: equal
     /// digests mark the same voxels (`cycle` and `word` always give the same).
@@ -327,10 +334,13 @@ fn is_fn_arg(arg: &str) -> bool {
 
 /// A scene read once per tessellation swept, and the grid box common to all of them.
 pub struct Prepared {
+    /// The sweep, normalized.
     pub sweep: Sweep,
     /// `(fragments, scene)`, in the sweep's order of fragments.
     pub scenes: Vec<(u32, CsgScene)>,
+    /// The grid box's low corner, common to every tessellation.
     pub min: DVec3,
+    /// The grid box's high corner.
     pub max: DVec3,
 }
 

@@ -4,7 +4,7 @@
 //! [`select`] logic (SGENE) with its golden vectors, [`depgen`] (the tree of bit-serial adders),
 //! TRANSD/TRANSC and the stage selector ([`program`]), and the two models of the array:
 //! [`cycle`] (bit-sliced, clock by clock) and [`word`] (one word per pixel, no clock), which
-//! share the select logic and the controller ([`array`]). Probes record chosen pixels to VCD
+//! share the select logic and the controller ([`array`](mod@array)). Probes record chosen pixels to VCD
 //! ([`probe`]).
 
 pub mod array;

@@ -2,7 +2,8 @@
 //!
 //! The select logic of §2.3.3-2.3.5 is a handful of two-level equations. A [`Sop`] is one of
 //! them: an OR of [`Cube`]s (AND terms), optionally complemented (the thesis prints S1', S2' and
-//! a primed name is the complement). Variables are numbered by their position in a [`VarSet`].
+//! a primed name is the complement). Variables are numbered by their position in the
+//! equations' variable list.
 
 /// One product term. Bit `i` of `care` says whether variable `i` appears; bit `i` of `value`
 /// gives its polarity (1 = plain, 0 = primed). Bits of `value` outside `care` are zero.
