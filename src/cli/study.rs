@@ -82,7 +82,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         bits: a.bits.clone(),
         fragments: a.fragments.clone(),
         slabs: a.slabs.clone(),
-        models: a.models.iter().map(|&m| m.into()).collect(),
+        models: a.models.clone(),
         res: a.res,
         int_bits: a.int_bits,
         ovf_bits: a.ovf_bits,
