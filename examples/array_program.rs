@@ -29,7 +29,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .step_by(5)
             .map(|x| match colour(&cycle, x, y) {
                 0 => '.',
-                c => char::from_digit(c as u32 % 36, 36).unwrap_or('#'),
+                c => char::from_digit(c % 36, 36).unwrap_or('#'),
             })
             .collect();
         writeln!(out, "{row}")?;
