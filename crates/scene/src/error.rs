@@ -116,21 +116,30 @@ impl Error {
     }
 }
 
-impl From<String> for Error {
-    fn from(message: String) -> Self {
-        Error::msg(message)
-    }
+/// The conversions every csgpix error type has: from a one-line message (`String`, `&str`)
+/// through `$msg`, and to a `String` for callers that still speak in one-line strings (the
+/// command line). `message_conversions!(Error, Error::Msg)` in the crate that defines `Error`.
+#[macro_export]
+macro_rules! message_conversions {
+    ($err:ty, $msg:path) => {
+        impl From<String> for $err {
+            fn from(m: String) -> Self {
+                $msg(m)
+            }
+        }
+
+        impl From<&str> for $err {
+            fn from(m: &str) -> Self {
+                $msg(m.to_string())
+            }
+        }
+
+        impl From<$err> for String {
+            fn from(e: $err) -> String {
+                e.to_string()
+            }
+        }
+    };
 }
 
-impl From<&str> for Error {
-    fn from(message: &str) -> Self {
-        Error::msg(message)
-    }
-}
-
-/// For callers that still speak in one-line strings (the command line).
-impl From<Error> for String {
-    fn from(e: Error) -> String {
-        e.to_string()
-    }
-}
+message_conversions!(Error, Error::msg);

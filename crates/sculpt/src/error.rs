@@ -62,21 +62,4 @@ impl Error {
     }
 }
 
-impl From<String> for Error {
-    fn from(m: String) -> Self {
-        Error::Msg(m)
-    }
-}
-
-impl From<&str> for Error {
-    fn from(m: &str) -> Self {
-        Error::Msg(m.to_string())
-    }
-}
-
-/// For callers that still speak in one-line strings (the command line).
-impl From<Error> for String {
-    fn from(e: Error) -> String {
-        e.to_string()
-    }
-}
+csgpix_scene::message_conversions!(Error, Error::Msg);
