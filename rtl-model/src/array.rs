@@ -6,6 +6,7 @@ use crate::state::{ArchState, ArrayConfig, Pixel};
 
 /// A model of the pixel-processor array.
 pub trait Array {
+    /// The array's size, word format, colour width and stack depth.
     fn config(&self) -> &ArrayConfig;
 
     /// Carry out one operation. Programs are checked by [`check_program`] first; an operation
@@ -46,8 +47,11 @@ pub trait Array {
 /// the next window, and the clock count.
 #[derive(Clone, Debug, Default)]
 pub struct Sequencer {
+    /// Clipping stack pointer: levels in use, shared by every pixel.
     pub sp: usize,
+    /// The transfer the latched select code will carry out in the next window, if any.
     pub pending: Option<crate::program::Transfer>,
+    /// Clocks so far, DEPGEN's fill included.
     pub cycles: u64,
     streamed: bool,
 }

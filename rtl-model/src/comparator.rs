@@ -43,18 +43,26 @@ impl BitRole {
 /// The comparator flip-flops of 64 pixels, one bit per lane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Comparator {
+    /// A < R on the bits seen so far.
     pub lt: u64,
+    /// No bit has differed so far (A = R on the bits seen).
     pub eq: u64,
+    /// An overflow bit of A was 1.
     pub ovf: u64,
+    /// The sign bit of A (valid after the last bit).
     pub sign: u64,
 }
 
 /// The internal variables N, J, T, M of 64 pixels, one bit per lane (§2.3.2).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Flags {
+    /// N = sign: A < 0.
     pub n: u64,
+    /// J = lt | eq: A ≤ R.
     pub j: u64,
+    /// T = eq: A = R.
     pub t: u64,
+    /// M = ovf & !sign: A ≥ maxdepth.
     pub m: u64,
 }
 
@@ -104,9 +112,13 @@ impl Comparator {
 /// Scalar flags of one comparison.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
 pub struct FlagBits {
+    /// N: A < 0.
     pub n: bool,
+    /// J: A ≤ R.
     pub j: bool,
+    /// T: A = R.
     pub t: bool,
+    /// M: A ≥ maxdepth.
     pub m: bool,
 }
 

@@ -29,6 +29,42 @@ use crate::state::{ArchState, ArrayConfig, Pixel};
 const CHUNK_WORDS: usize = 64;
 
 /// The array as bit-planes.
+///
+/// It agrees with [`WordArray`](crate::WordArray) in every register of every pixel and in
+/// the clock count. A convex slab on an 8×2 array, front plane Z = 4 + x, back plane Z = 8
+/// (depth units), closed and composed into the image:
+///
+/// ```
+/// use rtl_model::program::CReg;
+/// use rtl_model::{Array, ArrayConfig, Coeffs, CycleArray, Equations, Op, WordArray};
+///
+/// let cfg = ArrayConfig::new(8, 2);
+/// let q = |v: f64| cfg.fmt.quantize(v).unwrap();
+/// let plane = |z0, dzx, colour, h| Op::Plane {
+///     coeffs: Coeffs { c0: q(z0), dx: q(dzx), dy: 0 },
+///     colour,
+///     interior: 7,
+///     l: false,
+///     s: true,
+///     h,
+///     y: false,
+/// };
+/// let ops = [
+///     plane(4.0, 1.0, 5, true),
+///     plane(8.0, 0.0, 0, false),
+///     Op::Close { l: false },
+///     Op::Compose { p: false },
+/// ];
+/// let mut cycle = CycleArray::new(cfg, Equations::Derived.set());
+/// let mut word = WordArray::new(cfg, Equations::Derived.set());
+/// cycle.run(&ops).unwrap();
+/// word.run(&ops).unwrap();
+/// assert_eq!(cycle.state(), word.state());
+/// assert_eq!(cycle.cycles(), word.cycles());
+/// // Colour 5 where the front plane lies before the back one (x < 4), background behind.
+/// let g: Vec<u32> = (0..8).map(|x| cycle.pixel(x, 1).creg(CReg::G)).collect();
+/// assert_eq!(g, [5, 5, 5, 5, 0, 0, 0, 0]);
+/// ```
 pub struct CycleArray {
     cfg: ArrayConfig,
     set: EquationSet,
@@ -72,10 +108,15 @@ pub type Observer = Box<dyn FnMut(&CycleArray, Clock)>;
 /// carry and the comparator's lt, eq, ovf, sign (`Pixel` holds the flags N J T M they give).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Internal {
+    /// Carry of the pixel's DEPGEN serial adder.
     pub carry: bool,
+    /// Comparator: A < R on the bits seen so far.
     pub lt: bool,
+    /// Comparator: no bit has differed so far.
     pub eq: bool,
+    /// Comparator: an overflow bit of A was 1.
     pub ovf: bool,
+    /// Comparator: the sign bit of A.
     pub sign: bool,
 }
 
@@ -115,6 +156,8 @@ fn bcast(v: u64, k: usize) -> u64 {
 }
 
 impl CycleArray {
+    /// A `cfg` array after reset (every depth register at the Put-1 word, colours 0, code
+    /// Keep), its SGENE built from `set`.
     pub fn new(cfg: ArrayConfig, set: EquationSet) -> CycleArray {
         let wpr = cfg.width.div_ceil(64);
         let nw = wpr * cfg.height;

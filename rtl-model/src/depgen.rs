@@ -40,9 +40,13 @@ struct Tree {
 /// One plane's bits on every line: `col[k * col_words + i]`, `row[k * row_words + i]`.
 #[derive(Clone, Debug, Default)]
 pub struct LineBits {
+    /// Bit k of `x·dx` on every column line: `col[k * col_words + i]` holds lines 64i..64i+63.
     pub col: Vec<u64>,
+    /// Bit k of `c0 + y·dy` on every row line: `row[k * row_words + i]` holds lines 64i..64i+63.
     pub row: Vec<u64>,
+    /// Words per clock of `col`: ceil(width / 64).
     pub col_words: usize,
+    /// Words per clock of `row`: ceil(height / 64).
     pub row_words: usize,
 }
 
@@ -98,6 +102,8 @@ impl Tree {
 }
 
 impl DepGen {
+    /// The x tree over `width` column lines and the y tree over `height` row lines, for words
+    /// of format `fmt`.
     pub fn new(width: usize, height: usize, fmt: WordFormat) -> DepGen {
         DepGen {
             fmt,

@@ -13,8 +13,11 @@ use serde::Serialize;
 /// Field widths of the depth word: fraction, integer and overflow bits (sign is one more).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 pub struct WordFormat {
+    /// F: fraction bits (depth units are 2^F raw steps).
     pub frac: u32,
+    /// I: integer bits (maxdepth = 2^I depth units); at least 1.
     pub int: u32,
+    /// O: overflow bits, the guard band between maxdepth and the sign; at least 1.
     pub ovf: u32,
 }
 
@@ -29,9 +32,23 @@ impl Default for WordFormat {
 #[derive(Clone, Debug, PartialEq)]
 pub enum FormatError {
     /// N_D must lie in 3..=63 and every field but the fraction must be at least one bit.
-    BadWidths { frac: u32, int: u32, ovf: u32 },
+    BadWidths {
+        /// Fraction bits asked for.
+        frac: u32,
+        /// Integer bits asked for.
+        int: u32,
+        /// Overflow bits asked for.
+        ovf: u32,
+    },
     /// A real coefficient does not fit the word once scaled by 2^F.
-    OutOfRange { value: f64, min: f64, max: f64 },
+    OutOfRange {
+        /// The coefficient, in depth units per pixel.
+        value: f64,
+        /// Smallest real the word holds (the most negative word).
+        min: f64,
+        /// Largest real the word holds (the Put-1 word).
+        max: f64,
+    },
 }
 
 impl std::fmt::Display for FormatError {

@@ -1,3 +1,5 @@
+#![warn(missing_docs)]
+
 //! The csgpix pixel processor (seed 001, Chapter 2), clock by clock.
 //!
 //! One module per block of Figure 2.9: the [`depth_word`] format, the [`comparator`], the

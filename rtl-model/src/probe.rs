@@ -80,6 +80,7 @@ impl Recorder {
         })
     }
 
+    /// The probed pixels, (x, y), in probe index order.
     pub fn probes(&self) -> &[(usize, usize)] {
         &self.probes
     }

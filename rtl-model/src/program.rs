@@ -19,8 +19,11 @@ use crate::select::{EquationSet, Signal};
 /// fraction bits.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Coeffs {
+    /// Value at pixel (0, 0): Z0 (or K0), raw N_D-bit word.
     pub c0: i64,
+    /// Increment per pixel in x (one column to the right): dZx (or dKx), raw word.
     pub dx: i64,
+    /// Increment per pixel in y (one row down): dZy (or dKy), raw word.
     pub dy: i64,
 }
 
@@ -47,33 +50,49 @@ pub enum Op {
     /// A plane of an object: stage position 1 when front or perpendicular (H or Y), else 2.
     /// `interior` is the object's internal colour, written by Put 0.
     Plane {
+        /// The plane's Z (or K, when `y`) coefficients, streamed by DEPGEN into A.
         coeffs: Coeffs,
+        /// The plane's colour code, loaded by MEM D into D (used by front planes only).
         colour: u32,
+        /// The object's internal colour, written into E by Put 0.
         interior: u32,
+        /// External L: 1 for a concave object, 0 for a convex one (§2.3.3).
         l: bool,
+        /// External S: 1 for the first plane that writes its register (F or B) in this object.
         s: bool,
+        /// External H: 1 for a front-facing plane, 0 for a back-facing one.
         h: bool,
+        /// External Y: 1 for a plane perpendicular to the screen (`coeffs` give K, not Z).
         y: bool,
     },
     /// Stage position 3: compare B with F and keep the visible part of the object in F.
     Close {
+        /// External L: 1 for a concave object, 0 for a convex one.
         l: bool,
     },
     /// A clipping plane (§2.3.4): LL of A against F is pushed on every pixel's stack.
     ClipPlane {
+        /// The clipping plane's Z (or K, when `y`) coefficients, streamed into A.
         coeffs: Coeffs,
+        /// External H: 1 for a front-facing clipping plane, 0 for a back-facing one.
         h: bool,
+        /// External Y: 1 for a clipping plane perpendicular to the screen.
         y: bool,
+        /// External X: at A = F, 0 if the surface is kept and 1 if not (LL = X').
         x: bool,
     },
-    /// Postfix operators on the clipping stack, one clock each.
+    /// Postfix AND (`.`) on the clipping stack: pop two, push their AND; one clock.
     ClipAnd,
+    /// Postfix OR (`+`) on the clipping stack: pop two, push their OR; one clock.
     ClipOr,
+    /// Postfix NOT (`!`) on the clipping stack: complement the top; one clock.
     ClipNot,
     /// Pop LL' (one clock): the next window keeps F where LL' = 1 and puts 1 where LL' = 0.
     ClipApply,
     /// Stage position 4 (§2.3.5): compose F (colour E) into C (colour G); P = 1 initialises C.
     Compose {
+        /// External P: 1 initialises C (Put 1 in every pixel: maxdepth, background colour)
+        /// instead of composing F; 0 composes F into C.
         p: bool,
     },
 }
@@ -81,17 +100,24 @@ pub enum Op {
 /// Depth registers of a pixel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum Reg {
+    /// The incoming plane (Z, or K when perpendicular), written by DEPGEN.
     A = 0,
+    /// The object's front envelope, then the visible part of the object.
     F = 1,
+    /// The object's back envelope.
     B = 2,
+    /// The scene so far (second stage).
     C = 3,
 }
 
 /// Colour registers of a pixel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum CReg {
+    /// The incoming plane's colour, from MEM D.
     D = 0,
+    /// The colour of F.
     E = 1,
+    /// The colour of C: the image.
     G = 2,
 }
 
@@ -107,9 +133,13 @@ pub enum Decode {
 /// Per-pixel action masks a code decodes to (each a bit per lane).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ActionMasks {
+    /// Lanes that take the source register (Put A, or Put F at position 4).
     pub put_src: u64,
+    /// Lanes that take 0 (the screen) and the internal colour.
     pub put0: u64,
+    /// Lanes that keep the destination register and its colour.
     pub keep: u64,
+    /// Lanes that take the Put-1 word (maxdepth) and the background colour.
     pub put1: u64,
 }
 
@@ -137,10 +167,13 @@ impl Decode {
 /// What the latched code will do to the registers in the next window.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Transfer {
+    /// Depth register TRANSD writes.
     pub dst: Reg,
+    /// Depth register that Put A / Put F copies into `dst`.
     pub src: Reg,
     /// Colour register written and its source (none for back planes).
     pub colour: Option<(CReg, CReg)>,
+    /// How the latched code is read (TRANSD positions 1-3 or TRANSC position 4).
     pub decode: Decode,
     /// Colour that Put 0 writes (the object's internal colour).
     pub interior: u32,
@@ -162,9 +195,11 @@ pub struct Window {
     pub position: u8,
     /// Coefficients DEPGEN streams into A, and the colour MEM D loads into D, if any.
     pub stream: Option<(Coeffs, Option<u32>)>,
-    /// Comparator operands: the A side and the stored register.
+    /// Comparator operand on the A side (streamed in, or re-read at positions 3 and 4).
     pub lhs: Reg,
+    /// Comparator operand on the stored side.
     pub rhs: Reg,
+    /// What SGENE does with the flags at the window's end.
     pub decide: Decide,
     /// What the code latched at the end of this window does in the next one.
     pub transfer: Option<Transfer>,
@@ -281,15 +316,21 @@ pub fn stack_effect(op: &Op) -> (usize, usize) {
 /// Why a program cannot run on an array.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum ProgramError {
+    /// Operation `op` would push beyond the clipping stack's `depth` levels.
     StackOverflow {
+        /// Index of the operation in the program.
         op: usize,
+        /// Levels of the clipping stack.
         depth: usize,
     },
+    /// Operation `op` pops more levels than the clipping stack holds.
     StackUnderflow {
+        /// Index of the operation in the program.
         op: usize,
     },
     /// `ClipApply` right after a window whose select code has not been carried out yet.
     LatchBusy {
+        /// Index of the operation in the program.
         op: usize,
     },
 }

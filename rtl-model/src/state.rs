@@ -9,8 +9,11 @@ use crate::program::{CReg, Reg};
 /// The size and word format of an array.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct ArrayConfig {
+    /// Pixels per row (x runs 0..width, left to right).
     pub width: usize,
+    /// Rows (y runs 0..height, top to bottom).
     pub height: usize,
+    /// Format of the depth registers A, F, B, C (N_D bits, §2.4.1).
     pub fmt: WordFormat,
     /// Bits of the colour registers D, E, G (at most N_D: they move in the same window).
     pub colour_bits: u32,
@@ -30,6 +33,7 @@ impl ArrayConfig {
         }
     }
 
+    /// Number of pixel processors, width × height.
     pub fn pixels(&self) -> usize {
         self.width * self.height
     }
@@ -100,10 +104,12 @@ impl Pixel {
         }
     }
 
+    /// Depth register `r` (raw word).
     pub fn reg(&self, r: Reg) -> i64 {
         self.depth[r as usize]
     }
 
+    /// Colour register `r`.
     pub fn creg(&self, r: CReg) -> u32 {
         self.colour[r as usize]
     }
@@ -112,13 +118,18 @@ impl Pixel {
 /// All pixels, row-major, plus the stack pointer the pixels share.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ArchState {
+    /// Pixels per row.
     pub width: usize,
+    /// Rows.
     pub height: usize,
+    /// Every pixel, row-major: pixel (x, y) is `pixels[y * width + x]`.
     pub pixels: Vec<Pixel>,
+    /// Clipping stack pointer: levels in use, the next push goes to level `sp`.
     pub sp: usize,
 }
 
 impl ArchState {
+    /// Pixel (x, y), (0, 0) at the top left.
     pub fn at(&self, x: usize, y: usize) -> &Pixel {
         &self.pixels[y * self.width + x]
     }

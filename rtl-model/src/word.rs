@@ -21,6 +21,8 @@ pub struct WordArray {
 }
 
 impl WordArray {
+    /// A `cfg` array after reset (every depth register at the Put-1 word, colours 0, code
+    /// Keep), its SGENE built from `set`.
     pub fn new(cfg: ArrayConfig, set: EquationSet) -> WordArray {
         WordArray {
             px: vec![Pixel::reset(&cfg.fmt); cfg.pixels()],

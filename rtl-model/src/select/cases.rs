@@ -73,7 +73,9 @@ impl Compose {
 /// A row's verdict: one action, or two when the thesis leaves a tie "up to the user".
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Verdict<T> {
+    /// The required outcome, and the second one allowed when the row is a tie.
     pub choices: (T, Option<T>),
+    /// The thesis row that decides, as conditions `->` outcome.
     pub row: &'static str,
 }
 
@@ -94,8 +96,11 @@ fn tie<T>(a: T, b: T, row: &'static str) -> Verdict<T> {
 /// Externals of a front or perpendicular plane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FrontExt {
+    /// L: 1 for a concave object, 0 for a convex one.
     pub l: bool,
+    /// S: 1 for the first front or perpendicular plane of the object (F holds no surface yet).
     pub s: bool,
+    /// Y: 1 for a perpendicular plane (A holds K).
     pub y: bool,
 }
 
@@ -152,7 +157,9 @@ fn front_concave(md: i64, a: i64, f: i64) -> Verdict<Action> {
 /// Externals of a back plane (H = 0, Y = 0).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BackExt {
+    /// L: 1 for a concave object, 0 for a convex one.
     pub l: bool,
+    /// S: 1 for the first back plane of the object (B holds no surface yet).
     pub s: bool,
 }
 
@@ -225,8 +232,11 @@ pub fn close(l: bool, b: i64, f: i64) -> Verdict<Action> {
 /// Externals of a clipping plane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ClipExt {
+    /// H: 1 for a front-facing clipping plane, 0 for a back-facing one.
     pub h: bool,
+    /// Y: 1 for a perpendicular clipping plane (A holds K).
     pub y: bool,
+    /// X: at A = F, 0 if the surface is kept and 1 if not (so LL = X').
     pub x: bool,
 }
 

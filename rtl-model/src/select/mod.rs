@@ -31,6 +31,7 @@ pub enum Table {
 }
 
 impl Table {
+    /// Every table, in PLA file order.
     pub const ALL: [Table; 5] = [
         Table::Front,
         Table::Back,
@@ -83,18 +84,28 @@ impl Table {
 /// One select signal of SGENE.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Signal {
+    /// S1 of a front or perpendicular plane, stage position 1 (§2.3.3).
     FrontS1,
+    /// S2 of a front or perpendicular plane, stage position 1 (§2.3.3).
     FrontS2,
+    /// S1 of a back plane, stage position 2 (§2.3.3).
     BackS1,
+    /// S2 of a back plane, stage position 2 (§2.3.3).
     BackS2,
+    /// S1 when closing the object, stage position 3 (B against F).
     CloseS1,
+    /// S2 when closing the object, stage position 3 (B against F).
     CloseS2,
+    /// LL, the partial inside/outside answer of a clipping plane (§2.3.4).
     LL,
+    /// S3 of the second stage, stage position 4 (§2.3.5).
     S3,
+    /// S4 of the second stage, stage position 4 (§2.3.5).
     S4,
 }
 
 impl Signal {
+    /// Every signal, in equation-file order (also the index into an [`EquationSet`]).
     pub const ALL: [Signal; 9] = [
         Signal::FrontS1,
         Signal::FrontS2,
@@ -127,6 +138,7 @@ impl Signal {
         &self.name()[self.name().find('.').unwrap() + 1..]
     }
 
+    /// The signal named `table.NAME` (as [`Signal::name`] spells it), if any.
     pub fn from_name(s: &str) -> Option<Signal> {
         Signal::ALL.into_iter().find(|g| g.name() == s)
     }
@@ -151,6 +163,7 @@ pub enum Equations {
 }
 
 impl Equations {
+    /// `derived` or `printed`, as on the command line.
     pub fn name(self) -> &'static str {
         match self {
             Equations::Derived => "derived",
@@ -170,6 +183,7 @@ impl Equations {
 /// A full set of SGENE equations, one [`Sop`] per [`Signal`].
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EquationSet {
+    /// Name of the set (`derived`, `printed`, or the name given to [`EquationSet::parse`]).
     pub name: String,
     sops: Vec<Sop>,
 }
@@ -177,8 +191,11 @@ pub struct EquationSet {
 /// An equation file that could not be read, with 1-based line and column.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EquationError {
+    /// 1-based line of the error (0 when no line is at fault, e.g. a missing equation).
     pub line: usize,
+    /// 1-based column of the error (0 when no line is at fault).
     pub col: usize,
+    /// What is wrong.
     pub msg: String,
 }
 
@@ -252,6 +269,7 @@ impl EquationSet {
         }
     }
 
+    /// The equation of signal `s`.
     pub fn sop(&self, s: Signal) -> &Sop {
         &self.sops[s as usize]
     }

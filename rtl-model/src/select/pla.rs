@@ -56,6 +56,7 @@ pub struct Pla {
     pub inputs: Vec<String>,
     /// Output names (`.ob`).
     pub outputs: Vec<String>,
+    /// The rows, in file order.
     pub rows: Vec<Row>,
     /// Comment lines after the last row (before `.e`).
     pub trailer: Vec<String>,
@@ -64,8 +65,11 @@ pub struct Pla {
 /// Why a text is not a PLA file: the message and where, as 1-based line and column.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct PlaError {
+    /// 1-based line.
     pub line: usize,
+    /// 1-based column.
     pub col: usize,
+    /// What is wrong.
     pub msg: String,
 }
 

@@ -9,7 +9,9 @@
 /// gives its polarity (1 = plain, 0 = primed). Bits of `value` outside `care` are zero.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Cube {
+    /// Bit `i` set: variable `i` appears in the term.
     pub care: u32,
+    /// Bit `i`: polarity of variable `i` (1 plain, 0 primed); zero outside `care`.
     pub value: u32,
 }
 
@@ -39,19 +41,30 @@ impl Cube {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 #[repr(u8)]
 pub enum Var {
+    /// External: 1 for a concave object, 0 for a convex one (§2.3.3).
     L,
+    /// External: 1 for the first plane that writes its register (F or B) in the object.
     S,
+    /// External: 1 for a front-facing plane, 0 for a back-facing one.
     H,
+    /// External: 1 for a plane perpendicular to the screen (its word is K, not Z).
     Y,
+    /// External of a clipping plane: at A = F, 0 if the surface is kept, 1 if not (§2.3.4).
     X,
+    /// External of the second stage: 1 initialises C (§2.3.5).
     P,
+    /// Internal: the sign of the A-side word, A < 0 (§2.3.2).
     N,
+    /// Internal: A ≤ R, the A side against the stored register (§2.3.2).
     J,
+    /// Internal: A = R (§2.3.2).
     T,
+    /// Internal: A ≥ maxdepth, an overflow bit set on a non-negative word (§2.3.2).
     M,
 }
 
 impl Var {
+    /// Every variable, in cube bit order.
     pub const ALL: [Var; 10] = [
         Var::L,
         Var::S,
@@ -84,7 +97,9 @@ impl Var {
 /// One equation: `out = OR(cubes)`, or its complement when `primed` (a printed `S1' = …`).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Sop {
+    /// The product terms, ORed; none is the constant 0.
     pub cubes: Vec<Cube>,
+    /// The equation defines the complement of the signal (`S1' = …`).
     pub primed: bool,
 }
 
@@ -164,7 +179,9 @@ impl Sop {
 /// Why an equation text was refused, with the 1-based column.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SopError {
+    /// 1-based column in the right-hand side.
     pub col: usize,
+    /// What is wrong.
     pub msg: String,
 }
 

@@ -21,11 +21,15 @@ use crate::depth_word::WordFormat;
 /// The words a register can hold, found by applying the case tables until nothing new appears.
 #[derive(Clone, Debug)]
 pub struct Reachable {
+    /// The depth word format the words belong to.
     pub fmt: WordFormat,
     /// Candidate words on the A side (anything DEPGEN can deliver).
     pub words: Vec<i64>,
+    /// Words F can hold: from the Put-1 reset word, by front planes, stage 3 and clipping.
     pub f: BTreeSet<i64>,
+    /// Words B can hold: from the Put-1 reset word, by back planes.
     pub b: BTreeSet<i64>,
+    /// Words C can hold: from the Put-1 reset word, by the second stage composing F.
     pub c: BTreeSet<i64>,
 }
 
@@ -162,7 +166,9 @@ impl Reachable {
 /// thesis row that gave them.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TruthTable {
+    /// The table (PLA file) these rows specify.
     pub table: Table,
+    /// Minterm to (one output per signal of the table, the deciding thesis row).
     pub rows: BTreeMap<u32, (Vec<Out>, &'static str)>,
 }
 

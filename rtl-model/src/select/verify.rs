@@ -11,7 +11,9 @@ use super::{EquationSet, Signal, Table};
 pub struct Mismatch {
     /// Inputs as `NAME=0|1`, in PLA column order.
     pub inputs: String,
+    /// The output the vectors require.
     pub expected: bool,
+    /// The output the equation gives.
     pub got: bool,
     /// The thesis case row the vector came from (the PLA comment above it).
     pub case: String,
@@ -20,9 +22,11 @@ pub struct Mismatch {
 /// The verdict on one signal.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct SignalReport {
+    /// The signal's name, `table.NAME`.
     pub signal: String,
     /// Care rows checked (rows whose expected output is 0 or 1).
     pub rows: usize,
+    /// The care rows where the equation disagrees with the vectors.
     pub mismatches: Vec<Mismatch>,
 }
 

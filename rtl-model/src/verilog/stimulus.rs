@@ -67,6 +67,7 @@ pub struct Expected {
     pub text: String,
     /// The clock each operation ends with.
     pub ends: Vec<u64>,
+    /// Clocks of the whole program, flush window included.
     pub cycles: u64,
     /// The architectural state after the program (its G registers are the image).
     pub last: ArchState,
