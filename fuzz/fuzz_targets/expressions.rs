@@ -14,7 +14,7 @@ fuzz_target!(|bytes: &[u8]| {
             let names: Vec<String> = ["A", "B", "C"].map(String::from).to_vec();
             csgpix::clip_expr::Clip::parse(&text, &names).err().map(|e| e.to_string())
         }
-        _ => csgpix::sculpt::parse_path(&text, "p.csv").err(),
+        _ => csgpix::sculpt::parse_path(&text, "p.csv").err().map(|e| e.to_string()),
     };
     if let Some(e) = err {
         assert!(!e.contains('\n'), "two lines: {e}");
