@@ -12,9 +12,13 @@ fuzz_target!(|bytes: &[u8]| {
         0 => csgpix::csg_expr::parse(&text).err().map(|e| e.to_string()),
         1 => {
             let names: Vec<String> = ["A", "B", "C"].map(String::from).to_vec();
-            csgpix::clip_expr::Clip::parse(&text, &names).err().map(|e| e.to_string())
+            csgpix::clip_expr::Clip::parse(&text, &names)
+                .err()
+                .map(|e| e.to_string())
         }
-        _ => csgpix::sculpt::parse_path(&text, "p.csv").err().map(|e| e.to_string()),
+        _ => csgpix::sculpt::parse_path(&text, "p.csv")
+            .err()
+            .map(|e| e.to_string()),
     };
     if let Some(e) = err {
         assert!(!e.contains('\n'), "two lines: {e}");
