@@ -53,26 +53,32 @@ pub fn octree_from_scene(
 ) -> csgpix_sculpt::Result<OptimizedOctree> {
     let eval = csgpix_voxel::blist::BlistEval::new(tree);
     let mut b = csgpix_sculpt::octree::optimized::builder(slicer.grid.dims, budget)?;
-    let mut refused = None;
     let streamed = csgpix_voxel::voxelize_streaming(
         slicer,
         Route::Intervals,
         rtl_model::Equations::Derived.set(),
         &eval,
         &|| {},
-        &mut |k, s| {
-            b.push(k, s).map_err(|e| {
-                let line = e.to_string();
-                refused = Some(e);
-                line
-            })
-        },
+        &mut |k, s| b.push(k, s).map_err(Fed::Store),
     );
-    if let Some(e) = refused {
-        return Err(e);
+    match streamed {
+        Err(Fed::Store(e)) => return Err(e),
+        Err(Fed::Voxel(e)) => return Err(csgpix_sculpt::Error::Msg(e.to_string())),
+        Ok(_) => {}
     }
-    streamed.map_err(|e| csgpix_sculpt::Error::Msg(e.to_string()))?;
     b.finish_store()
+}
+
+/// Why feeding a store from the voxelizer stopped: the voxelizer's error or the store's.
+enum Fed {
+    Voxel(csgpix_voxel::Error),
+    Store(csgpix_sculpt::Error),
+}
+
+impl From<csgpix_voxel::Error> for Fed {
+    fn from(e: csgpix_voxel::Error) -> Fed {
+        Fed::Voxel(e)
+    }
 }
 
 /// The README's Rust blocks, run as doctests so its library example stays true.

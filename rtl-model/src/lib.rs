@@ -14,6 +14,8 @@ pub mod comparator;
 pub mod cycle;
 pub mod depgen;
 pub mod depth_word;
+#[cfg(test)]
+mod fixtures;
 pub mod probe;
 pub mod program;
 pub mod select;

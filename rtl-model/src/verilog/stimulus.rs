@@ -238,39 +238,7 @@ fi
 mod tests {
     use super::*;
     use crate::array::program_cycles;
-    use crate::program::Coeffs;
-
-    /// A front and a back plane, a clipping plane with NOT and apply, close and compose.
-    fn program() -> Vec<Op> {
-        let plane = |c0, dx, dy, colour, h| Op::Plane {
-            coeffs: Coeffs { c0, dx, dy },
-            colour,
-            interior: 5,
-            l: false,
-            s: true,
-            h,
-            y: false,
-        };
-        let clip = Op::ClipPlane {
-            coeffs: Coeffs {
-                c0: 60 << 10,
-                dx: 500,
-                dy: 0,
-            },
-            h: true,
-            y: false,
-            x: false,
-        };
-        vec![
-            plane(40 << 10, 300, -200, 2, true),
-            plane(90 << 10, -100, 400, 3, false),
-            Op::Close { l: false },
-            clip,
-            Op::ClipNot,
-            Op::ClipApply,
-            Op::Compose { p: true },
-        ]
-    }
+    use crate::fixtures::program;
 
     /// The size `export-verilog --scene` bounds before simulating is the file's to the byte,
     /// a line per pixel per clock and for the idle clock; the stream has as many words; the

@@ -84,3 +84,48 @@ pub fn walk_surface<F: FnMut([u32; 3], u8)>(table: &KeyTable, depth: u32, mut f:
         cell::hashed_leaf(e.key, e.val, depth, &mut f);
     }
 }
+
+/// `VoxelStore` and `SurfaceWalk` of a hash-based octree (a type with `depth`, `table` and
+/// `internal` fields): every reading goes through this module, so the two stores differ only
+/// in their [`StoreKind`](super::StoreKind).
+macro_rules! hashed_store {
+    ($store:ty, $kind:expr) => {
+        impl super::VoxelStore for $store {
+            fn kind(&self) -> super::StoreKind {
+                $kind
+            }
+
+            fn depth(&self) -> u32 {
+                self.depth
+            }
+
+            fn cell(&self, x: u32, y: u32, z: u32) -> u8 {
+                super::hashed::find(&self.table, self.depth, x, y, z).map_or(0, |(_, v)| v)
+            }
+
+            fn node_count(&self) -> usize {
+                self.table.len()
+            }
+
+            fn internal_count(&self) -> usize {
+                self.internal
+            }
+
+            fn bytes(&self) -> usize {
+                self.table.bytes()
+            }
+
+            fn for_each_leaf(&self, f: &mut dyn FnMut(super::key::Key, u8)) {
+                super::hashed::leaves(&self.table).for_each(|e| f(e.key, e.val));
+            }
+        }
+
+        impl super::SurfaceWalk for $store {
+            /// One linear pass over the table's entries (internal nodes skipped).
+            fn walk_surface<F: FnMut([u32; 3], u8)>(&self, f: F) {
+                super::hashed::walk_surface(&self.table, self.depth, f);
+            }
+        }
+    };
+}
+pub(crate) use hashed_store;

@@ -11,7 +11,7 @@ use super::build::Merge;
 use super::hashed::{self, Levels};
 use super::key::{self, Key, ROOT};
 use super::table::{Entry, KeyTable};
-use super::{Finish, StoreKind, SurfaceWalk, VoxelStore};
+use super::{Finish, StoreKind};
 use crate::{Error, Result};
 
 /// A node that has children, while building.
@@ -152,42 +152,7 @@ impl OptimizedOctree {
     }
 }
 
-impl VoxelStore for OptimizedOctree {
-    fn kind(&self) -> StoreKind {
-        StoreKind::Octree
-    }
-
-    fn depth(&self) -> u32 {
-        self.depth
-    }
-
-    fn cell(&self, x: u32, y: u32, z: u32) -> u8 {
-        self.find(x, y, z).map_or(0, |(_, v)| v)
-    }
-
-    fn node_count(&self) -> usize {
-        self.table.len()
-    }
-
-    fn internal_count(&self) -> usize {
-        self.internal
-    }
-
-    fn bytes(&self) -> usize {
-        self.table.bytes()
-    }
-
-    fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8)) {
-        hashed::leaves(&self.table).for_each(|e| f(e.key, e.val));
-    }
-}
-
-impl SurfaceWalk for OptimizedOctree {
-    /// One linear pass over the table's entries (seed 000 §4.3.4: only leaves are stored).
-    fn walk_surface<F: FnMut([u32; 3], u8)>(&self, f: F) {
-        hashed::walk_surface(&self.table, self.depth, f);
-    }
-}
+hashed::hashed_store!(OptimizedOctree, StoreKind::Octree);
 
 /// A builder of the optimized octree over a volume of `dims`, fed slice by slice in order of
 /// k ([`StoreBuilder::push`](super::StoreBuilder::push)) so that no dense volume is made

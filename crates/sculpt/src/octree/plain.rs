@@ -7,7 +7,7 @@ use super::hashed::{self, Levels};
 use super::key::{self, Key, ROOT};
 use super::optimized::MIXED;
 use super::table::{Entry, KeyTable};
-use super::{Finish, StoreKind, SurfaceWalk, VoxelStore};
+use super::{Finish, StoreKind};
 use crate::Result;
 
 /// The plain hash-based octree.
@@ -81,39 +81,4 @@ impl PlainHashOctree {
     }
 }
 
-impl VoxelStore for PlainHashOctree {
-    fn kind(&self) -> StoreKind {
-        StoreKind::Hash
-    }
-
-    fn depth(&self) -> u32 {
-        self.depth
-    }
-
-    fn cell(&self, x: u32, y: u32, z: u32) -> u8 {
-        self.find(x, y, z).map_or(0, |(_, v)| v)
-    }
-
-    fn node_count(&self) -> usize {
-        self.table.len()
-    }
-
-    fn internal_count(&self) -> usize {
-        self.internal
-    }
-
-    fn bytes(&self) -> usize {
-        self.table.bytes()
-    }
-
-    fn for_each_leaf(&self, f: &mut dyn FnMut(Key, u8)) {
-        hashed::leaves(&self.table).for_each(|e| f(e.key, e.val));
-    }
-}
-
-impl SurfaceWalk for PlainHashOctree {
-    /// One linear pass over the table's entries, internal nodes skipped.
-    fn walk_surface<F: FnMut([u32; 3], u8)>(&self, f: F) {
-        hashed::walk_surface(&self.table, self.depth, f);
-    }
-}
+hashed::hashed_store!(PlainHashOctree, StoreKind::Hash);
