@@ -209,8 +209,8 @@ pub fn voxelize(
 ) -> Result<(Volume, Work)> {
     use rayon::prelude::*;
     let source = source_for(slicer, route, &set)?;
-    let mut work = counted_work(slicer, &set)?;
     let [nx, ny, nz] = slicer.grid.dims;
+    let mut work = counted_work(slicer, &set, nz)?;
     // Chunks of consecutive slabs, a few per thread, so masks can be swept forward; each
     // chunk's slices go straight into their place in the volume (one volume held, not two).
     let chunk = (nz / (4 * rayon::current_num_threads())).max(1);
@@ -283,15 +283,41 @@ pub fn voxelize_streaming<E: From<crate::Error>>(
     tick: &(dyn Fn() + Sync),
     sink: &mut SliceSink<E>,
 ) -> Result<Work, E> {
-    use rayon::prelude::*;
-    let source = source_for(slicer, route, &set)?;
-    let mut work = counted_work(slicer, &set)?;
     let nz = slicer.grid.dims[2];
+    voxelize_slabs(slicer, route, set, eval, tick, 0..nz, sink)
+}
+
+/// [`voxelize_streaming`] over the slabs `slabs` of the grid only (k0..k1, k1 ≤ NZ): the
+/// slices handed to `sink` (with their k in the whole grid) are those of the whole run, and
+/// [`Work`] counts these slabs' frames alone. What one task of a run split by slab ranges
+/// does (docs/scale-out.md); the masks of slab k0 are built from their source directly, so
+/// no slab before it is computed.
+pub fn voxelize_slabs<E: From<crate::Error>>(
+    slicer: &Slicer,
+    route: Route,
+    set: EquationSet,
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    slabs: std::ops::Range<usize>,
+    sink: &mut SliceSink<E>,
+) -> Result<Work, E> {
+    use rayon::prelude::*;
+    let nz = slicer.grid.dims[2];
+    if slabs.start > slabs.end || slabs.end > nz {
+        return Err(crate::Error::SlabRange {
+            start: slabs.start,
+            end: slabs.end,
+            slabs: nz,
+        }
+        .into());
+    }
+    let source = source_for(slicer, route, &set)?;
+    let mut work = counted_work(slicer, &set, slabs.len())?;
     let threads = rayon::current_num_threads();
-    let chunk = (nz / (4 * threads)).clamp(1, 8);
+    let chunk = (slabs.len() / (4 * threads)).clamp(1, 8);
     let batch = chunk * threads;
-    for start in (0..nz).step_by(batch) {
-        let end = (start + batch).min(nz);
+    for start in slabs.clone().step_by(batch) {
+        let end = (start + batch).min(slabs.end);
         let chunks: Vec<Chunk> = (start..end)
             .step_by(chunk)
             .collect::<Vec<_>>()
@@ -362,11 +388,12 @@ fn convex_source(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Con
     })
 }
 
-/// The clocks and frames of a run, counted from the programs: the same on every route.
-fn counted_work(slicer: &Slicer, set: &EquationSet) -> Result<Work> {
+/// The clocks and frames of a run over `slabs` slabs, counted from the programs: the same on
+/// every route.
+fn counted_work(slicer: &Slicer, set: &EquationSet, slabs: usize) -> Result<Work> {
     let cfg = slicer.config();
-    let [nx, ny, nz] = slicer.grid.dims;
-    let prims = slicer.lists.len();
+    let [nx, ny, _] = slicer.grid.dims;
+    let (prims, nz) = (slicer.lists.len(), slabs);
     let mut cycles = 0;
     for p in 0..prims {
         cycles +=

@@ -45,6 +45,16 @@ pub enum Error {
         /// Imports given.
         loaded: usize,
     },
+    /// A slab range that is empty-reversed or runs past the grid.
+    #[error("slabs {start}..{end}: the grid has slabs 0..{slabs}")]
+    SlabRange {
+        /// First slab asked for.
+        start: usize,
+        /// One past the last.
+        end: usize,
+        /// The grid's slabs (NZ).
+        slabs: usize,
+    },
     /// A problem of this crate's own, one line.
     #[error("{0}")]
     Msg(String),
