@@ -15,7 +15,7 @@ use rtl_model::{ArrayConfig, CycleArray, Equations, WordFormat};
 
 use super::array_args::{parse_size, parse_word};
 use super::memory::MaxMemory;
-use super::scenes::Scene;
+use csgpix::draw::scenes::Scene;
 
 #[derive(clap::Args, Debug)]
 #[command(
@@ -124,7 +124,8 @@ fn program(a: &Args, cfg: &ArrayConfig) -> Result<Vec<Op>, String> {
         ));
     }
     let view = super::ViewArg::default().into();
-    let scene = Scene::load(&a.scene, a.clip.as_deref(), view, cfg)?;
+    let scene =
+        Scene::load(&a.scene, a.clip.as_deref(), view, cfg).map_err(super::lib_errors::load)?;
     check_window(&scene, cfg, a.origin).map_err(|(i, e)| scene.locate(i, &e))?;
     let mut ops = match &scene.clip {
         None => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),

@@ -15,6 +15,16 @@ pub fn draw(e: DrawError) -> String {
     }
 }
 
+/// A scene that could not be loaded for drawing: a projection too deep for the word names
+/// `--word` and `--size` as [`draw`] does.
+pub fn load(e: csgpix::draw::scenes::LoadError) -> String {
+    use csgpix::draw::scenes::LoadError;
+    match e {
+        LoadError::Draw { path, error } => format!("{path}: {}", draw(error)),
+        e => e.to_string(),
+    }
+}
+
 /// A voxel store's or sculpting's error; a store over its budget names `--res` and
 /// `--max-memory`, a bad tool `--tool`, a bad stiffness `--stiffness`.
 pub fn sculpt(e: SculptError) -> String {

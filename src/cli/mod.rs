@@ -9,7 +9,6 @@ mod memory;
 mod phantom;
 mod render;
 mod requirements;
-mod scenes;
 mod sculpt;
 mod study;
 mod throughput;

@@ -16,8 +16,8 @@ use rtl_model::Array;
 use serde::Serialize;
 
 use super::array_args::{ArrayArgs, Model};
-use super::scenes::Scene;
 use super::ViewArg;
+use csgpix::draw::scenes::Scene;
 use csgpix::float::{self, ScreenRule};
 
 #[derive(clap::Args, Debug)]
@@ -92,7 +92,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     a.array
         .mem
         .check(memory_estimate(&a, &cfg), "this render", "lower --size")?;
-    let scene = Scene::load(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)?;
+    let scene = Scene::load(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)
+        .map_err(super::lib_errors::load)?;
     csgpix::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
         .map_err(|(i, e)| scene.locate(i, &e))?;
     let compiled = match (&scene.clip, scene.empty) {

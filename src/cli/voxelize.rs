@@ -145,11 +145,7 @@ impl GridArgs {
             voxel: self.voxel,
             pad: self.pad,
         };
-        let (lo, hi) = match self.bounds {
-            Some(b) => b,
-            None => scene.bounds().map_err(flag_message)?,
-        };
-        Ok(spec.grid(lo, hi)?)
+        scene.grid_over(&spec, self.bounds).map_err(flag_message)
     }
 
     /// Whether any grid option was given (they apply to scenes only).

@@ -34,6 +34,7 @@ pub mod palette;
 pub mod panels;
 pub mod polygon;
 pub mod project;
+pub mod scenes;
 pub mod throughput;
 
 pub use error::{Error, Result};

@@ -32,6 +32,7 @@ use csgpix_scene::trimesh::TriMesh;
 use csgpix_scene::Location;
 
 /// What a sampled primitive is.
+#[derive(Clone)]
 pub enum Shape {
     /// A dataset and its iso value; `to_file` maps scene points into the dataset's own space.
     Dataset {
@@ -47,6 +48,7 @@ pub enum Shape {
 }
 
 /// A loaded import.
+#[derive(Clone)]
 pub struct Sampled {
     /// What it is.
     pub shape: Shape,
@@ -135,6 +137,7 @@ fn corners(lo: DVec3, hi: DVec3) -> impl Iterator<Item = DVec3> {
 }
 
 /// A scene and its loaded imports (`sampled[j]` is the primitive `solids.len() + j`).
+#[derive(Clone)]
 pub struct Loaded {
     /// The scene: its solids, its imports named, its tree.
     pub scene: CsgScene,
@@ -147,6 +150,19 @@ impl Loaded {
     pub fn grid(&self, dims: [usize; 3]) -> Result<Grid> {
         let (lo, hi) = self.bounds()?;
         Ok(Grid::new(dims, lo, hi)?)
+    }
+
+    /// The grid `spec` over `bounds`, or over the scene's own box when none is given.
+    pub fn grid_over(
+        &self,
+        spec: &csgpix_scene::grid::GridSpec,
+        bounds: Option<(DVec3, DVec3)>,
+    ) -> Result<Grid> {
+        let (lo, hi) = match bounds {
+            Some(b) => b,
+            None => self.bounds()?,
+        };
+        Ok(spec.grid(lo, hi)?)
     }
 
     /// The box around every primitive (subtracted ones too); [`Error::NeedsBounds`] when

@@ -1,16 +1,44 @@
-//! The SCENE arguments of `render`: display-list files (§5.2) with an optional `--clip`
-//! function, or one OpenSCAD `.csg` file projected onto the array with its tree as the
-//! clipping function.
+//! What a render draws: display-list files (§5.2) with an optional clipping function, or one
+//! OpenSCAD `.csg` file projected onto the array with its tree as the clipping function
+//! (§5.2.1). The `render` and `export-verilog` commands and the Python binding load scenes
+//! here, so a compile error points into the file it came from the same way in each.
 
 use std::path::{Path, PathBuf};
 
-use csgpix::clip_expr::Clip;
-use csgpix::compile::CompileError;
-use csgpix::display_list::{field_position, DisplayList};
-use csgpix::project::{project, Projected, View};
-use csgpix::scad::parse_csg;
-use csgpix::solid::CsgScene;
+use crate::compile::CompileError;
+use crate::project::{project, Projected, View};
+use csgpix_scene::clip_expr::Clip;
+use csgpix_scene::display_list::{field_position, DisplayList};
+use csgpix_scene::scad::parse_csg;
+use csgpix_scene::solid::CsgScene;
 use rtl_model::ArrayConfig;
+
+/// Why a scene could not be loaded.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum LoadError {
+    /// A problem with the files or the clipping function, one line (with `file:line:col`
+    /// where it has a place).
+    #[error("{0}")]
+    Msg(String),
+    /// A scene file could not be read (its `file:line:col` kept in the error).
+    #[error(transparent)]
+    Scene(#[from] csgpix_scene::Error),
+    /// Projecting the `.csg` scene at `path` failed (a caller may word
+    /// [`crate::Error::DeeperThanMaxdepth`] in terms of its own options).
+    #[error("{path}: {error}")]
+    Draw {
+        /// The scene file.
+        path: String,
+        /// What went wrong.
+        error: crate::Error,
+    },
+}
+
+impl From<String> for LoadError {
+    fn from(s: String) -> LoadError {
+        LoadError::Msg(s)
+    }
+}
 
 /// Where a display list came from, so a compile error can point into the file.
 enum Origin {
@@ -22,8 +50,9 @@ enum Origin {
 
 /// Display lists ready to compile, and what to do with them.
 pub struct Scene {
+    /// The objects, one display list each.
     pub lists: Vec<DisplayList>,
-    /// The clipping function: `--clip`, or the `.csg` tree (None: compose every list).
+    /// The clipping function: the one given, or the `.csg` tree (None: compose every list).
     pub clip: Option<Clip>,
     /// True when a `.csg` tree evaluates to nothing: the image is background.
     pub empty: bool,
@@ -33,37 +62,36 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// Read the SCENE arguments for an array of configuration `cfg`.
+    /// Read the scene files `paths` for an array of configuration `cfg`: display lists
+    /// clipped by `clip` (objects named A, B, … in order), or one `.csg`/`.scad` file.
     pub fn load(
         paths: &[PathBuf],
         clip: Option<&str>,
         view: View,
         cfg: &ArrayConfig,
-    ) -> Result<Scene, String> {
+    ) -> Result<Scene, LoadError> {
         let is_csg = |p: &PathBuf| {
             p.extension()
                 .is_some_and(|e| e.eq_ignore_ascii_case("csg") || e.eq_ignore_ascii_case("scad"))
         };
         match paths.iter().position(is_csg) {
             None => Self::load_lists(paths, clip),
-            Some(_) if paths.len() > 1 => {
-                Err("a .csg scene must be the only SCENE (its tree combines its solids)".into())
-            }
-            Some(_) if clip.is_some() => Err(
+            Some(_) if paths.len() > 1 => Err(LoadError::Msg(
+                "a .csg scene must be the only SCENE (its tree combines its solids)".into(),
+            )),
+            Some(_) if clip.is_some() => Err(LoadError::Msg(
                 "--clip applies to display lists; a .csg scene's tree is its clipping function"
                     .into(),
-            ),
+            )),
             Some(_) => Self::load_csg(&paths[0], view, cfg),
         }
     }
 
-    fn load_lists(paths: &[PathBuf], clip: Option<&str>) -> Result<Scene, String> {
+    fn load_lists(paths: &[PathBuf], clip: Option<&str>) -> Result<Scene, LoadError> {
         let (mut lists, mut origins) = (vec![], vec![]);
         for p in paths {
             let text = read(p)?;
-            lists.push(
-                DisplayList::parse(&text, &p.display().to_string()).map_err(|e| e.to_string())?,
-            );
+            lists.push(DisplayList::parse(&text, &p.display().to_string())?);
             origins.push(Origin::List {
                 path: p.clone(),
                 text,
@@ -86,13 +114,16 @@ impl Scene {
         })
     }
 
-    fn load_csg(path: &Path, view: View, cfg: &ArrayConfig) -> Result<Scene, String> {
-        let text = csgpix::scad::scene_text(path)?;
-        let scene = parse_csg(&text, &path.display().to_string()).map_err(|e| e.to_string())?;
+    fn load_csg(path: &Path, view: View, cfg: &ArrayConfig) -> Result<Scene, LoadError> {
+        let text = csgpix_scene::scad::scene_text(path)?;
+        let scene = parse_csg(&text, &path.display().to_string())?;
         scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);
-        let Projected { lists, clip } = project(&scene, view, w, h, &cfg.fmt)
-            .map_err(|e| format!("{}: {}", path.display(), super::lib_errors::draw(e)))?;
+        let Projected { lists, clip } =
+            project(&scene, view, w, h, &cfg.fmt).map_err(|error| LoadError::Draw {
+                path: path.display().to_string(),
+                error,
+            })?;
         let origins = scene
             .solids
             .iter()
@@ -112,7 +143,7 @@ impl Scene {
 
     /// A compile error on list `i`, as `file:line:col: message`.
     pub fn locate(&self, i: usize, e: &CompileError) -> String {
-        use csgpix::compile::{WHOLE_LIST, WHOLE_PROGRAM};
+        use crate::compile::{WHOLE_LIST, WHOLE_PROGRAM};
         match (&self.origins[i], e.field) {
             // Display lists are clipped by --clip: the whole program is its.
             (Origin::List { .. }, WHOLE_PROGRAM) => return format!("--clip: {}", e.msg),
@@ -139,8 +170,8 @@ impl Scene {
     }
 }
 
-fn read(p: &Path) -> Result<String, String> {
-    Ok(csgpix::input::read_text(p)?)
+fn read(p: &Path) -> Result<String, LoadError> {
+    Ok(csgpix_scene::input::read_text(p)?)
 }
 
 /// The name `--clip` uses for the `i`-th object: A … Z, then O26, O27, …
