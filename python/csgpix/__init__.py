@@ -1,0 +1,144 @@
+"""csgpix from Python: the simulator of a 2D CSG pixel-processor array (seed 001).
+
+Load a scene and voxelize it into a numpy array::
+
+    import csgpix
+    scene = csgpix.load("vectors/scenes/figure-5.2.csg")
+    vol = csgpix.voxelize(scene, 64)            # Volume: .data[k, j, i], .origin, .spacing
+    print(vol.data.shape, vol.origin, vol.spacing, int((vol.data > 0).sum()))
+
+Compile a scene for the array and render it, or step the array's models::
+
+    prog = csgpix.compile("vectors/thesis/cube.dl", 256, 256)
+    img = csgpix.render(prog, model="cycle")    # Image: .codes[y, x], .rgb(), .cycles
+
+Every error is a :class:`CsgpixError` (a ``ValueError``) whose message is the command line's
+one line, with ``file``, ``line`` and ``col`` where the problem has a place in a file.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _native
+from ._native import CsgpixError, Program, Scene, compile, load, load_expr, verify_select
+
+__all__ = [
+    "CsgpixError",
+    "Image",
+    "Program",
+    "Scene",
+    "Volume",
+    "compile",
+    "load",
+    "load_expr",
+    "palette",
+    "render",
+    "verify_select",
+    "voxelize",
+]
+
+Vec3 = Tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Volume:
+    """Voxels of a scene: ``data[k - z0, j, i]`` is voxel (i, j, k) of the grid (uint8 colour
+    codes, 0 empty; grey values 16..255 with ``grey`` or ``blend``).
+
+    ``origin`` is the centre of voxel (0, 0, 0) of the whole grid and ``spacing`` the voxel's
+    size, both (x, y, z) in scene units: voxel (i, j, k) is centred on
+    ``origin + (i, j, k) * spacing``. ``dims`` is the whole grid's (NX, NY, NZ) and ``z`` the
+    slab range held, (z0, z1).
+    """
+
+    data: np.ndarray
+    origin: Vec3
+    spacing: Vec3
+    dims: Tuple[int, int, int]
+    z: Tuple[int, int]
+
+    def __array__(self, dtype=None, copy=None):
+        return self.data if dtype is None else self.data.astype(dtype)
+
+    def centre(self, i: int, j: int, k: int) -> Vec3:
+        """Centre of voxel (i, j, k) of the grid, in scene units."""
+        return tuple(o + n * s for o, n, s in zip(self.origin, (i, j, k), self.spacing))
+
+
+def voxelize(
+    scene: Union[Scene, str],
+    res: Union[int, Tuple[int, int, int], None] = None,
+    *,
+    voxel: Optional[float] = None,
+    pad: int = 0,
+    bounds: Optional[Tuple[Vec3, Vec3]] = None,
+    sampling: str = "centre",
+    model: str = "word",
+    route: str = "intervals",
+    eval: str = "blist",
+    grey: bool = False,
+    blend: Optional[str] = None,
+    word: str = "10/10/11",
+    z: Optional[Tuple[int, int]] = None,
+) -> Volume:
+    """Voxelize ``scene`` (a :class:`Scene` or a ``.csg``/``.scad`` path) as
+    ``csgpix voxelize`` does: ``res`` voxels per axis (N or (NX, NY, NZ)) or cubic voxels of
+    side ``voxel``, ``pad`` empty voxels around, over ``bounds`` or the scene's box.
+
+    ``z=(k0, k1)`` voxelizes slabs k0..k1 of that grid only: the same voxels as those slabs
+    of the whole volume, computed without the others. ``model`` is ``cycle``, ``word`` or
+    ``float``; ``route`` (word) ``intervals`` or ``array``; ``eval`` ``blist``, ``tree`` or
+    ``stack``; ``sampling`` ``centre`` or ``slab`` (docs/voxelization.md).
+    """
+    if not isinstance(scene, Scene):
+        scene = load(scene)
+    data, origin, spacing, dims = _native.voxelize(
+        scene, res, voxel=voxel, pad=pad, bounds=bounds, sampling=sampling, model=model,
+        route=route, eval=eval, grey=grey, blend=blend, word=word, z=z,
+    )
+    k0, k1 = z if z is not None else (0, dims[2])
+    return Volume(data, tuple(origin), tuple(spacing), tuple(dims), (k0, k1))
+
+
+@dataclass(frozen=True)
+class Image:
+    """A rendered frame: ``codes[y, x]`` the colour code (G) of every pixel (uint8, 0
+    background), ``cycles`` the array's clocks (0 for the ``float`` reference)."""
+
+    codes: np.ndarray
+    cycles: int
+
+    def __array__(self, dtype=None, copy=None):
+        return self.codes if dtype is None else self.codes.astype(dtype)
+
+    def rgb(self) -> np.ndarray:
+        """The picture the command line writes: shape (height, width, 3), uint8."""
+        return palette()[self.codes]
+
+
+def render(
+    program: Union[Program, str, Sequence[str]],
+    width: int = 256,
+    height: int = 256,
+    *,
+    model: str = "word",
+    equations: str = "derived",
+    clip: Optional[str] = None,
+    view: str = "iso",
+) -> Image:
+    """Render a compiled :class:`Program`, or compile the scene path(s) first (display lists
+    ``.dl``, clipped by ``clip`` over A, B, ...; or one ``.csg``/``.scad`` along ``view``),
+    on the ``cycle`` or ``word`` model of the array or the ``float`` reference."""
+    if not isinstance(program, Program):
+        program = compile(program, width, height, clip=clip, view=view)
+    codes, cycles = _native.render(program, model, equations)
+    return Image(codes, cycles)
+
+
+def palette() -> np.ndarray:
+    """RGB of every colour code: shape (256, 3), uint8."""
+    return _native.palette()

@@ -1,0 +1,230 @@
+//! Drawing on the array (seed 001 Ch. 2, §5.2): `compile` a scene to the array's program,
+//! `render` it to a numpy image of colour codes, `palette` them, and `verify_select` the
+//! select logic against the golden vectors (§2.3.3).
+
+use std::path::PathBuf;
+
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use csgpix_draw::compile::{check_window, clip_scene_ops, scene_ops};
+use csgpix_draw::float::{self, ScreenRule};
+use csgpix_draw::project::View;
+use csgpix_draw::scenes::Scene;
+use csgpix_draw::Model;
+use rtl_model::program::{CReg, Op};
+use rtl_model::select::pla::Pla;
+use rtl_model::select::verify::verify_table;
+use rtl_model::select::GOLDEN;
+use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
+
+use crate::errors::{load, text};
+use crate::voxel::parse_word;
+
+/// The array's program for a scene, and the configuration it was compiled for.
+#[pyclass(module = "csgpix._native", frozen)]
+pub struct Program {
+    pub ops: Vec<Op>,
+    pub cfg: ArrayConfig,
+    /// The scene as loaded (kept for the float reference).
+    pub scene: Scene,
+}
+
+#[pymethods]
+impl Program {
+    /// Operations of the program (planes, closes, clip planes, composes, ...).
+    fn __len__(&self) -> usize {
+        self.ops.len()
+    }
+
+    /// The array's width and height in pixels.
+    #[getter]
+    fn size(&self) -> (usize, usize) {
+        (self.cfg.width, self.cfg.height)
+    }
+
+    /// Clipping-stack levels the program needs.
+    #[getter]
+    fn stack_levels(&self) -> PyResult<usize> {
+        rtl_model::array::check_program(&self.ops, usize::MAX).map_err(|e| text(e.to_string()))
+    }
+
+    /// Clocks the program takes on the array with `equations` (`derived` or `printed`),
+    /// DEPGEN's fill and the flush window included.
+    #[pyo3(signature = (equations="derived"))]
+    fn cycles(&self, equations: &str) -> PyResult<u64> {
+        let set = equation_set(equations)?;
+        Ok(rtl_model::array::program_cycles(&self.cfg, &set, &self.ops))
+    }
+
+    /// One line per operation, as the models print them.
+    fn ops(&self) -> Vec<String> {
+        self.ops.iter().map(|o| format!("{o:?}")).collect()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Program({} ops on a {}x{} array)",
+            self.ops.len(),
+            self.cfg.width,
+            self.cfg.height
+        )
+    }
+}
+
+/// `derived` or `printed` select equations (§2.3.3).
+pub fn equation_set(name: &str) -> PyResult<rtl_model::EquationSet> {
+    match name {
+        "derived" => Ok(Equations::Derived.set()),
+        "printed" => Ok(Equations::Printed.set()),
+        e => Err(text(format!("equations {e:?}: `derived` or `printed`"))),
+    }
+}
+
+fn view(name: &str) -> PyResult<View> {
+    match name {
+        "iso" => Ok(View::Iso),
+        "top" => Ok(View::Top),
+        "front" => Ok(View::Front),
+        v => Err(text(format!("view {v:?}: `iso`, `top` or `front`"))),
+    }
+}
+
+/// The scene's paths: one path or a list of them.
+fn paths(scene: &Bound<'_, PyAny>) -> PyResult<Vec<PathBuf>> {
+    if let Ok(p) = scene.extract::<PathBuf>() {
+        return Ok(vec![p]);
+    }
+    scene
+        .extract::<Vec<PathBuf>>()
+        .map_err(|_| text("scene: a path or a list of paths".into()))
+}
+
+/// Compile display lists (`.dl`, composed, or clipped by `clip` over objects A, B, … in
+/// order) or one `.csg`/`.scad` scene (projected along `view`) for a `width`×`height` array.
+#[pyfunction]
+#[pyo3(signature = (scene, width=256, height=256, *, clip=None, view="iso", word="10/10/11"))]
+pub fn compile(
+    scene: &Bound<'_, PyAny>,
+    width: usize,
+    height: usize,
+    clip: Option<&str>,
+    view: &str,
+    word: &str,
+) -> PyResult<Program> {
+    let mut cfg = ArrayConfig::new(width, height);
+    cfg.fmt = parse_word(word)?;
+    cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
+    cfg.check().map_err(text)?;
+    let scene = Scene::load(&paths(scene)?, clip, self::view(view)?, &cfg).map_err(load)?;
+    check_window(&scene.lists, &cfg.fmt, width, height)
+        .map_err(|(i, e)| text(scene.locate(i, &e)))?;
+    let ops = match (&scene.clip, scene.empty) {
+        (_, true) => Ok(vec![]),
+        (None, false) => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
+        (Some(expr), false) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
+    }
+    .map_err(|(i, e)| text(scene.locate(i, &e)))?;
+    cfg.stack_depth = cfg.stack_depth.max(
+        rtl_model::array::check_program(&ops, usize::MAX).map_err(|e| text(e.to_string()))?,
+    );
+    Ok(Program { ops, cfg, scene })
+}
+
+/// Run `program` on a model (`cycle`, `word` or the `float` reference) and return the image:
+/// every pixel's colour code (G), shape (height, width), uint8, and the clocks taken.
+#[pyfunction]
+#[pyo3(signature = (program, model="word", equations="derived"))]
+pub fn render<'py>(
+    py: Python<'py>,
+    program: &Program,
+    model: &str,
+    equations: &str,
+) -> PyResult<(Bound<'py, PyAny>, u64)> {
+    let model: Model = model.parse().map_err(text)?;
+    let set = equation_set(equations)?;
+    let cfg = program.cfg;
+    let (codes, cycles) = py.detach(|| -> Result<(Vec<u8>, u64), String> {
+        if model == Model::Float {
+            let s = &program.scene;
+            let f = float::render(
+                &s.lists,
+                s.clip.as_ref(),
+                cfg.width,
+                cfg.height,
+                &cfg.fmt,
+                ScreenRule::Exact,
+            );
+            return Ok((f.colour.iter().map(|&c| c as u8).collect(), 0));
+        }
+        let mut arr: Box<dyn Array> = match model {
+            Model::Cycle => Box::new(CycleArray::new(cfg, set)),
+            _ => Box::new(WordArray::new(cfg, set)),
+        };
+        arr.run(&program.ops).map_err(|e| e.to_string())?;
+        let codes = (0..cfg.pixels())
+            .map(|i| arr.pixel(i % cfg.width, i / cfg.width).creg(CReg::G) as u8)
+            .collect();
+        Ok((codes, arr.cycles()))
+    })
+    .map_err(text)?;
+    let img = PyArray1::from_vec(py, codes).reshape([cfg.height, cfg.width])?;
+    Ok((img.into_any(), cycles))
+}
+
+/// The palette's RGB of every colour code, shape (256, 3), uint8: `palette()[image]` is
+/// the picture the command line writes.
+#[pyfunction]
+pub fn palette(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+    let rgb: Vec<u8> = (0..256u32)
+        .flat_map(csgpix_draw::palette::rgb)
+        .collect();
+    Ok(PyArray1::from_vec(py, rgb).reshape([256, 3])?.into_any())
+}
+
+/// Check the select equations (`derived` or `printed`) on every care row of the golden
+/// vectors (§2.3.3) — the built-in ones, or the `.pla` files of directory `vectors`. One
+/// dict per signal: `signal`, `rows`, `mismatches` (dicts of `inputs`, `expected`, `got`,
+/// `case`: the rows where the equation disagrees).
+#[pyfunction]
+#[pyo3(signature = (equations="derived", vectors=None))]
+pub fn verify_select<'py>(
+    py: Python<'py>,
+    equations: &str,
+    vectors: Option<PathBuf>,
+) -> PyResult<Vec<Bound<'py, PyDict>>> {
+    let set = equation_set(equations)?;
+    let mut out = vec![];
+    for (t, builtin) in GOLDEN {
+        let (name, body) = match &vectors {
+            Some(d) => {
+                let p = d.join(format!("{}.pla", t.name()));
+                let body = csgpix_scene::input::read_text(&p).map_err(crate::errors::scene)?;
+                (p.display().to_string(), body)
+            }
+            None => (format!("vectors/select/{}.pla", t.name()), builtin.to_string()),
+        };
+        let pla = Pla::parse(&body).map_err(|e| text(format!("{name}:{e}")))?;
+        for r in verify_table(&set, t, &pla).map_err(|e| text(e.to_string()))? {
+            let d = PyDict::new(py);
+            d.set_item("signal", &r.signal)?;
+            d.set_item("rows", r.rows)?;
+            let rows = r
+                .mismatches
+                .iter()
+                .map(|m| {
+                    let row = PyDict::new(py);
+                    row.set_item("inputs", &m.inputs)?;
+                    row.set_item("expected", m.expected)?;
+                    row.set_item("got", m.got)?;
+                    row.set_item("case", &m.case)?;
+                    Ok(row)
+                })
+                .collect::<PyResult<Vec<_>>>()?;
+            d.set_item("mismatches", rows)?;
+            out.push(d);
+        }
+    }
+    Ok(out)
+}

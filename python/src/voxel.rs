@@ -1,0 +1,320 @@
+//! Scenes and voxelization (seed 001 Ch. 3-4): `load`, `load_expr`, and `voxelize` over the
+//! whole grid or a slab range, into a numpy array indexed `[k, j, i]` (z, y, x).
+
+use std::path::PathBuf;
+
+use glam::DVec3;
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::prelude::*;
+
+use csgpix_draw::Model;
+use csgpix_voxel::blend::{BlendEval, Union};
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::evaluate::{StackEval, TreeEval};
+use csgpix_voxel::sampled::{load_scene, scene_from_expr, Binding, Loaded};
+use csgpix_voxel::slice::SliceEval;
+use csgpix_voxel::{voxelize_slabs, Grid, GridSpec, Route, Sampling, Slicer, SlicerOptions};
+use rtl_model::{Equations, WordFormat};
+
+use crate::errors::{text, voxel};
+
+/// A scene ready to voxelize: a `.csg`/`.scad` file and its imports, or a CSG expression
+/// over named files.
+#[pyclass(module = "csgpix._native", frozen)]
+pub struct Scene {
+    pub loaded: Loaded,
+    /// How messages name the scene.
+    #[pyo3(get)]
+    pub name: String,
+}
+
+#[pymethods]
+impl Scene {
+    /// Primitives: convex solids, then imports (datasets and meshes).
+    #[getter]
+    fn primitives(&self) -> usize {
+        self.loaded.scene.primitive_count()
+    }
+
+    /// The box around every primitive, `((x0, y0, z0), (x1, y1, z1))` in scene units.
+    #[getter]
+    fn bounds(&self) -> PyResult<([f64; 3], [f64; 3])> {
+        let (lo, hi) = self.loaded.bounds().map_err(voxel)?;
+        Ok((lo.to_array(), hi.to_array()))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Scene({:?}, primitives={})",
+            self.name,
+            self.loaded.scene.primitive_count()
+        )
+    }
+}
+
+/// Read a `.csg` scene (or a `.scad` one through OpenSCAD) and the files it imports.
+#[pyfunction]
+pub fn load(path: PathBuf) -> PyResult<Scene> {
+    let loaded = load_scene(&path).map_err(voxel)?;
+    Ok(Scene {
+        loaded,
+        name: path.display().to_string(),
+    })
+}
+
+/// A scene from a CSG expression (`+` union, `.` intersection, `-` difference, `!`
+/// complement) over names, each bound to a file: a `.csg` scene, a closed `.stl`/`.obj` mesh,
+/// or a `.nrrd` dataset given as `(path, threshold)`.
+#[pyfunction]
+pub fn load_expr(expr: &str, prims: Vec<(String, Bound<'_, PyAny>)>) -> PyResult<Scene> {
+    let bindings = prims
+        .into_iter()
+        .map(|(name, v)| binding(name, &v))
+        .collect::<PyResult<Vec<_>>>()?;
+    let loaded = scene_from_expr(expr, &bindings).map_err(voxel)?;
+    Ok(Scene {
+        loaded,
+        name: format!("<expr {expr:?}>"),
+    })
+}
+
+fn binding(name: String, v: &Bound<'_, PyAny>) -> PyResult<Binding> {
+    let (file, threshold) = match v.extract::<(PathBuf, f64)>() {
+        Ok((f, t)) => (f, Some(t)),
+        Err(_) => (v.extract::<PathBuf>().map_err(|_| {
+            text(format!(
+                "primitive `{name}`: bind it to a path, or to (path, threshold) for a dataset"
+            ))
+        })?, None),
+    };
+    Ok(Binding {
+        name,
+        file,
+        threshold,
+    })
+}
+
+/// The grid and sampling options of a voxelization.
+pub struct GridOptions {
+    pub res: Option<[usize; 3]>,
+    pub voxel: Option<f64>,
+    pub pad: usize,
+    pub bounds: Option<([f64; 3], [f64; 3])>,
+}
+
+impl GridOptions {
+    pub fn grid(&self, scene: &Scene) -> PyResult<Grid> {
+        let spec = GridSpec {
+            res: self.res,
+            voxel: self.voxel,
+            pad: self.pad,
+        };
+        let bounds = self
+            .bounds
+            .map(|(a, b)| (DVec3::from_array(a), DVec3::from_array(b)));
+        scene.loaded.grid_over(&spec, bounds).map_err(voxel)
+    }
+}
+
+/// `res` as N or (NX, NY, NZ).
+pub fn resolution(res: Option<&Bound<'_, PyAny>>) -> PyResult<Option<[usize; 3]>> {
+    let Some(r) = res else { return Ok(None) };
+    if let Ok(n) = r.extract::<usize>() {
+        return Ok(Some([n; 3]));
+    }
+    r.extract::<[usize; 3]>()
+        .map(Some)
+        .map_err(|_| text("res: an int N or a tuple (NX, NY, NZ)".into()))
+}
+
+/// Everything but the grid that decides a run's voxels.
+pub struct RunOptions {
+    pub sampling: Sampling,
+    pub route: Route,
+    pub eval: String,
+    pub grey: bool,
+    pub blend: Option<Union>,
+    pub word: WordFormat,
+}
+
+impl RunOptions {
+    #[allow(clippy::too_many_arguments)]
+    pub fn parse(
+        sampling: &str,
+        model: &str,
+        route: &str,
+        eval: &str,
+        grey: bool,
+        blend: Option<&str>,
+        word: &str,
+    ) -> PyResult<RunOptions> {
+        let sampling = match sampling {
+            "centre" | "center" => Sampling::Centre,
+            "slab" => Sampling::Slab,
+            s => return Err(text(format!("sampling {s:?}: `centre` or `slab`"))),
+        };
+        let model: Model = model.parse().map_err(text)?;
+        let route = match (model, route) {
+            (Model::Cycle, _) => Route::Array { cycle: true },
+            (Model::Word, "intervals") => Route::Intervals,
+            (Model::Word, "array") => Route::Array { cycle: false },
+            (Model::Float, _) => Route::Float,
+            (_, r) => return Err(text(format!("route {r:?}: `intervals` or `array`"))),
+        };
+        if !["blist", "tree", "stack"].contains(&eval) {
+            return Err(text(format!("eval {eval:?}: `blist`, `tree` or `stack`")));
+        }
+        let blend = match blend {
+            None => None,
+            Some("max") => Some(Union::Max),
+            Some(s) => Some(parse_sum(s)?),
+        };
+        if grey && blend.is_some() {
+            return Err(text("grey and blend: give one".into()));
+        }
+        Ok(RunOptions {
+            sampling,
+            route,
+            eval: eval.to_string(),
+            grey,
+            blend,
+            word: parse_word(word)?,
+        })
+    }
+
+    fn evaluator(&self, scene: &Scene) -> Box<dyn SliceEval + Send + Sync> {
+        let root = &scene.loaded.scene.root;
+        match self.eval.as_str() {
+            "tree" => Box::new(TreeEval::new(root)),
+            "stack" => Box::new(StackEval::new(root)),
+            _ => Box::new(BlistEval::new(root)),
+        }
+    }
+
+    /// The slicer of `scene` on `grid`.
+    pub fn slicer(&self, scene: &Scene, grid: Grid) -> PyResult<Slicer> {
+        let opts = SlicerOptions {
+            fmt: self.word,
+            sampling: self.sampling,
+            panel: Some(csgpix_voxel::DEFAULT_PANEL),
+            grey: self.grey,
+            blend: self
+                .blend
+                .map(|u| BlendEval::new(&scene.loaded.scene.root, u)),
+            sampled: scene.loaded.sampled.clone(),
+        };
+        Slicer::new(&scene.loaded.scene, grid, opts).map_err(voxel)
+    }
+
+    /// Slabs `z` of the scene: the slices' bytes, x fastest, then y, then k.
+    pub fn run(
+        &self,
+        py: Python<'_>,
+        scene: &Scene,
+        slicer: &Slicer,
+        z: std::ops::Range<usize>,
+    ) -> PyResult<Vec<u8>> {
+        let eval = self.evaluator(scene);
+        let set = Equations::Derived.set();
+        let route = self.route;
+        py.detach(|| {
+            let mut out = Vec::with_capacity(z.len() * slicer.grid.slice_len());
+            voxelize_slabs::<csgpix_voxel::Error>(
+                slicer,
+                route,
+                set,
+                eval.as_ref(),
+                &|| {},
+                z,
+                &mut |_, s| {
+                    out.extend_from_slice(s);
+                    Ok(())
+                },
+            )
+            .map(|_| out)
+        })
+        .map_err(voxel)
+    }
+}
+
+fn parse_sum(s: &str) -> PyResult<Union> {
+    let bad = || text(format!("blend {s:?}: `max` or `sum:KS,KD` (e.g. sum:0.5,0.5)"));
+    let (ks, kd) = s
+        .strip_prefix("sum:")
+        .and_then(|r| r.split_once(','))
+        .ok_or_else(bad)?;
+    let f = |v: &str| v.trim().parse::<f64>().ok().filter(|x| *x >= 0.0 && x.is_finite());
+    match (f(ks), f(kd)) {
+        (Some(ks), Some(kd)) => Ok(Union::Sum { ks, kd }),
+        _ => Err(bad()),
+    }
+}
+
+/// A depth word `FRACTION/INTEGER/OVERFLOW`, e.g. `10/10/11` (§2.3.1).
+pub fn parse_word(s: &str) -> PyResult<WordFormat> {
+    let f: Vec<&str> = s.split('/').collect();
+    let bad = |m: String| text(format!("word {s:?}: {m}"));
+    let [fr, i, o] = f[..] else {
+        return Err(bad("expected FRACTION/INTEGER/OVERFLOW, e.g. 10/10/11".into()));
+    };
+    let n = |v: &str| v.trim().parse::<u32>().map_err(|e| bad(e.to_string()));
+    WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| bad(e.to_string()))
+}
+
+/// The slab range `z` of `nz` slabs: all of them when None.
+pub fn slab_range(z: Option<(usize, usize)>, nz: usize) -> PyResult<std::ops::Range<usize>> {
+    match z {
+        None => Ok(0..nz),
+        Some((a, b)) if a <= b && b <= nz => Ok(a..b),
+        Some((a, b)) => Err(text(format!("z=({a}, {b}): the grid has slabs 0..{nz}"))),
+    }
+}
+
+/// Voxelize `scene` (seed 001 §4.4): uint8 colour codes, 0 empty, as a numpy array of shape
+/// (k1 − k0, NY, NX), with the grid's origin (centre of voxel (0, 0, 0)), spacing and dims.
+#[pyfunction]
+#[pyo3(signature = (scene, res=None, *, voxel=None, pad=0, bounds=None, sampling="centre",
+    model="word", route="intervals", eval="blist", grey=false, blend=None, word="10/10/11",
+    z=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn voxelize<'py>(
+    py: Python<'py>,
+    scene: &Scene,
+    res: Option<&Bound<'py, PyAny>>,
+    voxel: Option<f64>,
+    pad: usize,
+    bounds: Option<([f64; 3], [f64; 3])>,
+    sampling: &str,
+    model: &str,
+    route: &str,
+    eval: &str,
+    grey: bool,
+    blend: Option<&str>,
+    word: &str,
+    z: Option<(usize, usize)>,
+) -> PyResult<(Bound<'py, PyAny>, [f64; 3], [f64; 3], [usize; 3])> {
+    let res = resolution(res)?;
+    if res.is_some() == voxel.is_some() {
+        return Err(text("give res or voxel (one of them)".into()));
+    }
+    let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
+    let grid = GridOptions {
+        res,
+        voxel,
+        pad,
+        bounds,
+    }
+    .grid(scene)?;
+    let slicer = opts.slicer(scene, grid)?;
+    let slabs = slab_range(z, grid.dims[2])?;
+    let [nx, ny, _] = grid.dims;
+    let n = slabs.len();
+    let bytes = opts.run(py, scene, &slicer, slabs)?;
+    let arr = PyArray1::from_vec(py, bytes).reshape([n, ny, nx])?;
+    Ok((
+        arr.into_any(),
+        grid.centre(0, 0, 0).to_array(),
+        grid.voxel().to_array(),
+        grid.dims,
+    ))
+}
