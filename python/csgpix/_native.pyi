@@ -1,0 +1,79 @@
+"""Type stubs of csgpix._native, the Rust library behind the csgpix package."""
+
+from os import PathLike
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+_Path = Union[str, PathLike[str]]
+_Vec3 = Tuple[float, float, float]
+
+class CsgpixError(ValueError):
+    """One-line message; ``file``, ``line``, ``col``: where in an input, or None."""
+
+    file: Optional[str]
+    line: Optional[int]
+    col: Optional[int]
+
+# --- scenes and voxelization -------------------------------------------------------------
+
+class Scene:
+    name: str
+    @property
+    def primitives(self) -> int: ...
+    @property
+    def bounds(self) -> Tuple[_Vec3, _Vec3]: ...
+
+def load(path: _Path) -> Scene: ...
+def load_expr(
+    expr: str, prims: Sequence[Tuple[str, Union[_Path, Tuple[_Path, float]]]]
+) -> Scene: ...
+def voxelize(
+    scene: Scene,
+    res: Union[int, Tuple[int, int, int], None] = None,
+    *,
+    voxel: Optional[float] = None,
+    pad: int = 0,
+    bounds: Optional[Tuple[_Vec3, _Vec3]] = None,
+    sampling: str = "centre",
+    model: str = "word",
+    route: str = "intervals",
+    eval: str = "blist",
+    grey: bool = False,
+    blend: Optional[str] = None,
+    word: str = "10/10/11",
+    z: Optional[Tuple[int, int]] = None,
+) -> Tuple[npt.NDArray[np.uint8], _Vec3, _Vec3, Tuple[int, int, int]]: ...
+
+# --- drawing on the array ----------------------------------------------------------------
+
+class Program:
+    @property
+    def size(self) -> Tuple[int, int]: ...
+    @property
+    def stack_levels(self) -> int: ...
+    def cycles(self, equations: str = "derived") -> int: ...
+    def ops(self) -> List[str]: ...
+    def __len__(self) -> int: ...
+
+def compile(
+    scene: Union[_Path, Sequence[_Path]],
+    width: int = 256,
+    height: int = 256,
+    *,
+    clip: Optional[str] = None,
+    view: str = "iso",
+    word: str = "10/10/11",
+) -> Program: ...
+def render(
+    program: Program, model: str = "word", equations: str = "derived"
+) -> Tuple[npt.NDArray[np.uint8], int]: ...
+def palette() -> npt.NDArray[np.uint8]: ...
+def verify_select(
+    equations: str = "derived", vectors: Optional[_Path] = None
+) -> List[Dict[str, Any]]: ...
+
+# --- zarr volumes (csgpix.distributed) ---------------------------------------------------
+
+# --- array models (cocotb reference) -----------------------------------------------------
