@@ -1,0 +1,119 @@
+"""csgpix.voxelize against the command line's NRRD, slab ranges against the whole volume,
+the models against each other, and errors with their place."""
+
+import json
+
+import numpy as np
+import pytest
+
+import csgpix
+from conftest import ROOT, SCENES, read_nrrd, run_cli
+
+
+def cli_volume(tmp, *args):
+    out = tmp / "v.nrrd"
+    r = run_cli("voxelize", *args, "-o", str(out))
+    assert r.returncode == 0, r.stderr.decode()
+    head = out.read_bytes().partition(b"\n\n")[0].decode()
+    fields = dict(l.split(": ", 1) for l in head.splitlines() if ": " in l)
+    return read_nrrd(out), fields
+
+
+def floats(text):
+    return [float(x) for x in text.replace("(", " ").replace(")", " ").replace(",", " ").split()]
+
+
+@pytest.mark.parametrize(
+    "scene,args,kw",
+    [
+        ("figure-5.2.csg", ["--res", "40"], dict(res=40)),
+        ("csg-logo.csg", ["--res", "24x20x16", "--model", "cycle"], dict(res=(24, 20, 16), model="cycle")),
+        ("hollow-cube.csg", ["--voxel", "0.5", "--pad", "2", "--sampling", "slab"],
+         dict(voxel=0.5, pad=2, sampling="slab")),
+        ("figure-5.6.csg", ["--res", "32", "--grey"], dict(res=32, grey=True)),
+        ("twelve.csg", ["--res", "30", "--eval", "tree", "--model", "float"],
+         dict(res=30, eval="tree", model="float")),
+    ],
+)
+def test_voxelize_equals_the_command_lines_nrrd(tmp, scene, args, kw):
+    want, fields = cli_volume(tmp, str(SCENES / scene), *args)
+    vol = csgpix.voxelize(str(SCENES / scene), **kw)
+    assert vol.data.dtype == np.uint8 and vol.data.shape == want.shape
+    assert np.array_equal(vol.data, want)
+    assert vol.dims == tuple(reversed(want.shape))
+    assert np.allclose(vol.origin, floats(fields["space origin"]))
+    d = floats(fields["space directions"])
+    assert np.allclose(vol.spacing, (d[0], d[4], d[8]))
+    assert (vol.data > 0).any(), "a scene with solids fills voxels"
+
+
+@pytest.mark.parametrize("z", [(0, 1), (5, 17), (17, 40), (39, 40), (12, 12)])
+def test_a_slab_range_is_those_slabs_of_the_whole_volume(z):
+    scene = csgpix.load(SCENES / "csg-logo.csg")
+    whole = csgpix.voxelize(scene, 40)
+    part = csgpix.voxelize(scene, 40, z=z)
+    assert part.z == z and part.dims == whole.dims
+    assert part.origin == whole.origin and part.spacing == whole.spacing
+    assert np.array_equal(part.data, whole.data[z[0]:z[1]])
+
+
+def test_the_models_agree():
+    scene = csgpix.load(SCENES / "figure-5.2.csg")
+    word = csgpix.voxelize(scene, 24).data
+    assert np.array_equal(csgpix.voxelize(scene, 24, model="cycle").data, word)
+    assert np.array_equal(csgpix.voxelize(scene, 24, route="array").data, word)
+    for ev in ("tree", "stack"):
+        assert np.array_equal(csgpix.voxelize(scene, 24, eval=ev).data, word)
+
+
+def test_an_expression_over_files(tmp):
+    # A dataset minus a box scene: the same as the command line's --expr run.
+    prims = [("head", (str(SCENES / "phantom.nrrd"), 300.0)), ("box", str(SCENES / "figure-5.2.csg"))]
+    scene = csgpix.load_expr("head - box", prims)
+    vol = csgpix.voxelize(scene, 32)
+    want, _ = cli_volume(
+        tmp, "--expr", "head - box", "--prim", f"head={SCENES / 'phantom.nrrd'},threshold=300",
+        "--prim", f"box={SCENES / 'figure-5.2.csg'}", "--res", "32",
+    )
+    assert np.array_equal(vol.data, want)
+    assert scene.primitives == 5
+
+
+def test_errors_carry_file_line_and_column(tmp):
+    bad = ROOT / "tests" / "data" / "identity" / "bad.csg"
+    with pytest.raises(csgpix.CsgpixError) as e:
+        csgpix.load(bad)
+    err = e.value
+    assert (err.file, err.line) == (str(bad), 3) and err.col > 0
+    assert str(e.value).startswith(f"{bad}:3:{err.col}: ")
+    # The same words as the command line (which adds nothing to a scene error).
+    r = run_cli("voxelize", str(bad), "--res", "8", "-o", str(tmp / "x.nrrd"))
+    assert r.returncode == 2 and r.stderr.decode().strip().endswith(str(e.value))
+    assert not (tmp / "x.nrrd").exists()
+
+
+@pytest.mark.parametrize(
+    "call,words",
+    [
+        (lambda s: csgpix.voxelize(s), "give res or voxel"),
+        (lambda s: csgpix.voxelize(s, 8, z=(3, 9)), "z=(3, 9): the grid has slabs 0..8"),
+        (lambda s: csgpix.voxelize(s, 8, model="quantum"), "quantum"),
+        (lambda s: csgpix.voxelize(s, 8, sampling="corner"), "sampling \"corner\""),
+        (lambda s: csgpix.voxelize(s, 8, word="3/3"), "FRACTION/INTEGER/OVERFLOW"),
+        (lambda s: csgpix.voxelize(s, (0, 4, 4)), "every side needs at least one voxel"),
+        (lambda s: csgpix.load_expr("a + b", [("a", str(SCENES / "figure-5.2.csg"))]), "`b`"),
+    ],
+)
+def test_bad_arguments_are_one_line_errors(call, words):
+    scene = csgpix.load(SCENES / "figure-5.2.csg")
+    with pytest.raises(csgpix.CsgpixError) as e:
+        call(scene)
+    assert words in str(e.value) and "\n" not in str(e.value)
+    assert e.value.line is None or e.value.file is not None
+
+
+def test_the_volume_is_an_array():
+    vol = csgpix.voxelize(str(SCENES / "figure-5.2.csg"), 16)
+    assert np.asarray(vol) is vol.data
+    i, j, k = 3, 4, 5
+    assert np.allclose(vol.centre(i, j, k), np.add(vol.origin, np.multiply((i, j, k), vol.spacing)))
