@@ -26,6 +26,16 @@ pub struct Scene {
     /// How messages name the scene.
     #[pyo3(get)]
     pub name: String,
+    /// Where it was loaded from: how a pickled scene is loaded again (in a worker process
+    /// of a distributed run, csgpix.distributed).
+    source: Source,
+}
+
+/// A scene's source.
+#[derive(Clone)]
+enum Source {
+    File(PathBuf),
+    Expr(String, Vec<(String, PathBuf, Option<f64>)>),
 }
 
 #[pymethods]
@@ -41,6 +51,28 @@ impl Scene {
     fn bounds(&self) -> PyResult<([f64; 3], [f64; 3])> {
         let (lo, hi) = self.loaded.bounds().map_err(voxel)?;
         Ok((lo.to_array(), hi.to_array()))
+    }
+
+    /// Pickled as its source: unpickling loads the files again (they must be readable where
+    /// it is unpickled, as on the workers of a distributed run sharing a file system).
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+        let m = py.import("csgpix._native")?;
+        Ok(match &self.source {
+            Source::File(p) => (m.getattr("load")?, (p.clone(),).into_pyobject(py)?.into_any()),
+            Source::Expr(e, prims) => {
+                let prims: Vec<(String, Bound<'py, PyAny>)> = prims
+                    .iter()
+                    .map(|(n, f, t)| {
+                        let v = match t {
+                            Some(t) => (f.clone(), *t).into_pyobject(py)?.into_any(),
+                            None => f.clone().into_pyobject(py)?.into_any(),
+                        };
+                        Ok((n.clone(), v))
+                    })
+                    .collect::<PyResult<_>>()?;
+                (m.getattr("load_expr")?, (e.clone(), prims).into_pyobject(py)?.into_any())
+            }
+        })
     }
 
     fn __repr__(&self) -> String {
@@ -59,6 +91,7 @@ pub fn load(path: PathBuf) -> PyResult<Scene> {
     Ok(Scene {
         loaded,
         name: path.display().to_string(),
+        source: Source::File(path),
     })
 }
 
@@ -72,9 +105,14 @@ pub fn load_expr(expr: &str, prims: Vec<(String, Bound<'_, PyAny>)>) -> PyResult
         .map(|(name, v)| binding(name, &v))
         .collect::<PyResult<Vec<_>>>()?;
     let loaded = scene_from_expr(expr, &bindings).map_err(voxel)?;
+    let prims = bindings
+        .iter()
+        .map(|b| (b.name.clone(), b.file.clone(), b.threshold))
+        .collect();
     Ok(Scene {
         loaded,
-        name: format!("<expr {expr:?}>"),
+        name: format!("--expr {expr:?}"),
+        source: Source::Expr(expr.to_string(), prims),
     })
 }
 

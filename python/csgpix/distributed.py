@@ -1,0 +1,111 @@
+"""Voxelizing past one machine: one volume's chunk rows as Dask tasks (docs/scale-out.md).
+
+A volume is a Zarr v3 array (``csgpix voxelize --format zarr``, docs/zarr.md) whose chunks
+are ``chunk`` slabs deep: a *chunk row* is every chunk of those slabs. The driver writes the
+array's metadata into a staging directory beside ``out``; each task loads the scene (a
+:class:`csgpix.Scene` pickles as its source, so workers need the same files at the same
+paths), voxelizes its rows' slabs with ``voxelize_slabs`` (the masks of its first slab built
+from their source, no earlier slab computed) and writes their chunks; when every task has
+succeeded the staging directory is renamed to ``out``. The files are byte-identical to the
+command line's, whatever the workers and the order they finish in: a chunk is written by one
+task only, and its bytes depend on its voxels alone.
+
+::
+
+    from dask.distributed import Client, LocalCluster
+    import csgpix, csgpix.distributed as cd
+
+    with LocalCluster(n_workers=2, threads_per_worker=1) as cluster, Client(cluster) as client:
+        report = cd.voxelize_zarr("vectors/scenes/csg-logo.csg", "logo.zarr", 256, client=client)
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import tempfile
+from pathlib import Path
+from typing import Any, Dict, List, Optional, Tuple, Union
+
+from . import _native
+from ._native import CsgpixError, Scene
+
+__all__ = ["voxelize_zarr", "write_rows"]
+
+
+def write_rows(scene: Scene, path: str, rows: Tuple[int, int], options: Dict[str, Any]) -> Dict[str, int]:
+    """One task: voxelize chunk rows ``rows`` (r0, r1) of the array at ``path`` and store
+    them. Returns the rows' work (filled voxels, frames, clocks, ...)."""
+    return _native.zarr_write_rows(scene, path, rows, **options)
+
+
+def voxelize_zarr(
+    scene: Union[Scene, str],
+    out: Union[str, os.PathLike],
+    res: Union[int, Tuple[int, int, int], None] = None,
+    *,
+    client: Any = None,
+    chunk: Union[int, Tuple[int, int, int]] = 64,
+    rows_per_task: int = 1,
+    voxel: Optional[float] = None,
+    pad: int = 0,
+    bounds: Optional[Tuple[Tuple[float, float, float], Tuple[float, float, float]]] = None,
+    sampling: str = "centre",
+    model: str = "word",
+    route: str = "intervals",
+    eval: str = "blist",
+    grey: bool = False,
+    blend: Optional[str] = None,
+    word: str = "10/10/11",
+    threads: Optional[int] = None,
+) -> Dict[str, Any]:
+    """Voxelize ``scene`` into the Zarr volume ``out`` (a new directory), chunk rows as
+    tasks of the Dask ``client`` (``dask.distributed.Client``), or in this process when
+    ``client`` is None. Grid and run options are those of :func:`csgpix.voxelize`; ``chunk``
+    is N or (Z, Y, X) voxels; ``threads`` is each task's voxelizer threads (default: the
+    worker's cores). Returns the run's figures: ``dims``, ``chunk``, ``rows``, ``tasks`` and the
+    work summed over the tasks.
+
+    Nothing is left behind on failure: the staging directory is removed and ``out`` is not
+    created. ``out`` must not exist.
+    """
+    if not isinstance(scene, Scene):
+        scene = _native.load(scene)
+    out = Path(out)
+    if out.exists() or out.is_symlink():
+        raise CsgpixError(f"{out}: exists; choose a new path or remove it")
+    parent = out.absolute().parent
+    if not parent.is_dir():
+        raise CsgpixError(f"{out}: no such directory {parent}")
+    options = dict(sampling=sampling, model=model, route=route, eval=eval, grey=grey,
+                   blend=blend, word=word, threads=threads)
+    staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".csgpix-tmp", dir=parent))
+    try:
+        meta = _native.zarr_create(
+            scene, str(staging), res, voxel=voxel, pad=pad, bounds=bounds, chunk=chunk,
+            sampling=sampling, model=model, route=route, eval=eval, grey=grey, blend=blend,
+            word=word,
+        )
+        rows = meta["rows"]
+        step = max(1, int(rows_per_task))
+        ranges = [(r, min(r + step, rows)) for r in range(0, rows, step)]
+        works = _run(client, scene, str(staging), ranges, options)
+        os.rename(staging, out)
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    total: Dict[str, int] = {}
+    for w in works:
+        for k, v in w.items():
+            total[k] = total.get(k, 0) + v
+    return dict(meta, tasks=len(ranges), **total)
+
+
+def _run(client: Any, scene: Scene, path: str, ranges: List[Tuple[int, int]], options: Dict[str, Any]):
+    if client is None:
+        return [write_rows(scene, path, r, options) for r in ranges]
+    futures = [
+        client.submit(write_rows, scene, path, r, options, pure=False, key=f"csgpix-rows-{r[0]}-{r[1]}-{os.getpid()}-{id(ranges)}")
+        for r in ranges
+    ]
+    return client.gather(futures)
