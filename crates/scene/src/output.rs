@@ -21,7 +21,7 @@
 use std::fs::File;
 use std::io::{Seek, Write};
 use std::path::{Path, PathBuf};
-use std::sync::{Mutex, MutexGuard};
+use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 
 use crate::{Error, Result};
 
@@ -30,6 +30,26 @@ static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
 /// Held through a commit, and by the signal cleanup: a commit is never cut in half.
 static COMMIT: Mutex<()> = Mutex::new(());
+
+/// Set once a signal's cleanup has begun: no write into a staged directory starts after it
+/// ([`staged_write`]).
+static STOPPING: RwLock<bool> = RwLock::new(false);
+
+/// Held while a file is written by path inside a staged directory by a writer that also
+/// creates missing parent directories (a Zarr store's chunks: zarrs's filesystem store makes
+/// a chunk's directories as it writes it). A signal's cleanup waits for the writes in flight
+/// and none starts after it (`None`: the run is being stopped), so that no directory is made
+/// again once the cleanup has removed the staging directory. Cheap when no signal comes; a
+/// process without [`install_signal_cleanup`] always gets a guard.
+pub fn staged_write() -> Option<StagedWrite> {
+    let held = STOPPING.read().unwrap_or_else(|e| e.into_inner());
+    (!*held).then_some(StagedWrite { _held: held })
+}
+
+/// A write into a staged directory in flight ([`staged_write`]).
+pub struct StagedWrite {
+    _held: RwLockReadGuard<'static, bool>,
+}
 
 fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
     PENDING.lock().unwrap_or_else(|e| e.into_inner())
@@ -49,6 +69,9 @@ pub fn install_signal_cleanup() -> Result<()> {
         if let Some(sig) = signals.forever().next() {
             // Held to the end: a commit in progress finishes first, and none starts after.
             let _commit = COMMIT.lock().unwrap_or_else(|e| e.into_inner());
+            // Writes in flight end first; none starts after (held to the end too).
+            let mut stopping = STOPPING.write().unwrap_or_else(|e| e.into_inner());
+            *stopping = true;
             let mut staged = pending();
             for p in staged.drain(..) {
                 remove_staged(&p);

@@ -83,6 +83,10 @@ pub enum Error {
         /// The slicer's.
         found: String,
     },
+    /// A signal is stopping the run and removing its staged outputs: nothing more is
+    /// written ([`csgpix_scene::output::staged_write`]).
+    #[error("interrupted: the run's outputs are being removed")]
+    Interrupted,
     /// A problem of this crate's own, one line.
     #[error("{0}")]
     Msg(String),

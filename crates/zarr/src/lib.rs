@@ -74,6 +74,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use csgpix_scene::grid::Grid;
+use csgpix_scene::output::staged_write;
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{Route, Slicer, Work};
 use glam::DVec3;
@@ -248,6 +249,7 @@ impl ZarrVolume {
     ) -> Result<ZarrVolume> {
         let chunk = chunk_shape(grid.dims, chunk)?;
         let err = store_err(path);
+        let _writing = staged_write().ok_or(Error::Interrupted)?;
         match std::fs::read_dir(path) {
             Ok(entries) => {
                 if entries.count() > 0 {
@@ -419,6 +421,9 @@ impl ZarrVolume {
                 }
             }
             let at = [row as u64, bj as u64, bi as u64];
+            // The store makes the chunk's directories as it writes: never after a signal's
+            // cleanup has removed a staged store (crates/scene/src/output.rs).
+            let _writing = staged_write().ok_or(Error::Interrupted)?;
             self.array
                 .store_chunk_opt(&at, chunk, &options)
                 .map_err(|e| store_err(&self.path)(&e))
