@@ -13,6 +13,7 @@
 //! | `csgpix-draw` | [`draw`] | scenes → display lists → array operations, the `float` model, panels, throughput |
 //! | `csgpix-voxel` | [`voxel`] | slices from the array, masks, the Blist and baseline evaluators, requirements |
 //! | `csgpix-sculpt` | [`sculpt`] | the hashed octree of seed 000, its baselines, Marching Cubes, sculpting |
+//! | `csgpix-zarr` | [`zarr`] | volumes as OME-Zarr 0.5 stores, written a chunk row at a time |
 //!
 //! and holds what joins them: the accuracy/cost [`study`], charts ([`plot`]), PNG output
 //! ([`png`]) and [`octree_from_scene`]. Every module of the subsystems is also reachable
@@ -26,6 +27,7 @@ pub use csgpix_draw as draw;
 pub use csgpix_scene as scene;
 pub use csgpix_sculpt as sculpt;
 pub use csgpix_voxel as voxel;
+pub use csgpix_zarr as zarr;
 pub use glam;
 pub use rtl_model;
 

@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use csgpix::blist::BlistTable;
 use csgpix::csg_expr::{self, CsgExpr};
-use serde_json::{json, Value};
+use serde::Serialize;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -37,7 +37,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         (labels, inside)
     });
     if a.json {
-        println!("{}", report_json(&table, &e, trace.as_ref()));
+        println!("{}", report_json(&table, &e, trace.as_ref())?);
     } else {
         print_text(&table, &e, bits.as_deref(), trace.as_ref());
     }
@@ -74,31 +74,55 @@ fn sign(s: bool) -> &'static str {
     }
 }
 
-fn report_json(table: &BlistTable, e: &CsgExpr, trace: Option<&(Vec<u32>, bool)>) -> Value {
-    let rows: Vec<Value> = table
+/// `--json`'s report. Fields in alphabetical order, as the JSON map of the first versions
+/// printed them (`tests/identity.rs`): serde_json keeps insertion order in this build (zarrs
+/// turns on its `preserve_order`), so the order is fixed here, by the struct.
+#[derive(Serialize)]
+struct Report<'a> {
+    in_name: u32,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    inside: Option<bool>,
+    label_bits: u32,
+    rows: Vec<RowReport<'a>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    trace: Option<&'a [u32]>,
+}
+
+/// One row of the table, fields in alphabetical order ([`Report`]).
+#[derive(Serialize)]
+struct RowReport<'a> {
+    name: u32,
+    p: usize,
+    reference: &'a str,
+    sign: &'static str,
+    stamp: u32,
+}
+
+fn report_json(
+    table: &BlistTable,
+    e: &CsgExpr,
+    trace: Option<&(Vec<u32>, bool)>,
+) -> Result<String, String> {
+    let rows = table
         .rows
         .iter()
         .enumerate()
-        .map(|(k, r)| {
-            json!({
-                "p": k + 1,
-                "name": r.name,
-                "sign": sign(r.sign),
-                "reference": e.names[r.prim],
-                "stamp": r.stamp,
-            })
+        .map(|(k, r)| RowReport {
+            name: r.name,
+            p: k + 1,
+            reference: &e.names[r.prim],
+            sign: sign(r.sign),
+            stamp: r.stamp,
         })
         .collect();
-    let mut v = json!({
-        "rows": rows,
-        "in_name": table.in_name,
-        "label_bits": table.label_bits,
-    });
-    if let Some((labels, inside)) = trace {
-        v["trace"] = json!(labels);
-        v["inside"] = json!(inside);
-    }
-    v
+    let report = Report {
+        in_name: table.in_name,
+        inside: trace.map(|t| t.1),
+        label_bits: table.label_bits,
+        rows,
+        trace: trace.map(|t| &t.0[..]),
+    };
+    serde_json::to_string(&report).map_err(|e| e.to_string())
 }
 
 fn print_text(

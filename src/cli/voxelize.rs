@@ -1,5 +1,6 @@
 //! `csgpix voxelize`: a CSG scene, slice by slice through the array (§4.4), evaluated per
-//! slice (§4.5 Blist, §4.2 tree, §3.4.1 stack), written as a NRRD volume.
+//! slice (§4.5 Blist, §4.2 tree, §3.4.1 stack), written as a NRRD volume, or as an OME-Zarr
+//! store a chunk row at a time (`--format zarr`, docs/zarr.md).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -20,6 +21,7 @@ use csgpix::voxel::{
     memory_estimate, voxelize, voxelize_streaming, BindingProblem, Error, Grid, GridSpec, Route,
     Sampling, Slicer, SlicerOptions, Volume, Work,
 };
+use csgpix::zarr::{voxelize_rows, VolumeAttrs, ZarrVolume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::{Equations, WordFormat};
@@ -38,6 +40,7 @@ use super::EquationsArg;
     csgpix voxelize vectors/scenes/cube-minus-cylinder.csg --voxel 0.5 --pad 1 --mesh part.stl -o part.nrrd\n  \
     csgpix voxelize vectors/scenes/hollow-cube.csg --res 32 --sampling slab -o thesis-slabs.nrrd\n  \
     csgpix voxelize vectors/scenes/figure-5.6.csg --res 64 --grey -o head.nrrd\n  \
+    csgpix voxelize vectors/scenes/twelve.csg --res 1024 --format zarr --chunk 64 -o twelve.zarr\n  \
     csgpix voxelize --expr '(head + box) - hole' --prim head=vectors/scenes/phantom.nrrd,threshold=300 \\\n    \
     --prim box=vectors/scenes/figure-5.2.csg --prim hole=part.stl --res 64 --blend max -o blend.nrrd")]
 pub struct Args {
@@ -87,9 +90,20 @@ pub struct Args {
     /// footprint touches; `whole` simulates the whole array for every frame. Same voxels.
     #[arg(long, default_value = "32x32", value_parser = parse_panel)]
     panel: PanelArg,
-    /// Output NRRD volume (uint8 colour codes, 0 empty).
+    /// Output NRRD volume (uint8 colour codes, 0 empty); with --format zarr an OME-Zarr
+    /// store, a directory named *.zarr.
     #[arg(short = 'o', long)]
     out: PathBuf,
+    /// `nrrd`: one file, the volume assembled in memory. `zarr`: an OME-Zarr 0.5 (Zarr v3)
+    /// store written a chunk row at a time, so memory does not grow with the grid's depth
+    /// (docs/zarr.md); not with --preview, --slices, --mesh or --store.
+    #[arg(long, value_enum, default_value_t)]
+    format: FormatArg,
+    /// --format zarr: the chunk shape, N for N×N×N or ZxYxX in the array's order (Z first, as
+    /// zarr-python reports `chunks`; unlike --res's X×Y×Z); each side cut to the grid's.
+    /// Memory holds one chunk row: Z × NY × NX bytes.
+    #[arg(long, value_parser = parse_chunk)]
+    chunk: Option<[usize; 3]>,
     /// Also write every slice as a PNG into this directory.
     #[arg(long)]
     slices: Option<PathBuf>,
@@ -223,6 +237,16 @@ struct StoreReport {
     build_seconds: f64,
 }
 
+/// `--format`: what `-o` is.
+#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
+enum FormatArg {
+    /// A NRRD volume (one file; the volume is held in memory).
+    #[default]
+    Nrrd,
+    /// An OME-Zarr 0.5 store (a directory; written a chunk row at a time).
+    Zarr,
+}
+
 #[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
 enum RouteArg {
     #[default]
@@ -273,6 +297,21 @@ pub fn parse_res(s: &str) -> Result<[usize; 3], String> {
         return Err(format!("{s}: each side must be 1..=65536"));
     }
     Ok(dims)
+}
+
+/// `--chunk`: N (a cube) or ZxYxX, each side 1..=65536.
+fn parse_chunk(s: &str) -> Result<[usize; 3], String> {
+    let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
+    let parts: Vec<&str> = s.split(['x', 'X']).collect();
+    let chunk = match parts[..] {
+        [a] => [n(a)?; 3],
+        [z, y, x] => [n(z)?, n(y)?, n(x)?],
+        _ => return Err("expected N or ZxYxX, e.g. 64 or 16x256x256".into()),
+    };
+    if chunk.iter().any(|&c| c == 0 || c > 65536) {
+        return Err(format!("{s}: each side must be 1..=65536"));
+    }
+    Ok(chunk)
 }
 
 pub fn parse_bounds(s: &str) -> Result<(DVec3, DVec3), String> {
@@ -328,6 +367,11 @@ struct Report {
     work: Work,
     #[serde(skip_serializing_if = "Option::is_none")]
     store: Option<StoreReport>,
+    /// With --format zarr: the store's chunk shape (Z, Y, X) and its chunk rows.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    chunk: Option<[usize; 3]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    chunk_rows: Option<usize>,
     /// With `--mesh`: its triangles and open edges.
     #[serde(flatten)]
     mesh: Option<MeshReport>,
@@ -389,9 +433,39 @@ pub fn flag_message(e: Error) -> String {
     }
 }
 
+/// `--format zarr` with what it cannot do, refused in one line before anything is named:
+/// the options that need the whole volume in memory, and standard output.
+fn check_format(a: &Args) -> Result<(), String> {
+    if a.format == FormatArg::Nrrd {
+        return match a.chunk {
+            Some(_) => Err("--chunk applies to --format zarr only".into()),
+            None => Ok(()),
+        };
+    }
+    if a.out.as_os_str() == "-" {
+        return Err(
+            "-o -: --format zarr writes a directory (OUT.zarr), not standard output".into(),
+        );
+    }
+    let whole = [
+        ("--preview", a.preview.is_some()),
+        ("--slices", a.slices.is_some()),
+        ("--mesh", a.mesh.is_some()),
+        ("--store", a.store.is_some()),
+    ];
+    match whole.iter().find(|(_, given)| *given) {
+        Some((flag, _)) => Err(format!(
+            "{flag} needs the whole volume in memory: not with --format zarr, which writes \
+             a chunk row at a time (use --format nrrd)"
+        )),
+        None => Ok(()),
+    }
+}
+
 /// The run's outputs, named before anything is computed.
 struct Named {
     outs: Outputs,
+    /// `-o`: the NRRD file, or the Zarr store's directory.
     nrrd: Out,
     slices: Option<Out>,
     preview: Option<Out>,
@@ -400,7 +474,10 @@ struct Named {
 
 fn name_outputs(a: &Args) -> Result<Named, String> {
     let mut outs = Outputs::new();
-    let nrrd = outs.file_or_stdout("-o", &a.out, &["nrrd"])?;
+    let nrrd = match a.format {
+        FormatArg::Nrrd => outs.file_or_stdout("-o", &a.out, &["nrrd"])?,
+        FormatArg::Zarr => outs.tree("-o", &a.out, &["zarr"], "zarr.json")?,
+    };
     let slices = a
         .slices
         .as_ref()
@@ -430,6 +507,7 @@ fn name_outputs(a: &Args) -> Result<Named, String> {
 
 pub fn run(a: Args) -> Result<ExitCode, String> {
     a.mem.limit_readers();
+    check_format(&a)?;
     let name = input_name(&a);
     let mut named = name_outputs(&a)?;
     let loaded = load(&a)?;
@@ -441,14 +519,23 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let threads = a
         .threads
         .map_or_else(rayon::current_num_threads, usize::from);
-    let mut need = memory_estimate(&grid, scene.primitive_count(), threads);
+    let chunk = a.chunk.unwrap_or([csgpix::zarr::DEFAULT_CHUNK; 3]);
+    let prims = scene.primitive_count();
+    let mut need = match a.format {
+        FormatArg::Nrrd => memory_estimate(&grid, prims, threads),
+        FormatArg::Zarr => csgpix::zarr::memory_estimate(&grid, chunk, prims, threads)?,
+    };
     for s in &loaded.sampled {
         need = need.saturating_add(s.memory_estimate(&grid));
     }
     if let Some(st) = a.store {
         need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
     }
-    a.mem.check(need, "this run", "lower --res")?;
+    let fix = match a.format {
+        FormatArg::Nrrd => "lower --res",
+        FormatArg::Zarr => "lower --res or --chunk",
+    };
+    a.mem.check(need, "this run", fix)?;
     let opts = SlicerOptions {
         fmt: a.word,
         sampling: a.grid.sampling.sampling(),
@@ -477,6 +564,29 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         .build()
         .map_err(|e| e.to_string())?;
     let tick = || bar.inc(1);
+    if a.format == FormatArg::Zarr {
+        let root = named.outs.stage_root(named.nrrd)?;
+        let attrs = VolumeAttrs::new(format!("csgpix voxelize {name}"), values_text(&a));
+        let store =
+            ZarrVolume::create(&root, &grid, chunk, &attrs).map_err(|e| zarr_message(e, &a))?;
+        let rows = store.chunk_rows().len();
+        let work = pool
+            .install(|| voxelize_rows(&slicer, route, set, eval.as_ref(), &tick, &store, 0..rows))
+            .map_err(|e| zarr_message(e, &a))?;
+        bar.finish_and_clear();
+        let wall = t0.elapsed().as_secs_f64();
+        named.outs.commit()?;
+        let zarr = Some((store.chunk(), rows));
+        return report(
+            &a,
+            scene,
+            &slicer,
+            eval.as_ref(),
+            (work, None, None),
+            (wall, false, need),
+            zarr,
+        );
+    }
     let budget = a.mem.bytes().saturating_sub(need);
     let (volume, work, store) = match a.store {
         None => pool
@@ -512,7 +622,27 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     named.outs.commit()?;
     let figures = (work, store, mesh);
     let run = (wall, to_stdout, need);
-    report(&a, scene, &slicer, eval.as_ref(), figures, run)
+    report(&a, scene, &slicer, eval.as_ref(), figures, run, None)
+}
+
+/// What the values of the volume mean, for the Zarr store's `csgpix` attribute.
+fn values_text(a: &Args) -> &'static str {
+    if a.blend.is_some() {
+        "uint8 grey levels blended by §3.3's operators, 0 empty"
+    } else if a.grey {
+        "uint8: 1-15 colour codes (crates/draw/src/palette.rs), 16-255 grey levels of datasets, 0 empty"
+    } else {
+        "uint8 colour codes (crates/draw/src/palette.rs), 0 empty"
+    }
+}
+
+/// A Zarr store's error, naming `-o` where the library names the staging directory.
+fn zarr_message(e: csgpix::zarr::Error, a: &Args) -> String {
+    use csgpix::zarr::Error as Z;
+    match e {
+        Z::Store { message, .. } => format!("-o {}: {message}", a.out.display()),
+        e => e.to_string(),
+    }
 }
 
 /// The `--mesh` figures of the JSON report.
@@ -635,6 +765,7 @@ fn report(
     eval: &dyn SliceEval,
     (work, store, mesh): (Work, Option<StoreReport>, Option<MeshReport>),
     (wall, to_stderr, memory_estimate): (f64, bool, u64),
+    zarr: Option<([usize; 3], usize)>,
 ) -> Result<ExitCode, String> {
     let say = |line: String| super::report_line(&line, to_stderr);
     let pixels = slicer.grid.slice_len();
@@ -671,6 +802,8 @@ fn report(
         state_bits_per_voxel: eval.state_bytes(pixels) * 8 / pixels.max(1),
         work,
         store,
+        chunk: zarr.map(|z| z.0),
+        chunk_rows: zarr.map(|z| z.1),
         mesh,
         hardware_seconds: work.cycles as f64 * 1e-7,
         wall_seconds: wall,

@@ -21,7 +21,7 @@
 use std::fs::File;
 use std::io::{Seek, Write};
 use std::path::{Path, PathBuf};
-use std::sync::{Mutex, MutexGuard};
+use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 
 use crate::{Error, Result};
 
@@ -30,6 +30,26 @@ static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
 /// Held through a commit, and by the signal cleanup: a commit is never cut in half.
 static COMMIT: Mutex<()> = Mutex::new(());
+
+/// Set once a signal's cleanup has begun: no write into a staged directory starts after it
+/// ([`staged_write`]).
+static STOPPING: RwLock<bool> = RwLock::new(false);
+
+/// Held while a file is written by path inside a staged directory by a writer that also
+/// creates missing parent directories (a Zarr store's chunks: zarrs's filesystem store makes
+/// a chunk's directories as it writes it). A signal's cleanup waits for the writes in flight
+/// and none starts after it (`None`: the run is being stopped), so that no directory is made
+/// again once the cleanup has removed the staging directory. Cheap when no signal comes; a
+/// process without [`install_signal_cleanup`] always gets a guard.
+pub fn staged_write() -> Option<StagedWrite> {
+    let held = STOPPING.read().unwrap_or_else(|e| e.into_inner());
+    (!*held).then_some(StagedWrite { _held: held })
+}
+
+/// A write into a staged directory in flight ([`staged_write`]).
+pub struct StagedWrite {
+    _held: RwLockReadGuard<'static, bool>,
+}
 
 fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
     PENDING.lock().unwrap_or_else(|e| e.into_inner())
@@ -49,6 +69,9 @@ pub fn install_signal_cleanup() -> Result<()> {
         if let Some(sig) = signals.forever().next() {
             // Held to the end: a commit in progress finishes first, and none starts after.
             let _commit = COMMIT.lock().unwrap_or_else(|e| e.into_inner());
+            // Writes in flight end first; none starts after (held to the end too).
+            let mut stopping = STOPPING.write().unwrap_or_else(|e| e.into_inner());
+            *stopping = true;
             let mut staged = pending();
             for p in staged.drain(..) {
                 remove_staged(&p);
@@ -166,6 +189,9 @@ enum Target {
     Stdout,
     /// A directory of files, new or existing (symlinks resolved).
     Dir(PathBuf),
+    /// A directory written whole (symlinks resolved), replacing an existing one that is
+    /// empty or holds the marker file named here.
+    Tree(PathBuf, String),
 }
 
 enum Stage {
@@ -222,6 +248,24 @@ impl Outputs {
 
     /// Name a directory output of option `flag` (created at the commit, with its parents).
     pub fn dir(&mut self, flag: &str, path: &Path) -> Result<Out> {
+        self.dir_slot(flag, path, None)
+    }
+
+    /// Name a directory output of option `flag` that is written whole, such as a Zarr store
+    /// (its name must end in one of `exts`, as for [`Outputs::file`]): staged as a new
+    /// directory and renamed into place at the commit, with its parents. A directory already
+    /// at the path is replaced whole, so that no file of an earlier run stays among the new
+    /// ones; but only when it is empty or holds `marker` (a file that names the format, e.g.
+    /// `zarr.json`), so that a mistyped path never removes a directory of other files: any
+    /// other is refused here, before anything is computed. The replaced directory is renamed
+    /// aside, the new one renamed in, the old one removed.
+    pub fn tree(&mut self, flag: &str, path: &Path, exts: &[&str], marker: &str) -> Result<Out> {
+        let shown = path.display().to_string();
+        check_extension(path, exts).map_err(|e| format!("{flag} {shown}: {e}"))?;
+        self.dir_slot(flag, path, Some(marker))
+    }
+
+    fn dir_slot(&mut self, flag: &str, path: &Path, whole: Option<&str>) -> Result<Out> {
         let shown = path.display().to_string();
         let err = |msg: String| Error::msg(format!("{flag} {shown}: {msg}"));
         if path.as_os_str() == "-" {
@@ -236,7 +280,13 @@ impl Outputs {
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
             Err(e) => return Err(err(e.to_string())),
         }
-        let target = Target::Dir(resolved.clone());
+        let target = match whole {
+            None => Target::Dir(resolved.clone()),
+            Some(marker) => {
+                replaceable(&resolved, marker).map_err(err)?;
+                Target::Tree(resolved.clone(), marker.to_string())
+            }
+        };
         self.check_unique(&target, &shown)?;
         let (base, name) = existing_ancestor(&resolved).map_err(|e| err(e.message))?;
         // Held from before the directory exists: a signal's cleanup cannot miss it.
@@ -300,6 +350,19 @@ impl Outputs {
         let mut buf = std::io::BufWriter::new(File::create(&path).map_err(err)?);
         fill(&mut buf).map_err(err)?;
         buf.flush().map_err(err)
+    }
+
+    /// The staging directory of a directory output, for writers that lay out a tree of
+    /// their own in it (a [`Outputs::tree`] output: the whole directory is committed).
+    pub fn stage_root(&self, out: Out) -> Result<PathBuf> {
+        let slot = &self.slots[out.0];
+        match &slot.stage {
+            Stage::Dir(dir, _) => Ok(dir.0.clone()),
+            _ => Err(Error::msg(format!(
+                "{}: is not a directory output",
+                slot.shown
+            ))),
+        }
     }
 
     /// Where file `name` of a directory output is staged, for writers that take a path.
@@ -392,7 +455,10 @@ impl Outputs {
 
 fn same_target(a: &Target, b: &Target) -> bool {
     match (a, b) {
-        (Target::File(p, _) | Target::Dir(p), Target::File(q, _) | Target::Dir(q)) => p == q,
+        (
+            Target::File(p, _) | Target::Dir(p) | Target::Tree(p, _),
+            Target::File(q, _) | Target::Dir(q) | Target::Tree(q, _),
+        ) => p == q,
         (Target::Through(p), Target::Through(q)) => p == q,
         (Target::Stdout, Target::Stdout) => true,
         _ => false,
@@ -419,6 +485,9 @@ fn commit_slot(slot: Slot) -> Result<()> {
             out.flush().map_err(err)
         }
         (Target::Dir(p), Stage::Dir(dir, names)) => commit_dir(&p, &dir.0, &names).map_err(err),
+        (Target::Tree(p, marker), Stage::Dir(dir, _)) => {
+            commit_tree(&p, &dir.0, &marker).map_err(err)
+        }
         _ => unreachable!("stage made for its target"),
     }
 }
@@ -436,6 +505,48 @@ fn commit_dir(target: &Path, dir: &Path, names: &[String]) -> std::io::Result<()
         std::fs::rename(dir.join(name), target.join(name))?;
     }
     Ok(())
+}
+
+/// Whether an existing directory at `p` may be replaced whole: it is empty or holds `marker`
+/// (nothing there is fine too).
+fn replaceable(p: &Path, marker: &str) -> std::result::Result<(), String> {
+    match std::fs::read_dir(p) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(()),
+        Err(e) => Err(e.to_string()),
+        Ok(mut entries) => {
+            if entries.next().is_none() || p.join(marker).is_file() {
+                Ok(())
+            } else {
+                Err(format!(
+                    "exists and holds no {marker}: only a directory csgpix could have \
+                     written is replaced (remove it first)"
+                ))
+            }
+        }
+    }
+}
+
+/// Rename the staging directory into place, replacing a directory there whole (renamed
+/// aside, beside the staging directory, then removed once the new one is in).
+fn commit_tree(target: &Path, dir: &Path, marker: &str) -> std::io::Result<()> {
+    if let Some(parent) = target.parent().filter(|p| !p.as_os_str().is_empty()) {
+        std::fs::create_dir_all(parent)?;
+    }
+    set_dir_mode(dir)?;
+    match std::fs::symlink_metadata(target) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return std::fs::rename(dir, target),
+        Err(e) => return Err(e),
+        Ok(_) => {}
+    }
+    // Checked again: the run may have been long, and the directory changed meanwhile.
+    replaceable(target, marker).map_err(std::io::Error::other)?;
+    let old = dir.with_extension("csgpix-old");
+    std::fs::rename(target, &old)?;
+    if let Err(e) = std::fs::rename(dir, target) {
+        let _ = std::fs::rename(&old, target);
+        return Err(e);
+    }
+    std::fs::remove_dir_all(&old)
 }
 
 #[cfg(unix)]
@@ -633,6 +744,53 @@ mod tests {
         assert_eq!(names(dir.path()), ["a.png", "s"]);
         assert_eq!(std::fs::read(&a).unwrap(), b"x");
         assert_eq!(std::fs::read(dir.path().join("s/t/z0.png")).unwrap(), b"y");
+    }
+
+    #[test]
+    fn a_tree_replaces_a_directory_of_its_format_whole_and_refuses_others() {
+        let dir = tempfile::tempdir().unwrap();
+        let store = dir.path().join("v.zarr");
+        std::fs::create_dir_all(store.join("0/c/9")).unwrap();
+        std::fs::write(store.join("zarr.json"), b"old").unwrap();
+        std::fs::write(store.join("0/c/9/stale"), b"old").unwrap();
+        let mut outs = Outputs::new();
+        let t = outs.tree("-o", &store, &["zarr"], "zarr.json").unwrap();
+        let root = outs.stage_root(t).unwrap();
+        std::fs::create_dir_all(root.join("0")).unwrap();
+        std::fs::write(root.join("zarr.json"), b"new").unwrap();
+        assert_eq!(std::fs::read(store.join("zarr.json")).unwrap(), b"old");
+        outs.commit().unwrap();
+        assert_eq!(names(dir.path()), ["v.zarr"]);
+        assert_eq!(names(&store), ["0", "zarr.json"]);
+        assert_eq!(std::fs::read(store.join("zarr.json")).unwrap(), b"new");
+        assert!(
+            names(&store.join("0")).is_empty(),
+            "the old chunks are gone"
+        );
+
+        // A directory of other files is refused when named, and kept.
+        let other = dir.path().join("photos.zarr");
+        std::fs::create_dir(&other).unwrap();
+        std::fs::write(other.join("a.jpg"), b"x").unwrap();
+        let mut outs = Outputs::new();
+        let e = outs
+            .tree("-o", &other, &["zarr"], "zarr.json")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("holds no zarr.json"), "{e}");
+        let e = outs
+            .tree("-o", &dir.path().join("v.nrrd"), &["zarr"], "zarr.json")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("must end in .zarr"), "{e}");
+        // Staged and dropped: nothing new stays.
+        let t = outs
+            .tree("-o", &dir.path().join("new.zarr"), &["zarr"], "zarr.json")
+            .unwrap();
+        std::fs::write(outs.stage_root(t).unwrap().join("zarr.json"), b"x").unwrap();
+        drop(outs);
+        assert_eq!(names(dir.path()), ["photos.zarr", "v.zarr"]);
+        assert_eq!(names(&other), ["a.jpg"]);
     }
 
     #[test]

@@ -260,8 +260,24 @@ pub fn memory_estimate(grid: &Grid, prims: usize, threads: usize) -> u64 {
         .saturating_add(PROCESS_BYTES)
 }
 
-/// Filled voxels with an empty face neighbour (or on the grid's faces): where Marching Cubes
-/// puts triangles, so what a mesh's size follows.
+/// An upper bound of the memory of a run that hands its slices on ([`voxelize_slabs`])
+/// instead of assembling a volume (docs/memory.md): no volume, but `held` bytes kept by
+/// whoever takes the slices (a Zarr store's chunk row, `crates/zarr`), the per-pixel slab
+/// ranges of every primitive and their per-slab toggles (8 bytes a pixel each), per thread a
+/// slab's masks and labels and the slices of its chunk in hand (at most 8: one batch of
+/// [`voxelize_slabs`] is held until the sink has taken it), and the process itself. Unlike
+/// [`memory_estimate`] it does not grow with the grid's depth.
+pub fn memory_estimate_rows(grid: &Grid, prims: usize, threads: usize, held: u64) -> u64 {
+    let [nx, ny, nz] = grid.dims.map(|d| d as u64);
+    let pixels = nx.saturating_mul(ny);
+    let (prims, threads) = (prims as u64, threads as u64);
+    let chunk = (nz / (4 * threads.max(1))).clamp(1, 8);
+    let per_thread = pixels.saturating_mul((prims / 8 + 1 + 8).saturating_add(chunk));
+    held.saturating_add(prims.saturating_mul(pixels).saturating_mul(16))
+        .saturating_add(threads.saturating_mul(per_thread))
+        .saturating_add(PROCESS_BYTES)
+}
+
 /// The process before any voxel: code, libraries, the scene.
 pub const PROCESS_BYTES: u64 = 16 << 20;
 

@@ -100,8 +100,8 @@ pub mod slicer;
 
 pub use csgpix_scene::grid::{surface_voxels, Grid, GridSpec, Volume, MAX_GRID_SIDE};
 pub use drive::{
-    grey_code, memory_estimate, voxelize, voxelize_slabs, voxelize_streaming, SliceSink, Work,
-    GREY_BASE, PROCESS_BYTES,
+    grey_code, memory_estimate, memory_estimate_rows, voxelize, voxelize_slabs, voxelize_streaming,
+    SliceSink, Work, GREY_BASE, PROCESS_BYTES,
 };
 pub use footprint::{footprints, touched_panels, Footprint, PixelBox};
 pub use masks::{array_mask, array_mask_in, slice_ops};
