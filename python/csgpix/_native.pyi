@@ -76,4 +76,36 @@ def verify_select(
 
 # --- zarr volumes (csgpix.distributed) ---------------------------------------------------
 
+def zarr_create(
+    scene: Scene,
+    path: _Path,
+    res: Union[int, Tuple[int, int, int], None] = None,
+    *,
+    voxel: Optional[float] = None,
+    pad: int = 0,
+    bounds: Optional[Tuple[_Vec3, _Vec3]] = None,
+    chunk: Union[int, Tuple[int, int, int], None] = None,
+    sampling: str = "centre",
+    model: str = "word",
+    route: str = "intervals",
+    eval: str = "blist",
+    grey: bool = False,
+    blend: Optional[str] = None,
+    word: str = "10/10/11",
+) -> Dict[str, Any]: ...
+def zarr_write_rows(
+    scene: Scene,
+    path: _Path,
+    rows: Tuple[int, int],
+    *,
+    sampling: str = "centre",
+    model: str = "word",
+    route: str = "intervals",
+    eval: str = "blist",
+    grey: bool = False,
+    blend: Optional[str] = None,
+    word: str = "10/10/11",
+    threads: Optional[int] = None,
+) -> Dict[str, int]: ...
+
 # --- array models (cocotb reference) -----------------------------------------------------

@@ -7,6 +7,7 @@ use pyo3::prelude::*;
 mod draw;
 mod errors;
 mod voxel;
+mod zarr;
 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -20,5 +21,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(draw::render, m)?)?;
     m.add_function(wrap_pyfunction!(draw::palette, m)?)?;
     m.add_function(wrap_pyfunction!(draw::verify_select, m)?)?;
+    m.add_function(wrap_pyfunction!(zarr::zarr_create, m)?)?;
+    m.add_function(wrap_pyfunction!(zarr::zarr_write_rows, m)?)?;
     Ok(())
 }

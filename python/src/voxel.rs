@@ -220,7 +220,7 @@ impl RunOptions {
         })
     }
 
-    fn evaluator(&self, scene: &Scene) -> Box<dyn SliceEval + Send + Sync> {
+    pub fn evaluator(&self, scene: &Scene) -> Box<dyn SliceEval + Send + Sync> {
         let root = &scene.loaded.scene.root;
         match self.eval.as_str() {
             "tree" => Box::new(TreeEval::new(root)),

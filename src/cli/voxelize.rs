@@ -566,7 +566,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let tick = || bar.inc(1);
     if a.format == FormatArg::Zarr {
         let root = named.outs.stage_root(named.nrrd)?;
-        let attrs = VolumeAttrs::new(format!("csgpix voxelize {name}"), values_text(&a));
+        let attrs = VolumeAttrs::new(format!("csgpix voxelize {name}"), csgpix::zarr::values_text(a.grey, a.blend.is_some()));
         let store =
             ZarrVolume::create(&root, &grid, chunk, &attrs).map_err(|e| zarr_message(e, &a))?;
         let rows = store.chunk_rows().len();
@@ -623,17 +623,6 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let figures = (work, store, mesh);
     let run = (wall, to_stdout, need);
     report(&a, scene, &slicer, eval.as_ref(), figures, run, None)
-}
-
-/// What the values of the volume mean, for the Zarr store's `csgpix` attribute.
-fn values_text(a: &Args) -> &'static str {
-    if a.blend.is_some() {
-        "uint8 grey levels blended by §3.3's operators, 0 empty"
-    } else if a.grey {
-        "uint8: 1-15 colour codes (crates/draw/src/palette.rs), 16-255 grey levels of datasets, 0 empty"
-    } else {
-        "uint8 colour codes (crates/draw/src/palette.rs), 0 empty"
-    }
 }
 
 /// A Zarr store's error, naming `-o` where the library names the staging directory.

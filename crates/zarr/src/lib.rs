@@ -494,3 +494,17 @@ pub fn voxelize_rows(
         Ok::<(), Error>(())
     })
 }
+
+/// What a volume's values mean, for the `csgpix` attribute's `values`: colour codes, with
+/// `grey` datasets' grey levels beside them (§4.5), or with `blend` grey levels throughout
+/// (§3.3). One text for every writer (the command line and the Python binding), so their
+/// stores are byte-identical.
+pub fn values_text(grey: bool, blend: bool) -> &'static str {
+    if blend {
+        "uint8 grey levels blended by §3.3's operators, 0 empty"
+    } else if grey {
+        "uint8: 1-15 colour codes (crates/draw/src/palette.rs), 16-255 grey levels of datasets, 0 empty"
+    } else {
+        "uint8 colour codes (crates/draw/src/palette.rs), 0 empty"
+    }
+}

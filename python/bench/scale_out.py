@@ -1,0 +1,72 @@
+"""Speed-up of a distributed voxelization with Dask workers on this machine
+(docs/scale-out.md): one volume, written as a Zarr volume by 1..N worker processes of a
+`distributed.LocalCluster` (one thread each, one voxelizer thread per task), against the
+baseline measured in the same run: the same volume written in this process by one thread.
+
+    python python/bench/scale_out.py --scene vectors/scenes/csg-logo.csg --res 512 --workers 1 2 --json
+
+Every run's files are compared with the baseline's, byte for byte.
+"""
+
+import argparse
+import filecmp
+import json
+import os
+import shutil
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import csgpix
+import csgpix.distributed as cd
+
+
+def tree_equal(a: Path, b: Path) -> bool:
+    fa = sorted(p.relative_to(a) for p in a.rglob("*") if p.is_file())
+    fb = sorted(p.relative_to(b) for p in b.rglob("*") if p.is_file())
+    return fa == fb and all(filecmp.cmp(a / f, b / f, shallow=False) for f in fa)
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--scene", default="vectors/scenes/csg-logo.csg")
+    ap.add_argument("--res", type=int, default=512)
+    ap.add_argument("--chunk", type=int, default=32)
+    ap.add_argument("--workers", type=int, nargs="+", default=[1, 2])
+    ap.add_argument("--json", action="store_true", help="print the figures as JSON")
+    a = ap.parse_args()
+    from dask.distributed import Client, LocalCluster
+
+    scene = csgpix.load(a.scene)
+    work = Path(tempfile.mkdtemp(prefix="csgpix-scale-out."))
+    rows = []
+    try:
+        t = time.perf_counter()
+        base = cd.voxelize_zarr(scene, work / "base.zarr", a.res, chunk=a.chunk, threads=1)
+        t_base = time.perf_counter() - t
+        rows.append(dict(run="this process, 1 thread", workers=0, seconds=t_base, speedup=1.0, identical=True))
+        for n in a.workers:
+            with LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None) as cl, Client(cl) as client:
+                client.run(lambda: None)  # workers up before the clock starts
+                out = work / f"w{n}.zarr"
+                t = time.perf_counter()
+                cd.voxelize_zarr(scene, out, a.res, chunk=a.chunk, threads=1, client=client)
+                s = time.perf_counter() - t
+            rows.append(dict(run=f"LocalCluster, {n} worker process(es)", workers=n, seconds=s,
+                             speedup=t_base / s, identical=tree_equal(work / "base.zarr", out)))
+            shutil.rmtree(out)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    fig = dict(scene=a.scene, res=a.res, chunk=a.chunk, rows_of_chunks=base["rows"],
+               filled=base["filled"], cores=os.cpu_count(), runs=rows)
+    if a.json:
+        print(json.dumps(fig, indent=2))
+    else:
+        for r in rows:
+            print(f"{r['run']:<40} {r['seconds']:8.2f} s  x{r['speedup']:.2f}  identical={r['identical']}")
+    return 0 if all(r["identical"] for r in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

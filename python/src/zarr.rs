@@ -1,0 +1,136 @@
+//! Zarr volumes written a chunk row at a time (docs/zarr.md), in pieces any process can
+//! take: `zarr_create` writes the store's metadata, `zarr_write_rows` voxelizes and stores a
+//! range of its chunk rows. `csgpix.distributed` runs the second as Dask tasks.
+
+use std::path::PathBuf;
+
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use csgpix_zarr::{voxelize_rows, VolumeAttrs, ZarrVolume, DEFAULT_CHUNK};
+use rtl_model::Equations;
+
+use crate::errors::{text, voxel};
+use crate::voxel::{resolution, GridOptions, RunOptions, Scene};
+
+/// A Zarr store's error, kept whole where it wraps a scene error.
+fn zarr(e: csgpix_zarr::Error) -> PyErr {
+    match e {
+        csgpix_zarr::Error::Voxel(e) => voxel(e),
+        e => text(e.to_string()),
+    }
+}
+
+/// `chunk` as N or (Z, Y, X).
+fn chunk_shape(chunk: Option<&Bound<'_, PyAny>>) -> PyResult<[usize; 3]> {
+    let Some(c) = chunk else {
+        return Ok([DEFAULT_CHUNK; 3]);
+    };
+    if let Ok(n) = c.extract::<usize>() {
+        return Ok([n; 3]);
+    }
+    c.extract::<[usize; 3]>()
+        .map_err(|_| text("chunk: an int N or a tuple (Z, Y, X)".into()))
+}
+
+/// Write the metadata of the volume of `scene` on its grid at `path` (a new or empty
+/// directory), as `csgpix voxelize --format zarr` does; returns `dims` (x, y, z), `chunk`
+/// (z, y, x) and `rows`, the number of chunk rows.
+#[pyfunction]
+#[pyo3(signature = (scene, path, res=None, *, voxel=None, pad=0, bounds=None, chunk=None,
+    sampling="centre", model="word", route="intervals", eval="blist", grey=false, blend=None,
+    word="10/10/11"))]
+#[allow(clippy::too_many_arguments)]
+pub fn zarr_create<'py>(
+    py: Python<'py>,
+    scene: &Scene,
+    path: PathBuf,
+    res: Option<&Bound<'py, PyAny>>,
+    voxel: Option<f64>,
+    pad: usize,
+    bounds: Option<([f64; 3], [f64; 3])>,
+    chunk: Option<&Bound<'py, PyAny>>,
+    sampling: &str,
+    model: &str,
+    route: &str,
+    eval: &str,
+    grey: bool,
+    blend: Option<&str>,
+    word: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    let res = resolution(res)?;
+    if res.is_some() == voxel.is_some() {
+        return Err(text("give res or voxel (one of them)".into()));
+    }
+    // Checked here so that a bad option fails before any file is written.
+    let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
+    let grid = GridOptions {
+        res,
+        voxel,
+        pad,
+        bounds,
+    }
+    .grid(scene)?;
+    opts.slicer(scene, grid)?;
+    let values = csgpix_zarr::values_text(grey, blend.is_some());
+    let attrs = VolumeAttrs::new(format!("csgpix voxelize {}", scene.name), values);
+    let store = ZarrVolume::create(&path, &grid, chunk_shape(chunk)?, &attrs).map_err(zarr)?;
+    let d = PyDict::new(py);
+    d.set_item("dims", store.dims())?;
+    d.set_item("chunk", store.chunk())?;
+    d.set_item("rows", store.chunk_rows().len())?;
+    Ok(d)
+}
+
+/// Voxelize chunk rows `rows` (r0, r1) of the volume at `path` and store them; the grid is
+/// the store's. `threads`: the voxelizer's (default: every core). Returns the rows' work.
+#[pyfunction]
+#[pyo3(signature = (scene, path, rows, *, sampling="centre", model="word", route="intervals",
+    eval="blist", grey=false, blend=None, word="10/10/11", threads=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn zarr_write_rows<'py>(
+    py: Python<'py>,
+    scene: &Scene,
+    path: PathBuf,
+    rows: (usize, usize),
+    sampling: &str,
+    model: &str,
+    route: &str,
+    eval: &str,
+    grey: bool,
+    blend: Option<&str>,
+    word: &str,
+    threads: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
+    let store = ZarrVolume::open(&path).map_err(zarr)?;
+    let slicer = opts.slicer(scene, *store.grid())?;
+    let eval = opts.evaluator(scene);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+        .map_err(|e| text(e.to_string()))?;
+    let set = Equations::Derived.set();
+    let work = py
+        .detach(|| {
+            pool.install(|| {
+                voxelize_rows(
+                    &slicer,
+                    opts.route,
+                    set,
+                    eval.as_ref(),
+                    &|| {},
+                    &store,
+                    rows.0..rows.1,
+                )
+            })
+        })
+        .map_err(zarr)?;
+    let d = PyDict::new(py);
+    d.set_item("filled", work.filled)?;
+    d.set_item("frames", work.frames)?;
+    d.set_item("cycles", work.cycles)?;
+    d.set_item("simulated_pixel_clocks", work.simulated_pixel_clocks)?;
+    d.set_item("full_pixel_clocks", work.full_pixel_clocks)?;
+    Ok(d)
+}

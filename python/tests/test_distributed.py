@@ -1,0 +1,103 @@
+"""Zarr volumes: the command line's `--format zarr`, the Python writer and a Dask
+LocalCluster of worker processes give byte-identical stores, which zarr-python reads as the
+voxels csgpix.voxelize gives; a failed run leaves nothing behind."""
+
+import filecmp
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import csgpix
+import csgpix.distributed as cd
+from conftest import SCENES, run_cli
+
+zarr = pytest.importorskip("zarr", reason="zarr-python is not installed: pip install './python[test]'")
+distributed = pytest.importorskip("distributed", reason="dask.distributed is not installed")
+
+
+def files(root: Path):
+    return sorted(str(p.relative_to(root)) for p in root.rglob("*") if p.is_file())
+
+
+def assert_same_tree(a: Path, b: Path):
+    assert files(a) == files(b)
+    for f in files(a):
+        assert filecmp.cmp(a / f, b / f, shallow=False), f
+
+
+def cli_zarr(tmp: Path, scene: Path, *args: str) -> Path:
+    out = tmp / "cli.zarr"
+    r = run_cli("voxelize", str(scene), *args, "--format", "zarr", "-o", str(out))
+    assert r.returncode == 0, r.stderr.decode()
+    return out
+
+
+@pytest.fixture(scope="module")
+def client():
+    from dask.distributed import Client, LocalCluster
+
+    with LocalCluster(n_workers=3, threads_per_worker=1, processes=True, dashboard_address=None) as cl:
+        with Client(cl) as c:
+            yield c
+
+
+@pytest.mark.parametrize(
+    "scene,args,kw",
+    [
+        ("csg-logo.csg", ["--res", "48x40x50", "--chunk", "8x16x16"], dict(res=(48, 40, 50), chunk=(8, 16, 16))),
+        ("figure-5.6.csg", ["--res", "40", "--grey", "--chunk", "7"], dict(res=40, grey=True, chunk=7)),
+    ],
+)
+def test_dask_workers_write_the_command_lines_store(tmp_path, client, scene, args, kw):
+    want = cli_zarr(tmp_path, SCENES / scene, *args)
+    path = str(SCENES / scene)
+    local = tmp_path / "local.zarr"
+    rep = cd.voxelize_zarr(path, local, **kw)
+    assert_same_tree(want, local)
+    dist = tmp_path / "dask.zarr"
+    rep2 = cd.voxelize_zarr(path, dist, client=client, **kw)
+    assert rep2["tasks"] == rep2["rows"] > 3, "several tasks, on several workers"
+    assert_same_tree(want, dist)
+    assert rep2["filled"] == rep["filled"] > 0
+    # zarr-python reads the voxels csgpix.voxelize gives, placed as the grid is.
+    g = zarr.open_group(str(dist), mode="r")
+    arr = g["0"]
+    vol = csgpix.voxelize(path, kw["res"], grey=kw.get("grey", False))
+    assert np.array_equal(arr[:], vol.data)
+    ms = g.attrs["ome"]["multiscales"][0]
+    tr = ms["datasets"][0]["coordinateTransformations"]
+    scale = next(t["scale"] for t in tr if t["type"] == "scale")
+    shift = next(t["translation"] for t in tr if t["type"] == "translation")
+    assert np.allclose(scale, vol.spacing[::-1]) and np.allclose(shift, vol.origin[::-1])
+    assert [a["name"] for a in ms["axes"]] == ["z", "y", "x"]
+
+
+def test_rows_grouped_into_tasks_give_the_same_store(tmp_path, client):
+    path = str(SCENES / "twelve.csg")
+    a, b = tmp_path / "a.zarr", tmp_path / "b.zarr"
+    cd.voxelize_zarr(path, a, 32, chunk=4)
+    rep = cd.voxelize_zarr(path, b, 32, chunk=4, rows_per_task=3, client=client)
+    assert (rep["rows"], rep["tasks"]) == (8, 3)
+    assert_same_tree(a, b)
+
+
+def test_a_failed_task_leaves_nothing(tmp_path, client):
+    # Workers load the scene again from its file: gone, every task fails.
+    scene_file = tmp_path / "gone.csg"
+    shutil.copy(SCENES / "figure-5.2.csg", scene_file)
+    scene = csgpix.load(scene_file)
+    scene_file.unlink()
+    out = tmp_path / "out.zarr"
+    with pytest.raises(csgpix.CsgpixError, match="gone.csg"):
+        cd.voxelize_zarr(scene, out, 16, chunk=4, client=client)
+    assert list(tmp_path.iterdir()) == [], "no output and no staging directory"
+
+
+def test_an_existing_output_is_refused(tmp_path):
+    out = tmp_path / "x.zarr"
+    out.mkdir()
+    with pytest.raises(csgpix.CsgpixError, match="exists"):
+        cd.voxelize_zarr(str(SCENES / "figure-5.2.csg"), out, 8)
+    assert list(out.iterdir()) == []
