@@ -4,6 +4,7 @@
 
 use pyo3::prelude::*;
 
+mod array;
 mod draw;
 mod errors;
 mod voxel;
@@ -20,5 +21,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(draw::render, m)?)?;
     m.add_function(wrap_pyfunction!(draw::palette, m)?)?;
     m.add_function(wrap_pyfunction!(draw::verify_select, m)?)?;
+    array::register(m)?;
     Ok(())
 }
