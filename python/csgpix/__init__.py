@@ -25,8 +25,10 @@ import numpy as np
 
 from . import _native
 from ._native import CsgpixError, Program, Scene, compile, load, load_expr, verify_select
+from ._native import ArrayModel, verilog_files
 
 __all__ = [
+    "ArrayModel",
     "CsgpixError",
     "Image",
     "Program",
@@ -38,6 +40,7 @@ __all__ = [
     "palette",
     "render",
     "verify_select",
+    "verilog_files",
     "voxelize",
 ]
 

@@ -4,6 +4,7 @@
 
 use pyo3::prelude::*;
 
+mod array;
 mod draw;
 mod errors;
 mod voxel;
@@ -23,5 +24,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(draw::verify_select, m)?)?;
     m.add_function(wrap_pyfunction!(zarr::zarr_create, m)?)?;
     m.add_function(wrap_pyfunction!(zarr::zarr_write_rows, m)?)?;
+    array::register(m)?;
     Ok(())
 }

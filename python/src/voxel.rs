@@ -314,7 +314,7 @@ pub fn slab_range(z: Option<(usize, usize)>, nz: usize) -> PyResult<std::ops::Ra
 #[pyo3(signature = (scene, res=None, *, voxel=None, pad=0, bounds=None, sampling="centre",
     model="word", route="intervals", eval="blist", grey=false, blend=None, word="10/10/11",
     z=None))]
-#[allow(clippy::too_many_arguments)]
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
 pub fn voxelize<'py>(
     py: Python<'py>,
     scene: &Scene,

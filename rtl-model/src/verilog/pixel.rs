@@ -111,6 +111,19 @@ const PORTS: [(&str, usize); 24] = [
     ("rst", 1),
 ];
 
+/// The control word's fields that are inputs of `pixel_array`, in [`FIELDS`] order: every
+/// field but `last` and `op_end` (the testbench's bookkeeping) and `is_ovf` (the comparator's
+/// bit counter gives each bit its role). `clk` and `rst` are its other inputs. A testbench
+/// that drives `pixel_array` itself (rather than through `tb_array`) sets each of these
+/// ports to its field of the clock's word.
+pub fn array_inputs() -> Vec<&'static str> {
+    FIELDS
+        .iter()
+        .map(|f| f.0)
+        .filter(|n| PORTS.iter().any(|p| p.0 == *n) || n.starts_with("dg_"))
+        .collect()
+}
+
 fn port_decls() -> String {
     PORTS
         .iter()

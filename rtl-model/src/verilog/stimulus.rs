@@ -2,7 +2,9 @@
 //! CLI"): the Verilog files it is built from for an array configuration ([`array_files`]), the
 //! expected state of every pixel after every clock, taken from the `cycle` model clock by clock
 //! ([`expected_states`], through [`CycleArray::observe`]), and a script that builds and runs
-//! it ([`run_script`]). The stimulus itself is [`super::pixel::control_stream`].
+//! it ([`run_script`]). The stimulus itself is [`super::pixel::control_stream`]. A testbench
+//! that follows the cycle model itself (the Python package's `ArrayModel`) takes a pixel's
+//! `state` word from [`state_bits`] and the comparator's counter from [`BitCounter`].
 
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -92,11 +94,18 @@ impl Expected {
 }
 
 /// A pixel's `state` word (fields of [`state_fields`], LSB first) from the cycle model's
-/// registers, in hex. `k` is the comparator's bit counter (bits taken of the current word).
-/// The Verilog registers circulate (bit k of the word at bit 0 in clock k), so after clock
-/// `bit` of a window they hold the model's word rotated right by `bit + 1` (colour registers:
-/// by the colour bits moved so far); `bit` is `None` outside windows.
-fn state_hex(cfg: &ArrayConfig, p: &Pixel, i: &Internal, k: u64, bit: Option<u32>) -> String {
+/// registers, as bits, LSB first: bit i is bit i of the Verilog `pixel`'s `state` port. `k`
+/// is the comparator's bit counter (bits taken of the current word, [`BitCounter`]). The
+/// Verilog registers circulate (bit k of the word at bit 0 in clock k), so after clock `bit`
+/// of a window they hold the model's word rotated right by `bit + 1` (colour registers: by
+/// the colour bits moved so far); `bit` is `None` outside windows ([`Clock::bit`]).
+pub fn state_bits(
+    cfg: &ArrayConfig,
+    p: &Pixel,
+    i: &Internal,
+    k: u64,
+    bit: Option<u32>,
+) -> Vec<bool> {
     let (nd, cb) = (cfg.fmt.bits() as usize, cfg.colour_bits as usize);
     let moved = bit.map_or(0, |b| b as usize + 1);
     let mut bits: Vec<bool> = vec![];
@@ -127,7 +136,44 @@ fn state_hex(cfg: &ArrayConfig, p: &Pixel, i: &Internal, k: u64, bit: Option<u32
         };
         bits.extend((0..w).map(|b| b < 64 && v >> b & 1 == 1));
     }
-    hex(&bits)
+    bits
+}
+
+/// [`state_bits`] in hex, most significant digit first: a line of the expected-state file.
+pub fn state_hex(cfg: &ArrayConfig, p: &Pixel, i: &Internal, k: u64, bit: Option<u32>) -> String {
+    hex(&state_bits(cfg, p, i, k, bit))
+}
+
+/// The comparator's bit counter, the `k` field of `state`, followed clock by clock from
+/// reset: it moves only in clocks where the comparator takes a bit, to the bits taken of the
+/// current word, modulo the next power of two of N_D (5 bits for the thesis word).
+#[derive(Clone, Copy, Debug)]
+pub struct BitCounter {
+    k: u64,
+    modulo: u64,
+}
+
+impl BitCounter {
+    /// The counter after reset (0) of a `cfg` array.
+    pub fn new(cfg: &ArrayConfig) -> BitCounter {
+        BitCounter {
+            k: 0,
+            modulo: cfg.fmt.bits().next_power_of_two() as u64,
+        }
+    }
+
+    /// Take clock `c` ([`CycleArray::observe`]) and return the counter after it.
+    pub fn clock(&mut self, c: &Clock) -> u64 {
+        if c.compared {
+            self.k = (c.bit.expect("a compared clock has a bit") as u64 + 1) % self.modulo;
+        }
+        self.k
+    }
+
+    /// The counter now.
+    pub fn k(&self) -> u64 {
+        self.k
+    }
 }
 
 /// The low `w` bits of `v` rotated right by `moved` (modulo `w`).
@@ -176,19 +222,18 @@ pub fn expected_states(
 ) -> Result<Expected, String> {
     check_program(ops, cfg.stack_depth).map_err(|e| e.to_string())?;
     let mut arr = CycleArray::new(cfg, set.clone());
-    // The comparator's bit counter (5 bits for the thesis word) and the lines so far.
-    let kmod = cfg.fmt.bits().next_power_of_two() as u64;
-    let out = Rc::new((RefCell::new(String::new()), RefCell::new(0u64)));
+    // The comparator's bit counter and the lines so far.
+    let out = Rc::new((
+        RefCell::new(String::new()),
+        RefCell::new(BitCounter::new(&cfg)),
+    ));
     let seen = Rc::clone(&out);
     let mut next = 1;
     arr.observe(Box::new(move |a: &CycleArray, c: Clock| {
         assert_eq!(c.t, next, "the observer sees every clock once, in order");
         next += 1;
-        let mut k = seen.1.borrow_mut();
-        if c.compared {
-            *k = (c.bit.unwrap() as u64 + 1) % kmod;
-        }
-        push_lines(&cfg, a, *k, c.bit, &mut seen.0.borrow_mut());
+        let k = seen.1.borrow_mut().clock(&c);
+        push_lines(&cfg, a, k, c.bit, &mut seen.0.borrow_mut());
     }));
     let mut ends = vec![];
     for op in ops {
@@ -196,7 +241,7 @@ pub fn expected_states(
         ends.push(arr.cycles());
     }
     arr.finish();
-    let k = *out.1.borrow();
+    let k = out.1.borrow().k();
     let mut text = out.0.take();
     push_lines(&cfg, &arr, k, None, &mut text);
     Ok(Expected {
@@ -257,5 +302,21 @@ mod tests {
         let want = format!("CLOCKS {} OPS {} MISMATCHES 0", cycles + 1, ops.len() + 1);
         assert_eq!(e.summary(), want);
         assert!(run_script(&want).contains(&format!("want='{want}'")));
+    }
+
+    /// `pixel_array` takes every control field but the testbench's bookkeeping and `is_ovf`:
+    /// the broadcast ports but `rst`, and DEPGEN's four root inputs.
+    #[test]
+    fn array_inputs_are_the_ports_of_pixel_array() {
+        let inputs = pixel::array_inputs();
+        assert_eq!(inputs.len(), pixel::FIELDS.len() - 3);
+        let text = pixel::array_module(&ArrayConfig::new(4, 4));
+        for n in &inputs {
+            let decl = [format!(" {n},"), format!("] {n},"), format!(" {n}, ")];
+            assert!(decl.iter().any(|d| text.contains(d.as_str())), "{n}");
+        }
+        for n in ["last", "op_end", "is_ovf"] {
+            assert!(!inputs.contains(&n));
+        }
     }
 }
