@@ -126,9 +126,9 @@ pub fn compile(
         (Some(expr), false) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
     }
     .map_err(|(i, e)| text(scene.locate(i, &e)))?;
-    cfg.stack_depth = cfg.stack_depth.max(
-        rtl_model::array::check_program(&ops, usize::MAX).map_err(|e| text(e.to_string()))?,
-    );
+    cfg.stack_depth = cfg
+        .stack_depth
+        .max(rtl_model::array::check_program(&ops, usize::MAX).map_err(|e| text(e.to_string()))?);
     Ok(Program { ops, cfg, scene })
 }
 
@@ -145,30 +145,31 @@ pub fn render<'py>(
     let model: Model = model.parse().map_err(text)?;
     let set = equation_set(equations)?;
     let cfg = program.cfg;
-    let (codes, cycles) = py.detach(|| -> Result<(Vec<u8>, u64), String> {
-        if model == Model::Float {
-            let s = &program.scene;
-            let f = float::render(
-                &s.lists,
-                s.clip.as_ref(),
-                cfg.width,
-                cfg.height,
-                &cfg.fmt,
-                ScreenRule::Exact,
-            );
-            return Ok((f.colour.iter().map(|&c| c as u8).collect(), 0));
-        }
-        let mut arr: Box<dyn Array> = match model {
-            Model::Cycle => Box::new(CycleArray::new(cfg, set)),
-            _ => Box::new(WordArray::new(cfg, set)),
-        };
-        arr.run(&program.ops).map_err(|e| e.to_string())?;
-        let codes = (0..cfg.pixels())
-            .map(|i| arr.pixel(i % cfg.width, i / cfg.width).creg(CReg::G) as u8)
-            .collect();
-        Ok((codes, arr.cycles()))
-    })
-    .map_err(text)?;
+    let (codes, cycles) = py
+        .detach(|| -> Result<(Vec<u8>, u64), String> {
+            if model == Model::Float {
+                let s = &program.scene;
+                let f = float::render(
+                    &s.lists,
+                    s.clip.as_ref(),
+                    cfg.width,
+                    cfg.height,
+                    &cfg.fmt,
+                    ScreenRule::Exact,
+                );
+                return Ok((f.colour.iter().map(|&c| c as u8).collect(), 0));
+            }
+            let mut arr: Box<dyn Array> = match model {
+                Model::Cycle => Box::new(CycleArray::new(cfg, set)),
+                _ => Box::new(WordArray::new(cfg, set)),
+            };
+            arr.run(&program.ops).map_err(|e| e.to_string())?;
+            let codes = (0..cfg.pixels())
+                .map(|i| arr.pixel(i % cfg.width, i / cfg.width).creg(CReg::G) as u8)
+                .collect();
+            Ok((codes, arr.cycles()))
+        })
+        .map_err(text)?;
     let img = PyArray1::from_vec(py, codes).reshape([cfg.height, cfg.width])?;
     Ok((img.into_any(), cycles))
 }
@@ -177,9 +178,7 @@ pub fn render<'py>(
 /// the picture the command line writes.
 #[pyfunction]
 pub fn palette(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
-    let rgb: Vec<u8> = (0..256u32)
-        .flat_map(csgpix_draw::palette::rgb)
-        .collect();
+    let rgb: Vec<u8> = (0..256u32).flat_map(csgpix_draw::palette::rgb).collect();
     Ok(PyArray1::from_vec(py, rgb).reshape([256, 3])?.into_any())
 }
 
@@ -203,7 +202,10 @@ pub fn verify_select<'py>(
                 let body = csgpix_scene::input::read_text(&p).map_err(crate::errors::scene)?;
                 (p.display().to_string(), body)
             }
-            None => (format!("vectors/select/{}.pla", t.name()), builtin.to_string()),
+            None => (
+                format!("vectors/select/{}.pla", t.name()),
+                builtin.to_string(),
+            ),
         };
         let pla = Pla::parse(&body).map_err(|e| text(format!("{name}:{e}")))?;
         for r in verify_table(&set, t, &pla).map_err(|e| text(e.to_string()))? {

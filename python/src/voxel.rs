@@ -58,7 +58,10 @@ impl Scene {
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
         let m = py.import("csgpix._native")?;
         Ok(match &self.source {
-            Source::File(p) => (m.getattr("load")?, (p.clone(),).into_pyobject(py)?.into_any()),
+            Source::File(p) => (
+                m.getattr("load")?,
+                (p.clone(),).into_pyobject(py)?.into_any(),
+            ),
             Source::Expr(e, prims) => {
                 let prims: Vec<(String, Bound<'py, PyAny>)> = prims
                     .iter()
@@ -70,7 +73,10 @@ impl Scene {
                         Ok((n.clone(), v))
                     })
                     .collect::<PyResult<_>>()?;
-                (m.getattr("load_expr")?, (e.clone(), prims).into_pyobject(py)?.into_any())
+                (
+                    m.getattr("load_expr")?,
+                    (e.clone(), prims).into_pyobject(py)?.into_any(),
+                )
             }
         })
     }
@@ -119,11 +125,14 @@ pub fn load_expr(expr: &str, prims: Vec<(String, Bound<'_, PyAny>)>) -> PyResult
 fn binding(name: String, v: &Bound<'_, PyAny>) -> PyResult<Binding> {
     let (file, threshold) = match v.extract::<(PathBuf, f64)>() {
         Ok((f, t)) => (f, Some(t)),
-        Err(_) => (v.extract::<PathBuf>().map_err(|_| {
-            text(format!(
-                "primitive `{name}`: bind it to a path, or to (path, threshold) for a dataset"
-            ))
-        })?, None),
+        Err(_) => (
+            v.extract::<PathBuf>().map_err(|_| {
+                text(format!(
+                    "primitive `{name}`: bind it to a path, or to (path, threshold) for a dataset"
+                ))
+            })?,
+            None,
+        ),
     };
     Ok(Binding {
         name,
@@ -276,12 +285,21 @@ impl RunOptions {
 }
 
 fn parse_sum(s: &str) -> PyResult<Union> {
-    let bad = || text(format!("blend {s:?}: `max` or `sum:KS,KD` (e.g. sum:0.5,0.5)"));
+    let bad = || {
+        text(format!(
+            "blend {s:?}: `max` or `sum:KS,KD` (e.g. sum:0.5,0.5)"
+        ))
+    };
     let (ks, kd) = s
         .strip_prefix("sum:")
         .and_then(|r| r.split_once(','))
         .ok_or_else(bad)?;
-    let f = |v: &str| v.trim().parse::<f64>().ok().filter(|x| *x >= 0.0 && x.is_finite());
+    let f = |v: &str| {
+        v.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|x| *x >= 0.0 && x.is_finite())
+    };
     match (f(ks), f(kd)) {
         (Some(ks), Some(kd)) => Ok(Union::Sum { ks, kd }),
         _ => Err(bad()),
@@ -293,7 +311,9 @@ pub fn parse_word(s: &str) -> PyResult<WordFormat> {
     let f: Vec<&str> = s.split('/').collect();
     let bad = |m: String| text(format!("word {s:?}: {m}"));
     let [fr, i, o] = f[..] else {
-        return Err(bad("expected FRACTION/INTEGER/OVERFLOW, e.g. 10/10/11".into()));
+        return Err(bad(
+            "expected FRACTION/INTEGER/OVERFLOW, e.g. 10/10/11".into()
+        ));
     };
     let n = |v: &str| v.trim().parse::<u32>().map_err(|e| bad(e.to_string()));
     WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| bad(e.to_string()))
