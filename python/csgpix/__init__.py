@@ -27,6 +27,10 @@ from . import _native
 from ._native import CsgpixError, Program, Scene, compile, load, load_expr, verify_select
 from ._native import ArrayModel, verilog_files
 
+# Raised in a worker process and pickled back: found again as csgpix.CsgpixError, its file,
+# line and col kept (they are the exception's __dict__, which pickling carries).
+CsgpixError.__module__ = "csgpix"
+
 __all__ = [
     "ArrayModel",
     "CsgpixError",

@@ -33,10 +33,22 @@ from ._native import CsgpixError, Scene
 __all__ = ["voxelize_zarr", "write_rows"]
 
 
-def write_rows(scene: Scene, path: str, rows: Tuple[int, int], options: Dict[str, Any]) -> Dict[str, int]:
+def write_rows(scene: Any, path: str, rows: Tuple[int, int], options: Dict[str, Any]) -> Dict[str, int]:
     """One task: voxelize chunk rows ``rows`` (r0, r1) of the array at ``path`` and store
-    them. Returns the rows' work (filled voxels, frames, clocks, ...)."""
+    them. ``scene`` is a :class:`Scene` or its source as ``Scene.__reduce__`` gives it (a
+    loader and its arguments: what the tasks carry, so the scheduler, which unpickles the
+    task graph, never loads a scene). Returns the rows' work (filled voxels, frames, ...)."""
+    if os.path.exists(os.path.join(path, STOP)):
+        return {}
+    if not isinstance(scene, Scene):
+        loader, args = scene
+        scene = loader(*args)
     return _native.zarr_write_rows(scene, path, rows, **options)
+
+
+# Written into the staging directory when a task has failed: tasks that start later return at
+# once, since the run is lost and its directory about to be removed.
+STOP = ".csgpix-stop"
 
 
 def voxelize_zarr(
@@ -104,8 +116,22 @@ def voxelize_zarr(
 def _run(client: Any, scene: Scene, path: str, ranges: List[Tuple[int, int]], options: Dict[str, Any]):
     if client is None:
         return [write_rows(scene, path, r, options) for r in ranges]
+    from dask.distributed import as_completed
+
+    source = scene.__reduce__()
+    run = f"{os.getpid()}-{id(ranges)}"
     futures = [
-        client.submit(write_rows, scene, path, r, options, pure=False, key=f"csgpix-rows-{r[0]}-{r[1]}-{os.getpid()}-{id(ranges)}")
+        client.submit(write_rows, source, path, r, options, pure=False, key=f"csgpix-rows-{r[0]}-{r[1]}-{run}")
         for r in ranges
     ]
-    return client.gather(futures)
+    # Every task is waited for, failed run or not: a task still running could otherwise write
+    # into the staging directory after it has been removed. After a failure the tasks not yet
+    # started find STOP and return at once.
+    failed = None
+    for f in as_completed(futures):
+        if f.status == "error" and failed is None:
+            failed = f
+            Path(path, STOP).touch()
+    if failed is not None:
+        failed.result()  # raises the task's exception, as it was raised in the worker
+    return [f.result() for f in futures]
