@@ -34,6 +34,9 @@ def main() -> int:
     ap.add_argument("--res", type=int, default=512)
     ap.add_argument("--chunk", type=int, default=32)
     ap.add_argument("--workers", type=int, nargs="+", default=[1, 2])
+    ap.add_argument("--tasks-per-worker", type=int, default=2,
+                    help="chunk rows are grouped into this many tasks per worker (each task "
+                         "sets up the scene's slab ranges once)")
     ap.add_argument("--json", action="store_true", help="print the figures as JSON")
     a = ap.parse_args()
     from dask.distributed import Client, LocalCluster
@@ -51,9 +54,12 @@ def main() -> int:
                 client.run(lambda: None)  # workers up before the clock starts
                 out = work / f"w{n}.zarr"
                 t = time.perf_counter()
-                cd.voxelize_zarr(scene, out, a.res, chunk=a.chunk, threads=1, client=client)
+                per = -(-base["rows"] // (n * a.tasks_per_worker))
+                cd.voxelize_zarr(scene, out, a.res, chunk=a.chunk, threads=1, client=client,
+                                 rows_per_task=per)
                 s = time.perf_counter() - t
             rows.append(dict(run=f"LocalCluster, {n} worker process(es)", workers=n, seconds=s,
+                             tasks=-(-base["rows"] // per),
                              speedup=t_base / s, identical=tree_equal(work / "base.zarr", out)))
             shutil.rmtree(out)
     finally:

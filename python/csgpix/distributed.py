@@ -73,7 +73,7 @@ def voxelize_zarr(
 ) -> Dict[str, Any]:
     """Voxelize ``scene`` into the Zarr volume ``out`` (a new directory), chunk rows as
     tasks of the Dask ``client`` (``dask.distributed.Client``), or in this process when
-    ``client`` is None. Grid and run options are those of :func:`csgpix.voxelize`; ``chunk``
+    ``client`` is None (one call over every row). Grid and run options are those of :func:`csgpix.voxelize`; ``chunk``
     is N or (Z, Y, X) voxels; ``threads`` is each task's voxelizer threads (default: the
     worker's cores). Returns the run's figures: ``dims``, ``chunk``, ``rows``, ``tasks`` and the
     work summed over the tasks.
@@ -115,7 +115,8 @@ def voxelize_zarr(
 
 def _run(client: Any, scene: Scene, path: str, ranges: List[Tuple[int, int]], options: Dict[str, Any]):
     if client is None:
-        return [write_rows(scene, path, r, options) for r in ranges]
+        # One call over every row: the scene's slab ranges are set up once.
+        return [write_rows(scene, path, (ranges[0][0], ranges[-1][1]), options)] if ranges else []
     from dask.distributed import as_completed
 
     source = scene.__reduce__()
