@@ -580,6 +580,7 @@ fn estimate_mib(args: &[&str]) -> u64 {
 /// it is above the peak measured (docs/memory.md has the larger runs).
 #[cfg(target_os = "linux")]
 #[test]
+#[allow(clippy::zombie_processes)] // reaped by wait4, which also gives its rusage
 fn the_estimate_does_not_grow_with_depth_and_bounds_the_peak() {
     let d = tempfile::tempdir().unwrap();
     let (nrrd, store) = (d.path().join("v.nrrd"), d.path().join("v.zarr"));
