@@ -145,6 +145,14 @@ impl std::fmt::Debug for ZarrVolume {
     }
 }
 
+// A binding holds a store across threads (a Python class must be `Send`), and rows are
+// written from several: checked when the crate compiles.
+const _: fn() = || {
+    fn shared<T: Send + Sync>() {}
+    shared::<ZarrVolume>();
+    shared::<Error>();
+};
+
 /// The chunk shape a store of `dims` (X, Y, Z) gets for `chunk` (Z, Y, X): each side at most
 /// the grid's, so that a small grid is not padded out to a large chunk.
 pub fn chunk_shape(dims: [usize; 3], chunk: [usize; 3]) -> Result<[usize; 3]> {
