@@ -47,7 +47,7 @@ pub enum Cmd {
     ExportVerilog(export_verilog::Args),
     /// Run display lists through the array and write the image.
     Render(render::Args),
-    /// Voxelize a CSG scene slice by slice through the array and write a NRRD volume.
+    /// Voxelize a CSG scene slice by slice through the array; write a NRRD volume or an OME-Zarr store.
     Voxelize(voxelize::Args),
     /// Carve (or add) with a spherical tool along a path in the hashed octree; write the mesh.
     Sculpt(sculpt::Args),

@@ -566,7 +566,10 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let tick = || bar.inc(1);
     if a.format == FormatArg::Zarr {
         let root = named.outs.stage_root(named.nrrd)?;
-        let attrs = VolumeAttrs::new(format!("csgpix voxelize {name}"), csgpix::zarr::values_text(a.grey, a.blend.is_some()));
+        let attrs = VolumeAttrs::new(
+            format!("csgpix voxelize {name}"),
+            csgpix::zarr::values_text(a.grey, a.blend.is_some()),
+        );
         let store =
             ZarrVolume::create(&root, &grid, chunk, &attrs).map_err(|e| zarr_message(e, &a))?;
         let rows = store.chunk_rows().len();
