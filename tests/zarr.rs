@@ -310,28 +310,27 @@ fn rows_split_across_tasks_give_the_same_files() {
     assert!(e.ends_with("not a csgpix Zarr volume: no zarr.json"), "{e}");
 }
 
+/// The scene voxelized with `args` to `dir/v.nrrd` and, in chunks `chunk`, to `dir/v.zarr`.
+fn nrrd_and_store(dir: &Path, scene: &str, args: &[&str], chunk: &str) -> (PathBuf, PathBuf) {
+    let (nrrd, store) = (dir.join("v.nrrd"), dir.join("v.zarr"));
+    let base = [&["voxelize", scene][..], args].concat();
+    run_ok(&[&base[..], &["-o", s(&nrrd)]].concat());
+    let zarr = ["-o", s(&store), "--format", "zarr", "--chunk", chunk];
+    run_ok(&[&base[..], &zarr[..]].concat());
+    (nrrd, store)
+}
+
 /// zarr.json: the group's OME-Zarr 0.5 multiscales place voxel centres where the NRRD
 /// header does (scale = `space directions`, translation = `space origin`, Z, Y, X); the
 /// array is (nz, ny, nx) uint8 with the chunks asked for, cut to the grid.
 #[test]
 fn the_metadata_places_the_volume_as_nrrd_does() {
     let d = tempfile::tempdir().unwrap();
-    let (nrrd, store) = (d.path().join("v.nrrd"), d.path().join("v.zarr"));
-    let base = [
-        "voxelize",
+    let (nrrd, store) = nrrd_and_store(
+        d.path(),
         "vectors/scenes/cube-minus-cylinder.csg",
-        "--voxel",
-        "0.7",
-        "--pad",
-        "2",
-    ];
-    run_ok(&[&base[..], &["-o", s(&nrrd)]].concat());
-    run_ok(
-        &[
-            &base[..],
-            &["-o", s(&store), "--format", "zarr", "--chunk", "8x400x16"],
-        ]
-        .concat(),
+        &["--voxel", "0.7", "--pad", "2"],
+        "8x400x16",
     );
 
     // The NRRD header's numbers, as written (shortest round-trip decimals).
@@ -642,20 +641,11 @@ fn zarr_python_reads_the_store() {
         return;
     }
     let d = tempfile::tempdir().unwrap();
-    let (nrrd, store) = (d.path().join("v.nrrd"), d.path().join("v.zarr"));
-    let base = [
-        "voxelize",
+    let (nrrd, store) = nrrd_and_store(
+        d.path(),
         "vectors/scenes/figure-5.2.csg",
-        "--res",
-        "30x26x21",
-    ];
-    run_ok(&[&base[..], &["-o", s(&nrrd)]].concat());
-    run_ok(
-        &[
-            &base[..],
-            &["-o", s(&store), "--format", "zarr", "--chunk", "4x16x8"],
-        ]
-        .concat(),
+        &["--res", "30x26x21"],
+        "4x16x8",
     );
     let o = std::process::Command::new("python3")
         .arg("tests/data/read_zarr.py")

@@ -150,6 +150,25 @@ pub struct GridOptions {
 }
 
 impl GridOptions {
+    /// The options as given: `res` N or (NX, NY, NZ), or `voxel`, one of them.
+    pub fn new(
+        res: Option<&Bound<'_, PyAny>>,
+        voxel: Option<f64>,
+        pad: usize,
+        bounds: Option<([f64; 3], [f64; 3])>,
+    ) -> PyResult<GridOptions> {
+        let res = resolution(res)?;
+        if res.is_some() == voxel.is_some() {
+            return Err(text("give res or voxel (one of them)".into()));
+        }
+        Ok(GridOptions {
+            res,
+            voxel,
+            pad,
+            bounds,
+        })
+    }
+
     pub fn grid(&self, scene: &Scene) -> PyResult<Grid> {
         let spec = GridSpec {
             res: self.res,
@@ -164,7 +183,7 @@ impl GridOptions {
 }
 
 /// `res` as N or (NX, NY, NZ).
-pub fn resolution(res: Option<&Bound<'_, PyAny>>) -> PyResult<Option<[usize; 3]>> {
+fn resolution(res: Option<&Bound<'_, PyAny>>) -> PyResult<Option<[usize; 3]>> {
     let Some(r) = res else { return Ok(None) };
     if let Ok(n) = r.extract::<usize>() {
         return Ok(Some([n; 3]));
@@ -351,18 +370,8 @@ pub fn voxelize<'py>(
     word: &str,
     z: Option<(usize, usize)>,
 ) -> PyResult<(Bound<'py, PyAny>, [f64; 3], [f64; 3], [usize; 3])> {
-    let res = resolution(res)?;
-    if res.is_some() == voxel.is_some() {
-        return Err(text("give res or voxel (one of them)".into()));
-    }
+    let grid = GridOptions::new(res, voxel, pad, bounds)?.grid(scene)?;
     let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
-    let grid = GridOptions {
-        res,
-        voxel,
-        pad,
-        bounds,
-    }
-    .grid(scene)?;
     let slicer = opts.slicer(scene, grid)?;
     let slabs = slab_range(z, grid.dims[2])?;
     let [nx, ny, _] = grid.dims;

@@ -11,7 +11,7 @@ use csgpix_zarr::{voxelize_rows, VolumeAttrs, ZarrVolume, DEFAULT_CHUNK};
 use rtl_model::Equations;
 
 use crate::errors::{text, voxel};
-use crate::voxel::{resolution, GridOptions, RunOptions, Scene};
+use crate::voxel::{GridOptions, RunOptions, Scene};
 
 /// A Zarr store's error, kept whole where it wraps a scene error.
 fn zarr(e: csgpix_zarr::Error) -> PyErr {
@@ -58,19 +58,9 @@ pub fn zarr_create<'py>(
     blend: Option<&str>,
     word: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let res = resolution(res)?;
-    if res.is_some() == voxel.is_some() {
-        return Err(text("give res or voxel (one of them)".into()));
-    }
+    let grid = GridOptions::new(res, voxel, pad, bounds)?.grid(scene)?;
     // Checked here so that a bad option fails before any file is written.
     let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
-    let grid = GridOptions {
-        res,
-        voxel,
-        pad,
-        bounds,
-    }
-    .grid(scene)?;
     opts.slicer(scene, grid)?;
     let values = csgpix_zarr::values_text(grey, blend.is_some());
     let attrs = VolumeAttrs::new(format!("csgpix voxelize {}", scene.name), values);
