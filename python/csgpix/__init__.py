@@ -91,6 +91,7 @@ def voxelize(
     blend: Optional[str] = None,
     word: str = "10/10/11",
     z: Optional[Tuple[int, int]] = None,
+    max_memory: Optional[int] = None,
 ) -> Volume:
     """Voxelize ``scene`` (a :class:`Scene` or a ``.csg``/``.scad`` path) as
     ``csgpix voxelize`` does: ``res`` voxels per axis (N or (NX, NY, NZ)) or cubic voxels of
@@ -100,12 +101,15 @@ def voxelize(
     of the whole volume, computed without the others. ``model`` is ``cycle``, ``word`` or
     ``float``; ``route`` (word) ``intervals`` or ``array``; ``eval`` ``blist``, ``tree`` or
     ``stack``; ``sampling`` ``centre`` or ``slab`` (docs/voxelization.md).
+
+    A run whose memory estimate is over ``max_memory`` MiB (default: the memory available
+    now) is refused before anything is allocated, as the command line's ``--max-memory``.
     """
     if not isinstance(scene, Scene):
         scene = load(scene)
     data, origin, spacing, dims = _native.voxelize(
         scene, res, voxel=voxel, pad=pad, bounds=bounds, sampling=sampling, model=model,
-        route=route, eval=eval, grey=grey, blend=blend, word=word, z=z,
+        route=route, eval=eval, grey=grey, blend=blend, word=word, z=z, max_memory=max_memory,
     )
     k0, k1 = z if z is not None else (0, dims[2])
     return Volume(data, tuple(origin), tuple(spacing), tuple(dims), (k0, k1))

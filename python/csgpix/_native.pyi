@@ -44,6 +44,7 @@ def voxelize(
     blend: Optional[str] = None,
     word: str = "10/10/11",
     z: Optional[Tuple[int, int]] = None,
+    max_memory: Optional[int] = None,
 ) -> Tuple[npt.NDArray[np.uint8], _Vec3, _Vec3, Tuple[int, int, int]]: ...
 
 # --- drawing on the array ----------------------------------------------------------------
@@ -106,6 +107,7 @@ def zarr_write_rows(
     blend: Optional[str] = None,
     word: str = "10/10/11",
     threads: Optional[int] = None,
+    max_memory: Optional[int] = None,
 ) -> Dict[str, int]: ...
 
 # --- array models (cocotb reference) -----------------------------------------------------

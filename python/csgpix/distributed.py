@@ -76,12 +76,14 @@ def voxelize_zarr(
     blend: Optional[str] = None,
     word: str = "10/10/11",
     threads: Optional[int] = None,
+    max_memory: Optional[int] = None,
 ) -> Dict[str, Any]:
     """Voxelize ``scene`` into the Zarr volume ``out`` (a new directory), chunk rows as
     tasks of the Dask ``client`` (``dask.distributed.Client``), or in this process when
     ``client`` is None (one call over every row). Grid and run options are those of :func:`csgpix.voxelize`; ``chunk``
     is N or (Z, Y, X) voxels; ``threads`` is each task's voxelizer threads (default: the
-    worker's cores). Returns the run's figures: ``dims``, ``chunk``, ``rows``, ``tasks`` and the
+    worker's cores); ``max_memory`` (MiB, default: the memory available where the task runs)
+    bounds each task's estimate, checked in the task before it allocates. Returns the run's figures: ``dims``, ``chunk``, ``rows``, ``tasks`` and the
     work summed over the tasks.
 
     Nothing is left behind on failure: the staging directory is removed and ``out`` is not
@@ -96,7 +98,7 @@ def voxelize_zarr(
     if not parent.is_dir():
         raise CsgpixError(f"{out}: no such directory {parent}")
     options = dict(sampling=sampling, model=model, route=route, eval=eval, grey=grey,
-                   blend=blend, word=word, threads=threads)
+                   blend=blend, word=word, threads=threads, max_memory=max_memory)
     staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".csgpix-tmp", dir=parent))
     try:
         meta = _native.zarr_create(

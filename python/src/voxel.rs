@@ -93,6 +93,7 @@ impl Scene {
 /// Read a `.csg` scene (or a `.scad` one through OpenSCAD) and the files it imports.
 #[pyfunction]
 pub fn load(path: PathBuf) -> PyResult<Scene> {
+    limit_readers();
     let loaded = load_scene(&path).map_err(voxel)?;
     Ok(Scene {
         loaded,
@@ -110,6 +111,7 @@ pub fn load_expr(expr: &str, prims: Vec<(String, Bound<'_, PyAny>)>) -> PyResult
         .into_iter()
         .map(|(name, v)| binding(name, &v))
         .collect::<PyResult<Vec<_>>>()?;
+    limit_readers();
     let loaded = scene_from_expr(expr, &bindings).map_err(voxel)?;
     let prims = bindings
         .iter()
@@ -120,6 +122,35 @@ pub fn load_expr(expr: &str, prims: Vec<(String, Bound<'_, PyAny>)>) -> PyResult
         name: format!("--expr {expr:?}"),
         source: Source::Expr(expr.to_string(), prims),
     })
+}
+
+/// NRRD datasets are refused by their header's `sizes` when their samples would not fit in
+/// the memory available now, before their data is read (as the command line's
+/// `--max-memory` does).
+fn limit_readers() {
+    let bytes = csgpix_scene::memory::default_mib() << 20;
+    csgpix_scene::nrrd::limit_samples_to_memory(bytes, "the memory available (MemAvailable)");
+}
+
+/// Refuse a run whose estimate `need` (bytes) is over `max_memory` MiB, by default the memory
+/// available now (docs/memory.md), before anything is allocated.
+pub fn check_memory(need: u64, max_memory: Option<u64>) -> PyResult<()> {
+    use csgpix_scene::memory::{default_mib, MAX_MIB};
+    let mib = max_memory.unwrap_or_else(default_mib).clamp(1, MAX_MIB);
+    if need <= mib << 20 {
+        return Ok(());
+    }
+    Err(text(format!(
+        "this run needs about {} MiB, over max_memory {mib}: lower res (or z, or chunk) \
+         or raise max_memory",
+        need.div_ceil(1 << 20)
+    )))
+}
+
+/// Bytes the imports of `scene` hold on `grid` (datasets' samples, meshes' runs).
+pub fn imports_bytes(scene: &Scene, grid: &Grid) -> u64 {
+    let each = scene.loaded.sampled.iter().map(|s| s.memory_estimate(grid));
+    each.fold(0, u64::saturating_add)
 }
 
 fn binding(name: String, v: &Bound<'_, PyAny>) -> PyResult<Binding> {
@@ -352,7 +383,7 @@ pub fn slab_range(z: Option<(usize, usize)>, nz: usize) -> PyResult<std::ops::Ra
 #[pyfunction]
 #[pyo3(signature = (scene, res=None, *, voxel=None, pad=0, bounds=None, sampling="centre",
     model="word", route="intervals", eval="blist", grey=false, blend=None, word="10/10/11",
-    z=None))]
+    z=None, max_memory=None))]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 pub fn voxelize<'py>(
     py: Python<'py>,
@@ -369,11 +400,20 @@ pub fn voxelize<'py>(
     blend: Option<&str>,
     word: &str,
     z: Option<(usize, usize)>,
+    max_memory: Option<u64>,
 ) -> PyResult<(Bound<'py, PyAny>, [f64; 3], [f64; 3], [usize; 3])> {
     let grid = GridOptions::new(res, voxel, pad, bounds)?.grid(scene)?;
     let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
-    let slicer = opts.slicer(scene, grid)?;
     let slabs = slab_range(z, grid.dims[2])?;
+    // The estimate of a run over these slabs: the volume it returns is theirs alone.
+    let mut held = grid;
+    held.dims[2] = slabs.len().max(1);
+    let threads = rayon::current_num_threads();
+    let prims = scene.loaded.scene.primitive_count();
+    let need = csgpix_voxel::memory_estimate(&held, prims, threads)
+        .saturating_add(imports_bytes(scene, &grid));
+    check_memory(need, max_memory)?;
+    let slicer = opts.slicer(scene, grid)?;
     let [nx, ny, _] = grid.dims;
     let n = slabs.len();
     let bytes = opts.run(py, scene, &slicer, slabs)?;

@@ -11,7 +11,7 @@ use csgpix_zarr::{voxelize_rows, VolumeAttrs, ZarrVolume, DEFAULT_CHUNK};
 use rtl_model::Equations;
 
 use crate::errors::{text, voxel};
-use crate::voxel::{GridOptions, RunOptions, Scene};
+use crate::voxel::{check_memory, imports_bytes, GridOptions, RunOptions, Scene};
 
 /// A Zarr store's error, kept whole where it wraps a scene error.
 fn zarr(e: csgpix_zarr::Error) -> PyErr {
@@ -76,7 +76,7 @@ pub fn zarr_create<'py>(
 /// the store's. `threads`: the voxelizer's (default: every core). Returns the rows' work.
 #[pyfunction]
 #[pyo3(signature = (scene, path, rows, *, sampling="centre", model="word", route="intervals",
-    eval="blist", grey=false, blend=None, word="10/10/11", threads=None))]
+    eval="blist", grey=false, blend=None, word="10/10/11", threads=None, max_memory=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn zarr_write_rows<'py>(
     py: Python<'py>,
@@ -91,15 +91,25 @@ pub fn zarr_write_rows<'py>(
     blend: Option<&str>,
     word: &str,
     threads: Option<usize>,
+    max_memory: Option<u64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
     let store = ZarrVolume::open(&path).map_err(zarr)?;
-    let slicer = opts.slicer(scene, *store.grid())?;
-    let eval = opts.evaluator(scene);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads.unwrap_or(0))
         .build()
         .map_err(|e| text(e.to_string()))?;
+    // Checked before anything is allocated: the store's grid and chunks are what its
+    // zarr.json says, whoever wrote it.
+    let grid = *store.grid();
+    let prims = scene.loaded.scene.primitive_count();
+    let need =
+        csgpix_zarr::memory_estimate(&grid, store.chunk(), prims, pool.current_num_threads())
+            .map_err(zarr)?
+            .saturating_add(imports_bytes(scene, &grid));
+    check_memory(need, max_memory)?;
+    let slicer = opts.slicer(scene, grid)?;
+    let eval = opts.evaluator(scene);
     let set = Equations::Derived.set();
     let work = py
         .detach(|| {

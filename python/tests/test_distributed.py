@@ -101,3 +101,10 @@ def test_an_existing_output_is_refused(tmp_path):
     with pytest.raises(csgpix.CsgpixError, match="exists"):
         cd.voxelize_zarr(str(SCENES / "figure-5.2.csg"), out, 8)
     assert list(out.iterdir()) == []
+
+
+def test_a_task_over_the_memory_limit_fails_and_leaves_nothing(tmp_path):
+    out = tmp_path / "big.zarr"
+    with pytest.raises(csgpix.CsgpixError, match="over max_memory 8"):
+        cd.voxelize_zarr(str(SCENES / "figure-5.2.csg"), out, 512, chunk=64, max_memory=8)
+    assert list(tmp_path.iterdir()) == []

@@ -117,3 +117,12 @@ def test_the_volume_is_an_array():
     assert np.asarray(vol) is vol.data
     i, j, k = 3, 4, 5
     assert np.allclose(vol.centre(i, j, k), np.add(vol.origin, np.multiply((i, j, k), vol.spacing)))
+
+
+def test_a_run_over_the_memory_limit_is_refused_before_it_allocates():
+    scene = csgpix.load(SCENES / "figure-5.2.csg")
+    with pytest.raises(csgpix.CsgpixError, match=r"needs about \d+ MiB, over max_memory 16"):
+        csgpix.voxelize(scene, 1024, max_memory=16)
+    # A slab range holds its slabs only: the same grid fits in a few slabs.
+    part = csgpix.voxelize(scene, (64, 64, 4096), z=(0, 2), max_memory=64)
+    assert part.data.shape == (2, 64, 64)

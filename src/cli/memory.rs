@@ -1,12 +1,7 @@
 //! `--max-memory`: the one memory limit every allocating command checks its estimate against
 //! before it allocates (docs/memory.md).
 
-/// The largest limit accepted, in MiB: 2^43 MiB is 2^63 bytes, so the limit in bytes never
-/// wraps.
-pub const MAX_MIB: u64 = 1 << 43;
-
-/// Used when the machine's available memory cannot be read.
-const FALLBACK_MIB: u64 = 4096;
+pub use csgpix::scene::memory::{default_mib, MAX_MIB};
 
 /// `--max-memory`, flattened into each command that allocates in proportion to its input.
 #[derive(clap::Args, Debug, Clone, Copy)]
@@ -44,32 +39,6 @@ impl MaxMemory {
     }
 }
 
-/// The default limit: MemAvailable, capped by the address-space limit less an eighth.
-pub fn default_mib() -> u64 {
-    let available = mem_available_mib().unwrap_or(FALLBACK_MIB);
-    let cap = address_space_mib().map_or(u64::MAX, |m| m - m / 8);
-    available.min(cap).clamp(1, MAX_MIB)
-}
-
-/// MemAvailable of /proc/meminfo, in MiB.
-fn mem_available_mib() -> Option<u64> {
-    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
-    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
-    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    Some(kib >> 10)
-}
-
-/// The soft address-space limit (`ulimit -v`) of /proc/self/limits, in MiB; None if unlimited.
-fn address_space_mib() -> Option<u64> {
-    let text = std::fs::read_to_string("/proc/self/limits").ok()?;
-    let line = text.lines().find(|l| l.starts_with("Max address space"))?;
-    let soft = line
-        .trim_start_matches("Max address space")
-        .split_whitespace()
-        .next()?;
-    soft.parse::<u64>().ok().map(|b| b >> 20)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -80,14 +49,5 @@ mod tests {
         assert_eq!(m.bytes(), 1 << 63);
         assert!(m.check(u64::MAX, "x", "y").is_err());
         assert!(m.check(1 << 63, "x", "y").is_ok());
-    }
-
-    #[test]
-    fn the_default_is_at_least_one_mib_and_at_most_what_is_available() {
-        let d = default_mib();
-        assert!((1..=MAX_MIB).contains(&d));
-        if let Some(avail) = mem_available_mib() {
-            assert!(d <= avail.max(1));
-        }
     }
 }

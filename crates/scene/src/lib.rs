@@ -24,6 +24,7 @@ pub mod extrude;
 pub mod grid;
 pub mod hull;
 pub mod input;
+pub mod memory;
 pub mod mesh;
 pub mod nrrd;
 pub mod output;
