@@ -2,12 +2,13 @@
 the models against each other, and errors with their place."""
 
 import json
+import os
 
 import numpy as np
 import pytest
 
 import csgpix
-from conftest import ROOT, SCENES, read_nrrd, run_cli
+from conftest import ROOT, SCENES, have, read_nrrd, run_cli
 
 
 def cli_volume(tmp, *args):
@@ -77,6 +78,30 @@ def test_an_expression_over_files(tmp):
     )
     assert np.array_equal(vol.data, want)
     assert scene.primitives == 5
+
+
+def test_an_expression_with_a_mesh(tmp):
+    # A closed mesh written by the command line (Marching Cubes of a voxelized scene), bound
+    # by name: the same voxels as the command line's --prim.
+    r = run_cli("voxelize", str(SCENES / "hollow-cube.csg"), "--res", "12", "--mesh",
+                str(tmp / "part.stl"), "-o", str(tmp / "part.nrrd"))
+    assert r.returncode == 0, r.stderr.decode()
+    prims = [("box", str(SCENES / "figure-5.2.csg")), ("part", str(tmp / "part.stl"))]
+    vol = csgpix.voxelize(csgpix.load_expr("box + part", prims), 24)
+    want, _ = cli_volume(tmp, "--expr", "box + part", "--prim", f"box={SCENES / 'figure-5.2.csg'}",
+                         "--prim", f"part={tmp / 'part.stl'}", "--res", "24")
+    assert np.array_equal(vol.data, want) and (vol.data > 0).any()
+
+
+def test_a_scad_file_goes_through_openscad(tmp):
+    if not have("openscad"):
+        if os.environ.get("CSGPIX_OPENSCAD") == "require":
+            pytest.fail("CSGPIX_OPENSCAD=require but openscad is not installed")
+        pytest.skip("openscad is not installed")
+    scad = SCENES / "extrusions.scad"
+    want, _ = cli_volume(tmp, str(scad), "--voxel", "0.5", "--pad", "1")
+    vol = csgpix.voxelize(csgpix.load(scad), voxel=0.5, pad=1)
+    assert np.array_equal(vol.data, want) and (vol.data > 0).any()
 
 
 def test_errors_carry_file_line_and_column(tmp):
