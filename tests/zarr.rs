@@ -8,7 +8,7 @@
 //! library that wrote it. `tests/data/read_zarr.py` reads them with zarr-python as well.
 
 mod common;
-use common::csgpix;
+use common::{csgpix, estimate_mib, peak_mib};
 
 use std::collections::BTreeMap;
 use std::io::Read;
@@ -564,22 +564,10 @@ fn a_signal_while_chunks_are_written_leaves_nothing() {
     }
 }
 
-/// The estimate a run checks, in MiB: the number in its refusal under `--max-memory 1`.
-fn estimate_mib(args: &[&str]) -> u64 {
-    let o = csgpix(&[args, &["--max-memory", "1"]].concat());
-    let err = String::from_utf8_lossy(&o.stderr);
-    let after = err
-        .split("needs about ")
-        .nth(1)
-        .unwrap_or_else(|| panic!("{err}"));
-    after.split(' ').next().unwrap().parse().unwrap()
-}
-
 /// Memory: the Zarr run's estimate does not grow with the grid's depth where NRRD's does, and
 /// it is above the peak measured (docs/memory.md has the larger runs).
 #[cfg(target_os = "linux")]
 #[test]
-#[allow(clippy::zombie_processes)] // reaped by wait4, which also gives its rusage
 fn the_estimate_does_not_grow_with_depth_and_bounds_the_peak() {
     let d = tempfile::tempdir().unwrap();
     let (nrrd, store) = (d.path().join("v.nrrd"), d.path().join("v.zarr"));
@@ -606,18 +594,7 @@ fn the_estimate_does_not_grow_with_depth_and_bounds_the_peak() {
         "-o",
         s(&store),
     ];
-    let child = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .stdout(std::process::Stdio::null())
-        .spawn()
-        .unwrap();
-    let (mut status, mut usage) = (0, unsafe { std::mem::zeroed::<libc::rusage>() });
-    // SAFETY: wait4(2) on our own child, reaped here and nowhere else.
-    let pid = unsafe { libc::wait4(child.id() as i32, &mut status, 0, &mut usage) };
-    assert_eq!(pid, child.id() as i32);
-    assert!(libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0);
-    let peak = (usage.ru_maxrss as u64).div_ceil(1024);
+    let peak = peak_mib(&args);
     let estimate = estimate_mib(&args);
     eprintln!("twelve.csg 384³ --format zarr: estimate {estimate} MiB, peak {peak} MiB");
     assert!(estimate >= peak, "estimate {estimate} MiB, peak {peak} MiB");

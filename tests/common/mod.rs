@@ -76,3 +76,41 @@ pub fn volume(dims: [usize; 3], f: impl Fn(usize, usize, usize) -> bool) -> csgp
     }
     csgpix::voxel::Volume { dims, voxels }
 }
+
+/// The estimate a run checks, in MiB: the number in its refusal under `--max-memory 1`.
+pub fn estimate_mib(args: &[&str]) -> u64 {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .args(args)
+        .args(["--max-memory", "1"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    let after = err
+        .split("needs about ")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{err}"));
+    after.split(' ').next().unwrap().parse().unwrap()
+}
+
+/// Run csgpix and return its peak resident memory in MiB (the kernel's ru_maxrss).
+#[cfg(target_os = "linux")]
+#[allow(clippy::zombie_processes)] // reaped by wait4, which also gives its rusage
+pub fn peak_mib(args: &[&str]) -> u64 {
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let (mut status, mut usage) = (0, unsafe { std::mem::zeroed::<libc::rusage>() });
+    // SAFETY: wait4(2) on our own child, reaped here and nowhere else.
+    let pid = unsafe { libc::wait4(child.id() as i32, &mut status, 0, &mut usage) };
+    assert_eq!(pid, child.id() as i32);
+    assert!(
+        libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0,
+        "{args:?}"
+    );
+    (usage.ru_maxrss as u64).div_ceil(1024)
+}
