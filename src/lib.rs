@@ -9,7 +9,8 @@
 //! | crate | re-exported as | what |
 //! |---|---|---|
 //! | `rtl-model` | [`rtl_model`] | the processor: depth word, DEPGEN, comparator, select logic, clipping stack, the `cycle` and `word` arrays |
-//! | `csgpix-scene` | [`scene`] | display lists, expressions, `.csg` scenes, meshes, NRRD, grids and volumes, outputs |
+//! | `csgpix-scene` | [`scene`] | display lists, expressions, scenes, meshes, NRRD, grids and volumes, outputs |
+//! | `csgpix-openscad` | [`openscad`] (and [`scad`]) | the OpenSCAD language: `.csg`, `.scad` through openscad, extrusions, hulls |
 //! | `csgpix-draw` | [`draw`] | scenes → display lists → array operations, the `float` model, panels, throughput |
 //! | `csgpix-voxel` | [`voxel`] | slices from the array, masks, the Blist and baseline evaluators, requirements |
 //! | `csgpix-sculpt` | [`sculpt`] | the hashed octree of seed 000, its baselines, Marching Cubes, sculpting |
@@ -24,6 +25,8 @@ pub mod png;
 pub mod study;
 
 pub use csgpix_draw as draw;
+pub use csgpix_openscad as openscad;
+pub use csgpix_openscad as scad;
 pub use csgpix_scene as scene;
 pub use csgpix_sculpt as sculpt;
 pub use csgpix_voxel as voxel;
@@ -32,9 +35,9 @@ pub use glam;
 pub use rtl_model;
 
 pub use csgpix_draw::{compile, float, palette, panels, polygon, project, throughput};
+pub use csgpix_openscad::{extrude, hull};
 pub use csgpix_scene::{
-    clip_expr, csg_expr, dataset, display_list, extrude, grid, hull, input, mesh, nrrd, output,
-    scad, solid, trimesh,
+    clip_expr, csg_expr, dataset, display_list, grid, input, mesh, nrrd, output, solid, trimesh,
 };
 pub use csgpix_sculpt::octree;
 pub use csgpix_voxel::{blend, blist, evaluate, requirements, sampled, slice};

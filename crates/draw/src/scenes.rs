@@ -7,9 +7,9 @@ use std::path::{Path, PathBuf};
 
 use crate::compile::CompileError;
 use crate::project::{project, Projected, View};
+use csgpix_openscad::parse_csg;
 use csgpix_scene::clip_expr::Clip;
 use csgpix_scene::display_list::{field_position, DisplayList};
-use csgpix_scene::scad::parse_csg;
 use csgpix_scene::solid::CsgScene;
 use rtl_model::ArrayConfig;
 
@@ -115,7 +115,7 @@ impl Scene {
     }
 
     fn load_csg(path: &Path, view: View, cfg: &ArrayConfig) -> Result<Scene, LoadError> {
-        let text = csgpix_scene::scad::scene_text(path)?;
+        let text = csgpix_openscad::scene_text(path)?;
         let scene = parse_csg(&text, &path.display().to_string())?;
         scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);

@@ -1,8 +1,7 @@
 //! csgpix scenes and formats: what a user hands the simulator and what it hands back.
 //!
 //! Display lists (§5.2) and clipping functions (§5.2.1) for the array; CSG scenes over convex
-//! solids read from OpenSCAD's `.csg` (with its 2D shapes, extrusions, hulls and offsets),
-//! CSG expressions over named primitives (§4.3); closed triangle meshes and NRRD volume
+//! solids (read from OpenSCAD by `csgpix-openscad`), CSG expressions over named primitives (§4.3); closed triangle meshes and NRRD volume
 //! datasets as primitives (§3.2-3.3); the voxel grid and volumes (§4.4); mesh and volume
 //! writers, and outputs written whole or not at all. No processor here: `csgpix-draw` turns
 //! scenes into array operations.
@@ -20,15 +19,12 @@ pub mod dataset;
 pub mod display_list;
 pub mod error;
 pub mod expr;
-pub mod extrude;
 pub mod grid;
-pub mod hull;
 pub mod input;
 pub mod memory;
 pub mod mesh;
 pub mod nrrd;
 pub mod output;
-pub mod scad;
 pub mod solid;
 pub mod trimesh;
 

@@ -48,7 +48,7 @@
 //!     cube(size = [4, 4, 10], center = false);
 //!   }
 //! }";
-//! let scene = csgpix_scene::scad::parse_csg(text, "x.csg")?;
+//! let scene = csgpix_openscad::parse_csg(text, "x.csg")?;
 //! let grid = Grid::new([16; 3], DVec3::ZERO, DVec3::splat(8.0))?;
 //! let slicer = Slicer::new(&scene, grid, SlicerOptions::default())?;
 //! let eval = BlistEval::new(&scene.root);

@@ -23,10 +23,10 @@ use crate::error::{BindingProblem, Error, Result};
 use crate::ranges::toggle_run;
 use crate::slice::Mask;
 use csgpix_draw::project::colour_code;
+use csgpix_openscad::parse_csg;
 use csgpix_scene::dataset::Dataset;
 use csgpix_scene::grid::Grid;
 use csgpix_scene::nrrd::read_nrrd;
-use csgpix_scene::scad::parse_csg;
 use csgpix_scene::solid::{CsgNode, CsgScene, Import, IMPORTED};
 use csgpix_scene::trimesh::TriMesh;
 use csgpix_scene::Location;
@@ -190,7 +190,7 @@ impl Loaded {
 /// Read a `.csg` scene and every file it imports (relative to the scene's directory).
 pub fn load_scene(path: &Path) -> Result<Loaded> {
     let name = path.display().to_string();
-    let text = csgpix_scene::scad::scene_text(path)?;
+    let text = csgpix_openscad::scene_text(path)?;
     let scene = parse_csg(&text, &name)?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let sampled = load_imports(&scene, &name, &dir)?;

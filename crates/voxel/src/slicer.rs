@@ -133,7 +133,7 @@ impl Slicer {
     /// use csgpix_voxel::{Error, Grid, Sampling, Slicer, SlicerOptions};
     /// use glam::DVec3;
     ///
-    /// let scene = csgpix_scene::scad::parse_csg("cube(size = [2, 2, 2]);", "c.csg").unwrap();
+    /// let scene = csgpix_openscad::parse_csg("cube(size = [2, 2, 2]);", "c.csg").unwrap();
     /// let grid = Grid::new([8, 8, 4], DVec3::ZERO, DVec3::splat(2.0)).unwrap();
     /// let opts = SlicerOptions { sampling: Sampling::Slab, ..SlicerOptions::default() };
     /// let s = Slicer::new(&scene, grid, opts).unwrap();
@@ -142,7 +142,7 @@ impl Slicer {
     /// assert_eq!(s.window(), (0, s.slab_raw - 1));
     ///
     /// // A scene naming a file needs it loaded.
-    /// let imports = csgpix_scene::scad::parse_csg("import(\"part.stl\");", "i.csg").unwrap();
+    /// let imports = csgpix_openscad::parse_csg("import(\"part.stl\");", "i.csg").unwrap();
     /// let err = Slicer::new(&imports, grid, SlicerOptions::default()).err();
     /// assert_eq!(err, Some(Error::ImportsNotLoaded { named: 1, loaded: 0 }));
     /// ```

@@ -43,7 +43,7 @@
 //! use glam::DVec3;
 //!
 //! # fn main() -> Result<(), Box<dyn std::error::Error>> {
-//! let scene = csgpix_scene::scad::parse_csg("cube(size = [8, 8, 8]);", "cube.csg")?;
+//! let scene = csgpix_openscad::parse_csg("cube(size = [8, 8, 8]);", "cube.csg")?;
 //! let grid = Grid::new([16, 16, 10], DVec3::ZERO, DVec3::splat(8.0))?;
 //! let dir = tempfile::tempdir()?;
 //! let path = dir.path().join("cube.zarr");

@@ -17,7 +17,7 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::Result;
+use csgpix_scene::Result;
 
 /// A 2D shape: closed outlines, filled by the even-odd rule (OpenSCAD's `polygon` with
 /// `paths`: an outline inside another is a hole).

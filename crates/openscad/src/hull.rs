@@ -8,7 +8,7 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::Result;
+use csgpix_scene::Result;
 
 /// Relative tolerance: a point closer than this times the extent to a face's plane is on it.
 const EPS: f64 = 1e-9;

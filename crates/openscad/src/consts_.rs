@@ -1,0 +1,31 @@
+//! Limits and OpenSCAD constants.
+
+/// Deepest nesting of statements accepted: a top-level statement is at depth 1, so a cube may
+/// sit inside at most 999 groups.
+pub const MAX_NESTING: usize = 1_000;
+
+/// Deepest nesting of vectors accepted (matrices, points and faces need 2).
+pub const MAX_VECTOR_NESTING: usize = 64;
+
+/// Most fragments (points on a circle) a sphere or cylinder may have.
+pub const MAX_FRAGMENTS: usize = 10_000;
+
+/// Most vertices a whole scene may have (a sphere with `$fn = 1414` alone has about that).
+pub const MAX_SCENE_VERTICES: usize = 1_000_000;
+
+/// Most points a polyhedron may have (its convexity check takes points × faces steps).
+pub const MAX_POLYHEDRON_POINTS: usize = 10_000;
+
+/// Largest absolute coordinate of a placed solid, so that areas and volumes stay finite.
+pub const MAX_COORDINATE: f64 = 1e12;
+
+/// OpenSCAD's `GRID_FINE` (`src/geometry/Grid.h`): below this radius a circle has 3 fragments.
+pub(crate) const GRID_FINE: f64 = 0.000_000_953_674_316_406_25;
+
+/// OpenSCAD's `F_MINIMUM` (`src/core/primitives.cc`): `$fa` and `$fs` are clamped up to it.
+pub(crate) const F_MINIMUM: f64 = 0.01;
+
+/// How far (relative to the largest coordinate) a polyhedron point may lie outside a face
+/// plane. OpenSCAD writes polyhedron coordinates with 6 significant digits, so faces of a
+/// convex polyhedron can be that far from flat in an exported file.
+pub(crate) const CONVEXITY_TOLERANCE: f64 = 1e-5;

@@ -1,0 +1,284 @@
+//! 2D shapes and the nodes over them: `square`, `circle`, `polygon`, `hull` and `offset` of
+//! 2D children, extrusion parameters.
+
+use glam::DVec2;
+
+use crate::extrude::{default_slices, offset, region_points, Linear, Offset, Poly2, Region};
+use crate::{consts_::*, lex::*, node::*, primitives::*, reader::*, transform::*};
+use csgpix_scene::solid::CsgNode;
+
+/// The leaves under a `hull()`: through unions only (the hull of a difference is not the hull
+/// of its operands' vertices).
+pub(crate) fn hull_leaves(n: &CsgNode, out: &mut Vec<usize>) -> Result<(), String> {
+    let mut stack = vec![n];
+    while let Some(n) = stack.pop() {
+        match n {
+            CsgNode::Solid(i) => out.push(*i),
+            CsgNode::Empty => {}
+            CsgNode::Union(c) => stack.extend(c.iter()),
+            _ => {
+                return Err(
+                    "hull() of a difference or intersection is not supported (csgpix takes the hull of its children's vertices)"
+                        .into(),
+                )
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A finished `hull()` of 2D shapes: the convex hull of their vertices.
+pub(crate) fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {
+    let pos = frame.pos;
+    let at = frame.first_flat.unwrap_or(pos);
+    let mut pts = vec![];
+    for r in &frame.flats {
+        region_points(r, &mut pts).map_err(|e| Fail {
+            pos,
+            msg: e.message,
+        })?;
+    }
+    let h = crate::hull::hull2(&pts);
+    if h.len() < 3 {
+        return Ok(None);
+    }
+    Ok(Some(Item::Flat(Region::Poly(Poly2 { paths: vec![h] }), at)))
+}
+
+/// A finished `offset()`.
+pub(crate) fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
+    let pos = frame.pos;
+    if !frame.children.is_empty() {
+        return fail(pos, "`offset` takes 2D children, found a solid");
+    }
+    if frame.flats.is_empty() {
+        return Ok(None);
+    }
+    let Spec::Offset(o) = frame.spec else {
+        return fail(pos, "internal: an offset without its parameters");
+    };
+    let at = frame.first_flat.unwrap_or(pos);
+    let region = region_of(Op::Union, frame.flats);
+    let r = offset(&region, o, &sin_cos_degrees).map_err(|e| Fail {
+        pos,
+        msg: e.message,
+    })?;
+    Ok(Some(Item::Flat(r, at)))
+}
+
+/// The 2D tree an operation makes of its 2D children.
+pub(crate) fn region_of(op: Op, mut parts: Vec<Region>) -> Region {
+    if parts.len() == 1 && op == Op::Union {
+        return parts.pop().unwrap_or(Region::Union(vec![]));
+    }
+    match op {
+        Op::Union => Region::Union(parts),
+        Op::Intersection => Region::Intersection(parts),
+        Op::Difference => Region::Difference(parts),
+    }
+}
+
+/// Every vertex of every shape of a 2D tree (for the slice and fragment counts).
+pub(crate) fn collect_points(r: &Region, out: &mut Vec<DVec2>) {
+    match r {
+        Region::Poly(p) => out.extend(p.points()),
+        Region::Union(c) | Region::Intersection(c) | Region::Difference(c) => {
+            c.iter().for_each(|c| collect_points(c, out))
+        }
+    }
+}
+
+/// `linear_extrude`'s slices: as given, or OpenSCAD 2021.01's count from the outlines.
+pub(crate) fn linear_slices(a: LinearArgs, pts: &[DVec2]) -> Linear {
+    let mut l = a.linear;
+    l.slices = match a.slices {
+        Some(n) => n,
+        None => {
+            let r = pts.iter().map(|p| p.length()).fold(0.0, f64::max);
+            let ds = DVec2::new(l.scale[0] - 1.0, l.scale[1] - 1.0);
+            let delta = pts.iter().map(|p| (*p * ds).length()).fold(0.0, f64::max);
+            let (fn_, fa, fs) = a.res;
+            default_slices(&l, r, fn_, fa, fs, delta).min(MAX_FRAGMENTS as f64) as usize
+        }
+    };
+    l
+}
+
+/// The plane part (x, y) of a transform, for 2D shapes.
+pub(crate) fn plane_part(m: Option<&Mat4>) -> [[f64; 3]; 2] {
+    let m = m.unwrap_or(&IDENTITY);
+    [[m[0][0], m[0][1], m[0][3]], [m[1][0], m[1][1], m[1][3]]]
+}
+
+/// `sin_degrees` and `cos_degrees` of an angle.
+pub(crate) fn sin_cos_degrees(a: f64) -> (f64, f64) {
+    (sin_degrees(a), cos_degrees(a))
+}
+
+/// The parameters of an extrusion or offset, read when the statement opens.
+pub(crate) fn flat_spec(head: &Head) -> Result<Spec, Fail> {
+    let p = &head.params;
+    let res = || -> Result<(f64, f64, f64), Fail> {
+        let r = Resolution::read(p)?;
+        Ok((r.fn_, r.fa, r.fs))
+    };
+    Ok(match head.kind {
+        NodeKind::LinearExtrude => Spec::Linear(linear_args(p, res()?)?),
+        NodeKind::RotateExtrude => {
+            let mut angle = p.number("angle")?.map_or(360.0, |a| a.0);
+            // OpenSCAD 2021.01: an angle outside (-360, 360] is a full turn.
+            if !(angle > -360.0 && angle <= 360.0) {
+                angle = 360.0;
+            }
+            if angle == 0.0 {
+                return fail(head.pos, "`rotate_extrude` needs a nonzero `angle`");
+            }
+            Spec::Rotate { angle, res: res()? }
+        }
+        NodeKind::Offset => {
+            let r = Resolution::read(p)?;
+            let o = match (p.number("r")?, p.number("delta")?) {
+                (Some((r_, at)), _) => {
+                    finite(r_, at, "`r`")?;
+                    Offset::Round {
+                        r: r_,
+                        fragments: r.fragments(r_.abs(), at)?,
+                    }
+                }
+                (None, Some((d, at))) => Offset::Delta {
+                    delta: finite(d, at, "`delta`")?,
+                    chamfer: p.boolean("chamfer")?,
+                },
+                (None, None) => Offset::Delta {
+                    delta: 1.0,
+                    chamfer: p.boolean("chamfer")?,
+                },
+            };
+            Spec::Offset(o)
+        }
+        _ => Spec::None,
+    })
+}
+
+pub(crate) fn finite(v: f64, at: Pos, what: &str) -> Result<f64, Fail> {
+    if v.is_finite() && v.abs() <= MAX_COORDINATE {
+        Ok(v)
+    } else {
+        fail(at, format!("{what} must be a finite number"))
+    }
+}
+
+/// `linear_extrude(height, center, convexity, twist, slices, scale)`.
+pub(crate) fn linear_args(p: &Params, res: (f64, f64, f64)) -> Result<LinearArgs, Fail> {
+    let height = match p.number("height")? {
+        Some((h, at)) => finite(h, at, "`height`")?,
+        None => 100.0,
+    };
+    let twist = match p.number("twist")? {
+        Some((t, at)) => finite(t, at, "`twist`")?,
+        None => 0.0,
+    };
+    let slices = match p.number("slices")? {
+        Some((n, at)) => {
+            if !(n.is_finite() && n < MAX_FRAGMENTS as f64) {
+                return fail(at, format!("`slices` must be below {MAX_FRAGMENTS}"));
+            }
+            Some((n.max(1.0)) as usize)
+        }
+        None => None,
+    };
+    let scale = match p.get("scale") {
+        None => [1.0, 1.0],
+        Some(v) => {
+            let s = v.pair("`scale`")?;
+            if s.iter().any(|c| !(c.is_finite() && *c >= 0.0)) {
+                return fail(v.pos, "`scale` must not be negative");
+            }
+            s
+        }
+    };
+    Ok(LinearArgs {
+        linear: Linear {
+            height,
+            center: p.boolean("center")?,
+            twist,
+            slices: 1,
+            scale,
+        },
+        slices,
+        res,
+    })
+}
+
+/// `square`, `circle` or `polygon` as a shape in its own plane.
+pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
+    match p.node {
+        NodeKind::Square => {
+            let size = match p.get("size") {
+                None => [1.0, 1.0],
+                Some(v) => {
+                    let s = v.pair("`size`")?;
+                    if s.iter().any(|c| !(*c > 0.0 && *c <= MAX_COORDINATE)) {
+                        return fail(v.pos, "`size` must be positive");
+                    }
+                    s
+                }
+            };
+            Ok(Poly2::square(size[0], size[1], p.boolean("center")?))
+        }
+        NodeKind::Circle => {
+            let r = match radius(p, "d", "r")? {
+                Some(r) => positive(r, "the radius")?,
+                None => 1.0,
+            };
+            let n = Resolution::read(p)?.fragments(r, p.pos)?;
+            check_budget(n, budget, p.pos)?;
+            Ok(Poly2::circle(r, n, sin_cos_degrees))
+        }
+        _ => polygon(p, budget),
+    }
+}
+
+/// `polygon(points, paths)`: one outline of all points, or one per path (even-odd fill).
+pub(crate) fn polygon(p: &Params, budget: usize) -> Result<Poly2, Fail> {
+    let pts = p.require("points", "points = [[x, y], …]")?;
+    let pts = pts
+        .list("`points`")?
+        .iter()
+        .map(|v| match v.list("a point")? {
+            [x, y] | [x, y, _] => {
+                let q = DVec2::new(x.number("a point")?, y.number("a point")?);
+                if q.abs().max_element() > MAX_COORDINATE || !q.is_finite() {
+                    return fail(v.pos, "a point exceeds the coordinate limit");
+                }
+                Ok(q)
+            }
+            _ => fail(v.pos, "a point must be [x, y]"),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    check_budget(pts.len(), budget, p.pos)?;
+    let paths = match p.get("paths") {
+        None => vec![pts],
+        Some(v) => v
+            .list("`paths`")?
+            .iter()
+            .map(|path| {
+                path.list("a path")?
+                    .iter()
+                    .map(|i| {
+                        let k = i.number("a point index")?;
+                        if k.fract() != 0.0 || k < 0.0 || k >= pts.len() as f64 {
+                            let msg =
+                                format!("point index {k} is not one of the {} points", pts.len());
+                            return fail(i.pos, msg);
+                        }
+                        Ok(pts[k as usize])
+                    })
+                    .collect::<Result<Vec<_>, _>>()
+            })
+            .collect::<Result<Vec<_>, _>>()?,
+    };
+    Ok(Poly2 {
+        paths: paths.into_iter().filter(|p| p.len() >= 3).collect(),
+    })
+}

@@ -1,0 +1,230 @@
+//! Tokens of the `.csg` text: numbers, names, strings, symbols, with 1-based positions.
+
+use std::fmt;
+
+// ---------------------------------------------------------------------------------------------
+// Tokens
+
+/// A 1-based line and column.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Pos {
+    pub(crate) line: usize,
+    pub(crate) col: usize,
+}
+
+impl fmt::Display for Pos {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}", self.line, self.col)
+    }
+}
+
+/// An error before the file name is attached.
+#[derive(Debug)]
+pub(crate) struct Fail {
+    pub(crate) pos: Pos,
+    pub(crate) msg: String,
+}
+
+pub(crate) fn fail<T>(pos: Pos, msg: impl Into<String>) -> Result<T, Fail> {
+    Err(Fail {
+        pos,
+        msg: msg.into(),
+    })
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Tok {
+    Ident(String),
+    Num(f64),
+    Str(String),
+    /// One of `( ) [ ] { } , ; = - + % # ! *`.
+    Sym(u8),
+    Eof,
+}
+
+impl Tok {
+    pub(crate) fn describe(&self) -> String {
+        match self {
+            Tok::Ident(name) => format!("`{name}`"),
+            Tok::Num(_) => "a number".to_string(),
+            Tok::Str(_) => "a string".to_string(),
+            Tok::Sym(c) => format!("'{}'", *c as char),
+            Tok::Eof => "end of file".to_string(),
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct Token {
+    pub(crate) tok: Tok,
+    pub(crate) pos: Pos,
+}
+
+/// Splits the text into tokens, skipping white space and comments.
+pub(crate) struct Lexer<'a> {
+    pub(crate) text: &'a str,
+    pub(crate) at: usize,
+    pub(crate) pos: Pos,
+}
+
+impl<'a> Lexer<'a> {
+    pub(crate) fn new(text: &'a str) -> Self {
+        let at = if text.starts_with('\u{feff}') { 3 } else { 0 };
+        Lexer {
+            text,
+            at,
+            pos: Pos { line: 1, col: 1 },
+        }
+    }
+
+    pub(crate) fn byte(&self, ahead: usize) -> Option<u8> {
+        self.text.as_bytes().get(self.at + ahead).copied()
+    }
+
+    /// Moves past one byte; columns count characters, not UTF-8 continuation bytes.
+    pub(crate) fn bump(&mut self) {
+        if let Some(b) = self.byte(0) {
+            self.at += 1;
+            if b == b'\n' {
+                self.pos.line += 1;
+                self.pos.col = 1;
+            } else if b & 0xC0 != 0x80 {
+                self.pos.col += 1;
+            }
+        }
+    }
+
+    pub(crate) fn bump_while(&mut self, pred: impl Fn(u8) -> bool) -> usize {
+        let start = self.at;
+        while self.byte(0).is_some_and(&pred) {
+            self.bump();
+        }
+        self.at - start
+    }
+
+    pub(crate) fn next_token(&mut self) -> Result<Token, Fail> {
+        self.skip_trivia()?;
+        let pos = self.pos;
+        let tok = match self.byte(0) {
+            None => Tok::Eof,
+            Some(b) if b.is_ascii_alphabetic() || b == b'_' || b == b'$' => self.ident(),
+            Some(b) if b.is_ascii_digit() => self.number(pos)?,
+            Some(b'.') if self.byte(1).is_some_and(|b| b.is_ascii_digit()) => self.number(pos)?,
+            Some(b'"') => self.string(pos)?,
+            Some(b) if b"()[]{},;=-+%#!*".contains(&b) => {
+                self.bump();
+                Tok::Sym(b)
+            }
+            Some(_) => {
+                let c = self.text.get(self.at..).and_then(|s| s.chars().next());
+                return fail(pos, format!("unexpected character {:?}", c.unwrap_or('?')));
+            }
+        };
+        Ok(Token { tok, pos })
+    }
+
+    pub(crate) fn skip_trivia(&mut self) -> Result<(), Fail> {
+        loop {
+            match (self.byte(0), self.byte(1)) {
+                (Some(b' ' | b'\t' | b'\r' | b'\n' | 0x0c), _) => self.bump(),
+                (Some(b'/'), Some(b'/')) => {
+                    self.bump_while(|b| b != b'\n');
+                }
+                (Some(b'/'), Some(b'*')) => self.block_comment()?,
+                _ => return Ok(()),
+            }
+        }
+    }
+
+    pub(crate) fn block_comment(&mut self) -> Result<(), Fail> {
+        let start = self.pos;
+        self.bump();
+        self.bump();
+        loop {
+            match (self.byte(0), self.byte(1)) {
+                (Some(b'*'), Some(b'/')) => {
+                    self.bump();
+                    self.bump();
+                    return Ok(());
+                }
+                (Some(_), _) => self.bump(),
+                (None, _) => return fail(start, "unterminated comment (missing `*/`)"),
+            }
+        }
+    }
+
+    pub(crate) fn ident(&mut self) -> Tok {
+        let start = self.at;
+        self.bump();
+        self.bump_while(|b| b.is_ascii_alphanumeric() || b == b'_');
+        Tok::Ident(self.text[start..self.at].to_string())
+    }
+
+    /// `12`, `-` is a separate token, `1.5`, `.5`, `5.`, `1e-3`, `2.5E+10`.
+    pub(crate) fn number(&mut self, pos: Pos) -> Result<Tok, Fail> {
+        let start = self.at;
+        self.bump_while(|b| b.is_ascii_digit());
+        if self.byte(0) == Some(b'.') {
+            self.bump();
+            self.bump_while(|b| b.is_ascii_digit());
+        }
+        if matches!(self.byte(0), Some(b'e' | b'E')) {
+            self.bump();
+            if matches!(self.byte(0), Some(b'+' | b'-')) {
+                self.bump();
+            }
+            if self.bump_while(|b| b.is_ascii_digit()) == 0 {
+                return self.bad_number(start, pos);
+            }
+        }
+        if self.byte(0).is_some_and(continues_number) {
+            return self.bad_number(start, pos);
+        }
+        let text = &self.text[start..self.at];
+        match text.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(Tok::Num(v)),
+            Ok(_) => fail(pos, format!("number `{text}` is out of range")),
+            Err(_) => self.bad_number(start, pos),
+        }
+    }
+
+    pub(crate) fn bad_number(&mut self, start: usize, pos: Pos) -> Result<Tok, Fail> {
+        self.bump_while(continues_number);
+        fail(
+            pos,
+            format!("malformed number `{}`", &self.text[start..self.at]),
+        )
+    }
+
+    pub(crate) fn string(&mut self, pos: Pos) -> Result<Tok, Fail> {
+        self.bump();
+        let mut bytes = Vec::new();
+        loop {
+            let Some(b) = self.byte(0) else {
+                return fail(pos, "unterminated string (missing `\"`)");
+            };
+            self.bump();
+            match b {
+                b'"' => return Ok(Tok::Str(String::from_utf8_lossy(&bytes).into_owned())),
+                b'\\' => {
+                    let escaped = self.byte(0).unwrap_or(b'\\');
+                    self.bump();
+                    bytes.push(match escaped {
+                        b'n' => b'\n',
+                        b't' => b'\t',
+                        b'r' => b'\r',
+                        other => other,
+                    });
+                }
+                other => bytes.push(other),
+            }
+        }
+    }
+}
+
+pub(crate) fn continues_number(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || matches!(b, b'_' | b'.' | b'$')
+}
+
+// ---------------------------------------------------------------------------------------------
+// Values and arguments

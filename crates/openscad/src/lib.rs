@@ -1,0 +1,140 @@
+//! Reader for the OpenSCAD `.csg` subset csgpix draws and voxelizes: solids, 2D shapes under
+//! extrusions, hulls and offsets under CSG operations, as OpenSCAD writes them with File →
+//! Export → Export as CSG.
+//!
+//! # What is read
+//!
+//! Statements `name(args);`, `name(args) child` and `name(args) { children }`, `//` and `/* */`
+//! comments, numbers, `true`, `false`, `undef`, strings and (nested) vectors, positional and
+//! named arguments (`$fn = 0`). The nodes:
+//!
+//! * `group()`, `union()` → [`CsgNode::Union`]; `render(convexity = …)` is read as a group
+//!   (it only asks OpenSCAD to cache the geometry, so ignoring it is harmless).
+//! * `intersection()` → [`CsgNode::Intersection`], `difference()` → [`CsgNode::Difference`]
+//!   (the first child minus the others).
+//! * `multmatrix(m = 4×4)` transforms the solids below it (nested transforms compose). As in
+//!   OpenSCAD's `multmatrix` module (`src/core/TransformNode.cc`) a matrix whose `m[3][3]` is
+//!   not 1 is divided by it; a projective or singular matrix is refused. A matrix with a
+//!   negative determinant (a mirror) reverses the winding of every face so faces stay outward.
+//! * `color([r, g, b, a])` / `color(c = [r, g, b], alpha = a)` colours the solids below it,
+//!   the innermost colour winning. Named and hex colours (`color("red")`) are refused: the CSG
+//!   export always writes the vector form.
+//! * `cube`, `sphere`, `cylinder` are tessellated exactly as OpenSCAD does (see below), and
+//!   `polyhedron` is accepted when it is closed and convex.
+//! * The modifiers `%` (background) and `*` (disable) drop the statement, as OpenSCAD leaves
+//!   such nodes out of the rendered result; `#` (highlight) is ignored; `!` is refused.
+//! * `import(file = "x.stl" | "x.obj" | "x.nrrd", threshold = t)` names a mesh or a dataset
+//!   primitive ([`crate::solid::Import`], loaded by `csgpix_voxel::sampled`); `threshold` (ours, not
+//!   OpenSCAD's) is a dataset's iso value.
+//!
+//! * 2D shapes `square`, `circle`, `polygon(points, paths)` (several paths filled even-odd:
+//!   holes) under 2D `multmatrix`/`color`/`group`/`union`/`difference`/`intersection`, inside
+//!   `linear_extrude(height, center, twist, slices, scale)` or `rotate_extrude(angle)`; a 2D
+//!   shape outside an extrusion, or an operation mixing 2D and 3D children, is refused.
+//!   Extrusions follow OpenSCAD 2021.01's layout ([`crate::extrude`]): an untwisted, evenly
+//!   scaled extrusion of one convex outline is a convex solid; anything else is a closed mesh
+//!   primitive (an [`Import`] holding its triangles), and a 2D boolean becomes the same boolean
+//!   of the extruded shapes, except under a twist or uneven scale, where it is taken in the
+//!   plane first.
+//! * `hull()` of solids (one convex solid over their vertices; the solids leave the scene) or
+//!   of 2D shapes (a convex outline); not of a difference or intersection.
+//! * `offset(r | delta, chamfer)` of one convex outline, or outward of a union of them.
+//!
+//! Anything else (`minkowski`, `projection`, `text`, `surface`, 2D imports, …) is refused with
+//! an error naming the node, its line and column. [`scene_text`] turns a `.scad` file into
+//! this CSG text by running `openscad`.
+//!
+//! The tree is simplified without changing the solid it describes: a union or group with one
+//! child is that child, unions inside unions (and intersections inside intersections) are
+//! flattened, empty children are dropped from unions and from the subtracted part of a
+//! difference, and an intersection with an empty child, or a difference whose first child is
+//! empty, is [`CsgNode::Empty`]. This is the meaning OpenSCAD gives empty children when it
+//! renders (F6); its preview (F5) skips empty children of an intersection instead.
+//!
+//! # Following OpenSCAD
+//!
+//! The tessellation follows OpenSCAD's source (read, not copied):
+//!
+//! * fragment count: `Calc::get_fragments_from_r` in `src/utils/calc.cc`, with `GRID_FINE`
+//!   from `src/geometry/Grid.h` and the clamping of `$fa`/`$fs` to `F_MINIMUM = 0.01` from
+//!   `set_fragments` in `src/core/primitives.cc`;
+//! * vertex and face layout: `CubeNode::createGeometry`, `SphereNode::createGeometry`,
+//!   `CylinderNode::createGeometry` and `generate_circle` in `src/core/primitives.cc` (the
+//!   current layout with quads between sphere rings and a single apex for cones);
+//! * angles: `sin_degrees`/`cos_degrees` in `src/utils/degree_trig.cc`, which are exact at
+//!   multiples of 30° and 45°.
+//!
+//! OpenSCAD versions differ in details, and this reader picks one:
+//!
+//! * a fractional `$fn` is truncated (`get_fragments_from_r`, release 2021.01); the newer
+//!   `CurveDiscretizer::getCircularSegmentCount` (`src/core/CurveDiscretizer.cc`) rounds it
+//!   up instead;
+//! * release 2021.01 splits the band between two sphere rings into triangles where newer
+//!   versions use one quad per fragment, as here; the vertices are the same;
+//! * away from multiples of 30° and 45°, angles are converted as `x * (π / 180)`; 2021.01
+//!   computes `x * π / 180`, which can differ in the last bit.
+//!
+//! # Limits
+//!
+//! Every error names the line and column (1-based, counted in characters) of the offending
+//! token. Statements nest at most [`MAX_NESTING`] deep and vectors [`MAX_VECTOR_NESTING`]
+//! deep, so neither the reader nor code walking the tree recursively can overflow the stack;
+//! a circle has at most [`MAX_FRAGMENTS`] fragments, a polyhedron at most
+//! [`MAX_POLYHEDRON_POINTS`] points, a scene at most [`MAX_SCENE_VERTICES`] vertices, and no
+//! coordinate may exceed [`MAX_COORDINATE`] in size.
+
+#![warn(missing_docs)]
+
+mod consts_;
+mod export;
+pub mod extrude;
+mod flat;
+pub mod hull;
+mod import;
+mod lex;
+mod node;
+mod primitives;
+mod reader;
+#[cfg(test)]
+mod tests;
+mod transform;
+mod tree;
+mod value;
+
+pub use consts_::{
+    MAX_COORDINATE, MAX_FRAGMENTS, MAX_NESTING, MAX_POLYHEDRON_POINTS, MAX_SCENE_VERTICES,
+    MAX_VECTOR_NESTING,
+};
+pub use export::scene_text;
+
+use csgpix_scene::solid::CsgScene;
+use csgpix_scene::Error;
+use reader::Reader;
+
+/// # Errors
+///
+/// The first problem, at its line and column in `file`.
+///
+/// # Examples
+///
+/// ```
+/// use csgpix_openscad::parse_csg;
+/// use csgpix_scene::solid::CsgNode;
+///
+/// let text = "difference() {\n  cube(size = [2, 2, 2], center = true);\n  \
+///             sphere($fn = 8, r = 1.2);\n}\n";
+/// let scene = parse_csg(text, "scene.csg")?;
+/// assert_eq!(scene.solids.len(), 2);
+/// assert!(matches!(scene.root, CsgNode::Difference(ref c) if c.len() == 2));
+///
+/// let err = parse_csg("cube(size = [1, 1]);", "bad.csg").unwrap_err();
+/// assert!(err.to_string().starts_with("bad.csg:1:"));
+/// # Ok::<(), csgpix_scene::Error>(())
+/// ```
+/// Reads a `.csg` file's text into a scene; `file` is only used in error messages.
+///
+pub fn parse_csg(text: &str, file: &str) -> csgpix_scene::Result<CsgScene> {
+    Reader::new(text)
+        .run()
+        .map_err(|fail| Error::at(file, fail.pos.line, fail.pos.col, fail.msg))
+}

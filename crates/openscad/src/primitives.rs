@@ -1,0 +1,587 @@
+//! `cube`, `sphere`, `cylinder` and `polyhedron`, tessellated as OpenSCAD does.
+
+use std::collections::HashMap;
+use std::f64::consts::{FRAC_1_SQRT_2, PI};
+
+use crate::{consts_::*, lex::*, node::*, reader::*, transform::*, tree::*, value::*};
+use csgpix_scene::solid::ConvexSolid;
+
+// ---------------------------------------------------------------------------------------------
+// Primitives
+
+/// A convex solid in its own coordinates, faces counter-clockwise seen from outside.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Shape {
+    pub(crate) vertices: Vec<Vec3>,
+    pub(crate) faces: Vec<Vec<usize>>,
+}
+
+/// Moves a shape into the scene: transform, keep faces outward, colour.
+pub(crate) fn place(shape: Shape, ctx: &Ctx, pos: Pos) -> Result<ConvexSolid, Fail> {
+    let Shape {
+        mut vertices,
+        mut faces,
+    } = shape;
+    if let Some(m) = &ctx.matrix {
+        for v in &mut vertices {
+            *v = transform_point(m, *v);
+        }
+        if det3(m) < 0.0 {
+            faces.iter_mut().for_each(|f| f.reverse());
+        }
+    }
+    if vertices.iter().flatten().any(|&c| too_large(c)) {
+        let msg = format!("a coordinate exceeds {MAX_COORDINATE:e} in size");
+        return fail(pos, msg);
+    }
+    Ok(ConvexSolid {
+        vertices,
+        faces,
+        colour: ctx.colour,
+        line: pos.line,
+    })
+}
+
+/// Beyond [`MAX_COORDINATE`], or not a number at all.
+pub(crate) fn too_large(c: f64) -> bool {
+    c.is_nan() || c.abs() > MAX_COORDINATE
+}
+
+pub(crate) fn check_budget(vertices: usize, budget: usize, pos: Pos) -> Result<(), Fail> {
+    if vertices > budget {
+        let msg = format!("the scene would have more than {MAX_SCENE_VERTICES} vertices");
+        return fail(pos, msg);
+    }
+    Ok(())
+}
+
+pub(crate) fn positive((v, pos): (f64, Pos), what: &str) -> Result<f64, Fail> {
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        fail(pos, format!("{what} must be positive, found {v}"))
+    }
+}
+
+/// `cube(size, center)`: size a number or `[x, y, z]`, default 1. Vertex `i` is at
+/// `(i&1 ? x2 : x1, i&2 ? y2 : y1, i&4 ? z2 : z1)` and the faces are those of
+/// `CubeNode::createGeometry`.
+pub(crate) fn cube(params: &Params) -> Result<Shape, Fail> {
+    let size = match params.get("size") {
+        None => [1.0; 3],
+        Some(v) => {
+            let size = match v.kind {
+                Kind::Num(s) => [s; 3],
+                _ => v.vec3("`size`")?,
+            };
+            if size.iter().any(|&s| s <= 0.0) {
+                return fail(v.pos, "`size` must be positive");
+            }
+            size
+        }
+    };
+    let (lo, hi) = if params.boolean("center")? {
+        (size.map(|s| -s / 2.0), size.map(|s| s / 2.0))
+    } else {
+        ([0.0; 3], size)
+    };
+    let vertices = (0..8)
+        .map(|i| {
+            let pick = |bit: usize, axis: usize| if i & bit != 0 { hi[axis] } else { lo[axis] };
+            [pick(1, 0), pick(2, 1), pick(4, 2)]
+        })
+        .collect();
+    let faces = [
+        [4, 5, 7, 6], // top
+        [2, 3, 1, 0], // bottom
+        [0, 1, 5, 4], // front
+        [1, 3, 7, 5], // right
+        [3, 2, 6, 7], // back
+        [2, 0, 4, 6], // left
+    ];
+    Ok(Shape {
+        vertices,
+        faces: faces.iter().map(|f| f.to_vec()).collect(),
+    })
+}
+
+/// `$fn`, `$fa`, `$fs` of a sphere or cylinder.
+pub(crate) struct Resolution {
+    pub(crate) fn_: f64,
+    pub(crate) fa: f64,
+    pub(crate) fs: f64,
+}
+
+impl Resolution {
+    /// OpenSCAD's defaults are `$fn = 0, $fa = 12, $fs = 2`; `set_fragments` clamps `$fa` and
+    /// `$fs` up to 0.01. Negative values are refused.
+    pub(crate) fn read(params: &Params) -> Result<Self, Fail> {
+        let get = |name: &str, default: f64| match params.number(name)? {
+            None => Ok(default),
+            Some((v, pos)) if v < 0.0 => fail(pos, format!("`{name}` must not be negative")),
+            Some((v, _)) => Ok(v),
+        };
+        Ok(Resolution {
+            fn_: get("$fn", 0.0)?,
+            fa: get("$fa", 12.0)?.max(F_MINIMUM),
+            fs: get("$fs", 2.0)?.max(F_MINIMUM),
+        })
+    }
+
+    /// OpenSCAD's `Calc::get_fragments_from_r` (`src/utils/calc.cc`), as a float so a huge
+    /// count can be refused before it is converted.
+    pub(crate) fn fragments_from_r(&self, r: f64) -> f64 {
+        if r < GRID_FINE {
+            return 3.0;
+        }
+        if self.fn_ > 0.0 {
+            return if self.fn_ >= 3.0 {
+                self.fn_.trunc()
+            } else {
+                3.0
+            };
+        }
+        (360.0 / self.fa)
+            .min(r * 2.0 * PI / self.fs)
+            .max(5.0)
+            .ceil()
+    }
+
+    pub(crate) fn fragments(&self, r: f64, pos: Pos) -> Result<usize, Fail> {
+        let n = self.fragments_from_r(r);
+        if n > MAX_FRAGMENTS as f64 {
+            let msg = format!(
+                "{n} fragments (from $fn, $fa, $fs) is more than the {MAX_FRAGMENTS} csgpix accepts"
+            );
+            return fail(pos, msg);
+        }
+        Ok(n as usize)
+    }
+}
+
+/// A radius given as a diameter `d` or a radius `r`; the diameter wins, as in OpenSCAD's
+/// `lookup_radius`.
+pub(crate) fn radius(params: &Params, d: &str, r: &str) -> Result<Option<(f64, Pos)>, Fail> {
+    if let Some((diameter, pos)) = params.number(d)? {
+        return Ok(Some((diameter / 2.0, pos)));
+    }
+    params.number(r)
+}
+
+/// `sphere(r | d, $fn, $fa, $fs)` as `SphereNode::createGeometry`: `(fragments + 1) / 2` rings
+/// at polar angles `180 (i + 0.5) / rings`, ring 0 at the top, each a circle of `fragments`
+/// points; the top and bottom rings are polygon faces and neighbouring rings are joined by
+/// quads.
+pub(crate) fn sphere(params: &Params, budget: usize) -> Result<Shape, Fail> {
+    let r = match radius(params, "d", "r")? {
+        Some(r) => positive(r, "the radius")?,
+        None => 1.0,
+    };
+    let fragments = Resolution::read(params)?.fragments(r, params.pos)?;
+    let rings = fragments.div_ceil(2); // OpenSCAD's (fragments + 1) / 2
+    check_budget(rings * fragments, budget, params.pos)?;
+    let mut vertices = Vec::with_capacity(rings * fragments);
+    for i in 0..rings {
+        let phi = (180.0 * (i as f64 + 0.5)) / rings as f64;
+        circle(
+            &mut vertices,
+            r * sin_degrees(phi),
+            r * cos_degrees(phi),
+            fragments,
+        );
+    }
+    let at = |ring: usize, j: usize| ring * fragments + j % fragments;
+    let mut faces = Vec::with_capacity(2 + (rings - 1) * fragments);
+    faces.push((0..fragments).collect());
+    for i in 0..rings - 1 {
+        for j in 0..fragments {
+            faces.push(vec![at(i, j + 1), at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+        }
+    }
+    faces.push((0..fragments).map(|j| rings * fragments - j - 1).collect());
+    Ok(Shape { vertices, faces })
+}
+
+/// `cylinder(h, r1, r2, center, r, d, d1, d2, $fn, $fa, $fs)` as `CylinderNode::createGeometry`:
+/// defaults `h = 1, r = 1`; `r` sets both radii, `r1`/`r2` override it, diameters override
+/// radii. A zero radius makes that end a single apex vertex.
+pub(crate) fn cylinder(params: &Params, budget: usize) -> Result<Shape, Fail> {
+    let h = match params.number("h")? {
+        Some(h) => positive(h, "`h`")?,
+        None => 1.0,
+    };
+    let (mut r1, mut r2) = ((1.0, params.pos), (1.0, params.pos));
+    if let Some(r) = radius(params, "d", "r")? {
+        (r1, r2) = (r, r);
+    }
+    if let Some(r) = radius(params, "d1", "r1")? {
+        r1 = r;
+    }
+    if let Some(r) = radius(params, "d2", "r2")? {
+        r2 = r;
+    }
+    for (r, pos) in [r1, r2] {
+        if r < 0.0 {
+            return fail(
+                pos,
+                format!("a cylinder radius must not be negative, found {r}"),
+            );
+        }
+    }
+    let (r1, r2) = (r1.0, r2.0);
+    if r1 == 0.0 && r2 == 0.0 {
+        return fail(
+            params.pos,
+            "a cylinder needs a positive radius at one end at least",
+        );
+    }
+    let fragments = Resolution::read(params)?.fragments(r1.max(r2), params.pos)?;
+    check_budget(2 * fragments, budget, params.pos)?;
+    let (z1, z2) = if params.boolean("center")? {
+        (-h / 2.0, h / 2.0)
+    } else {
+        (0.0, h)
+    };
+    Ok(cylinder_shape(r1, r2, z1, z2, fragments))
+}
+
+pub(crate) fn cylinder_shape(r1: f64, r2: f64, z1: f64, z2: f64, n: usize) -> Shape {
+    let cone = r2 == 0.0;
+    let inverted_cone = r1 == 0.0;
+    let mut vertices = Vec::with_capacity(2 * n);
+    if inverted_cone {
+        vertices.push([0.0, 0.0, z1]);
+    } else {
+        circle(&mut vertices, r1, z1, n);
+    }
+    if cone {
+        vertices.push([0.0, 0.0, z2]);
+    } else {
+        circle(&mut vertices, r2, z2, n);
+    }
+    let mut faces: Vec<Vec<usize>> = (0..n)
+        .map(|i| {
+            let j = (i + 1) % n;
+            if cone {
+                vec![i, j, n]
+            } else if inverted_cone {
+                vec![0, j + 1, i + 1]
+            } else {
+                vec![i, j, j + n, i + n]
+            }
+        })
+        .collect();
+    if !inverted_cone {
+        faces.push((0..n).rev().collect());
+    }
+    if !cone {
+        let offset = if inverted_cone { 1 } else { n };
+        faces.push((offset..offset + n).collect());
+    }
+    Shape { vertices, faces }
+}
+
+/// OpenSCAD's `generate_circle`: point `i` at angle `360 i / fragments`, counter-clockwise from
+/// +x seen from +z.
+pub(crate) fn circle(out: &mut Vec<Vec3>, r: f64, z: f64, fragments: usize) {
+    for i in 0..fragments {
+        let phi = (360.0 * i as f64) / fragments as f64;
+        out.push([r * cos_degrees(phi), r * sin_degrees(phi), z]);
+    }
+}
+
+/// `polyhedron(points, faces | triangles)`. OpenSCAD lists each face clockwise seen from
+/// outside and `PolyhedronNode::createGeometry` reverses them; so does this. The result must
+/// be closed (every edge shared by two faces, once in each direction) and convex. Points no
+/// face uses are dropped.
+pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Shape, Fail> {
+    let points = params.require("points", "points = [[x, y, z], …]")?;
+    let points = points
+        .list("`points`")?
+        .iter()
+        .map(|p| p.vec3("a point"))
+        .collect::<Result<Vec<_>, _>>()?;
+    check_budget(points.len(), budget, params.pos)?;
+    if points.len() > MAX_POLYHEDRON_POINTS {
+        let msg = format!("a polyhedron may have at most {MAX_POLYHEDRON_POINTS} points");
+        return fail(params.pos, msg);
+    }
+    if let Some(p) = points.iter().flatten().find(|&&c| too_large(c)) {
+        let msg = format!("coordinate {p} exceeds {MAX_COORDINATE:e} in size");
+        return fail(params.pos, msg);
+    }
+    let faces = match params.get("faces") {
+        Some(faces) => faces,
+        None => params.require("triangles", "faces = [[i, j, k, …], …]")?,
+    };
+    let faces = faces
+        .list("`faces`")?
+        .iter()
+        .map(|f| face_indices(f, points.len()))
+        .collect::<Result<Vec<_>, _>>()?;
+    check_convex_closed(&points, &faces).map_err(|msg| Fail {
+        pos: params.pos,
+        msg: format!("polyhedron refused: {msg}"),
+    })?;
+    Ok(compact(points, faces))
+}
+
+/// One face's point indices, reversed to counter-clockwise.
+pub(crate) fn face_indices(face: &Value, points: usize) -> Result<Vec<usize>, Fail> {
+    let items = face.list("a face")?;
+    if items.len() < 3 {
+        return fail(face.pos, "a face needs 3 points at least");
+    }
+    let mut indices = Vec::with_capacity(items.len());
+    for item in items.iter().rev() {
+        let v = item.number("a point index")?;
+        if v.fract() != 0.0 || v < 0.0 || v >= points as f64 {
+            let msg = format!("point index {v} is not one of the {points} points");
+            return fail(item.pos, msg);
+        }
+        let i = v as usize;
+        if indices.contains(&i) {
+            return fail(item.pos, format!("point {i} appears twice in one face"));
+        }
+        indices.push(i);
+    }
+    Ok(indices)
+}
+
+/// Keeps only the points some face uses, in their order.
+pub(crate) fn compact(points: Vec<Vec3>, mut faces: Vec<Vec<usize>>) -> Shape {
+    let mut used = vec![false; points.len()];
+    faces.iter().flatten().for_each(|&i| used[i] = true);
+    let mut new_index = vec![0; points.len()];
+    let mut vertices = Vec::with_capacity(points.len());
+    for (i, point) in points.into_iter().enumerate() {
+        if used[i] {
+            new_index[i] = vertices.len();
+            vertices.push(point);
+        }
+    }
+    faces.iter_mut().flatten().for_each(|i| *i = new_index[*i]);
+    Shape { vertices, faces }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checks of polyhedra
+
+/// Checks that faces (counter-clockwise seen from outside) close a convex solid: every
+/// directed edge once and its reverse once, no degenerate face, positive volume, and no used
+/// point outside any face plane by more than [`CONVEXITY_TOLERANCE`].
+pub(crate) fn check_convex_closed(vertices: &[Vec3], faces: &[Vec<usize>]) -> Result<(), String> {
+    check_closed(faces)?;
+    let mut used: Vec<usize> = faces.iter().flatten().copied().collect();
+    used.sort_unstable();
+    used.dedup();
+    let (extent, magnitude) = scale(vertices, &used);
+    let planes = face_planes(vertices, faces, extent)?;
+    let volume: f64 = planes.iter().map(|p| dot(p.centre, p.normal) / 6.0).sum();
+    let has_volume = volume > 1e-12 * extent * extent * extent;
+    if !has_volume {
+        return Err(
+            "the faces wind the wrong way round (OpenSCAD lists each face clockwise \
+                    seen from outside) or enclose no volume"
+                .to_string(),
+        );
+    }
+    let tolerance = CONVEXITY_TOLERANCE * magnitude;
+    for (k, plane) in planes.iter().enumerate() {
+        let unit = plane.normal.map(|c| c / norm(plane.normal));
+        for &i in &used {
+            let d = dot(unit, sub(vertices[i], plane.centre));
+            if d > tolerance {
+                return Err(format!(
+                    "not convex: point {i} lies {d:.3e} outside the plane of face {k}"
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A face's Newell normal (twice its area long) and its centroid.
+pub(crate) struct Plane {
+    pub(crate) normal: Vec3,
+    pub(crate) centre: Vec3,
+}
+
+pub(crate) fn face_planes(
+    vertices: &[Vec3],
+    faces: &[Vec<usize>],
+    extent: f64,
+) -> Result<Vec<Plane>, String> {
+    faces
+        .iter()
+        .enumerate()
+        .map(|(k, face)| {
+            let normal = newell(vertices, face);
+            let has_area = norm(normal) > 1e-12 * extent * extent;
+            if !has_area {
+                return Err(format!("face {k} has no area"));
+            }
+            let centre = centroid(vertices, face);
+            Ok(Plane { normal, centre })
+        })
+        .collect()
+}
+
+pub(crate) fn check_closed(faces: &[Vec<usize>]) -> Result<(), String> {
+    let mut edges: HashMap<(usize, usize), usize> = HashMap::new();
+    for (k, face) in faces.iter().enumerate() {
+        for edge in ring_edges(face) {
+            if let Some(j) = edges.insert(edge, k) {
+                return Err(format!(
+                    "faces {j} and {k} both run from point {} to point {} (the surface \
+                     is not closed and consistently wound)",
+                    edge.1, edge.0
+                ));
+            }
+        }
+    }
+    for (k, face) in faces.iter().enumerate() {
+        for (a, b) in ring_edges(face) {
+            if !edges.contains_key(&(b, a)) {
+                return Err(format!(
+                    "not closed: the edge between points {a} and {b} of face {k} has no \
+                     neighbouring face"
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The directed edges of a face, closing the loop.
+pub(crate) fn ring_edges(face: &[usize]) -> impl Iterator<Item = (usize, usize)> + '_ {
+    face.iter()
+        .zip(face.iter().cycle().skip(1))
+        .map(|(&a, &b)| (a, b))
+}
+
+/// The bounding-box diagonal and the largest absolute coordinate of the used points.
+pub(crate) fn scale(vertices: &[Vec3], used: &[usize]) -> (f64, f64) {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let mut magnitude = 0.0_f64;
+    for &i in used {
+        for axis in 0..3 {
+            let c = vertices[i][axis];
+            lo[axis] = lo[axis].min(c);
+            hi[axis] = hi[axis].max(c);
+            magnitude = magnitude.max(c.abs());
+        }
+    }
+    (norm(sub(hi, lo)), magnitude)
+}
+
+/// Newell's normal: the polygon's unit normal (right-hand rule) times twice its area.
+pub(crate) fn newell(vertices: &[Vec3], face: &[usize]) -> Vec3 {
+    let mut n = [0.0; 3];
+    for (a, b) in ring_edges(face) {
+        let (a, b) = (vertices[a], vertices[b]);
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    n
+}
+
+pub(crate) fn centroid(vertices: &[Vec3], face: &[usize]) -> Vec3 {
+    let mut c = [0.0; 3];
+    for &i in face {
+        for axis in 0..3 {
+            c[axis] += vertices[i][axis];
+        }
+    }
+    c.map(|v| v / face.len() as f64)
+}
+
+pub(crate) fn sub(a: Vec3, b: Vec3) -> Vec3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+pub(crate) fn dot(a: Vec3, b: Vec3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+pub(crate) fn norm(a: Vec3) -> f64 {
+    dot(a, a).sqrt()
+}
+
+// ---------------------------------------------------------------------------------------------
+// Trigonometry in degrees, as OpenSCAD's `src/utils/degree_trig.cc`
+
+/// `sqrt(3) / 2`, OpenSCAD's `M_SQRT3_4`.
+pub(crate) const SQRT3_4: f64 = 0.866_025_403_784_438_6;
+
+/// Reduces to `[0, 360)`.
+pub(crate) fn reduce_degrees(x: f64) -> f64 {
+    if (0.0..360.0).contains(&x) {
+        x
+    } else {
+        x - 360.0 * (x / 360.0).floor()
+    }
+}
+
+/// `sin_degrees`: exact at multiples of 30° and 45°.
+pub(crate) fn sin_degrees(x: f64) -> f64 {
+    let mut x = reduce_degrees(x);
+    let oppose = x >= 180.0;
+    if oppose {
+        x -= 180.0;
+    }
+    if x > 90.0 {
+        x = 180.0 - x;
+    }
+    let s = if x < 45.0 {
+        if x == 30.0 {
+            0.5
+        } else {
+            x.to_radians().sin()
+        }
+    } else if x == 45.0 {
+        FRAC_1_SQRT_2
+    } else if x == 60.0 {
+        SQRT3_4
+    } else {
+        (90.0 - x).to_radians().cos()
+    };
+    if oppose {
+        -s
+    } else {
+        s
+    }
+}
+
+/// `cos_degrees`: exact at multiples of 30° and 45°.
+pub(crate) fn cos_degrees(x: f64) -> f64 {
+    let mut x = reduce_degrees(x);
+    let mut oppose = x >= 180.0;
+    if oppose {
+        x -= 180.0;
+    }
+    if x > 90.0 {
+        x = 180.0 - x;
+        oppose = !oppose;
+    }
+    let c = if x > 45.0 {
+        if x == 60.0 {
+            0.5
+        } else {
+            (90.0 - x).to_radians().sin()
+        }
+    } else if x == 45.0 {
+        FRAC_1_SQRT_2
+    } else if x == 30.0 {
+        SQRT3_4
+    } else {
+        x.to_radians().cos()
+    };
+    if oppose {
+        -c
+    } else {
+        c
+    }
+}

@@ -1,0 +1,615 @@
+//! Statements read with an explicit stack of open nodes, and what each node gives its parent.
+
+use glam::DVec3;
+
+use crate::extrude::{
+    convex_prism, flatten, linear_mesh, rotate_mesh, Linear, Offset, Poly2, Region,
+};
+use crate::hull::hull3;
+use crate::{
+    consts_::*, flat::*, import::*, lex::*, node::*, primitives::*, transform::*, tree::*, value::*,
+};
+use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
+
+/// What the solids below a node inherit.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Ctx {
+    /// `None` is the identity.
+    pub(crate) matrix: Option<Mat4>,
+    pub(crate) colour: Option<[f64; 4]>,
+    pub(crate) skip: bool,
+}
+
+/// How an open operation's children end.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Closer {
+    /// `{ … }`, opened at this position.
+    Brace(Pos),
+    /// A single child statement: `multmatrix(…) cube(…);`
+    Single,
+}
+
+/// An operation whose children are being read.
+pub(crate) struct Frame {
+    pub(crate) kind: NodeKind,
+    pub(crate) closer: Closer,
+    pub(crate) ctx: Ctx,
+    pub(crate) children: Vec<CsgNode>,
+    /// 2D children (shapes in the plane of the nearest extrusion), and where the first
+    /// 2D shape among them stands.
+    pub(crate) flats: Vec<Region>,
+    pub(crate) first_flat: Option<Pos>,
+    /// Where the node stands, for messages.
+    pub(crate) pos: Pos,
+    /// An extrusion's or offset's parameters, read when it opened.
+    pub(crate) spec: Spec,
+    /// The transform above an extrusion (its children start from the identity).
+    pub(crate) placement: Option<Mat4>,
+}
+
+/// What a finished statement gives its parent: a solid's tree or a 2D region.
+pub(crate) enum Item {
+    Solid(CsgNode),
+    Flat(Region, Pos),
+}
+
+/// The parameters of the nodes that act on 2D children.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Spec {
+    None,
+    Linear(LinearArgs),
+    Rotate { angle: f64, res: (f64, f64, f64) },
+    Offset(Offset),
+}
+
+/// `linear_extrude` as read: the slices may be left to OpenSCAD's rule.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LinearArgs {
+    pub(crate) linear: Linear,
+    pub(crate) slices: Option<usize>,
+    pub(crate) res: (f64, f64, f64),
+}
+
+/// What comes next at a statement position.
+pub(crate) enum Next {
+    Eof,
+    CloseBrace,
+    Semicolon,
+    Statement,
+}
+
+pub(crate) struct Reader<'a> {
+    pub(crate) parser: Parser<'a>,
+    pub(crate) solids: Vec<ConvexSolid>,
+    /// Leaves `Solid(IMPORTED + j)` until the end, when they become `Solid(solids + j)`.
+    pub(crate) imports: Vec<Import>,
+    pub(crate) vertices: usize,
+    pub(crate) open: Vec<Frame>,
+    pub(crate) top: Vec<CsgNode>,
+    /// Solids and imports a `hull()` took in: they leave the scene at the end.
+    pub(crate) consumed_solids: Vec<usize>,
+    pub(crate) consumed_imports: Vec<usize>,
+}
+
+impl<'a> Reader<'a> {
+    pub(crate) fn new(text: &'a str) -> Self {
+        Reader {
+            parser: Parser::new(text),
+            solids: Vec::new(),
+            imports: Vec::new(),
+            vertices: 0,
+            open: Vec::new(),
+            top: Vec::new(),
+            consumed_solids: Vec::new(),
+            consumed_imports: Vec::new(),
+        }
+    }
+
+    pub(crate) fn run(mut self) -> Result<CsgScene, Fail> {
+        loop {
+            let token = self.parser.peek()?;
+            let pos = token.pos;
+            let next = match token.tok {
+                Tok::Eof => Next::Eof,
+                Tok::Sym(b'}') => Next::CloseBrace,
+                Tok::Sym(b';') => Next::Semicolon,
+                _ => Next::Statement,
+            };
+            match next {
+                Next::Eof => return self.end(pos),
+                Next::CloseBrace => self.close_brace(pos)?,
+                Next::Semicolon => {
+                    self.parser.next()?;
+                    self.empty_statement()?;
+                }
+                Next::Statement => self.statement(pos)?,
+            }
+        }
+    }
+
+    fn end(mut self, pos: Pos) -> Result<CsgScene, Fail> {
+        match self.open.pop() {
+            None => {
+                let mut root = combine(Op::Union, std::mem::take(&mut self.top));
+                let (solids, imports) = self.drop_consumed(&mut root);
+                root.number_imports_after(solids.len());
+                Ok(CsgScene {
+                    solids,
+                    imports,
+                    root,
+                })
+            }
+            Some(frame) => fail(pos, unclosed(&frame, "end of file")),
+        }
+    }
+
+    fn close_brace(&mut self, pos: Pos) -> Result<(), Fail> {
+        match self.open.last() {
+            None => fail(pos, "unexpected '}' (no '{' is open)"),
+            Some(frame) if frame.closer == Closer::Single => fail(pos, unclosed(frame, "'}'")),
+            Some(_) => {
+                self.parser.next()?;
+                let node = self.pop_and_finish()?;
+                self.deliver(node)
+            }
+        }
+    }
+
+    /// A lone `;`: nothing inside braces, no children after `group()`.
+    fn empty_statement(&mut self) -> Result<(), Fail> {
+        if self.open.last().is_some_and(|f| f.closer == Closer::Single) {
+            let node = self.pop_and_finish()?;
+            self.deliver(node)?;
+        }
+        Ok(())
+    }
+
+    fn statement(&mut self, pos: Pos) -> Result<(), Fail> {
+        if self.open.len() >= MAX_NESTING {
+            return fail(
+                pos,
+                format!("statements nested deeper than {MAX_NESTING} levels"),
+            );
+        }
+        let head = self.head()?;
+        let parent = self.open.last().map(|f| f.ctx.clone()).unwrap_or_default();
+        let ctx = child_ctx(&parent, &head)?;
+        if head.kind.is_leaf() {
+            let context = format!("after `{}(…)` (it takes no children)", head.kind.name());
+            self.parser.expect_sym(b';', &context)?;
+            let node = self.leaf(&head, &ctx)?;
+            return self.deliver(node);
+        }
+        let closer = match self.parser.eat_sym(b'{')? {
+            Some(brace) => Closer::Brace(brace),
+            None => Closer::Single,
+        };
+        let spec = flat_spec(&head)?;
+        let mut ctx = ctx;
+        let placement = match head.kind {
+            NodeKind::LinearExtrude | NodeKind::RotateExtrude => ctx.matrix.take(),
+            _ => None,
+        };
+        self.open.push(Frame {
+            kind: head.kind,
+            closer,
+            ctx,
+            children: Vec::new(),
+            flats: Vec::new(),
+            first_flat: None,
+            pos: head.pos,
+            spec,
+            placement,
+        });
+        Ok(())
+    }
+
+    /// Modifiers, name and arguments of a statement.
+    fn head(&mut self) -> Result<Head, Fail> {
+        let mut skip = false;
+        let token = loop {
+            let token = self.parser.next()?;
+            match token.tok {
+                Tok::Sym(b'%' | b'*') => skip = true,
+                Tok::Sym(b'#') => {}
+                Tok::Sym(b'!') => return fail(token.pos, "the root modifier '!' is not supported"),
+                _ => break token,
+            }
+        };
+        let Tok::Ident(name) = &token.tok else {
+            let found = token.tok.describe();
+            return fail(
+                token.pos,
+                format!("expected a statement such as `group() {{`, found {found}"),
+            );
+        };
+        let Some(kind) = NodeKind::from_name(name) else {
+            return fail(token.pos, unsupported(name));
+        };
+        let args = self.parser.args(name)?;
+        let params = Params::bind(kind, token.pos, args)?;
+        Ok(Head {
+            kind,
+            pos: token.pos,
+            params,
+            skip,
+        })
+    }
+
+    /// Hands a finished node (or nothing, for a skipped one) to the open operation, closing
+    /// the single-child operations it completes. A 2D shape outside every extrusion is
+    /// refused where it stands.
+    fn deliver(&mut self, mut node: Option<Item>) -> Result<(), Fail> {
+        loop {
+            let Some(frame) = self.open.last_mut() else {
+                return match node {
+                    Some(Item::Flat(_, pos)) => fail(
+                        pos,
+                        "a 2D shape outside linear_extrude or rotate_extrude: csgpix voxelizes solids",
+                    ),
+                    Some(Item::Solid(n)) => {
+                        self.top.push(n);
+                        Ok(())
+                    }
+                    None => Ok(()),
+                };
+            };
+            match node {
+                Some(Item::Solid(n)) => frame.children.push(n),
+                Some(Item::Flat(r, at)) => {
+                    frame.flats.push(r);
+                    frame.first_flat.get_or_insert(at);
+                }
+                None => {}
+            }
+            if frame.closer != Closer::Single {
+                return Ok(());
+            }
+            node = self.pop_and_finish()?;
+        }
+    }
+
+    /// Closes the innermost open operation: what it gives its parent (nothing when skipped).
+    fn pop_and_finish(&mut self) -> Result<Option<Item>, Fail> {
+        let Some(frame) = self.open.pop() else {
+            return Ok(None);
+        };
+        if frame.ctx.skip {
+            return Ok(None);
+        }
+        let (kind, pos) = (frame.kind, frame.pos);
+        let mixed = !frame.children.is_empty() && !frame.flats.is_empty();
+        if mixed {
+            return fail(pos, format!("`{}` mixes 2D and 3D children", kind.name()));
+        }
+        let flat_at = frame.first_flat.unwrap_or(pos);
+        match kind {
+            NodeKind::LinearExtrude | NodeKind::RotateExtrude if !frame.children.is_empty() => {
+                fail(
+                    pos,
+                    format!("`{}` takes 2D children, found a solid", kind.name()),
+                )
+            }
+            NodeKind::LinearExtrude | NodeKind::RotateExtrude => self.extrude(frame).map(Some),
+            NodeKind::Hull if frame.flats.is_empty() => self.hull3(frame).map(Some),
+            NodeKind::Hull => hull_flat(frame),
+            NodeKind::Offset => offset_flat(frame),
+            _ if !frame.flats.is_empty() => {
+                Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), flat_at)))
+            }
+            _ => Ok(Some(Item::Solid(combine(kind.op(), frame.children)))),
+        }
+    }
+
+    fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<Item>, Fail> {
+        if head.kind == NodeKind::Import {
+            let import = import(head, ctx)?;
+            if ctx.skip {
+                return Ok(None);
+            }
+            self.imports.push(import);
+            return Ok(Some(Item::Solid(CsgNode::Solid(
+                IMPORTED + self.imports.len() - 1,
+            ))));
+        }
+        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        if head.kind.is_flat() {
+            let poly = flat_shape(&head.params, budget)?;
+            let n = poly.points().count();
+            check_budget(n, budget, head.pos)?;
+            if ctx.skip {
+                return Ok(None);
+            }
+            self.vertices += n;
+            let poly = poly.transformed(plane_part(ctx.matrix.as_ref()));
+            return Ok(Some(Item::Flat(Region::Poly(poly), head.pos)));
+        }
+        let shape = match head.kind {
+            NodeKind::Cube => cube(&head.params)?,
+            NodeKind::Sphere => sphere(&head.params, budget)?,
+            NodeKind::Cylinder => cylinder(&head.params, budget)?,
+            _ => polyhedron(&head.params, budget)?,
+        };
+        check_budget(shape.vertices.len(), budget, head.pos)?;
+        if ctx.skip {
+            return Ok(None);
+        }
+        let solid = place(shape, ctx, head.pos)?;
+        self.vertices += solid.vertices.len();
+        self.solids.push(solid);
+        Ok(Some(Item::Solid(CsgNode::Solid(self.solids.len() - 1))))
+    }
+
+    /// A finished `linear_extrude` or `rotate_extrude`: the CSG tree of its 2D children's
+    /// tree, each shape extruded (module [`crate::extrude`]).
+    fn extrude(&mut self, frame: Frame) -> Result<Item, Fail> {
+        let pos = frame.pos;
+        if frame.flats.is_empty() {
+            return Ok(Item::Solid(CsgNode::Empty));
+        }
+        let mut region = region_of(Op::Union, frame.flats);
+        // Twisted or unevenly scaled walls are triangulated between slices, which does not
+        // commute with booleans: those take the booleans in the plane first, as OpenSCAD.
+        let triangulated = matches!(frame.spec, Spec::Linear(a) if !a.linear.keeps_convex());
+        if triangulated && !matches!(region, Region::Poly(_)) {
+            region = Region::Poly(flatten(&region));
+        }
+        let mut pts = vec![];
+        collect_points(&region, &mut pts);
+        let how = match frame.spec {
+            Spec::Linear(a) => Extrusion::Linear(linear_slices(a, &pts)),
+            Spec::Rotate { angle, res } => {
+                let r = pts.iter().map(|p| p.x.abs()).fold(0.0, f64::max);
+                let res = Resolution {
+                    fn_: res.0,
+                    fa: res.1,
+                    fs: res.2,
+                };
+                let f = (res.fragments_from_r(r) * angle.abs() / 360.0).max(1.0);
+                if f > MAX_FRAGMENTS as f64 {
+                    let msg =
+                        format!("{f} fragments is more than the {MAX_FRAGMENTS} csgpix accepts");
+                    return fail(pos, msg);
+                }
+                Extrusion::Rotate {
+                    angle,
+                    fragments: f as usize,
+                }
+            }
+            _ => return fail(pos, "internal: an extrusion without its parameters"),
+        };
+        let to = Placement {
+            matrix: frame.placement,
+            colour: frame.ctx.colour,
+            pos,
+            name: frame.kind.name(),
+        };
+        let node = self.extrude_region(&region, &how, &to)?;
+        Ok(Item::Solid(node))
+    }
+
+    /// One 2D tree extruded: its operations kept, its shapes extruded.
+    fn extrude_region(
+        &mut self,
+        r: &Region,
+        how: &Extrusion,
+        to: &Placement,
+    ) -> Result<CsgNode, Fail> {
+        let (op, parts) = match r {
+            Region::Poly(p) => return self.extrude_shape(p, how, to),
+            Region::Union(c) => (Op::Union, c),
+            Region::Intersection(c) => (Op::Intersection, c),
+            Region::Difference(c) => (Op::Difference, c),
+        };
+        let nodes = parts
+            .iter()
+            .map(|c| self.extrude_region(c, how, to))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(combine(op, nodes))
+    }
+
+    /// One shape extruded: a convex solid when it stays convex, else a closed mesh primitive.
+    fn extrude_shape(
+        &mut self,
+        p: &Poly2,
+        how: &Extrusion,
+        to: &Placement,
+    ) -> Result<CsgNode, Fail> {
+        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let n = p.points().count();
+        if let Extrusion::Linear(l) = how {
+            if let Some(outline) = p.convex_outline().filter(|_| l.keeps_convex()) {
+                let (vertices, faces) = convex_prism(&outline, l);
+                let ctx = Ctx {
+                    matrix: to.matrix,
+                    colour: to.colour,
+                    skip: false,
+                };
+                let solid = place(Shape { vertices, faces }, &ctx, to.pos)?;
+                self.vertices += solid.vertices.len();
+                self.solids.push(solid);
+                return Ok(CsgNode::Solid(self.solids.len() - 1));
+            }
+        }
+        let rings = match how {
+            Extrusion::Linear(l) => l.slices + 1,
+            Extrusion::Rotate { fragments, .. } => fragments + 1,
+        };
+        check_budget(n.saturating_mul(rings), budget, to.pos)?;
+        let tris = match how {
+            Extrusion::Linear(l) => linear_mesh(p, l, &sin_cos_degrees),
+            Extrusion::Rotate { angle, fragments } => {
+                rotate_mesh(p, *angle, *fragments, &sin_cos_degrees).map_err(|e| Fail {
+                    pos: to.pos,
+                    msg: e.message,
+                })?
+            }
+        };
+        if tris.is_empty() {
+            return Ok(CsgNode::Empty);
+        }
+        self.vertices += n * rings;
+        let m = to.matrix.unwrap_or(IDENTITY);
+        let tris: Vec<[Vec3; 3]> = tris
+            .iter()
+            .map(|t| t.map(|v| transform_point(&m, v.to_array())))
+            .collect();
+        if tris.iter().flatten().flatten().any(|&c| too_large(c)) {
+            let msg = format!("a coordinate exceeds {MAX_COORDINATE:e} in size");
+            return fail(to.pos, msg);
+        }
+        self.imports.push(Import {
+            file: format!("{} at {}", to.name, to.pos),
+            threshold: None,
+            matrix: None,
+            colour: to.colour,
+            line: to.pos.line,
+            col: to.pos.col,
+            mesh: Some(std::sync::Arc::new(tris)),
+        });
+        Ok(CsgNode::Solid(IMPORTED + self.imports.len() - 1))
+    }
+
+    /// The solids and imports, less those a `hull()` took in, and the tree's leaves renumbered
+    /// to match (imports still counted from [`IMPORTED`]).
+    fn drop_consumed(&mut self, root: &mut CsgNode) -> (Vec<ConvexSolid>, Vec<Import>) {
+        let keep = |n: usize, gone: &[usize]| -> (Vec<bool>, Vec<usize>) {
+            let mut k = vec![true; n];
+            gone.iter().for_each(|&i| k[i] = false);
+            let mut next = 0;
+            let map = k
+                .iter()
+                .map(|&kept| {
+                    next += usize::from(kept);
+                    next - usize::from(kept)
+                })
+                .collect();
+            (k, map)
+        };
+        let (ks, ms) = keep(self.solids.len(), &self.consumed_solids);
+        let (ki, mi) = keep(self.imports.len(), &self.consumed_imports);
+        root.for_each_leaf_mut(|n| {
+            if let CsgNode::Solid(i) = n {
+                *i = if *i >= IMPORTED {
+                    IMPORTED + mi[*i - IMPORTED]
+                } else {
+                    ms[*i]
+                };
+            }
+        });
+        let solids = std::mem::take(&mut self.solids);
+        let imports = std::mem::take(&mut self.imports);
+        (
+            solids
+                .into_iter()
+                .zip(ks)
+                .filter(|(_, k)| *k)
+                .map(|(s, _)| s)
+                .collect(),
+            imports
+                .into_iter()
+                .zip(ki)
+                .filter(|(_, k)| *k)
+                .map(|(s, _)| s)
+                .collect(),
+        )
+    }
+
+    /// A finished `hull()` of solids: one convex solid over every vertex of the solids and
+    /// generated meshes below it, which leave the scene.
+    fn hull3(&mut self, frame: Frame) -> Result<Item, Fail> {
+        let pos = frame.pos;
+        let mut leaves = vec![];
+        for c in &frame.children {
+            hull_leaves(c, &mut leaves).map_err(|msg| Fail { pos, msg })?;
+        }
+        let mut pts: Vec<DVec3> = vec![];
+        for &leaf in &leaves {
+            if leaf < IMPORTED {
+                pts.extend(self.solids[leaf].vertices.iter().map(|&v| DVec3::from(v)));
+                self.consumed_solids.push(leaf);
+                continue;
+            }
+            let import = &self.imports[leaf - IMPORTED];
+            let Some(mesh) = &import.mesh else {
+                let msg = format!("hull() of `import(\"{}\")` is not supported", import.file);
+                return fail(pos, msg);
+            };
+            pts.extend(mesh.iter().flatten().map(|&v| DVec3::from(v)));
+            self.consumed_imports.push(leaf - IMPORTED);
+        }
+        if pts.is_empty() {
+            return Ok(Item::Solid(CsgNode::Empty));
+        }
+        let (vertices, faces) = hull3(&pts).map_err(|e| Fail {
+            pos,
+            msg: e.message,
+        })?;
+        let solid = ConvexSolid {
+            vertices: vertices.iter().map(|v| v.to_array()).collect(),
+            faces,
+            colour: frame.ctx.colour,
+            line: pos.line,
+        };
+        self.vertices += solid.vertices.len();
+        self.solids.push(solid);
+        Ok(Item::Solid(CsgNode::Solid(self.solids.len() - 1)))
+    }
+}
+
+/// Where an extrusion's solids go: the transform above it, its colour, for messages its
+/// position and name.
+struct Placement {
+    matrix: Option<Mat4>,
+    colour: Option<[f64; 4]>,
+    pos: Pos,
+    name: &'static str,
+}
+
+/// An extrusion, its slice or fragment count settled.
+enum Extrusion {
+    Linear(Linear),
+    Rotate { angle: f64, fragments: usize },
+}
+
+fn unsupported(name: &str) -> String {
+    let known: Vec<&str> = NODES.iter().map(|(n, _)| *n).collect();
+    format!(
+        "unsupported node `{name}` (csgpix reads {})",
+        known.join(", ")
+    )
+}
+
+fn unclosed(frame: &Frame, found: &str) -> String {
+    let name = frame.kind.name();
+    match frame.closer {
+        Closer::Brace(at) => {
+            format!("expected '}}' to close `{name}` opened at {at}, found {found}")
+        }
+        Closer::Single => {
+            format!("expected a child statement or ';' after `{name}(…)`, found {found}")
+        }
+    }
+}
+
+/// The context of the children of `head` (or of `head` itself, for a leaf).
+fn child_ctx(parent: &Ctx, head: &Head) -> Result<Ctx, Fail> {
+    let mut ctx = parent.clone();
+    ctx.skip |= head.skip;
+    match head.kind {
+        NodeKind::Multmatrix => {
+            if let Some(m) = matrix(&head.params)? {
+                ctx.matrix = Some(match &parent.matrix {
+                    Some(outer) => mat_mul(outer, &m),
+                    None => m,
+                });
+            }
+        }
+        NodeKind::Color => ctx.colour = Some(colour(&head.params)?),
+        _ => {}
+    }
+    Ok(ctx)
+}
+
+// ---------------------------------------------------------------------------------------------
+// CSG tree

@@ -1,0 +1,602 @@
+//! Unit tests of the reader.
+
+use crate::*;
+use crate::{consts_::*, primitives::*, tree::*};
+use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene};
+use proptest::prelude::*;
+
+const EXAMPLE: &str = include_str!("../../../vectors/scenes/cube-minus-cylinder.csg");
+
+/// Every node kind, for the mutation fuzzing.
+const ALL_NODES: &str = "group() {\n\
+    \tunion() { cube(size = [1, 2, 3], center = false); sphere($fn = 6, r = 2); }\n\
+    \tintersection() {\n\
+    \t\tmultmatrix([[-1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 2, 0], [0, 0, 0, 1]]) {\n\
+    \t\t\tcolor(c = [0, 0.5, 1], alpha = 0.5) cylinder(h = 2, r1 = 1, r2 = 0, $fn = 5);\n\
+    \t\t}\n\
+    \t\trender(convexity = 2) %cube(2);\n\
+    \t\tpolyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
+    faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]], convexity = 1);\n\
+    \t}\n\
+    \tdifference() { cube(1); /* c */ cylinder(h = 1, d = 1, center = true); } // end\n\
+    }\n";
+
+fn parse(text: &str) -> CsgScene {
+    parse_csg(text, "test.csg").unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Checks the error's position and that its message contains `part`.
+fn assert_err(text: &str, line: usize, col: usize, part: &str) {
+    let e = parse_csg(text, "test.csg").expect_err("should be refused");
+    let at = e.location.as_ref().expect("a located error");
+    assert_eq!((at.line, at.col), (line, col), "{e}");
+    assert!(e.message.contains(part), "{e}");
+}
+
+fn only_solid(text: &str) -> ConvexSolid {
+    let scene = parse(text);
+    assert_eq!(scene.root, CsgNode::Solid(0));
+    assert_eq!(scene.solids.len(), 1);
+    scene.solids.into_iter().next().unwrap()
+}
+
+/// Closed, convex, and every face normal points away from the centroid.
+fn assert_outward(solid: &ConvexSolid) {
+    let n = solid.vertices.len() as f64;
+    let centre = solid
+        .vertices
+        .iter()
+        .fold([0.0; 3], |c, v| [c[0] + v[0], c[1] + v[1], c[2] + v[2]])
+        .map(|c| c / n);
+    for face in &solid.faces {
+        let normal = newell(&solid.vertices, face);
+        let out = sub(centroid(&solid.vertices, face), centre);
+        assert!(dot(normal, out) > 0.0, "face {face:?} points inward");
+    }
+    check_convex_closed(&solid.vertices, &solid.faces).unwrap();
+}
+
+fn bounds(solid: &ConvexSolid) -> [[f64; 2]; 3] {
+    let mut b = [[f64::INFINITY, f64::NEG_INFINITY]; 3];
+    for v in &solid.vertices {
+        for axis in 0..3 {
+            b[axis] = [b[axis][0].min(v[axis]), b[axis][1].max(v[axis])];
+        }
+    }
+    b
+}
+
+fn close(a: Vec3, b: Vec3) -> bool {
+    (0..3).all(|i| (a[i] - b[i]).abs() < 1e-12)
+}
+
+// --- primitives ---
+
+#[test]
+fn cube_uncentred() {
+    let cube = only_solid("cube(size = [1, 2, 3], center = false);");
+    assert_eq!((cube.vertices.len(), cube.faces.len()), (8, 6));
+    assert!(cube.faces.iter().all(|f| f.len() == 4));
+    assert_eq!(bounds(&cube), [[0.0, 1.0], [0.0, 2.0], [0.0, 3.0]]);
+    assert_eq!(cube.vertices[6], [0.0, 2.0, 3.0]);
+    assert_outward(&cube);
+    let scalar = only_solid("cube(2);");
+    assert_eq!(bounds(&scalar), [[0.0, 2.0]; 3]);
+}
+
+#[test]
+fn cube_centred() {
+    let cube = only_solid("cube(size = [20, 20, 20], center = true);");
+    assert_eq!((cube.vertices.len(), cube.faces.len()), (8, 6));
+    assert_eq!(bounds(&cube), [[-10.0, 10.0]; 3]);
+    assert_outward(&cube);
+    assert_eq!(only_solid("cube();").vertices[7], [1.0; 3]);
+}
+
+#[test]
+fn sphere_fn_8() {
+    let sphere = only_solid("sphere($fn = 8, $fa = 12, $fs = 2, r = 10);");
+    // 8 fragments, (8 + 1) / 2 = 4 rings at 22.5°, 67.5°, 112.5°, 157.5°.
+    assert_eq!(sphere.vertices.len(), 8 * 4);
+    assert_eq!(sphere.faces.len(), 2 + 3 * 8);
+    let (radius, z) = (
+        10.0 * 22.5_f64.to_radians().sin(),
+        10.0 * 22.5_f64.to_radians().cos(),
+    );
+    assert!(close(sphere.vertices[0], [radius, 0.0, z]));
+    // 90° is exact in OpenSCAD's degree trigonometry: x is 0, not 6e-17.
+    assert_eq!(sphere.vertices[2][0], 0.0);
+    assert!(close(sphere.vertices[2], [0.0, radius, z]));
+    assert!(close(sphere.vertices[4], [-radius, 0.0, z]));
+    assert!(close(
+        sphere.vertices[31],
+        [radius * 0.5_f64.sqrt(), -radius * 0.5_f64.sqrt(), -z]
+    ));
+    assert_eq!(sphere.faces[0], (0..8).collect::<Vec<_>>());
+    assert_outward(&sphere);
+}
+
+#[test]
+fn sphere_fa_fs() {
+    let sphere = only_solid("sphere($fn = 0, $fa = 12, $fs = 2, r = 10);");
+    // ceil(max(min(360 / 12, 10 * 2π / 2), 5)) = 30 fragments, 15 rings.
+    assert_eq!(sphere.vertices.len(), 30 * 15);
+    assert_eq!(sphere.faces.len(), 2 + 14 * 30);
+    // Ring 7 is at exactly 90°: the equator, exact in OpenSCAD's degree trigonometry.
+    assert_eq!(sphere.vertices[7 * 30], [10.0, 0.0, 0.0]);
+    assert_eq!(sphere.vertices[7 * 30 + 5], [5.0, 10.0 * SQRT3_4, 0.0]);
+    let phi = 180.0 * 0.5 / 15.0_f64;
+    let top = [
+        10.0 * phi.to_radians().sin(),
+        0.0,
+        10.0 * phi.to_radians().cos(),
+    ];
+    assert!(close(sphere.vertices[0], top));
+    assert_outward(&sphere);
+}
+
+#[test]
+fn fragment_rules() {
+    let count = |text: &str| only_solid(text).vertices.len();
+    // Small radius: at least 5 fragments (3 rings).
+    assert_eq!(count("sphere(r = 1);"), 5 * 3);
+    // $fn below 3 means 3; a fractional $fn is truncated; d is a diameter.
+    assert_eq!(count("sphere(d = 4, $fn = 2);"), 3 * 2);
+    assert_eq!(count("sphere(r = 1, $fn = 7.9);"), 7 * 4);
+    // $fa and $fs are clamped up to 0.01: 360 / 0.01 = 36000 > 10 * 2π / 0.05.
+    assert_eq!(count("cylinder(r = 10, $fa = 0, $fs = 0.05);"), 2 * 1257);
+    // A cylinder's fragments come from its larger radius.
+    assert_eq!(count("cylinder(h = 1, r1 = 1, r2 = 10);"), 2 * 30);
+    assert_eq!(
+        Resolution {
+            fn_: 0.0,
+            fa: 12.0,
+            fs: 2.0
+        }
+        .fragments_from_r(1e-7),
+        3.0
+    );
+}
+
+#[test]
+fn cylinder_fn_6_centred() {
+    let cyl =
+        only_solid("cylinder($fn = 6, $fa = 12, $fs = 2, h = 10, r1 = 3, r2 = 3, center = true);");
+    assert_eq!((cyl.vertices.len(), cyl.faces.len()), (12, 8));
+    assert_eq!(bounds(&cyl)[2], [-5.0, 5.0]);
+    assert_eq!(cyl.vertices[1], [1.5, 3.0 * SQRT3_4, -5.0]);
+    assert_eq!(cyl.vertices[10], [-1.5, -3.0 * SQRT3_4, 5.0]);
+    assert_outward(&cyl);
+}
+
+#[test]
+fn cones_have_one_apex() {
+    let cone = only_solid("cylinder($fn = 6, h = 10, r1 = 3, r2 = 0, center = true);");
+    assert_eq!((cone.vertices.len(), cone.faces.len()), (7, 7));
+    assert_eq!(cone.vertices[6], [0.0, 0.0, 5.0]);
+    assert_eq!(cone.faces.iter().filter(|f| f.len() == 3).count(), 6);
+    assert_outward(&cone);
+    let inverted = only_solid("cylinder($fn = 6, h = 10, r1 = 0, r2 = 3, center = true);");
+    assert_eq!((inverted.vertices.len(), inverted.faces.len()), (7, 7));
+    assert_eq!(inverted.vertices[0], [0.0, 0.0, -5.0]);
+    assert_outward(&inverted);
+    let frustum = only_solid("cylinder(h = 2, d1 = 4, r2 = 1, $fn = 5);");
+    assert_eq!(bounds(&frustum)[0][1], 2.0);
+    assert_outward(&frustum);
+}
+
+const TETRAHEDRON: &str = "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
+                           faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]], convexity = 1);";
+
+#[test]
+fn polyhedron_clockwise_tetrahedron() {
+    let tet = only_solid(TETRAHEDRON);
+    assert_eq!(tet.faces[0], vec![2, 1, 0]);
+    assert_outward(&tet);
+    let old = only_solid(&TETRAHEDRON.replace("faces", "triangles"));
+    assert_eq!(old, tet);
+}
+
+#[test]
+fn polyhedron_refusals() {
+    let dented =
+        "\n  polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.2, 0.2, 0.2]], \
+                  faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [4, 2, 1], [4, 3, 2], [4, 1, 3]]);";
+    assert_err(dented, 2, 3, "not convex");
+    let open = "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
+                faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3]]);";
+    assert_err(open, 1, 1, "not closed");
+    let ccw = TETRAHEDRON.replace(
+        "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]",
+        "[[2, 1, 0], [1, 3, 0], [3, 2, 0], [2, 3, 1]]",
+    );
+    assert_err(&ccw, 1, 1, "wrong way round");
+    let bad_index = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 3, 4]]");
+    assert_err(&bad_index, 1, 116, "point index 4");
+}
+
+#[test]
+fn polyhedron_drops_unused_points() {
+    let text = TETRAHEDRON.replace("[0, 0, 1]]", "[0, 0, 1], [9, 9, 9]]");
+    assert_eq!(only_solid(&text).vertices.len(), 4);
+}
+
+// --- imports ---
+
+#[test]
+fn imports_follow_the_solids_in_leaf_numbers() {
+    let scene = parse(
+        "union() {\n  import(\"a.stl\");\n  cube(1);\n  \
+         multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) \
+         import(file = \"h.nrrd\", threshold = 300);\n}\n",
+    );
+    assert_eq!((scene.solids.len(), scene.imports.len()), (1, 2));
+    assert_eq!(
+        scene.root,
+        CsgNode::Union(vec![
+            CsgNode::Solid(1),
+            CsgNode::Solid(0),
+            CsgNode::Solid(2)
+        ])
+    );
+    let (a, h) = (&scene.imports[0], &scene.imports[1]);
+    assert_eq!(
+        (a.file.as_str(), a.threshold, a.line, a.col),
+        ("a.stl", None, 2, 3)
+    );
+    assert_eq!((h.file.as_str(), h.threshold), ("h.nrrd", Some(300.0)));
+    assert_eq!(h.matrix.map(|m| m[0][3]), Some(5.0));
+}
+
+#[test]
+fn import_refusals() {
+    assert_err("import(\"h.nrrd\");", 1, 1, "threshold");
+    assert_err("import(\"a.stl\", threshold = 3);", 1, 29, "datasets");
+    assert_err("import(\"a.stl\", scale = 2);", 1, 25, "scale");
+    assert_err("import(3);", 1, 8, "string");
+    assert_err("import();", 1, 1, "file name");
+}
+
+// --- transforms and colours ---
+
+#[test]
+fn multmatrix_translation() {
+    let cube = only_solid(
+        "multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, -2], [0, 0, 0, 1]]) cube(1);",
+    );
+    assert_eq!(bounds(&cube), [[5.0, 6.0], [0.0, 1.0], [-2.0, -1.0]]);
+    assert_outward(&cube);
+}
+
+#[test]
+fn multmatrix_mirror_keeps_faces_outward() {
+    let plain = only_solid("cylinder(h = 3, r1 = 2, r2 = 1, $fn = 7);");
+    let mirrored = only_solid(
+        "multmatrix(m = [[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\
+         \tcylinder(h = 3, r1 = 2, r2 = 1, $fn = 7);\n}",
+    );
+    assert_eq!(mirrored.vertices[0], [-2.0, 0.0, 0.0]);
+    let reversed: Vec<Vec<usize>> = plain
+        .faces
+        .iter()
+        .map(|f| f.iter().rev().copied().collect())
+        .collect();
+    assert_eq!(mirrored.faces, reversed);
+    assert_outward(&mirrored);
+}
+
+#[test]
+fn nested_multmatrix_composes() {
+    let cube = only_solid(
+        "multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n\
+         multmatrix([[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 2, 0], [0, 0, 0, 1]]) cube(1);",
+    );
+    assert_eq!(bounds(&cube), [[1.0, 3.0], [0.0, 2.0], [0.0, 2.0]]);
+    // m[3][3] = 2 divides the matrix, as OpenSCAD does.
+    let halved =
+        only_solid("multmatrix([[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 2, 0], [0, 0, 0, 2]]) cube(1);");
+    assert_eq!(bounds(&halved), [[0.0, 1.0]; 3]);
+}
+
+#[test]
+fn multmatrix_refusals() {
+    assert_err(
+        "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) cube(1);",
+        1,
+        12,
+        "singular",
+    );
+    assert_err(
+        "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [1, 0, 0, 1]]) cube(1);",
+        1,
+        12,
+        "projective",
+    );
+    assert_err(
+        "multmatrix([[1, 0, 0], [0, 1, 0], [0, 0, 1]]) cube(1);",
+        1,
+        13,
+        "4 numbers",
+    );
+}
+
+#[test]
+fn colours_innermost_wins() {
+    let scene =
+        parse("color([1, 0, 0, 1]) {\n\tcube(1);\n\tcolor([0, 0, 1, 0.5]) sphere(1);\n}\ncube(3);");
+    assert_eq!(scene.solids[0].colour, Some([1.0, 0.0, 0.0, 1.0]));
+    assert_eq!(scene.solids[1].colour, Some([0.0, 0.0, 1.0, 0.5]));
+    assert_eq!(scene.solids[2].colour, None);
+    assert_eq!(
+        scene.solids.iter().map(|s| s.line).collect::<Vec<_>>(),
+        [2, 3, 5]
+    );
+    let named_args = only_solid("color(c = [0, 1, 0], alpha = 0.25) cube(1);");
+    assert_eq!(named_args.colour, Some([0.0, 1.0, 0.0, 0.25]));
+    assert_err(
+        "color(\"red\") cube(1);",
+        1,
+        7,
+        "colour \"red\" is not supported",
+    );
+    assert_err("color([2, 0, 0]) cube(1);", 1, 8, "between 0 and 1");
+}
+
+// --- tree shapes ---
+
+#[test]
+fn tree_shapes() {
+    use CsgNode::{Difference, Empty, Intersection, Solid, Union};
+    let root = |text: &str| parse(text).root;
+    assert_eq!(
+        root("difference() { cube(1); sphere(1); cylinder(h = 1, r = 1); }"),
+        Difference(vec![Solid(0), Solid(1), Solid(2)])
+    );
+    assert_eq!(
+        root("intersection() { cube(1); sphere(1); }"),
+        Intersection(vec![Solid(0), Solid(1)])
+    );
+    assert_eq!(
+        root("union() { cube(1); sphere(1); }"),
+        Union(vec![Solid(0), Solid(1)])
+    );
+    assert_eq!(root("cube(1); sphere(1);"), Union(vec![Solid(0), Solid(1)]));
+    assert_eq!(root("group() { cube(1); }"), Solid(0));
+    assert_eq!(root("render(convexity = 2) { cube(1); }"), Solid(0));
+    assert_eq!(
+        root("group() { group() { cube(1); cube(2); } cube(3); }"),
+        Union(vec![Solid(0), Solid(1), Solid(2)])
+    );
+    assert_eq!(
+        root("group() { difference() { cube(1); sphere(1); } cube(3); }"),
+        Union(vec![Difference(vec![Solid(0), Solid(1)]), Solid(2)])
+    );
+    for empty in [
+        "",
+        "// nothing\n/* at all */",
+        "group();",
+        "group() {}",
+        "union() { group(); }",
+        "difference() { group(); cube(1); }",
+        "intersection() { cube(1); group(); }",
+    ] {
+        assert_eq!(root(empty), Empty, "{empty}");
+    }
+    assert_eq!(root("difference() { cube(1); group(); }"), Solid(0));
+}
+
+#[test]
+fn modifiers() {
+    use CsgNode::{Difference, Solid};
+    let scene = parse("difference() { %cube(1); #sphere(1); *group() { cube(5); } cube(2); }");
+    assert_eq!(scene.root, Difference(vec![Solid(0), Solid(1)]));
+    assert_eq!(scene.solids.len(), 2);
+    assert_eq!(scene.solids[1].vertices[7], [2.0; 3]);
+    assert_err("!cube(1);", 1, 1, "root modifier");
+}
+
+#[test]
+fn example_scene() {
+    let scene = parse(EXAMPLE);
+    assert_eq!(
+        scene.root,
+        CsgNode::Difference(vec![CsgNode::Solid(0), CsgNode::Solid(1)])
+    );
+    let [cube, cylinder] = &scene.solids[..] else {
+        panic!("two solids")
+    };
+    assert_eq!((cube.vertices.len(), cube.colour, cube.line), (8, None, 2));
+    assert_eq!(cylinder.vertices.len(), 48);
+    assert_eq!(cylinder.colour, Some([1.0, 0.0, 0.0, 1.0]));
+    assert_eq!(bounds(cylinder)[2], [-15.0, 15.0]);
+    assert_outward(cube);
+    assert_outward(cylinder);
+}
+
+// --- syntax and errors ---
+
+#[test]
+fn syntax_accepted() {
+    let text = "/* header */ group() { // a comment\n\
+                \tcube(size = [.5, 5., 1e-1], center = false) ;\n\
+                \tsphere(r = +2.5E+0, $fn = 0, $fa = 12, $fs = 2,);\n\
+                \tcylinder(h = 1, r1 = 1, r2 = undef, center = false);\n}\n";
+    let scene = parse(text);
+    assert_eq!(scene.solids.len(), 3);
+    assert_eq!(
+        bounds(&scene.solids[0]),
+        [[0.0, 0.5], [0.0, 5.0], [0.0, 0.1]]
+    );
+    // r2 = undef falls back to the default radius of 1, like OpenSCAD.
+    assert_eq!(bounds(&scene.solids[2])[0][1], 1.0);
+}
+
+#[test]
+fn errors_name_line_and_column() {
+    assert_err(
+        "group() {\n  minkowski() { cube(1); sphere(1); }\n}",
+        2,
+        3,
+        "unsupported node `minkowski` (csgpix reads group",
+    );
+    assert_err(
+        "projection() cube(1);",
+        1,
+        1,
+        "unsupported node `projection`",
+    );
+    assert_err("cube(size = 1.2.3);", 1, 13, "malformed number `1.2.3`");
+    assert_err("cube(size = 1e);", 1, 13, "malformed number `1e`");
+    assert_err("cube(size = 1e999);", 1, 13, "out of range");
+    assert_err("cube(size = inf);", 1, 13, "finite");
+    assert_err("cube(size = 1;\n", 1, 14, "expected ',' or ')'");
+    assert_err(
+        "group() {\n\tcube(1);\n",
+        3,
+        1,
+        "expected '}' to close `group` opened at 1:9",
+    );
+    assert_err(
+        "group() {\n  cube(1)\n}",
+        3,
+        1,
+        "expected ';' after `cube(…)`",
+    );
+    assert_err("cube(1) sphere(1);", 1, 9, "expected ';' after `cube(…)`");
+    assert_err(
+        "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])",
+        1,
+        69,
+        "child statement or ';'",
+    );
+    assert_err("cube(1);\n}", 2, 1, "unexpected '}'");
+    assert_err("cube(sise = 1);", 1, 6, "no parameter `sise`");
+    assert_err("cube(1, true, 3);", 1, 15, "too many positional");
+    assert_err("cube(size = 1, size = 2);", 1, 16, "given twice");
+    assert_err("sphere(r = -1);", 1, 12, "must be positive");
+    assert_err("cylinder(h = 0, r = 1);", 1, 14, "must be positive");
+    assert_err("cylinder(h = 1, r1 = 0, r2 = 0);", 1, 1, "positive radius");
+    assert_err("sphere($fn = -3, r = 1);", 1, 14, "must not be negative");
+    assert_err("sphere($fn = 20000, r = 1);", 1, 1, "more than the 10000");
+    assert_err("sphere($fn = 2000, r = 1);", 1, 1, "vertices");
+    assert_err("cube(size = [1, 2]);", 1, 13, "[x, y, z]");
+    assert_err("cube(center = 1);", 1, 15, "true or false");
+    assert_err("cube(size = [1, 2 3]);", 1, 19, "expected ',' or ']'");
+    assert_err("/* é */ foo();", 1, 9, "unsupported node `foo`");
+    assert_err("cube(1); /* open", 1, 10, "unterminated comment");
+    assert_err("color(\"red) cube(1);", 1, 7, "unterminated string");
+    assert_err("cube(1) @", 1, 9, "unexpected character '@'");
+    assert_err("x = 3;", 1, 1, "unsupported node `x`");
+}
+
+#[test]
+fn display_format() {
+    let e = parse_csg("cube(size = 1.2.3);", "dir/a.csg").unwrap_err();
+    assert_eq!(e.to_string(), "dir/a.csg:1:13: malformed number `1.2.3`");
+}
+
+// --- robustness ---
+
+#[test]
+fn deep_nesting_is_refused_not_a_crash() {
+    let text = "group() {\n".repeat(100_000) + "cube(1);" + &"}".repeat(100_000);
+    assert_err(&text, MAX_NESTING + 1, 1, "nested deeper than 1000");
+    let single = "group() ".repeat(100_000) + "cube(1);";
+    assert_err(&single, 1, 8 * MAX_NESTING + 1, "nested deeper");
+    let vectors = "cube(size = ".to_string() + &"[".repeat(100_000);
+    assert_err(
+        &vectors,
+        1,
+        13 + MAX_VECTOR_NESTING,
+        "vectors nested deeper than 64",
+    );
+}
+
+#[test]
+fn size_limits() {
+    assert_err("cube(1e13);", 1, 1, "exceeds");
+    let far = "multmatrix([[1, 0, 0, 1e12], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(1);";
+    assert_err(far, 1, 73, "exceeds");
+    assert_err(
+        &TETRAHEDRON.replace("[0, 0, 1]]", "[0, 0, 1e13]]"),
+        1,
+        1,
+        "exceeds",
+    );
+    let cubes = "cube(1);".repeat(MAX_SCENE_VERTICES / 8 + 1);
+    assert_err(&cubes, 1, 8 * (MAX_SCENE_VERTICES / 8) + 1, "vertices");
+}
+
+#[test]
+fn all_nodes_seed_parses() {
+    let scene = parse(ALL_NODES);
+    assert_eq!(scene.solids.len(), 6); // the `%cube` is left out
+    scene.solids.iter().for_each(assert_outward);
+}
+
+#[test]
+fn deepest_accepted_nesting() {
+    let groups = "group() {\n".repeat(MAX_NESTING - 1) + "cube(1);" + &"}".repeat(MAX_NESTING - 1);
+    assert_eq!(parse(&groups).root, CsgNode::Solid(0));
+    // A tree as deep as the limit allows, built and dropped on a test thread's stack.
+    let deep = "difference() { cube(1);\n".repeat(MAX_NESTING - 1)
+        + "cube(1);"
+        + &"}".repeat(MAX_NESTING - 1);
+    let scene = parse(&deep);
+    assert_eq!(scene.solids.len(), MAX_NESTING);
+    drop(scene);
+}
+
+/// Ok scenes are well formed; errors point inside the text.
+fn check_outcome(text: &str) {
+    match parse_csg(text, "fuzz.csg") {
+        Ok(scene) => {
+            let mut pending = vec![&scene.root];
+            while let Some(node) = pending.pop() {
+                match node {
+                    CsgNode::Solid(i) => assert!(*i < scene.solids.len()),
+                    CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
+                        pending.extend(c)
+                    }
+                    CsgNode::Complement(c) => pending.push(c),
+                    CsgNode::Empty => {}
+                }
+            }
+            scene.solids.iter().for_each(assert_outward);
+        }
+        Err(e) => {
+            let at = e.location.as_ref().expect("a located error");
+            assert!(at.line >= 1 && at.col >= 1, "{e}");
+            assert!(at.line <= text.lines().count() + 1, "{e}");
+        }
+    }
+}
+
+proptest! {
+    #[test]
+    fn random_text_never_panics(text in "\\PC{0,300}") {
+        check_outcome(&text);
+    }
+
+    #[test]
+    fn csg_like_text_never_panics(text in "[a-z$ (){}\\[\\];,=0-9.e+\\-\"/*%#\n]{0,300}") {
+        check_outcome(&text);
+    }
+
+    #[test]
+    fn mutated_files_never_panic(
+        seed in prop::sample::select(vec![EXAMPLE, ALL_NODES]),
+        edits in prop::collection::vec((any::<prop::sample::Index>(), any::<u8>(), 0..3u8), 1..6)
+    ) {
+        let mut bytes = seed.as_bytes().to_vec();
+        for (at, byte, how) in edits {
+            let i = at.index(bytes.len() + 1);
+            match how {
+                0 if i < bytes.len() => bytes[i] = byte,
+                1 if i < bytes.len() => { bytes.remove(i); }
+                _ => bytes.insert(i, byte),
+            }
+        }
+        check_outcome(&String::from_utf8_lossy(&bytes));
+    }
+}

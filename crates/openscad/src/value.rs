@@ -1,0 +1,259 @@
+//! Values (numbers, booleans, strings, vectors) and argument lists.
+
+use std::collections::VecDeque;
+
+use crate::{consts_::*, lex::*, tree::*};
+
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Kind {
+    Num(f64),
+    Bool(bool),
+    Undef,
+    Str(String),
+    List(Vec<Value>),
+}
+
+/// A value and where it starts.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Value {
+    pub(crate) kind: Kind,
+    pub(crate) pos: Pos,
+}
+
+impl Value {
+    pub(crate) fn number(&self, what: &str) -> Result<f64, Fail> {
+        match self.kind {
+            Kind::Num(v) => Ok(v),
+            _ => fail(self.pos, format!("{what} must be a number")),
+        }
+    }
+
+    pub(crate) fn list(&self, what: &str) -> Result<&[Value], Fail> {
+        match &self.kind {
+            Kind::List(items) => Ok(items),
+            _ => fail(self.pos, format!("{what} must be a vector")),
+        }
+    }
+
+    /// A number for both, or `[x, y]` (`scale`, a square's `size`).
+    pub(crate) fn pair(&self, what: &str) -> Result<[f64; 2], Fail> {
+        match &self.kind {
+            Kind::Num(s) => Ok([*s, *s]),
+            _ => match self.list(what)? {
+                [x, y] => Ok([x.number(what)?, y.number(what)?]),
+                _ => fail(self.pos, format!("{what} must be a number or [x, y]")),
+            },
+        }
+    }
+
+    pub(crate) fn vec3(&self, what: &str) -> Result<Vec3, Fail> {
+        match self.list(what)? {
+            [x, y, z] => Ok([x.number(what)?, y.number(what)?, z.number(what)?]),
+            _ => fail(self.pos, format!("{what} must be [x, y, z]")),
+        }
+    }
+}
+
+/// One argument of a node: `name = value` or a positional value.
+pub(crate) struct Arg {
+    pub(crate) name: Option<(String, Pos)>,
+    pub(crate) value: Value,
+}
+
+/// Tokens with look-ahead, and the values and argument lists made of them.
+pub(crate) struct Parser<'a> {
+    pub(crate) lexer: Lexer<'a>,
+    pub(crate) ahead: VecDeque<Token>,
+}
+
+impl<'a> Parser<'a> {
+    pub(crate) fn new(text: &'a str) -> Self {
+        Parser {
+            lexer: Lexer::new(text),
+            ahead: VecDeque::new(),
+        }
+    }
+
+    pub(crate) fn peek_nth(&mut self, n: usize) -> Result<&Token, Fail> {
+        while self.ahead.len() <= n {
+            let token = self.lexer.next_token()?;
+            self.ahead.push_back(token);
+        }
+        Ok(&self.ahead[n])
+    }
+
+    pub(crate) fn peek(&mut self) -> Result<&Token, Fail> {
+        self.peek_nth(0)
+    }
+
+    pub(crate) fn next(&mut self) -> Result<Token, Fail> {
+        match self.ahead.pop_front() {
+            Some(token) => Ok(token),
+            None => self.lexer.next_token(),
+        }
+    }
+
+    pub(crate) fn at_sym(&mut self, c: u8) -> Result<bool, Fail> {
+        Ok(self.peek()?.tok == Tok::Sym(c))
+    }
+
+    /// Consumes the symbol `c` if it comes next; returns its position.
+    pub(crate) fn eat_sym(&mut self, c: u8) -> Result<Option<Pos>, Fail> {
+        if self.at_sym(c)? {
+            Ok(Some(self.next()?.pos))
+        } else {
+            Ok(None)
+        }
+    }
+
+    pub(crate) fn expect_sym(&mut self, c: u8, context: &str) -> Result<Pos, Fail> {
+        let token = self.next()?;
+        if token.tok == Tok::Sym(c) {
+            Ok(token.pos)
+        } else {
+            let found = token.tok.describe();
+            fail(
+                token.pos,
+                format!("expected '{}' {context}, found {found}", c as char),
+            )
+        }
+    }
+
+    /// `( [name =] value, … )`
+    pub(crate) fn args(&mut self, node: &str) -> Result<Vec<Arg>, Fail> {
+        self.expect_sym(b'(', &format!("after `{node}`"))?;
+        let mut args = Vec::new();
+        loop {
+            if self.eat_sym(b')')?.is_some() {
+                return Ok(args);
+            }
+            let name = self.arg_name()?;
+            let value = self.value()?;
+            args.push(Arg { name, value });
+            let token = self.next()?;
+            match token.tok {
+                Tok::Sym(b',') => {}
+                Tok::Sym(b')') => return Ok(args),
+                other => {
+                    let msg = format!(
+                        "expected ',' or ')' in the arguments of `{node}`, found {}",
+                        other.describe()
+                    );
+                    return fail(token.pos, msg);
+                }
+            }
+        }
+    }
+
+    /// The `name =` of a named argument, if the next two tokens are one.
+    pub(crate) fn arg_name(&mut self) -> Result<Option<(String, Pos)>, Fail> {
+        let Tok::Ident(name) = &self.peek()?.tok else {
+            return Ok(None);
+        };
+        let name = name.clone();
+        if self.peek_nth(1)?.tok != Tok::Sym(b'=') {
+            return Ok(None);
+        }
+        let pos = self.next()?.pos;
+        self.next()?;
+        Ok(Some((name, pos)))
+    }
+
+    /// A value, vectors included; nested vectors are read with an explicit stack.
+    pub(crate) fn value(&mut self) -> Result<Value, Fail> {
+        let mut open: Vec<(Pos, Vec<Value>)> = Vec::new();
+        loop {
+            let token = self.next()?;
+            if token.tok == Tok::Sym(b'[') && !self.at_sym(b']')? {
+                if open.len() >= MAX_VECTOR_NESTING {
+                    let msg = format!("vectors nested deeper than {MAX_VECTOR_NESTING} levels");
+                    return fail(token.pos, msg);
+                }
+                open.push((token.pos, Vec::new()));
+                continue;
+            }
+            let element = self.scalar_or_empty(token)?;
+            if let Some(value) = self.attach(&mut open, element)? {
+                return Ok(value);
+            }
+        }
+    }
+
+    /// Adds a finished element to the innermost open vector, closing the vectors that end after
+    /// it; returns the whole value once nothing is left open.
+    pub(crate) fn attach(
+        &mut self,
+        open: &mut Vec<(Pos, Vec<Value>)>,
+        mut done: Value,
+    ) -> Result<Option<Value>, Fail> {
+        while let Some((pos, mut items)) = open.pop() {
+            items.push(done);
+            let token = self.next()?;
+            let closed = match token.tok {
+                Tok::Sym(b',') => self.eat_sym(b']')?.is_some(),
+                Tok::Sym(b']') => true,
+                other => {
+                    let found = other.describe();
+                    let msg = format!("expected ',' or ']' in a vector, found {found}");
+                    return fail(token.pos, msg);
+                }
+            };
+            if !closed {
+                open.push((pos, items));
+                return Ok(None);
+            }
+            done = Value {
+                kind: Kind::List(items),
+                pos,
+            };
+        }
+        Ok(Some(done))
+    }
+
+    /// A number, boolean, `undef`, string or `[]`, starting with `token`.
+    pub(crate) fn scalar_or_empty(&mut self, token: Token) -> Result<Value, Fail> {
+        let pos = token.pos;
+        let kind = match token.tok {
+            Tok::Num(v) => Kind::Num(v),
+            Tok::Str(s) => Kind::Str(s),
+            Tok::Sym(b'[') => {
+                self.next()?; // the ']'
+                Kind::List(Vec::new())
+            }
+            Tok::Sym(sign @ (b'-' | b'+')) => {
+                let token = self.next()?;
+                match token.tok {
+                    Tok::Num(v) if sign == b'-' => Kind::Num(-v),
+                    Tok::Num(v) => Kind::Num(v),
+                    other => {
+                        let msg = format!(
+                            "expected a number after '{}', found {}",
+                            sign as char,
+                            other.describe()
+                        );
+                        return fail(token.pos, msg);
+                    }
+                }
+            }
+            Tok::Ident(name) => match name.as_str() {
+                "true" => Kind::Bool(true),
+                "false" => Kind::Bool(false),
+                "undef" => Kind::Undef,
+                "inf" | "nan" => {
+                    return fail(pos, format!("numbers must be finite, found `{name}`"))
+                }
+                _ => {
+                    let msg = format!(
+                        "expected a value, found `{name}` (csgpix reads numbers, true, false, \
+                         undef, strings and vectors, not expressions)"
+                    );
+                    return fail(pos, msg);
+                }
+            },
+            other => return fail(pos, format!("expected a value, found {}", other.describe())),
+        };
+        Ok(Value { kind, pos })
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
