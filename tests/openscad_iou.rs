@@ -311,7 +311,7 @@ fn openscads_examples_that_csgpix_reads_match_openscads_mesh() {
 }
 
 /// Twisted and scaled extrusions, with and without holes, against OpenSCAD's own meshes: the
-/// wall diagonals csgpix picks (crates/scene/src/extrude.rs) reproduce them (IoU ≥ 0.999 under centre
+/// wall diagonals csgpix picks (crates/openscad/src/extrude.rs) reproduce them (IoU ≥ 0.999 under centre
 /// sampling; 1.0000 when measured, 2026-11-24).
 #[test]
 fn twisted_extrusions_match_openscads_mesh() {

@@ -853,7 +853,7 @@ fn a_thousand_and_twenty_four_primitives() {
 
 // ---------------------------------------------------------------------------------------------
 // CSG trees 100,000 deep (tests/blist.rs covers Blist compilation of 100,000-level trees and
-// tests/cli_blist.rs a 60,000-deep EXPR; crates/scene/src/scad.rs the reader's limit on a string).
+// tests/cli_blist.rs a 60,000-deep EXPR; crates/openscad/src the reader's limit on a string).
 
 #[test]
 fn trees_100000_deep_from_a_file_are_refused_in_one_line() {

@@ -25,7 +25,7 @@ fn vertices(text: &str) -> Vec<usize> {
 #[test]
 fn fragments_are_rewritten_or_added_and_comments_left_alone() {
     // A cylinder with two non-zero radii has 2n vertices; a sphere ceil(n/2) rings of n
-    // (OpenSCAD's CylinderNode/SphereNode layout, docs in crates/scene/src/scad.rs).
+    // (OpenSCAD's CylinderNode/SphereNode layout, docs in crates/openscad/src).
     let text = "// sphere($fn = 3) in a comment\n\
                 union() { cylinder($fn=24, $fa = 12, h = 2, r = 1);\n\
                 sphere(r = 2); sphere ( ); cube(1); }";

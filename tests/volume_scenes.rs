@@ -148,6 +148,7 @@ fn as_meshes(scene: &CsgScene, dir: &Path) -> Loaded {
         solids: vec![],
         imports,
         root: scene.root.clone(),
+        warnings: vec![],
     };
     let sampled = load_imports(&meshes, "meshes", dir).unwrap();
     Loaded {

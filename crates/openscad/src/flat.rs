@@ -211,31 +211,36 @@ pub(crate) fn linear_args(p: &Params, res: (f64, f64, f64)) -> Result<LinearArgs
 }
 
 /// `square`, `circle` or `polygon` as a shape in its own plane.
-pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
+/// `None` for a zero or negative size, which OpenSCAD draws as nothing.
+pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Option<Poly2>, Fail> {
     match p.node {
         NodeKind::Square => {
             let size = match p.get("size") {
                 None => [1.0, 1.0],
                 Some(v) => {
                     let s = v.pair("`size`")?;
-                    if s.iter().any(|c| !(*c > 0.0 && *c <= MAX_COORDINATE)) {
-                        return fail(v.pos, "`size` must be positive");
+                    if s.iter().any(|c| *c <= 0.0) {
+                        return Ok(None);
+                    }
+                    if s.iter().any(|c| !(*c <= MAX_COORDINATE)) {
+                        return fail(v.pos, "`size` exceeds the coordinate limit");
                     }
                     s
                 }
             };
-            Ok(Poly2::square(size[0], size[1], p.boolean("center")?))
+            Ok(Some(Poly2::square(size[0], size[1], p.boolean("center")?)))
         }
         NodeKind::Circle => {
             let r = match radius(p, "d", "r")? {
-                Some(r) => positive(r, "the radius")?,
+                Some((r, _)) if r <= 0.0 => return Ok(None),
+                Some((r, _)) => r,
                 None => 1.0,
             };
             let n = Resolution::read(p)?.fragments(r, p.pos)?;
             check_budget(n, budget, p.pos)?;
-            Ok(Poly2::circle(r, n, sin_cos_degrees))
+            Ok(Some(Poly2::circle(r, n, sin_cos_degrees)))
         }
-        _ => polygon(p, budget),
+        _ => polygon(p, budget).map(Some),
     }
 }
 

@@ -134,7 +134,11 @@ use reader::Reader;
 /// Reads a `.csg` file's text into a scene; `file` is only used in error messages.
 ///
 pub fn parse_csg(text: &str, file: &str) -> csgpix_scene::Result<CsgScene> {
-    Reader::new(text)
+    let mut scene = Reader::new(text)
         .run()
-        .map_err(|fail| Error::at(file, fail.pos.line, fail.pos.col, fail.msg))
+        .map_err(|fail| Error::at(file, fail.pos.line, fail.pos.col, fail.msg))?;
+    for w in &mut scene.warnings {
+        *w = std::mem::replace(w, Error::msg("")).in_file(file);
+    }
+    Ok(scene)
 }

@@ -55,18 +55,11 @@ pub(crate) fn check_budget(vertices: usize, budget: usize, pos: Pos) -> Result<(
     Ok(())
 }
 
-pub(crate) fn positive((v, pos): (f64, Pos), what: &str) -> Result<f64, Fail> {
-    if v > 0.0 {
-        Ok(v)
-    } else {
-        fail(pos, format!("{what} must be positive, found {v}"))
-    }
-}
 
 /// `cube(size, center)`: size a number or `[x, y, z]`, default 1. Vertex `i` is at
 /// `(i&1 ? x2 : x1, i&2 ? y2 : y1, i&4 ? z2 : z1)` and the faces are those of
 /// `CubeNode::createGeometry`.
-pub(crate) fn cube(params: &Params) -> Result<Shape, Fail> {
+pub(crate) fn cube(params: &Params) -> Result<Option<Shape>, Fail> {
     let size = match params.get("size") {
         None => [1.0; 3],
         Some(v) => {
@@ -75,7 +68,7 @@ pub(crate) fn cube(params: &Params) -> Result<Shape, Fail> {
                 _ => v.vec3("`size`")?,
             };
             if size.iter().any(|&s| s <= 0.0) {
-                return fail(v.pos, "`size` must be positive");
+                return Ok(None);
             }
             size
         }
@@ -99,10 +92,10 @@ pub(crate) fn cube(params: &Params) -> Result<Shape, Fail> {
         [3, 2, 6, 7], // back
         [2, 0, 4, 6], // left
     ];
-    Ok(Shape {
+    Ok(Some(Shape {
         vertices,
         faces: faces.iter().map(|f| f.to_vec()).collect(),
-    })
+    }))
 }
 
 /// `$fn`, `$fa`, `$fs` of a sphere or cylinder.
@@ -172,9 +165,10 @@ pub(crate) fn radius(params: &Params, d: &str, r: &str) -> Result<Option<(f64, P
 /// at polar angles `180 (i + 0.5) / rings`, ring 0 at the top, each a circle of `fragments`
 /// points; the top and bottom rings are polygon faces and neighbouring rings are joined by
 /// quads.
-pub(crate) fn sphere(params: &Params, budget: usize) -> Result<Shape, Fail> {
+pub(crate) fn sphere(params: &Params, budget: usize) -> Result<Option<Shape>, Fail> {
     let r = match radius(params, "d", "r")? {
-        Some(r) => positive(r, "the radius")?,
+        Some((r, _)) if r <= 0.0 => return Ok(None),
+        Some((r, _)) => r,
         None => 1.0,
     };
     let fragments = Resolution::read(params)?.fragments(r, params.pos)?;
@@ -199,15 +193,16 @@ pub(crate) fn sphere(params: &Params, budget: usize) -> Result<Shape, Fail> {
         }
     }
     faces.push((0..fragments).map(|j| rings * fragments - j - 1).collect());
-    Ok(Shape { vertices, faces })
+    Ok(Some(Shape { vertices, faces }))
 }
 
 /// `cylinder(h, r1, r2, center, r, d, d1, d2, $fn, $fa, $fs)` as `CylinderNode::createGeometry`:
 /// defaults `h = 1, r = 1`; `r` sets both radii, `r1`/`r2` override it, diameters override
 /// radii. A zero radius makes that end a single apex vertex.
-pub(crate) fn cylinder(params: &Params, budget: usize) -> Result<Shape, Fail> {
+pub(crate) fn cylinder(params: &Params, budget: usize) -> Result<Option<Shape>, Fail> {
     let h = match params.number("h")? {
-        Some(h) => positive(h, "`h`")?,
+        Some((h, _)) if h <= 0.0 => return Ok(None),
+        Some((h, _)) => h,
         None => 1.0,
     };
     let (mut r1, mut r2) = ((1.0, params.pos), (1.0, params.pos));
@@ -220,20 +215,9 @@ pub(crate) fn cylinder(params: &Params, budget: usize) -> Result<Shape, Fail> {
     if let Some(r) = radius(params, "d2", "r2")? {
         r2 = r;
     }
-    for (r, pos) in [r1, r2] {
-        if r < 0.0 {
-            return fail(
-                pos,
-                format!("a cylinder radius must not be negative, found {r}"),
-            );
-        }
-    }
     let (r1, r2) = (r1.0, r2.0);
-    if r1 == 0.0 && r2 == 0.0 {
-        return fail(
-            params.pos,
-            "a cylinder needs a positive radius at one end at least",
-        );
+    if r1 < 0.0 || r2 < 0.0 || (r1 == 0.0 && r2 == 0.0) {
+        return Ok(None);
     }
     let fragments = Resolution::read(params)?.fragments(r1.max(r2), params.pos)?;
     check_budget(2 * fragments, budget, params.pos)?;
@@ -242,7 +226,7 @@ pub(crate) fn cylinder(params: &Params, budget: usize) -> Result<Shape, Fail> {
     } else {
         (0.0, h)
     };
-    Ok(cylinder_shape(r1, r2, z1, z2, fragments))
+    Ok(Some(cylinder_shape(r1, r2, z1, z2, fragments)))
 }
 
 pub(crate) fn cylinder_shape(r1: f64, r2: f64, z1: f64, z2: f64, n: usize) -> Shape {

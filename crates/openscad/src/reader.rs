@@ -10,6 +10,7 @@ use crate::{
     consts_::*, flat::*, import::*, lex::*, node::*, primitives::*, transform::*, tree::*, value::*,
 };
 use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
+use csgpix_scene::Error;
 
 /// What the solids below a node inherit.
 #[derive(Clone, Debug, Default)]
@@ -39,12 +40,25 @@ pub(crate) struct Frame {
     /// 2D shape among them stands.
     pub(crate) flats: Vec<Region>,
     pub(crate) first_flat: Option<Pos>,
+    /// 2D or 3D: as OpenSCAD's `applyToChildren`, the dimension of the first child that is
+    /// not empty (extrusions and offsets are 2D from the start); children of the other
+    /// dimension are ignored with OpenSCAD's warning.
+    pub(crate) dim: Option<Dim>,
     /// Where the node stands, for messages.
     pub(crate) pos: Pos,
     /// An extrusion's or offset's parameters, read when it opened.
     pub(crate) spec: Spec,
     /// The transform above an extrusion (its children start from the identity).
     pub(crate) placement: Option<Mat4>,
+}
+
+/// The dimension of an operation's children.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Dim {
+    /// Shapes in the plane.
+    Flat,
+    /// Solids.
+    Solid,
 }
 
 /// What a finished statement gives its parent: a solid's tree or a 2D region.
@@ -89,6 +103,10 @@ pub(crate) struct Reader<'a> {
     /// Solids and imports a `hull()` took in: they leave the scene at the end.
     pub(crate) consumed_solids: Vec<usize>,
     pub(crate) consumed_imports: Vec<usize>,
+    /// 2D shapes at the top level (ignored beside solids), the first one's position.
+    pub(crate) top_flat: Option<Pos>,
+    /// Warnings as OpenSCAD gives them, with where they arose.
+    pub(crate) warnings: Vec<(Pos, String)>,
 }
 
 impl<'a> Reader<'a> {
@@ -102,6 +120,8 @@ impl<'a> Reader<'a> {
             top: Vec::new(),
             consumed_solids: Vec::new(),
             consumed_imports: Vec::new(),
+            top_flat: None,
+            warnings: Vec::new(),
         }
     }
 
@@ -131,12 +151,27 @@ impl<'a> Reader<'a> {
         match self.open.pop() {
             None => {
                 let mut root = combine(Op::Union, std::mem::take(&mut self.top));
+                if let Some(at) = self.top_flat {
+                    if root == CsgNode::Empty {
+                        let msg = "a 2D shape outside linear_extrude or rotate_extrude: \
+                                   csgpix voxelizes solids";
+                        return fail(at, msg);
+                    }
+                    let msg = "Ignoring 2D child object for 3D operation (top level)";
+                    self.warnings.push((at, msg.to_string()));
+                }
                 let (solids, imports) = self.drop_consumed(&mut root);
                 root.number_imports_after(solids.len());
+                let warnings = self
+                    .warnings
+                    .iter()
+                    .map(|(at, msg)| Error::at("", at.line, at.col, format!("warning: {msg}")))
+                    .collect();
                 Ok(CsgScene {
                     solids,
                     imports,
                     root,
+                    warnings,
                 })
             }
             Some(frame) => fail(pos, unclosed(&frame, "end of file")),
@@ -197,6 +232,12 @@ impl<'a> Reader<'a> {
             children: Vec::new(),
             flats: Vec::new(),
             first_flat: None,
+            dim: match head.kind {
+                NodeKind::LinearExtrude | NodeKind::RotateExtrude | NodeKind::Offset => {
+                    Some(Dim::Flat)
+                }
+                _ => None,
+            },
             pos: head.pos,
             spec,
             placement,
@@ -237,31 +278,47 @@ impl<'a> Reader<'a> {
     }
 
     /// Hands a finished node (or nothing, for a skipped one) to the open operation, closing
-    /// the single-child operations it completes. A 2D shape outside every extrusion is
-    /// refused where it stands.
+    /// the single-child operations it completes. A child of the other dimension than the
+    /// operation's is ignored with OpenSCAD's warning (its leaves leave the scene); a 2D
+    /// shape at the top level is ignored beside solids and refused alone ([`Self::end`]).
     fn deliver(&mut self, mut node: Option<Item>) -> Result<(), Fail> {
         loop {
             let Some(frame) = self.open.last_mut() else {
-                return match node {
-                    Some(Item::Flat(_, pos)) => fail(
-                        pos,
-                        "a 2D shape outside linear_extrude or rotate_extrude: csgpix voxelizes solids",
-                    ),
-                    Some(Item::Solid(n)) => {
-                        self.top.push(n);
-                        Ok(())
+                match node {
+                    Some(Item::Flat(_, pos)) => {
+                        self.top_flat.get_or_insert(pos);
                     }
-                    None => Ok(()),
-                };
+                    Some(Item::Solid(n)) => self.top.push(n),
+                    None => {}
+                }
+                return Ok(());
             };
-            match node {
-                Some(Item::Solid(n)) => frame.children.push(n),
-                Some(Item::Flat(r, at)) => {
+            let pos = frame.pos;
+            match (node, frame.dim) {
+                (Some(Item::Solid(CsgNode::Empty)), Some(Dim::Flat)) => {}
+                (Some(Item::Solid(n)), Some(Dim::Flat)) => {
+                    self.ignore(pos, "Ignoring 3D child object for 2D operation", &n);
+                }
+                (Some(Item::Solid(n)), _) => {
+                    if !matches!(n, CsgNode::Empty) {
+                        frame.dim = Some(Dim::Solid);
+                    }
+                    frame.children.push(n);
+                }
+                (Some(Item::Flat(_, _)), Some(Dim::Solid)) => {
+                    let msg = "Ignoring 2D child object for 3D operation".to_string();
+                    self.warnings.push((pos, msg));
+                }
+                (Some(Item::Flat(r, at)), _) => {
+                    frame.dim = Some(Dim::Flat);
                     frame.flats.push(r);
                     frame.first_flat.get_or_insert(at);
                 }
-                None => {}
+                (None, _) => {}
             }
+            let Some(frame) = self.open.last() else {
+                return Ok(());
+            };
             if frame.closer != Closer::Single {
                 return Ok(());
             }
@@ -278,26 +335,38 @@ impl<'a> Reader<'a> {
             return Ok(None);
         }
         let (kind, pos) = (frame.kind, frame.pos);
-        let mixed = !frame.children.is_empty() && !frame.flats.is_empty();
-        if mixed {
-            return fail(pos, format!("`{}` mixes 2D and 3D children", kind.name()));
-        }
         let flat_at = frame.first_flat.unwrap_or(pos);
         match kind {
-            NodeKind::LinearExtrude | NodeKind::RotateExtrude if !frame.children.is_empty() => {
-                fail(
-                    pos,
-                    format!("`{}` takes 2D children, found a solid", kind.name()),
-                )
-            }
             NodeKind::LinearExtrude | NodeKind::RotateExtrude => self.extrude(frame).map(Some),
             NodeKind::Hull if frame.flats.is_empty() => self.hull3(frame).map(Some),
             NodeKind::Hull => hull_flat(frame),
             NodeKind::Offset => offset_flat(frame),
-            _ if !frame.flats.is_empty() => {
+            _ if frame.dim == Some(Dim::Flat) => {
                 Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), flat_at)))
             }
             _ => Ok(Some(Item::Solid(combine(kind.op(), frame.children)))),
+        }
+    }
+
+    /// A child of the wrong dimension: dropped with OpenSCAD's warning, its leaves out of
+    /// the scene.
+    fn ignore(&mut self, pos: Pos, why: &str, n: &CsgNode) {
+        self.warnings.push((pos, why.to_string()));
+        let mut stack = vec![n];
+        while let Some(n) = stack.pop() {
+            match n {
+                CsgNode::Solid(i) if *i >= IMPORTED => self.consumed_imports.push(i - IMPORTED),
+                CsgNode::Solid(i) => self.consumed_solids.push(*i),
+                _ => stack.extend(n.children()),
+            }
+        }
+    }
+
+    /// A primitive of zero or negative size: OpenSCAD draws nothing; csgpix says so.
+    fn empty_primitive(&mut self, head: &Head, ctx: &Ctx) {
+        if !ctx.skip {
+            let msg = format!("`{}` has a zero or negative size: it is empty", head.kind.name());
+            self.warnings.push((head.pos, msg));
         }
     }
 
@@ -314,7 +383,10 @@ impl<'a> Reader<'a> {
         }
         let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
         if head.kind.is_flat() {
-            let poly = flat_shape(&head.params, budget)?;
+            let Some(poly) = flat_shape(&head.params, budget)? else {
+                self.empty_primitive(head, ctx);
+                return Ok(None);
+            };
             let n = poly.points().count();
             check_budget(n, budget, head.pos)?;
             if ctx.skip {
@@ -328,7 +400,11 @@ impl<'a> Reader<'a> {
             NodeKind::Cube => cube(&head.params)?,
             NodeKind::Sphere => sphere(&head.params, budget)?,
             NodeKind::Cylinder => cylinder(&head.params, budget)?,
-            _ => polyhedron(&head.params, budget)?,
+            _ => Some(polyhedron(&head.params, budget)?),
+        };
+        let Some(shape) = shape else {
+            self.empty_primitive(head, ctx);
+            return Ok(Some(Item::Solid(CsgNode::Empty)));
         };
         check_budget(shape.vertices.len(), budget, head.pos)?;
         if ctx.skip {

@@ -473,9 +473,6 @@ fn errors_name_line_and_column() {
     assert_err("cube(sise = 1);", 1, 6, "no parameter `sise`");
     assert_err("cube(1, true, 3);", 1, 15, "too many positional");
     assert_err("cube(size = 1, size = 2);", 1, 16, "given twice");
-    assert_err("sphere(r = -1);", 1, 12, "must be positive");
-    assert_err("cylinder(h = 0, r = 1);", 1, 14, "must be positive");
-    assert_err("cylinder(h = 1, r1 = 0, r2 = 0);", 1, 1, "positive radius");
     assert_err("sphere($fn = -3, r = 1);", 1, 14, "must not be negative");
     assert_err("sphere($fn = 20000, r = 1);", 1, 1, "more than the 10000");
     assert_err("sphere($fn = 2000, r = 1);", 1, 1, "vertices");
@@ -599,4 +596,56 @@ proptest! {
         }
         check_outcome(&String::from_utf8_lossy(&bytes));
     }
+}
+
+/// OpenSCAD draws a primitive of zero or negative size as nothing and goes on; csgpix does
+/// the same and warns at the node.
+#[test]
+fn empty_primitives_are_empty_with_a_warning() {
+    for (text, col) in [
+        ("sphere(r = -1);", 1),
+        ("cylinder(h = 0, r = 1);", 1),
+        ("cylinder(h = 1, r1 = 0, r2 = 0);", 1),
+        ("cube([1, 0, 1]);", 1),
+        ("linear_extrude(height = 1) square(size = [0, 1]);", 28),
+        ("linear_extrude(height = 1) circle(r = 0);", 28),
+    ] {
+        let s = parse(text);
+        assert_eq!(s.root, CsgNode::Empty, "{text}");
+        assert!(s.solids.is_empty() && s.imports.is_empty(), "{text}");
+        assert_eq!(s.warnings.len(), 1, "{text}");
+        let w = s.warnings[0].to_string();
+        assert!(w.starts_with(&format!("test.csg:1:{col}: warning:")), "{w}");
+    }
+    // An empty first operand empties a difference; an empty subtracted one is dropped.
+    let s = parse("difference() { cylinder(h = 1, r1 = 0, r2 = 0); cube(1); }");
+    assert_eq!(s.root, CsgNode::Empty);
+    let s = parse("difference() { cube(2); cube(0); }");
+    assert_eq!(s.root, CsgNode::Solid(0));
+    // The rest of the scene goes on.
+    let s = parse("group() { cube(0); sphere(1); }");
+    assert_eq!((s.solids.len(), s.root.clone()), (1, CsgNode::Solid(0)));
+}
+
+/// OpenSCAD's `applyToChildren`: the first child that is not empty sets an operation's
+/// dimension; children of the other dimension are ignored with its warning, and an empty
+/// `group();` is neither.
+#[test]
+fn children_of_the_other_dimension_are_ignored() {
+    let s = parse("group() { cube(1); square(2); }");
+    assert_eq!((s.solids.len(), s.root.clone()), (1, CsgNode::Solid(0)));
+    assert!(s.warnings[0].to_string().contains("Ignoring 2D child object for 3D operation"));
+    let s = parse("linear_extrude(height = 1) { group(); square(2); cube(5); }");
+    assert_eq!(s.solids.len(), 1, "the extruded square only");
+    assert!(s.warnings[0].to_string().contains("Ignoring 3D child object for 2D operation"));
+    let s = parse("linear_extrude(height = 1) union() { group(); square(2); }");
+    assert_eq!((s.solids.len(), s.warnings.len()), (1, 0));
+    // 2D first: the solid is ignored and leaves the scene.
+    let s = parse("cube(1); linear_extrude(height = 1) group() { square(2); sphere(3); }");
+    assert_eq!(s.solids.len(), 2, "the cube and the extruded square");
+    assert_eq!(s.warnings.len(), 1);
+    // A 2D shape at the top level beside solids is ignored; alone it is refused.
+    let s = parse("square(2); cube(1);");
+    assert_eq!((s.solids.len(), s.warnings.len()), (1, 1));
+    assert_err("square(2);", 1, 1, "outside linear_extrude");
 }

@@ -69,6 +69,9 @@ pub struct CsgScene {
     pub imports: Vec<Import>,
     /// The tree over both.
     pub root: CsgNode,
+    /// What the reader noticed but drew anyway, as OpenSCAD warns (an empty primitive, a 2D
+    /// child beside solids): one located line each, for stderr.
+    pub warnings: Vec<crate::Error>,
 }
 
 impl CsgScene {
@@ -78,6 +81,7 @@ impl CsgScene {
             solids,
             imports: vec![],
             root,
+            warnings: vec![],
         }
     }
 
