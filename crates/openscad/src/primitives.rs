@@ -278,7 +278,21 @@ pub(crate) fn circle(out: &mut Vec<Vec3>, r: f64, z: f64, fragments: usize) {
 /// outside and `PolyhedronNode::createGeometry` reverses them; so does this. The result must
 /// be closed (every edge shared by two faces, once in each direction) and convex. Points no
 /// face uses are dropped.
-pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Shape, Fail> {
+/// What a polyhedron becomes: a convex solid the array draws, or (not convex, or too large to
+/// check) a closed mesh primitive of its faces, fanned into triangles (the mesh route counts
+/// crossings by parity, so a fan over a concave face still covers exactly its interior).
+pub(crate) enum Polyhedron {
+    /// Closed, convex, faces counter-clockwise seen from outside.
+    Convex(Shape),
+    /// Closed (every edge shared by an even number of faces), in the file's coordinates.
+    Mesh(Vec<[Vec3; 3]>),
+}
+
+/// `polyhedron(points, faces | triangles)` as OpenSCAD takes it: faces listed clockwise seen
+/// from outside (`PolyhedronNode::createGeometry` reverses them) or all the other way round
+/// (OpenSCAD renders those too: csgpix turns them over); convex ones become convex solids,
+/// the others closed mesh primitives. The surface must be closed.
+pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Polyhedron, Fail> {
     let points = params.require("points", "points = [[x, y, z], …]")?;
     let points = points
         .list("`points`")?
@@ -286,10 +300,6 @@ pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Shape, Fail> 
         .map(|p| p.vec3("a point"))
         .collect::<Result<Vec<_>, _>>()?;
     check_budget(points.len(), budget, params.pos)?;
-    if points.len() > MAX_POLYHEDRON_POINTS {
-        let msg = format!("a polyhedron may have at most {MAX_POLYHEDRON_POINTS} points");
-        return fail(params.pos, msg);
-    }
     if let Some(p) = points.iter().flatten().find(|&&c| too_large(c)) {
         let msg = format!("coordinate {p} exceeds {MAX_COORDINATE:e} in size");
         return fail(params.pos, msg);
@@ -303,11 +313,66 @@ pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Shape, Fail> 
         .iter()
         .map(|f| face_indices(f, points.len()))
         .collect::<Result<Vec<_>, _>>()?;
-    check_convex_closed(&points, &faces).map_err(|msg| Fail {
+    let refused = |msg: String| Fail {
         pos: params.pos,
         msg: format!("polyhedron refused: {msg}"),
-    })?;
-    Ok(compact(points, faces))
+    };
+    check_even_edges(&faces).map_err(refused)?;
+    let mut faces = faces;
+    if enclosed_volume(&points, &faces) < 0.0 {
+        faces.iter_mut().for_each(|f| f.reverse());
+    }
+    let small = points.len() <= MAX_POLYHEDRON_POINTS;
+    if small && check_convex_closed(&points, &faces).is_ok() {
+        return Ok(Polyhedron::Convex(compact(points, faces)));
+    }
+    let mut tris = Vec::new();
+    for f in &faces {
+        for i in 1..f.len() - 1 {
+            tris.push([points[f[0]], points[f[i]], points[f[i + 1]]]);
+        }
+    }
+    Ok(Polyhedron::Mesh(tris))
+}
+
+/// The signed volume the faces enclose (positive when they run counter-clockwise seen from
+/// outside), by the divergence theorem over fans.
+fn enclosed_volume(points: &[Vec3], faces: &[Vec<usize>]) -> f64 {
+    let mut v = 0.0;
+    for f in faces {
+        for i in 1..f.len() - 1 {
+            let (a, b, c) = (points[f[0]], points[f[i]], points[f[i + 1]]);
+            v += dot(a, cross(b, c)) / 6.0;
+        }
+    }
+    v
+}
+
+fn cross(a: Vec3, b: Vec3) -> Vec3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// Every edge shared by an even number of faces, whatever their winding: the surface is
+/// closed for the parity of crossings.
+fn check_even_edges(faces: &[Vec<usize>]) -> Result<(), String> {
+    let mut count: HashMap<(usize, usize), (usize, usize)> = HashMap::new();
+    for (k, face) in faces.iter().enumerate() {
+        for (a, b) in ring_edges(face) {
+            count.entry((a.min(b), a.max(b))).or_insert((0, k)).0 += 1;
+        }
+    }
+    let mut open: Vec<_> = count.iter().filter(|(_, (n, _))| n % 2 == 1).collect();
+    open.sort();
+    match open.first() {
+        None => Ok(()),
+        Some(((a, b), (_, k))) => Err(format!(
+            "not closed: the edge between points {a} and {b} of face {k} has no neighbouring face"
+        )),
+    }
 }
 
 /// One face's point indices, reversed to counter-clockwise.

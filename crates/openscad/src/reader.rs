@@ -400,7 +400,24 @@ impl<'a> Reader<'a> {
             NodeKind::Cube => cube(&head.params)?,
             NodeKind::Sphere => sphere(&head.params, budget)?,
             NodeKind::Cylinder => cylinder(&head.params, budget)?,
-            _ => Some(polyhedron(&head.params, budget)?),
+            _ => match polyhedron(&head.params, budget)? {
+                Polyhedron::Convex(shape) => Some(shape),
+                Polyhedron::Mesh(tris) => {
+                    check_budget(tris.len() * 3, budget, head.pos)?;
+                    if ctx.skip {
+                        return Ok(None);
+                    }
+                    let to = Placement {
+                        matrix: ctx.matrix,
+                        colour: ctx.colour,
+                        pos: head.pos,
+                        name: "polyhedron",
+                    };
+                    self.vertices += tris.len() * 3;
+                    let tris = tris.iter().map(|t| t.map(DVec3::from)).collect();
+                    return self.push_mesh(tris, &to).map(|n| Some(Item::Solid(n)));
+                }
+            },
         };
         let Some(shape) = shape else {
             self.empty_primitive(head, ctx);
@@ -525,6 +542,12 @@ impl<'a> Reader<'a> {
             return Ok(CsgNode::Empty);
         }
         self.vertices += n * rings;
+        self.push_mesh(tris, to)
+    }
+
+    /// A closed mesh made by the scene (in the coordinates below `to.matrix`) as an import
+    /// leaf: placed, checked against the coordinate limit, named by its node and position.
+    fn push_mesh(&mut self, tris: Vec<[DVec3; 3]>, to: &Placement) -> Result<CsgNode, Fail> {
         let m = to.matrix.unwrap_or(IDENTITY);
         let tris: Vec<[Vec3; 3]> = tris
             .iter()

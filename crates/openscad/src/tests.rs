@@ -198,19 +198,30 @@ fn polyhedron_clockwise_tetrahedron() {
 }
 
 #[test]
-fn polyhedron_refusals() {
-    let dented =
-        "\n  polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.2, 0.2, 0.2]], \
+fn polyhedra_as_openscad_takes_them() {
+    // Not convex: a closed mesh primitive of its faces, placed by the transform above it.
+    let dented = "multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n  \
+                  polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.2, 0.2, 0.2]], \
                   faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [4, 2, 1], [4, 3, 2], [4, 1, 3]]);";
-    assert_err(dented, 2, 3, "not convex");
-    let open = "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
-                faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3]]);";
-    assert_err(open, 1, 1, "not closed");
+    let s = parse(dented);
+    assert_eq!((s.solids.len(), s.imports.len()), (0, 1));
+    let mesh = s.imports[0].mesh.as_ref().expect("a mesh primitive");
+    assert_eq!(mesh.len(), 6);
+    assert!(mesh.iter().flatten().all(|v| v[0] >= 5.0 && v[0] <= 6.0));
+    assert_eq!(s.imports[0].line, 2);
+    // Faces wound the other way round all together: OpenSCAD renders it; so does csgpix.
     let ccw = TETRAHEDRON.replace(
         "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]",
         "[[2, 1, 0], [1, 3, 0], [3, 2, 0], [2, 3, 1]]",
     );
-    assert_err(&ccw, 1, 1, "wrong way round");
+    assert_eq!(only_solid(&ccw), only_solid(TETRAHEDRON));
+}
+
+#[test]
+fn polyhedron_refusals() {
+    let open = "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
+                faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3]]);";
+    assert_err(open, 1, 1, "not closed");
     let bad_index = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 3, 4]]");
     assert_err(&bad_index, 1, 116, "point index 4");
 }
