@@ -8,7 +8,6 @@ use csgpix::blist::BlistTable;
 use csgpix::compile::clip_scene_ops;
 use csgpix::project::{project, Projected};
 use csgpix::requirements::DepthLayout;
-use csgpix::scad::parse_csg;
 use csgpix::solid::CsgScene;
 use csgpix::voxel::{footprints, touched_panels, Footprint, PixelBox};
 use csgpix::voxel::{slice_ops, Grid, Slicer, SlicerOptions};
@@ -118,8 +117,7 @@ struct Report {
 pub fn run(a: Args) -> Result<ExitCode, String> {
     a.mem.limit_readers();
     let at = |e: String| format!("{}: {e}", a.scene.display());
-    let text = csgpix::scad::scene_text(&a.scene)?;
-    let scene = parse_csg(&text, &a.scene.display().to_string()).map_err(|e| e.to_string())?;
+    let scene = csgpix::scad::read_scene(&a.scene)?;
     scene.require_convex(&a.scene.display().to_string(), "`requirements`")?;
     if !(a.precision > 0.0 && a.precision.is_finite()) {
         return Err(format!(

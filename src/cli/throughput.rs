@@ -9,7 +9,6 @@ use csgpix::output::{Out, Outputs};
 use csgpix::panels::{count_cycles, estimate, panel_work, PanelScene, PanelWork, SceneEstimate};
 use csgpix::plot::{Chart, Series};
 use csgpix::project::Frame;
-use csgpix::scad::parse_csg;
 use csgpix::solid::CsgScene;
 use csgpix::throughput::{
     area_rows, panel_ratio, panel_surfaces_per_frame, slices_per_second, surfaces_per_frame,
@@ -249,8 +248,7 @@ fn print_area(r: &AreaReport) {
 }
 
 fn read_scene(path: &Path) -> Result<CsgScene, String> {
-    let text = csgpix::scad::scene_text(path)?;
-    let scene = parse_csg(&text, &path.display().to_string()).map_err(|e| e.to_string())?;
+    let scene = csgpix::scad::read_scene(path)?;
     scene.require_convex(&path.display().to_string(), "`throughput`")?;
     Ok(scene)
 }

@@ -7,7 +7,6 @@ use std::path::{Path, PathBuf};
 
 use crate::compile::CompileError;
 use crate::project::{project, Projected, View};
-use csgpix_openscad::parse_csg;
 use csgpix_scene::clip_expr::Clip;
 use csgpix_scene::display_list::{field_position, DisplayList};
 use csgpix_scene::solid::CsgScene;
@@ -115,8 +114,7 @@ impl Scene {
     }
 
     fn load_csg(path: &Path, view: View, cfg: &ArrayConfig) -> Result<Scene, LoadError> {
-        let text = csgpix_openscad::scene_text(path)?;
-        let scene = parse_csg(&text, &path.display().to_string())?;
+        let scene = csgpix_openscad::read_scene(path)?;
         scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);
         let Projected { lists, clip } =

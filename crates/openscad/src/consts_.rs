@@ -10,8 +10,10 @@ pub const MAX_VECTOR_NESTING: usize = 64;
 /// Most fragments (points on a circle) a sphere or cylinder may have.
 pub const MAX_FRAGMENTS: usize = 10_000;
 
-/// Most vertices a whole scene may have (a sphere with `$fn = 1414` alone has about that).
-pub const MAX_SCENE_VERTICES: usize = 1_000_000;
+/// Most vertices a whole scene may have: a guard against a file that would exhaust memory
+/// while it is read (20 million vertices hold about 0.5 GB with their faces); designs such as
+/// a `$fn = 1080` pulley, past the million once kept here, are read.
+pub const MAX_SCENE_VERTICES: usize = 20_000_000;
 
 /// Most points a polyhedron may have (its convexity check takes points × faces steps).
 pub const MAX_POLYHEDRON_POINTS: usize = 10_000;

@@ -1,5 +1,8 @@
 //! `.scad` files through `openscad`.
 
+use std::path::Path;
+
+use csgpix_scene::solid::CsgScene;
 use csgpix_scene::Error;
 
 /// The `.csg` text of a scene file: a `.csg` file as it is; a `.scad` file exported to CSG by
@@ -50,4 +53,225 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
             line.trim()
         ))
     })
+}
+
+/// A scene file read whole: a `.csg` file parsed as it is; a `.scad` file exported by
+/// openscad ([`scene_text`]) and parsed, its errors and warnings placed in the `.scad`
+/// ([`in_scad`]). The loader every command and the Python package use.
+pub fn read_scene(path: &Path) -> csgpix_scene::Result<CsgScene> {
+    let text = scene_text(path)?;
+    let name = path.display().to_string();
+    let mut scene = match is_scad(path) {
+        false => crate::parse_csg(&text, &name)?,
+        true => crate::parse_csg(&text, &name).map_err(|e| in_scad(e, &text, path))?,
+    };
+    for w in &mut scene.warnings {
+        if is_scad(path) {
+            *w = in_scad(std::mem::replace(w, Error::msg("")), &text, path);
+        }
+        // On stderr, as OpenSCAD gives its warnings; the run goes on.
+        eprintln!("{w}");
+    }
+    Ok(scene)
+}
+
+fn is_scad(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("scad"))
+}
+
+/// An error located in the CSG that openscad exported from `scad`, placed where the user
+/// wrote it. The export keeps no positions, so the node is found by name: the statement at
+/// the error's line of the export names a node (`minkowski`, `polyhedron`, …); when the
+/// `.scad` file and the files it includes call that node at exactly one place, the error is
+/// put there. Otherwise no line of the `.scad` is claimed: the message says it is in the CSG
+/// openscad exported, at which line and node.
+pub fn in_scad(e: Error, export: &str, scad: &Path) -> Error {
+    let Some(at) = e.location.clone() else {
+        return e;
+    };
+    let file = scad.display().to_string();
+    let line = export.lines().nth(at.line.saturating_sub(1)).unwrap_or("");
+    let Some(node) = statement_node(line) else {
+        return unplaced(e, &file, at.line, None);
+    };
+    let mut sites = vec![];
+    call_sites(scad, &node, &mut sites, 0);
+    match sites.as_slice() {
+        [(path, l, c)] => Error {
+            location: Some(csgpix_scene::Location {
+                file: path.clone(),
+                line: *l,
+                col: *c,
+            }),
+            ..e
+        },
+        _ => unplaced(e, &file, at.line, Some(&node)),
+    }
+}
+
+fn unplaced(e: Error, file: &str, line: usize, node: Option<&str>) -> Error {
+    let what = match node {
+        Some(n) => format!("line {line}, `{n}(…)`"),
+        None => format!("line {line}"),
+    };
+    let message = format!(
+        "{file}: in the CSG openscad exported from it ({what}): {}",
+        e.message
+    );
+    Error {
+        location: None,
+        message,
+        kind: e.kind,
+    }
+}
+
+/// The node a line of openscad's export opens: its first name after the modifiers.
+fn statement_node(line: &str) -> Option<String> {
+    let s = line
+        .trim_start()
+        .trim_start_matches(['%', '#', '*', '!', ' ']);
+    let name: String = s
+        .chars()
+        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+        .collect();
+    (!name.is_empty() && s[name.len()..].trim_start().starts_with('(')).then_some(name)
+}
+
+/// Where `node(` is called in `path` and, through `include <…>` and `use <…>` with paths
+/// relative to it, the files it reads (comments and strings skipped, `module node(` and
+/// `function node(` left out); a file that cannot be read adds a site no one can match, so
+/// the error is not placed.
+fn call_sites(path: &Path, node: &str, out: &mut Vec<(String, usize, usize)>, depth: usize) {
+    let Ok(text) = std::fs::read_to_string(path) else {
+        out.extend([(String::new(), 0, 0), (String::new(), 0, 0)]);
+        return;
+    };
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let (calls, includes) = scan(&text, node);
+    let file = path.display().to_string();
+    out.extend(calls.into_iter().map(|(l, c)| (file.clone(), l, c)));
+    for inc in includes {
+        if depth < 16 {
+            call_sites(&dir.join(inc), node, out, depth + 1);
+        }
+    }
+}
+
+/// The calls of `node` in a `.scad` text (line and column, 1-based, in characters) and the
+/// files it includes or uses.
+fn scan(text: &str, node: &str) -> (Vec<(usize, usize)>, Vec<String>) {
+    let chars: Vec<char> = text.chars().collect();
+    let (mut calls, mut includes) = (vec![], vec![]);
+    let (mut i, mut line, mut col) = (0, 1, 1);
+    let mut prev_word = String::new();
+    let step = |i: &mut usize, line: &mut usize, col: &mut usize| {
+        if chars[*i] == '\n' {
+            *line += 1;
+            *col = 1;
+        } else {
+            *col += 1;
+        }
+        *i += 1;
+    };
+    while i < chars.len() {
+        let c = chars[i];
+        let next = chars.get(i + 1).copied();
+        if c == '/' && next == Some('/') {
+            while i < chars.len() && chars[i] != '\n' {
+                step(&mut i, &mut line, &mut col);
+            }
+        } else if c == '/' && next == Some('*') {
+            step(&mut i, &mut line, &mut col);
+            step(&mut i, &mut line, &mut col);
+            while i < chars.len() && !(chars[i] == '*' && chars.get(i + 1) == Some(&'/')) {
+                step(&mut i, &mut line, &mut col);
+            }
+            for _ in 0..2.min(chars.len() - i) {
+                step(&mut i, &mut line, &mut col);
+            }
+        } else if c == '"' {
+            step(&mut i, &mut line, &mut col);
+            while i < chars.len() && chars[i] != '"' {
+                if chars[i] == '\\' && i + 1 < chars.len() {
+                    step(&mut i, &mut line, &mut col);
+                }
+                step(&mut i, &mut line, &mut col);
+            }
+            if i < chars.len() {
+                step(&mut i, &mut line, &mut col);
+            }
+        } else if c == '<' && matches!(prev_word.as_str(), "include" | "use") {
+            let start = i + 1;
+            while i < chars.len() && chars[i] != '>' && chars[i] != '\n' {
+                step(&mut i, &mut line, &mut col);
+            }
+            includes.push(chars[start..i].iter().collect());
+            prev_word.clear();
+        } else if c.is_ascii_alphabetic() || c == '_' || c == '$' {
+            let (l0, c0, start) = (line, col, i);
+            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
+                step(&mut i, &mut line, &mut col);
+            }
+            let word: String = chars[start..i].iter().collect();
+            let mut j = i;
+            while j < chars.len() && chars[j].is_whitespace() {
+                j += 1;
+            }
+            let called = chars.get(j) == Some(&'(');
+            let defined = matches!(prev_word.as_str(), "module" | "function");
+            if word == node && called && !defined {
+                calls.push((l0, c0));
+            }
+            prev_word = word;
+        } else {
+            if !c.is_whitespace() {
+                prev_word.clear();
+            }
+            step(&mut i, &mut line, &mut col);
+        }
+    }
+    (calls, includes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn calls_are_found_outside_comments_strings_and_definitions() {
+        let text =
+            "// minkowski(\n/* minkowski() */ x = \"minkowski()\";\nmodule minkowski(a) {}\n  \
+                    translate([1, 0, 0]) minkowski () { cube(1); }\ninclude <lib/a.scad>\n";
+        let (calls, inc) = scan(text, "minkowski");
+        assert_eq!(calls, vec![(4, 24)]);
+        assert_eq!(inc, vec!["lib/a.scad".to_string()]);
+        assert_eq!(scan(text, "cube").0, vec![(4, 39)]);
+    }
+
+    #[test]
+    fn an_error_is_placed_at_the_one_call_or_said_to_be_in_the_export() {
+        let dir = tempfile::tempdir().unwrap();
+        let scad = dir.path().join("p.scad");
+        std::fs::write(
+            &scad,
+            "a = 1;\n\n\nmodule m() {\n  surface(\"x.dat\");\n}\nm(); cube(1); cube(2);\n",
+        )
+        .unwrap();
+        let export = "group() {\n\tsurface(file = \"x.dat\");\n\tcube(size = [1, 1, 1]);\n}\n";
+        let e = Error::at("p.scad", 2, 2, "unsupported node `surface`");
+        let placed = in_scad(e, export, &scad);
+        let at = placed.location.clone().expect("placed");
+        assert_eq!((at.line, at.col), (5, 3), "{placed}");
+        assert!(at.file.ends_with("p.scad"));
+        // cube is called twice: no line of the .scad is claimed.
+        let e = Error::at("p.scad", 3, 2, "bad cube");
+        let unplaced = in_scad(e, export, &scad);
+        assert!(unplaced.location.is_none());
+        let text = unplaced.to_string();
+        assert!(
+            text.contains("in the CSG openscad exported from it (line 3, `cube(…)`): bad cube"),
+            "{text}"
+        );
+    }
 }

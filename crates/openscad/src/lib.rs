@@ -105,7 +105,7 @@ pub use consts_::{
     MAX_COORDINATE, MAX_FRAGMENTS, MAX_NESTING, MAX_POLYHEDRON_POINTS, MAX_SCENE_VERTICES,
     MAX_VECTOR_NESTING,
 };
-pub use export::scene_text;
+pub use export::{in_scad, read_scene, scene_text};
 
 use csgpix_scene::solid::CsgScene;
 use csgpix_scene::Error;

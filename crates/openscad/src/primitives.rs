@@ -55,7 +55,6 @@ pub(crate) fn check_budget(vertices: usize, budget: usize, pos: Pos) -> Result<(
     Ok(())
 }
 
-
 /// `cube(size, center)`: size a number or `[x, y, z]`, default 1. Vertex `i` is at
 /// `(i&1 ? x2 : x1, i&2 ? y2 : y1, i&4 ? z2 : z1)` and the faces are those of
 /// `CubeNode::createGeometry`.

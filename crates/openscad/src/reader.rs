@@ -365,7 +365,10 @@ impl<'a> Reader<'a> {
     /// A primitive of zero or negative size: OpenSCAD draws nothing; csgpix says so.
     fn empty_primitive(&mut self, head: &Head, ctx: &Ctx) {
         if !ctx.skip {
-            let msg = format!("`{}` has a zero or negative size: it is empty", head.kind.name());
+            let msg = format!(
+                "`{}` has a zero or negative size: it is empty",
+                head.kind.name()
+            );
             self.warnings.push((head.pos, msg));
         }
     }

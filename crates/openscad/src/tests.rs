@@ -645,10 +645,14 @@ fn empty_primitives_are_empty_with_a_warning() {
 fn children_of_the_other_dimension_are_ignored() {
     let s = parse("group() { cube(1); square(2); }");
     assert_eq!((s.solids.len(), s.root.clone()), (1, CsgNode::Solid(0)));
-    assert!(s.warnings[0].to_string().contains("Ignoring 2D child object for 3D operation"));
+    assert!(s.warnings[0]
+        .to_string()
+        .contains("Ignoring 2D child object for 3D operation"));
     let s = parse("linear_extrude(height = 1) { group(); square(2); cube(5); }");
     assert_eq!(s.solids.len(), 1, "the extruded square only");
-    assert!(s.warnings[0].to_string().contains("Ignoring 3D child object for 2D operation"));
+    assert!(s.warnings[0]
+        .to_string()
+        .contains("Ignoring 3D child object for 2D operation"));
     let s = parse("linear_extrude(height = 1) union() { group(); square(2); }");
     assert_eq!((s.solids.len(), s.warnings.len()), (1, 0));
     // 2D first: the solid is ignored and leaves the scene.

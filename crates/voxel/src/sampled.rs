@@ -23,7 +23,6 @@ use crate::error::{BindingProblem, Error, Result};
 use crate::ranges::toggle_run;
 use crate::slice::Mask;
 use csgpix_draw::project::colour_code;
-use csgpix_openscad::parse_csg;
 use csgpix_scene::dataset::Dataset;
 use csgpix_scene::grid::Grid;
 use csgpix_scene::nrrd::read_nrrd;
@@ -190,8 +189,7 @@ impl Loaded {
 /// Read a `.csg` scene and every file it imports (relative to the scene's directory).
 pub fn load_scene(path: &Path) -> Result<Loaded> {
     let name = path.display().to_string();
-    let text = csgpix_openscad::scene_text(path)?;
-    let scene = parse_csg(&text, &name)?;
+    let scene = csgpix_openscad::read_scene(path)?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let sampled = load_imports(&scene, &name, &dir)?;
     Ok(Loaded { scene, sampled })

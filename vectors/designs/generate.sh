@@ -1,0 +1,74 @@
+#!/bin/sh
+# Regenerate the reference outputs of the real-world designs (see README.md): for each design,
+# OpenSCAD's CSG export (meshes/NAME.csg, gzipped when over 200 kB) and OpenSCAD's own CGAL
+# mesh (meshes/NAME.off.gz). The wall time of the mesh step goes to meshes/times.tsv
+# (name, seconds, status: ok, timeout or fail:RC). Needs `openscad` (Debian's 2021.01 made
+# the checked-in files) and the Liberation fonts (fonts-liberation2) for text().
+#
+#   sh generate.sh              # every design
+#   sh generate.sh NAME...      # only these (their rows of times.tsv are replaced)
+set -eu
+cd "$(dirname "$0")"
+mkdir -p meshes
+limit=900
+tab=$(printf '\t')
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+now() {
+    t=$(date +%s.%N)
+    case "$t" in *N) date +%s ;; *) printf '%s\n' "$t" ;; esac
+}
+
+if [ "$#" -gt 0 ]; then
+    names="$*"
+else
+    names=$( { ls -- *.scad 2>/dev/null | sed 's/\.scad$//'; \
+               ls -d -- */main.scad 2>/dev/null | sed 's#/main\.scad$##'; } | sort)
+fi
+
+[ -f meshes/times.tsv ] || printf 'name\tseconds\tstatus\n' > meshes/times.tsv
+
+for name in $names; do
+    if [ -f "$name.scad" ]; then
+        src=$name.scad
+    elif [ -f "$name/main.scad" ]; then
+        src=$name/main.scad
+    else
+        echo "generate.sh: no design $name" >&2
+        exit 1
+    fi
+    rm -f "meshes/$name.csg" "meshes/$name.csg.gz" "meshes/$name.off" "meshes/$name.off.gz"
+
+    # CSG export (the tree as OpenSCAD evaluates it)
+    if ! timeout "$limit" openscad -q -o "meshes/$name.csg" "$src" </dev/null 2>"$tmp/err"; then
+        echo "generate.sh: $name: CSG export failed" >&2
+        cat "$tmp/err" >&2
+    fi
+    if [ -f "meshes/$name.csg" ] && [ "$(wc -c < "meshes/$name.csg")" -gt 204800 ]; then
+        gzip -9n "meshes/$name.csg"
+    fi
+
+    # CGAL mesh, timed
+    start=$(now)
+    status=ok
+    timeout "$limit" openscad -q -o "meshes/$name.off" "$src" </dev/null 2>"$tmp/err" || {
+        rc=$?
+        if [ "$rc" -eq 124 ]; then status=timeout; else status="fail:$rc"; fi
+    }
+    end=$(now)
+    secs=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }')
+    if [ "$status" = ok ] && [ ! -s "meshes/$name.off" ]; then status=fail:empty; fi
+    if [ "$status" != ok ]; then
+        echo "generate.sh: $name: mesh $status after ${secs}s" >&2
+        cat "$tmp/err" >&2
+        rm -f "meshes/$name.off"
+    else
+        gzip -9n "meshes/$name.off"
+    fi
+
+    grep -v "^$name$tab" meshes/times.tsv > "$tmp/times" || true
+    printf '%s\t%s\t%s\n' "$name" "$secs" "$status" >> "$tmp/times"
+    { head -n 1 "$tmp/times"; tail -n +2 "$tmp/times" | sort; } > meshes/times.tsv
+    echo "$name	$secs	$status"
+done
