@@ -14,7 +14,7 @@ use csgpix::evaluate::{StackEval, TreeEval};
 use csgpix::octree::{self, StoreKind};
 use csgpix::output::{Out, Outputs};
 use csgpix::palette::rgb;
-use csgpix::sampled::{load_scene, parse_binding, scene_from_expr, Binding, Loaded};
+use csgpix::sampled::{load_scene_with, parse_binding, scene_from_expr, Binding, Loaded};
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
 use csgpix::voxel::{
@@ -126,9 +126,33 @@ pub struct Args {
     /// (seed 000 Ch. 4; docs/octree.md), and report its nodes, bytes and build time.
     #[arg(long, value_enum)]
     store: Option<StoreArg>,
+    /// What becomes of a node csgpix does not draw (`surface()`, a 2D import, a node it
+    /// does not know): refused (`none`), or meshed by openscad, that subtree alone, and
+    /// drawn as a closed mesh primitive, reported on stderr and in --json's `warnings`.
+    #[arg(long, value_enum, default_value_t)]
+    fallback: FallbackArg,
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
+}
+
+/// `--fallback`.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum FallbackArg {
+    /// Refuse the node, at its line and column.
+    #[default]
+    None,
+    /// Ask openscad to mesh that subtree.
+    Openscad,
+}
+
+impl From<FallbackArg> for csgpix::scad::Fallback {
+    fn from(f: FallbackArg) -> Self {
+        match f {
+            FallbackArg::None => csgpix::scad::Fallback::Refuse,
+            FallbackArg::Openscad => csgpix::scad::Fallback::Openscad,
+        }
+    }
 }
 
 /// The grid and sampling options `voxelize` and `sculpt` share (beside their own `--res`).
@@ -378,6 +402,9 @@ struct Report {
     /// Hardware time at the thesis's 10 MHz clock.
     hardware_seconds: f64,
     wall_seconds: f64,
+    /// What the scene reader warned of (also on stderr): empty primitives, ignored 2D
+    /// children, subtrees meshed by `--fallback openscad`.
+    warnings: Vec<String>,
 }
 
 /// `sum:KS,KD` or `max`.
@@ -410,7 +437,13 @@ fn input_name(a: &Args) -> String {
 
 fn load(a: &Args) -> Result<Loaded, String> {
     match (&a.scene, &a.expr) {
-        (Some(p), _) => load_scene(p).map_err(flag_message),
+        (Some(p), _) => {
+            let options = csgpix::scad::ReadOptions {
+                fallback: a.fallback.into(),
+                dir: None,
+            };
+            load_scene_with(p, &options).map_err(flag_message)
+        }
         (None, Some(e)) => scene_from_expr(e, &a.prim).map_err(flag_message),
         (None, None) => Err("give a scene file or --expr".into()),
     }
@@ -799,6 +832,7 @@ fn report(
         mesh,
         hardware_seconds: work.cycles as f64 * 1e-7,
         wall_seconds: wall,
+        warnings: scene.warnings.iter().map(|w| w.to_string()).collect(),
     };
     if a.json {
         println!(

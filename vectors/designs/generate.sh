@@ -9,6 +9,7 @@
 #   sh generate.sh NAME...      # only these (their rows of times.tsv are replaced)
 set -eu
 cd "$(dirname "$0")"
+here=$(pwd)
 mkdir -p meshes
 limit=900
 tab=$(printf '\t')
@@ -40,8 +41,9 @@ for name in $names; do
     fi
     rm -f "meshes/$name.csg" "meshes/$name.csg.gz" "meshes/$name.off" "meshes/$name.off.gz"
 
-    # CSG export (the tree as OpenSCAD evaluates it)
-    if ! timeout "$limit" openscad -q -o "meshes/$name.csg" "$src" </dev/null 2>"$tmp/err"; then
+    # CSG export (the tree as OpenSCAD evaluates it). Absolute output paths: OpenSCAD 2021.01
+    # writes a relative CSG output path relative to the design's own directory.
+    if ! timeout "$limit" openscad -q -o "$here/meshes/$name.csg" "$src" </dev/null 2>"$tmp/err"; then
         echo "generate.sh: $name: CSG export failed" >&2
         cat "$tmp/err" >&2
     fi
@@ -52,7 +54,7 @@ for name in $names; do
     # CGAL mesh, timed
     start=$(now)
     status=ok
-    timeout "$limit" openscad -q -o "meshes/$name.off" "$src" </dev/null 2>"$tmp/err" || {
+    timeout "$limit" openscad -q -o "$here/meshes/$name.off" "$src" </dev/null 2>"$tmp/err" || {
         rc=$?
         if [ "$rc" -eq 124 ]; then status=timeout; else status="fail:$rc"; fi
     }

@@ -59,11 +59,24 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
 /// openscad ([`scene_text`]) and parsed, its errors and warnings placed in the `.scad`
 /// ([`in_scad`]). The loader every command and the Python package use.
 pub fn read_scene(path: &Path) -> csgpix_scene::Result<CsgScene> {
+    read_scene_with(path, &crate::ReadOptions::default())
+}
+
+/// [`read_scene`] with [`crate::ReadOptions`].
+pub fn read_scene_with(
+    path: &Path,
+    options: &crate::ReadOptions,
+) -> csgpix_scene::Result<CsgScene> {
     let text = scene_text(path)?;
     let name = path.display().to_string();
+    let mut options = options.clone();
+    if options.dir.is_none() {
+        options.dir = path.parent().map(Path::to_path_buf);
+    }
+    let parsed = crate::parse_csg_with(&text, &name, &options);
     let mut scene = match is_scad(path) {
-        false => crate::parse_csg(&text, &name)?,
-        true => crate::parse_csg(&text, &name).map_err(|e| in_scad(e, &text, path))?,
+        false => parsed?,
+        true => parsed.map_err(|e| in_scad(e, &text, path))?,
     };
     for w in &mut scene.warnings {
         if is_scad(path) {
@@ -210,6 +223,7 @@ fn scan(text: &str, node: &str) -> (Vec<(usize, usize)>, Vec<String>) {
             prev_word.clear();
         } else if c.is_ascii_alphabetic() || c == '_' || c == '$' {
             let (l0, c0, start) = (line, col, i);
+            step(&mut i, &mut line, &mut col);
             while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
                 step(&mut i, &mut line, &mut col);
             }
@@ -244,6 +258,7 @@ mod tests {
             "// minkowski(\n/* minkowski() */ x = \"minkowski()\";\nmodule minkowski(a) {}\n  \
                     translate([1, 0, 0]) minkowski () { cube(1); }\ninclude <lib/a.scad>\n";
         let (calls, inc) = scan(text, "minkowski");
+        assert_eq!(scan("sphere($fn = 8, r = 1);", "sphere").0, vec![(1, 1)]);
         assert_eq!(calls, vec![(4, 24)]);
         assert_eq!(inc, vec!["lib/a.scad".to_string()]);
         assert_eq!(scan(text, "cube").0, vec![(4, 39)]);

@@ -58,6 +58,8 @@ impl Tok {
 pub(crate) struct Token {
     pub(crate) tok: Tok,
     pub(crate) pos: Pos,
+    /// Byte offsets of the token in the text: its first byte and the one after its last.
+    pub(crate) span: (usize, usize),
 }
 
 /// Splits the text into tokens, skipping white space and comments.
@@ -105,6 +107,7 @@ impl<'a> Lexer<'a> {
     pub(crate) fn next_token(&mut self) -> Result<Token, Fail> {
         self.skip_trivia()?;
         let pos = self.pos;
+        let start = self.at;
         let tok = match self.byte(0) {
             None => Tok::Eof,
             Some(b) if b.is_ascii_alphabetic() || b == b'_' || b == b'$' => self.ident(),
@@ -120,7 +123,11 @@ impl<'a> Lexer<'a> {
                 return fail(pos, format!("unexpected character {:?}", c.unwrap_or('?')));
             }
         };
-        Ok(Token { tok, pos })
+        Ok(Token {
+            tok,
+            pos,
+            span: (start, self.at),
+        })
     }
 
     pub(crate) fn skip_trivia(&mut self) -> Result<(), Fail> {

@@ -88,6 +88,7 @@
 mod consts_;
 mod export;
 pub mod extrude;
+mod fallback;
 mod flat;
 pub mod hull;
 mod import;
@@ -105,7 +106,7 @@ pub use consts_::{
     MAX_COORDINATE, MAX_FRAGMENTS, MAX_NESTING, MAX_POLYHEDRON_POINTS, MAX_SCENE_VERTICES,
     MAX_VECTOR_NESTING,
 };
-pub use export::{in_scad, read_scene, scene_text};
+pub use export::{in_scad, read_scene, read_scene_with, scene_text};
 
 use csgpix_scene::solid::CsgScene;
 use csgpix_scene::Error;
@@ -134,7 +135,38 @@ use reader::Reader;
 /// Reads a `.csg` file's text into a scene; `file` is only used in error messages.
 ///
 pub fn parse_csg(text: &str, file: &str) -> csgpix_scene::Result<CsgScene> {
-    let mut scene = Reader::new(text)
+    parse_csg_with(text, file, &ReadOptions::default())
+}
+
+/// How a scene is read beyond the language itself.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ReadOptions {
+    /// What becomes of a node csgpix does not draw.
+    pub fallback: Fallback,
+    /// Where the scene's relative file names start (its file's directory; [`read_scene_with`]
+    /// sets it), for the subtrees openscad meshes.
+    pub dir: Option<std::path::PathBuf>,
+}
+
+/// What becomes of a node csgpix does not draw (`surface()`, a 2D import, a node it does
+/// not know).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Fallback {
+    /// Refused, with its line and column (the default: csgpix draws what it reads itself).
+    #[default]
+    Refuse,
+    /// Meshed by openscad, that subtree alone, and drawn as a closed mesh primitive; each
+    /// such subtree is reported as a warning (stderr, `--json`).
+    Openscad,
+}
+
+/// [`parse_csg`] with [`ReadOptions`].
+pub fn parse_csg_with(
+    text: &str,
+    file: &str,
+    options: &ReadOptions,
+) -> csgpix_scene::Result<CsgScene> {
+    let mut scene = Reader::new(text, options)
         .run()
         .map_err(|fail| Error::at(file, fail.pos.line, fail.pos.col, fail.msg))?;
     for w in &mut scene.warnings {

@@ -9,6 +9,7 @@ use crate::hull::hull3;
 use crate::{
     consts_::*, flat::*, import::*, lex::*, node::*, primitives::*, transform::*, tree::*, value::*,
 };
+use crate::{Fallback, ReadOptions};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
 use csgpix_scene::Error;
 
@@ -93,6 +94,8 @@ pub(crate) enum Next {
 }
 
 pub(crate) struct Reader<'a> {
+    pub(crate) text: &'a str,
+    pub(crate) options: &'a ReadOptions,
     pub(crate) parser: Parser<'a>,
     pub(crate) solids: Vec<ConvexSolid>,
     /// Leaves `Solid(IMPORTED + j)` until the end, when they become `Solid(solids + j)`.
@@ -110,8 +113,10 @@ pub(crate) struct Reader<'a> {
 }
 
 impl<'a> Reader<'a> {
-    pub(crate) fn new(text: &'a str) -> Self {
+    pub(crate) fn new(text: &'a str, options: &'a ReadOptions) -> Self {
         Reader {
+            text,
+            options,
             parser: Parser::new(text),
             solids: Vec::new(),
             imports: Vec::new(),
@@ -205,6 +210,13 @@ impl<'a> Reader<'a> {
                 pos,
                 format!("statements nested deeper than {MAX_NESTING} levels"),
             );
+        }
+        if self.options.fallback == Fallback::Openscad {
+            if let Some(name) = self.unknown_node()? {
+                let parent = self.open.last().map(|f| f.ctx.clone()).unwrap_or_default();
+                let node = self.fallback(&name, pos, &parent)?;
+                return self.deliver(node);
+            }
         }
         let head = self.head()?;
         let parent = self.open.last().map(|f| f.ctx.clone()).unwrap_or_default();
@@ -345,6 +357,77 @@ impl<'a> Reader<'a> {
                 Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), flat_at)))
             }
             _ => Ok(Some(Item::Solid(combine(kind.op(), frame.children)))),
+        }
+    }
+
+    /// The name of the statement ahead when csgpix does not read that node.
+    fn unknown_node(&mut self) -> Result<Option<String>, Fail> {
+        let mut n = 0;
+        while matches!(
+            self.parser.peek_nth(n)?.tok,
+            Tok::Sym(b'%' | b'*' | b'#' | b'!')
+        ) {
+            n += 1;
+        }
+        Ok(match &self.parser.peek_nth(n)?.tok {
+            Tok::Ident(name) if NodeKind::from_name(name).is_none() => Some(name.clone()),
+            _ => None,
+        })
+    }
+
+    /// `--fallback openscad`: the whole statement (its children included) meshed by openscad
+    /// and drawn as a closed mesh primitive under the transform and colour above it.
+    fn fallback(&mut self, name: &str, pos: Pos, ctx: &Ctx) -> Result<Option<Item>, Fail> {
+        let (start, end, skip) = self.statement_span()?;
+        if skip || ctx.skip {
+            return Ok(None);
+        }
+        let source = &self.text[start..end];
+        let tris =
+            crate::fallback::mesh(source, self.options.dir.as_deref()).map_err(|msg| Fail {
+                pos,
+                msg: format!("`{name}` (--fallback openscad): {msg}"),
+            })?;
+        let count = tris.len();
+        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        check_budget(count * 3, budget, pos)?;
+        self.vertices += count * 3;
+        let to = Placement {
+            matrix: ctx.matrix,
+            colour: ctx.colour,
+            pos,
+            name: "fallback",
+        };
+        let node = self.push_mesh(tris, &to)?;
+        let msg = format!("`{name}` meshed by openscad (--fallback openscad): {count} triangles");
+        self.warnings.push((pos, msg));
+        Ok(Some(Item::Solid(node)))
+    }
+
+    /// Consumes one statement whole: its byte range, and whether a `%` or `*` drops it.
+    fn statement_span(&mut self) -> Result<(usize, usize, bool), Fail> {
+        let first = self.parser.next()?;
+        let (start, mut end) = first.span;
+        let skip = matches!(first.tok, Tok::Sym(b'%' | b'*'));
+        let mut depth = 0usize;
+        let mut tok = first.tok;
+        loop {
+            match tok {
+                Tok::Sym(b'(' | b'[' | b'{') => depth += 1,
+                Tok::Sym(b')' | b']') => depth = depth.saturating_sub(1),
+                Tok::Sym(b'}') => {
+                    depth = depth.saturating_sub(1);
+                    if depth == 0 {
+                        return Ok((start, end, skip));
+                    }
+                }
+                Tok::Sym(b';') if depth == 0 => return Ok((start, end, skip)),
+                Tok::Eof => return fail(self.parser.peek()?.pos, "unexpected end of file"),
+                _ => {}
+            }
+            let t = self.parser.next()?;
+            end = t.span.1;
+            tok = t.tok;
         }
     }
 

@@ -188,8 +188,13 @@ impl Loaded {
 
 /// Read a `.csg` scene and every file it imports (relative to the scene's directory).
 pub fn load_scene(path: &Path) -> Result<Loaded> {
+    load_scene_with(path, &csgpix_openscad::ReadOptions::default())
+}
+
+/// [`load_scene`] with the reader's options (`--fallback openscad`).
+pub fn load_scene_with(path: &Path, options: &csgpix_openscad::ReadOptions) -> Result<Loaded> {
     let name = path.display().to_string();
-    let scene = csgpix_openscad::read_scene(path)?;
+    let scene = csgpix_openscad::read_scene_with(path, options)?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let sampled = load_imports(&scene, &name, &dir)?;
     Ok(Loaded { scene, sampled })

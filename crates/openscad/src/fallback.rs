@@ -1,0 +1,57 @@
+//! `--fallback openscad`: a subtree csgpix does not draw (`surface()`, a 2D import, a node it
+//! does not know) meshed by openscad itself and drawn as a closed mesh primitive.
+
+use std::path::Path;
+
+use glam::DVec3;
+
+use csgpix_scene::trimesh::TriMesh;
+
+/// OpenSCAD's mesh of one statement of `.csg` text (its children included), in the
+/// statement's own coordinates: `openscad -o sub.stl .csgpix-fallback.XXXX.csg`, the
+/// statement written into `dir` (the scene's directory) so its relative file names are found.
+/// Err is one line: openscad missing, its own error, or a 2D result (which has no mesh).
+pub(crate) fn mesh(statement: &str, dir: Option<&Path>) -> Result<Vec<[DVec3; 3]>, String> {
+    // openscad resolves a file name in a .csg relative to that file: the statement is
+    // written beside the scene (a hidden file, removed after) where it can be.
+    let beside = dir
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let hidden = tempfile::Builder::new()
+        .prefix(".csgpix-fallback.")
+        .suffix(".csg")
+        .tempfile_in(beside)
+        .or_else(|_| tempfile::Builder::new().suffix(".csg").tempfile())
+        .map_err(|e| format!("a temporary file: {e}"))?;
+    let tmp = tempfile::tempdir().map_err(|e| format!("a temporary directory: {e}"))?;
+    let (csg, stl) = (hidden.path().to_path_buf(), tmp.path().join("sub.stl"));
+    std::fs::write(&csg, statement).map_err(|e| format!("writing {}: {e}", csg.display()))?;
+    let run = std::process::Command::new("openscad")
+        .arg("-o")
+        .arg(&stl)
+        .arg(&csg)
+        .stdin(std::process::Stdio::null())
+        .output();
+    let run = match run {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            return Err("needs openscad on PATH (Debian: apt-get install openscad)".into())
+        }
+        Err(e) => return Err(format!("running openscad: {e}")),
+        Ok(run) => run,
+    };
+    if !(run.status.success() && stl.is_file()) {
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        let why = stderr
+            .lines()
+            .find(|l| l.contains("ERROR") || l.contains("not a 3D object"))
+            .or_else(|| stderr.lines().rfind(|l| !l.trim().is_empty()))
+            .unwrap_or("no output");
+        return Err(format!("openscad could not mesh it: {}", why.trim()));
+    }
+    let m = TriMesh::read(&stl).map_err(|e| e.message)?;
+    m.check_closed("openscad's mesh").map_err(|e| e.message)?;
+    Ok(m.triangles
+        .iter()
+        .map(|t| t.map(|i| m.vertices[i as usize]))
+        .collect())
+}

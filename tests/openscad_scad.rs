@@ -1,0 +1,176 @@
+//! `.scad` files as OpenSCAD users write them, through the command line: errors placed at the
+//! line and column of the `.scad` (or said to be in openscad's export), OpenSCAD's warnings
+//! for empty primitives and ignored children, and `--fallback openscad` for what csgpix does
+//! not draw, checked against OpenSCAD's own mesh of the same subtree.
+//!
+//! Needs `openscad` on PATH (skipped without it unless `CSGPIX_OPENSCAD=require`).
+
+mod common;
+
+use std::path::Path;
+
+use common::csgpix;
+
+fn have_openscad() -> bool {
+    let found = std::process::Command::new("openscad")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        assert_ne!(
+            std::env::var("CSGPIX_OPENSCAD").as_deref(),
+            Ok("require"),
+            "CSGPIX_OPENSCAD=require but openscad is not on PATH"
+        );
+        eprintln!("openscad is not on PATH: skipped");
+    }
+    found
+}
+
+fn run(dir: &Path, scad: &str, extra: &[&str]) -> (Option<i32>, String, String) {
+    let file = dir.join("p.scad");
+    std::fs::write(&file, scad).unwrap();
+    let out = dir.join("p.nrrd");
+    let mut args = vec![
+        "voxelize",
+        file.to_str().unwrap(),
+        "--res",
+        "16",
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    args.extend(extra);
+    let o = csgpix(&args);
+    let stderr = String::from_utf8_lossy(&o.stderr).into_owned();
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    (o.status.code(), stdout, stderr)
+}
+
+fn occupancy(path: &Path) -> Vec<bool> {
+    let (_, v) = csgpix::nrrd::read(&std::fs::read(path).unwrap()).unwrap();
+    v.iter().map(|&c| c != 0).collect()
+}
+
+#[test]
+fn errors_are_placed_in_the_scad_file() {
+    if !have_openscad() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    // surface() is called at one place (line 5, column 3): the error is put there.
+    let scad = "// a part\nh = 2;\n\nmodule bump() {\n  surface(file = \"bump.dat\");\n}\n\
+                translate([1, 0, 0]) cube(h);\nbump();\n";
+    std::fs::write(dir.path().join("bump.dat"), "1 2\n3 4\n").unwrap();
+    let (code, _, e) = run(dir.path(), scad, &[]);
+    assert_eq!(code, Some(2), "{e}");
+    assert_eq!(e.trim().lines().count(), 1, "{e}");
+    assert!(e.contains("p.scad:5:3: unsupported node `surface`"), "{e}");
+    assert!(!dir.path().join("p.nrrd").exists());
+    // A module called twice still has one call site of `surface`: the error is put there.
+    let twice = format!("{scad}translate([5, 0, 0]) bump();\n");
+    let (code, _, e) = run(dir.path(), &twice, &[]);
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("p.scad:5:3: unsupported node `surface`"), "{e}");
+    // Written at two places: no line of the .scad is claimed.
+    let twice = format!("{scad}surface(file = \"bump.dat\");\n");
+    let (code, _, e) = run(dir.path(), &twice, &[]);
+    assert_eq!(code, Some(2), "{e}");
+    assert!(
+        e.contains("p.scad: in the CSG openscad exported from it (line 5, `surface(…)`)"),
+        "{e}"
+    );
+}
+
+#[test]
+fn empty_primitives_and_other_dimensions_warn_and_go_on() {
+    if !have_openscad() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let scad = "cube(4);\ncylinder(r1 = 0, r2 = 0, h = 3);\ngroup();\nsquare(9);\n";
+    let (code, out, e) = run(dir.path(), scad, &["--json"]);
+    assert_eq!(code, Some(0), "{e}");
+    assert!(
+        e.contains("p.scad:2:1: warning: `cylinder` has a zero or negative size"),
+        "{e}"
+    );
+    assert!(
+        e.contains("Ignoring 2D child object for 3D operation"),
+        "{e}"
+    );
+    let json: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(json["warnings"].as_array().map(Vec::len), Some(2), "{out}");
+    assert_eq!(json["solids"], 1);
+    // The cube alone, as OpenSCAD draws it.
+    let only = occupancy(&dir.path().join("p.nrrd"));
+    assert!(only.iter().all(|&f| f), "the cube fills its own bounds");
+}
+
+/// `surface()` meshed by openscad gives the voxels of OpenSCAD's own mesh of the design.
+#[test]
+fn fallback_meshes_what_csgpix_does_not_draw() {
+    if !have_openscad() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let heights: String = (0..6)
+        .map(|y| {
+            let row: Vec<String> = (0..6).map(|x| format!("{}", 1 + (x * y) % 4)).collect();
+            row.join(" ") + "\n"
+        })
+        .collect();
+    std::fs::write(dir.path().join("bump.dat"), heights).unwrap();
+    let scad =
+        "difference() {\n  translate([0, 0, -1]) surface(file = \"bump.dat\", center = true);\n  \
+                cylinder(r = 1.2, h = 10, center = true, $fn = 24);\n}\n";
+    let (code, _, e) = run(dir.path(), scad, &[]);
+    assert_eq!(code, Some(2), "refused by default: {e}");
+    let bounds = ["--bounds", "-3,-3,-2,3,3,4"];
+    let mut args = vec!["--fallback", "openscad"];
+    args.extend(bounds);
+    let (code, _, e) = run(dir.path(), scad, &args);
+    assert_eq!(code, Some(0), "{e}");
+    assert!(
+        e.contains("p.scad:2:25: warning: `surface` meshed by openscad"),
+        "{e}"
+    );
+    let ours = occupancy(&dir.path().join("p.nrrd"));
+    // OpenSCAD's mesh of the whole design, voxelized on the same grid.
+    let stl = dir.path().join("whole.stl");
+    let ok = std::process::Command::new("openscad")
+        .arg("-o")
+        .arg(&stl)
+        .arg(dir.path().join("p.scad"))
+        .output()
+        .unwrap()
+        .status
+        .success();
+    assert!(ok);
+    let csg = dir.path().join("whole.csg");
+    std::fs::write(&csg, "import(\"whole.stl\");\n").unwrap();
+    let theirs_out = dir.path().join("whole.nrrd");
+    let mut a = vec![
+        "voxelize",
+        csg.to_str().unwrap(),
+        "--res",
+        "16",
+        "-o",
+        theirs_out.to_str().unwrap(),
+    ];
+    a.extend(bounds);
+    let o = csgpix(&a);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let theirs = occupancy(&theirs_out);
+    let both = ours.iter().zip(&theirs).filter(|(a, b)| **a && **b).count();
+    let either = ours.iter().zip(&theirs).filter(|(a, b)| **a || **b).count();
+    let iou = both as f64 / either.max(1) as f64;
+    assert!(iou >= 0.99, "IoU {iou}");
+    assert!(both > 100, "a real solid: {both} voxels");
+    // Nothing left beside the scene.
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().starts_with(".csgpix"))
+        .collect();
+    assert!(left.is_empty());
+}
