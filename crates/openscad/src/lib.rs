@@ -89,6 +89,7 @@ mod consts_;
 mod export;
 pub mod extrude;
 mod flat;
+mod geom;
 pub mod hull;
 mod import;
 mod lex;
