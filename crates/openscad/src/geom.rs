@@ -52,7 +52,7 @@ use glam::{DVec2, DVec3};
 
 use boolmesh::prelude::{compute_boolean, Manifold, OpType};
 
-use crate::extrude::Poly2;
+use crate::extrude::{flatten, Poly2, Region};
 use crate::hull::{hull2, hull3};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, Import, IMPORTED};
 
@@ -167,7 +167,7 @@ pub(crate) fn leaf_mesh(
         .ok_or_else(|| format!("internal: no import {}", i - IMPORTED))?;
     let Some(mesh) = &import.mesh else {
         return Err(format!(
-            "the geometry of `import(\"{}\")` is not known while the scene is read (a dataset or mesh file)",
+            "`import(\"{}\")` has no geometry while the scene is read (a dataset or mesh file)",
             import.file
         ));
     };
@@ -233,14 +233,62 @@ pub(crate) enum Piece {
     Mesh(Mesh),
 }
 
-impl Piece {
-    /// Vertices the piece adds to a scene.
-    pub(crate) fn vertices(&self) -> usize {
-        match self {
-            Piece::Convex(v) => v.len(),
-            Piece::Mesh(m) => m.len() * 3,
+/// An operand of `minkowski()` as a union of pieces: unions distributed, a convex solid as
+/// itself, a closed mesh primitive as its triangles, a difference or intersection as its
+/// [`mesh_of`].
+pub(crate) fn pieces(
+    node: &CsgNode,
+    solids: &[ConvexSolid],
+    imports: &[Import],
+) -> Result<Vec<Piece>, String> {
+    let mut out = vec![];
+    let mut stack = vec![node];
+    while let Some(n) = stack.pop() {
+        match n {
+            CsgNode::Empty => {}
+            CsgNode::Union(c) => stack.extend(c.iter()),
+            CsgNode::Solid(i) if *i < IMPORTED => {
+                let s = solids
+                    .get(*i)
+                    .ok_or_else(|| format!("internal: no solid {i}"))?;
+                out.push(Piece::Convex(
+                    s.vertices.iter().map(|&v| DVec3::from(v)).collect(),
+                ));
+            }
+            CsgNode::Solid(i) => out.push(Piece::Mesh(leaf_mesh(*i, solids, imports)?)),
+            _ => {
+                let m = mesh_of(n, solids, imports)?;
+                if !m.is_empty() {
+                    out.push(Piece::Mesh(m));
+                }
+            }
         }
     }
+    Ok(out)
+}
+
+/// A 2D operand of `minkowski()` as a union of pieces: unions distributed, a convex outline
+/// as itself, any other shape, difference or intersection as its computed outline.
+pub(crate) fn pieces2(r: &Region) -> Vec<Piece2> {
+    let mut out = vec![];
+    let mut stack = vec![r];
+    while let Some(r) = stack.pop() {
+        match r {
+            Region::Union(c) => stack.extend(c.iter()),
+            Region::Poly(p) => match p.convex_outline() {
+                Some(o) => out.push(Piece2::Convex(o)),
+                None if !p.paths.is_empty() => out.push(Piece2::Shape(p.clone())),
+                None => {}
+            },
+            _ => {
+                let p = flatten(r);
+                if !p.paths.is_empty() {
+                    out.push(Piece2::Shape(p));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// The Minkowski sum of two unions of pieces, as a union of pieces (module documentation).

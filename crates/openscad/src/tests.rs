@@ -434,10 +434,10 @@ fn syntax_accepted() {
 #[test]
 fn errors_name_line_and_column() {
     assert_err(
-        "group() {\n  minkowski() { cube(1); sphere(1); }\n}",
+        "group() {\n  surface(file = \"h.dat\");\n}",
         2,
         3,
-        "unsupported node `minkowski` (csgpix reads group",
+        "unsupported node `surface` (csgpix reads group",
     );
     assert_err(
         "projection() cube(1);",
