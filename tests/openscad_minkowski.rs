@@ -95,7 +95,7 @@ fn minkowski_and_hull_agree_with_openscad() {
         );
         n += 1;
     }
-    assert_eq!(n, 8);
+    assert_eq!(n, 10);
 }
 
 /// A box's corners, `lo` and `hi` given.

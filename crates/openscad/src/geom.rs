@@ -43,7 +43,10 @@
 //!   X ⊕ Y = (X + y0) ∪ ⋃_{vertices v of ∂X} (Y + v) ∪ ⋃_{T of ∂X, T' of ∂Y} hull(T ⊕ T'),
 //!
 //!   choosing for t a vertex of T. That is |∂X|·|∂Y| convex solids and one mesh per vertex
-//!   of X: only small operands fit the budget.
+//!   of X: only small operands fit the budget. The flat hulls of parallel triangles are
+//!   dropped, which changes nothing: X ⊕ Y is the union of the regular closed sets X + y, so
+//!   each of its points is a limit of interior points, almost all of which (all but a
+//!   finite union of planar polygons) lie in the remaining pieces, whose union is closed.
 //!
 //! In 2D the same formulas hold with the boundary edges of a polygon in place of triangles
 //! (the path argument is unchanged); the pieces are joined by a 2D union.
@@ -329,7 +332,10 @@ pub(crate) fn minkowski3(a: &[Piece], b: &[Piece], budget: usize) -> Result<Vec<
                     }
                     for t in x {
                         for u in y {
-                            out.push(convex_sum(t, u)?);
+                            // Parallel triangles sum to a flat hull: dropped (module docs).
+                            if let Ok(p) = convex_sum(t, u) {
+                                out.push(p);
+                            }
                         }
                     }
                 }
