@@ -584,6 +584,8 @@ impl<'a> Reader<'a> {
             pos,
             msg: format!("minkowski(): {msg}"),
         };
+        // OpenSCAD leaves empty children out of the sum.
+        frame.children.retain(|c| !matches!(c, CsgNode::Empty));
         if frame.children.len() < 2 {
             return Ok(Item::Solid(frame.children.pop().unwrap_or(CsgNode::Empty)));
         }
@@ -591,6 +593,9 @@ impl<'a> Reader<'a> {
         let mut acc: Option<Vec<Piece>> = None;
         for c in &frame.children {
             let p = pieces(c, &self.solids, &self.imports).map_err(at)?;
+            if p.is_empty() {
+                continue;
+            }
             acc = Some(match acc {
                 None => p,
                 Some(a) => minkowski3(&a, &p, budget).map_err(at)?,
@@ -641,6 +646,9 @@ impl<'a> Reader<'a> {
         let mut acc: Option<Vec<Piece2>> = None;
         for r in &frame.flats {
             let p = pieces2(r);
+            if p.is_empty() {
+                continue;
+            }
             acc = Some(match acc {
                 None => p,
                 Some(a) => minkowski2(&a, &p, budget).map_err(|msg| Fail {

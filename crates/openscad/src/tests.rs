@@ -600,3 +600,27 @@ proptest! {
         check_outcome(&String::from_utf8_lossy(&bytes));
     }
 }
+
+#[test]
+fn minkowski_leaves_out_empty_children_as_openscad() {
+    let with = "minkowski() { cube(size = 1); group(); sphere(r = 0.5, $fn = 8); }";
+    let without = "minkowski() { cube(size = 1); sphere(r = 0.5, $fn = 8); }";
+    let (a, b) = (
+        parse_csg(with, "t").unwrap(),
+        parse_csg(without, "t").unwrap(),
+    );
+    assert_eq!(a, b);
+    assert_eq!(a.solids.len(), 1);
+    // One child is itself; the hull of a difference is one convex solid.
+    let one = parse_csg(
+        "minkowski() { difference() { cube(size = 2); cube(size = 1); } }",
+        "t",
+    );
+    assert!(matches!(one.unwrap().root, CsgNode::Difference(_)));
+    let h = parse_csg(
+        "hull() { difference() { cube(size = 2); cube(size = 1); } }",
+        "t",
+    )
+    .unwrap();
+    assert_eq!((h.solids.len(), h.imports.len()), (1, 0));
+}
