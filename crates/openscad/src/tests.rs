@@ -624,3 +624,13 @@ fn minkowski_leaves_out_empty_children_as_openscad() {
     .unwrap();
     assert_eq!((h.solids.len(), h.imports.len()), (1, 0));
 }
+
+#[test]
+fn a_minkowski_sum_past_the_vertex_budget_is_refused_where_it_stands() {
+    let text = "group() {\n  minkowski() {\n    difference() { sphere(r = 2, $fn = 40); cube(size = 1); }\n    difference() { sphere(r = 1, $fn = 40); cube(size = 0.5); }\n  }\n}";
+    let e = parse_csg(text, "t.csg").unwrap_err().to_string();
+    assert!(
+        e.starts_with("t.csg:2:3: minkowski(): the Minkowski sum would give the scene more than"),
+        "{e}"
+    );
+}
