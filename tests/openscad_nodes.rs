@@ -203,8 +203,18 @@ fn unsupported_uses_are_refused_with_line_and_column() {
         e.starts_with("t.csg:2:3: offset() of a 2D difference"),
         "{e}"
     );
-    let e = err("hull() { difference() { cube(size = 2); sphere(r = 1); } }");
-    assert!(e.starts_with("t.csg:1:1: hull() of a difference"), "{e}");
+    let e = err(
+        "hull() { difference() { cube(size = 2); import(file = \"d.nrrd\", threshold = 1); } }",
+    );
+    assert!(
+        e.starts_with("t.csg:1:1: hull(): `import(\"d.nrrd\")` has no geometry"),
+        "{e}"
+    );
+    let e = err("minkowski() {\n cube(size = 2); import(file = \"m.stl\"); }");
+    assert!(
+        e.starts_with("t.csg:1:1: minkowski(): `import(\"m.stl\")` has no geometry"),
+        "{e}"
+    );
     let e = err("rotate_extrude() square(size = 2, center = true);");
     assert!(
         e.starts_with("t.csg:1:1: all points for rotate_extrude()"),

@@ -580,21 +580,16 @@ fn contours(r: &Region) -> Vec<Vec<Vec<[f64; 2]>>> {
     acc.overlay(&none, OverlayRule::Subject, FillRule::EvenOdd)
 }
 
-/// Every vertex of a region's shapes, for `hull()`; Err under a difference or intersection
-/// (their hull is not the hull of their operands' points).
+/// Every vertex of a region's shapes, for `hull()`: of the shapes under unions, and of the
+/// computed outline of a difference or intersection ([`flatten`]: the hull of a difference
+/// is the hull of what remains, not of its operands).
 pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<()> {
-    match r {
-        Region::Poly(p) => out.extend(p.points()),
-        Region::Union(parts) => {
-            for p in parts {
-                region_points(p, out)?;
-            }
-        }
-        _ => {
-            return Err(
-                "hull() of a 2D difference or intersection is not supported (csgpix takes the hull of its children's vertices)"
-                    .into(),
-            )
+    let mut stack = vec![r];
+    while let Some(r) = stack.pop() {
+        match r {
+            Region::Poly(p) => out.extend(p.points()),
+            Region::Union(parts) => stack.extend(parts.iter()),
+            _ => out.extend(flatten(r).points()),
         }
     }
     Ok(())

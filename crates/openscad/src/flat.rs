@@ -5,27 +5,6 @@ use glam::DVec2;
 
 use crate::extrude::{default_slices, offset, region_points, Linear, Offset, Poly2, Region};
 use crate::{consts_::*, lex::*, node::*, primitives::*, reader::*, transform::*};
-use csgpix_scene::solid::CsgNode;
-
-/// The leaves under a `hull()`: through unions only (the hull of a difference is not the hull
-/// of its operands' vertices).
-pub(crate) fn hull_leaves(n: &CsgNode, out: &mut Vec<usize>) -> Result<(), String> {
-    let mut stack = vec![n];
-    while let Some(n) = stack.pop() {
-        match n {
-            CsgNode::Solid(i) => out.push(*i),
-            CsgNode::Empty => {}
-            CsgNode::Union(c) => stack.extend(c.iter()),
-            _ => {
-                return Err(
-                    "hull() of a difference or intersection is not supported (csgpix takes the hull of its children's vertices)"
-                        .into(),
-                )
-            }
-        }
-    }
-    Ok(())
-}
 
 /// A finished `hull()` of 2D shapes: the convex hull of their vertices.
 pub(crate) fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {

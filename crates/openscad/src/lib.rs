@@ -37,10 +37,14 @@
 //!   of the extruded shapes, except under a twist or uneven scale, where it is taken in the
 //!   plane first.
 //! * `hull()` of solids (one convex solid over their vertices; the solids leave the scene) or
-//!   of 2D shapes (a convex outline); not of a difference or intersection.
+//!   of 2D shapes (a convex outline); of a difference or intersection, over the vertices of
+//!   its computed geometry (module `geom`: a mesh boolean, or the 2D boolean).
+//! * `minkowski(convexity)` of solids or 2D shapes, all children left to right: a union of
+//!   convex solids (hulls of vertex sums) and closed mesh primitives, exact for non-convex
+//!   operands (the boundary formula and its proof are in module `geom`).
 //! * `offset(r | delta, chamfer)` of one convex outline, or outward of a union of them.
 //!
-//! Anything else (`minkowski`, `projection`, `text`, `surface`, 2D imports, …) is refused with
+//! Anything else (`projection`, `text`, `surface`, 2D imports, …) is refused with
 //! an error naming the node, its line and column. [`scene_text`] turns a `.scad` file into
 //! this CSG text by running `openscad`.
 //!
@@ -90,6 +94,7 @@ mod export;
 pub mod extrude;
 mod fallback;
 mod flat;
+mod geom;
 pub mod hull;
 mod import;
 mod lex;

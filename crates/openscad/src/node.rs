@@ -24,6 +24,7 @@ pub(crate) enum NodeKind {
     LinearExtrude,
     RotateExtrude,
     Hull,
+    Minkowski,
     Offset,
 }
 
@@ -36,7 +37,7 @@ pub(crate) enum Op {
 }
 
 /// Every node this reader understands, by name.
-pub(crate) const NODES: [(&str, NodeKind); 19] = [
+pub(crate) const NODES: [(&str, NodeKind); 20] = [
     ("group", NodeKind::Group),
     ("union", NodeKind::Union),
     ("difference", NodeKind::Difference),
@@ -55,6 +56,7 @@ pub(crate) const NODES: [(&str, NodeKind); 19] = [
     ("linear_extrude", NodeKind::LinearExtrude),
     ("rotate_extrude", NodeKind::RotateExtrude),
     ("hull", NodeKind::Hull),
+    ("minkowski", NodeKind::Minkowski),
     ("offset", NodeKind::Offset),
 ];
 
@@ -90,7 +92,8 @@ impl NodeKind {
             ),
             NodeKind::RotateExtrude => (&["angle", "convexity"], &["$fn", "$fa", "$fs"]),
             NodeKind::Offset => (&["r"], &["delta", "chamfer", "$fn", "$fa", "$fs"]),
-            NodeKind::Render => (&["convexity"], &[]),
+            // `convexity` only guides OpenSCAD's preview: read and ignored.
+            NodeKind::Render | NodeKind::Minkowski => (&["convexity"], &[]),
             NodeKind::Multmatrix => (&["m"], &[]),
             NodeKind::Color => (&["c", "alpha"], &[]),
             NodeKind::Cube => (&["size", "center"], &[]),

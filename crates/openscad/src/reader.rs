@@ -5,6 +5,9 @@ use glam::DVec3;
 use crate::extrude::{
     convex_prism, flatten, linear_mesh, rotate_mesh, Linear, Offset, Poly2, Region,
 };
+use crate::geom::{
+    convex_solid, leaf_mesh, mesh_of, minkowski2, minkowski3, pieces, pieces2, Piece, Piece2,
+};
 use crate::hull::hull3;
 use crate::{
     consts_::*, flat::*, import::*, lex::*, node::*, primitives::*, transform::*, tree::*, value::*,
@@ -352,6 +355,8 @@ impl<'a> Reader<'a> {
             NodeKind::LinearExtrude | NodeKind::RotateExtrude => self.extrude(frame).map(Some),
             NodeKind::Hull if frame.flats.is_empty() => self.hull3(frame).map(Some),
             NodeKind::Hull => hull_flat(frame),
+            NodeKind::Minkowski if frame.flats.is_empty() => self.minkowski3(frame).map(Some),
+            NodeKind::Minkowski => self.minkowski2(frame),
             NodeKind::Offset => offset_flat(frame),
             _ if frame.dim == Some(Dim::Flat) => {
                 Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), flat_at)))
@@ -701,35 +706,37 @@ impl<'a> Reader<'a> {
     }
 
     /// A finished `hull()` of solids: one convex solid over every vertex of the solids and
-    /// generated meshes below it, which leave the scene.
+    /// generated meshes below it (through unions), and of the computed mesh of each
+    /// difference or intersection among them ([`crate::geom::mesh_of`]); all of them leave
+    /// the scene.
     fn hull3(&mut self, frame: Frame) -> Result<Item, Fail> {
         let pos = frame.pos;
-        let mut leaves = vec![];
-        for c in &frame.children {
-            hull_leaves(c, &mut leaves).map_err(|msg| Fail { pos, msg })?;
-        }
+        let at = |msg: String| Fail { pos, msg };
         let mut pts: Vec<DVec3> = vec![];
-        for &leaf in &leaves {
-            if leaf < IMPORTED {
-                pts.extend(self.solids[leaf].vertices.iter().map(|&v| DVec3::from(v)));
-                self.consumed_solids.push(leaf);
-                continue;
+        let mut stack: Vec<&CsgNode> = frame.children.iter().collect();
+        while let Some(n) = stack.pop() {
+            match n {
+                CsgNode::Empty => {}
+                CsgNode::Union(c) => stack.extend(c.iter()),
+                CsgNode::Solid(leaf) => {
+                    let mesh = leaf_mesh(*leaf, &self.solids, &self.imports)
+                        .map_err(|e| at(format!("hull(): {e}")))?;
+                    pts.extend(mesh.iter().flatten());
+                }
+                _ => {
+                    let mesh = mesh_of(n, &self.solids, &self.imports)
+                        .map_err(|e| at(format!("hull(): {e}")))?;
+                    pts.extend(mesh.iter().flatten());
+                }
             }
-            let import = &self.imports[leaf - IMPORTED];
-            let Some(mesh) = &import.mesh else {
-                let msg = format!("hull() of `import(\"{}\")` is not supported", import.file);
-                return fail(pos, msg);
-            };
-            pts.extend(mesh.iter().flatten().map(|&v| DVec3::from(v)));
-            self.consumed_imports.push(leaf - IMPORTED);
+        }
+        for c in &frame.children {
+            self.consume(c);
         }
         if pts.is_empty() {
             return Ok(Item::Solid(CsgNode::Empty));
         }
-        let (vertices, faces) = hull3(&pts).map_err(|e| Fail {
-            pos,
-            msg: e.message,
-        })?;
+        let (vertices, faces) = hull3(&pts).map_err(|e| at(e.message))?;
         let solid = ConvexSolid {
             vertices: vertices.iter().map(|v| v.to_array()).collect(),
             faces,
@@ -739,6 +746,123 @@ impl<'a> Reader<'a> {
         self.vertices += solid.vertices.len();
         self.solids.push(solid);
         Ok(Item::Solid(CsgNode::Solid(self.solids.len() - 1)))
+    }
+
+    /// Every leaf of `n` leaves the scene at the end ([`Self::drop_consumed`]).
+    fn consume(&mut self, n: &CsgNode) {
+        let mut stack = vec![n];
+        while let Some(n) = stack.pop() {
+            match n {
+                CsgNode::Solid(i) if *i >= IMPORTED => self.consumed_imports.push(*i - IMPORTED),
+                CsgNode::Solid(i) => self.consumed_solids.push(*i),
+                _ => stack.extend(n.children()),
+            }
+        }
+    }
+
+    /// A finished `minkowski()` of solids: the left fold of its children's sums
+    /// ([`crate::geom`]), each a union of convex solids and closed mesh primitives; the
+    /// children's leaves leave the scene. One child is itself.
+    fn minkowski3(&mut self, mut frame: Frame) -> Result<Item, Fail> {
+        let pos = frame.pos;
+        let at = |msg: String| Fail {
+            pos,
+            msg: format!("minkowski(): {msg}"),
+        };
+        // OpenSCAD leaves empty children out of the sum.
+        frame.children.retain(|c| !matches!(c, CsgNode::Empty));
+        if frame.children.len() < 2 {
+            return Ok(Item::Solid(frame.children.pop().unwrap_or(CsgNode::Empty)));
+        }
+        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let mut acc: Option<Vec<Piece>> = None;
+        for c in &frame.children {
+            let p = pieces(c, &self.solids, &self.imports).map_err(at)?;
+            if p.is_empty() {
+                continue;
+            }
+            acc = Some(match acc {
+                None => p,
+                Some(a) => minkowski3(&a, &p, budget).map_err(at)?,
+            });
+        }
+        for c in &frame.children {
+            self.consume(c);
+        }
+        let mut leaves = vec![];
+        for p in acc.unwrap_or_default() {
+            match p {
+                Piece::Convex(v) => {
+                    let solid = convex_solid(&v, frame.ctx.colour, pos.line).map_err(at)?;
+                    self.vertices += solid.vertices.len();
+                    self.solids.push(solid);
+                    leaves.push(CsgNode::Solid(self.solids.len() - 1));
+                }
+                Piece::Mesh(m) => {
+                    self.vertices += m.len() * 3;
+                    self.imports.push(Import {
+                        file: format!("minkowski at {pos}"),
+                        threshold: None,
+                        matrix: None,
+                        colour: frame.ctx.colour,
+                        line: pos.line,
+                        col: pos.col,
+                        mesh: Some(std::sync::Arc::new(
+                            m.iter().map(|t| t.map(|v| v.to_array())).collect(),
+                        )),
+                    });
+                    leaves.push(CsgNode::Solid(IMPORTED + self.imports.len() - 1));
+                }
+            }
+        }
+        check_budget(self.vertices, MAX_SCENE_VERTICES, pos)?;
+        Ok(Item::Solid(combine(Op::Union, leaves)))
+    }
+
+    /// A finished `minkowski()` of 2D shapes: the left fold of the sums, a 2D union of
+    /// convex polygons and shapes.
+    fn minkowski2(&mut self, mut frame: Frame) -> Result<Option<Item>, Fail> {
+        let pos = frame.pos;
+        let flat_at = frame.first_flat.unwrap_or(pos);
+        if frame.flats.len() < 2 {
+            return Ok(frame.flats.pop().map(|r| Item::Flat(r, flat_at)));
+        }
+        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let mut acc: Option<Vec<Piece2>> = None;
+        for r in &frame.flats {
+            let p = pieces2(r);
+            if p.is_empty() {
+                continue;
+            }
+            acc = Some(match acc {
+                None => p,
+                Some(a) => minkowski2(&a, &p, budget).map_err(|msg| Fail {
+                    pos,
+                    msg: format!("minkowski(): {msg}"),
+                })?,
+            });
+        }
+        let parts: Vec<Region> = acc
+            .unwrap_or_default()
+            .into_iter()
+            .map(|p| match p {
+                Piece2::Convex(h) => Region::Poly(Poly2 { paths: vec![h] }),
+                Piece2::Shape(s) => Region::Poly(s),
+            })
+            .collect();
+        let n: usize = parts
+            .iter()
+            .map(|r| match r {
+                Region::Poly(p) => p.points().count(),
+                _ => 0,
+            })
+            .sum();
+        check_budget(n, budget, pos)?;
+        self.vertices += n;
+        if parts.is_empty() {
+            return Ok(None);
+        }
+        Ok(Some(Item::Flat(region_of(Op::Union, parts), flat_at)))
     }
 }
 

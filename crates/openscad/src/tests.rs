@@ -445,10 +445,10 @@ fn syntax_accepted() {
 #[test]
 fn errors_name_line_and_column() {
     assert_err(
-        "group() {\n  minkowski() { cube(1); sphere(1); }\n}",
+        "group() {\n  surface(file = \"h.dat\");\n}",
         2,
         3,
-        "unsupported node `minkowski` (csgpix reads group",
+        "unsupported node `surface` (csgpix reads group",
     );
     assert_err(
         "projection() cube(1);",
@@ -663,4 +663,37 @@ fn children_of_the_other_dimension_are_ignored() {
     let s = parse("square(2); cube(1);");
     assert_eq!((s.solids.len(), s.warnings.len()), (1, 1));
     assert_err("square(2);", 1, 1, "outside linear_extrude");
+
+#[test]
+fn minkowski_leaves_out_empty_children_as_openscad() {
+    let with = "minkowski() { cube(size = 1); group(); sphere(r = 0.5, $fn = 8); }";
+    let without = "minkowski() { cube(size = 1); sphere(r = 0.5, $fn = 8); }";
+    let (a, b) = (
+        parse_csg(with, "t").unwrap(),
+        parse_csg(without, "t").unwrap(),
+    );
+    assert_eq!(a, b);
+    assert_eq!(a.solids.len(), 1);
+    // One child is itself; the hull of a difference is one convex solid.
+    let one = parse_csg(
+        "minkowski() { difference() { cube(size = 2); cube(size = 1); } }",
+        "t",
+    );
+    assert!(matches!(one.unwrap().root, CsgNode::Difference(_)));
+    let h = parse_csg(
+        "hull() { difference() { cube(size = 2); cube(size = 1); } }",
+        "t",
+    )
+    .unwrap();
+    assert_eq!((h.solids.len(), h.imports.len()), (1, 0));
+}
+
+#[test]
+fn a_minkowski_sum_past_the_vertex_budget_is_refused_where_it_stands() {
+    let text = "group() {\n  minkowski() {\n    difference() { sphere(r = 2, $fn = 40); cube(size = 1); }\n    difference() { sphere(r = 1, $fn = 40); cube(size = 0.5); }\n  }\n}";
+    let e = parse_csg(text, "t.csg").unwrap_err().to_string();
+    assert!(
+        e.starts_with("t.csg:2:3: minkowski(): the Minkowski sum would give the scene more than"),
+        "{e}"
+    );
 }
