@@ -89,11 +89,13 @@ mod consts_;
 mod export;
 pub mod extrude;
 mod flat;
+pub mod geom;
 pub mod hull;
 mod import;
 mod lex;
 mod node;
 mod primitives;
+mod project;
 mod reader;
 #[cfg(test)]
 mod tests;

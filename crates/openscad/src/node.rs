@@ -25,6 +25,8 @@ pub(crate) enum NodeKind {
     RotateExtrude,
     Hull,
     Offset,
+    Projection,
+    Resize,
 }
 
 /// How the children of an operation combine.
@@ -36,7 +38,7 @@ pub(crate) enum Op {
 }
 
 /// Every node this reader understands, by name.
-pub(crate) const NODES: [(&str, NodeKind); 19] = [
+pub(crate) const NODES: [(&str, NodeKind); 21] = [
     ("group", NodeKind::Group),
     ("union", NodeKind::Union),
     ("difference", NodeKind::Difference),
@@ -56,6 +58,8 @@ pub(crate) const NODES: [(&str, NodeKind); 19] = [
     ("rotate_extrude", NodeKind::RotateExtrude),
     ("hull", NodeKind::Hull),
     ("offset", NodeKind::Offset),
+    ("projection", NodeKind::Projection),
+    ("resize", NodeKind::Resize),
 ];
 
 impl NodeKind {
@@ -91,6 +95,8 @@ impl NodeKind {
             NodeKind::RotateExtrude => (&["angle", "convexity"], &["$fn", "$fa", "$fs"]),
             NodeKind::Offset => (&["r"], &["delta", "chamfer", "$fn", "$fa", "$fs"]),
             NodeKind::Render => (&["convexity"], &[]),
+            NodeKind::Projection => (&["cut"], &["convexity"]),
+            NodeKind::Resize => (&["newsize", "auto", "convexity"], &[]),
             NodeKind::Multmatrix => (&["m"], &[]),
             NodeKind::Color => (&["c", "alpha"], &[]),
             NodeKind::Cube => (&["size", "center"], &[]),

@@ -443,7 +443,7 @@ fn errors_name_line_and_column() {
         "projection() cube(1);",
         1,
         1,
-        "unsupported node `projection`",
+        "a 2D shape outside linear_extrude",
     );
     assert_err("cube(size = 1.2.3);", 1, 13, "malformed number `1.2.3`");
     assert_err("cube(size = 1e);", 1, 13, "malformed number `1e`");
