@@ -135,6 +135,13 @@ pub(crate) fn flat_spec(head: &Head) -> Result<Spec, Fail> {
             };
             Spec::Offset(o)
         }
+        NodeKind::Projection => Spec::Projection {
+            cut: p.boolean("cut")?,
+        },
+        NodeKind::Resize => {
+            let (newsize, auto) = crate::project::resize_args(p)?;
+            Spec::Resize { newsize, auto }
+        }
         _ => Spec::None,
     })
 }

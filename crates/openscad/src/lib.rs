@@ -44,7 +44,15 @@
 //!   operands (the boundary formula and its proof are in module `geom`).
 //! * `offset(r | delta, chamfer)` of one convex outline, or outward of a union of them.
 //!
-//! Anything else (`projection`, `text`, `surface`, 2D imports, …) is refused with
+//! * `projection(cut)` of solids, a 2D shape (so `linear_extrude(…) projection(…) …` reads):
+//!   with `cut = true` the section at z = 0, every leaf sectioned and the CSG tree kept as a 2D
+//!   tree; otherwise the shadow on z = 0 (see `project.rs`). The solids below leave the scene.
+//! * `resize(newsize, auto)` of solids or 2D shapes: a scale about the origin from the exact
+//!   bounding box, with OpenSCAD 2021.01's rules for zero entries and `auto`; negative sizes
+//!   are refused. The shadow of a difference or intersection, and its box, need the mesh of
+//!   `geom::mesh_of`.
+//!
+//! Anything else (`surface`, 2D imports, …) is refused with
 //! an error naming the node, its line and column. [`scene_text`] turns a `.scad` file into
 //! this CSG text by running `openscad`.
 //!
@@ -100,6 +108,7 @@ mod import;
 mod lex;
 mod node;
 mod primitives;
+mod project;
 mod reader;
 #[cfg(test)]
 mod tests;

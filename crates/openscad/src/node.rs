@@ -26,6 +26,8 @@ pub(crate) enum NodeKind {
     Hull,
     Minkowski,
     Offset,
+    Projection,
+    Resize,
 }
 
 /// How the children of an operation combine.
@@ -37,7 +39,7 @@ pub(crate) enum Op {
 }
 
 /// Every node this reader understands, by name.
-pub(crate) const NODES: [(&str, NodeKind); 20] = [
+pub(crate) const NODES: [(&str, NodeKind); 22] = [
     ("group", NodeKind::Group),
     ("union", NodeKind::Union),
     ("difference", NodeKind::Difference),
@@ -58,6 +60,8 @@ pub(crate) const NODES: [(&str, NodeKind); 20] = [
     ("hull", NodeKind::Hull),
     ("minkowski", NodeKind::Minkowski),
     ("offset", NodeKind::Offset),
+    ("projection", NodeKind::Projection),
+    ("resize", NodeKind::Resize),
 ];
 
 impl NodeKind {
@@ -94,6 +98,8 @@ impl NodeKind {
             NodeKind::Offset => (&["r"], &["delta", "chamfer", "$fn", "$fa", "$fs"]),
             // `convexity` only guides OpenSCAD's preview: read and ignored.
             NodeKind::Render | NodeKind::Minkowski => (&["convexity"], &[]),
+            NodeKind::Projection => (&["cut"], &["convexity"]),
+            NodeKind::Resize => (&["newsize", "auto", "convexity"], &[]),
             NodeKind::Multmatrix => (&["m"], &[]),
             NodeKind::Color => (&["c", "alpha"], &[]),
             NodeKind::Cube => (&["size", "center"], &[]),

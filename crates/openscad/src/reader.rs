@@ -78,6 +78,8 @@ pub(crate) enum Spec {
     Linear(LinearArgs),
     Rotate { angle: f64, res: (f64, f64, f64) },
     Offset(Offset),
+    Projection { cut: bool },
+    Resize { newsize: [f64; 3], auto: [bool; 3] },
 }
 
 /// `linear_extrude` as read: the slices may be left to OpenSCAD's rule.
@@ -237,7 +239,11 @@ impl<'a> Reader<'a> {
         let spec = flat_spec(&head)?;
         let mut ctx = ctx;
         let placement = match head.kind {
-            NodeKind::LinearExtrude | NodeKind::RotateExtrude => ctx.matrix.take(),
+            // Their children start from the identity: the result is placed afterwards.
+            NodeKind::LinearExtrude
+            | NodeKind::RotateExtrude
+            | NodeKind::Projection
+            | NodeKind::Resize => ctx.matrix.take(),
             _ => None,
         };
         self.open.push(Frame {
@@ -358,6 +364,8 @@ impl<'a> Reader<'a> {
             NodeKind::Minkowski if frame.flats.is_empty() => self.minkowski3(frame).map(Some),
             NodeKind::Minkowski => self.minkowski2(frame),
             NodeKind::Offset => offset_flat(frame),
+            NodeKind::Projection => self.projection(frame),
+            NodeKind::Resize => self.resize(frame),
             _ if frame.dim == Some(Dim::Flat) => {
                 Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), flat_at)))
             }

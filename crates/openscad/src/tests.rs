@@ -454,7 +454,7 @@ fn errors_name_line_and_column() {
         "projection() cube(1);",
         1,
         1,
-        "unsupported node `projection`",
+        "a 2D shape outside linear_extrude",
     );
     assert_err("cube(size = 1.2.3);", 1, 13, "malformed number `1.2.3`");
     assert_err("cube(size = 1e);", 1, 13, "malformed number `1e`");
@@ -486,7 +486,7 @@ fn errors_name_line_and_column() {
     assert_err("cube(size = 1, size = 2);", 1, 16, "given twice");
     assert_err("sphere($fn = -3, r = 1);", 1, 14, "must not be negative");
     assert_err("sphere($fn = 20000, r = 1);", 1, 1, "more than the 10000");
-    assert_err("sphere($fn = 2000, r = 1);", 1, 1, "vertices");
+    assert_err("sphere($fn = 9000, r = 1);", 1, 1, "vertices");
     assert_err("cube(size = [1, 2]);", 1, 13, "[x, y, z]");
     assert_err("cube(center = 1);", 1, 15, "true or false");
     assert_err("cube(size = [1, 2 3]);", 1, 19, "expected ',' or ']'");
@@ -531,8 +531,10 @@ fn size_limits() {
         1,
         "exceeds",
     );
-    let cubes = "cube(1);".repeat(MAX_SCENE_VERTICES / 8 + 1);
-    assert_err(&cubes, 1, 8 * (MAX_SCENE_VERTICES / 8) + 1, "vertices");
+    // 2250 rings of 4500 points: two such spheres pass the scene's vertex guard.
+    let one = "sphere($fn = 4500, r = 1);";
+    assert!(2 * 2250 * 4500 > MAX_SCENE_VERTICES && 2250 * 4500 < MAX_SCENE_VERTICES);
+    assert_err(&one.repeat(2), 1, one.len() + 1, "vertices");
 }
 
 #[test]
@@ -663,6 +665,7 @@ fn children_of_the_other_dimension_are_ignored() {
     let s = parse("square(2); cube(1);");
     assert_eq!((s.solids.len(), s.warnings.len()), (1, 1));
     assert_err("square(2);", 1, 1, "outside linear_extrude");
+}
 
 #[test]
 fn minkowski_leaves_out_empty_children_as_openscad() {
