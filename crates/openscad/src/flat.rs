@@ -210,7 +210,7 @@ pub(crate) fn linear_args(p: &Params, res: (f64, f64, f64)) -> Result<LinearArgs
     })
 }
 
-/// `square`, `circle` or `polygon` as a shape in its own plane.
+/// `square`, `circle`, `polygon` or `text` as a shape in its own plane.
 pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
     match p.node {
         NodeKind::Square => {
@@ -235,6 +235,7 @@ pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
             check_budget(n, budget, p.pos)?;
             Ok(Poly2::circle(r, n, sin_cos_degrees))
         }
+        NodeKind::Text => crate::text::text_shape(p, budget),
         _ => polygon(p, budget),
     }
 }

@@ -40,7 +40,11 @@
 //!   of 2D shapes (a convex outline); not of a difference or intersection.
 //! * `offset(r | delta, chamfer)` of one convex outline, or outward of a union of them.
 //!
-//! Anything else (`minkowski`, `projection`, `text`, `surface`, 2D imports, …) is refused with
+//! * `text(text, size, font, halign, valign, spacing, direction, language, script)`: a 2D
+//!   shape, the glyph outlines shaped and flattened as OpenSCAD 2021.01 does
+//!   ([`crate::text`]); a font that is not found is an error, not a substitution.
+//!
+//! Anything else (`minkowski`, `projection`, `surface`, 2D imports, …) is refused with
 //! an error naming the node, its line and column. [`scene_text`] turns a `.scad` file into
 //! this CSG text by running `openscad`.
 //!
@@ -97,6 +101,7 @@ mod primitives;
 mod reader;
 #[cfg(test)]
 mod tests;
+pub mod text;
 mod transform;
 mod tree;
 mod value;

@@ -25,6 +25,7 @@ pub(crate) enum NodeKind {
     RotateExtrude,
     Hull,
     Offset,
+    Text,
 }
 
 /// How the children of an operation combine.
@@ -36,7 +37,7 @@ pub(crate) enum Op {
 }
 
 /// Every node this reader understands, by name.
-pub(crate) const NODES: [(&str, NodeKind); 19] = [
+pub(crate) const NODES: [(&str, NodeKind); 20] = [
     ("group", NodeKind::Group),
     ("union", NodeKind::Union),
     ("difference", NodeKind::Difference),
@@ -56,6 +57,7 @@ pub(crate) const NODES: [(&str, NodeKind); 19] = [
     ("rotate_extrude", NodeKind::RotateExtrude),
     ("hull", NodeKind::Hull),
     ("offset", NodeKind::Offset),
+    ("text", NodeKind::Text),
 ];
 
 impl NodeKind {
@@ -90,6 +92,20 @@ impl NodeKind {
             ),
             NodeKind::RotateExtrude => (&["angle", "convexity"], &["$fn", "$fa", "$fs"]),
             NodeKind::Offset => (&["r"], &["delta", "chamfer", "$fn", "$fa", "$fs"]),
+            NodeKind::Text => (
+                &["text", "size", "font"],
+                &[
+                    "direction",
+                    "language",
+                    "script",
+                    "halign",
+                    "valign",
+                    "spacing",
+                    "$fn",
+                    "$fa",
+                    "$fs",
+                ],
+            ),
             NodeKind::Render => (&["convexity"], &[]),
             NodeKind::Multmatrix => (&["m"], &[]),
             NodeKind::Color => (&["c", "alpha"], &[]),
@@ -130,6 +146,7 @@ impl NodeKind {
                 | NodeKind::Square
                 | NodeKind::Circle
                 | NodeKind::Polygon
+                | NodeKind::Text
         )
     }
 
@@ -137,7 +154,7 @@ impl NodeKind {
     pub(crate) fn is_flat(self) -> bool {
         matches!(
             self,
-            NodeKind::Square | NodeKind::Circle | NodeKind::Polygon
+            NodeKind::Square | NodeKind::Circle | NodeKind::Polygon | NodeKind::Text
         )
     }
 
