@@ -154,6 +154,16 @@ fn compare(name: &str) -> (f64, f64, f64) {
     let both = a.iter().zip(&b).filter(|(x, y)| **x && **y).count();
     let either = a.iter().zip(&b).filter(|(x, y)| **x || **y).count();
     let iou = both as f64 / either as f64;
+    if iou < 0.99 {
+        let ours_lo = ours
+            .imports
+            .iter()
+            .flat_map(|i| i.mesh.as_ref().unwrap().iter().flatten())
+            .fold(DVec3::splat(f64::INFINITY), |a, p| a.min(DVec3::from(*p)));
+        println!(
+            "{name}: csgpix's lowest corner {ours_lo:?}, OpenSCAD's bounds {lo:?} {hi:?} (padded)"
+        );
+    }
     (iou, outline_area(&csg), volume(&theirs) / 2.0)
 }
 

@@ -24,7 +24,8 @@
 //! * Shaping: `rustybuzz` (a port of HarfBuzz) with the node's `direction`, `script` and
 //!   `language`, as OpenSCAD calls `hb_shape`; outlines from `ttf-parser` (unhinted, where
 //!   OpenSCAD loads hinted outlines at about 2170 pixels per em: a difference of under 1/2000
-//!   of the em).
+//!   of the em). For `ttb`/`btt` in a font without `vmtx` the vertical advance and origin are
+//!   FreeType's made-up ones, which hb-ft hands OpenSCAD, not HarfBuzz's own fallback.
 //!
 //! Fonts are looked up by fontconfig's `Family:style=Style` syntax in, in this order, the
 //! directories of `CSGPIX_FONT_PATH` (colon-separated), the bundled `vectors/fonts` (when it
@@ -378,11 +379,35 @@ fn render_face(spec: &TextSpec, data: &[u8], index: u32) -> Result<Poly2, String
             hi: DVec2::splat(f64::NEG_INFINITY),
             ..Outline::default()
         };
-        face.outline_glyph(ttf_parser::GlyphId(info.glyph_id as u16), &mut o);
+        let id = ttf_parser::GlyphId(info.glyph_id as u16);
+        face.outline_glyph(id, &mut o);
+        let mut pos = *pos;
+        if !horizontal {
+            // hb-ft's vertical metrics, which OpenSCAD gets: FreeType's TrueType loader makes
+            // them up for a font without `vmtx` (TT_Get_VMetrics, compute_glyph_metrics): the
+            // advance is sTypoAscender − sTypoDescender (hhea's without OS/2) and the origin
+            // lies `top = (advance − height) / 2` above the glyph's box; HarfBuzz's own
+            // fallback (rustybuzz) uses the font ascender and descender instead.
+            if face.tables().vmtx.is_none() {
+                let advance = match face.tables().os2 {
+                    Some(os2) => {
+                        os2.typographic_ascender() as i32 - os2.typographic_descender() as i32
+                    }
+                    None => face.ascender() as i32 - face.descender() as i32,
+                };
+                let (y_min, y_max) = face
+                    .glyph_bounding_box(id)
+                    .map_or((0, 0), |b| (b.y_min as i32, b.y_max as i32));
+                let top = (advance - (y_max - y_min)) / 2;
+                pos.y_offset = -(y_max + top);
+                pos.y_advance = -advance;
+            }
+        }
         glyphs.push((o, pos));
     }
     let (mut width, mut ascend, mut descend) = (0.0f64, 0.0f64, 0.0f64);
     for (o, pos) in &glyphs {
+        let pos = *pos;
         // FT_Glyph_Get_CBox(FT_GLYPH_BBOX_GRIDFIT): an empty glyph's box is all zeros.
         let (lo, hi) = if o.lo.x.is_finite() {
             ((o.lo / 64.0).floor() * 64.0, (o.hi / 64.0).ceil() * 64.0)
