@@ -131,7 +131,7 @@ fn outline_area(csg: &str) -> f64 {
         valign: arg(csg, "valign"),
         segments: segments(num("size"), num("$fn"), num("$fa"), num("$fs")),
     };
-    let poly = render(&spec, Fonts::standard()).unwrap();
+    let poly = render(&spec, Fonts::standard(), 1_000_000).unwrap();
     poly.paths.iter().map(|c| signed_area(c)).sum::<f64>().abs()
 }
 

@@ -322,7 +322,8 @@ fn units_26_6(face: &ttf_parser::Face) -> f64 {
 }
 
 /// The outline of a `text()` node in its own plane.
-pub fn render(spec: &TextSpec, fonts: &Fonts) -> Result<Poly2, String> {
+/// At most `max_points` outline points are made (before the union).
+pub fn render(spec: &TextSpec, fonts: &Fonts, max_points: usize) -> Result<Poly2, String> {
     let id = fonts.find(&spec.font)?;
     if !matches!(spec.halign.as_str(), "left" | "right" | "center") {
         return Err(format!(
@@ -341,11 +342,16 @@ pub fn render(spec: &TextSpec, fonts: &Fonts) -> Result<Poly2, String> {
     }
     fonts
         .db
-        .with_face_data(id, |data, index| render_face(spec, data, index))
+        .with_face_data(id, |data, index| render_face(spec, data, index, max_points))
         .unwrap_or_else(|| Err(format!("font `{}` could not be read", spec.font)))
 }
 
-fn render_face(spec: &TextSpec, data: &[u8], index: u32) -> Result<Poly2, String> {
+fn render_face(
+    spec: &TextSpec,
+    data: &[u8],
+    index: u32,
+    max_points: usize,
+) -> Result<Poly2, String> {
     let face = rustybuzz::Face::from_slice(data, index)
         .ok_or_else(|| format!("font `{}` could not be parsed", spec.font))?;
     let to26 = units_26_6(&face);
@@ -371,6 +377,7 @@ fn render_face(spec: &TextSpec, data: &[u8], index: u32) -> Result<Poly2, String
     // Positions as hb-ft reports them: whole 26.6 units.
     let pos26 = |v: i32| (v as f64 * to26).round();
     let mut glyphs = Vec::new();
+    let mut points = 0usize;
     for (info, pos) in shaped.glyph_infos().iter().zip(shaped.glyph_positions()) {
         let mut o = Outline {
             n: spec.segments,
@@ -381,6 +388,12 @@ fn render_face(spec: &TextSpec, data: &[u8], index: u32) -> Result<Poly2, String
         };
         let id = ttf_parser::GlyphId(info.glyph_id as u16);
         face.outline_glyph(id, &mut o);
+        points += o.contours.iter().map(Vec::len).sum::<usize>();
+        if points > max_points {
+            return Err(format!(
+                "the text's outline has more than the {max_points} points csgpix accepts (lower $fn or the size)"
+            ));
+        }
         let mut pos = *pos;
         if !horizontal {
             // hb-ft's vertical metrics, which OpenSCAD gets: FreeType's TrueType loader makes
@@ -516,7 +529,7 @@ pub(crate) fn text_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
         valign: string(p, "valign", "baseline")?,
         segments: segments(size, res.fn_, res.fa, res.fs),
     };
-    let poly = render(&spec, Fonts::standard()).map_err(|msg| Fail { pos: p.pos, msg })?;
+    let poly = render(&spec, Fonts::standard(), budget).map_err(|msg| Fail { pos: p.pos, msg })?;
     check_budget(poly.points().count(), budget, p.pos)?;
     Ok(poly)
 }
@@ -531,7 +544,7 @@ mod tests {
     }
 
     fn draw(spec: &TextSpec) -> Poly2 {
-        render(spec, &fonts()).unwrap()
+        render(spec, &fonts(), MAX_SCENE_VERTICES).unwrap()
     }
 
     fn bounds(p: &Poly2) -> (DVec2, DVec2) {
@@ -590,6 +603,9 @@ mod tests {
         let text = "linear_extrude(height = 1) text(text = \"a\", halign = \"middle\");";
         let e = crate::parse_csg(text, "t.csg").unwrap_err().to_string();
         assert!(e.starts_with("t.csg:1:28: ") && e.contains("halign"), "{e}");
+        let text = "linear_extrude(height = 1) text(text = \"oooooooooooooooooooo\", $fn = 1e9);";
+        let e = crate::parse_csg(text, "t.csg").unwrap_err().to_string();
+        assert!(e.starts_with("t.csg:1:28: ") && e.contains("points"), "{e}");
     }
 
     #[test]
