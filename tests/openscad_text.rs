@@ -65,7 +65,7 @@ fn occupancy(scene: &CsgScene, grid: &Grid) -> Vec<bool> {
         sampled,
         ..SlicerOptions::default()
     };
-    let slicer = Slicer::new(scene, grid.clone(), opts).unwrap();
+    let slicer = Slicer::new(scene, *grid, opts).unwrap();
     let eval = BlistEval::new(&scene.root);
     let (vol, _) = voxelize(
         &slicer,
