@@ -196,8 +196,8 @@ pub(crate) fn linear_args(p: &Params, res: (f64, f64, f64)) -> Result<LinearArgs
     })
 }
 
-/// `square`, `circle` or `polygon` as a shape in its own plane.
-/// `None` for a zero or negative size, which OpenSCAD draws as nothing.
+/// `square`, `circle`, `polygon` or `text` as a shape in its own plane; `None` for a zero
+/// or negative size, which OpenSCAD draws as nothing.
 pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Option<Poly2>, Fail> {
     match p.node {
         NodeKind::Square => {
@@ -226,6 +226,7 @@ pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Option<Poly2>, Fai
             check_budget(n, budget, p.pos)?;
             Ok(Some(Poly2::circle(r, n, sin_cos_degrees)))
         }
+        NodeKind::Text => crate::text::text_shape(p, budget).map(Some),
         _ => polygon(p, budget).map(Some),
     }
 }

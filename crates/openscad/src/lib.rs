@@ -43,7 +43,6 @@
 //!   convex solids (hulls of vertex sums) and closed mesh primitives, exact for non-convex
 //!   operands (the boundary formula and its proof are in module `geom`).
 //! * `offset(r | delta, chamfer)` of one convex outline, or outward of a union of them.
-//!
 //! * `projection(cut)` of solids, a 2D shape (so `linear_extrude(…) projection(…) …` reads):
 //!   with `cut = true` the section at z = 0, every leaf sectioned and the CSG tree kept as a 2D
 //!   tree; otherwise the shadow on z = 0 (see `project.rs`). The solids below leave the scene.
@@ -51,9 +50,12 @@
 //!   bounding box, with OpenSCAD 2021.01's rules for zero entries and `auto`; negative sizes
 //!   are refused. The shadow of a difference or intersection, and its box, need the mesh of
 //!   `geom::mesh_of`.
+//! * `text(text, size, font, halign, valign, spacing, direction, language, script)`: a 2D
+//!   shape, the glyph outlines shaped and flattened as OpenSCAD 2021.01 does
+//!   ([`crate::text`]); a font that is not found is an error, not a substitution.
 //!
-//! Anything else (`surface`, 2D imports, …) is refused with
-//! an error naming the node, its line and column. [`scene_text`] turns a `.scad` file into
+//! Anything else (`surface`, 2D imports, …) is refused with an error naming the node, its
+//! line and column, or with [`Fallback::Openscad`] meshed by openscad. [`scene_text`] turns a `.scad` file into
 //! this CSG text by running `openscad`.
 //!
 //! The tree is simplified without changing the solid it describes: a union or group with one
@@ -112,6 +114,7 @@ mod project;
 mod reader;
 #[cfg(test)]
 mod tests;
+pub mod text;
 mod transform;
 mod tree;
 mod value;

@@ -28,6 +28,7 @@ pub(crate) enum NodeKind {
     Offset,
     Projection,
     Resize,
+    Text,
 }
 
 /// How the children of an operation combine.
@@ -39,7 +40,7 @@ pub(crate) enum Op {
 }
 
 /// Every node this reader understands, by name.
-pub(crate) const NODES: [(&str, NodeKind); 22] = [
+pub(crate) const NODES: [(&str, NodeKind); 23] = [
     ("group", NodeKind::Group),
     ("union", NodeKind::Union),
     ("difference", NodeKind::Difference),
@@ -62,6 +63,7 @@ pub(crate) const NODES: [(&str, NodeKind); 22] = [
     ("offset", NodeKind::Offset),
     ("projection", NodeKind::Projection),
     ("resize", NodeKind::Resize),
+    ("text", NodeKind::Text),
 ];
 
 impl NodeKind {
@@ -96,6 +98,20 @@ impl NodeKind {
             ),
             NodeKind::RotateExtrude => (&["angle", "convexity"], &["$fn", "$fa", "$fs"]),
             NodeKind::Offset => (&["r"], &["delta", "chamfer", "$fn", "$fa", "$fs"]),
+            NodeKind::Text => (
+                &["text", "size", "font"],
+                &[
+                    "direction",
+                    "language",
+                    "script",
+                    "halign",
+                    "valign",
+                    "spacing",
+                    "$fn",
+                    "$fa",
+                    "$fs",
+                ],
+            ),
             // `convexity` only guides OpenSCAD's preview: read and ignored.
             NodeKind::Render | NodeKind::Minkowski => (&["convexity"], &[]),
             NodeKind::Projection => (&["cut"], &["convexity"]),
@@ -139,6 +155,7 @@ impl NodeKind {
                 | NodeKind::Square
                 | NodeKind::Circle
                 | NodeKind::Polygon
+                | NodeKind::Text
         )
     }
 
@@ -146,7 +163,7 @@ impl NodeKind {
     pub(crate) fn is_flat(self) -> bool {
         matches!(
             self,
-            NodeKind::Square | NodeKind::Circle | NodeKind::Polygon
+            NodeKind::Square | NodeKind::Circle | NodeKind::Polygon | NodeKind::Text
         )
     }
 

@@ -1,0 +1,702 @@
+//! `text(…)`: a 2D leaf whose outline is the shaped, flattened glyph contours of a string,
+//! following OpenSCAD 2021.01's `FreetypeRenderer::render` (`src/FreetypeRenderer.cc`),
+//! `DrawingCallback` (`src/DrawingCallback.cc`) and `TextModule::instantiate` (`src/text.cc`).
+//!
+//! * Scale. OpenSCAD sets FreeType's character size to `1e5` (26.6 points) at 100 dpi, so a
+//!   font unit is `ppem26 / units_per_em` 26.6 units with `ppem26 = (1e5 · 100 + 36) / 72`
+//!   (integer division, as `FT_Request_Size`), rounded down to whole pixels (`× 64`) when the
+//!   font's `head` flags ask for an integer ppem (bit 3), as FreeType's TrueType driver does.
+//!   Outline points are divided by `scale = 1e5`, but HarfBuzz positions (advances, offsets)
+//!   and the glyph boxes by `1.024e5` (OpenSCAD's `unscale`, which its source keeps "for
+//!   compatibility"); everything is then multiplied by `size`. So the glyphs are drawn
+//!   2.4 % larger than their advances.
+//! * Curves. Each quadratic or cubic Bézier segment becomes `n` straight segments at
+//!   parameters `i / n`, `n = max(floor(f / 8) + 1, 2)` with `f = get_fragments_from_r(size,
+//!   $fn, $fs, $fa)`.
+//! * Alignment. `halign`: the width is the sum of the advances × `spacing` (`right`: −width,
+//!   `center`: −width/2). `valign`: the ascent and descent are the largest of the glyphs'
+//!   grid-fitted control boxes above and below the baseline (`top`: −ascent, `center`:
+//!   (descent − ascent)/2, `bottom`: +descent). For vertical directions the width is the widest
+//!   box and the "ascent" the sum of the vertical advances, as OpenSCAD has it.
+//! * Fill. The contours of every glyph are united with the nonzero rule (OpenSCAD passes the
+//!   glyph polygons to Clipper's union with `pftNonZero`), here with `i_overlay`; the result's
+//!   paths are filled even-odd like every [`Poly2`].
+//! * Shaping: `rustybuzz` (a port of HarfBuzz) with the node's `direction`, `script` and
+//!   `language`, as OpenSCAD calls `hb_shape`; outlines from `ttf-parser` (unhinted, where
+//!   OpenSCAD loads hinted outlines at about 2170 pixels per em: a difference of under 1/2000
+//!   of the em). For `ttb`/`btt` in a font without `vmtx` the vertical advance and origin are
+//!   FreeType's made-up ones, which hb-ft hands OpenSCAD, not HarfBuzz's own fallback.
+//!
+//! Fonts are looked up by fontconfig's `Family:style=Style` syntax in, in this order, the
+//! directories of `CSGPIX_FONT_PATH` (colon-separated), the bundled `vectors/fonts` (when it
+//! exists beside the sources this crate was built from), then the system fonts. `font = ""` is
+//! OpenSCAD's default, `Liberation Sans:style=Regular`. A family or style that is not found is
+//! an error: OpenSCAD would warn and draw fontconfig's closest match instead.
+
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+use glam::DVec2;
+use rustybuzz::ttf_parser;
+
+use crate::extrude::Poly2;
+use crate::node::Params;
+use crate::primitives::{check_budget, Resolution};
+use crate::{consts_::*, lex::*};
+
+/// OpenSCAD's default font (`FontCache::DEFAULT_FONT`).
+pub const DEFAULT_FONT: &str = "Liberation Sans:style=Regular";
+
+/// `FreetypeRenderer::scale`: outline coordinates (26.6) are divided by it.
+const SCALE: f64 = 1e5;
+/// 1 / `FreetypeRenderer::unscale`: HarfBuzz positions and boxes are divided by it.
+const UNSCALE: f64 = 1.024e5;
+
+/// The fonts csgpix can draw, in lookup order.
+pub struct Fonts {
+    db: fontdb::Database,
+}
+
+/// The bundled font directory, if the sources this crate was built from are still there.
+pub fn bundled_font_dir() -> Option<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../vectors/fonts");
+    dir.is_dir().then_some(dir)
+}
+
+impl Fonts {
+    /// The fonts of the given directories, in order, then (if `system`) the system's.
+    pub fn new(dirs: &[PathBuf], system: bool) -> Fonts {
+        let mut db = fontdb::Database::new();
+        for d in dirs {
+            db.load_fonts_dir(d);
+        }
+        if system {
+            db.load_system_fonts();
+        }
+        Fonts { db }
+    }
+
+    /// `CSGPIX_FONT_PATH`, the bundled fonts, the system fonts; loaded once per process.
+    pub fn standard() -> &'static Fonts {
+        static FONTS: OnceLock<Fonts> = OnceLock::new();
+        FONTS.get_or_init(|| {
+            let mut dirs: Vec<PathBuf> = std::env::var_os("CSGPIX_FONT_PATH")
+                .map(|v| {
+                    std::env::split_paths(&v)
+                        .filter(|p| !p.as_os_str().is_empty())
+                        .collect()
+                })
+                .unwrap_or_default();
+            dirs.extend(bundled_font_dir());
+            Fonts::new(&dirs, true)
+        })
+    }
+
+    /// The face a fontconfig-style name (`"Liberation Sans:style=Bold"`, `"DejaVu Sans:bold"`)
+    /// names; `""` is [`DEFAULT_FONT`]. The first face found in lookup order wins.
+    pub fn find(&self, name: &str) -> Result<fontdb::ID, String> {
+        let trimmed = name.trim();
+        let lookup = if trimmed.is_empty() {
+            DEFAULT_FONT
+        } else {
+            trimmed
+        };
+        let (families, props) = lookup.split_once(':').unwrap_or((lookup, ""));
+        let mut style: Option<String> = None;
+        let mut weight: Option<u16> = None;
+        let mut italic = false;
+        for prop in props.split(':').map(str::trim).filter(|p| !p.is_empty()) {
+            match prop.split_once('=') {
+                Some((k, v)) if k.trim().eq_ignore_ascii_case("style") => {
+                    style = Some(v.trim().to_string())
+                }
+                Some((k, v)) if k.trim().eq_ignore_ascii_case("weight") => {
+                    weight = Some(match v.trim().to_ascii_lowercase().as_str() {
+                        "bold" => 700,
+                        "regular" | "normal" | "medium" => 400,
+                        _ => return Err(format!("font `{name}`: unsupported weight `{v}`")),
+                    })
+                }
+                None if prop.eq_ignore_ascii_case("bold") => weight = Some(700),
+                None if prop.eq_ignore_ascii_case("italic") => italic = true,
+                None if prop.eq_ignore_ascii_case("regular") => weight = Some(400),
+                _ => {
+                    return Err(format!(
+                        "font `{name}`: unsupported property `{prop}` (csgpix reads `Family:style=Style`)"
+                    ))
+                }
+            }
+        }
+        for family in families.split(',').map(str::trim).filter(|f| !f.is_empty()) {
+            let faces: Vec<&fontdb::FaceInfo> = self
+                .db
+                .faces()
+                .filter(|f| {
+                    f.families
+                        .iter()
+                        .any(|(n, _)| n.eq_ignore_ascii_case(family))
+                })
+                .collect();
+            if faces.is_empty() {
+                continue;
+            }
+            let found = if let Some(style) = &style {
+                faces.iter().find(|f| {
+                    self.style_names(f)
+                        .iter()
+                        .any(|s| s.eq_ignore_ascii_case(style))
+                })
+            } else {
+                let want = weight.unwrap_or(400);
+                let wants_italic =
+                    |f: &&&fontdb::FaceInfo| (f.style != fontdb::Style::Normal) == italic;
+                faces
+                    .iter()
+                    .filter(wants_italic)
+                    .filter(|f| f.stretch == fontdb::Stretch::Normal)
+                    .min_by_key(|f| (f.weight.0 as i32 - want as i32).abs())
+                    .filter(|f| weight.is_none() || f.weight.0 == want)
+            };
+            return match found {
+                Some(f) => Ok(f.id),
+                None => Err(format!(
+                    "font `{name}`: family `{family}` has no such style (csgpix does not substitute fonts)"
+                )),
+            };
+        }
+        Err(format!(
+            "font `{name}` not found (searched CSGPIX_FONT_PATH, the bundled fonts and the system fonts)"
+        ))
+    }
+
+    /// A face's style names (typographic subfamily and subfamily, every language).
+    fn style_names(&self, f: &fontdb::FaceInfo) -> Vec<String> {
+        self.db
+            .with_face_data(f.id, |data, index| {
+                let Ok(face) = ttf_parser::Face::parse(data, index) else {
+                    return vec![];
+                };
+                face.names()
+                    .into_iter()
+                    .filter(|n| {
+                        n.name_id == ttf_parser::name_id::SUBFAMILY
+                            || n.name_id == ttf_parser::name_id::TYPOGRAPHIC_SUBFAMILY
+                    })
+                    .filter_map(|n| n.to_string())
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+}
+
+/// The arguments of one `text()` node.
+#[derive(Clone, Debug)]
+pub struct TextSpec {
+    /// The string.
+    pub text: String,
+    /// `size` (10): the scale of the em, see the module docs.
+    pub size: f64,
+    /// `spacing` (1): multiplies the advances.
+    pub spacing: f64,
+    /// `font`, fontconfig syntax; `""` is [`DEFAULT_FONT`].
+    pub font: String,
+    /// `direction`: `ltr`, `rtl`, `ttb`, `btt`; anything else lets the shaper guess.
+    pub direction: String,
+    /// `language` for the shaper (`en`).
+    pub language: String,
+    /// `script` as an ISO 15924 tag (`Latn`); anything else lets the shaper guess.
+    pub script: String,
+    /// `halign`: `left`, `center`, `right`.
+    pub halign: String,
+    /// `valign`: `top`, `center`, `baseline`, `bottom`.
+    pub valign: String,
+    /// Straight segments per Bézier segment.
+    pub segments: usize,
+}
+
+impl TextSpec {
+    /// OpenSCAD's defaults (`TextModule::instantiate`) with `$fn = 0, $fa = 12, $fs = 2`.
+    pub fn new(text: &str, size: f64) -> TextSpec {
+        TextSpec {
+            text: text.into(),
+            size,
+            spacing: 1.0,
+            font: String::new(),
+            direction: String::new(),
+            language: "en".into(),
+            script: String::new(),
+            halign: "left".into(),
+            valign: "baseline".into(),
+            segments: segments(size, 0.0, 12.0, 2.0),
+        }
+    }
+}
+
+/// `text_segments` of `TextModule::instantiate`: `max(floor(f / 8) + 1, 2)`.
+pub fn segments(size: f64, fn_: f64, fa: f64, fs: f64) -> usize {
+    let f = Resolution { fn_, fa, fs }.fragments_from_r(size);
+    ((f / 8.0).floor() + 1.0).max(2.0).min(MAX_FRAGMENTS as f64) as usize
+}
+
+/// One glyph's contours in outline units (26.6 / [`SCALE`]) and its 26.6 control box.
+#[derive(Default)]
+struct Outline {
+    n: usize,
+    to26: f64,
+    contours: Vec<Vec<DVec2>>,
+    pen: DVec2,
+    start: DVec2,
+    lo: DVec2,
+    hi: DVec2,
+}
+
+impl Outline {
+    fn p(&mut self, x: f32, y: f32) -> DVec2 {
+        let p26 = DVec2::new(x as f64, y as f64) * self.to26;
+        self.lo = self.lo.min(p26);
+        self.hi = self.hi.max(p26);
+        p26 / SCALE
+    }
+    fn add(&mut self, v: DVec2) {
+        if let Some(c) = self.contours.last_mut() {
+            c.push(v);
+        }
+    }
+}
+
+impl ttf_parser::OutlineBuilder for Outline {
+    fn move_to(&mut self, x: f32, y: f32) {
+        let v = self.p(x, y);
+        self.contours.push(vec![v]);
+        self.pen = v;
+        self.start = v;
+    }
+    fn line_to(&mut self, x: f32, y: f32) {
+        let v = self.p(x, y);
+        self.add(v);
+        self.pen = v;
+    }
+    fn quad_to(&mut self, x1: f32, y1: f32, x: f32, y: f32) {
+        let (c1, to) = (self.p(x1, y1), self.p(x, y));
+        let pen = self.pen;
+        for i in 1..=self.n {
+            let a = i as f64 * (1.0 / self.n as f64);
+            self.add(pen * (1.0 - a).powi(2) + c1 * 2.0 * (1.0 - a) * a + to * a.powi(2));
+        }
+        self.pen = to;
+    }
+    fn curve_to(&mut self, x1: f32, y1: f32, x2: f32, y2: f32, x: f32, y: f32) {
+        let (c1, c2, to) = (self.p(x1, y1), self.p(x2, y2), self.p(x, y));
+        let pen = self.pen;
+        for i in 1..=self.n {
+            let a = i as f64 * (1.0 / self.n as f64);
+            self.add(
+                pen * (1.0 - a).powi(3)
+                    + c1 * 3.0 * (1.0 - a).powi(2) * a
+                    + c2 * 3.0 * (1.0 - a) * a.powi(2)
+                    + to * a.powi(3),
+            );
+        }
+        self.pen = to;
+    }
+    fn close(&mut self) {
+        // FT_Outline_Decompose ends every contour with a line back to its start.
+        let s = self.start;
+        self.add(s);
+        self.pen = s;
+    }
+}
+
+/// 26.6 units per font unit at OpenSCAD's character size.
+fn units_26_6(face: &ttf_parser::Face) -> f64 {
+    let upem = face.units_per_em() as f64;
+    let mut ppem26 = ((SCALE as u64 * 100 + 36) / 72) as f64;
+    let head = face.raw_face().table(ttf_parser::Tag::from_bytes(b"head"));
+    let integer_ppem = head
+        .and_then(|h| h.get(16..18))
+        .is_some_and(|f| u16::from_be_bytes([f[0], f[1]]) & 8 != 0);
+    if integer_ppem && face.tables().glyf.is_some() {
+        ppem26 = ((ppem26 + 32.0) / 64.0).floor() * 64.0;
+    }
+    ppem26 / upem
+}
+
+/// The outline of a `text()` node in its own plane.
+/// At most `max_points` outline points are made (before the union).
+pub fn render(spec: &TextSpec, fonts: &Fonts, max_points: usize) -> Result<Poly2, String> {
+    let id = fonts.find(&spec.font)?;
+    if !matches!(spec.halign.as_str(), "left" | "right" | "center") {
+        return Err(format!(
+            "unknown halign `{}` (left, center or right)",
+            spec.halign
+        ));
+    }
+    if !matches!(
+        spec.valign.as_str(),
+        "top" | "center" | "baseline" | "bottom"
+    ) {
+        return Err(format!(
+            "unknown valign `{}` (top, center, baseline or bottom)",
+            spec.valign
+        ));
+    }
+    fonts
+        .db
+        .with_face_data(id, |data, index| render_face(spec, data, index, max_points))
+        .unwrap_or_else(|| Err(format!("font `{}` could not be read", spec.font)))
+}
+
+fn render_face(
+    spec: &TextSpec,
+    data: &[u8],
+    index: u32,
+    max_points: usize,
+) -> Result<Poly2, String> {
+    let face = rustybuzz::Face::from_slice(data, index)
+        .ok_or_else(|| format!("font `{}` could not be parsed", spec.font))?;
+    let to26 = units_26_6(&face);
+    let mut buffer = rustybuzz::UnicodeBuffer::new();
+    buffer.push_str(&spec.text);
+    if let Ok(d) = spec.direction.parse::<rustybuzz::Direction>() {
+        buffer.set_direction(d);
+    }
+    if let Some(s) = rustybuzz::Script::from_iso15924_tag(ttf_parser::Tag::from_bytes_lossy(
+        spec.script.as_bytes(),
+    )) {
+        buffer.set_script(s);
+    }
+    if let Ok(l) = spec.language.parse::<rustybuzz::Language>() {
+        buffer.set_language(l);
+    }
+    buffer.guess_segment_properties();
+    let horizontal = matches!(
+        buffer.direction(),
+        rustybuzz::Direction::LeftToRight | rustybuzz::Direction::RightToLeft
+    );
+    let shaped = rustybuzz::shape(&face, &[], buffer);
+    // Positions as hb-ft reports them: whole 26.6 units.
+    let pos26 = |v: i32| (v as f64 * to26).round();
+    let mut glyphs = Vec::new();
+    let mut points = 0usize;
+    for (info, pos) in shaped.glyph_infos().iter().zip(shaped.glyph_positions()) {
+        let mut o = Outline {
+            n: spec.segments,
+            to26,
+            lo: DVec2::splat(f64::INFINITY),
+            hi: DVec2::splat(f64::NEG_INFINITY),
+            ..Outline::default()
+        };
+        let id = ttf_parser::GlyphId(info.glyph_id as u16);
+        face.outline_glyph(id, &mut o);
+        points += o.contours.iter().map(Vec::len).sum::<usize>();
+        if points > max_points {
+            return Err(format!(
+                "the text's outline has more than the {max_points} points csgpix accepts (lower $fn or the size)"
+            ));
+        }
+        let mut pos = *pos;
+        if !horizontal {
+            // hb-ft's vertical metrics, which OpenSCAD gets: FreeType's TrueType loader makes
+            // them up for a font without `vmtx` (TT_Get_VMetrics, compute_glyph_metrics): the
+            // advance is sTypoAscender − sTypoDescender (hhea's without OS/2) and the origin
+            // lies `top = (advance − height) / 2` above the glyph's box; HarfBuzz's own
+            // fallback (rustybuzz) uses the font ascender and descender instead.
+            if face.tables().vmtx.is_none() {
+                let advance = match face.tables().os2 {
+                    Some(os2) => {
+                        os2.typographic_ascender() as i32 - os2.typographic_descender() as i32
+                    }
+                    None => face.ascender() as i32 - face.descender() as i32,
+                };
+                let (y_min, y_max) = face
+                    .glyph_bounding_box(id)
+                    .map_or((0, 0), |b| (b.y_min as i32, b.y_max as i32));
+                let top = (advance - (y_max - y_min)) / 2;
+                pos.y_offset = -(y_max + top);
+                pos.y_advance = -advance;
+            }
+        }
+        glyphs.push((o, pos));
+    }
+    let (mut width, mut ascend, mut descend) = (0.0f64, 0.0f64, 0.0f64);
+    for (o, pos) in &glyphs {
+        let pos = *pos;
+        // FT_Glyph_Get_CBox(FT_GLYPH_BBOX_GRIDFIT): an empty glyph's box is all zeros.
+        let (lo, hi) = if o.lo.x.is_finite() {
+            ((o.lo / 64.0).floor() * 64.0, (o.hi / 64.0).ceil() * 64.0)
+        } else {
+            (DVec2::ZERO, DVec2::ZERO)
+        };
+        if horizontal {
+            ascend = ascend.max((hi.y / UNSCALE).max(0.0));
+            descend = descend.max((-lo.y / UNSCALE).max(0.0));
+            width += pos26(pos.x_advance) / UNSCALE * spec.spacing;
+        } else {
+            width = width.max((hi.x - lo.x) / UNSCALE);
+            ascend += pos26(pos.y_advance) / UNSCALE * spec.spacing;
+        }
+    }
+    let x_offset = match spec.halign.as_str() {
+        "right" => -width,
+        "center" => -width / 2.0,
+        _ => 0.0,
+    };
+    let y_offset = match spec.valign.as_str() {
+        "top" => -ascend,
+        "center" => descend / 2.0 - ascend / 2.0,
+        "bottom" => descend,
+        _ => 0.0,
+    };
+    let mut advance = DVec2::ZERO;
+    let mut paths: Vec<Vec<[f64; 2]>> = Vec::new();
+    for (o, pos) in &glyphs {
+        let offset = DVec2::new(
+            x_offset + pos26(pos.x_offset) / UNSCALE,
+            y_offset + pos26(pos.y_offset) / UNSCALE,
+        );
+        for c in &o.contours {
+            paths.push(
+                c.iter()
+                    .map(|v| (spec.size * (*v + offset + advance)).to_array())
+                    .collect(),
+            );
+        }
+        advance += DVec2::new(
+            pos26(pos.x_advance) / UNSCALE * spec.spacing,
+            pos26(pos.y_advance) / UNSCALE * spec.spacing,
+        );
+    }
+    Ok(nonzero_union(paths))
+}
+
+/// The contours united with the nonzero rule, as simple paths (outer outlines and holes).
+fn nonzero_union(paths: Vec<Vec<[f64; 2]>>) -> Poly2 {
+    use i_overlay::core::fill_rule::FillRule;
+    use i_overlay::core::overlay_rule::OverlayRule;
+    use i_overlay::float::single::SingleFloatOverlay;
+    if paths.is_empty() {
+        return Poly2 { paths: vec![] };
+    }
+    let none: Vec<Vec<[f64; 2]>> = vec![];
+    let shapes = paths.overlay(&none, OverlayRule::Subject, FillRule::NonZero);
+    Poly2 {
+        paths: shapes
+            .into_iter()
+            .flatten()
+            .map(|c| c.into_iter().map(DVec2::from).collect())
+            .collect(),
+    }
+}
+
+/// A string argument, or its default.
+fn string(p: &Params, name: &str, default: &str) -> Result<String, Fail> {
+    match p.get(name) {
+        None => Ok(default.into()),
+        Some(v) => match &v.kind {
+            crate::value::Kind::Str(s) => Ok(s.clone()),
+            _ => fail(v.pos, format!("`{name}` must be a string")),
+        },
+    }
+}
+
+/// `text(text, size, font, direction, language, script, halign, valign, spacing, $fn, $fa,
+/// $fs)` as a shape in its own plane.
+pub(crate) fn text_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
+    let size = match p.number("size")? {
+        None => 10.0,
+        Some((s, at)) if !(s > 0.0 && s <= MAX_COORDINATE) => {
+            return fail(at, format!("`size` must be positive, found {s}"))
+        }
+        Some((s, _)) => s,
+    };
+    let spacing = match p.number("spacing")? {
+        None => 1.0,
+        Some((s, at)) if !(s.is_finite() && s.abs() <= MAX_COORDINATE) => {
+            return fail(at, "`spacing` must be a finite number")
+        }
+        Some((s, _)) => s,
+    };
+    let res = Resolution::read(p)?;
+    let spec = TextSpec {
+        text: string(p, "text", "")?,
+        size,
+        spacing,
+        font: string(p, "font", "")?,
+        direction: string(p, "direction", "")?,
+        language: string(p, "language", "en")?,
+        script: string(p, "script", "")?,
+        halign: string(p, "halign", "left")?,
+        valign: string(p, "valign", "baseline")?,
+        segments: segments(size, res.fn_, res.fa, res.fs),
+    };
+    let poly = render(&spec, Fonts::standard(), budget).map_err(|msg| Fail { pos: p.pos, msg })?;
+    check_budget(poly.points().count(), budget, p.pos)?;
+    Ok(poly)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::extrude::signed_area;
+
+    fn fonts() -> Fonts {
+        Fonts::new(&[bundled_font_dir().expect("vectors/fonts")], false)
+    }
+
+    fn draw(spec: &TextSpec) -> Poly2 {
+        render(spec, &fonts(), MAX_SCENE_VERTICES).unwrap()
+    }
+
+    fn bounds(p: &Poly2) -> (DVec2, DVec2) {
+        p.points().fold(
+            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+            |(lo, hi), q| (lo.min(q), hi.max(q)),
+        )
+    }
+
+    fn area(p: &Poly2) -> f64 {
+        p.paths.iter().map(|c| signed_area(c)).sum::<f64>().abs()
+    }
+
+    /// Even-odd: inside when a ray to +x crosses the outlines an odd number of times.
+    fn inside(p: &Poly2, q: DVec2) -> bool {
+        let mut odd = false;
+        for c in &p.paths {
+            for i in 0..c.len() {
+                let (a, b) = (c[i], c[(i + 1) % c.len()]);
+                if (a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) / (b.y - a.y) * (b.x - a.x)
+                {
+                    odd = !odd;
+                }
+            }
+        }
+        odd
+    }
+
+    #[test]
+    fn fonts_are_found_by_fontconfig_names() {
+        let f = fonts();
+        let regular = f.find("").unwrap();
+        assert_eq!(f.find("Liberation Sans").unwrap(), regular);
+        assert_eq!(f.find("Liberation Sans:style=Regular").unwrap(), regular);
+        let bold = f.find("Liberation Sans:style=Bold").unwrap();
+        assert_ne!(bold, regular);
+        assert_eq!(f.find("liberation sans:bold").unwrap(), bold);
+        assert!(f.find("Liberation Serif").is_ok());
+        let e = f.find("Nope Sans").unwrap_err();
+        assert!(e.contains("`Nope Sans` not found"), "{e}");
+        let e = f.find("Liberation Serif:style=Bold").unwrap_err();
+        assert!(e.contains("no such style"), "{e}");
+        // A fallback list takes the first family present.
+        assert_eq!(
+            f.find("Nope Sans,Liberation Sans:style=Bold").unwrap(),
+            bold
+        );
+    }
+
+    #[test]
+    fn a_missing_font_is_an_error_at_the_node() {
+        let text = "linear_extrude(height = 1)\n  text(text = \"a\", font = \"No Such Font:style=Bold\");\n";
+        let e = crate::parse_csg(text, "t.csg").unwrap_err().to_string();
+        assert!(e.starts_with("t.csg:2:3: "), "{e}");
+        assert!(e.contains("No Such Font"), "{e}");
+        let text = "linear_extrude(height = 1) text(text = \"a\", halign = \"middle\");";
+        let e = crate::parse_csg(text, "t.csg").unwrap_err().to_string();
+        assert!(e.starts_with("t.csg:1:28: ") && e.contains("halign"), "{e}");
+        // 400 glyphs of at least 50,000 points each (the scene's guard is 20 million).
+        let many = "o".repeat(400);
+        let text = format!("linear_extrude(height = 1) text(text = \"{many}\", $fn = 1e9);");
+        let text = text.as_str();
+        let e = crate::parse_csg(text, "t.csg").unwrap_err().to_string();
+        assert!(e.starts_with("t.csg:1:28: ") && e.contains("points"), "{e}");
+    }
+
+    #[test]
+    fn alignment_offsets_follow_openscad() {
+        let at = |h: &str, v: &str| {
+            let mut s = TextSpec::new("HHH", 10.0);
+            s.halign = h.into();
+            s.valign = v.into();
+            bounds(&draw(&s)).0
+        };
+        let base = at("left", "baseline");
+        let (right, center) = (at("right", "baseline"), at("center", "baseline"));
+        // The width is the sum of the advances (hmtx: "HHH" has no kerning), scaled by
+        // 1/1.024e5 per 26.6 unit where the outlines are scaled by 1/1e5.
+        let width = base.x - right.x;
+        let f = fonts();
+        let expect =
+            f.db.with_face_data(f.find("").unwrap(), |data, index| {
+                let face = ttf_parser::Face::parse(data, index).unwrap();
+                let h = face.glyph_index('H').unwrap();
+                let adv26 = (face.glyph_hor_advance(h).unwrap() as f64 * units_26_6(&face)).round();
+                3.0 * 10.0 * adv26 / UNSCALE
+            })
+            .unwrap();
+        assert!((width - expect).abs() < 1e-9, "{width} {expect}");
+        assert!((base.x - center.x - width / 2.0).abs() < 1e-9);
+        let (top, bottom, middle) = (
+            at("left", "top"),
+            at("left", "bottom"),
+            at("left", "center"),
+        );
+        let (asc, desc) = (base.y - top.y, bottom.y - base.y);
+        assert!(asc > 9.0 && asc < 11.0, "{asc}");
+        assert!(desc.abs() < 1e-9, "{desc}"); // H has no descent
+        let g = |v: &str| {
+            let mut s = TextSpec::new("g", 10.0);
+            s.valign = v.into();
+            bounds(&draw(&s)).0.y
+        };
+        assert!((middle.y - base.y - (desc - asc) / 2.0).abs() < 1e-9);
+        let g_desc = g("bottom") - g("baseline");
+        assert!(g_desc > 1.5 && g_desc < 3.5, "{g_desc}");
+    }
+
+    #[test]
+    fn holes_are_holes_and_overlaps_unite() {
+        for ch in ["o", "A"] {
+            let p = draw(&TextSpec::new(ch, 10.0));
+            assert_eq!(p.paths.len(), 2, "{ch}");
+            let (lo, hi) = bounds(&p);
+            let mid = (lo + hi) / 2.0;
+            // 'o': the centre is in the hole; 'A': the hole is above its middle.
+            let hole = if ch == "o" {
+                mid
+            } else {
+                DVec2::new(mid.x, lo.y + (hi.y - lo.y) * 0.45)
+            };
+            assert!(!inside(&p, hole), "{ch}");
+            let ink = if ch == "o" {
+                DVec2::new(lo.x + 0.3, mid.y)
+            } else {
+                DVec2::new(mid.x, hi.y - 0.3)
+            };
+            assert!(inside(&p, ink), "{ch}");
+        }
+        // Two glyphs drawn over each other (no spacing) are their union (nonzero), not
+        // cancelled (even-odd).
+        let one = area(&draw(&TextSpec::new("o", 10.0)));
+        let mut two = TextSpec::new("oo", 10.0);
+        two.spacing = 0.0;
+        assert!((area(&draw(&two)) - one).abs() < 1e-6 * one, "{one}");
+    }
+
+    #[test]
+    fn fn_sets_the_segments_per_curve_as_openscad() {
+        // max(floor(f / 8) + 1, 2), f from get_fragments_from_r(size, $fn, $fs, $fa).
+        assert_eq!(segments(10.0, 0.0, 12.0, 2.0), 4); // f = 30
+        assert_eq!(segments(1.0, 0.0, 12.0, 2.0), 2); // f = 5
+        assert_eq!(segments(10.0, 16.0, 12.0, 2.0), 3);
+        assert_eq!(segments(10.0, 64.0, 12.0, 2.0), 9);
+        assert_eq!(segments(10.0, 3.0, 12.0, 2.0), 2);
+        let points = |n: usize| {
+            let mut s = TextSpec::new("o", 10.0);
+            s.segments = n;
+            draw(&s).points().count()
+        };
+        // 'o' is all quadratic curves: the points grow with the segments per curve.
+        let (a, b) = (points(2), points(9));
+        assert!(b > 4 * a - 8 && b > a, "{a} {b}");
+    }
+}
