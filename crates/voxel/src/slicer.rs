@@ -96,7 +96,10 @@ pub struct Slicer {
     pub grid: Grid,
     /// The depth word (§2.3.1).
     pub fmt: WordFormat,
-    /// One display list per solid (§5.2), in the frame of [`Slicer::frame`].
+    /// One display list per solid (§5.2), in the frame of [`Slicer::frame`], with its
+    /// silhouette planes; every perpendicular plane's K is scaled to the word
+    /// (`csgpix_draw::project::scale_perpendicular`), so it is a multiple of the distance in
+    /// pixels, not the distance.
     pub lists: Vec<DisplayList>,
     /// Raw depth-word units per slab (a whole number, so slab planes are exact words; even
     /// under centre sampling, so the voxel centres are exact words too).
