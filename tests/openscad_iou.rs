@@ -61,9 +61,10 @@ fn iou(a: &[bool], b: &[bool]) -> f64 {
 
 /// IoU of csgpix's voxels of the scene `csg` against the voxels of OpenSCAD's mesh `stl` on
 /// the same 64³ grid, under `sampling`, and the IoU counting only voxels whose centres lie
-/// farther from every face of the scene's convex solids than the depth word's plane error,
-/// 2^-(F+1)·(1 + x + y) pixels (docs/depth-word.md; 0.063 voxel at the far corner of 64²):
-/// there the word, not the geometry, decides. Err when csgpix refuses the scene.
+/// farther from every face of the scene's convex solids than 2^-(F+1)·(1 + x + y) pixels
+/// (0.063 voxel at the far corner of 64²): a perpendicular plane's error while its K was in
+/// pixels, a generous margin since K is scaled to the word (docs/depth-word.md). Err when
+/// csgpix refuses the scene.
 fn compare(csg: &Path, stl: &Path, sampling: &str, dir: &Path) -> Result<(f64, f64), String> {
     compare_model(csg, stl, sampling, "word", dir)
 }
@@ -144,7 +145,7 @@ fn off_faces(csg: &Path, lo: [f64; 3], hi: [f64; 3]) -> Vec<bool> {
         return vec![true; n * n * n];
     };
     let grid = csgpix::voxel::Grid::new([n; 3], DVec3::from(lo), DVec3::from(hi)).unwrap();
-    // The word's plane error at the far corner, 2^-(F+1)·(1 + x + y) pixels (thesis word).
+    // 2^-(F+1)·(1 + x + y) pixels at the far corner (thesis word): K's error in pixels.
     let v = grid.voxel();
     let tol = (1.0 + 2.0 * n as f64) / 2048.0 * v.x.max(v.y);
     let planes: Vec<_> = scene.solids.iter().map(common::face_planes).collect();

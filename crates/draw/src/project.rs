@@ -200,6 +200,50 @@ pub fn silhouette_planes(frame: &Frame, s: &ConvexSolid, colour: u32) -> Vec<DlP
     planes
 }
 
+/// The factor a perpendicular plane's K is multiplied by before it is quantized for a
+/// `width`×`height` array: the largest power of two (at least 1) that keeps |K| at every
+/// pixel within half the largest word.
+///
+/// The array reads only the sign of K (§2.3.3, §2.3.4: K < 0 outside, K ≥ 0 inside), so any
+/// positive multiple of the distance is the same plane to it; but each of K0, dKx, dKy is
+/// rounded to 2^-(F+1), so K in pixels (|dKx|, |dKy| ≤ 1) puts the trace up to
+/// 2^-(F+1)·(1 + x + y) pixels off: 0.06 pixel at the far corner of 64×64 with the thesis's
+/// word, enough to move pixel columns near a face in and out of a solid (docs/depth-word.md).
+/// Scaled by s the trace is off by that over s. A plane whose trace crosses the window has
+/// |K| ≤ width + height pixels at its corners, so s ≥ (largest word)/(4·(width + height)):
+/// 4096 at 64×64, 1024 at 256×256 with the thesis's word. A power of two scales every f64
+/// sum of the exact model exactly, so `float` draws the same pixels either way.
+pub fn perpendicular_scale(p: &DlPlane, fmt: &WordFormat, width: usize, height: usize) -> f64 {
+    let (xm, ym) = (
+        width.saturating_sub(1) as f64,
+        height.saturating_sub(1) as f64,
+    );
+    let largest = [(0.0, 0.0), (xm, 0.0), (0.0, ym), (xm, ym)]
+        .iter()
+        .map(|&(x, y)| (p.z0 + x * p.dzx + y * p.dzy).abs())
+        .fold(0.0, f64::max);
+    let room = fmt.to_real(fmt.max_word()) / 2.0;
+    if !(largest > 0.0 && largest.is_finite()) || largest >= room {
+        return 1.0;
+    }
+    // 2^k with 2^k·largest <= room; k < 64 keeps every product exact and finite.
+    let k = (room / largest).log2().floor().clamp(0.0, 63.0) as i32;
+    let s = 2f64.powi(k);
+    if s * largest > room {
+        s / 2.0
+    } else {
+        s
+    }
+}
+
+/// Multiply every perpendicular plane's K0, dKx, dKy in `dl` by its [`perpendicular_scale`].
+pub fn scale_perpendicular(dl: &mut DisplayList, fmt: &WordFormat, width: usize, height: usize) {
+    for p in dl.planes.iter_mut().filter(|p| p.y) {
+        let s = perpendicular_scale(p, fmt, width, height);
+        (p.z0, p.dzx, p.dzy) = (p.z0 * s, p.dzx * s, p.dzy * s);
+    }
+}
+
 /// Convex hull, counter-clockwise (positive signed area), without collinear points
 /// (Andrew's monotone chain).
 fn convex_hull(mut pts: Vec<glam::DVec2>) -> Vec<glam::DVec2> {
@@ -497,6 +541,60 @@ mod tests {
         let one_overflow_bit = WordFormat::new(10, 10, 1).unwrap();
         let s = max_slope(&one_overflow_bit, 250, 250);
         assert!(s > 2.0 && s < 2.1, "{s}");
+    }
+
+    #[test]
+    fn perpendicular_planes_scale_to_the_word_and_keep_their_sign() {
+        let fmt = WordFormat::THESIS;
+        let room = fmt.to_real(fmt.max_word()) / 2.0;
+        // A wall at 7° through (20.3, 11.7) on a 64×64 array, K in pixels.
+        let (c, s) = (7f64.to_radians().cos(), 7f64.to_radians().sin());
+        let k = DlPlane {
+            z0: 20.3 * c + 11.7 * s,
+            dzx: -c,
+            dzy: -s,
+            colour: 1,
+            h: false,
+            y: true,
+            l: false,
+        };
+        let scale = perpendicular_scale(&k, &fmt, 64, 64);
+        // |K| is largest at (63, 63), 48.6 pixels: 2^14·48.6 within 2^20, half the word.
+        assert_eq!(scale, 16384.0);
+        assert_eq!(scale.log2().fract(), 0.0);
+        let mut dl = DisplayList {
+            planes: vec![k.clone()],
+            terminator: 1234,
+        };
+        scale_perpendicular(&mut dl, &fmt, 64, 64);
+        let scaled = &dl.planes[0];
+        crate::compile::check_window(std::slice::from_ref(&dl), &fmt, 64, 64).unwrap();
+        let q = crate::compile::coeffs(&fmt, scaled.z0, scaled.dzx, scaled.dzy).unwrap();
+        let unscaled = crate::compile::coeffs(&fmt, k.z0, k.dzx, k.dzy).unwrap();
+        let (mut worst, mut worst_unscaled) = (0f64, 0f64);
+        for y in 0..64i64 {
+            for x in 0..64i64 {
+                let exact = k.z0 + x as f64 * k.dzx + y as f64 * k.dzy;
+                let v = scaled.z0 + x as f64 * scaled.dzx + y as f64 * scaled.dzy;
+                // A power of two scales the f64 sum exactly: the float model is unchanged.
+                assert_eq!(v, exact * scale);
+                assert!(v.abs() <= room);
+                let word = fmt.to_real(q.c0 + x * q.dx + y * q.dy) / scale;
+                worst = worst.max((word - exact).abs());
+                let word = fmt.to_real(unscaled.c0 + x * unscaled.dx + y * unscaled.dy);
+                worst_unscaled = worst_unscaled.max((word - exact).abs());
+            }
+        }
+        // The trace: within 2^-11·127 pixels unscaled, that over 16384 scaled.
+        let e = 127.0 / 2048.0;
+        assert!(worst <= e / scale, "{worst}");
+        assert!(worst_unscaled > 100.0 * worst, "{worst_unscaled} {worst}");
+        // Never shrunk, and a plane already too large for the word is left alone.
+        let far = DlPlane {
+            z0: 3.0e6,
+            ..k.clone()
+        };
+        assert_eq!(perpendicular_scale(&far, &fmt, 64, 64), 1.0);
     }
 
     #[test]

@@ -4,7 +4,9 @@
 use glam::{DMat3, DVec3};
 use rtl_model::{ArrayConfig, WordFormat};
 
-use csgpix_draw::project::{display_lists, max_slope, silhouette_planes, Frame, DEPTH_MARGIN};
+use csgpix_draw::project::{
+    display_lists, max_slope, scale_perpendicular, silhouette_planes, Frame, DEPTH_MARGIN,
+};
 use csgpix_scene::display_list::DisplayList;
 use csgpix_scene::grid::Grid;
 use csgpix_scene::solid::CsgScene;
@@ -94,7 +96,10 @@ pub struct Slicer {
     pub grid: Grid,
     /// The depth word (§2.3.1).
     pub fmt: WordFormat,
-    /// One display list per solid (§5.2), in the frame of [`Slicer::frame`].
+    /// One display list per solid (§5.2), in the frame of [`Slicer::frame`], with its
+    /// silhouette planes; every perpendicular plane's K is scaled to the word
+    /// (`csgpix_draw::project::scale_perpendicular`), so it is a multiple of the distance in
+    /// pixels, not the distance.
     pub lists: Vec<DisplayList>,
     /// Raw depth-word units per slab (a whole number, so slab planes are exact words; even
     /// under centre sampling, so the voxel centres are exact words too).
@@ -168,7 +173,7 @@ impl Slicer {
             Sampling::Slab => max_slope(&fmt, w, h),
             Sampling::Centre => voxel_slope(&fmt, w, h),
         };
-        let lists = solid_lists(scene, &frame, slope_limit);
+        let lists = solid_lists(scene, &frame, slope_limit, &fmt, w, h);
         let colours = lists
             .iter()
             .map(|dl| dl.planes.first().map_or(1, |p| p.colour.min(255) as u8))
@@ -266,12 +271,23 @@ fn slab_raw(grid: &Grid, fmt: &WordFormat, sampling: Sampling) -> Result<i64> {
 }
 
 /// One display list per solid in `frame` (§5.2), its silhouette planes added so that it
-/// shows nothing outside its outline at any depth.
-fn solid_lists(scene: &CsgScene, frame: &Frame, slope_limit: f64) -> Vec<DisplayList> {
+/// shows nothing outside its outline at any depth, every perpendicular plane's K scaled to
+/// the word on a `w`×`h` array ([`scale_perpendicular`]: the array reads only K's sign, and
+/// the scale s takes the rounding of K0, dKx, dKy from up to 2^-(F+1)·(1 + x + y) pixels off
+/// the trace to that over s, s ≥ 4096 at 64×64 with the thesis's word: 1.5e-5 pixel).
+fn solid_lists(
+    scene: &CsgScene,
+    frame: &Frame,
+    slope_limit: f64,
+    fmt: &WordFormat,
+    w: usize,
+    h: usize,
+) -> Vec<DisplayList> {
     let mut lists = display_lists(scene, frame, slope_limit);
     for (dl, solid) in lists.iter_mut().zip(&scene.solids) {
         let colour = dl.planes.first().map_or(1, |p| p.colour);
         dl.planes.extend(silhouette_planes(frame, solid, colour));
+        scale_perpendicular(dl, fmt, w, h);
     }
     lists
 }
