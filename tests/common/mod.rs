@@ -114,3 +114,38 @@ pub fn peak_mib(args: &[&str]) -> u64 {
     );
     (usage.ru_maxrss as u64).div_ceil(1024)
 }
+
+/// The triangles of an OFF mesh as OpenSCAD writes it (each face fanned from its first
+/// vertex); None when the text is not such a mesh.
+#[allow(dead_code)]
+pub fn off_triangles(text: &str) -> Option<Vec<[[f64; 3]; 3]>> {
+    let mut words = text.split_whitespace();
+    if words.next()? != "OFF" {
+        return None;
+    }
+    let mut next = || words.next();
+    let nv: usize = next()?.parse().ok()?;
+    let nf: usize = next()?.parse().ok()?;
+    next()?;
+    let mut v = Vec::with_capacity(nv);
+    for _ in 0..nv {
+        let mut p = [0.0; 3];
+        for c in &mut p {
+            *c = next()?.parse().ok()?;
+        }
+        v.push(p);
+    }
+    let mut tris = vec![];
+    for _ in 0..nf {
+        let k: usize = next()?.parse().ok()?;
+        let mut f = Vec::with_capacity(k);
+        for _ in 0..k {
+            let i: usize = next()?.parse().ok()?;
+            f.push(*v.get(i)?);
+        }
+        for i in 1..k.saturating_sub(1) {
+            tris.push([f[0], f[i], f[i + 1]]);
+        }
+    }
+    Some(tris)
+}
