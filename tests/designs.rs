@@ -15,7 +15,7 @@ use std::time::Instant;
 
 use csgpix::blist::BlistEval;
 use csgpix::sampled::load_imports;
-use csgpix::scad::{parse_csg_with, Fallback, ReadOptions};
+use csgpix::scad::Fallback;
 use csgpix::solid::{CsgNode, CsgScene, Import};
 use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
 use glam::DVec3;
@@ -104,27 +104,69 @@ struct Row {
     fallback: bool,
 }
 
-fn measure(name: &str, openscad_s: f64, fallback: Fallback) -> Row {
+/// csgpix's voxels of a design's CSG export through the command line (`csgpix voxelize
+/// --res 64 --bounds …`, `route` word or float), its wall time, or its one-line refusal; a run
+/// past [`TIMEOUT`] is stopped and counted as refused.
+fn csgpix_voxels(
+    csg: &Path,
+    (lo, hi): (DVec3, DVec3),
+    model: &str,
+    fallback: Fallback,
+) -> Result<(Vec<bool>, f64), String> {
+    let out = csg.with_extension(format!("{model}.nrrd"));
+    let bounds = format!("{},{},{},{},{},{}", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+    let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"));
+    cmd.args(["voxelize", csg.to_str().unwrap(), "--res", "64", "--bounds", &bounds]);
+    cmd.args(["--model", model, "-o", out.to_str().unwrap()]);
+    if fallback == Fallback::Openscad {
+        cmd.args(["--fallback", "openscad"]);
+    }
+    cmd.stdout(std::process::Stdio::null());
+    cmd.stderr(std::process::Stdio::piped());
+    let t = Instant::now();
+    let mut child = cmd.spawn().unwrap();
+    while child.try_wait().unwrap().is_none() {
+        if t.elapsed().as_secs_f64() > TIMEOUT {
+            let _ = child.kill();
+            let _ = child.wait();
+            return Err(format!("over {TIMEOUT} s"));
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    let seconds = t.elapsed().as_secs_f64();
+    let o = child.wait_with_output().unwrap();
+    if !o.status.success() {
+        let e = String::from_utf8_lossy(&o.stderr);
+        let last = e.lines().rfind(|l| !l.contains("warning:")).unwrap_or("");
+        return Err(last.trim_start_matches("csgpix: ").to_string());
+    }
+    let (_, v) = csgpix::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
+    Ok((v.iter().map(|&c| c != 0).collect(), seconds))
+}
+
+/// A design's run stops after this many seconds (the corpus's median is well under one).
+const TIMEOUT: f64 = 60.0;
+
+fn measure(name: &str, openscad_s: f64, fallback: Fallback, tmp: &Path) -> Row {
     let csg = mesh_file(&format!("{name}.csg")).expect("the CSG export");
     let off = mesh_file(&format!("{name}.off")).expect("OpenSCAD's mesh");
     let tris = common::off_triangles(&off).expect("an OFF mesh");
     let (mesh, lo, hi) = reference(tris);
     let grid = Grid::new([N; 3], lo, hi).unwrap();
+    // The export beside the design's own files, so its relative file names resolve.
     let folder = designs().join(name);
-    let base = if folder.is_dir() { folder } else { designs() };
-    let options = ReadOptions {
-        fallback,
-        dir: Some(base.clone()),
-    };
+    let base = if folder.is_dir() { folder } else { tmp.to_path_buf() };
+    let file = base.join(format!(".{name}.test.csg"));
+    std::fs::write(&file, &csg).unwrap();
     let outcome = (|| {
-        let t = Instant::now();
-        let scene = parse_csg_with(&csg, name, &options).map_err(|e| e.to_string())?;
-        let word = occupancy(&scene, &base, &grid, Route::Intervals)?;
-        let seconds = t.elapsed().as_secs_f64();
-        let float = occupancy(&scene, &base, &grid, Route::Float)?;
+        let (word, seconds) = csgpix_voxels(&file, (lo, hi), "word", fallback)?;
+        let (float, _) = csgpix_voxels(&file, (lo, hi), "float", fallback)?;
         let theirs = occupancy(&mesh, &base, &grid, Route::Float)?;
         Ok((iou(&word, &theirs), iou(&float, &theirs), seconds))
     })();
+    for f in [file.clone(), file.with_extension("word.nrrd"), file.with_extension("float.nrrd")] {
+        let _ = std::fs::remove_file(f);
+    }
     Row {
         name: name.to_string(),
         openscad_s,
@@ -143,13 +185,14 @@ fn have_openscad() -> bool {
 #[test]
 fn real_world_designs_against_openscad() {
     let times = std::fs::read_to_string(designs().join("meshes/times.tsv")).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
     let mut rows = vec![];
     for line in times.lines().skip(1) {
         let f: Vec<&str> = line.split('\t').collect();
         let (name, seconds) = (f[0], f[1].parse::<f64>().unwrap_or(f64::NAN));
-        let mut row = measure(name, seconds, Fallback::Refuse);
+        let mut row = measure(name, seconds, Fallback::Refuse, tmp.path());
         if row.outcome.is_err() && have_openscad() {
-            let again = measure(name, seconds, Fallback::Openscad);
+            let again = measure(name, seconds, Fallback::Openscad, tmp.path());
             if again.outcome.is_ok() {
                 row = again;
             }

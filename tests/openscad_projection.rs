@@ -100,6 +100,7 @@ fn compare(name: &str) -> Result<(f64, f64), String> {
             mesh: Some(Arc::new(tris)),
         }],
         root: CsgNode::Solid(0),
+        warnings: vec![],
     };
     let b = occupancy(&theirs, &grid, Route::Float);
     let a = occupancy(&ours, &grid, Route::Float);

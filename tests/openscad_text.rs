@@ -92,6 +92,7 @@ fn mesh_scene(tris: Vec<Tri>) -> CsgScene {
             mesh: Some(Arc::new(tris)),
         }],
         root: CsgNode::Solid(0),
+        warnings: vec![],
     }
 }
 

@@ -41,16 +41,15 @@ pub fn hull3(points: &[DVec3]) -> Result<(Vec<DVec3>, Vec<Vec<usize>>)> {
             continue;
         }
         let horizon = horizon(&faces, &seen);
-        let mut kept: Vec<Face> = faces
-            .iter()
-            .zip(&seen)
-            .filter(|(_, s)| !**s)
-            .map(|(f, _)| f.clone())
-            .collect();
+        // In place: a hull of tens of thousands of points (a Minkowski sum) adds nearly all.
+        let mut k = 0;
+        faces.retain(|_| {
+            k += 1;
+            !seen[k - 1]
+        });
         for (a, b) in horizon {
-            kept.push(Face::new(points, [a, b, i]));
+            faces.push(Face::new(points, [a, b, i]));
         }
-        faces = kept;
     }
     Ok(merge_coplanar(points, &faces, eps))
 }
