@@ -3,7 +3,9 @@
 # OpenSCAD's CSG export (meshes/NAME.csg, gzipped when over 200 kB) and OpenSCAD's own CGAL
 # mesh (meshes/NAME.off.gz). The wall time of the mesh step goes to meshes/times.tsv
 # (name, seconds, status: ok, timeout or fail:RC). Needs `openscad` (Debian's 2021.01 made
-# the checked-in files) and the Liberation fonts (fonts-liberation2) for text().
+# the checked-in files) and the fonts the designs name for text(): Liberation (fonts-liberation2), Roboto
+# (fonts-roboto) and Inter (fonts-inter); fridge-magnet-letters asks for Ubuntu Bold, which
+# Debian does not package: OpenSCAD draws it in its fallback font, csgpix refuses it.
 #
 #   sh generate.sh              # every design
 #   sh generate.sh NAME...      # only these (their rows of times.tsv are replaced)

@@ -388,10 +388,16 @@ pub(crate) fn face_indices(face: &Value, points: usize) -> Result<Vec<usize>, Fa
             return fail(item.pos, msg);
         }
         let i = v as usize;
-        if indices.contains(&i) {
-            return fail(item.pos, format!("point {i} appears twice in one face"));
+        // A point repeated at once is one corner (OpenSCAD takes such faces too).
+        if indices.last() != Some(&i) {
+            indices.push(i);
         }
-        indices.push(i);
+    }
+    if indices.len() > 1 && indices.first() == indices.last() {
+        indices.pop();
+    }
+    if indices.len() < 3 {
+        return fail(face.pos, "a face needs 3 distinct points at least");
     }
     Ok(indices)
 }

@@ -631,10 +631,15 @@ impl<'a> Reader<'a> {
         let tris = match how {
             Extrusion::Linear(l) => linear_mesh(p, l, &sin_cos_degrees),
             Extrusion::Rotate { angle, fragments } => {
-                rotate_mesh(p, *angle, *fragments, &sin_cos_degrees).map_err(|e| Fail {
-                    pos: to.pos,
-                    msg: e.message,
-                })?
+                match rotate_mesh(p, *angle, *fragments, &sin_cos_degrees) {
+                    Ok(tris) => tris,
+                    // OpenSCAD 2021.01 reports this as an error and draws nothing for the
+                    // node, but goes on with the rest of the design: so does csgpix.
+                    Err(e) => {
+                        self.warnings.push((to.pos, format!("{} (nothing drawn)", e.message)));
+                        return Ok(CsgNode::Empty);
+                    }
+                }
             }
         };
         if tris.is_empty() {

@@ -700,3 +700,23 @@ fn a_minkowski_sum_past_the_vertex_budget_is_refused_where_it_stands() {
         "{e}"
     );
 }
+
+/// OpenSCAD reports a `rotate_extrude` of a shape on both sides of the axis as an error but
+/// draws the rest of the design: csgpix warns and goes on.
+#[test]
+fn rotate_extrude_across_the_axis_draws_nothing_and_goes_on() {
+    let s = parse("cube(1);\nrotate_extrude() square(size = [2, 1], center = true);");
+    assert_eq!((s.solids.len(), s.imports.len()), (1, 0));
+    assert_eq!(s.root, CsgNode::Solid(0));
+    let w = s.warnings[0].to_string();
+    assert!(w.starts_with("test.csg:2:1: warning:") && w.contains("X coordinate sign"), "{w}");
+}
+
+/// A face that names a point twice in a row has that corner once, as OpenSCAD reads it.
+#[test]
+fn a_point_repeated_in_a_face_is_one_corner() {
+    let doubled = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 1, 3, 2]]");
+    assert_eq!(only_solid(&doubled), only_solid(TETRAHEDRON));
+    let e = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 3, 3]]");
+    assert_err(&e, 1, 109, "3 distinct points");
+}
