@@ -116,7 +116,14 @@ fn csgpix_voxels(
     let out = csg.with_extension(format!("{model}.nrrd"));
     let bounds = format!("{},{},{},{},{},{}", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
     let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"));
-    cmd.args(["voxelize", csg.to_str().unwrap(), "--res", "64", "--bounds", &bounds]);
+    cmd.args([
+        "voxelize",
+        csg.to_str().unwrap(),
+        "--res",
+        "64",
+        "--bounds",
+        &bounds,
+    ]);
     cmd.args(["--model", model, "-o", out.to_str().unwrap()]);
     if fallback == Fallback::Openscad {
         cmd.args(["--fallback", "openscad"]);
@@ -155,7 +162,11 @@ fn measure(name: &str, openscad_s: f64, fallback: Fallback, tmp: &Path) -> Row {
     let grid = Grid::new([N; 3], lo, hi).unwrap();
     // The export beside the design's own files, so its relative file names resolve.
     let folder = designs().join(name);
-    let base = if folder.is_dir() { folder } else { tmp.to_path_buf() };
+    let base = if folder.is_dir() {
+        folder
+    } else {
+        tmp.to_path_buf()
+    };
     let file = base.join(format!(".{name}.test.csg"));
     std::fs::write(&file, &csg).unwrap();
     let outcome = (|| {
@@ -164,7 +175,11 @@ fn measure(name: &str, openscad_s: f64, fallback: Fallback, tmp: &Path) -> Row {
         let theirs = occupancy(&mesh, &base, &grid, Route::Float)?;
         Ok((iou(&word, &theirs), iou(&float, &theirs), seconds))
     })();
-    for f in [file.clone(), file.with_extension("word.nrrd"), file.with_extension("float.nrrd")] {
+    for f in [
+        file.clone(),
+        file.with_extension("word.nrrd"),
+        file.with_extension("float.nrrd"),
+    ] {
         let _ = std::fs::remove_file(f);
     }
     Row {

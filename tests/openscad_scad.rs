@@ -174,3 +174,51 @@ fn fallback_meshes_what_csgpix_does_not_draw() {
         .collect();
     assert!(left.is_empty());
 }
+
+/// A 2D import (SVG) under `--fallback openscad`: openscad's outline, extruded by csgpix,
+/// gives the voxels of OpenSCAD's own mesh.
+#[test]
+fn fallback_outlines_a_2d_import() {
+    if !have_openscad() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"20mm\" height=\"20mm\" \
+               viewBox=\"0 0 20 20\"><path d=\"M 2 2 L 18 2 L 18 18 L 2 18 Z M 6 6 L 6 14 \
+               L 14 14 L 14 6 Z\"/></svg>\n";
+    std::fs::write(dir.path().join("frame.svg"), svg).unwrap();
+    let scad = "translate([1, 0, 0]) linear_extrude(height = 3) import(\"frame.svg\");\n";
+    let (code, _, e) = run(dir.path(), scad, &[]);
+    assert_eq!(code, Some(2), "refused by default: {e}");
+    assert!(e.contains("p.scad:1:") && e.contains("frame.svg"), "{e}");
+    let bounds = ["--bounds", "0,-1,-1,22,21,4"];
+    let mut args = vec!["--fallback", "openscad"];
+    args.extend(bounds);
+    let (code, _, e) = run(dir.path(), scad, &args);
+    assert_eq!(code, Some(0), "{e}");
+    assert!(e.contains("outlined by openscad"), "{e}");
+    let ours = occupancy(&dir.path().join("p.nrrd"));
+    let stl = dir.path().join("whole.stl");
+    let ok = std::process::Command::new("openscad")
+        .arg("-o")
+        .arg(&stl)
+        .arg(dir.path().join("p.scad"))
+        .output()
+        .unwrap()
+        .status
+        .success();
+    assert!(ok);
+    let csg = dir.path().join("whole.csg");
+    std::fs::write(&csg, "import(\"whole.stl\");\n").unwrap();
+    let theirs_out = dir.path().join("whole.nrrd");
+    let mut a = vec!["voxelize", csg.to_str().unwrap(), "--res", "16"];
+    a.extend(bounds);
+    a.extend(["-o", theirs_out.to_str().unwrap()]);
+    let o = csgpix(&a);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let theirs = occupancy(&theirs_out);
+    let both = ours.iter().zip(&theirs).filter(|(a, b)| **a && **b).count();
+    let either = ours.iter().zip(&theirs).filter(|(a, b)| **a || **b).count();
+    assert!(both > 100, "a real solid: {both} voxels");
+    assert_eq!(both, either, "the same voxels");
+}

@@ -7,6 +7,17 @@ use glam::DVec3;
 
 use csgpix_scene::trimesh::TriMesh;
 
+use crate::extrude::Region;
+
+/// OpenSCAD's outline of one 2D statement (an SVG or DXF import): the section at z = 0 of
+/// its mesh of `linear_extrude(height = 2, center = true) { statement }`.
+pub(crate) fn outline(statement: &str, dir: Option<&Path>) -> Result<Region, String> {
+    let wrapped = format!("linear_extrude(height = 2, center = true) {{\n{statement}\n}}\n");
+    let tris = mesh(&wrapped, dir)?;
+    let tris: Vec<[[f64; 3]; 3]> = tris.iter().map(|t| t.map(|v| v.to_array())).collect();
+    Ok(crate::project::mesh_section(&tris))
+}
+
 /// OpenSCAD's mesh of one statement of `.csg` text (its children included), in the
 /// statement's own coordinates: `openscad -o sub.stl .csgpix-fallback.XXXX.csg`, the
 /// statement written into `dir` (the scene's directory) so its relative file names are found.

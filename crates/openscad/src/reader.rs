@@ -56,6 +56,18 @@ pub(crate) struct Frame {
     pub(crate) placement: Option<Mat4>,
 }
 
+/// An `import` of a 2D file (`.svg`, `.dxf`), which csgpix does not read itself.
+fn flat_import(head: &Head) -> bool {
+    head.kind == NodeKind::Import
+        && head.params.get("file").is_some_and(|v| match &v.kind {
+            Kind::Str(f) => {
+                let f = f.to_ascii_lowercase();
+                f.ends_with(".svg") || f.ends_with(".dxf")
+            }
+            _ => false,
+        })
+}
+
 /// The dimension of an operation's children.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Dim {
@@ -223,12 +235,18 @@ impl<'a> Reader<'a> {
                 return self.deliver(node);
             }
         }
+        let start = self.parser.peek()?.span.0;
         let head = self.head()?;
         let parent = self.open.last().map(|f| f.ctx.clone()).unwrap_or_default();
         let ctx = child_ctx(&parent, &head)?;
         if head.kind.is_leaf() {
             let context = format!("after `{}(…)` (it takes no children)", head.kind.name());
             self.parser.expect_sym(b';', &context)?;
+            if self.options.fallback == Fallback::Openscad && flat_import(&head) {
+                let source = &self.text[start..self.parser.last_end];
+                let node = self.fallback_flat(source, &head, &ctx)?;
+                return self.deliver(node);
+            }
             let node = self.leaf(&head, &ctx)?;
             return self.deliver(node);
         }
@@ -415,6 +433,29 @@ impl<'a> Reader<'a> {
         let msg = format!("`{name}` meshed by openscad (--fallback openscad): {count} triangles");
         self.warnings.push((pos, msg));
         Ok(Some(Item::Solid(node)))
+    }
+
+    /// `--fallback openscad` of a 2D import (`.svg`, `.dxf`): openscad's outline of it, as a
+    /// 2D shape placed by the transforms above it.
+    fn fallback_flat(
+        &mut self,
+        source: &str,
+        head: &Head,
+        ctx: &Ctx,
+    ) -> Result<Option<Item>, Fail> {
+        if ctx.skip {
+            return Ok(None);
+        }
+        let region =
+            crate::fallback::outline(source, self.options.dir.as_deref()).map_err(|msg| Fail {
+                pos: head.pos,
+                msg: format!("`import` (--fallback openscad): {msg}"),
+            })?;
+        let m = plane_part(ctx.matrix.as_ref());
+        let region = crate::project::map_region(region, &|p| p.transformed(m));
+        let msg = "`import` of a 2D file outlined by openscad (--fallback openscad)".to_string();
+        self.warnings.push((head.pos, msg));
+        Ok(Some(Item::Flat(region, head.pos)))
     }
 
     /// Consumes one statement whole: its byte range, and whether a `%` or `*` drops it.
@@ -636,7 +677,8 @@ impl<'a> Reader<'a> {
                     // OpenSCAD 2021.01 reports this as an error and draws nothing for the
                     // node, but goes on with the rest of the design: so does csgpix.
                     Err(e) => {
-                        self.warnings.push((to.pos, format!("{} (nothing drawn)", e.message)));
+                        self.warnings
+                            .push((to.pos, format!("{} (nothing drawn)", e.message)));
                         return Ok(CsgNode::Empty);
                     }
                 }

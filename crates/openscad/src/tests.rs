@@ -709,7 +709,10 @@ fn rotate_extrude_across_the_axis_draws_nothing_and_goes_on() {
     assert_eq!((s.solids.len(), s.imports.len()), (1, 0));
     assert_eq!(s.root, CsgNode::Solid(0));
     let w = s.warnings[0].to_string();
-    assert!(w.starts_with("test.csg:2:1: warning:") && w.contains("X coordinate sign"), "{w}");
+    assert!(
+        w.starts_with("test.csg:2:1: warning:") && w.contains("X coordinate sign"),
+        "{w}"
+    );
 }
 
 /// A face that names a point twice in a row has that corner once, as OpenSCAD reads it.

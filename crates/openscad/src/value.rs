@@ -64,6 +64,8 @@ pub(crate) struct Arg {
 pub(crate) struct Parser<'a> {
     pub(crate) lexer: Lexer<'a>,
     pub(crate) ahead: VecDeque<Token>,
+    /// The byte after the last token taken.
+    pub(crate) last_end: usize,
 }
 
 impl<'a> Parser<'a> {
@@ -71,6 +73,7 @@ impl<'a> Parser<'a> {
         Parser {
             lexer: Lexer::new(text),
             ahead: VecDeque::new(),
+            last_end: 0,
         }
     }
 
@@ -87,10 +90,12 @@ impl<'a> Parser<'a> {
     }
 
     pub(crate) fn next(&mut self) -> Result<Token, Fail> {
-        match self.ahead.pop_front() {
-            Some(token) => Ok(token),
-            None => self.lexer.next_token(),
-        }
+        let token = match self.ahead.pop_front() {
+            Some(token) => token,
+            None => self.lexer.next_token()?,
+        };
+        self.last_end = token.span.1;
+        Ok(token)
     }
 
     pub(crate) fn at_sym(&mut self, c: u8) -> Result<bool, Fail> {
