@@ -831,6 +831,12 @@ impl<'a> Reader<'a> {
         }
         let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
         let mut acc: Option<Vec<Piece>> = None;
+        // The operands are placed (M x = L x + t) before they are summed, and M(A) ⊕ M(B) =
+        // M(A ⊕ B) + t: each operand after the first brings the translation once too often.
+        let t = frame
+            .ctx
+            .matrix
+            .map_or(DVec3::ZERO, |m| DVec3::new(m[0][3], m[1][3], m[2][3]));
         for c in &frame.children {
             let p = pieces(c, &self.solids, &self.imports).map_err(at)?;
             if p.is_empty() {
@@ -838,7 +844,11 @@ impl<'a> Reader<'a> {
             }
             acc = Some(match acc {
                 None => p,
-                Some(a) => minkowski3(&a, &p, budget).map_err(at)?,
+                Some(a) => minkowski3(&a, &p, budget)
+                    .map_err(at)?
+                    .into_iter()
+                    .map(|q| q.moved(-t))
+                    .collect(),
             });
         }
         for c in &frame.children {
@@ -884,6 +894,9 @@ impl<'a> Reader<'a> {
         }
         let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
         let mut acc: Option<Vec<Piece2>> = None;
+        // As in 3D: the placed operands carry the plane translation once each.
+        let [[_, _, tx], [_, _, ty]] = plane_part(frame.ctx.matrix.as_ref());
+        let t = glam::DVec2::new(tx, ty);
         for r in &frame.flats {
             let p = pieces2(r);
             if p.is_empty() {
@@ -891,10 +904,14 @@ impl<'a> Reader<'a> {
             }
             acc = Some(match acc {
                 None => p,
-                Some(a) => minkowski2(&a, &p, budget).map_err(|msg| Fail {
-                    pos,
-                    msg: format!("minkowski(): {msg}"),
-                })?,
+                Some(a) => minkowski2(&a, &p, budget)
+                    .map_err(|msg| Fail {
+                        pos,
+                        msg: format!("minkowski(): {msg}"),
+                    })?
+                    .into_iter()
+                    .map(|q| q.moved(-t))
+                    .collect(),
             });
         }
         let parts: Vec<Region> = acc

@@ -723,3 +723,30 @@ fn a_point_repeated_in_a_face_is_one_corner() {
     let e = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 3, 3]]");
     assert_err(&e, 1, 109, "3 distinct points");
 }
+
+/// A Minkowski sum under a transform is the transformed sum: the placed operands' translation
+/// counts once (3D and 2D).
+#[test]
+fn a_minkowski_sum_under_a_translation_is_moved_once() {
+    let bounds = |s: &CsgScene| {
+        let pts: Vec<[f64; 3]> = s.solids.iter().flat_map(|x| x.vertices.clone()).collect();
+        let lo = pts
+            .iter()
+            .fold([f64::MAX; 3], |a, p| [0, 1, 2].map(|i| a[i].min(p[i])));
+        let hi = pts
+            .iter()
+            .fold([f64::MIN; 3], |a, p| [0, 1, 2].map(|i| a[i].max(p[i])));
+        (lo, hi)
+    };
+    let s = parse(
+        "multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, 7], [0, 0, 0, 1]]) minkowski() { \
+         cube(size = [10, 10, 1]); cylinder(h = 1, r = 2, $fn = 4); cube(1); }",
+    );
+    assert_eq!(bounds(&s), ([3.0, 3.0, 7.0], [18.0, 18.0, 10.0]));
+    let s = parse(
+        "multmatrix([[1, 0, 0, 3], [0, 1, 0, 4], [0, 0, 1, 0], [0, 0, 0, 1]]) \
+         linear_extrude(height = 1) multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, 0], \
+         [0, 0, 0, 1]]) minkowski() { square([4, 4]); circle(r = 1, $fn = 4); }",
+    );
+    assert_eq!(bounds(&s), ([7.0, 8.0, 0.0], [13.0, 14.0, 1.0]));
+}
