@@ -52,7 +52,7 @@ fn occupancy(
         sampled,
         ..SlicerOptions::default()
     };
-    let slicer = Slicer::new(scene, grid.clone(), opts).map_err(|e| e.to_string())?;
+    let slicer = Slicer::new(scene, *grid, opts).map_err(|e| e.to_string())?;
     let eval = BlistEval::new(&scene.root);
     let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), &eval, &|| {})
         .map_err(|e| e.to_string())?;

@@ -490,6 +490,26 @@ fn shifted(p: &Poly2, d: DVec2) -> Poly2 {
     }
 }
 
+impl Piece {
+    /// The piece moved by `d`.
+    pub(crate) fn moved(self, d: DVec3) -> Piece {
+        match self {
+            Piece::Convex(v) => Piece::Convex(v.into_iter().map(|p| p + d).collect()),
+            Piece::Mesh(m) => Piece::Mesh(translated(&m, d)),
+        }
+    }
+}
+
+impl Piece2 {
+    /// The piece moved by `d`.
+    pub(crate) fn moved(self, d: DVec2) -> Piece2 {
+        match self {
+            Piece2::Convex(v) => Piece2::Convex(v.into_iter().map(|p| p + d).collect()),
+            Piece2::Shape(s) => Piece2::Shape(shifted(&s, d)),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -647,25 +667,5 @@ mod tests {
         }
         let m = mesh_of(&CsgNode::Union(leaves), &solids, &imports).unwrap();
         assert!((volume(&m) - 16.0).abs() < 1e-6, "{}", volume(&m));
-    }
-}
-
-impl Piece {
-    /// The piece moved by `d`.
-    pub(crate) fn moved(self, d: DVec3) -> Piece {
-        match self {
-            Piece::Convex(v) => Piece::Convex(v.into_iter().map(|p| p + d).collect()),
-            Piece::Mesh(m) => Piece::Mesh(translated(&m, d)),
-        }
-    }
-}
-
-impl Piece2 {
-    /// The piece moved by `d`.
-    pub(crate) fn moved(self, d: DVec2) -> Piece2 {
-        match self {
-            Piece2::Convex(v) => Piece2::Convex(v.into_iter().map(|p| p + d).collect()),
-            Piece2::Shape(s) => Piece2::Shape(shifted(&s, d)),
-        }
     }
 }
