@@ -312,6 +312,14 @@ pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Polyhedron, F
         .iter()
         .map(|f| face_indices(f, points.len()))
         .collect::<Result<Vec<_>, _>>()?;
+    // A face of fewer than 3 distinct corners encloses nothing: OpenSCAD drops it too.
+    let faces: Vec<Vec<usize>> = faces.into_iter().filter(|f| f.len() >= 3).collect();
+    if faces.is_empty() {
+        return fail(
+            params.pos,
+            "polyhedron refused: no face has 3 distinct points",
+        );
+    }
     let refused = |msg: String| Fail {
         pos: params.pos,
         msg: format!("polyhedron refused: {msg}"),
@@ -395,9 +403,6 @@ pub(crate) fn face_indices(face: &Value, points: usize) -> Result<Vec<usize>, Fa
     }
     if indices.len() > 1 && indices.first() == indices.last() {
         indices.pop();
-    }
-    if indices.len() < 3 {
-        return fail(face.pos, "a face needs 3 distinct points at least");
     }
     Ok(indices)
 }

@@ -584,7 +584,14 @@ impl<'a> Reader<'a> {
         // Twisted or unevenly scaled walls are triangulated between slices, which does not
         // commute with booleans: those take the booleans in the plane first, as OpenSCAD.
         let triangulated = matches!(frame.spec, Spec::Linear(a) if !a.linear.keeps_convex());
-        if triangulated && !matches!(region, Region::Poly(_)) {
+        // A shape reaching across the axis may leave only one side after the 2D booleans
+        // (OpenSCAD revolves their result): those are taken in the plane first too.
+        let mut xs = vec![];
+        collect_points(&region, &mut xs);
+        let across = matches!(frame.spec, Spec::Rotate { .. })
+            && xs.iter().any(|p| p.x < 0.0)
+            && xs.iter().any(|p| p.x > 0.0);
+        if (triangulated || across) && !matches!(region, Region::Poly(_)) {
             region = Region::Poly(flatten(&region));
         }
         let mut pts = vec![];

@@ -720,8 +720,9 @@ fn rotate_extrude_across_the_axis_draws_nothing_and_goes_on() {
 fn a_point_repeated_in_a_face_is_one_corner() {
     let doubled = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 1, 3, 2]]");
     assert_eq!(only_solid(&doubled), only_solid(TETRAHEDRON));
-    let e = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 3, 3]]");
-    assert_err(&e, 1, 109, "3 distinct points");
+    // A face of two distinct corners is dropped (it encloses nothing).
+    let extra = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 3, 2], [1, 3, 3]]");
+    assert_eq!(only_solid(&extra), only_solid(TETRAHEDRON));
 }
 
 /// A Minkowski sum under a transform is the transformed sum: the placed operands' translation
@@ -749,4 +750,16 @@ fn a_minkowski_sum_under_a_translation_is_moved_once() {
          [0, 0, 0, 1]]) minkowski() { square([4, 4]); circle(r = 1, $fn = 4); }",
     );
     assert_eq!(bounds(&s), ([7.0, 8.0, 0.0], [13.0, 14.0, 1.0]));
+}
+
+/// A shape across the axis that the 2D booleans cut back to one side is revolved, as
+/// OpenSCAD revolves the result of its 2D booleans.
+#[test]
+fn rotate_extrude_of_a_boolean_cut_to_one_side_is_revolved() {
+    let s = parse(
+        "rotate_extrude($fn = 16) intersection() { circle(r = 2, $fn = 16); \
+         square(size = [1, 1]); }",
+    );
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    assert_eq!(s.imports.len(), 1, "one revolved mesh");
 }
