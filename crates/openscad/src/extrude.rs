@@ -671,8 +671,10 @@ fn offset_convex(p: &[DVec2], o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> 
                 out.push(corner + bis * (d / bis.dot(n1).max(1e-12)));
             }
             Offset::Delta { chamfer: true, .. } => {
-                out.push(corner + n0 * d);
-                out.push(corner + n1 * d);
+                // Clipper's square join: the corner cut square to its bisector at distance d.
+                let dx = (n0.perp_dot(n1).atan2(n0.dot(n1)) / 4.0).tan();
+                out.push(corner + (n0 + n0.perp() * dx) * d);
+                out.push(corner + (n1 - n1.perp() * dx) * d);
             }
             Offset::Round { fragments, .. } => {
                 let (a0, a1) = (n0.y.atan2(n0.x), n1.y.atan2(n1.x));
@@ -902,7 +904,10 @@ mod tests {
             &sc,
         )
         .unwrap();
-        assert!((area(&chamfer) - 14.0).abs() < 1e-12);
+        // Clipper's square join (OpenSCAD's chamfer): each corner cut square to its bisector
+        // at distance 1, a right isosceles triangle of height √2 − 1 off the mitred square.
+        let h = 2.0_f64.sqrt() - 1.0;
+        assert!((area(&chamfer) - (16.0 - 4.0 * h * h)).abs() < 1e-12);
         let round = offset(
             &sq,
             Offset::Round {
