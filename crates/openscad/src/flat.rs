@@ -208,7 +208,7 @@ pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Option<Poly2>, Fai
                     if s.iter().any(|c| *c <= 0.0) {
                         return Ok(None);
                     }
-                    if s.iter().any(|c| !(*c <= MAX_COORDINATE)) {
+                    if s.iter().any(|c| c.is_nan() || *c > MAX_COORDINATE) {
                         return fail(v.pos, "`size` exceeds the coordinate limit");
                     }
                     s

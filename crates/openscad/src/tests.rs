@@ -533,7 +533,7 @@ fn size_limits() {
     );
     // 2250 rings of 4500 points: two such spheres pass the scene's vertex guard.
     let one = "sphere($fn = 4500, r = 1);";
-    assert!(2 * 2250 * 4500 > MAX_SCENE_VERTICES && 2250 * 4500 < MAX_SCENE_VERTICES);
+    const { assert!(2 * 2250 * 4500 > MAX_SCENE_VERTICES && 2250 * 4500 < MAX_SCENE_VERTICES) };
     assert_err(&one.repeat(2), 1, one.len() + 1, "vertices");
 }
 
