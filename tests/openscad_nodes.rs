@@ -216,8 +216,12 @@ fn offset_of_a_holed_square_extruded() {
 #[test]
 fn unsupported_uses_are_refused_with_line_and_column() {
     assert!(err("group() {\n  square(size = 1);\n}").starts_with("t.csg:2:3: a 2D shape outside"));
-    assert!(err("union() { cube(size = 1);\n square(size = 1); }")
-        .starts_with("t.csg:1:1: `union` mixes 2D and 3D"));
+    // A 2D child beside 3D ones is ignored with OpenSCAD's warning (no longer refused).
+    let s = parse("union() { cube(size = 1);\n square(size = 1); }");
+    assert!(s
+        .warnings
+        .iter()
+        .any(|w| w.to_string().contains("Ignoring 2D child object")));
     let e = err(
         "hull() { difference() { cube(size = 2); import(file = \"d.nrrd\", threshold = 1); } }",
     );
@@ -240,8 +244,12 @@ fn unsupported_uses_are_refused_with_line_and_column() {
         e.starts_with("t.csg:1:36: `scale` must not be negative"),
         "{e}"
     );
-    let e = err("linear_extrude(height = 1) cube(size = 1);");
-    assert!(e.contains("linear_extrude"), "{e}");
+    // A 3D child of an extrusion is ignored with OpenSCAD's warning.
+    let s = parse("linear_extrude(height = 1) cube(size = 1);");
+    assert!(s
+        .warnings
+        .iter()
+        .any(|w| w.to_string().contains("Ignoring 3D child object")));
 }
 
 #[test]
