@@ -446,25 +446,205 @@ impl Offset {
     }
 }
 
-/// `offset` of a region, where csgpix can: a single convex outline by any amount, and a union
-/// by a positive amount (a Minkowski sum distributes over union). Err names what is not.
+/// `offset` of a region. A single convex outline by any amount, and a union of them by a
+/// positive amount (a Minkowski sum distributes over union), are offset exactly
+/// ([`offset_convex`]); every other region as OpenSCAD 2021.01 does it ([`clipper_offset`]).
 pub fn offset(region: &Region, o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> Result<Region> {
+    if let Some(r) = offset_exact(region, o, sincos) {
+        return Ok(r);
+    }
+    Ok(Region::Poly(clipper_offset(&flatten(region), o, sincos)))
+}
+
+/// The exact path: None unless every shape is one convex outline (and, under a union, the
+/// offset is outward).
+fn offset_exact(region: &Region, o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> Option<Region> {
     match region {
-        Region::Union(parts) if o.amount() >= 0.0 => Ok(Region::Union(
+        Region::Union(parts) if o.amount() >= 0.0 => Some(Region::Union(
             parts
                 .iter()
-                .map(|p| offset(p, o, sincos))
-                .collect::<Result<_, _>>()?,
+                .map(|p| offset_exact(p, o, sincos))
+                .collect::<Option<_>>()?,
         )),
         Region::Poly(p) => {
-            let outline = p.convex_outline().ok_or(
-                "offset() of a concave or holed shape is not supported (csgpix offsets single convex outlines, and unions of them outward)",
-            )?;
-            Ok(Region::Poly(Poly2 {
+            let outline = p.convex_outline()?;
+            Some(Region::Poly(Poly2 {
                 paths: vec![offset_convex(&outline, o, sincos)],
             }))
         }
-        _ => Err("offset() of a 2D difference or intersection (or inward offset of a union) is not supported".into()),
+        _ => None,
+    }
+}
+
+/// OpenSCAD 2021.01's fixed Clipper scale (`CLIPPER_SCALE` in `src/clipper-utils.h`).
+const CLIPPER_SCALE: f64 = 65536.0;
+
+/// Clipper's `Round`: half away from zero.
+fn cround(v: f64) -> f64 {
+    if v < 0.0 {
+        (v - 0.5).trunc()
+    } else {
+        (v + 0.5).trunc()
+    }
+}
+
+/// OpenSCAD 2021.01's `offset` of a flattened shape (outer outlines and holes, even-odd):
+/// `ClipperUtils::applyOffset`, that is Clipper 6.4's `ClipperOffset` on the outlines scaled by
+/// 2¹⁶ and truncated to integers, outer outlines counter-clockwise and holes clockwise, with
+/// `jtRound` for `r` (the arc tolerance `|r|·(1 − cos(180°/fragments))`), `jtMiter` with miter
+/// limit 10⁶ for `delta`, `jtSquare` for `chamfer`; then the union of the offset outlines by the
+/// positive winding rule (Clipper's clean-up of the corners), here with `i_overlay`.
+pub fn clipper_offset(shape: &Poly2, o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> Poly2 {
+    use i_overlay::core::fill_rule::FillRule;
+    use i_overlay::core::overlay_rule::OverlayRule;
+    use i_overlay::float::single::SingleFloatOverlay;
+    // The outlines as Clipper's AddPath keeps them: integer points, repeats dropped, fewer
+    // than three points skipped. `flatten` gives each shape's outer outline first.
+    let mut src: Vec<Vec<DVec2>> = vec![];
+    for path in &shape.paths {
+        let mut p: Vec<DVec2> = path.iter().map(|v| (*v * CLIPPER_SCALE).trunc()).collect();
+        p.dedup();
+        while p.len() > 1 && p.first() == p.last() {
+            p.pop();
+        }
+        if p.len() >= 3 {
+            src.push(p);
+        }
+    }
+    // Orientation: which outlines are holes, by nesting (the even-odd structure); outer
+    // outlines counter-clockwise, holes clockwise (OpenSCAD's sanitized polygons).
+    let inside_count = |i: usize| {
+        let q = src[i][0];
+        src.iter()
+            .enumerate()
+            .filter(|&(j, p)| j != i && contains(p, q))
+            .count()
+    };
+    let holes: Vec<bool> = (0..src.len()).map(|i| inside_count(i) % 2 == 1).collect();
+    for (p, &hole) in src.iter_mut().zip(&holes) {
+        if (signed_area(p) < 0.0) != hole {
+            p.reverse();
+        }
+    }
+    let delta = o.amount() * CLIPPER_SCALE;
+    let mut dest: Vec<Vec<[f64; 2]>> = vec![];
+    if delta.abs() < 1e-20 {
+        dest = src
+            .iter()
+            .map(|p| p.iter().map(|v| v.to_array()).collect())
+            .collect();
+    } else {
+        // DoOffset's set-up.
+        let miter_lim = 2.0 / (1e6 * 1e6);
+        let arc_tolerance = match o {
+            Offset::Round { r, fragments } => {
+                let (_, c) = sincos(180.0 / fragments as f64);
+                r.abs() * (1.0 - c) * CLIPPER_SCALE
+            }
+            // OpenSCAD computes it for every join type; only jtRound uses it.
+            Offset::Delta { .. } => 0.0,
+        };
+        let y = if arc_tolerance <= 0.0 {
+            0.25
+        } else if arc_tolerance > delta.abs() * 0.25 {
+            delta.abs() * 0.25
+        } else {
+            arc_tolerance
+        };
+        let mut steps = std::f64::consts::PI / (1.0 - y / delta.abs()).acos();
+        if steps > delta.abs() * std::f64::consts::PI {
+            steps = delta.abs() * std::f64::consts::PI;
+        }
+        let two_pi = 2.0 * std::f64::consts::PI;
+        let (mut m_sin, m_cos) = ((two_pi / steps).sin(), (two_pi / steps).cos());
+        let steps_per_rad = steps / two_pi;
+        if delta < 0.0 {
+            m_sin = -m_sin;
+        }
+        for p in &src {
+            if delta <= 0.0 && p.len() < 3 {
+                continue;
+            }
+            let len = p.len();
+            let normals: Vec<DVec2> = (0..len)
+                .map(|j| {
+                    let d = p[(j + 1) % len] - p[j];
+                    if d == DVec2::ZERO {
+                        DVec2::ZERO
+                    } else {
+                        let f = 1.0 / (d.x * d.x + d.y * d.y).sqrt();
+                        DVec2::new(d.y * f, -d.x * f)
+                    }
+                })
+                .collect();
+            let mut out: Vec<[f64; 2]> = vec![];
+            let mut put = |v: DVec2| out.push([cround(v.x), cround(v.y)]);
+            let mut k = len - 1;
+            for j in 0..len {
+                let (nk, nj, pj) = (normals[k], normals[j], p[j]);
+                let mut sin_a = nk.x * nj.y - nj.x * nk.y;
+                let cos_a = nk.x * nj.x + nj.y * nk.y;
+                if (sin_a * delta).abs() < 1.0 {
+                    if cos_a > 0.0 {
+                        put(pj + nk * delta);
+                        continue;
+                    }
+                } else {
+                    sin_a = sin_a.clamp(-1.0, 1.0);
+                }
+                if sin_a * delta < 0.0 {
+                    put(pj + nk * delta);
+                    put(pj);
+                    put(pj + nj * delta);
+                } else {
+                    let square = |put: &mut dyn FnMut(DVec2)| {
+                        let dx = (sin_a.atan2(cos_a) / 4.0).tan();
+                        put(pj + DVec2::new(nk.x - nk.y * dx, nk.y + nk.x * dx) * delta);
+                        put(pj + DVec2::new(nj.x + nj.y * dx, nj.y - nj.x * dx) * delta);
+                    };
+                    match o {
+                        Offset::Delta { chamfer: false, .. } => {
+                            let r = 1.0 + (nj.x * nk.x + nj.y * nk.y);
+                            if r >= miter_lim {
+                                let q = delta / r;
+                                put(pj + (nk + nj) * q);
+                            } else {
+                                square(&mut put);
+                            }
+                        }
+                        Offset::Delta { chamfer: true, .. } => square(&mut put),
+                        Offset::Round { .. } => {
+                            let a = sin_a.atan2(cos_a);
+                            let n = (cround(steps_per_rad * a.abs()) as i64).max(1);
+                            let (mut x, mut y) = (nk.x, nk.y);
+                            for _ in 0..n {
+                                put(pj + DVec2::new(x, y) * delta);
+                                let x2 = x;
+                                x = x * m_cos - m_sin * y;
+                                y = x2 * m_sin + y * m_cos;
+                            }
+                            put(pj + nj * delta);
+                        }
+                    }
+                }
+                k = j;
+            }
+            dest.push(out);
+        }
+    }
+    let none: Vec<Vec<[f64; 2]>> = vec![];
+    let shapes = dest.overlay(&none, OverlayRule::Subject, FillRule::Positive);
+    Poly2 {
+        paths: shapes
+            .into_iter()
+            .flatten()
+            .filter(|c| c.len() >= 3)
+            .map(|c| {
+                c.into_iter()
+                    .map(|v| DVec2::from(v) / CLIPPER_SCALE)
+                    .collect()
+            })
+            .collect(),
     }
 }
 
@@ -491,8 +671,10 @@ fn offset_convex(p: &[DVec2], o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> 
                 out.push(corner + bis * (d / bis.dot(n1).max(1e-12)));
             }
             Offset::Delta { chamfer: true, .. } => {
-                out.push(corner + n0 * d);
-                out.push(corner + n1 * d);
+                // Clipper's square join: the corner cut square to its bisector at distance d.
+                let dx = (n0.perp_dot(n1).atan2(n0.dot(n1)) / 4.0).tan();
+                out.push(corner + (n0 + n0.perp() * dx) * d);
+                out.push(corner + (n1 - n1.perp() * dx) * d);
             }
             Offset::Round { fragments, .. } => {
                 let (a0, a1) = (n0.y.atan2(n0.x), n1.y.atan2(n1.x));
@@ -722,7 +904,10 @@ mod tests {
             &sc,
         )
         .unwrap();
-        assert!((area(&chamfer) - 14.0).abs() < 1e-12);
+        // Clipper's square join (OpenSCAD's chamfer): each corner cut square to its bisector
+        // at distance 1, a right isosceles triangle of height √2 − 1 off the mitred square.
+        let h = 2.0_f64.sqrt() - 1.0;
+        assert!((area(&chamfer) - (16.0 - 4.0 * h * h)).abs() < 1e-12);
         let round = offset(
             &sq,
             Offset::Round {
@@ -743,16 +928,112 @@ mod tests {
         )
         .unwrap();
         assert!((area(&inward) - 1.0).abs() < 1e-12);
+        // A square minus itself is empty, and so is its offset.
         let diff = Region::Difference(vec![sq.clone(), sq.clone()]);
-        assert!(offset(
+        let empty = offset(
             &diff,
             Offset::Delta {
                 delta: 1.0,
-                chamfer: false
+                chamfer: false,
             },
-            &sc
+            &sc,
         )
-        .is_err());
+        .unwrap();
+        assert_eq!(region_area(&empty), 0.0);
+    }
+
+    /// Even-odd area of a region flattened.
+    fn region_area(r: &Region) -> f64 {
+        flatten(r)
+            .paths
+            .iter()
+            .map(|p| signed_area(p))
+            .sum::<f64>()
+            .abs()
+    }
+
+    /// An L: the 4×4 square minus its 2×2 top-right quarter (area 12, perimeter 16, one
+    /// reflex corner).
+    fn ell() -> Region {
+        let p = |x, y| DVec2::new(x, y);
+        Region::Poly(Poly2 {
+            paths: vec![vec![
+                p(0.0, 0.0),
+                p(4.0, 0.0),
+                p(4.0, 2.0),
+                p(2.0, 2.0),
+                p(2.0, 4.0),
+                p(0.0, 4.0),
+            ]],
+        })
+    }
+
+    fn round(r: f64, fragments: usize) -> Offset {
+        Offset::Round { r, fragments }
+    }
+
+    fn delta(delta: f64, chamfer: bool) -> Offset {
+        Offset::Delta { delta, chamfer }
+    }
+
+    #[test]
+    fn an_l_offset_outward_and_inward() {
+        let tol = 1e-6;
+        // Round outward: A + P·r, plus a quarter disc at each of the five convex corners
+        // (the fragment polygon's, 360 fragments), minus the r×r square where the two strips
+        // along the reflex corner's edges overlap.
+        let r = 0.5;
+        let n = 360.0_f64;
+        let poly_circle = 0.5 * n * r * r * (2.0 * std::f64::consts::PI / n).sin();
+        let a = region_area(&offset(&ell(), round(r, 360), &sc).unwrap());
+        assert!(
+            (a - (12.0 + 16.0 * r + 1.25 * poly_circle - r * r)).abs() < 1e-4,
+            "{a}"
+        );
+        // Mitred outward: [−0.5, 4.5]² minus the corner [2.5, 4.5]².
+        let a = region_area(&offset(&ell(), delta(0.5, false), &sc).unwrap());
+        assert!((a - (25.0 - 4.0)).abs() < tol, "{a}");
+        // Mitred inward: the L shrunk by 0.5: [0.5, 3.5]×[0.5, 1.5] ∪ [0.5, 1.5]×[0.5, 3.5].
+        let a = region_area(&offset(&ell(), delta(-0.5, false), &sc).unwrap());
+        assert!((a - (3.0 + 3.0 - 1.0)).abs() < tol, "{a}");
+        // Round inward equals mitred inward away from the reflex corner, which becomes an arc
+        // of radius 0.5 around (2, 2): the quarter disc's corner square minus the quarter disc.
+        let a = region_area(&offset(&ell(), round(-0.5, 360), &sc).unwrap());
+        let corner = 0.25 - std::f64::consts::PI * 0.25 / 4.0;
+        assert!((a - (5.0 + corner)).abs() < 1e-3, "{a}");
+        // Chamfer outward (Clipper's square join: the corner cut square to its bisector at
+        // distance 0.5 from the corner): each of the five convex corners loses, from the
+        // mitred offset, a right isosceles triangle of height 0.5·(√2 − 1).
+        let a = region_area(&offset(&ell(), delta(0.5, true), &sc).unwrap());
+        let h = 0.5 * (2.0_f64.sqrt() - 1.0);
+        assert!((a - (21.0 - 5.0 * h * h)).abs() < 1e-4, "{a}");
+    }
+
+    #[test]
+    fn a_square_with_a_hole_offset_inward_and_outward() {
+        // [0, 10]² minus [4, 6]²: area 96.
+        let holed = Region::Difference(vec![
+            Region::Poly(Poly2::square(10.0, 10.0, false)),
+            Region::Poly(
+                Poly2::square(2.0, 2.0, false).transformed([[1.0, 0.0, 4.0], [0.0, 1.0, 4.0]]),
+            ),
+        ]);
+        let a = region_area(&offset(&holed, delta(-1.0, false), &sc).unwrap());
+        assert!((a - (64.0 - 16.0)).abs() < 1e-6, "{a}");
+        let a = region_area(&offset(&holed, delta(1.0, false), &sc).unwrap());
+        assert!((a - 144.0).abs() < 1e-6, "{a}");
+        // Outward by 1.5 the hole closes.
+        let a = region_area(&offset(&holed, delta(1.5, false), &sc).unwrap());
+        assert!((a - 169.0).abs() < 1e-6, "{a}");
+        // The inward offset of a union of two touching squares is one rectangle shrunk.
+        let two = Region::Union(vec![
+            Region::Poly(Poly2::square(2.0, 2.0, false)),
+            Region::Poly(
+                Poly2::square(2.0, 2.0, false).transformed([[1.0, 0.0, 2.0], [0.0, 1.0, 0.0]]),
+            ),
+        ]);
+        let a = region_area(&offset(&two, round(-0.5, 36), &sc).unwrap());
+        assert!((a - 3.0).abs() < 1e-6, "{a}");
     }
 
     #[test]
