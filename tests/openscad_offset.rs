@@ -52,7 +52,7 @@ fn occupancy(scene: &CsgScene, grid: &Grid, route: Route) -> Vec<bool> {
         sampled,
         ..SlicerOptions::default()
     };
-    let slicer = Slicer::new(scene, grid.clone(), opts).unwrap();
+    let slicer = Slicer::new(scene, *grid, opts).unwrap();
     let eval = BlistEval::new(&scene.root);
     let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), &eval, &|| {}).unwrap();
     v.voxels.iter().map(|&c| c != 0).collect()
