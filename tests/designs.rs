@@ -152,7 +152,7 @@ fn csgpix_voxels(
 }
 
 /// A design's run stops after this many seconds (the corpus's median is well under one).
-const TIMEOUT: f64 = 30.0;
+const TIMEOUT: f64 = 90.0;
 
 fn measure(name: &str, openscad_s: f64, fallback: Fallback, tmp: &Path) -> Row {
     let csg = mesh_file(&format!("{name}.csg")).expect("the CSG export");
@@ -263,4 +263,12 @@ fn real_world_designs_against_openscad() {
         accepted.len()
     );
     assert!(only.is_some() || rows.len() >= 50);
+    // Floors at what was measured (docs/voxelization.md): the corpus may only get better.
+    if only.is_none() {
+        assert!(by_default >= 56, "accepted by default: {by_default}");
+        assert!(
+            word_ok >= 53 && float_ok >= 53,
+            "IoU: word {word_ok}, float {float_ok}"
+        );
+    }
 }

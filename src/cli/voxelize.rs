@@ -403,7 +403,8 @@ struct Report {
     hardware_seconds: f64,
     wall_seconds: f64,
     /// What the scene reader warned of (also on stderr): empty primitives, ignored 2D
-    /// children, subtrees meshed by `--fallback openscad`.
+    /// children, subtrees meshed by `--fallback openscad`. Left out when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     warnings: Vec<String>,
 }
 
