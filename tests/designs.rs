@@ -9,17 +9,16 @@
 
 mod common;
 
+use common::{have_openscad, iou, scene_occupancy};
+
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use csgpix::blist::BlistEval;
-use csgpix::sampled::load_imports;
 use csgpix::scad::Fallback;
 use csgpix::solid::{CsgNode, CsgScene, Import};
-use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
+use csgpix::voxel::{Grid, Route};
 use glam::DVec3;
-use rtl_model::Equations;
 
 const N: usize = 64;
 
@@ -39,34 +38,6 @@ fn mesh_file(name: &str) -> Option<String> {
         .read_to_string(&mut text)
         .ok()?;
     Some(text)
-}
-
-fn occupancy(
-    scene: &CsgScene,
-    base: &Path,
-    grid: &Grid,
-    route: Route,
-) -> Result<Vec<bool>, String> {
-    let sampled = load_imports(scene, "design", base).map_err(|e| e.to_string())?;
-    let opts = SlicerOptions {
-        sampled,
-        ..SlicerOptions::default()
-    };
-    let slicer = Slicer::new(scene, *grid, opts).map_err(|e| e.to_string())?;
-    let eval = BlistEval::new(&scene.root);
-    let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), &eval, &|| {})
-        .map_err(|e| e.to_string())?;
-    Ok(v.voxels.iter().map(|&c| c != 0).collect())
-}
-
-fn iou(a: &[bool], b: &[bool]) -> f64 {
-    let both = a.iter().zip(b).filter(|(x, y)| **x && **y).count();
-    let either = a.iter().zip(b).filter(|(x, y)| **x || **y).count();
-    if either == 0 {
-        1.0
-    } else {
-        both as f64 / either as f64
-    }
 }
 
 /// OpenSCAD's mesh as a scene of one closed-mesh primitive, and its padded box.
@@ -172,7 +143,7 @@ fn measure(name: &str, openscad_s: f64, fallback: Fallback, tmp: &Path) -> Row {
     let outcome = (|| {
         let (word, seconds) = csgpix_voxels(&file, (lo, hi), "word", fallback)?;
         let (float, _) = csgpix_voxels(&file, (lo, hi), "float", fallback)?;
-        let theirs = occupancy(&mesh, &base, &grid, Route::Float)?;
+        let theirs = scene_occupancy(&mesh, &base, &grid, Route::Float)?;
         Ok((iou(&word, &theirs), iou(&float, &theirs), seconds))
     })();
     for f in [
@@ -188,13 +159,6 @@ fn measure(name: &str, openscad_s: f64, fallback: Fallback, tmp: &Path) -> Row {
         outcome,
         fallback: fallback == Fallback::Openscad,
     }
-}
-
-fn have_openscad() -> bool {
-    std::process::Command::new("openscad")
-        .arg("--version")
-        .output()
-        .is_ok_and(|o| o.status.success())
 }
 
 #[test]

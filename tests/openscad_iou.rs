@@ -10,28 +10,14 @@
 
 mod common;
 
+use common::{have_openscad, iou};
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use common::csgpix;
 
 const RES: &str = "64";
-
-fn have_openscad() -> bool {
-    let found = Command::new("openscad")
-        .arg("--version")
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !found {
-        assert_ne!(
-            std::env::var("CSGPIX_OPENSCAD").as_deref(),
-            Ok("require"),
-            "CSGPIX_OPENSCAD=require but openscad is not on PATH"
-        );
-        eprintln!("openscad is not on PATH: skipped");
-    }
-    found
-}
 
 /// Runs openscad to export `input` as `out` (.csg or .stl); false when it fails (a 2D-only
 /// example, an empty top level).
@@ -47,16 +33,6 @@ fn openscad(input: &Path, out: &Path) -> bool {
 fn occupancy(path: &Path) -> Vec<bool> {
     let (_, v) = csgpix::nrrd::read(&std::fs::read(path).unwrap()).unwrap();
     v.iter().map(|&c| c != 0).collect()
-}
-
-fn iou(a: &[bool], b: &[bool]) -> f64 {
-    let both = a.iter().zip(b).filter(|(x, y)| **x && **y).count();
-    let either = a.iter().zip(b).filter(|(x, y)| **x || **y).count();
-    if either == 0 {
-        1.0
-    } else {
-        both as f64 / either as f64
-    }
 }
 
 /// IoU of csgpix's voxels of the scene `csg` against the voxels of OpenSCAD's mesh `stl` on

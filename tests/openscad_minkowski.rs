@@ -12,6 +12,10 @@
 //! pairwise sums; a random difference of two boxes ⊕ a random box is, voxel for voxel, the set
 //! of centres p for which the box p − C meets X (decided exactly, box against boxes).
 
+mod common;
+
+use common::iou;
+
 use std::path::{Path, PathBuf};
 
 use csgpix::blist::BlistEval;
@@ -37,16 +41,6 @@ fn voxels(text: &str, base: &Path, grid: &Grid, route: Route) -> Vec<bool> {
     let eval = BlistEval::new(&scene.root);
     let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), &eval, &|| {}).unwrap();
     v.voxels.iter().map(|&c| c != 0).collect()
-}
-
-fn iou(a: &[bool], b: &[bool]) -> f64 {
-    let both = a.iter().zip(b).filter(|(x, y)| **x && **y).count();
-    let either = a.iter().zip(b).filter(|(x, y)| **x || **y).count();
-    if either == 0 {
-        1.0
-    } else {
-        both as f64 / either as f64
-    }
 }
 
 /// The bounds of an ASCII STL's vertices.

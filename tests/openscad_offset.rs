@@ -7,65 +7,22 @@
 //! float route and 0.99 on the word route (intervals); `cargo test --release --test
 //! openscad_offset -- --nocapture` prints them (docs/volume-scenes.md).
 
+mod common;
+
+use common::{iou, read_off, scene_occupancy};
+
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use csgpix::blist::BlistEval;
-use csgpix::sampled::load_imports;
 use csgpix::scad::parse_csg;
 use csgpix::solid::{CsgNode, CsgScene, Import};
-use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
+use csgpix::voxel::{Grid, Route};
 use glam::DVec3;
-use rtl_model::Equations;
 
 const N: usize = 64;
 
 fn dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/openscad/offset")
-}
-
-/// OpenSCAD's OFF mesh as triangles (each face fanned from its first vertex).
-fn read_off(path: &Path) -> Vec<[[f64; 3]; 3]> {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut words = text.split_whitespace().skip(1);
-    let mut next = || words.next().unwrap();
-    let nv: usize = next().parse().unwrap();
-    let nf: usize = next().parse().unwrap();
-    next();
-    let v: Vec<[f64; 3]> = (0..nv)
-        .map(|_| [0; 3].map(|_| next().parse::<f64>().unwrap()))
-        .collect();
-    let mut tris = vec![];
-    for _ in 0..nf {
-        let k: usize = next().parse().unwrap();
-        let f: Vec<usize> = (0..k).map(|_| next().parse().unwrap()).collect();
-        for i in 1..k - 1 {
-            tris.push([v[f[0]], v[f[i]], v[f[i + 1]]]);
-        }
-    }
-    tris
-}
-
-fn occupancy(scene: &CsgScene, grid: &Grid, route: Route) -> Vec<bool> {
-    let sampled = load_imports(scene, "t.csg", &dir()).unwrap();
-    let opts = SlicerOptions {
-        sampled,
-        ..SlicerOptions::default()
-    };
-    let slicer = Slicer::new(scene, *grid, opts).unwrap();
-    let eval = BlistEval::new(&scene.root);
-    let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), &eval, &|| {}).unwrap();
-    v.voxels.iter().map(|&c| c != 0).collect()
-}
-
-fn iou(a: &[bool], b: &[bool]) -> f64 {
-    let both = a.iter().zip(b).filter(|(x, y)| **x && **y).count();
-    let either = a.iter().zip(b).filter(|(x, y)| **x || **y).count();
-    if either == 0 {
-        1.0
-    } else {
-        both as f64 / either as f64
-    }
 }
 
 /// (float IoU, word IoU) of csgpix's reading of `NAME.csg` against `NAME.off`; Err with
@@ -98,10 +55,13 @@ fn compare(name: &str) -> Result<(f64, f64), String> {
         root: CsgNode::Solid(0),
         warnings: vec![],
     };
-    let b = occupancy(&theirs, &grid, Route::Float);
-    let a = occupancy(&ours, &grid, Route::Float);
+    let b = scene_occupancy(&theirs, &dir(), &grid, Route::Float).unwrap();
+    let a = scene_occupancy(&ours, &dir(), &grid, Route::Float).unwrap();
     let float = iou(&a, &b);
-    let word = iou(&occupancy(&ours, &grid, Route::Intervals), &b);
+    let word = iou(
+        &scene_occupancy(&ours, &dir(), &grid, Route::Intervals).unwrap(),
+        &b,
+    );
     Ok((float, word))
 }
 

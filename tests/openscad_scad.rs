@@ -7,25 +7,11 @@
 
 mod common;
 
+use common::have_openscad;
+
 use std::path::Path;
 
 use common::csgpix;
-
-fn have_openscad() -> bool {
-    let found = std::process::Command::new("openscad")
-        .arg("--version")
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !found {
-        assert_ne!(
-            std::env::var("CSGPIX_OPENSCAD").as_deref(),
-            Ok("require"),
-            "CSGPIX_OPENSCAD=require but openscad is not on PATH"
-        );
-        eprintln!("openscad is not on PATH: skipped");
-    }
-    found
-}
 
 fn run(dir: &Path, scad: &str, extra: &[&str]) -> (Option<i32>, String, String) {
     let file = dir.join("p.scad");

@@ -149,3 +149,59 @@ pub fn off_triangles(text: &str) -> Option<Vec<[[f64; 3]; 3]>> {
     }
     Some(tris)
 }
+
+/// OpenSCAD's OFF mesh file as triangles (each face fanned from its first vertex).
+pub fn read_off(path: &std::path::Path) -> Vec<[[f64; 3]; 3]> {
+    let text = std::fs::read_to_string(path).unwrap();
+    off_triangles(&text).unwrap_or_else(|| panic!("{}: not an OFF mesh", path.display()))
+}
+
+/// Intersection over union of two occupancies (1 when both are empty).
+pub fn iou(a: &[bool], b: &[bool]) -> f64 {
+    let both = a.iter().zip(b).filter(|(x, y)| **x && **y).count();
+    let either = a.iter().zip(b).filter(|(x, y)| **x || **y).count();
+    if either == 0 {
+        1.0
+    } else {
+        both as f64 / either as f64
+    }
+}
+
+/// The occupancy of a scene on `grid` by `route` (Blist, derived equations), its imports
+/// loaded relative to `base`.
+pub fn scene_occupancy(
+    scene: &csgpix::solid::CsgScene,
+    base: &std::path::Path,
+    grid: &csgpix::voxel::Grid,
+    route: csgpix::voxel::Route,
+) -> Result<Vec<bool>, String> {
+    use csgpix::voxel::{voxelize, Slicer, SlicerOptions};
+    let sampled = csgpix::sampled::load_imports(scene, "t.csg", base).map_err(|e| e.to_string())?;
+    let opts = SlicerOptions {
+        sampled,
+        ..SlicerOptions::default()
+    };
+    let slicer = Slicer::new(scene, *grid, opts).map_err(|e| e.to_string())?;
+    let eval = csgpix::blist::BlistEval::new(&scene.root);
+    let set = rtl_model::Equations::Derived.set();
+    let (v, _) = voxelize(&slicer, route, set, &eval, &|| {}).map_err(|e| e.to_string())?;
+    Ok(v.voxels.iter().map(|&c| c != 0).collect())
+}
+
+/// Whether `openscad` runs; without it a test says so and passes, unless
+/// `CSGPIX_OPENSCAD=require` (.ci/run sets it), where its absence fails.
+pub fn have_openscad() -> bool {
+    let found = std::process::Command::new("openscad")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        assert_ne!(
+            std::env::var("CSGPIX_OPENSCAD").as_deref(),
+            Ok("require"),
+            "CSGPIX_OPENSCAD=require but openscad is not on PATH"
+        );
+        eprintln!("openscad is not on PATH: skipped");
+    }
+    found
+}
