@@ -10,61 +10,15 @@
 
 mod common;
 
-use common::{iou, read_off, scene_occupancy};
+use common::compare_with_off;
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 
 use common::csgpix;
-use csgpix::scad::parse_csg;
-use csgpix::solid::{CsgNode, CsgScene, Import};
-use csgpix::voxel::{Grid, Route};
-use glam::DVec3;
-
-const N: usize = 64;
+use csgpix::voxel::Route;
 
 fn dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/openscad/projection")
-}
-
-/// (float IoU, word IoU) of csgpix's reading of `NAME.csg` against `NAME.off`; Err with
-/// csgpix's message when it refuses the file.
-fn compare(name: &str) -> Result<(f64, f64), String> {
-    let text = std::fs::read_to_string(dir().join(format!("{name}.csg"))).unwrap();
-    let ours = parse_csg(&text, &format!("{name}.csg")).map_err(|e| e.to_string())?;
-    let tris = read_off(&dir().join(format!("{name}.off")));
-    let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
-    for p in tris.iter().flatten() {
-        lo = lo.min(DVec3::from(*p));
-        hi = hi.max(DVec3::from(*p));
-    }
-    // A margin of about two voxels round OpenSCAD's box, an odd fraction of the size so that
-    // no voxel centre falls on the cases' round coordinates (a centre on a face is a tie the
-    // two sides may break differently).
-    let pad = (hi - lo) * 0.0371;
-    let grid = Grid::new([N; 3], lo - pad, hi + pad).unwrap();
-    let theirs = CsgScene {
-        solids: vec![],
-        imports: vec![Import {
-            file: format!("{name}.off"),
-            threshold: None,
-            matrix: None,
-            colour: None,
-            line: 1,
-            col: 1,
-            mesh: Some(Arc::new(tris)),
-        }],
-        root: CsgNode::Solid(0),
-        warnings: vec![],
-    };
-    let b = scene_occupancy(&theirs, &dir(), &grid, Route::Float).unwrap();
-    let a = scene_occupancy(&ours, &dir(), &grid, Route::Float).unwrap();
-    let float = iou(&a, &b);
-    let word = iou(
-        &scene_occupancy(&ours, &dir(), &grid, Route::Array { cycle: false }).unwrap(),
-        &b,
-    );
-    Ok((float, word))
 }
 
 #[test]
@@ -74,7 +28,7 @@ fn projection_and_resize_match_openscads_mesh() {
     let mut compared = 0;
     for line in cases.lines().filter(|l| !l.starts_with('#')) {
         let name = line.split('\t').next().unwrap();
-        match compare(name) {
+        match compare_with_off(&dir(), name, Route::Array { cycle: false }) {
             Ok((float, word)) => {
                 compared += 1;
                 println!("{name}: IoU float {float:.5}, word {word:.5}");

@@ -205,3 +205,48 @@ pub fn have_openscad() -> bool {
     }
     found
 }
+
+/// (float IoU, word IoU) at 64³ of csgpix's reading of `DIR/NAME.csg` against OpenSCAD's
+/// `DIR/NAME.off` (the word side by `word`); Err with
+/// csgpix's message when it refuses the file.
+pub fn compare_with_off(
+    dir: &std::path::Path,
+    name: &str,
+    word: csgpix::voxel::Route,
+) -> Result<(f64, f64), String> {
+    use csgpix::solid::{CsgNode, CsgScene, Import};
+    use csgpix::voxel::{Grid, Route};
+    use glam::DVec3;
+    let text = std::fs::read_to_string(dir.join(format!("{name}.csg"))).unwrap();
+    let ours = csgpix::scad::parse_csg(&text, &format!("{name}.csg")).map_err(|e| e.to_string())?;
+    let tris = read_off(&dir.join(format!("{name}.off")));
+    let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
+    for p in tris.iter().flatten() {
+        lo = lo.min(DVec3::from(*p));
+        hi = hi.max(DVec3::from(*p));
+    }
+    // A margin of about two voxels round OpenSCAD's box, an odd fraction of the size so that
+    // no voxel centre falls on the cases' round coordinates (a centre on a face is a tie the
+    // two sides may break differently).
+    let pad = (hi - lo) * 0.0371;
+    let grid = Grid::new([64; 3], lo - pad, hi + pad).unwrap();
+    let theirs = CsgScene {
+        solids: vec![],
+        imports: vec![Import {
+            file: format!("{name}.off"),
+            threshold: None,
+            matrix: None,
+            colour: None,
+            line: 1,
+            col: 1,
+            mesh: Some(std::sync::Arc::new(tris)),
+        }],
+        root: CsgNode::Solid(0),
+        warnings: vec![],
+    };
+    let b = scene_occupancy(&theirs, dir, &grid, Route::Float).unwrap();
+    let a = scene_occupancy(&ours, dir, &grid, Route::Float).unwrap();
+    let float = iou(&a, &b);
+    let word = iou(&scene_occupancy(&ours, dir, &grid, word).unwrap(), &b);
+    Ok((float, word))
+}
