@@ -37,6 +37,29 @@ fn occupancy(path: &Path) -> Vec<bool> {
     v.iter().map(|&c| c != 0).collect()
 }
 
+/// OpenSCAD's own mesh of `dir/p.scad`, voxelized by csgpix at 16³ on `bounds`.
+fn openscads_voxels(dir: &Path, bounds: &[&str]) -> Vec<bool> {
+    let stl = dir.join("whole.stl");
+    let ok = std::process::Command::new("openscad")
+        .arg("-o")
+        .arg(&stl)
+        .arg(dir.join("p.scad"))
+        .output()
+        .unwrap()
+        .status
+        .success();
+    assert!(ok);
+    let csg = dir.join("whole.csg");
+    std::fs::write(&csg, "import(\"whole.stl\");\n").unwrap();
+    let out = dir.join("whole.nrrd");
+    let mut a = vec!["voxelize", csg.to_str().unwrap(), "--res", "16"];
+    a.extend(bounds);
+    a.extend(["-o", out.to_str().unwrap()]);
+    let o = csgpix(&a);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    occupancy(&out)
+}
+
 #[test]
 fn errors_are_placed_in_the_scad_file() {
     if !have_openscad() {
@@ -121,32 +144,7 @@ fn fallback_meshes_what_csgpix_does_not_draw() {
         "{e}"
     );
     let ours = occupancy(&dir.path().join("p.nrrd"));
-    // OpenSCAD's mesh of the whole design, voxelized on the same grid.
-    let stl = dir.path().join("whole.stl");
-    let ok = std::process::Command::new("openscad")
-        .arg("-o")
-        .arg(&stl)
-        .arg(dir.path().join("p.scad"))
-        .output()
-        .unwrap()
-        .status
-        .success();
-    assert!(ok);
-    let csg = dir.path().join("whole.csg");
-    std::fs::write(&csg, "import(\"whole.stl\");\n").unwrap();
-    let theirs_out = dir.path().join("whole.nrrd");
-    let mut a = vec![
-        "voxelize",
-        csg.to_str().unwrap(),
-        "--res",
-        "16",
-        "-o",
-        theirs_out.to_str().unwrap(),
-    ];
-    a.extend(bounds);
-    let o = csgpix(&a);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let theirs = occupancy(&theirs_out);
+    let theirs = openscads_voxels(dir.path(), &bounds);
     let both = ours.iter().zip(&theirs).filter(|(a, b)| **a && **b).count();
     let either = ours.iter().zip(&theirs).filter(|(a, b)| **a || **b).count();
     let iou = both as f64 / either.max(1) as f64;
@@ -184,25 +182,7 @@ fn fallback_outlines_a_2d_import() {
     assert_eq!(code, Some(0), "{e}");
     assert!(e.contains("outlined by openscad"), "{e}");
     let ours = occupancy(&dir.path().join("p.nrrd"));
-    let stl = dir.path().join("whole.stl");
-    let ok = std::process::Command::new("openscad")
-        .arg("-o")
-        .arg(&stl)
-        .arg(dir.path().join("p.scad"))
-        .output()
-        .unwrap()
-        .status
-        .success();
-    assert!(ok);
-    let csg = dir.path().join("whole.csg");
-    std::fs::write(&csg, "import(\"whole.stl\");\n").unwrap();
-    let theirs_out = dir.path().join("whole.nrrd");
-    let mut a = vec!["voxelize", csg.to_str().unwrap(), "--res", "16"];
-    a.extend(bounds);
-    a.extend(["-o", theirs_out.to_str().unwrap()]);
-    let o = csgpix(&a);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let theirs = occupancy(&theirs_out);
+    let theirs = openscads_voxels(dir.path(), &bounds);
     let both = ours.iter().zip(&theirs).filter(|(a, b)| **a && **b).count();
     let either = ours.iter().zip(&theirs).filter(|(a, b)| **a || **b).count();
     assert!(both > 100, "a real solid: {both} voxels");
