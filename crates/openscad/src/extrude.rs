@@ -19,6 +19,8 @@ use glam::{DVec2, DVec3};
 
 use csgpix_scene::Result;
 
+use crate::cap;
+
 /// A 2D shape: closed outlines, filled by the even-odd rule (OpenSCAD's `polygon` with
 /// `paths`: an outline inside another is a hole).
 #[derive(Clone, Debug, PartialEq)]
@@ -268,28 +270,45 @@ pub fn convex_prism(outline: &[DVec2], l: &Linear) -> (Vec<[f64; 3]>, Vec<Vec<us
     (v, faces)
 }
 
-/// `linear_extrude` as a closed mesh: every outline's walls between consecutive slices, a fan
-/// cap at the bottom and, unless the top is scaled to a point, at the top. Outlines run as
-/// OpenSCAD's even-odd cleanup leaves them (outer ones counter-clockwise, holes clockwise).
-/// Each twisted wall quad is split along the diagonal that gives OpenSCAD 2021.01's own
-/// meshes (found by comparing voxels with its STL, `tests/openscad_iou.rs`): on an unscaled
-/// outer outline, from the lower corner i to the upper corner i + 1 for a positive twist and
-/// the other diagonal for a negative one; on holes and scaled outlines, the shorter diagonal.
+/// `linear_extrude` as a closed mesh, outward: every outline's walls between consecutive
+/// slices, and the shape's caps ([`cap::cap`]) at the bottom and, unless the top is scaled to a
+/// point, at the top. Outlines run as OpenSCAD's even-odd cleanup leaves them (outer ones
+/// counter-clockwise, holes clockwise). Each twisted wall quad is split along the diagonal
+/// that gives OpenSCAD 2021.01's own meshes (found by comparing voxels with its STL,
+/// `tests/openscad_iou.rs`): on an unscaled outer outline, from the lower corner i to the
+/// upper corner i + 1 for a positive twist and the other diagonal for a negative one; on
+/// holes and scaled outlines, the shorter diagonal.
 pub fn linear_mesh(poly: &Poly2, l: &Linear, sincos: &dyn Fn(f64) -> (f64, f64)) -> Vec<Tri3> {
+    let rings = oriented(poly);
+    let level = |j: usize| -> Vec<Vec<DVec3>> {
+        rings
+            .iter()
+            .map(|r| r.points.iter().map(|&p| l.at(p, j, sincos)).collect())
+            .collect()
+    };
     let mut out = vec![];
-    for (path, hole) in oriented(poly) {
-        let ring = |j: usize| -> Vec<DVec3> { path.iter().map(|&p| l.at(p, j, sincos)).collect() };
-        let mut lower = ring(0);
-        fan(&lower, &mut out);
-        let rising = (!hole && l.scale == [1.0, 1.0]).then_some(l.twist > 0.0);
-        for j in 1..=l.slices {
-            let upper = ring(j);
-            walls(&lower, &upper, rising, &mut out);
-            lower = upper;
+    let caps = cap::cap(&rings);
+    let mut lower = level(0);
+    lid(&caps, &lower, &mut out);
+    for j in 1..=l.slices {
+        let upper = level(j);
+        for (r, ring) in rings.iter().enumerate() {
+            let hole = ring.depth % 2 == 1;
+            let rising = (!hole && l.scale == [1.0, 1.0]).then_some(l.twist > 0.0);
+            walls(&lower[r], &upper[r], rising, &mut out);
         }
-        fan(&lower, &mut out);
+        lower = upper;
     }
+    lid(&caps, &lower, &mut out);
+    cap::outward(&mut out);
     out
+}
+
+/// The cap's triangles on one level's rings.
+fn lid(caps: &[[cap::Corner; 3]], level: &[Vec<DVec3>], out: &mut Vec<Tri3>) {
+    for t in caps {
+        push(out, t.map(|(r, i)| level[r][i]));
+    }
 }
 
 /// The quads between two rings, each as two triangles split along lower i – upper i + 1
@@ -311,9 +330,9 @@ fn walls(lower: &[DVec3], upper: &[DVec3], rising: Option<bool>, out: &mut Vec<T
 }
 
 /// The outlines as OpenSCAD's even-odd cleanup orients them: an outline inside an odd number
-/// of others is a hole, run clockwise; the others counter-clockwise. With each, whether it is
-/// a hole.
-fn oriented(poly: &Poly2) -> Vec<(Vec<DVec2>, bool)> {
+/// of others is a hole, run clockwise; the others counter-clockwise. Each with its depth (the
+/// number of outlines it lies inside).
+fn oriented(poly: &Poly2) -> Vec<cap::Ring> {
     let paths: Vec<&Vec<DVec2>> = poly.paths.iter().filter(|p| p.len() >= 3).collect();
     paths
         .iter()
@@ -322,28 +341,15 @@ fn oriented(poly: &Poly2) -> Vec<(Vec<DVec2>, bool)> {
             let depth = paths
                 .iter()
                 .enumerate()
-                .filter(|&(j, other)| j != i && contains(other, path[0]))
+                .filter(|&(j, other)| j != i && cap::inside(other, path[0]))
                 .count();
-            let hole = depth % 2 == 1;
-            let mut p = (*path).clone();
-            if (signed_area(&p) > 0.0) == hole {
-                p.reverse();
+            let mut points = (*path).clone();
+            if (signed_area(&points) > 0.0) == (depth % 2 == 1) {
+                points.reverse();
             }
-            (p, hole)
+            cap::Ring { points, depth }
         })
         .collect()
-}
-
-/// Point in polygon by crossings (even-odd).
-fn contains(poly: &[DVec2], p: DVec2) -> bool {
-    let mut inside = false;
-    for i in 0..poly.len() {
-        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
-        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
-            inside = !inside;
-        }
-    }
-    inside
 }
 
 /// `rotate_extrude` over `angle` degrees in `fragments` steps as a closed mesh: each outline
@@ -376,30 +382,39 @@ pub fn rotate_mesh(
     // OpenSCAD's rings run clockwise on a full turn and reversed where it flips faces: the
     // diagonal it splits each quad along is then the other one.
     let flip = (lo >= 0.0 && angle > 0.0 && !full) || (lo < 0.0 && (angle < 0.0 || full));
+    let rings = oriented(poly);
+    let turned = |a: f64| -> Vec<Vec<DVec3>> {
+        let (s, c) = sincos(a);
+        rings
+            .iter()
+            .map(|r| {
+                r.points
+                    .iter()
+                    .map(|p| DVec3::new(p.x * c, p.x * s, p.y))
+                    .collect()
+            })
+            .collect()
+    };
     let mut out = vec![];
-    for (path, _) in oriented(poly) {
-        let ring = |a: f64| -> Vec<DVec3> {
-            let (s, c) = sincos(a);
-            path.iter()
-                .map(|p| DVec3::new(p.x * c, p.x * s, p.y))
-                .collect()
+    let first = turned(at(0));
+    let mut lower = first.clone();
+    for j in 1..=fragments {
+        let upper = if full && j == fragments {
+            first.clone()
+        } else {
+            turned(at(j))
         };
-        let first = ring(at(0));
-        let mut lower = first.clone();
-        for j in 1..=fragments {
-            let upper = if full && j == fragments {
-                first.clone()
-            } else {
-                ring(at(j))
-            };
-            walls(&lower, &upper, Some(full == flip), &mut out);
-            lower = upper;
+        for r in 0..rings.len() {
+            walls(&lower[r], &upper[r], Some(full == flip), &mut out);
         }
-        if !full {
-            fan(&first, &mut out);
-            fan(&lower, &mut out);
-        }
+        lower = upper;
     }
+    if !full {
+        let caps = cap::cap(&rings);
+        lid(&caps, &first, &mut out);
+        lid(&caps, &lower, &mut out);
+    }
+    cap::outward(&mut out);
     Ok(out)
 }
 
@@ -407,14 +422,6 @@ pub fn rotate_mesh(
 fn push(out: &mut Vec<Tri3>, t: Tri3) {
     if t[0] != t[1] && t[1] != t[2] && t[2] != t[0] {
         out.push(t);
-    }
-}
-
-/// An outline's cap as a fan from its first vertex (overlapping where the outline is concave:
-/// by parity, the interior).
-fn fan(ring: &[DVec3], out: &mut Vec<Tri3>) {
-    for i in 1..ring.len().saturating_sub(1) {
-        push(out, [ring[0], ring[i], ring[i + 1]]);
     }
 }
 
@@ -517,7 +524,7 @@ pub fn clipper_offset(shape: &Poly2, o: Offset, sincos: &dyn Fn(f64) -> (f64, f6
         let q = src[i][0];
         src.iter()
             .enumerate()
-            .filter(|&(j, p)| j != i && contains(p, q))
+            .filter(|&(j, p)| j != i && cap::inside(p, q))
             .count()
     };
     let holes: Vec<bool> = (0..src.len()).map(|i| inside_count(i) % 2 == 1).collect();

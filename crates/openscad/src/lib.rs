@@ -99,6 +99,7 @@
 
 #![warn(missing_docs)]
 
+mod cap;
 mod consts_;
 mod export;
 pub mod extrude;
