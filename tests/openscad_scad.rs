@@ -159,32 +159,62 @@ fn fallback_meshes_what_csgpix_does_not_draw() {
     assert!(left.is_empty());
 }
 
-/// A 2D import (SVG) under `--fallback openscad`: openscad's outline, extruded by csgpix,
-/// gives the voxels of OpenSCAD's own mesh.
+/// A 2D import under `--fallback openscad` (DXF: csgpix does not read it): openscad's outline,
+/// extruded by csgpix, gives the voxels of OpenSCAD's own mesh. An SVG import is read by
+/// csgpix itself (crates/openscad/src/svg.rs), by default and under the fallback alike.
 #[test]
 fn fallback_outlines_a_2d_import() {
     if !have_openscad() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
+    let lwpolyline = |pts: &[(i32, i32)]| {
+        let mut s = format!("0\nLWPOLYLINE\n8\n0\n90\n{}\n70\n1\n", pts.len());
+        for (x, y) in pts {
+            s += &format!("10\n{x}\n20\n{y}\n");
+        }
+        s
+    };
+    let dxf = format!(
+        "0\nSECTION\n2\nENTITIES\n{}{}0\nENDSEC\n0\nEOF\n",
+        lwpolyline(&[(2, 2), (18, 2), (18, 18), (2, 18)]),
+        lwpolyline(&[(6, 6), (6, 14), (14, 14), (14, 6)])
+    );
+    std::fs::write(dir.path().join("frame.dxf"), dxf).unwrap();
     let svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"20mm\" height=\"20mm\" \
                viewBox=\"0 0 20 20\"><path d=\"M 2 2 L 18 2 L 18 18 L 2 18 Z M 6 6 L 6 14 \
                L 14 14 L 14 6 Z\"/></svg>\n";
     std::fs::write(dir.path().join("frame.svg"), svg).unwrap();
-    let scad = "translate([1, 0, 0]) linear_extrude(height = 3) import(\"frame.svg\");\n";
-    let (code, _, e) = run(dir.path(), scad, &[]);
-    assert_eq!(code, Some(2), "refused by default: {e}");
-    assert!(e.contains("p.scad:1:") && e.contains("frame.svg"), "{e}");
     let bounds = ["--bounds", "0,-1,-1,22,21,4"];
-    let mut args = vec!["--fallback", "openscad"];
-    args.extend(bounds);
-    let (code, _, e) = run(dir.path(), scad, &args);
-    assert_eq!(code, Some(0), "{e}");
-    assert!(e.contains("outlined by openscad"), "{e}");
-    let ours = occupancy(&dir.path().join("p.nrrd"));
-    let theirs = openscads_voxels(dir.path(), &bounds);
-    let both = ours.iter().zip(&theirs).filter(|(a, b)| **a && **b).count();
-    let either = ours.iter().zip(&theirs).filter(|(a, b)| **a || **b).count();
-    assert!(both > 100, "a real solid: {both} voxels");
-    assert_eq!(both, either, "the same voxels");
+    for (file, fallback) in [
+        ("frame.dxf", true),
+        ("frame.svg", false),
+        ("frame.svg", true),
+    ] {
+        let scad = format!("translate([1, 0, 0]) linear_extrude(height = 3) import(\"{file}\");\n");
+        if file.ends_with(".dxf") {
+            let (code, _, e) = run(dir.path(), &scad, &[]);
+            assert_eq!(code, Some(2), "refused by default: {e}");
+            assert!(e.contains("p.scad:1:") && e.contains(file), "{e}");
+        }
+        let mut args = if fallback {
+            vec!["--fallback", "openscad"]
+        } else {
+            vec![]
+        };
+        args.extend(bounds);
+        let (code, _, e) = run(dir.path(), &scad, &args);
+        assert_eq!(code, Some(0), "{file}: {e}");
+        assert_eq!(
+            e.contains("outlined by openscad"),
+            file.ends_with(".dxf"),
+            "{e}"
+        );
+        let ours = occupancy(&dir.path().join("p.nrrd"));
+        let theirs = openscads_voxels(dir.path(), &bounds);
+        let both = ours.iter().zip(&theirs).filter(|(a, b)| **a && **b).count();
+        let either = ours.iter().zip(&theirs).filter(|(a, b)| **a || **b).count();
+        assert!(both > 100, "{file}: a real solid: {both} voxels");
+        assert_eq!(both, either, "{file}: the same voxels");
+    }
 }

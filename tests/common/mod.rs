@@ -218,7 +218,13 @@ pub fn compare_with_off(
     use csgpix::voxel::{Grid, Route};
     use glam::DVec3;
     let text = std::fs::read_to_string(dir.join(format!("{name}.csg"))).unwrap();
-    let ours = csgpix::scad::parse_csg(&text, &format!("{name}.csg")).map_err(|e| e.to_string())?;
+    // Files the export names (an SVG drawing) are found beside it.
+    let options = csgpix::scad::ReadOptions {
+        dir: Some(dir.to_path_buf()),
+        ..Default::default()
+    };
+    let ours = csgpix::scad::parse_csg_with(&text, &format!("{name}.csg"), &options)
+        .map_err(|e| e.to_string())?;
     let tris = read_off(&dir.join(format!("{name}.off")));
     let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
     for p in tris.iter().flatten() {

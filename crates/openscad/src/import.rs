@@ -18,7 +18,7 @@ pub(crate) fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
     if !(dataset || lower.ends_with(".stl") || lower.ends_with(".obj")) {
         return fail(
             file.pos,
-            format!("`import(\"{name}\")`: csgpix imports .stl and .obj meshes and .nrrd datasets (not 2D files such as .dxf or .svg)"),
+            format!("`import(\"{name}\")`: csgpix imports .stl and .obj meshes, .nrrd datasets and .svg drawings (not .dxf files)"),
         );
     }
     match (dataset, threshold) {
@@ -52,5 +52,60 @@ pub(crate) fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
         line: head.pos.line,
         col: head.pos.col,
         mesh: None,
+    })
+}
+
+/// An `import` of an SVG file (a 2D shape, module [`crate::svg`]).
+pub(crate) fn is_svg(head: &Head) -> bool {
+    head.kind == NodeKind::Import
+        && matches!(&head.params.get("file").map(|v| &v.kind),
+            Some(Kind::Str(f)) if f.to_ascii_lowercase().ends_with(".svg"))
+}
+
+/// `import(file = "x.svg", dpi, center)` as OpenSCAD 2021.01 reads it: `dpi` a number of at
+/// least 0.001 (else 72, with OpenSCAD's warning), `center` true or false (anything else is
+/// false); `origin`, `scale` and `convexity` ignored, as 2021.01 ignores them for SVG. `id`
+/// (a later OpenSCAD's choice of one element) and a `layer` are refused: 2021.01 draws the
+/// whole file.
+pub(crate) struct SvgArgs {
+    pub(crate) file: String,
+    pub(crate) dpi: f64,
+    pub(crate) center: bool,
+    pub(crate) warning: Option<(Pos, String)>,
+}
+
+pub(crate) fn svg_args(head: &Head) -> Result<SvgArgs, Fail> {
+    let p = &head.params;
+    let file = p.require("file", "a file name")?;
+    let Kind::Str(name) = &file.kind else {
+        return fail(file.pos, "`file` must be a string");
+    };
+    if let Some(v) = p.get("id") {
+        return fail(
+            v.pos,
+            "`id` (one element of an SVG file) is not supported: OpenSCAD 2021.01 imports the whole file",
+        );
+    }
+    if let Some(v) = p.get("layer") {
+        if !matches!(&v.kind, Kind::Str(l) if l.is_empty()) {
+            return fail(v.pos, "`layer` applies to DXF files, not SVG");
+        }
+    }
+    let mut dpi = 72.0;
+    let mut warning = None;
+    if let Some((d, at)) = p.number("dpi")? {
+        if d >= 0.001 {
+            dpi = d;
+        } else {
+            let msg = "Invalid dpi value giving, using default of 72 dpi. Value must be positive and >= 0.001";
+            warning = Some((at, msg.to_string()));
+        }
+    }
+    let center = matches!(p.get("center").map(|v| &v.kind), Some(Kind::Bool(true)));
+    Ok(SvgArgs {
+        file: name.clone(),
+        dpi,
+        center,
+        warning,
     })
 }

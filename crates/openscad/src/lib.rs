@@ -113,6 +113,7 @@ mod node;
 mod primitives;
 mod project;
 mod reader;
+mod svg;
 #[cfg(test)]
 mod tests;
 pub mod text;

@@ -56,14 +56,12 @@ pub(crate) struct Frame {
     pub(crate) placement: Option<Mat4>,
 }
 
-/// An `import` of a 2D file (`.svg`, `.dxf`), which csgpix does not read itself.
+/// An `import` of a 2D file csgpix does not read itself (`.dxf`; `.svg` is read natively,
+/// module [`crate::svg`]).
 fn flat_import(head: &Head) -> bool {
     head.kind == NodeKind::Import
         && head.params.get("file").is_some_and(|v| match &v.kind {
-            Kind::Str(f) => {
-                let f = f.to_ascii_lowercase();
-                f.ends_with(".svg") || f.ends_with(".dxf")
-            }
+            Kind::Str(f) => f.to_ascii_lowercase().ends_with(".dxf"),
             _ => false,
         })
 }
@@ -510,7 +508,45 @@ impl<'a> Reader<'a> {
         }
     }
 
+    /// `import("x.svg")`: the file's shapes (module [`crate::svg`]), placed by the
+    /// transforms above.
+    fn svg(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<Item>, Fail> {
+        let args = crate::import::svg_args(head)?;
+        if ctx.skip {
+            return Ok(None);
+        }
+        self.warnings.extend(args.warning.clone());
+        let dir = self.options.dir.clone().unwrap_or_default();
+        let shapes =
+            crate::svg::read(&dir.join(&args.file), args.dpi, args.center).map_err(|msg| Fail {
+                pos: head.pos,
+                msg: format!("`import(\"{}\")` (an SVG file): {msg}", args.file),
+            })?;
+        let n: usize = shapes.iter().map(|p| p.points().count()).sum();
+        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        check_budget(n, budget, head.pos)?;
+        self.vertices += n;
+        let m = plane_part(ctx.matrix.as_ref());
+        let mut parts: Vec<Region> = shapes
+            .into_iter()
+            .map(|p| Region::Poly(p.transformed(m)))
+            .collect();
+        let region = match parts.len() {
+            0 => {
+                let msg = format!("`import(\"{}\")`: the SVG file draws nothing", args.file);
+                self.warnings.push((head.pos, msg));
+                return Ok(None);
+            }
+            1 => parts.pop().expect("one shape"),
+            _ => Region::Union(parts),
+        };
+        Ok(Some(Item::Flat(region, head.pos)))
+    }
+
     fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<Item>, Fail> {
+        if crate::import::is_svg(head) {
+            return self.svg(head, ctx);
+        }
         if head.kind == NodeKind::Import {
             let import = import(head, ctx)?;
             if ctx.skip {

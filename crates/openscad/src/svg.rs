@@ -1,0 +1,1269 @@
+//! `import("x.svg")`: an SVG file read as OpenSCAD 2021.01 reads it (`src/import_svg.cc` and
+//! its `libsvg`), into 2D shapes. `roxmltree` reads the XML; everything after it is
+//! OpenSCAD's own rules, quirks included:
+//!
+//! * the elements `path`, `rect`, `circle`, `ellipse`, `line`, `polyline`, `polygon`, under
+//!   `g` groups (their `transform`s compose); everything inside `defs` is skipped, `text` draws
+//!   nothing, other elements (`use`, `image`, `symbol`, …) are ignored but their children are
+//!   read, with the transform of the nearest group;
+//! * curves at fixed step counts, whatever `$fn`: 20 segments per cubic or quadratic Bézier,
+//!   `|sweep°|·10/180 + 4` per elliptical arc, 40 per circle or ellipse;
+//! * fill and stroke styles are not read: every closed outline is filled, every open one (a
+//!   path's subpath whose ends are more than 0.1 apart, a `line`, a `polyline`) is replaced by
+//!   its stroke, Clipper's open offset of half the stroke width (`stroke-width` attribute or
+//!   style; a plain number, else 1) with its `stroke-linecap` (square unless butt or round)
+//!   and `stroke-linejoin` (miter, limit 2, unless bevel or round);
+//! * the outlines of one element combine by the even-odd rule, elements by union;
+//! * the size: `width`/`height` in mm (`px` 96 dpi, `pt`, `pc`, `in`, `cm`; plain numbers at
+//!   the import's `dpi`, 72 by default) over the `viewBox` with `preserveAspectRatio` (default
+//!   xMidYMid meet); without a viewBox user units are mm. SVG's y axis points down: y is
+//!   flipped about the page height, or the shapes' box is centred with `center = true`.
+
+use std::path::Path;
+
+use glam::DVec2;
+
+use crate::extrude::Poly2;
+use crate::primitives::{cos_degrees, sin_degrees};
+
+/// An affine map `[a, b, c, d, e, f]`: x' = a·x + c·y + e, y' = b·x + d·y + f.
+type Affine = [f64; 6];
+
+const IDENTITY: Affine = [1.0, 0.0, 0.0, 1.0, 0.0, 0.0];
+
+fn compose(m: &Affine, n: &Affine) -> Affine {
+    // m · n
+    [
+        m[0] * n[0] + m[2] * n[1],
+        m[1] * n[0] + m[3] * n[1],
+        m[0] * n[2] + m[2] * n[3],
+        m[1] * n[2] + m[3] * n[3],
+        m[0] * n[4] + m[2] * n[5] + m[4],
+        m[1] * n[4] + m[3] * n[5] + m[5],
+    ]
+}
+
+fn apply(m: &Affine, p: DVec2) -> DVec2 {
+    DVec2::new(
+        m[0] * p.x + m[2] * p.y + m[4],
+        m[1] * p.x + m[3] * p.y + m[5],
+    )
+}
+
+/// The SVG file `path` as OpenSCAD's `import(file, dpi, center)` draws it: one even-odd shape
+/// per SVG element, their union. Err is one line.
+pub(crate) fn read(path: &Path, dpi: f64, center: bool) -> Result<Vec<Poly2>, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read it: {e}"))?;
+    parse(&text, dpi, center)
+}
+
+/// [`read`] of the file's text.
+pub(crate) fn parse(text: &str, dpi: f64, center: bool) -> Result<Vec<Poly2>, String> {
+    let opts = roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..Default::default()
+    };
+    let doc = roxmltree::Document::parse_with_options(text, opts)
+        .map_err(|e| format!("not a valid SVG file: {e}"))?;
+    let root = doc.root_element();
+    if root.tag_name().name() != "svg" {
+        return Err(format!(
+            "not an SVG file: its root element is <{}>, not <svg>",
+            root.tag_name().name()
+        ));
+    }
+    let page = Page::read(&root)?;
+    let mut shapes = vec![];
+    for child in root.children() {
+        walk(child, &IDENTITY, &mut shapes)?;
+    }
+    place(&page, shapes, dpi, center)
+}
+
+/// The `<svg>` element's size, viewBox and alignment.
+struct Page {
+    width: Length,
+    height: Length,
+    viewbox: Option<[f64; 4]>,
+    /// (x, y) alignment, `None` for `preserveAspectRatio="none"`; and meet (or slice).
+    align: Option<(Align, Align)>,
+    meet: bool,
+}
+
+#[derive(Clone, Copy, PartialEq, Debug)]
+enum Align {
+    Min,
+    Mid,
+    Max,
+}
+
+#[derive(Clone, Copy, PartialEq, Debug)]
+enum Unit {
+    Undefined,
+    None,
+    Px,
+    Pt,
+    Pc,
+    In,
+    Cm,
+    Mm,
+    /// `%`, `em`, `ex`: the viewBox size, as OpenSCAD.
+    Other,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Length {
+    number: f64,
+    unit: Unit,
+}
+
+impl Page {
+    fn read(node: &roxmltree::Node) -> Result<Page, String> {
+        let attr = |n: &str| node.attribute(n).unwrap_or("");
+        let viewbox = parse_viewbox(attr("viewBox"));
+        if let Some(v) = viewbox {
+            if v[2] == 0.0 || v[3] == 0.0 {
+                return Err(format!("the viewBox \"{}\" is empty", attr("viewBox")));
+            }
+        }
+        let (align, meet) = parse_alignment(attr("preserveAspectRatio"));
+        Ok(Page {
+            width: parse_length(attr("width")),
+            height: parse_length(attr("height")),
+            viewbox,
+            align,
+            meet,
+        })
+    }
+}
+
+/// OpenSCAD's `to_mm` of a page length.
+fn to_mm(l: Length, viewbox: Option<f64>, dpi: f64) -> f64 {
+    const INCH: f64 = 25.4;
+    match l.unit {
+        Unit::None => INCH * l.number / dpi,
+        Unit::Px => INCH * l.number / 96.0,
+        Unit::Pt => INCH * l.number / 72.0,
+        Unit::Pc => INCH * l.number / 6.0,
+        Unit::In => INCH * l.number,
+        Unit::Cm => 10.0 * l.number,
+        Unit::Mm => l.number,
+        Unit::Undefined => viewbox.map_or(0.0, |v| INCH * v / dpi),
+        Unit::Other => viewbox.unwrap_or(0.0),
+    }
+}
+
+/// The shapes (each element's outlines in its user units, transformed) placed in mm as
+/// `import_svg` does.
+fn place(
+    page: &Page,
+    shapes: Vec<Vec<Vec<DVec2>>>,
+    dpi: f64,
+    center: bool,
+) -> Result<Vec<Poly2>, String> {
+    let width_mm = to_mm(page.width, page.viewbox.map(|v| v[2]), dpi);
+    let height_mm = to_mm(page.height, page.viewbox.map(|v| v[3]), dpi);
+    let mut scale = DVec2::ONE;
+    let mut align = DVec2::ZERO;
+    let mut origin = DVec2::ZERO;
+    if let Some(v) = page.viewbox {
+        origin = DVec2::new(v[0], v[1]);
+        scale = DVec2::new(width_mm / v[2], height_mm / v[3]);
+        if let Some((ax, ay)) = page.align {
+            let s = if page.meet {
+                scale.x.min(scale.y)
+            } else {
+                scale.x.max(scale.y)
+            };
+            scale = DVec2::splat(s);
+            let at = |a: Align, page_mm: f64, s: f64, vb: f64| match a {
+                Align::Min => 0.0,
+                Align::Mid => page_mm / 2.0 - s * vb / 2.0,
+                Align::Max => page_mm - s * vb,
+            };
+            align = DVec2::new(at(ax, width_mm, s, v[2]), at(ay, height_mm, s, v[3]));
+        }
+    }
+    let (mut lo, mut hi) = (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN));
+    for p in shapes.iter().flatten().flatten() {
+        if !p.is_finite() {
+            return Err("a coordinate is not a finite number".into());
+        }
+        lo = lo.min(scale * *p);
+        hi = hi.max(scale * *p);
+    }
+    let c = if center {
+        (lo + hi) / 2.0
+    } else {
+        DVec2::new(-align.x, height_mm - align.y)
+    };
+    let c = if center && lo.x > hi.x {
+        DVec2::ZERO
+    } else {
+        c
+    };
+    let mut out = vec![];
+    for shape in shapes {
+        let paths: Vec<Vec<[f64; 2]>> = shape
+            .iter()
+            .map(|p| {
+                p.iter()
+                    .map(|v| {
+                        [
+                            scale.x * (-origin.x + v.x) - c.x,
+                            scale.y * (-origin.y - v.y) + c.y,
+                        ]
+                    })
+                    .collect()
+            })
+            .collect();
+        // OpenSCAD's sanitize: the element's outlines by the even-odd rule.
+        let poly = clean(&paths, Fill::EvenOdd);
+        if !poly.paths.is_empty() {
+            out.push(poly);
+        }
+    }
+    Ok(out)
+}
+
+#[derive(Clone, Copy)]
+enum Fill {
+    EvenOdd,
+    Positive,
+}
+
+/// Outlines combined by a fill rule into clean outer outlines and holes.
+fn clean(paths: &[Vec<[f64; 2]>], fill: Fill) -> Poly2 {
+    use i_overlay::core::fill_rule::FillRule;
+    use i_overlay::core::overlay_rule::OverlayRule;
+    use i_overlay::float::single::SingleFloatOverlay;
+    let subj: Vec<Vec<[f64; 2]>> = paths.iter().filter(|p| p.len() >= 3).cloned().collect();
+    let none: Vec<Vec<[f64; 2]>> = vec![];
+    let rule = match fill {
+        Fill::EvenOdd => FillRule::EvenOdd,
+        Fill::Positive => FillRule::Positive,
+    };
+    let shapes = if subj.is_empty() {
+        vec![]
+    } else {
+        subj.overlay(&none, OverlayRule::Subject, rule)
+    };
+    Poly2 {
+        paths: shapes
+            .into_iter()
+            .flatten()
+            .filter(|c| c.len() >= 3)
+            .map(|c| c.into_iter().map(DVec2::from).collect())
+            .collect(),
+    }
+}
+
+/// The elements under `node` (a child of a container whose transform is `m`), in document
+/// order: each drawing element's outlines, transformed.
+fn walk(node: roxmltree::Node, m: &Affine, out: &mut Vec<Vec<Vec<DVec2>>>) -> Result<(), String> {
+    if !node.is_element() {
+        return Ok(());
+    }
+    let ns = node.tag_name().namespace();
+    let svg_ns = ns.is_none() || ns == Some("http://www.w3.org/2000/svg");
+    let name = if svg_ns { node.tag_name().name() } else { "" };
+    match name {
+        // libsvg skips everything inside <defs>.
+        "defs" => return Ok(()),
+        "svg" => return Err("an <svg> inside the <svg> is not supported".into()),
+        _ => {}
+    }
+    let attr = |n: &str| at(node, n);
+    let own = || compose(m, &parse_transform(attr("transform")));
+    let style = Style {
+        width: attr("stroke-width"),
+        cap: attr("stroke-linecap"),
+        join: attr("stroke-linejoin"),
+        style: attr("style"),
+    };
+    let mut paths: Option<Vec<Vec<DVec2>>> = None;
+    match name {
+        "g" | "text" | "tspan" => {
+            let m = own();
+            for child in node.children() {
+                walk(child, &m, out)?;
+            }
+            return Ok(());
+        }
+        "path" => paths = Some(path_outlines(attr("d"), &style)?),
+        "rect" => paths = Some(rect(node, &style)?),
+        "circle" => {
+            let r = parse_double(attr("r"));
+            let c = [parse_double(attr("cx")), parse_double(attr("cy"))];
+            paths = Some(vec![ellipse(c, r, r)]);
+        }
+        "ellipse" => {
+            let (rx, ry) = (parse_double(attr("rx")), parse_double(attr("ry")));
+            let c = [parse_double(attr("cx")), parse_double(attr("cy"))];
+            paths = Some(vec![ellipse(c, rx, ry)]);
+        }
+        "line" => {
+            let a = DVec2::new(parse_double(attr("x1")), parse_double(attr("y1")));
+            let b = DVec2::new(parse_double(attr("x2")), parse_double(attr("y2")));
+            paths = Some(style.stroke(&[a, b]));
+        }
+        "polygon" | "polyline" => {
+            let mut pts = points(attr("points"));
+            paths = Some(if name == "polygon" {
+                if let Some(&first) = pts.first() {
+                    pts.push(first);
+                }
+                vec![pts]
+            } else {
+                style.stroke(&pts)
+            });
+        }
+        _ => {}
+    }
+    if let Some(paths) = paths {
+        let own = own();
+        out.push(
+            paths
+                .into_iter()
+                .map(|p| p.into_iter().map(|v| apply(&own, v)).collect())
+                .collect(),
+        );
+    }
+    // Children of a drawing element or of an element libsvg does not know are read with the
+    // nearest group's transform.
+    for child in node.children() {
+        walk(child, m, out)?;
+    }
+    Ok(())
+}
+
+/// An attribute's value ("" when missing, as libsvg's attribute map gives it).
+fn at<'a>(node: roxmltree::Node<'a, '_>, name: &str) -> &'a str {
+    node.attribute(name).unwrap_or("")
+}
+
+/// libsvg's `parse_double`: the whole string a number, else 0.
+fn parse_double(s: &str) -> f64 {
+    let t = s;
+    if t.is_empty() {
+        return 0.0;
+    }
+    t.parse::<f64>().unwrap_or(0.0)
+}
+
+/// The longest prefix of `s` that is a decimal number (sign, digits, point, exponent).
+fn number_prefix(s: &str) -> Option<(f64, &str)> {
+    let b = s.as_bytes();
+    let mut i = 0;
+    if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
+        i += 1;
+    }
+    let digits = |i: &mut usize| {
+        let s = *i;
+        while *i < b.len() && b[*i].is_ascii_digit() {
+            *i += 1;
+        }
+        *i - s
+    };
+    let mut n = digits(&mut i);
+    if i < b.len() && b[i] == b'.' {
+        i += 1;
+        n += digits(&mut i);
+    }
+    if n == 0 {
+        return None;
+    }
+    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+        let mut j = i + 1;
+        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
+            j += 1;
+        }
+        if digits(&mut j) > 0 {
+            i = j;
+        }
+    }
+    Some((s[..i].parse().ok()?, &s[i..]))
+}
+
+/// libsvg's `parse_length`: a number and an optional unit, nothing else.
+fn parse_length(s: &str) -> Length {
+    let undefined = Length {
+        number: 0.0,
+        unit: Unit::Undefined,
+    };
+    let Some((number, rest)) = number_prefix(s.trim()) else {
+        return undefined;
+    };
+    let unit = match rest.trim() {
+        "" => Unit::None,
+        "px" => Unit::Px,
+        "pt" => Unit::Pt,
+        "pc" => Unit::Pc,
+        "in" => Unit::In,
+        "cm" => Unit::Cm,
+        "mm" => Unit::Mm,
+        "%" | "em" | "ex" => Unit::Other,
+        _ => return undefined,
+    };
+    Length { number, unit }
+}
+
+/// libsvg's `parse_viewbox`: four numbers apart by spaces or one comma, sizes not negative.
+fn parse_viewbox(s: &str) -> Option<[f64; 4]> {
+    let mut rest = s.trim_start();
+    let mut v = [0.0; 4];
+    for (k, slot) in v.iter_mut().enumerate() {
+        if k > 0 {
+            rest = rest.trim_start();
+            if let Some(r) = rest.strip_prefix(',') {
+                rest = r.trim_start();
+            }
+        }
+        let (n, r) = number_prefix(rest)?;
+        *slot = n;
+        rest = r;
+    }
+    (rest.trim().is_empty() && v[2] >= 0.0 && v[3] >= 0.0).then_some(v)
+}
+
+/// libsvg's `parse_alignment`: `[defer] <align> [meet | slice]`, xMidYMid meet if unreadable.
+fn parse_alignment(s: &str) -> (Option<(Align, Align)>, bool) {
+    let default = (Some((Align::Mid, Align::Mid)), true);
+    let mut words: Vec<&str> = s.split_whitespace().collect();
+    if words.first() == Some(&"defer") {
+        words.remove(0);
+    }
+    let Some(first) = words.first() else {
+        return default;
+    };
+    let align = if *first == "none" {
+        None
+    } else {
+        let a = |t: &str| match t {
+            "Min" => Some(Align::Min),
+            "Mid" => Some(Align::Mid),
+            "Max" => Some(Align::Max),
+            _ => None,
+        };
+        let (Some(x), Some(y)) = (
+            first
+                .get(1..4)
+                .filter(|_| first.starts_with('x'))
+                .and_then(a),
+            first
+                .get(5..8)
+                .filter(|_| first.get(4..5) == Some("Y"))
+                .and_then(a),
+        ) else {
+            return default;
+        };
+        if first.len() != 8 {
+            return default;
+        }
+        Some((x, y))
+    };
+    let meet = match words.get(1) {
+        None => true,
+        Some(&"meet") => true,
+        Some(&"slice") => false,
+        Some(_) => return default,
+    };
+    if words.len() > 2 {
+        return default;
+    }
+    (align, meet)
+}
+
+/// libsvg's `transform` attribute: `matrix`, `translate`, `scale`, `rotate`, `skewX`, `skewY`
+/// (an operation with the wrong number of arguments is the identity).
+fn parse_transform(s: &str) -> Affine {
+    let s = s
+        .replace("matrix", "m")
+        .replace("translate", "t")
+        .replace("scale", "s")
+        .replace("rotate", "r")
+        .replace("skewX", "x")
+        .replace("skewY", "y");
+    let mut ops: Vec<(char, Vec<f64>)> = vec![];
+    for tok in tokens(&s, |c| c.is_whitespace() || ",()".contains(c), "mtsrxy") {
+        let mut cs = tok.chars();
+        match (cs.next(), cs.next()) {
+            (Some(c), None) if "mtsrxy".contains(c) => ops.push((c, vec![])),
+            _ => {
+                if let Some(op) = ops.last_mut() {
+                    op.1.push(parse_double(tok));
+                }
+            }
+        }
+    }
+    let mut m = IDENTITY;
+    for (op, a) in ops {
+        let t = match (op, a.len()) {
+            ('m', 6) => [a[0], a[1], a[2], a[3], a[4], a[5]],
+            ('t', 1 | 2) => [1.0, 0.0, 0.0, 1.0, a[0], a.get(1).copied().unwrap_or(0.0)],
+            ('s', 1 | 2) => [a[0], 0.0, 0.0, a.get(1).copied().unwrap_or(a[0]), 0.0, 0.0],
+            ('r', 1 | 3) => {
+                let (s, c) = (sin_degrees(a[0]), cos_degrees(a[0]));
+                let r = [c, s, -s, c, 0.0, 0.0];
+                if a.len() == 3 {
+                    let to = [1.0, 0.0, 0.0, 1.0, a[1], a[2]];
+                    let back = [1.0, 0.0, 0.0, 1.0, -a[1], -a[2]];
+                    compose(&compose(&to, &r), &back)
+                } else {
+                    r
+                }
+            }
+            ('x', 1) => [1.0, 0.0, a[0].to_radians().tan(), 1.0, 0.0, 0.0],
+            ('y', 1) => [1.0, a[0].to_radians().tan(), 0.0, 1.0, 0.0, 0.0],
+            _ => IDENTITY,
+        };
+        m = compose(&m, &t);
+    }
+    m
+}
+
+/// Boost's `char_separator`: pieces between dropped separators, and each kept delimiter alone.
+fn tokens<'a>(s: &'a str, dropped: impl Fn(char) -> bool, kept: &str) -> Vec<&'a str> {
+    let mut out = vec![];
+    let mut start = 0;
+    for (i, c) in s.char_indices() {
+        if dropped(c) || kept.contains(c) {
+            if i > start {
+                out.push(&s[start..i]);
+            }
+            if kept.contains(c) {
+                out.push(&s[i..i + c.len_utf8()]);
+            }
+            start = i + c.len_utf8();
+        }
+    }
+    if start < s.len() {
+        out.push(&s[start..]);
+    }
+    out
+}
+
+/// `points` of a polygon or polyline: x, y pairs (an odd last number is dropped).
+fn points(s: &str) -> Vec<DVec2> {
+    let nums: Vec<f64> = tokens(s, |c| c.is_whitespace() || c == ',', "")
+        .into_iter()
+        .map(parse_double)
+        .collect();
+    nums.chunks_exact(2)
+        .map(|c| DVec2::new(c[0], c[1]))
+        .collect()
+}
+
+/// libsvg's `draw_ellipse`: 40 points from the bottom (y + ry), x = rx·sin, y = ry·cos.
+fn ellipse(c: [f64; 2], rx: f64, ry: f64) -> Vec<DVec2> {
+    (1..=40)
+        .map(|i| {
+            let a = i as f64 * 360.0 / 40.0;
+            DVec2::new(rx * sin_degrees(a) + c[0], ry * cos_degrees(a) + c[1])
+        })
+        .collect()
+}
+
+/// A `rect`: four corners, or with `rx`/`ry` the path libsvg writes for it (its numbers
+/// printed to 6 significant digits, as boost::format does).
+fn rect(node: roxmltree::Node, style: &Style) -> Result<Vec<Vec<DVec2>>, String> {
+    let attr = |n: &str| at(node, n);
+    let (x, y) = (parse_double(attr("x")), parse_double(attr("y")));
+    let (w, h) = (parse_double(attr("width")), parse_double(attr("height")));
+    let (mut rx, mut ry) = (parse_double(attr("rx")), parse_double(attr("ry")));
+    let (has_rx, has_ry) = (rx.abs() >= 1e-8, ry.abs() >= 1e-8);
+    if !(has_rx || has_ry) {
+        let p = |a: f64, b: f64| DVec2::new(a, b);
+        return Ok(vec![vec![
+            p(x, y),
+            p(x + w, y),
+            p(x + w, y + h),
+            p(x, y + h),
+            p(x, y),
+        ]]);
+    }
+    if !has_rx {
+        rx = ry;
+    } else if !has_ry {
+        ry = rx;
+    }
+    rx = rx.min(w / 2.0);
+    ry = ry.min(h / 2.0);
+    let g = g6;
+    let d = format!(
+        "M {},{} H {} A {},{} 0 0,1 {},{} V {} A {},{} 0 0,1 {},{} H {} A {},{} 0 0,1 {},{} V {} A {},{} 0 0,1 {},{} z",
+        g(x + rx), g(y),
+        g(x + w - rx),
+        g(rx), g(ry), g(x + w), g(y + ry),
+        g(y + h - ry),
+        g(rx), g(ry), g(x + w - rx), g(y + h),
+        g(x + rx),
+        g(rx), g(ry), g(x), g(y + h - ry),
+        g(y + ry),
+        g(rx), g(ry), g(x + rx), g(y),
+    );
+    path_outlines(&d, style)
+}
+
+/// A number as C++'s `ostream` prints it by default (`%g`, 6 significant digits).
+fn g6(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return if v == 0.0 { "0".into() } else { format!("{v}") };
+    }
+    let sci = format!("{v:.5e}");
+    let (mant, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
+    let exp: i32 = exp.parse().unwrap_or(0);
+    let strip = |s: String| -> String {
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    };
+    if !(-4..6).contains(&exp) {
+        let sign = if exp < 0 { '-' } else { '+' };
+        format!("{}e{sign}{:02}", strip(mant.to_string()), exp.abs())
+    } else {
+        let decimals = (5 - exp).max(0) as usize;
+        strip(format!("{v:.decimals$}"))
+    }
+}
+
+/// The stroke attributes of an element.
+struct Style<'a> {
+    width: &'a str,
+    cap: &'a str,
+    join: &'a str,
+    style: &'a str,
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Cap {
+    Butt,
+    Square,
+    Round,
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Join {
+    Miter,
+    Square,
+    Round,
+}
+
+impl Style<'_> {
+    /// A property of the `style` attribute (`name:value` between semicolons, verbatim).
+    fn property(&self, name: &str) -> &str {
+        for s in self.style.split(';') {
+            let parts: Vec<&str> = s.split(':').collect();
+            if parts.len() == 2 && parts[0] == name {
+                return parts[1];
+            }
+        }
+        ""
+    }
+
+    fn pick<'b>(&'b self, attr: &'b str, name: &str) -> &'b str {
+        if attr.is_empty() {
+            self.property(name)
+        } else {
+            attr
+        }
+    }
+
+    /// The outline of an open polyline's stroke (libsvg's `offset_path`).
+    fn stroke(&self, path: &[DVec2]) -> Vec<Vec<DVec2>> {
+        let w = parse_double(self.pick(self.width, "stroke-width"));
+        let w = if w < 0.01 { 1.0 } else { w };
+        let cap = match self.pick(self.cap, "stroke-linecap") {
+            "butt" => Cap::Butt,
+            "round" => Cap::Round,
+            _ => Cap::Square,
+        };
+        let join = match self.pick(self.join, "stroke-linejoin") {
+            "bevel" => Join::Square,
+            "round" => Join::Round,
+            _ => Join::Miter,
+        };
+        open_offset(path, w, cap, join)
+    }
+}
+
+/// Clipper's round half away from zero.
+fn round(v: f64) -> f64 {
+    if v < 0.0 {
+        (v - 0.5).trunc()
+    } else {
+        (v + 0.5).trunc()
+    }
+}
+
+/// Clipper 6.4's `ClipperOffset` of one open path by half the stroke width, as libsvg calls
+/// it: points scaled by 10⁴ and truncated to integers, the default miter limit (2) and arc
+/// tolerance (0.25), then the union of the outline by the positive winding rule.
+fn open_offset(path: &[DVec2], width: f64, cap: Cap, join: Join) -> Vec<Vec<DVec2>> {
+    const SCALE: f64 = 10000.0;
+    let mut src: Vec<DVec2> = path.iter().map(|v| (*v * SCALE).trunc()).collect();
+    src.dedup();
+    let len = src.len();
+    if len == 0 {
+        return vec![];
+    }
+    let delta = width * 5000.0;
+    let two_pi = std::f64::consts::TAU;
+    let y = 0.25f64.min(delta.abs() * 0.25);
+    let mut steps = std::f64::consts::PI / (1.0 - y / delta.abs()).acos();
+    if steps > delta.abs() * std::f64::consts::PI {
+        steps = delta.abs() * std::f64::consts::PI;
+    }
+    let (m_sin, m_cos) = ((two_pi / steps).sin(), (two_pi / steps).cos());
+    let steps_per_rad = steps / two_pi;
+    let miter_lim = 0.5;
+    let mut dest: Vec<DVec2> = vec![];
+    let pt = |p: DVec2, n: DVec2, d: f64| DVec2::new(round(p.x + n.x * d), round(p.y + n.y * d));
+    if len == 1 {
+        if join == Join::Round {
+            let (mut x, mut yy) = (1.0, 0.0);
+            let mut j = 1.0;
+            while j <= steps {
+                dest.push(pt(src[0], DVec2::new(x, yy), delta));
+                let x2 = x;
+                x = x * m_cos - m_sin * yy;
+                yy = x2 * m_sin + yy * m_cos;
+                j += 1.0;
+            }
+        } else {
+            for (x, yy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                dest.push(pt(src[0], DVec2::new(x, yy), delta));
+            }
+        }
+    } else {
+        let unit_normal = |a: DVec2, b: DVec2| {
+            let d = b - a;
+            if d == DVec2::ZERO {
+                DVec2::ZERO
+            } else {
+                DVec2::new(d.y, -d.x) / d.length()
+            }
+        };
+        let mut normals: Vec<DVec2> = (0..len - 1)
+            .map(|j| unit_normal(src[j], src[j + 1]))
+            .collect();
+        normals.push(normals[len - 2]);
+        let mut sin_a = 0.0;
+        let do_square = |dest: &mut Vec<DVec2>, n: &[DVec2], j: usize, k: usize, sin_a: f64| {
+            let dx = (sin_a.atan2(n[k].dot(n[j])) / 4.0).tan();
+            let p = src[j];
+            dest.push(DVec2::new(
+                round(p.x + delta * (n[k].x - n[k].y * dx)),
+                round(p.y + delta * (n[k].y + n[k].x * dx)),
+            ));
+            dest.push(DVec2::new(
+                round(p.x + delta * (n[j].x + n[j].y * dx)),
+                round(p.y + delta * (n[j].y - n[j].x * dx)),
+            ));
+        };
+        let do_round = |dest: &mut Vec<DVec2>, n: &[DVec2], j: usize, k: usize, sin_a: f64| {
+            let a = sin_a.atan2(n[k].dot(n[j]));
+            let steps = (round(steps_per_rad * a.abs()) as i64).max(1);
+            let (mut x, mut yy) = (n[k].x, n[k].y);
+            for _ in 0..steps {
+                dest.push(pt(src[j], DVec2::new(x, yy), delta));
+                let x2 = x;
+                x = x * m_cos - m_sin * yy;
+                yy = x2 * m_sin + yy * m_cos;
+            }
+            dest.push(pt(src[j], n[j], delta));
+        };
+        let offset_point =
+            |dest: &mut Vec<DVec2>, n: &[DVec2], j: usize, k: &mut usize, sin_a: &mut f64| {
+                *sin_a = n[*k].x * n[j].y - n[j].x * n[*k].y;
+                if (*sin_a * delta).abs() < 1.0 {
+                    if n[*k].dot(n[j]) > 0.0 {
+                        dest.push(pt(src[j], n[*k], delta));
+                        return;
+                    }
+                } else {
+                    *sin_a = sin_a.clamp(-1.0, 1.0);
+                }
+                if *sin_a * delta < 0.0 {
+                    dest.push(pt(src[j], n[*k], delta));
+                    dest.push(src[j]);
+                    dest.push(pt(src[j], n[j], delta));
+                } else {
+                    match join {
+                        Join::Miter => {
+                            let r = 1.0 + n[j].dot(n[*k]);
+                            if r >= miter_lim {
+                                let q = delta / r;
+                                dest.push(DVec2::new(
+                                    round(src[j].x + (n[*k].x + n[j].x) * q),
+                                    round(src[j].y + (n[*k].y + n[j].y) * q),
+                                ));
+                            } else {
+                                do_square(dest, n, j, *k, *sin_a);
+                            }
+                        }
+                        Join::Square => do_square(dest, n, j, *k, *sin_a),
+                        Join::Round => do_round(dest, n, j, *k, *sin_a),
+                    }
+                }
+                *k = j;
+            };
+        let mut k = 0;
+        for j in 1..len - 1 {
+            offset_point(&mut dest, &normals, j, &mut k, &mut sin_a);
+        }
+        let j = len - 1;
+        if cap == Cap::Butt {
+            dest.push(pt(src[j], normals[j], delta));
+            dest.push(pt(src[j], normals[j], -delta));
+        } else {
+            k = len - 2;
+            sin_a = 0.0;
+            normals[j] = -normals[j];
+            if cap == Cap::Square {
+                do_square(&mut dest, &normals, j, k, sin_a);
+            } else {
+                do_round(&mut dest, &normals, j, k, sin_a);
+            }
+        }
+        for j in (1..len).rev() {
+            normals[j] = -normals[j - 1];
+        }
+        normals[0] = -normals[1];
+        k = len - 1;
+        for j in (1..len - 1).rev() {
+            offset_point(&mut dest, &normals, j, &mut k, &mut sin_a);
+        }
+        if cap == Cap::Butt {
+            dest.push(pt(src[0], normals[0], -delta));
+            dest.push(pt(src[0], normals[0], delta));
+        } else {
+            sin_a = 0.0;
+            if cap == Cap::Square {
+                do_square(&mut dest, &normals, 0, 1, sin_a);
+            } else {
+                do_round(&mut dest, &normals, 0, 1, sin_a);
+            }
+        }
+    }
+    let outline: Vec<[f64; 2]> = dest.iter().map(|v| v.to_array()).collect();
+    clean(&[outline], Fill::Positive)
+        .paths
+        .into_iter()
+        .map(|p| p.into_iter().map(|v| v / SCALE).collect())
+        .collect()
+}
+
+/// libsvg's `path`: its `d` read token by token as libsvg does (boost tokens apart by spaces
+/// and commas, each command letter and `-` a token of its own), each subpath a list of
+/// points; open subpaths become their strokes.
+fn path_outlines(d: &str, style: &Style) -> Result<Vec<Vec<DVec2>>, String> {
+    const COMMANDS: &str = "-zmlcqahvstZMLCQAHVST";
+    let mut toks: Vec<String> = vec![];
+    for t in tokens(d, |c| c.is_whitespace() || c == ',', COMMANDS) {
+        toks.extend(split_dots(t));
+    }
+    let mut list: Vec<Vec<DVec2>> = vec![vec![]];
+    let (mut x, mut y, mut xx) = (0.0f64, 0.0f64, 0.0f64);
+    let (mut rx, mut ry, mut cx1, mut cy1, mut cx2, mut cy2) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    let (mut angle, mut large, mut sweep) = (0.0, false, false);
+    let (mut last_cubic, mut last_quad) = (false, false);
+    let mut cmd = ' ';
+    let mut point: i32 = 0;
+    let mut negate = false;
+    let mut closed = false;
+    let mut exp = String::new();
+    let is_open = |p: &[DVec2]| p[0].distance(p[p.len() - 1]) > 0.1;
+    for v in &toks {
+        let mut p = 0.0;
+        if v.len() == 1 && COMMANDS.contains(v.as_str()) {
+            if v == "-" {
+                negate = true;
+                continue;
+            }
+            point = -1;
+            cmd = v.chars().next().unwrap_or(' ');
+        } else {
+            if v.ends_with('e') {
+                exp = if negate { format!("-{v}") } else { v.clone() };
+                negate = false;
+                continue;
+            }
+            if exp.is_empty() {
+                p = parse_double(v);
+                if negate {
+                    p = -p;
+                }
+            } else {
+                p = parse_double(&format!("{exp}{}{v}", if negate { "-" } else { "" }));
+                exp.clear();
+            }
+            negate = false;
+        }
+        let rel = cmd.is_ascii_lowercase();
+        let back = list.last_mut().expect("a current subpath");
+        match cmd.to_ascii_lowercase() {
+            'a' => match point {
+                0 => rx = p.abs(),
+                1 => ry = p.abs(),
+                2 => angle = p,
+                3 => large = p > 0.5,
+                4 => sweep = p > 0.5,
+                5 => xx = if rel { x + p } else { p },
+                6 => {
+                    let yy = if rel { y + p } else { p };
+                    if rx == 0.0 || ry == 0.0 {
+                        return Err("a path has an arc of radius 0".into());
+                    }
+                    arc_to(back, [x, y], rx, ry, [xx, yy], angle, large, sweep);
+                    (x, y) = (xx, yy);
+                    point = -1;
+                    (last_cubic, last_quad) = (false, false);
+                }
+                _ => {}
+            },
+            'l' => match point {
+                0 => xx = if rel { x + p } else { p },
+                1 => {
+                    let yy = if rel { y + p } else { p };
+                    back.push(DVec2::new(xx, yy));
+                    (x, y) = (xx, yy);
+                    point = -1;
+                    (last_cubic, last_quad) = (false, false);
+                }
+                _ => {}
+            },
+            'c' => match point {
+                0 => cx1 = p,
+                1 => cy1 = p,
+                2 => cx2 = p,
+                3 => cy2 = p,
+                4 => xx = if rel { x + p } else { p },
+                5 => {
+                    let yy = if rel { y + p } else { p };
+                    if rel {
+                        (cx1, cy1, cx2, cy2) = (x + cx1, y + cy1, x + cx2, y + cy2);
+                    }
+                    cubic(back, [x, y], [cx1, cy1], [cx2, cy2], [xx, yy]);
+                    (x, y) = (xx, yy);
+                    point = -1;
+                    (last_cubic, last_quad) = (true, false);
+                }
+                _ => {}
+            },
+            's' => match point {
+                0 => {
+                    if last_cubic {
+                        (cx1, cy1) = (2.0 * x - cx2, 2.0 * y - cy2);
+                    } else {
+                        (cx1, cy1) = (x, y);
+                    }
+                    cx2 = p;
+                }
+                1 => cy2 = p,
+                2 => xx = if rel { x + p } else { p },
+                3 => {
+                    let yy = if rel { y + p } else { p };
+                    if rel {
+                        (cx2, cy2) = (x + cx2, y + cy2);
+                    }
+                    cubic(back, [x, y], [cx1, cy1], [cx2, cy2], [xx, yy]);
+                    (x, y) = (xx, yy);
+                    point = -1;
+                    (last_cubic, last_quad) = (true, false);
+                }
+                _ => {}
+            },
+            'q' => match point {
+                0 => cx1 = p,
+                1 => cy1 = p,
+                2 => xx = if rel { x + p } else { p },
+                3 => {
+                    let yy = if rel { y + p } else { p };
+                    if rel {
+                        (cx1, cy1) = (x + cx1, y + cy1);
+                    }
+                    quadratic(back, [x, y], [cx1, cy1], [xx, yy]);
+                    (x, y) = (xx, yy);
+                    point = -1;
+                    (last_cubic, last_quad) = (false, true);
+                }
+                _ => {}
+            },
+            't' => match point {
+                0 => {
+                    if last_quad {
+                        (cx1, cy1) = (2.0 * x - cx1, 2.0 * y - cy1);
+                    } else {
+                        (cx1, cy1) = (x, y);
+                    }
+                    xx = if rel { x + p } else { p };
+                }
+                1 => {
+                    let yy = if rel { y + p } else { p };
+                    quadratic(back, [x, y], [cx1, cy1], [xx, yy]);
+                    (x, y) = (xx, yy);
+                    point = -1;
+                    (last_cubic, last_quad) = (false, true);
+                }
+                _ => {}
+            },
+            'm' => match point {
+                0 => xx = if rel { x + p } else { p },
+                1 => {
+                    let yy = if rel { y + p } else { p };
+                    cmd = if rel { 'l' } else { 'L' };
+                    if !back.is_empty() {
+                        if is_open(back) {
+                            let open = list.pop().expect("the current subpath");
+                            list.extend(style.stroke(&open));
+                        }
+                        list.push(vec![]);
+                    }
+                    list.last_mut()
+                        .expect("a current subpath")
+                        .push(DVec2::new(xx, yy));
+                    (x, y) = (xx, yy);
+                    point = -1;
+                    (last_cubic, last_quad) = (false, false);
+                }
+                _ => {}
+            },
+            'v' if point == 0 => {
+                y = if rel { y + p } else { p };
+                back.push(DVec2::new(x, y));
+                point = -1;
+                (last_cubic, last_quad) = (false, false);
+            }
+            'h' if point == 0 => {
+                x = if rel { x + p } else { p };
+                back.push(DVec2::new(x, y));
+                point = -1;
+                (last_cubic, last_quad) = (false, false);
+            }
+            'z' => {
+                if let Some(&first) = back.first() {
+                    back.push(first);
+                    (x, y) = (first.x, first.y);
+                }
+                list.push(vec![]);
+                closed = true;
+                (last_cubic, last_quad) = (false, false);
+            }
+            _ => {}
+        }
+        point += 1;
+    }
+    while list.last().is_some_and(|p| p.is_empty()) {
+        list.pop();
+    }
+    if !closed {
+        if let Some(last) = list.last() {
+            if is_open(last) {
+                let open = list.pop().expect("the last subpath");
+                list.extend(style.stroke(&open));
+            }
+        }
+    }
+    Ok(list)
+}
+
+/// libsvg's `split_dots`: a token with two or more points split before each further point
+/// ("0.5.5" is 0.5 and .5).
+fn split_dots(s: &str) -> Vec<String> {
+    if s.matches('.').count() < 2 {
+        return vec![s.to_string()];
+    }
+    let mut out = vec![];
+    let mut text = String::new();
+    let mut dot_seen = false;
+    for t in tokens(s, |_| false, ".") {
+        text.push_str(t);
+        if t == "." {
+            dot_seen = true;
+        } else if dot_seen {
+            out.push(std::mem::take(&mut text));
+        }
+    }
+    out
+}
+
+/// 20 segments of a cubic Bézier (the start point left out).
+fn cubic(out: &mut Vec<DVec2>, p0: [f64; 2], p1: [f64; 2], p2: [f64; 2], p3: [f64; 2]) {
+    for i in 1..=20u32 {
+        let a = f64::from(i) * (1.0 / 20.0);
+        let t = |e: i32| (1.0 - a).powi(e);
+        let f = |k: usize| {
+            p0[k] * t(3) + p1[k] * 3.0 * t(2) * a + p2[k] * 3.0 * t(1) * a * a + p3[k] * a * a * a
+        };
+        out.push(DVec2::new(f(0), f(1)));
+    }
+}
+
+/// 20 segments of a quadratic Bézier (the start point left out).
+fn quadratic(out: &mut Vec<DVec2>, p0: [f64; 2], p1: [f64; 2], p2: [f64; 2]) {
+    for i in 1..=20u32 {
+        let a = f64::from(i) * (1.0 / 20.0);
+        let t = |e: i32| (1.0 - a).powi(e);
+        let f = |k: usize| p0[k] * t(2) + p1[k] * 2.0 * t(1) * a + p2[k] * a * a;
+        out.push(DVec2::new(f(0), f(1)));
+    }
+}
+
+/// The angle from u to v in degrees, in [0, 360).
+fn vector_angle(u: DVec2, v: DVec2) -> f64 {
+    let a = v.y.atan2(v.x).to_degrees() - u.y.atan2(u.x).to_degrees();
+    if a < 0.0 {
+        a + 360.0
+    } else {
+        a
+    }
+}
+
+/// libsvg's `arc_to` (SVG's implementation notes F.6.5), `|Δθ|·10/180 + 4` segments, the
+/// start point included.
+#[allow(clippy::too_many_arguments)]
+fn arc_to(
+    out: &mut Vec<DVec2>,
+    p1: [f64; 2],
+    mut rx: f64,
+    mut ry: f64,
+    p2: [f64; 2],
+    angle: f64,
+    large: bool,
+    sweep: bool,
+) {
+    let (cos_r, sin_r) = (cos_degrees(angle), sin_degrees(angle));
+    let (dx, dy) = ((p1[0] - p2[0]) / 2.0, (p1[1] - p2[1]) / 2.0);
+    let x1_ = cos_r * dx + sin_r * dy;
+    let y1_ = -sin_r * dx + cos_r * dy;
+    let d = (x1_ * x1_) / (rx * rx) + (y1_ * y1_) / (ry * ry);
+    if d > 1.0 {
+        rx = (d.sqrt() * rx).abs();
+        ry = (d.sqrt() * ry).abs();
+    }
+    let mut t1 = rx * rx * ry * ry - rx * rx * y1_ * y1_ - ry * ry * x1_ * x1_;
+    let t2 = rx * rx * y1_ * y1_ + ry * ry * x1_ * x1_;
+    if t1 < 0.0 {
+        t1 = 0.0;
+    }
+    let mut t3 = (t1 / t2).sqrt();
+    if large == sweep {
+        t3 = -t3;
+    }
+    let cx_ = t3 * rx * y1_ / ry;
+    let cy_ = t3 * -ry * x1_ / rx;
+    let cx = cos_r * cx_ - sin_r * cy_ + (p1[0] + p2[0]) / 2.0;
+    let cy = sin_r * cx_ + cos_r * cy_ + (p1[1] + p2[1]) / 2.0;
+    let u = DVec2::new((x1_ - cx_) / rx, (y1_ - cy_) / ry);
+    let v = DVec2::new((-x1_ - cx_) / rx, (-y1_ - cy_) / ry);
+    let theta = vector_angle(DVec2::X, u);
+    let mut delta = vector_angle(u, v);
+    if !sweep {
+        delta -= 360.0;
+    }
+    let steps = (delta.abs() * 10.0 / 180.0 + 4.0) as i32;
+    for a in 0..=steps {
+        let phi = theta + delta * f64::from(a) / f64::from(steps);
+        let xx = cos_r * cos_degrees(phi) * rx - sin_r * sin_degrees(phi) * ry;
+        let yy = sin_r * cos_degrees(phi) * rx + cos_r * sin_degrees(phi) * ry;
+        out.push(DVec2::new(xx + cx, yy + cy));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn area(p: &Poly2) -> f64 {
+        p.paths
+            .iter()
+            .map(|c| crate::extrude::signed_area(c).abs())
+            .sum::<f64>()
+    }
+
+    #[test]
+    fn libsvg_number_quirks() {
+        assert_eq!(split_dots("0.5.25"), vec!["0.5", ".25"]);
+        assert_eq!(split_dots("1.5"), vec!["1.5"]);
+        assert_eq!(g6(10.123456789), "10.1235");
+        assert_eq!(g6(1234567.0), "1.23457e+06");
+        assert_eq!(g6(0.00001), "1e-05");
+        assert_eq!(g6(-2.5), "-2.5");
+        assert_eq!(parse_double("1px"), 0.0);
+        let l = parse_length(" 210mm ");
+        assert_eq!((l.number, l.unit), (210.0, Unit::Mm));
+        assert_eq!(parse_length("3furlongs").unit, Unit::Undefined);
+        assert_eq!(
+            parse_viewbox("0,0, 210 297"),
+            Some([0.0, 0.0, 210.0, 297.0])
+        );
+        assert_eq!(parse_viewbox("0 0 -1 2"), None);
+        assert_eq!(
+            parse_alignment("xMaxYMin slice"),
+            (Some((Align::Max, Align::Min)), false)
+        );
+        assert_eq!(parse_alignment("none").0, None);
+        assert_eq!(
+            parse_alignment("bogus"),
+            (Some((Align::Mid, Align::Mid)), true)
+        );
+    }
+
+    #[test]
+    fn transforms_compose_as_svg() {
+        let m = parse_transform("translate(10,20) rotate(90) scale(2)");
+        let p = apply(&m, DVec2::new(1.0, 0.0));
+        assert!((p - DVec2::new(10.0, 22.0)).length() < 1e-12, "{p}");
+        let r = parse_transform("rotate(90, 5, 5)");
+        assert!((apply(&r, DVec2::new(10.0, 5.0)) - DVec2::new(5.0, 10.0)).length() < 1e-12);
+        // A wrong number of arguments is the identity, as in libsvg.
+        assert_eq!(parse_transform("translate(1,2,3)"), IDENTITY);
+    }
+
+    #[test]
+    fn path_tokens_as_libsvg() {
+        let style = Style {
+            width: "",
+            cap: "",
+            join: "",
+            style: "",
+        };
+        // Relative numbers glued by minus signs and dots, an exponent split by the tokenizer.
+        let p = path_outlines("m1-1h1e1v.5.5l-10-1z", &style).unwrap();
+        assert_eq!(
+            p[0],
+            vec![
+                DVec2::new(1.0, -1.0),
+                DVec2::new(11.0, -1.0),
+                DVec2::new(11.0, -0.5),
+                DVec2::new(11.0, 0.0),
+                DVec2::new(1.0, -1.0),
+                DVec2::new(1.0, -1.0),
+            ]
+        );
+        // An open path is its stroke: width 1 and square caps by default.
+        let s = path_outlines("M 0,0 L 10,0", &style).unwrap();
+        let a = area(&Poly2 { paths: s });
+        assert!((a - 11.0).abs() < 1e-3, "{a}");
+    }
+
+    #[test]
+    fn page_scale_and_flip() {
+        let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" width="20mm" height="10mm"
+            viewBox="0 0 200 100"><rect x="10" y="10" width="50" height="20"/></svg>"#;
+        let shapes = parse(svg, 72.0, false).unwrap();
+        let pts: Vec<DVec2> = shapes[0].points().collect();
+        let lo = pts.iter().fold(DVec2::MAX, |a, b| a.min(*b));
+        let hi = pts.iter().fold(DVec2::MIN, |a, b| a.max(*b));
+        assert!((lo - DVec2::new(1.0, 7.0)).length() < 1e-9, "{lo}");
+        assert!((hi - DVec2::new(6.0, 9.0)).length() < 1e-9, "{hi}");
+        let c = parse(svg, 72.0, true).unwrap();
+        let lo = c[0].points().fold(DVec2::MAX, |a, b| a.min(b));
+        assert!((lo - DVec2::new(-2.5, -1.0)).length() < 1e-9, "{lo}");
+        assert!(parse("<svg><svg/></svg>", 72.0, false).is_err());
+        assert!(parse("<svg viewBox='0 0 0 10'/>", 72.0, false).is_err());
+    }
+}

@@ -1,0 +1,74 @@
+//! `import()` of SVG files against OpenSCAD's own geometry: each case of
+//! `vectors/openscad/svg/cases.txt` (made by its `generate.sh` with openscad 2021.01) is a
+//! `linear_extrude` of an SVG drawing (rectangles rounded or not, circles and ellipses under
+//! nested group transforms, paths of cubic and quadratic Béziers and arcs, holes by the
+//! even-odd rule, open paths drawn as strokes, a viewBox in inches and pixels with
+//! `preserveAspectRatio` and `center`, a page without viewBox at a given `dpi`), read from
+//! OpenSCAD's CSG export by csgpix (module `svg` of crates/openscad) and voxelized at 64³,
+//! against OpenSCAD's CGAL mesh of the same export (`NAME.off`) voxelized on the same grid.
+//! The IoU must reach 0.999 on the float route and 0.99 on the word route;
+//! `cargo test --release --test openscad_svg -- --nocapture` prints them.
+
+mod common;
+
+use common::compare_with_off;
+
+use std::path::{Path, PathBuf};
+
+use csgpix::voxel::Route;
+
+fn dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/openscad/svg")
+}
+
+#[test]
+fn svg_import_matches_openscads_mesh() {
+    let cases = std::fs::read_to_string(dir().join("cases.txt")).unwrap();
+    let mut failures = vec![];
+    let mut compared = 0;
+    for line in cases.lines().filter(|l| !l.starts_with('#')) {
+        let name = line.split('\t').next().unwrap();
+        match compare_with_off(&dir(), name, Route::Array { cycle: false }) {
+            Ok((float, word)) => {
+                compared += 1;
+                println!("{name:8} IoU float {float:.5}, word {word:.5}");
+                if float < 0.999 || word < 0.99 {
+                    failures.push(format!("{name}: float {float:.5}, word {word:.5}"));
+                }
+            }
+            Err(e) => failures.push(format!("{name}: refused: {e}")),
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+    assert_eq!(compared, 7);
+}
+
+/// A bad SVG file is one line naming the import's place in the scene.
+#[test]
+fn bad_svg_is_one_line_at_the_import() {
+    let tmp = tempfile::tempdir().unwrap();
+    std::fs::write(
+        tmp.path().join("bad.svg"),
+        "<svg><path d='M 0 0 L 1 1'></svg>",
+    )
+    .unwrap();
+    std::fs::write(tmp.path().join("page.svg"), "<html/>").unwrap();
+    let options = csgpix::scad::ReadOptions {
+        dir: Some(tmp.path().to_path_buf()),
+        ..Default::default()
+    };
+    for (file, why) in [
+        ("bad.svg", "not a valid SVG file"),
+        ("page.svg", "not an SVG file"),
+        ("missing.svg", "cannot read it"),
+    ] {
+        let text = format!("union() {{\n  linear_extrude(1)\n    import(file = \"{file}\");\n}}\n");
+        let e = csgpix::scad::parse_csg_with(&text, "t.csg", &options)
+            .err()
+            .unwrap_or_else(|| panic!("{file} accepted"))
+            .to_string();
+        assert!(e.starts_with("t.csg:3:5:"), "{e}");
+        assert!(e.contains(why), "{e}");
+        assert_eq!(e.lines().count(), 1, "{e}");
+    }
+}
