@@ -441,7 +441,7 @@ fn load(a: &Args) -> Result<Loaded, String> {
         (Some(p), _) => {
             let options = csgpix::scad::ReadOptions {
                 fallback: a.fallback.into(),
-                dir: None,
+                ..Default::default()
             };
             load_scene_with(p, &options).map_err(flag_message)
         }

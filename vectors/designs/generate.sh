@@ -4,14 +4,19 @@
 # mesh (meshes/NAME.off.gz). The wall time of the mesh step goes to meshes/times.tsv
 # (name, seconds, status: ok, timeout or fail:RC). Needs `openscad` (Debian's 2021.01 made
 # the checked-in files) and the fonts the designs name for text(): Liberation (fonts-liberation2), Roboto
-# (fonts-roboto) and Inter (fonts-inter); fridge-magnet-letters asks for Ubuntu Bold, which
-# Debian does not package: OpenSCAD draws it in its fallback font, csgpix refuses it.
+# (fonts-roboto) and Inter (fonts-inter). OpenSCAD also sees the fonts bundled in vectors/fonts
+# (OPENSCAD_FONT_PATH, read by its FontCache), the ones csgpix finds without system fonts.
+# fridge-magnet-letters asks for "Ubuntu Bold:style=bold": no font has the family "Ubuntu Bold"
+# (the Ubuntu font's Bold face is family "Ubuntu", style "Bold"), so fontconfig gives OpenSCAD
+# its fallback, DejaVu Sans Bold, even with the Ubuntu font installed; csgpix refuses it.
 #
 #   sh generate.sh              # every design
 #   sh generate.sh NAME...      # only these (their rows of times.tsv are replaced)
 set -eu
 cd "$(dirname "$0")"
 here=$(pwd)
+OPENSCAD_FONT_PATH="$(cd ../fonts && pwd)${OPENSCAD_FONT_PATH:+:$OPENSCAD_FONT_PATH}"
+export OPENSCAD_FONT_PATH
 mkdir -p meshes
 limit=900
 tab=$(printf '\t')

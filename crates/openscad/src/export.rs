@@ -1,6 +1,6 @@
 //! `.scad` files through `openscad`.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use csgpix_scene::solid::CsgScene;
 use csgpix_scene::Error;
@@ -73,6 +73,10 @@ pub fn read_scene_with(
     if options.dir.is_none() {
         options.dir = path.parent().map(Path::to_path_buf);
     }
+    options.fonts.extend(match is_scad(path) {
+        true => used_fonts(path),
+        false => fonts_beside(path),
+    });
     let parsed = crate::parse_csg_with(&text, &name, &options);
     let mut scene = match is_scad(path) {
         false => parsed?,
@@ -86,6 +90,80 @@ pub fn read_scene_with(
         eprintln!("{w}");
     }
     Ok(scene)
+}
+
+/// The font files a `.scad` file and the files it includes or uses name in `use <x.ttf>` or
+/// `use <x.otf>`, which OpenSCAD registers with fontconfig (`FileModule::registerUse`), in the
+/// order met; each found as OpenSCAD looks for a used file ([`resolve`]). A name not found is
+/// left out: a `text()` asking for its font is then an error naming the font.
+fn used_fonts(scad: &Path) -> Vec<PathBuf> {
+    let mut fonts = vec![];
+    let mut seen = vec![];
+    walk_fonts(scad, &mut fonts, &mut seen);
+    fonts
+}
+
+fn walk_fonts(path: &Path, fonts: &mut Vec<PathBuf>, seen: &mut Vec<PathBuf>) {
+    if seen.len() >= 256 || seen.iter().any(|p| p == path) {
+        return;
+    }
+    seen.push(path.to_path_buf());
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return;
+    };
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let found = scan(&text, "");
+    for name in found.fonts {
+        if let Some(f) = resolve(dir, &name).filter(|f| !fonts.contains(f)) {
+            fonts.push(f);
+        }
+    }
+    for name in found.includes {
+        if let Some(f) = resolve(dir, &name) {
+            walk_fonts(&f, fonts, seen);
+        }
+    }
+}
+
+/// A file named in `include <…>` or `use <…>` as OpenSCAD 2021.01 finds it
+/// (`find_valid_path`): relative to the naming file's directory, then to each directory of
+/// `OPENSCADPATH`.
+fn resolve(dir: &Path, name: &str) -> Option<PathBuf> {
+    let name = Path::new(name.trim());
+    let here = dir.join(name);
+    if here.is_file() {
+        return Some(here);
+    }
+    let path = std::env::var_os("OPENSCADPATH")?;
+    std::env::split_paths(&path)
+        .filter(|d| !d.as_os_str().is_empty())
+        .map(|d| d.join(name))
+        .find(|p| p.is_file())
+}
+
+/// The `*.ttf` and `*.otf` files beside a `.csg` file, by name: csgpix's stand-in for the
+/// `use <x.ttf>` lines the CSG export drops (OpenSCAD writes no `use` into it).
+fn fonts_beside(csg: &Path) -> Vec<PathBuf> {
+    let dir = match csg.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return vec![];
+    };
+    let mut fonts: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| is_font_file(p) && p.is_file())
+        .collect();
+    fonts.sort();
+    fonts
+}
+
+/// A name ending in `.ttf` or `.otf` (any case), as OpenSCAD tells a used font from a
+/// used library.
+fn is_font_file(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("ttf") || e.eq_ignore_ascii_case("otf"))
 }
 
 fn is_scad(path: &Path) -> bool {
@@ -161,7 +239,9 @@ fn call_sites(path: &Path, node: &str, out: &mut Vec<(String, usize, usize)>, de
         return;
     };
     let dir = path.parent().unwrap_or(Path::new("."));
-    let (calls, includes) = scan(&text, node);
+    let Scanned {
+        calls, includes, ..
+    } = scan(&text, node);
     let file = path.display().to_string();
     out.extend(calls.into_iter().map(|(l, c)| (file.clone(), l, c)));
     for inc in includes {
@@ -171,11 +251,21 @@ fn call_sites(path: &Path, node: &str, out: &mut Vec<(String, usize, usize)>, de
     }
 }
 
-/// The calls of `node` in a `.scad` text (line and column, 1-based, in characters) and the
-/// files it includes or uses.
-fn scan(text: &str, node: &str) -> (Vec<(usize, usize)>, Vec<String>) {
+/// What [`scan`] finds in a `.scad` text.
+struct Scanned {
+    /// The calls of the node (line and column, 1-based, in characters).
+    calls: Vec<(usize, usize)>,
+    /// The files it includes or uses, fonts left out.
+    includes: Vec<String>,
+    /// The font files it uses (`use <x.ttf>`, `use <x.otf>`).
+    fonts: Vec<String>,
+}
+
+/// The calls of `node` in a `.scad` text, the files it includes or uses and the fonts it
+/// uses.
+fn scan(text: &str, node: &str) -> Scanned {
     let chars: Vec<char> = text.chars().collect();
-    let (mut calls, mut includes) = (vec![], vec![]);
+    let (mut calls, mut includes, mut fonts) = (vec![], vec![], vec![]);
     let (mut i, mut line, mut col) = (0, 1, 1);
     let mut prev_word = String::new();
     let step = |i: &mut usize, line: &mut usize, col: &mut usize| {
@@ -219,7 +309,12 @@ fn scan(text: &str, node: &str) -> (Vec<(usize, usize)>, Vec<String>) {
             while i < chars.len() && chars[i] != '>' && chars[i] != '\n' {
                 step(&mut i, &mut line, &mut col);
             }
-            includes.push(chars[start..i].iter().collect());
+            let name: String = chars[start..i].iter().collect();
+            if prev_word == "use" && is_font_file(Path::new(name.trim())) {
+                fonts.push(name);
+            } else {
+                includes.push(name);
+            }
             prev_word.clear();
         } else if c.is_ascii_alphabetic() || c == '_' || c == '$' {
             let (l0, c0, start) = (line, col, i);
@@ -234,7 +329,7 @@ fn scan(text: &str, node: &str) -> (Vec<(usize, usize)>, Vec<String>) {
             }
             let called = chars.get(j) == Some(&'(');
             let defined = matches!(prev_word.as_str(), "module" | "function");
-            if word == node && called && !defined {
+            if !node.is_empty() && word == node && called && !defined {
                 calls.push((l0, c0));
             }
             prev_word = word;
@@ -245,7 +340,11 @@ fn scan(text: &str, node: &str) -> (Vec<(usize, usize)>, Vec<String>) {
             step(&mut i, &mut line, &mut col);
         }
     }
-    (calls, includes)
+    Scanned {
+        calls,
+        includes,
+        fonts,
+    }
 }
 
 #[cfg(test)]
@@ -257,11 +356,24 @@ mod tests {
         let text =
             "// minkowski(\n/* minkowski() */ x = \"minkowski()\";\nmodule minkowski(a) {}\n  \
                     translate([1, 0, 0]) minkowski () { cube(1); }\ninclude <lib/a.scad>\n";
-        let (calls, inc) = scan(text, "minkowski");
-        assert_eq!(scan("sphere($fn = 8, r = 1);", "sphere").0, vec![(1, 1)]);
-        assert_eq!(calls, vec![(4, 24)]);
-        assert_eq!(inc, vec!["lib/a.scad".to_string()]);
-        assert_eq!(scan(text, "cube").0, vec![(4, 39)]);
+        let found = scan(text, "minkowski");
+        assert_eq!(
+            scan("sphere($fn = 8, r = 1);", "sphere").calls,
+            vec![(1, 1)]
+        );
+        assert_eq!(found.calls, vec![(4, 24)]);
+        assert_eq!(found.includes, vec!["lib/a.scad".to_string()]);
+        assert!(found.fonts.is_empty());
+        assert_eq!(scan(text, "cube").calls, vec![(4, 39)]);
+        let fonts = scan(
+            "use <A b.TTF>\nuse <lib.scad>\n// use <c.otf>\nuse<d.otf>",
+            "",
+        );
+        assert_eq!(
+            fonts.fonts,
+            vec!["A b.TTF".to_string(), "d.otf".to_string()]
+        );
+        assert_eq!(fonts.includes, vec!["lib.scad".to_string()]);
     }
 
     #[test]

@@ -198,7 +198,11 @@ pub(crate) fn linear_args(p: &Params, res: (f64, f64, f64)) -> Result<LinearArgs
 
 /// `square`, `circle`, `polygon` or `text` as a shape in its own plane; `None` for a zero
 /// or negative size, which OpenSCAD draws as nothing.
-pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Option<Poly2>, Fail> {
+pub(crate) fn flat_shape<'f>(
+    p: &Params,
+    fonts: impl FnOnce() -> &'f crate::text::Fonts,
+    budget: usize,
+) -> Result<Option<Poly2>, Fail> {
     match p.node {
         NodeKind::Square => {
             let size = match p.get("size") {
@@ -226,7 +230,7 @@ pub(crate) fn flat_shape(p: &Params, budget: usize) -> Result<Option<Poly2>, Fai
             check_budget(n, budget, p.pos)?;
             Ok(Some(Poly2::circle(r, n, sin_cos_degrees)))
         }
-        NodeKind::Text => crate::text::text_shape(p, budget).map(Some),
+        NodeKind::Text => crate::text::text_shape(p, fonts(), budget).map(Some),
         _ => polygon(p, budget).map(Some),
     }
 }

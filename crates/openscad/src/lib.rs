@@ -165,6 +165,12 @@ pub struct ReadOptions {
     /// Where the scene's relative file names start (its file's directory; [`read_scene_with`]
     /// sets it), for the subtrees openscad meshes.
     pub dir: Option<std::path::PathBuf>,
+    /// Font files `text()` looks in before the standard fonts ([`text::Fonts::standard`]), in
+    /// this order. [`read_scene_with`] adds the scene's own: those a `.scad` file (or a file
+    /// it includes or uses) names in `use <x.ttf>` / `use <x.otf>`, as OpenSCAD registers
+    /// them; for a `.csg` file, which has lost its `use` lines, the `*.ttf` and `*.otf` files
+    /// in the `.csg` file's own directory.
+    pub fonts: Vec<std::path::PathBuf>,
 }
 
 /// What becomes of a node csgpix does not draw (`surface()`, a 2D import, a node it does

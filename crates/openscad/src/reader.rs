@@ -125,6 +125,9 @@ pub(crate) struct Reader<'a> {
     pub(crate) top_flat: Option<Pos>,
     /// Warnings as OpenSCAD gives them, with where they arose.
     pub(crate) warnings: Vec<(Pos, String)>,
+    /// The scene's own fonts ([`ReadOptions::fonts`]) before the standard ones, loaded at the
+    /// first `text()`; this scene's alone.
+    pub(crate) scene_fonts: std::cell::OnceCell<crate::text::Fonts>,
 }
 
 impl<'a> Reader<'a> {
@@ -142,7 +145,17 @@ impl<'a> Reader<'a> {
             consumed_imports: Vec::new(),
             top_flat: None,
             warnings: Vec::new(),
+            scene_fonts: std::cell::OnceCell::new(),
         }
+    }
+
+    /// The fonts `text()` looks in: the scene's own font files first, when it has any.
+    pub(crate) fn fonts(&self) -> &crate::text::Fonts {
+        if self.options.fonts.is_empty() {
+            return crate::text::Fonts::standard();
+        }
+        self.scene_fonts
+            .get_or_init(|| crate::text::Fonts::scene(&self.options.fonts))
     }
 
     pub(crate) fn run(mut self) -> Result<CsgScene, Fail> {
@@ -559,7 +572,7 @@ impl<'a> Reader<'a> {
         }
         let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
         if head.kind.is_flat() {
-            let Some(poly) = flat_shape(&head.params, budget)? else {
+            let Some(poly) = flat_shape(&head.params, || self.fonts(), budget)? else {
                 self.empty_primitive(head, ctx);
                 return Ok(None);
             };

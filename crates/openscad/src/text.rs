@@ -28,10 +28,12 @@
 //!   FreeType's made-up ones, which hb-ft hands OpenSCAD, not HarfBuzz's own fallback.
 //!
 //! Fonts are looked up by fontconfig's `Family:style=Style` syntax in, in this order, the
-//! directories of `CSGPIX_FONT_PATH` (colon-separated), the bundled `vectors/fonts` (when it
-//! exists beside the sources this crate was built from), then the system fonts. `font = ""` is
-//! OpenSCAD's default, `Liberation Sans:style=Regular`. A family or style that is not found is
-//! an error: OpenSCAD would warn and draw fontconfig's closest match instead.
+//! scene's own font files ([`crate::ReadOptions::fonts`]: those a `.scad` names in
+//! `use <x.ttf>`, or those beside a `.csg` file), the directories of `CSGPIX_FONT_PATH`
+//! (colon-separated), the bundled `vectors/fonts` (when it exists beside the sources this
+//! crate was built from), then the system fonts. `font = ""` is OpenSCAD's default,
+//! `Liberation Sans:style=Regular`. A family or style that is not found is an error: OpenSCAD
+//! would warn and draw fontconfig's closest match instead.
 
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -55,6 +57,15 @@ const UNSCALE: f64 = 1.024e5;
 /// The fonts csgpix can draw, in lookup order.
 pub struct Fonts {
     db: fontdb::Database,
+    /// Looked up after `db`: a scene's own fonts come first, then [`Fonts::standard`].
+    then: Option<&'static Fonts>,
+}
+
+/// A face [`Fonts::find`] found: which set of the lookup order, and the face in it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FaceId {
+    layer: usize,
+    id: fontdb::ID,
 }
 
 /// The bundled font directory, if the sources this crate was built from are still there.
@@ -73,7 +84,35 @@ impl Fonts {
         if system {
             db.load_system_fonts();
         }
-        Fonts { db }
+        Fonts { db, then: None }
+    }
+
+    /// A scene's own font files, looked up before [`Fonts::standard`] (which stays shared
+    /// and unchanged: these fonts belong to this value alone). A file that cannot be read
+    /// adds no face, as OpenSCAD only logs it; a `text()` asking for its font then fails.
+    pub fn scene(files: &[PathBuf]) -> Fonts {
+        let mut db = fontdb::Database::new();
+        for f in files {
+            let _ = db.load_font_file(f);
+        }
+        Fonts {
+            db,
+            then: Some(Fonts::standard()),
+        }
+    }
+
+    /// The sets of the lookup order: this one's faces, then those it defers to.
+    fn layers(&self) -> Vec<&Fonts> {
+        let mut layers = vec![self];
+        while let Some(next) = layers[layers.len() - 1].then {
+            layers.push(next);
+        }
+        layers
+    }
+
+    /// The font data of a face [`Fonts::find`] returned.
+    fn with_face_data<T>(&self, face: FaceId, f: impl FnOnce(&[u8], u32) -> T) -> Option<T> {
+        self.layers().get(face.layer)?.db.with_face_data(face.id, f)
     }
 
     /// `CSGPIX_FONT_PATH`, the bundled fonts, the system fonts; loaded once per process.
@@ -94,7 +133,7 @@ impl Fonts {
 
     /// The face a fontconfig-style name (`"Liberation Sans:style=Bold"`, `"DejaVu Sans:bold"`)
     /// names; `""` is [`DEFAULT_FONT`]. The first face found in lookup order wins.
-    pub fn find(&self, name: &str) -> Result<fontdb::ID, String> {
+    pub fn find(&self, name: &str) -> Result<FaceId, String> {
         let trimmed = name.trim();
         let lookup = if trimmed.is_empty() {
             DEFAULT_FONT
@@ -127,11 +166,14 @@ impl Fonts {
                 }
             }
         }
+        let layers = self.layers();
         for family in families.split(',').map(str::trim).filter(|f| !f.is_empty()) {
-            let faces: Vec<&fontdb::FaceInfo> = self
-                .db
-                .faces()
-                .filter(|f| {
+            // The faces of the family, in lookup order.
+            let faces: Vec<(usize, &fontdb::FaceInfo)> = layers
+                .iter()
+                .enumerate()
+                .flat_map(|(layer, fonts)| fonts.db.faces().map(move |f| (layer, f)))
+                .filter(|(_, f)| {
                     f.families
                         .iter()
                         .any(|(n, _)| n.eq_ignore_ascii_case(family))
@@ -141,52 +183,60 @@ impl Fonts {
                 continue;
             }
             let found = if let Some(style) = &style {
-                faces.iter().find(|f| {
-                    self.style_names(f)
+                faces.iter().find(|(layer, f)| {
+                    style_names(&layers[*layer].db, f)
                         .iter()
                         .any(|s| s.eq_ignore_ascii_case(style))
                 })
             } else {
                 let want = weight.unwrap_or(400);
-                let wants_italic =
-                    |f: &&&fontdb::FaceInfo| (f.style != fontdb::Style::Normal) == italic;
+                let wants_italic = |(_, f): &&(usize, &fontdb::FaceInfo)| {
+                    (f.style != fontdb::Style::Normal) == italic
+                };
                 faces
                     .iter()
                     .filter(wants_italic)
-                    .filter(|f| f.stretch == fontdb::Stretch::Normal)
-                    .min_by_key(|f| (f.weight.0 as i32 - want as i32).abs())
-                    .filter(|f| weight.is_none() || f.weight.0 == want)
+                    .filter(|(_, f)| f.stretch == fontdb::Stretch::Normal)
+                    .min_by_key(|(_, f)| (f.weight.0 as i32 - want as i32).abs())
+                    .filter(|(_, f)| weight.is_none() || f.weight.0 == want)
             };
             return match found {
-                Some(f) => Ok(f.id),
+                Some((layer, f)) => Ok(FaceId {
+                    layer: *layer,
+                    id: f.id,
+                }),
                 None => Err(format!(
                     "font `{name}`: family `{family}` has no such style (csgpix does not substitute fonts)"
                 )),
             };
         }
+        let scene = if self.then.is_some() {
+            "the scene's font files, "
+        } else {
+            ""
+        };
         Err(format!(
-            "font `{name}` not found (searched CSGPIX_FONT_PATH, the bundled fonts and the system fonts)"
+            "font `{name}` not found (searched {scene}CSGPIX_FONT_PATH, the bundled fonts and the system fonts)"
         ))
     }
+}
 
-    /// A face's style names (typographic subfamily and subfamily, every language).
-    fn style_names(&self, f: &fontdb::FaceInfo) -> Vec<String> {
-        self.db
-            .with_face_data(f.id, |data, index| {
-                let Ok(face) = ttf_parser::Face::parse(data, index) else {
-                    return vec![];
-                };
-                face.names()
-                    .into_iter()
-                    .filter(|n| {
-                        n.name_id == ttf_parser::name_id::SUBFAMILY
-                            || n.name_id == ttf_parser::name_id::TYPOGRAPHIC_SUBFAMILY
-                    })
-                    .filter_map(|n| n.to_string())
-                    .collect()
+/// A face's style names (typographic subfamily and subfamily, every language).
+fn style_names(db: &fontdb::Database, f: &fontdb::FaceInfo) -> Vec<String> {
+    db.with_face_data(f.id, |data, index| {
+        let Ok(face) = ttf_parser::Face::parse(data, index) else {
+            return vec![];
+        };
+        face.names()
+            .into_iter()
+            .filter(|n| {
+                n.name_id == ttf_parser::name_id::SUBFAMILY
+                    || n.name_id == ttf_parser::name_id::TYPOGRAPHIC_SUBFAMILY
             })
-            .unwrap_or_default()
-    }
+            .filter_map(|n| n.to_string())
+            .collect()
+    })
+    .unwrap_or_default()
 }
 
 /// The arguments of one `text()` node.
@@ -341,7 +391,6 @@ pub fn render(spec: &TextSpec, fonts: &Fonts, max_points: usize) -> Result<Poly2
         ));
     }
     fonts
-        .db
         .with_face_data(id, |data, index| render_face(spec, data, index, max_points))
         .unwrap_or_else(|| Err(format!("font `{}` could not be read", spec.font)))
 }
@@ -501,7 +550,7 @@ fn string(p: &Params, name: &str, default: &str) -> Result<String, Fail> {
 
 /// `text(text, size, font, direction, language, script, halign, valign, spacing, $fn, $fa,
 /// $fs)` as a shape in its own plane.
-pub(crate) fn text_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
+pub(crate) fn text_shape(p: &Params, fonts: &Fonts, budget: usize) -> Result<Poly2, Fail> {
     let size = match p.number("size")? {
         None => 10.0,
         Some((s, at)) if !(s > 0.0 && s <= MAX_COORDINATE) => {
@@ -529,7 +578,7 @@ pub(crate) fn text_shape(p: &Params, budget: usize) -> Result<Poly2, Fail> {
         valign: string(p, "valign", "baseline")?,
         segments: segments(size, res.fn_, res.fa, res.fs),
     };
-    let poly = render(&spec, Fonts::standard(), budget).map_err(|msg| Fail { pos: p.pos, msg })?;
+    let poly = render(&spec, fonts, budget).map_err(|msg| Fail { pos: p.pos, msg })?;
     check_budget(poly.points().count(), budget, p.pos)?;
     Ok(poly)
 }
@@ -611,6 +660,109 @@ mod tests {
         assert!(e.starts_with("t.csg:1:28: ") && e.contains("points"), "{e}");
     }
 
+    /// A font in none of the standard places: the one birthday-heart uses (public domain).
+    fn magiera() -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../vectors/designs/birthday-heart/Magiera Script.ttf")
+    }
+
+    const MAGIERA: &str =
+        "linear_extrude(height = 1)\n  text(\"Hi\", font = \"Magiera:style=Script\");\n";
+
+    /// openscad on PATH, or the test is skipped (a failure with `CSGPIX_OPENSCAD=require`).
+    fn have_openscad() -> bool {
+        let found = std::process::Command::new("openscad")
+            .arg("--version")
+            .output()
+            .is_ok_and(|o| o.status.success());
+        if !found {
+            assert_ne!(
+                std::env::var("CSGPIX_OPENSCAD").as_deref(),
+                Ok("require"),
+                "CSGPIX_OPENSCAD=require but openscad is not on PATH"
+            );
+            eprintln!("openscad is not on PATH: skipped");
+        }
+        found
+    }
+
+    #[test]
+    fn a_font_beside_a_csg_file_is_found_for_that_scene_only() {
+        let with = tempfile::tempdir().unwrap();
+        std::fs::copy(magiera(), with.path().join("Magiera Script.ttf")).unwrap();
+        let csg = with.path().join("t.csg");
+        std::fs::write(&csg, MAGIERA).unwrap();
+        let scene = crate::read_scene(&csg).unwrap();
+        assert_eq!(scene.imports.len() + scene.solids.len(), 1);
+        // The same scene elsewhere, read after it in this process: the font is not kept.
+        let without = tempfile::tempdir().unwrap();
+        let csg = without.path().join("t.csg");
+        std::fs::write(&csg, MAGIERA).unwrap();
+        let e = crate::read_scene(&csg).unwrap_err().to_string();
+        let at = format!(
+            "{}:2:3: font `Magiera:style=Script` not found",
+            csg.display()
+        );
+        assert!(e.starts_with(&at), "{e}");
+        assert!(!e.contains('\n'), "{e}");
+        // With a font file beside it that is not the one asked, the message says it looked.
+        std::fs::copy(
+            bundled_font_dir()
+                .unwrap()
+                .join("LiberationSerif-Regular.ttf"),
+            without.path().join("LiberationSerif-Regular.ttf"),
+        )
+        .unwrap();
+        let e = crate::read_scene(&csg).unwrap_err().to_string();
+        assert!(e.starts_with(&at), "{e}");
+        assert!(
+            e.contains("(searched the scene's font files, CSGPIX_FONT_PATH"),
+            "{e}"
+        );
+        // The standard fonts never see it.
+        assert!(Fonts::standard().find("Magiera:style=Script").is_err());
+        // Scene fonts come first and the standard ones stay behind them.
+        let f = Fonts::scene(&[magiera()]);
+        assert_eq!(f.find("Magiera:style=Script").unwrap().layer, 0);
+        assert_eq!(f.find("Liberation Sans").unwrap().layer, 1);
+        let e = f.find("Magiera:style=Bold").unwrap_err();
+        assert!(e.contains("no such style"), "{e}");
+    }
+
+    #[test]
+    fn a_font_a_scad_file_uses_is_found() {
+        if !have_openscad() {
+            return;
+        }
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        std::fs::create_dir_all(root.join("fonts")).unwrap();
+        std::fs::create_dir_all(root.join("lib")).unwrap();
+        std::fs::copy(magiera(), root.join("fonts/Magiera Script.ttf")).unwrap();
+        // Directly, relative to the .scad.
+        let main = root.join("main.scad");
+        std::fs::write(&main, format!("use <fonts/Magiera Script.ttf>\n{MAGIERA}")).unwrap();
+        crate::read_scene(&main).unwrap();
+        // Through an include, relative to the included file.
+        std::fs::write(
+            root.join("lib/fonts.scad"),
+            "use <../fonts/Magiera Script.ttf>\n",
+        )
+        .unwrap();
+        let inc = root.join("inc.scad");
+        std::fs::write(&inc, format!("include <lib/fonts.scad>\n{MAGIERA}")).unwrap();
+        crate::read_scene(&inc).unwrap();
+        // Not used: OpenSCAD substitutes a font, csgpix refuses, at the text() call.
+        let bare = root.join("bare.scad");
+        std::fs::write(&bare, MAGIERA).unwrap();
+        let e = crate::read_scene(&bare).unwrap_err().to_string();
+        let at = format!(
+            "{}:2:3: font `Magiera:style=Script` not found",
+            bare.display()
+        );
+        assert!(e.starts_with(&at), "{e}");
+    }
+
     #[test]
     fn alignment_offsets_follow_openscad() {
         let at = |h: &str, v: &str| {
@@ -625,8 +777,8 @@ mod tests {
         // 1/1.024e5 per 26.6 unit where the outlines are scaled by 1/1e5.
         let width = base.x - right.x;
         let f = fonts();
-        let expect =
-            f.db.with_face_data(f.find("").unwrap(), |data, index| {
+        let expect = f
+            .with_face_data(f.find("").unwrap(), |data, index| {
                 let face = ttf_parser::Face::parse(data, index).unwrap();
                 let h = face.glyph_index('H').unwrap();
                 let adv26 = (face.glyph_hor_advance(h).unwrap() as f64 * units_26_6(&face)).round();
