@@ -334,14 +334,23 @@ fn walls(lower: &[DVec3], upper: &[DVec3], rising: Option<bool>, out: &mut Vec<T
 /// number of outlines it lies inside).
 fn oriented(poly: &Poly2) -> Vec<cap::Ring> {
     let paths: Vec<&Vec<DVec2>> = poly.paths.iter().filter(|p| p.len() >= 3).collect();
+    // Each outline's box, so the point-in-outline test runs only where it can succeed.
+    let boxes: Vec<(DVec2, DVec2)> = paths
+        .iter()
+        .map(|p| {
+            p.iter()
+                .fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &q| {
+                    (lo.min(q), hi.max(q))
+                })
+        })
+        .collect();
+    let in_box = |j: usize, q: DVec2| q.cmpge(boxes[j].0).all() && q.cmple(boxes[j].1).all();
     paths
         .iter()
         .enumerate()
         .map(|(i, path)| {
-            let depth = paths
-                .iter()
-                .enumerate()
-                .filter(|&(j, other)| j != i && cap::inside(other, path[0]))
+            let depth = (0..paths.len())
+                .filter(|&j| j != i && in_box(j, path[0]) && cap::inside(paths[j], path[0]))
                 .count();
             let mut points = (*path).clone();
             if (signed_area(&points) > 0.0) == (depth % 2 == 1) {

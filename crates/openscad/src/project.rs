@@ -229,19 +229,29 @@ pub(crate) fn shadow(
     })
 }
 
-/// The union of the triangles' shadows: every triangle turned counter-clockwise, those without
-/// area dropped, all filled non-zero in one `i_overlay` sweep.
+/// The union of the triangles' shadows: every triangle turned counter-clockwise, all filled
+/// non-zero in one `i_overlay` sweep. Triangles without area, or with less than 1e-12 of the
+/// square of the shadow's extent (slivers of walls seen edge-on), are dropped: the overlay
+/// snaps to an integer grid about 1e-9 of the extent fine, where slivers break its result into
+/// thousands of fragments, and what they cover is below that grid.
 pub(crate) fn triangles_shadow(tris: impl Iterator<Item = [DVec3; 3]>) -> Poly2 {
     use i_overlay::core::fill_rule::FillRule;
     use i_overlay::core::overlay_rule::OverlayRule;
     use i_overlay::float::single::SingleFloatOverlay;
+    let flat: Vec<[DVec2; 3]> = tris.map(|t| t.map(|p| DVec2::new(p.x, p.y))).collect();
+    let (lo, hi) = flat
+        .iter()
+        .flatten()
+        .fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &p| {
+            (lo.min(p), hi.max(p))
+        });
+    let least = 1e-12 * (hi - lo).max_element().powi(2);
     let mut subj: Vec<Vec<[f64; 2]>> = vec![];
-    for t in tris {
-        let [a, b, c] = t.map(|p| DVec2::new(p.x, p.y));
-        let area = (b - a).perp_dot(c - a);
-        if area > 0.0 {
+    for [a, b, c] in flat {
+        let area = 0.5 * (b - a).perp_dot(c - a);
+        if area > least {
             subj.push(vec![a.to_array(), b.to_array(), c.to_array()]);
-        } else if area < 0.0 {
+        } else if area < -least {
             subj.push(vec![a.to_array(), c.to_array(), b.to_array()]);
         }
     }
