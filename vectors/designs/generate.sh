@@ -50,7 +50,10 @@ for name in $names; do
 
     # CSG export (the tree as OpenSCAD evaluates it). Absolute output paths: OpenSCAD 2021.01
     # writes a relative CSG output path relative to the design's own directory.
-    if ! timeout "$limit" openscad -q -o "$here/meshes/$name.csg" "$src" </dev/null 2>"$tmp/err"; then
+    # `$preview = false`: the tree OpenSCAD renders (F6, STL export), not the one it previews
+    # (a CSG export alone evaluates `$preview` as true, so a design's `if ($preview)`
+    # assembly view would be compared with the printed parts of the mesh below).
+    if ! timeout "$limit" openscad -q -D '$preview=false' -o "$here/meshes/$name.csg" "$src" </dev/null 2>"$tmp/err"; then
         echo "generate.sh: $name: CSG export failed" >&2
         cat "$tmp/err" >&2
     fi

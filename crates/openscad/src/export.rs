@@ -22,7 +22,10 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
     let dir = tempfile::tempdir()
         .map_err(|e| Error::msg(format!("{name}: a temporary directory: {e}")))?;
     let out = dir.path().join("scene.csg");
+    // `$preview = false`: the tree OpenSCAD renders (F6, STL export), not its preview (a CSG
+    // export evaluates `$preview` as true): the voxels are the parts a design prints.
     let run = std::process::Command::new("openscad")
+        .args(["-D", "$preview=false"])
         .arg("-o")
         .arg(&out)
         .arg(path)
