@@ -42,6 +42,8 @@ pub(crate) fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
         pos,
         msg: e.message,
     })?;
+    let m = plane_part(frame.placement.as_ref());
+    let r = crate::project::map_region(r, &|p| p.transformed(m));
     Ok(Some(Item::Flat(r, at)))
 }
 

@@ -268,11 +268,13 @@ impl<'a> Reader<'a> {
         let spec = flat_spec(&head)?;
         let mut ctx = ctx;
         let placement = match head.kind {
-            // Their children start from the identity: the result is placed afterwards.
+            // Their children start from the identity: the result is placed afterwards (an
+            // offset's distance is in its own coordinates, which a scale above it changes).
             NodeKind::LinearExtrude
             | NodeKind::RotateExtrude
             | NodeKind::Projection
-            | NodeKind::Resize => ctx.matrix.take(),
+            | NodeKind::Resize
+            | NodeKind::Offset => ctx.matrix.take(),
             _ => None,
         };
         self.open.push(Frame {
