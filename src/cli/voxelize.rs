@@ -439,8 +439,10 @@ fn input_name(a: &Args) -> String {
 fn load(a: &Args) -> Result<Loaded, String> {
     match (&a.scene, &a.expr) {
         (Some(p), _) => {
+            // The scene's vertices count against --max-memory too.
             let options = csgpix::scad::ReadOptions {
                 fallback: a.fallback.into(),
+                max_vertices: Some(csgpix::scad::ReadOptions::max_vertices_for(a.mem.bytes())),
                 ..Default::default()
             };
             load_scene_with(p, &options).map_err(flag_message)

@@ -37,7 +37,7 @@
 //!   X + c0 is X's mesh translated (a closed mesh primitive), each hull(T ⊕ C) a convex
 //!   solid: a mesh of n triangles becomes n convex solids of up to 3·|C| vertices each. That
 //!   is exact but many primitives (a sphere minus a cylinder at `$fn = 12` has a few hundred
-//!   triangles); the scene's vertex budget ([`crate::MAX_SCENE_VERTICES`]) refuses sums that
+//!   triangles); the scene's vertex budget ([`crate::ReadOptions::max_vertices`]) refuses sums that
 //!   would exceed it.
 //! * Both non-convex: the same argument with a triangle T in the role of C (a triangle is
 //!   convex) gives T ⊕ Y = (Y + t) ∪ ⋃_{T' of ∂Y} hull(T ⊕ T') for any point t of T, so
@@ -348,10 +348,9 @@ pub(crate) fn minkowski3(a: &[Piece], b: &[Piece], budget: usize) -> Result<Vec<
 }
 
 fn over_budget() -> String {
-    format!(
-        "the Minkowski sum would give the scene more than {} vertices",
-        crate::MAX_SCENE_VERTICES
-    )
+    "the Minkowski sum would pass the scene's vertex limit (the limit follows the memory \
+     limit, e.g. --max-memory)"
+        .to_string()
 }
 
 /// X ⊕ C = (X + c0) ∪ ⋃ hull(T ⊕ C).

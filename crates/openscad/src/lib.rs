@@ -171,6 +171,21 @@ pub struct ReadOptions {
     /// them; for a `.csg` file, which has lost its `use` lines, the `*.ttf` and `*.otf` files
     /// in the `.csg` file's own directory.
     pub fonts: Vec<std::path::PathBuf>,
+    /// The most vertices the scene may have while it is read (`None`:
+    /// [`MAX_SCENE_VERTICES`]); [`ReadOptions::max_vertices_for`] turns a memory limit into it.
+    pub max_vertices: Option<usize>,
+}
+
+/// What one vertex of a scene costs while it is read, in bytes, with its share of faces and
+/// triangles (a mesh primitive's triangles as f32 corners, a convex solid's f64 vertices and
+/// face lists, the copies a boolean or hull makes); measured scenes stay below it.
+pub const BYTES_PER_SCENE_VERTEX: u64 = 64;
+
+impl ReadOptions {
+    /// The vertex limit a memory limit of `bytes` allows ([`BYTES_PER_SCENE_VERTEX`] each).
+    pub fn max_vertices_for(bytes: u64) -> usize {
+        usize::try_from(bytes / BYTES_PER_SCENE_VERTEX).unwrap_or(usize::MAX)
+    }
 }
 
 /// What becomes of a node csgpix does not draw (`surface()`, a 2D import, a node it does

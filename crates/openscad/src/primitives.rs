@@ -47,9 +47,14 @@ pub(crate) fn too_large(c: f64) -> bool {
     c.is_nan() || c.abs() > MAX_COORDINATE
 }
 
+/// Refuses `vertices` more when only `budget` are left of the scene's limit
+/// ([`crate::ReadOptions::max_vertices`]).
 pub(crate) fn check_budget(vertices: usize, budget: usize, pos: Pos) -> Result<(), Fail> {
     if vertices > budget {
-        let msg = format!("the scene would have more than {MAX_SCENE_VERTICES} vertices");
+        let msg = format!(
+            "the scene would pass its vertex limit: {vertices} more vertices, {budget} left \
+             (the limit follows the memory limit, e.g. --max-memory)"
+        );
         return fail(pos, msg);
     }
     Ok(())

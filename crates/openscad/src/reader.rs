@@ -131,6 +131,11 @@ pub(crate) struct Reader<'a> {
 }
 
 impl<'a> Reader<'a> {
+    /// The most vertices the scene may have ([`ReadOptions::max_vertices`]).
+    pub(crate) fn max_vertices(&self) -> usize {
+        self.options.max_vertices.unwrap_or(MAX_SCENE_VERTICES)
+    }
+
     pub(crate) fn new(text: &'a str, options: &'a ReadOptions) -> Self {
         Reader {
             text,
@@ -433,7 +438,7 @@ impl<'a> Reader<'a> {
                 msg: format!("`{name}` (--fallback openscad): {msg}"),
             })?;
         let count = tris.len();
-        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let budget = self.max_vertices().saturating_sub(self.vertices);
         check_budget(count * 3, budget, pos)?;
         self.vertices += count * 3;
         let to = Placement {
@@ -538,7 +543,7 @@ impl<'a> Reader<'a> {
                 msg: format!("`import(\"{}\")` (an SVG file): {msg}", args.file),
             })?;
         let n: usize = shapes.iter().map(|p| p.points().count()).sum();
-        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let budget = self.max_vertices().saturating_sub(self.vertices);
         check_budget(n, budget, head.pos)?;
         self.vertices += n;
         let m = plane_part(ctx.matrix.as_ref());
@@ -572,7 +577,7 @@ impl<'a> Reader<'a> {
                 IMPORTED + self.imports.len() - 1,
             ))));
         }
-        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let budget = self.max_vertices().saturating_sub(self.vertices);
         if head.kind.is_flat() {
             let Some(poly) = flat_shape(&head.params, || self.fonts(), budget)? else {
                 self.empty_primitive(head, ctx);
@@ -706,7 +711,7 @@ impl<'a> Reader<'a> {
         how: &Extrusion,
         to: &Placement,
     ) -> Result<CsgNode, Fail> {
-        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let budget = self.max_vertices().saturating_sub(self.vertices);
         let n = p.points().count();
         if let Extrusion::Linear(l) = how {
             if let Some(outline) = p.convex_outline().filter(|_| l.keeps_convex()) {
@@ -887,7 +892,7 @@ impl<'a> Reader<'a> {
         if frame.children.len() < 2 {
             return Ok(Item::Solid(frame.children.pop().unwrap_or(CsgNode::Empty)));
         }
-        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let budget = self.max_vertices().saturating_sub(self.vertices);
         let mut acc: Option<Vec<Piece>> = None;
         // The operands are placed (M x = L x + t) before they are summed, and M(A) ⊕ M(B) =
         // M(A ⊕ B) + t: each operand after the first brings the translation once too often.
@@ -938,7 +943,7 @@ impl<'a> Reader<'a> {
                 }
             }
         }
-        check_budget(self.vertices, MAX_SCENE_VERTICES, pos)?;
+        check_budget(self.vertices, self.max_vertices(), pos)?;
         Ok(Item::Solid(combine(Op::Union, leaves)))
     }
 
@@ -950,7 +955,7 @@ impl<'a> Reader<'a> {
         if frame.flats.len() < 2 {
             return Ok(frame.flats.pop().map(|r| Item::Flat(r, flat_at)));
         }
-        let budget = MAX_SCENE_VERTICES.saturating_sub(self.vertices);
+        let budget = self.max_vertices().saturating_sub(self.vertices);
         let mut acc: Option<Vec<Piece2>> = None;
         // As in 3D: the placed operands carry the plane translation once each.
         let [[_, _, tx], [_, _, ty]] = plane_part(frame.ctx.matrix.as_ref());

@@ -696,7 +696,9 @@ fn a_minkowski_sum_past_the_vertex_budget_is_refused_where_it_stands() {
     let text = "group() {\n  minkowski() {\n    difference() { sphere(r = 2, $fn = 40); cube(size = 1); }\n    difference() { sphere(r = 1, $fn = 40); cube(size = 0.5); }\n  }\n}";
     let e = parse_csg(text, "t.csg").unwrap_err().to_string();
     assert!(
-        e.starts_with("t.csg:2:3: minkowski(): the Minkowski sum would give the scene more than"),
+        e.starts_with(
+            "t.csg:2:3: minkowski(): the Minkowski sum would pass the scene's vertex limit"
+        ),
         "{e}"
     );
 }
@@ -762,4 +764,22 @@ fn rotate_extrude_of_a_boolean_cut_to_one_side_is_revolved() {
     );
     assert!(s.warnings.is_empty(), "{:?}", s.warnings);
     assert_eq!(s.imports.len(), 1, "one revolved mesh");
+}
+
+#[test]
+fn the_vertex_limit_follows_the_memory_limit() {
+    let text = "sphere(r = 1, $fn = 100);";
+    let options = |bytes| ReadOptions {
+        max_vertices: Some(ReadOptions::max_vertices_for(bytes)),
+        ..Default::default()
+    };
+    // 100 × 50 vertices: 320,000 bytes at 64 a vertex.
+    assert!(parse_csg_with(text, "t.csg", &options(400_000)).is_ok());
+    let e = parse_csg_with(text, "t.csg", &options(100_000)).unwrap_err();
+    assert!(
+        e.to_string().starts_with(
+            "t.csg:1:1: the scene would pass its vertex limit: 5000 more vertices, 1562 left"
+        ),
+        "{e}"
+    );
 }
