@@ -24,6 +24,13 @@ pub(crate) struct Ring {
     pub depth: usize,
 }
 
+impl Ring {
+    /// Inside an odd number of other outlines.
+    pub fn is_hole(&self) -> bool {
+        !self.depth.is_multiple_of(2)
+    }
+}
+
 /// A corner of a cap triangle: (outline, point of that outline).
 pub(crate) type Corner = (usize, usize);
 
@@ -33,7 +40,7 @@ pub(crate) type Corner = (usize, usize);
 pub(crate) fn cap(rings: &[Ring]) -> Vec<[Corner; 3]> {
     let mut out = vec![];
     for (o, outer) in rings.iter().enumerate() {
-        if outer.depth % 2 == 1 {
+        if outer.is_hole() {
             continue;
         }
         let holes: Vec<usize> = (0..rings.len())
@@ -134,7 +141,7 @@ fn on_segment(p: DVec2, a: DVec2, b: DVec2) -> bool {
 fn fan(rings: &[Ring], r: usize) -> impl Iterator<Item = [Corner; 3]> + '_ {
     let n = rings[r].points.len();
     let ccw = signed_area(&rings[r].points) > 0.0;
-    let turn = ccw == (rings[r].depth % 2 == 0);
+    let turn = ccw != rings[r].is_hole();
     (1..n.saturating_sub(1)).map(move |i| {
         if turn {
             [(r, 0), (r, i), (r, i + 1)]

@@ -293,7 +293,7 @@ pub fn linear_mesh(poly: &Poly2, l: &Linear, sincos: &dyn Fn(f64) -> (f64, f64))
     for j in 1..=l.slices {
         let upper = level(j);
         for (r, ring) in rings.iter().enumerate() {
-            let hole = ring.depth % 2 == 1;
+            let hole = ring.is_hole();
             let rising = (!hole && l.scale == [1.0, 1.0]).then_some(l.twist > 0.0);
             walls(&lower[r], &upper[r], rising, &mut out);
         }
@@ -352,11 +352,14 @@ fn oriented(poly: &Poly2) -> Vec<cap::Ring> {
             let depth = (0..paths.len())
                 .filter(|&j| j != i && in_box(j, path[0]) && cap::inside(paths[j], path[0]))
                 .count();
-            let mut points = (*path).clone();
-            if (signed_area(&points) > 0.0) == (depth % 2 == 1) {
-                points.reverse();
+            let mut ring = cap::Ring {
+                points: (*path).clone(),
+                depth,
+            };
+            if (signed_area(&ring.points) > 0.0) == ring.is_hole() {
+                ring.points.reverse();
             }
-            cap::Ring { points, depth }
+            ring
         })
         .collect()
 }
