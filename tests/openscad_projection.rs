@@ -10,7 +10,7 @@
 
 mod common;
 
-use common::compare_with_off;
+use common::compare_cases;
 
 use std::path::{Path, PathBuf};
 
@@ -23,27 +23,9 @@ fn dir() -> PathBuf {
 
 #[test]
 fn projection_and_resize_match_openscads_mesh() {
-    let cases = std::fs::read_to_string(dir().join("cases.txt")).unwrap();
-    let mut failures = vec![];
-    let mut compared = 0;
-    for line in cases.lines().filter(|l| !l.starts_with('#')) {
-        let name = line.split('\t').next().unwrap();
-        match compare_with_off(&dir(), name, Route::Array { cycle: false }) {
-            Ok((float, word)) => {
-                compared += 1;
-                println!("{name}: IoU float {float:.5}, word {word:.5}");
-                if float < 0.999 || word < 0.99 {
-                    failures.push(format!("{name}: float {float:.5}, word {word:.5}"));
-                }
-            }
-            Err(e) if e.contains("needs the mesh boolean") => {
-                println!("{name}: skipped: {e}");
-            }
-            Err(e) => failures.push(format!("{name}: refused: {e}")),
-        }
-    }
-    assert!(failures.is_empty(), "{failures:#?}");
-    assert!(compared >= 6, "only {compared} cases compared");
+    let compared =
+        compare_cases(&dir(), Route::Array { cycle: false }).unwrap_or_else(|f| panic!("{f:#?}"));
+    assert_eq!(compared, 8);
 }
 
 #[test]

@@ -256,3 +256,34 @@ pub fn compare_with_off(
     let word = iou(&scene_occupancy(&ours, dir, &grid, word).unwrap(), &b);
     Ok((float, word))
 }
+
+/// Every case of `DIR/cases.txt` (a name, a tab, the statement; `#` lines are comments)
+/// compared by [`compare_with_off`], each printed; the number compared, or the cases under
+/// 0.999 (float) or 0.99 (word) and those refused.
+#[allow(dead_code)]
+pub fn compare_cases(
+    dir: &std::path::Path,
+    word: csgpix::voxel::Route,
+) -> Result<usize, Vec<String>> {
+    let cases = std::fs::read_to_string(dir.join("cases.txt")).unwrap();
+    let mut failures = vec![];
+    let mut compared = 0;
+    for line in cases.lines().filter(|l| !l.starts_with('#')) {
+        let name = line.split('\t').next().unwrap();
+        match compare_with_off(dir, name, word) {
+            Ok((float, word)) => {
+                compared += 1;
+                println!("{name:16} IoU float {float:.5}, word {word:.5}");
+                if float < 0.999 || word < 0.99 {
+                    failures.push(format!("{name}: float {float:.5}, word {word:.5}"));
+                }
+            }
+            Err(e) => failures.push(format!("{name}: refused: {e}")),
+        }
+    }
+    if failures.is_empty() {
+        Ok(compared)
+    } else {
+        Err(failures)
+    }
+}
