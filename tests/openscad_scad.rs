@@ -218,3 +218,23 @@ fn fallback_outlines_a_2d_import() {
         assert_eq!(both, either, "{file}: the same voxels");
     }
 }
+
+/// A `.scad` file is read as OpenSCAD renders it (F6, STL export: `$preview` false), not as it
+/// previews it: the parts to print, not an `if ($preview)` assembly view.
+#[test]
+fn a_scad_file_is_read_as_rendered_not_previewed() {
+    if !have_openscad() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let scad = "if ($preview) translate([10, 0, 0]) cube(2); else cube(4);\n";
+    let (code, out, e) = run(dir.path(), scad, &["--json"]);
+    assert_eq!(code, Some(0), "{e}");
+    let json: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(json["solids"], 1, "{out}");
+    assert_eq!(
+        json["max"],
+        serde_json::json!([4.0, 4.0, 4.0]),
+        "the rendered cube(4): {out}"
+    );
+}
