@@ -198,3 +198,46 @@ fn text_agrees_with_openscad() {
     }
     assert!(bad.is_empty(), "disagreeing with OpenSCAD: {bad:?}");
 }
+
+/// HarfBuzz's advances are scaled by FreeType's unrounded `x_scale` (hb-ft loads them
+/// unhinted), the outlines by the whole-pixel one of a TrueType font asking for an integer
+/// ppem: 40 "o"s end where OpenSCAD's do (the rounded scale put the last one 0.02 short).
+#[test]
+fn advances_accumulate_as_openscad() {
+    std::env::set_var(
+        "CSGPIX_FONT_PATH",
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/fonts"),
+    );
+    let name = "sans-advances-long";
+    let csg = std::fs::read_to_string(dir().join(format!("{name}.csg"))).unwrap();
+    let theirs = read_off(&dir().join(format!("{name}.off")));
+    let their_right = theirs
+        .iter()
+        .flatten()
+        .map(|p| p[0])
+        .fold(f64::NEG_INFINITY, f64::max);
+    let spec = TextSpec {
+        text: arg(&csg, "text"),
+        size: 10.0,
+        spacing: 1.0,
+        font: arg(&csg, "font"),
+        direction: arg(&csg, "direction"),
+        language: arg(&csg, "language"),
+        script: arg(&csg, "script"),
+        halign: arg(&csg, "halign"),
+        valign: arg(&csg, "valign"),
+        segments: segments(10.0, 0.0, 12.0, 2.0),
+    };
+    let poly = render(&spec, Fonts::standard(), 1_000_000).unwrap();
+    let our_right = poly
+        .paths
+        .iter()
+        .flatten()
+        .map(|p| p[0])
+        .fold(f64::NEG_INFINITY, f64::max);
+    println!("right edge: csgpix {our_right:.5}, OpenSCAD {their_right:.5}");
+    assert!(
+        (our_right - their_right).abs() < 2e-3,
+        "{our_right} {their_right}"
+    );
+}

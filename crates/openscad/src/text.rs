@@ -5,7 +5,9 @@
 //! * Scale. OpenSCAD sets FreeType's character size to `1e5` (26.6 points) at 100 dpi, so a
 //!   font unit is `ppem26 / units_per_em` 26.6 units with `ppem26 = (1e5 · 100 + 36) / 72`
 //!   (integer division, as `FT_Request_Size`), rounded down to whole pixels (`× 64`) when the
-//!   font's `head` flags ask for an integer ppem (bit 3), as FreeType's TrueType driver does.
+//!   font's `head` flags ask for an integer ppem (bit 3), as FreeType's TrueType driver does
+//!   for the hinted outlines OpenSCAD loads. HarfBuzz's positions (hb-ft, unhinted advances)
+//!   are scaled without that rounding (`ppem26 = 138889` whatever the flags).
 //!   Outline points are divided by `scale = 1e5`, but HarfBuzz positions (advances, offsets)
 //!   and the glyph boxes by `1.024e5` (OpenSCAD's `unscale`, which its source keeps "for
 //!   compatibility"); everything is then multiplied by `size`. So the glyphs are drawn
@@ -357,7 +359,9 @@ impl ttf_parser::OutlineBuilder for Outline {
     }
 }
 
-/// 26.6 units per font unit at OpenSCAD's character size.
+/// 26.6 units per font unit at OpenSCAD's character size, as the hinted outlines are
+/// scaled (`FT_LOAD_DEFAULT`: the TrueType driver's `hinted_metrics`, whole pixels per em
+/// when `head` asks for it).
 fn units_26_6(face: &ttf_parser::Face) -> f64 {
     let upem = face.units_per_em() as f64;
     let mut ppem26 = ((SCALE as u64 * 100 + 36) / 72) as f64;
@@ -369,6 +373,13 @@ fn units_26_6(face: &ttf_parser::Face) -> f64 {
         ppem26 = ((ppem26 + 32.0) / 64.0).floor() * 64.0;
     }
     ppem26 / upem
+}
+
+/// 26.6 units per font unit as HarfBuzz positions are scaled: hb-ft asks FreeType for
+/// unhinted advances (`FT_LOAD_NO_HINTING`), scaled by the size's own `x_scale`, which the
+/// TrueType driver leaves unrounded (FreeType >= 2.8 rounds only its `hinted_metrics`).
+fn units_26_6_positions(face: &ttf_parser::Face) -> f64 {
+    ((SCALE as u64 * 100 + 36) / 72) as f64 / face.units_per_em() as f64
 }
 
 /// The outline of a `text()` node in its own plane.
@@ -424,7 +435,8 @@ fn render_face(
     );
     let shaped = rustybuzz::shape(&face, &[], buffer);
     // Positions as hb-ft reports them: whole 26.6 units.
-    let pos26 = |v: i32| (v as f64 * to26).round();
+    let pos_to26 = units_26_6_positions(&face);
+    let pos26 = |v: i32| (v as f64 * pos_to26).round();
     let mut glyphs = Vec::new();
     let mut points = 0usize;
     for (info, pos) in shaped.glyph_infos().iter().zip(shaped.glyph_positions()) {
@@ -774,14 +786,16 @@ mod tests {
         let base = at("left", "baseline");
         let (right, center) = (at("right", "baseline"), at("center", "baseline"));
         // The width is the sum of the advances (hmtx: "HHH" has no kerning), scaled by
-        // 1/1.024e5 per 26.6 unit where the outlines are scaled by 1/1e5.
+        // 1/1.024e5 per (unhinted) 26.6 unit where the outlines are scaled by 1/1e5.
         let width = base.x - right.x;
         let f = fonts();
         let expect = f
             .with_face_data(f.find("").unwrap(), |data, index| {
                 let face = ttf_parser::Face::parse(data, index).unwrap();
                 let h = face.glyph_index('H').unwrap();
-                let adv26 = (face.glyph_hor_advance(h).unwrap() as f64 * units_26_6(&face)).round();
+                let adv26 = (face.glyph_hor_advance(h).unwrap() as f64
+                    * units_26_6_positions(&face))
+                .round();
                 3.0 * 10.0 * adv26 / UNSCALE
             })
             .unwrap();
