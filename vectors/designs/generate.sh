@@ -1,7 +1,7 @@
 #!/bin/sh
 # Regenerate the reference outputs of the real-world designs (see README.md): for each design,
 # OpenSCAD's CSG export (meshes/NAME.csg, gzipped when over 200 kB) and OpenSCAD's own CGAL
-# mesh (meshes/NAME.off.gz). The wall time of the mesh step goes to meshes/times.tsv
+# mesh of that export (meshes/NAME.off.gz). The wall time of the mesh step goes to meshes/times.tsv
 # (name, seconds, status: ok, timeout or fail:RC). Needs `openscad` (Debian's 2021.01 made
 # the checked-in files) and the fonts the designs name for text(): Liberation (fonts-liberation2), Roboto
 # (fonts-roboto) and Inter (fonts-inter). OpenSCAD also sees the fonts bundled in vectors/fonts
@@ -57,18 +57,26 @@ for name in $names; do
         echo "generate.sh: $name: CSG export failed" >&2
         cat "$tmp/err" >&2
     fi
-    if [ -f "meshes/$name.csg" ] && [ "$(wc -c < "meshes/$name.csg")" -gt 204800 ]; then
-        gzip -9n "meshes/$name.csg"
-    fi
+    # The mesh is made from that export, so both are one evaluation of the design (a design
+    # drawing with rands() without a seed differs run to run): the export is read beside
+    # the design so its relative file names resolve, with the design's own directory among
+    # the font directories (the export has lost its `use <x.ttf>` lines).
+    dir=$(dirname "$src")
+    cp "meshes/$name.csg" "$dir/.$name.mesh.csg" 2>/dev/null || true
 
     # CGAL mesh, timed
     start=$(now)
     status=ok
-    timeout "$limit" openscad -q -o "$here/meshes/$name.off" "$src" </dev/null 2>"$tmp/err" || {
+    OPENSCAD_FONT_PATH="$(cd "$dir" && pwd):$OPENSCAD_FONT_PATH" \
+    timeout "$limit" openscad -q -o "$here/meshes/$name.off" "$dir/.$name.mesh.csg" </dev/null 2>"$tmp/err" || {
         rc=$?
         if [ "$rc" -eq 124 ]; then status=timeout; else status="fail:$rc"; fi
     }
     end=$(now)
+    rm -f "$dir/.$name.mesh.csg"
+    if [ -f "meshes/$name.csg" ] && [ "$(wc -c < "meshes/$name.csg")" -gt 204800 ]; then
+        gzip -9n "meshes/$name.csg"
+    fi
     secs=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }')
     if [ "$status" = ok ] && [ ! -s "meshes/$name.off" ]; then status=fail:empty; fi
     if [ "$status" != ok ]; then
