@@ -146,6 +146,9 @@ fn measure(name: &str, openscad_s: f64, fallback: Fallback, tmp: &Path) -> Row {
         let theirs = scene_occupancy(&mesh, &base, &grid, Route::Float)?;
         Ok((iou(&word, &theirs), iou(&float, &theirs), seconds))
     })();
+    // A refusal names the export as the user's `NAME.csg`, not the test's hidden copy.
+    let outcome = outcome
+        .map_err(|e: String| e.replace(file.to_str().unwrap_or_default(), &format!("{name}.csg")));
     for f in [
         file.clone(),
         file.with_extension("word.nrrd"),
@@ -227,12 +230,19 @@ fn real_world_designs_against_openscad() {
         accepted.len()
     );
     assert!(only.is_some() || rows.len() >= 50);
-    // Floors at what was measured (docs/voxelization.md): the corpus may only get better.
+    // The targets (docs/voxelization.md): at least 95 % accepted without the fallback, and
+    // every accepted design at IoU >= 0.99 (word) and >= 0.999 (float).
     if only.is_none() {
-        assert!(by_default >= 56, "accepted by default: {by_default}");
         assert!(
-            word_ok >= 53 && float_ok >= 53,
-            "IoU: word {word_ok}, float {float_ok}"
+            by_default * 100 >= 95 * rows.len(),
+            "accepted by default: {by_default} of {}",
+            rows.len()
         );
+        let below: Vec<&str> = rows
+            .iter()
+            .filter(|r| matches!(r.outcome, Ok((w, f, _)) if w < 0.99 || f < 0.999))
+            .map(|r| r.name.as_str())
+            .collect();
+        assert!(below.is_empty(), "below the IoU targets: {below:?}");
     }
 }
