@@ -163,8 +163,8 @@ pub(crate) fn inside(poly: &[DVec2], p: DVec2) -> bool {
     odd
 }
 
-/// A corner's key: its coordinates' bits (the mesh's triangles share corners bit for bit).
-fn key(p: DVec3) -> [u64; 3] {
+/// A corner's key: its coordinates' bits (a mesh's triangles share corners bit for bit).
+pub(crate) fn key(p: DVec3) -> [u64; 3] {
     p.to_array().map(f64::to_bits)
 }
 

@@ -904,16 +904,7 @@ mod tests {
 
     // The hull of the fan-filtered sums against the hull of all pairwise sums.
 
-    fn hull_volume(v: &[DVec3], faces: &[Vec<usize>]) -> f64 {
-        faces
-            .iter()
-            .map(|f| {
-                (1..f.len() - 1)
-                    .map(|k| v[f[0]].dot(v[f[k]].cross(v[f[k + 1]])) / 6.0)
-                    .sum::<f64>()
-            })
-            .sum()
-    }
+    use crate::hull::tests::volume as hull_volume;
 
     /// hull(sum_points(x, y)) is hull(all_sums(x, y)): the same vertices, the same volume.
     fn same_sum(x: &[DVec3], y: &[DVec3]) {

@@ -512,7 +512,7 @@ pub fn hull2_indices(points: &[DVec2]) -> Vec<usize> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
     fn cube_points(lo: f64, hi: f64) -> Vec<DVec3> {
@@ -527,7 +527,8 @@ mod tests {
             .collect()
     }
 
-    fn volume(v: &[DVec3], faces: &[Vec<usize>]) -> f64 {
+    /// The volume a closed polygon mesh encloses (faces counter-clockwise from outside).
+    pub(crate) fn volume(v: &[DVec3], faces: &[Vec<usize>]) -> f64 {
         faces
             .iter()
             .map(|f| {
@@ -536,6 +537,21 @@ mod tests {
                     .sum::<f64>()
             })
             .sum()
+    }
+
+    /// Every directed edge of the faces used once, and its reverse once.
+    pub(super) fn closed(faces: &[Vec<usize>]) -> bool {
+        let mut edges = std::collections::HashMap::new();
+        for face in faces {
+            for k in 0..face.len() {
+                *edges
+                    .entry((face[k], face[(k + 1) % face.len()]))
+                    .or_insert(0) += 1;
+            }
+        }
+        edges
+            .iter()
+            .all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1))
     }
 
     #[test]
@@ -570,17 +586,7 @@ mod tests {
             assert!(p.iter().all(|q| n.dot(*q - a) <= 1e-9));
         }
         // Closed: every directed edge once, its reverse once.
-        let mut edges = std::collections::HashMap::new();
-        for face in &f {
-            for k in 0..face.len() {
-                *edges
-                    .entry((face[k], face[(k + 1) % face.len()]))
-                    .or_insert(0) += 1;
-            }
-        }
-        assert!(edges
-            .iter()
-            .all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1)));
+        assert!(closed(&f));
     }
 
     #[test]
@@ -610,10 +616,11 @@ mod tests {
 /// Random point sets, near-degenerate ones among them, against the former incremental hull.
 #[cfg(test)]
 mod properties {
-    use std::collections::{HashMap, HashSet};
+    use std::collections::HashSet;
 
     use proptest::prelude::*;
 
+    use super::tests::{closed, volume};
     use super::*;
 
     /// The former algorithm, every point tested against every face, as the reference: the
@@ -661,17 +668,6 @@ mod properties {
         faces.iter().map(|f| f.v).collect()
     }
 
-    fn volume(v: &[DVec3], faces: &[Vec<usize>]) -> f64 {
-        faces
-            .iter()
-            .map(|f| {
-                (1..f.len() - 1)
-                    .map(|i| v[f[0]].dot(v[f[i]].cross(v[f[i + 1]])) / 6.0)
-                    .sum::<f64>()
-            })
-            .sum()
-    }
-
     fn extent(points: &[DVec3]) -> f64 {
         let (lo, hi) = points
             .iter()
@@ -703,16 +699,7 @@ mod properties {
         if faces.len() < 4 || faces.iter().any(|f| f.len() < 3) {
             return Err(format!("{} faces, or a face of fewer than 3", faces.len()));
         }
-        let mut edges: HashMap<(usize, usize), usize> = HashMap::new();
-        for f in &faces {
-            for k in 0..f.len() {
-                *edges.entry((f[k], f[(k + 1) % f.len()])).or_insert(0) += 1;
-            }
-        }
-        if !edges
-            .iter()
-            .all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1))
-        {
+        if !closed(&faces) {
             return Err("not closed: an edge not used once each way".into());
         }
         let used: HashSet<usize> = faces.iter().flatten().copied().collect();
@@ -856,17 +843,7 @@ mod properties {
             f.len(),
             start.elapsed()
         );
-        let mut edges: HashMap<(usize, usize), usize> = HashMap::new();
-        for face in &f {
-            for k in 0..face.len() {
-                *edges
-                    .entry((face[k], face[(k + 1) % face.len()]))
-                    .or_insert(0) += 1;
-            }
-        }
-        assert!(edges
-            .iter()
-            .all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1)));
+        assert!(closed(&f));
         // The volume of a box ⊕ a convex S: abc, plus the box's faces times S's widths, plus
         // its edges times S's shadows, plus S. S's rings are regular 120-gons with a corner
         // on +X (and so on ±X, ±Y): width 2·R (the widest ring's radius) along X and Y, the

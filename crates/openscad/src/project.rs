@@ -22,6 +22,7 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::cap::key;
 use crate::extrude::{flatten, Poly2, Region};
 use crate::geom::mesh_of;
 use crate::hull::hull2;
@@ -113,10 +114,6 @@ fn crossing(a: DVec3, b: DVec3) -> DVec2 {
     let (a, b) = if key(a) <= key(b) { (a, b) } else { (b, a) };
     let t = a.z / (a.z - b.z);
     DVec2::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y))
-}
-
-fn key(p: DVec3) -> [u64; 3] {
-    p.to_array().map(f64::to_bits)
 }
 
 /// A closed mesh's closed section at z = 0: the loops its triangles cut from the plane, filled

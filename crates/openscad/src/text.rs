@@ -53,6 +53,9 @@ pub const DEFAULT_FONT: &str = "Liberation Sans:style=Regular";
 
 /// `FreetypeRenderer::scale`: outline coordinates (26.6) are divided by it.
 const SCALE: f64 = 1e5;
+/// The em in 26.6 units: OpenSCAD's character size [`SCALE`] points at 100 dpi, as
+/// `FT_Set_Char_Size` rounds it.
+const EM_26_6: f64 = ((SCALE as u64 * 100 + 36) / 72) as f64;
 /// 1 / `FreetypeRenderer::unscale`: HarfBuzz positions and boxes are divided by it.
 const UNSCALE: f64 = 1.024e5;
 
@@ -364,7 +367,7 @@ impl ttf_parser::OutlineBuilder for Outline {
 /// when `head` asks for it).
 fn units_26_6(face: &ttf_parser::Face) -> f64 {
     let upem = face.units_per_em() as f64;
-    let mut ppem26 = ((SCALE as u64 * 100 + 36) / 72) as f64;
+    let mut ppem26 = EM_26_6;
     let head = face.raw_face().table(ttf_parser::Tag::from_bytes(b"head"));
     let integer_ppem = head
         .and_then(|h| h.get(16..18))
@@ -379,7 +382,7 @@ fn units_26_6(face: &ttf_parser::Face) -> f64 {
 /// unhinted advances (`FT_LOAD_NO_HINTING`), scaled by the size's own `x_scale`, which the
 /// TrueType driver leaves unrounded (FreeType >= 2.8 rounds only its `hinted_metrics`).
 fn units_26_6_positions(face: &ttf_parser::Face) -> f64 {
-    ((SCALE as u64 * 100 + 36) / 72) as f64 / face.units_per_em() as f64
+    EM_26_6 / face.units_per_em() as f64
 }
 
 /// The outline of a `text()` node in its own plane.
