@@ -73,8 +73,10 @@ pub struct Args {
     /// array's plane words (see --route); `float` exact intervals, the reference.
     #[arg(long, value_parser = super::model_parser(), default_value = "word")]
     model: Model,
-    /// For `word`: `intervals` reduces the array's plane words to depth intervals (proven
-    /// voxel for voxel equal to the array); `array` runs every P·Vz frame on the word array.
+    /// `runs` (word or float): each primitive's depths along every pixel's column, the tree
+    /// evaluated once per run of constant membership (docs/voxelization.md); `intervals`: the
+    /// same depths intersected with every slab, slab by slab; both proven voxel for voxel
+    /// equal to the array (word). `array` (word) runs every P·Vz frame on the word array.
     #[arg(long, value_enum, default_value_t)]
     route: RouteArg,
     /// Evaluator of the CSG tree per slice.
@@ -273,8 +275,14 @@ enum FormatArg {
 
 #[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
 enum RouteArg {
+    /// Column by column: each primitive's runs along every pixel's ray, the tree evaluated
+    /// once per run (the same voxels as `intervals`; `intervals` where voxels take a
+    /// dataset's grey value or a blend).
     #[default]
+    Runs,
+    /// Slab by slab: per-pixel depth intervals intersected with every slab.
     Intervals,
+    /// Every P·Vz frame on the word array (with --model word).
     Array,
 }
 
@@ -582,19 +590,14 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     };
     let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
     let eval = evaluator(a.eval, scene);
-    let route = match (a.model, a.route) {
-        (Model::Cycle, _) => Route::Array { cycle: true },
-        (Model::Word, RouteArg::Array) => Route::Array { cycle: false },
-        (Model::Word, RouteArg::Intervals) => Route::Intervals,
-        (Model::Float, _) => Route::Float,
-    };
+    let route = route_of(a.model, a.route, &slicer);
     let set = Equations::from(a.equations).set();
     let t0 = Instant::now();
-    let bar = progress(
-        grid.dims[2],
-        route,
-        grid.slice_len() * scene.primitive_count(),
-    );
+    let calls = match a.format {
+        FormatArg::Zarr => grid.dims[2].div_ceil(chunk[0].clamp(1, grid.dims[2].max(1))),
+        FormatArg::Nrrd => 1,
+    };
+    let bar = progress(&slicer, route, calls);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -763,6 +766,33 @@ fn with_store(
     Ok((Volume { dims, voxels }, work, Some(r)))
 }
 
+/// The route a model and `--route` ask for: the run route where it gives the volume
+/// ([`csgpix::voxel::runs::applies`]), else its slab route.
+fn route_of(model: Model, route: RouteArg, slicer: &Slicer) -> Route {
+    let r = match (model, route) {
+        (Model::Cycle, _) => Route::Array { cycle: true },
+        (Model::Word, RouteArg::Array) => Route::Array { cycle: false },
+        (Model::Word, RouteArg::Intervals) => Route::Intervals,
+        (Model::Word, RouteArg::Runs) => Route::Runs { float: false },
+        (Model::Float, RouteArg::Runs) => Route::Runs { float: true },
+        (Model::Float, _) => Route::Float,
+    };
+    match csgpix::voxel::runs::applies(slicer) {
+        true => r,
+        false => r.by_slab(),
+    }
+}
+
+/// `--json`'s name of a route: the float model's slab route is `float`, as it always was.
+fn route_name(route: Route) -> &'static str {
+    match route {
+        Route::Array { .. } => "array",
+        Route::Intervals => "intervals",
+        Route::Float => "float",
+        Route::Runs { .. } => "runs",
+    }
+}
+
 fn evaluator(e: EvalArg, scene: &CsgScene) -> Box<dyn SliceEval> {
     match e {
         EvalArg::Tree => Box::new(TreeEval::new(&scene.root)),
@@ -771,16 +801,26 @@ fn evaluator(e: EvalArg, scene: &CsgScene) -> Box<dyn SliceEval> {
     }
 }
 
-fn progress(slices: usize, route: Route, per_slice: usize) -> ProgressBar {
-    let heavy = matches!(route, Route::Array { .. }) || slices * per_slice > 50_000_000;
-    let bar = if heavy {
-        ProgressBar::new(slices as u64)
-    } else {
-        ProgressBar::hidden()
+/// A progress bar for runs that take a while: slices on the slab routes, bands of rows on
+/// the run route (which ticks once per band, `calls` times over for a Zarr store's rows).
+fn progress(slicer: &Slicer, route: Route, calls: usize) -> ProgressBar {
+    let [_, _, nz] = slicer.grid.dims;
+    let voxels = slicer.grid.slice_len() * nz;
+    let (len, unit) = match route {
+        Route::Runs { .. } => (csgpix::voxel::runs::ticks(slicer) * calls, "row bands"),
+        _ => (nz, "slices"),
     };
-    if let Ok(style) =
-        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} slices")
-    {
+    let heavy = match route {
+        Route::Array { .. } => true,
+        Route::Runs { .. } => voxels > 100_000_000,
+        _ => voxels * slicer.primitive_count() > 50_000_000,
+    };
+    let bar = match heavy {
+        true => ProgressBar::new(len as u64),
+        false => ProgressBar::hidden(),
+    };
+    let template = format!("{{elapsed_precise}} [{{bar:40}}] {{pos}}/{{len}} {unit}");
+    if let Ok(style) = ProgressStyle::with_template(&template) {
         bar.set_style(style);
     }
     bar
@@ -806,11 +846,7 @@ fn report(
         min: slicer.grid.min.to_array(),
         max: slicer.grid.max.to_array(),
         model: a.model.name(),
-        route: match (a.model, a.route) {
-            (Model::Cycle, _) | (Model::Word, RouteArg::Array) => "array",
-            (Model::Word, RouteArg::Intervals) => "intervals",
-            (Model::Float, _) => "float",
-        },
+        route: route_name(route_of(a.model, a.route, slicer)),
         eval: match a.eval {
             EvalArg::Blist => "blist",
             EvalArg::Tree => "tree",

@@ -249,6 +249,14 @@ impl TriMesh {
         w: usize,
         h: usize,
     ) -> Vec<Vec<f64>> {
+        self.crossings_in(to_frame, Window { x0: 0, y0: 0, w, h })
+    }
+
+    /// [`TriMesh::crossings`] for the pixels of `win` only (index `(y − y0)·w + (x − x0)`):
+    /// the same lists those pixels have in the whole image, so a primitive's crossings can be
+    /// kept over its own footprint (`crates/voxel/src/runs.rs`).
+    pub fn crossings_in(&self, to_frame: impl Fn(DVec3) -> DVec3, win: Window) -> Vec<Vec<f64>> {
+        let (w, h) = (win.w, win.h);
         let projected: Vec<Projected> = self
             .vertices
             .iter()
@@ -264,7 +272,7 @@ impl TriMesh {
             .map(|chunk| {
                 let mut out = Vec::new();
                 for t in chunk {
-                    t.rasterize(w, h, &mut out);
+                    t.rasterize(win, &mut out);
                 }
                 out
             })
@@ -388,18 +396,19 @@ impl Raster {
         })
     }
 
-    /// Appends `(pixel index, depth)` for every covered pixel centre of a `w`×`h` image.
-    fn rasterize(&self, w: usize, h: usize, out: &mut Vec<(usize, f64)>) {
-        let Some((x0, x1)) = pixel_span(self.lo.0, self.hi.0, w) else {
+    /// Appends `(pixel index in win, depth)` for every covered pixel centre of `win`.
+    fn rasterize(&self, win: Window, out: &mut Vec<(usize, f64)>) {
+        let Some((x0, x1)) = pixel_span(self.lo.0, self.hi.0, win.x0, win.w) else {
             return;
         };
-        let Some((y0, y1)) = pixel_span(self.lo.1, self.hi.1, h) else {
+        let Some((y0, y1)) = pixel_span(self.lo.1, self.hi.1, win.y0, win.h) else {
             return;
         };
+        let (wx, wy) = (win.x0 as i64, win.y0 as i64);
         for y in y0..=y1 {
             for x in x0..=x1 {
                 if let Some(d) = self.depth_at(x << FRAC_BITS, y << FRAC_BITS) {
-                    out.push((y as usize * w + x as usize, d));
+                    out.push(((y - wy) as usize * win.w + (x - wx) as usize, d));
                 }
             }
         }
@@ -421,13 +430,26 @@ impl Raster {
 }
 
 /// Pixel indices `[first, last]` within `0..n` whose centres lie in fixed-point `[lo, hi]`.
-fn pixel_span(lo: i64, hi: i64, n: usize) -> Option<(i64, i64)> {
+fn pixel_span(lo: i64, hi: i64, start: usize, n: usize) -> Option<(i64, i64)> {
     let one = 1i64 << FRAC_BITS;
-    let first = (-((-lo).div_euclid(one))).max(0);
-    let last = hi
-        .div_euclid(one)
-        .min(i64::try_from(n).unwrap_or(i64::MAX) - 1);
+    let start = i64::try_from(start).unwrap_or(i64::MAX);
+    let end = start.saturating_add(i64::try_from(n).unwrap_or(i64::MAX));
+    let first = (-((-lo).div_euclid(one))).max(start);
+    let last = hi.div_euclid(one).min(end - 1);
     (first <= last).then_some((first, last))
+}
+
+/// A rectangle of pixels: columns `x0..x0 + w`, rows `y0..y0 + h`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Window {
+    /// First column.
+    pub x0: usize,
+    /// First row.
+    pub y0: usize,
+    /// Columns.
+    pub w: usize,
+    /// Rows.
+    pub h: usize,
 }
 
 /// Words of a text, with their 1-based line and column.
@@ -870,11 +892,13 @@ mod tests {
     #[test]
     fn pixel_spans_round_inwards_and_clamp() {
         let one = 1i64 << FRAC_BITS;
-        assert_eq!(pixel_span(one / 2, 3 * one, 10), Some((1, 3)));
-        assert_eq!(pixel_span(-5 * one, 20 * one, 10), Some((0, 9)));
-        assert_eq!(pixel_span(one + 1, 2 * one - 1, 10), None);
-        assert_eq!(pixel_span(0, 0, 0), None);
-        assert_eq!(pixel_span(-one, -1, 10), None);
+        assert_eq!(pixel_span(one / 2, 3 * one, 0, 10), Some((1, 3)));
+        assert_eq!(pixel_span(-5 * one, 20 * one, 0, 10), Some((0, 9)));
+        assert_eq!(pixel_span(one + 1, 2 * one - 1, 0, 10), None);
+        assert_eq!(pixel_span(0, 0, 0, 0), None);
+        assert_eq!(pixel_span(-one, -1, 0, 10), None);
+        assert_eq!(pixel_span(-5 * one, 20 * one, 4, 3), Some((4, 6)));
+        assert_eq!(pixel_span(one / 2, 3 * one, 4, 3), None);
     }
 
     #[test]

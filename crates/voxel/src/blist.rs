@@ -628,7 +628,7 @@ impl SliceEval for BlistEval {
     /// `label = BL[p].name` holds) and `label_writes` the label writes they make (the same
     /// number: every classifying row writes the stamp or 0).
     fn eval(&self, prims: &[Mask], counts: &mut OpCounts) -> Labels {
-        let len = prims.first().map_or(0, Mask::len);
+        let len = slice::slice_len(prims);
         let mut labels = vec![0u32; len];
         for (w, chunk) in labels.chunks_mut(64).enumerate() {
             let valid = if chunk.len() == 64 {

@@ -208,9 +208,14 @@ pub fn voxelize(
     tick: &(dyn Fn() + Sync),
 ) -> Result<(Volume, Work)> {
     use rayon::prelude::*;
-    let source = source_for(slicer, route, &set)?;
     let [nx, ny, nz] = slicer.grid.dims;
     let mut work = counted_work(slicer, &set, nz)?;
+    if let Route::Runs { float } = route {
+        if crate::runs::applies(slicer) {
+            return crate::runs::voxelize_runs(slicer, float, eval, tick, work);
+        }
+    }
+    let source = source_for(slicer, route.by_slab(), &set)?;
     // Chunks of consecutive slabs, a few per thread, so masks can be swept forward; each
     // chunk's slices go straight into their place in the volume (one volume held, not two).
     let chunk = (nz / (4 * rayon::current_num_threads())).max(1);
@@ -327,8 +332,13 @@ pub fn voxelize_slabs<E: From<crate::Error>>(
         }
         .into());
     }
-    let source = source_for(slicer, route, &set)?;
     let mut work = counted_work(slicer, &set, slabs.len())?;
+    if let Route::Runs { float } = route {
+        if crate::runs::applies(slicer) {
+            return crate::runs::sweep_slices(slicer, float, eval, tick, slabs, sink, work);
+        }
+    }
+    let source = source_for(slicer, route.by_slab(), &set)?;
     let threads = rayon::current_num_threads();
     let chunk = (slabs.len() / (4 * threads)).clamp(1, 8);
     let batch = chunk * threads;
@@ -387,14 +397,14 @@ fn convex_source(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Con
                 None => None,
             },
         },
-        Route::Intervals => ConvexSource::ranges(
+        Route::Intervals | Route::Runs { float: false } => ConvexSource::ranges(
             (0..prims)
                 .into_par_iter()
                 .map(|p| word_ranges(slicer, p))
                 .collect::<Result<_, _>>()?,
             nz,
         ),
-        Route::Float => ConvexSource::ranges(
+        Route::Float | Route::Runs { float: true } => ConvexSource::ranges(
             (0..prims)
                 .into_par_iter()
                 .map(|p| float_ranges(slicer, p))

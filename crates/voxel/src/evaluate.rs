@@ -18,7 +18,7 @@
 
 use std::collections::HashMap;
 
-use crate::slice::{self, Labels, Mask, OpCounts, SliceEval};
+use crate::slice::{self, slice_len, Labels, Mask, OpCounts, SliceEval};
 use csgpix_scene::solid::CsgNode;
 
 // ---------------------------------------------------------------------------------------------
@@ -448,11 +448,6 @@ fn peak_depth(ops: &[Op]) -> usize {
         peak = peak.max(depth);
     }
     peak
-}
-
-/// Pixels in the slice: the length of the first primitive mask (0 when there is none).
-fn slice_len(prims: &[Mask]) -> usize {
-    prims.first().map_or(0, Mask::len)
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -28,6 +28,9 @@
 //!   depth word, §2.3.1), reduced once per pixel to the interval of depths where P lies, then
 //!   intersected with every slab. Tests prove it gives the processor's masks voxel for voxel.
 //! * [`Route::Float`]: the same intervals in exact f64 arithmetic: the reference geometry.
+//! * [`Route::Runs`]: the same depths (plane words or f64) column by column, merged into runs
+//!   of constant membership, the tree evaluated once per run and the volume written run by
+//!   run ([`runs`]); equal voxel for voxel to the slab route it takes its depths from.
 
 //!
 //! # Example
@@ -94,6 +97,7 @@ pub mod footprint;
 pub mod masks;
 pub mod ranges;
 pub mod requirements;
+pub mod runs;
 pub mod sampled;
 pub mod slice;
 pub mod slicer;

@@ -1,8 +1,7 @@
 //! The interval routes to slab masks: the array's plane words, or exact f64, reduced once
 //! per pixel to the slabs a primitive meets.
 
-use csgpix_scene::display_list::DlPlane;
-use csgpix_scene::trimesh::TriMesh;
+use csgpix_scene::trimesh::{TriMesh, Window};
 
 use crate::error::Result;
 use crate::sampled::SlabRuns;
@@ -36,7 +35,7 @@ impl SlabRanges {
 
 /// The slabs whose window ([`Slicer::window`]) a depth interval [lo, hi] (in raw word units)
 /// meets, both ends closed.
-fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
+pub(crate) fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
     const EMPTY: (u32, u32) = (1, 0);
     let (z0, s) = (slicer.z_plane(0) as i128, slicer.slab_raw as i128);
     let (a, b) = slicer.window();
@@ -56,29 +55,49 @@ fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
     (first as u32, last as u32)
 }
 
+/// A solid's planes as the array's depth generator holds them: Z0, dZx, dZy (or K0, dKx,
+/// dKy) in raw words, with each plane's Y and H flags (§2.3).
+pub(crate) struct WordPlanes(Vec<(rtl_model::Coeffs, bool, bool)>);
+
+impl WordPlanes {
+    /// Solid `prim`'s planes in the slicer's word; an error names a plane that does not fit.
+    pub(crate) fn of(slicer: &Slicer, prim: usize) -> Result<WordPlanes> {
+        let fmt = &slicer.fmt;
+        let planes = slicer.lists[prim]
+            .planes
+            .iter()
+            .map(|p| {
+                csgpix_draw::compile::coeffs(fmt, p.z0, p.dzx, p.dzy)
+                    .map(|c| (c, p.y, p.h))
+                    .map_err(|(_, msg)| format!("solid {}: {msg}", prim + 1))
+            })
+            .collect::<Result<_, _>>()?;
+        Ok(WordPlanes(planes))
+    }
+
+    /// The slabs the solid fills along pixel (x, y)'s ray: DEPGEN's Z0 + x·dZx + y·dZy
+    /// wrapped to the word, reduced to the interval inside every plane.
+    pub(crate) fn slabs(&self, slicer: &Slicer, x: i64, y: i64) -> (u32, u32) {
+        let fmt = &slicer.fmt;
+        let values = self
+            .0
+            .iter()
+            .map(|(c, py, ph)| (fmt.wrap(c.c0 + x * c.dx + y * c.dy) as i128, *py, *ph));
+        let (lo, hi) = ray_interval(values, i128::MIN, i128::MAX).unwrap_or((1, 0));
+        slabs_of(slicer, lo, hi)
+    }
+}
+
 /// [`Route::Intervals`](crate::Route::Intervals): the array's own plane words (DEPGEN's
 /// Z0 + x·dZx + y·dZy, wrapped to the word) reduced to the interval of depths inside P:
 /// behind every front plane, before every back plane, K ≥ 0 on every perpendicular plane.
 pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges> {
-    let fmt = &slicer.fmt;
-    let coeffs: Vec<(rtl_model::Coeffs, &DlPlane)> = slicer.lists[prim]
-        .planes
-        .iter()
-        .map(|p| {
-            csgpix_draw::compile::coeffs(fmt, p.z0, p.dzx, p.dzy)
-                .map(|c| (c, p))
-                .map_err(|(_, msg)| format!("solid {}: {msg}", prim + 1))
-        })
-        .collect::<Result<_, _>>()?;
+    let planes = WordPlanes::of(slicer, prim)?;
     let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
     let mut out = Vec::with_capacity(w * h);
     for y in 0..h as i64 {
         for x in 0..w as i64 {
-            let values = coeffs
-                .iter()
-                .map(|(c, p)| (fmt.wrap(c.c0 + x * c.dx + y * c.dy) as i128, p.y, p.h));
-            let (lo, hi) = ray_interval(values, i128::MIN, i128::MAX).unwrap_or((1, 0));
-            out.push(slabs_of(slicer, lo, hi));
+            out.push(planes.slabs(slicer, x, y));
         }
     }
     Ok(SlabRanges(out))
@@ -144,15 +163,24 @@ pub fn toggle_run(t: &mut [Vec<u32>], i: usize, (first, last): (u32, u32)) {
 
 /// [`Route::Float`](crate::Route::Float): the same slabs from the exact intervals.
 pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
-    let raw = |v, up| raw_depth(slicer, v, up);
     let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
-    let out = (0..w * h)
-        .map(|i| match float_interval(slicer, prim, i % w, i / w) {
-            Some((lo, hi)) => slabs_of(slicer, raw(lo, true), raw(hi, false)),
-            None => (1, 0),
-        })
-        .collect();
-    SlabRanges(out)
+    SlabRanges(
+        (0..w * h)
+            .map(|i| float_slabs(slicer, prim, i % w, i / w))
+            .collect(),
+    )
+}
+
+/// The slabs solid `prim` fills along pixel (x, y)'s ray, from its exact interval.
+pub(crate) fn float_slabs(slicer: &Slicer, prim: usize, x: usize, y: usize) -> (u32, u32) {
+    match float_interval(slicer, prim, x, y) {
+        Some((lo, hi)) => slabs_of(
+            slicer,
+            raw_depth(slicer, lo, true),
+            raw_depth(slicer, hi, false),
+        ),
+        None => (1, 0),
+    }
 }
 
 /// Per pixel, the slabs a closed mesh fills: the crossings of the pixel's ray with its
@@ -160,8 +188,14 @@ pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
 /// [`float_ranges`] reduces a convex solid's.
 pub fn mesh_runs(slicer: &Slicer, mesh: &TriMesh) -> SlabRuns {
     let [w, h, _] = slicer.grid.dims;
+    mesh_runs_in(slicer, mesh, Window { x0: 0, y0: 0, w, h })
+}
+
+/// [`mesh_runs`] on the pixels of `win` only (index `(y − y0)·w + (x − x0)`): the same runs
+/// those pixels have over the whole array.
+pub fn mesh_runs_in(slicer: &Slicer, mesh: &TriMesh, win: Window) -> SlabRuns {
     let raw = |v, up| raw_depth(slicer, v, up);
-    let crossings = mesh.crossings(|p| slicer.frame.to_pixel(p), w, h);
+    let crossings = mesh.crossings_in(|p| slicer.frame.to_pixel(p), win);
     SlabRuns::merged(
         crossings
             .iter()

@@ -140,13 +140,21 @@ pub fn prim_word(prims: &[Mask], p: usize, w: usize) -> u64 {
         .unwrap_or(0)
 }
 
+/// Pixels in the slice: the length of the longest primitive mask (0 when there is none). A
+/// shorter mask contains nothing past its end, so a primitive absent from a slice can be an
+/// empty mask that costs no allocation ([`crate::runs`]).
+pub fn slice_len(prims: &[Mask]) -> usize {
+    prims.iter().map(Mask::len).max().unwrap_or(0)
+}
+
 /// The scene's slice: per pixel, 0 when outside the scene, else 1 + the index of the
 /// primitive whose colour the voxel takes.
 pub type Labels = Vec<u32>;
 
 /// An evaluator of one CSG tree over the primitive masks of a slice.
 pub trait SliceEval: Sync {
-    /// `prims[i]` is the mask of primitive i (the tree's `Solid(i)`); all have the same length.
+    /// `prims[i]` is the mask of primitive i (the tree's `Solid(i)`); the slice is as long as
+    /// the longest ([`slice_len`]), a shorter or missing mask contains nothing past its end.
     fn eval(&self, prims: &[Mask], counts: &mut OpCounts) -> Labels;
 
     /// Bytes of per-voxel intermediate state the evaluator keeps (label register, stack…),

@@ -13,6 +13,7 @@ use csgpix_scene::solid::CsgScene;
 
 use crate::blend::BlendEval;
 use crate::error::{Error, Result};
+use crate::footprint::PixelBox;
 use crate::sampled::Sampled;
 
 /// How slab masks are computed.
@@ -27,6 +28,26 @@ pub enum Route {
     Intervals,
     /// Exact f64 intervals.
     Float,
+    /// Column by column ([`crate::runs`]): each primitive's slabs along every pixel's ray
+    /// from the same depths as [`Route::Intervals`] (`float: false`) or [`Route::Float`]
+    /// (`float: true`), merged into runs of constant membership, the tree evaluated once per
+    /// run. The same voxels as the route it takes its depths from (tested).
+    Runs {
+        /// Exact f64 depths (the float model) instead of the array's plane words.
+        float: bool,
+    },
+}
+
+impl Route {
+    /// The slab-by-slab route that gives the same voxels: [`Route::Intervals`] or
+    /// [`Route::Float`] for [`Route::Runs`], itself otherwise.
+    pub fn by_slab(self) -> Route {
+        match self {
+            Route::Runs { float: false } => Route::Intervals,
+            Route::Runs { float: true } => Route::Float,
+            r => r,
+        }
+    }
 }
 
 /// Which depths of a voxel's ray classify it against a primitive (docs/voxelization.md).
@@ -125,7 +146,15 @@ pub struct Slicer {
     pub grey: bool,
     /// Grey-valued output by the blending operators of §3.3 instead of labels.
     pub blend: Option<BlendEval>,
+    /// Per primitive, the pixels whose rays can meet it: its vertices' (or box's) projection
+    /// grown by [`OUTLINE_MARGIN`] pixels, within the array (None: nowhere on it). The run
+    /// route visits a primitive only on these columns.
+    pub outlines: Vec<Option<PixelBox>>,
 }
+
+/// Pixels an outline box is grown by beyond the projected vertices: silhouette planes are
+/// exact to 1.5e-5 pixel ([`solid_lists`]), so one pixel is room enough; two for margin.
+pub const OUTLINE_MARGIN: f64 = 2.0;
 
 impl Slicer {
     /// Lay the grid on the array (§4.4): X, Y to pixels (voxel centres at integer pixel
@@ -174,6 +203,15 @@ impl Slicer {
             Sampling::Centre => voxel_slope(&fmt, w, h),
         };
         let lists = solid_lists(scene, &frame, slope_limit, &fmt, w, h);
+        let outlines = scene
+            .solids
+            .iter()
+            .map(|s| outline(&frame, s.vertices.iter().map(|&v| DVec3::from(v)), w, h))
+            .chain(sampled.iter().map(|s| {
+                let (lo, hi) = s.bounds();
+                outline(&frame, box_corners(lo, hi), w, h)
+            }))
+            .collect();
         let colours = lists
             .iter()
             .map(|dl| dl.planes.first().map_or(1, |p| p.colour.min(255) as u8))
@@ -192,6 +230,7 @@ impl Slicer {
             sampled,
             grey,
             blend,
+            outlines,
         })
     }
 
@@ -290,4 +329,43 @@ fn solid_lists(
         scale_perpendicular(dl, fmt, w, h);
     }
     lists
+}
+
+/// The pixels of a `w`×`h` array whose rays can meet the points' convex hull: their
+/// projection's box grown by [`OUTLINE_MARGIN`] (None when it misses the array or there are no
+/// points, or a point is not finite).
+fn outline(
+    frame: &Frame,
+    pts: impl Iterator<Item = DVec3>,
+    w: usize,
+    h: usize,
+) -> Option<PixelBox> {
+    let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+    for p in pts {
+        let q = frame.to_pixel(p);
+        (lo, hi) = (lo.min(q), hi.max(q));
+    }
+    if !(lo.is_finite() && hi.is_finite()) {
+        return None;
+    }
+    let first = |v: f64| (v - OUTLINE_MARGIN).ceil().max(0.0);
+    let end = |v: f64, n: usize| ((v + OUTLINE_MARGIN).floor() + 1.0).min(n as f64);
+    let b = PixelBox {
+        x0: first(lo.x) as usize,
+        y0: first(lo.y) as usize,
+        x1: end(hi.x, w).max(0.0) as usize,
+        y1: end(hi.y, h).max(0.0) as usize,
+    };
+    (b.x0 < b.x1 && b.y0 < b.y1).then_some(b)
+}
+
+/// The eight corners of a box.
+fn box_corners(lo: DVec3, hi: DVec3) -> impl Iterator<Item = DVec3> {
+    (0..8).map(move |c| {
+        DVec3::new(
+            if c & 1 == 0 { lo.x } else { hi.x },
+            if c & 2 == 0 { lo.y } else { hi.y },
+            if c & 4 == 0 { lo.z } else { hi.z },
+        )
+    })
 }

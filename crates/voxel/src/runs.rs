@@ -1,0 +1,534 @@
+//! The run route ([`Route::Runs`](crate::Route::Runs)): the volume column by column.
+//!
+//! Along pixel (x, y)'s ray every primitive fills a few runs of slabs: a convex solid one,
+//! from the same depths the slab routes use (the array's plane words, or exact f64, reduced
+//! by the same slab windows and sampling), a mesh one per pair of crossings, a dataset one per
+//! stretch of samples at or above its threshold. Between the ends of those runs the membership
+//! of every primitive is constant, so the CSG tree is evaluated once per *segment*, not once
+//! per voxel, and the column is written as runs of one colour. The evaluator is the run's own
+//! (the Blist of §4.5, the tree of §4.2, the slice stack of §3.4.1): the segments of a panel
+//! of columns are laid side by side as one "slice" whose pixels are segments, so every
+//! [`SliceEval`] works unchanged and gives the label the slab routes give each voxel of the
+//! segment (point membership commutes with CSG; the colour rules are per voxel).
+//!
+//! Work by footprint: a primitive is visited only on the columns of its outline
+//! ([`Slicer::outlines`]), panel by panel as the thesis's panels (§2.5) draw only the planes
+//! that reach them; elsewhere its mask is empty and costs nothing. Memory is the runs, not
+//! primitives × pixels.
+//!
+//! Writing: a row of columns (fixed y) is swept along z, its colours changing only where a
+//! run starts, so each (y, z) row of the volume is one copy of X bytes, and all-empty rows
+//! are left as allocated (zero).
+
+use rayon::prelude::*;
+
+use csgpix_scene::grid::Volume;
+use csgpix_scene::trimesh::Window;
+
+use crate::drive::Work;
+use crate::error::Result;
+use crate::footprint::PixelBox;
+use crate::ranges::{float_slabs, mesh_runs_in, WordPlanes};
+use crate::sampled::{Shape, SlabRuns};
+use crate::slice::{Mask, OpCounts, SliceEval};
+use crate::slicer::{Slicer, DEFAULT_PANEL};
+
+/// One run of a column: from slab `k` on (to the next run's `k`, or the grid's end), voxels
+/// take `colour` (0: empty).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Run {
+    /// First slab of the run.
+    pub k: u32,
+    /// Colour code of its voxels.
+    pub colour: u8,
+}
+
+/// The runs of every column of a rectangle of pixels, row-major: column c's runs are
+/// `runs[start[c]..start[c + 1]]`, the first starting at slab 0, neighbours differing in
+/// colour.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ColumnRuns {
+    /// The columns.
+    pub columns: PixelBox,
+    /// Where each column's runs start in `runs` (one more entry than columns).
+    pub start: Vec<usize>,
+    /// The runs, column after column.
+    pub runs: Vec<Run>,
+}
+
+impl ColumnRuns {
+    /// Column (x, y)'s runs (x, y within [`ColumnRuns::columns`]).
+    pub fn column(&self, x: usize, y: usize) -> &[Run] {
+        let b = &self.columns;
+        let c = (y - b.y0) * b.width() + (x - b.x0);
+        &self.runs[self.start[c]..self.start[c + 1]]
+    }
+
+    /// Voxels of the columns that are not empty, on a grid `nz` slabs deep.
+    pub fn filled(&self, nz: usize) -> usize {
+        (0..self.start.len() - 1)
+            .map(|c| {
+                let runs = &self.runs[self.start[c]..self.start[c + 1]];
+                filled_in(runs, nz)
+            })
+            .sum()
+    }
+}
+
+/// Non-empty voxels of one column's runs.
+fn filled_in(runs: &[Run], nz: usize) -> usize {
+    runs.iter()
+        .enumerate()
+        .filter(|(_, r)| r.colour != 0)
+        .map(|(i, r)| runs.get(i + 1).map_or(nz, |n| n.k as usize) - r.k as usize)
+        .sum()
+}
+
+/// Whether the run route gives the volume of its slab route: not where voxels take a
+/// dataset's grey value or a blend of grey values, which change voxel by voxel along a run.
+pub fn applies(slicer: &Slicer) -> bool {
+    let grey_datasets = slicer.grey && slicer.sampled.iter().any(|s| s.is_dataset());
+    slicer.blend.is_none() && !grey_datasets
+}
+
+/// Where each primitive's runs come from along a column.
+enum Depths<'a> {
+    /// A convex solid's plane words (the array's depths).
+    Word(WordPlanes),
+    /// A convex solid's exact depths.
+    Float(usize),
+    /// A mesh's runs over its outline, computed once.
+    Mesh(SlabRuns, PixelBox),
+    /// A dataset, sampled at the voxel centres of the column.
+    Dataset(&'a crate::sampled::Sampled),
+}
+
+/// A scene ready to be swept column by column.
+pub struct Columns<'a> {
+    slicer: &'a Slicer,
+    depths: Vec<Depths<'a>>,
+    /// Per panel (row-major over the array), the primitives whose outline meets it.
+    panels: Vec<Vec<u32>>,
+    panel: [usize; 2],
+}
+
+impl<'a> Columns<'a> {
+    /// Every primitive's source of runs (a mesh's crossings over its outline, computed here,
+    /// in parallel) and the primitives of each panel.
+    pub fn new(slicer: &'a Slicer, float: bool) -> Result<Columns<'a>> {
+        let solids = slicer.lists.len();
+        let mut depths: Vec<Depths> = (0..solids)
+            .into_par_iter()
+            .map(|p| match float {
+                true => Ok(Depths::Float(p)),
+                false => WordPlanes::of(slicer, p).map(Depths::Word),
+            })
+            .collect::<Result<_>>()?;
+        for (j, s) in slicer.sampled.iter().enumerate() {
+            depths.push(match &s.shape {
+                Shape::Mesh(m) => {
+                    let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
+                    Depths::Mesh(mesh_runs_in(slicer, m, window(b)), b)
+                }
+                Shape::Dataset { .. } => Depths::Dataset(s),
+            });
+        }
+        let panel = slicer.panel.unwrap_or(DEFAULT_PANEL).map(|p| p.max(1));
+        let panels = panel_lists(slicer, panel);
+        Ok(Columns {
+            slicer,
+            depths,
+            panels,
+            panel,
+        })
+    }
+
+    /// Panels across and down the array.
+    fn panel_grid(&self) -> [usize; 2] {
+        let [w, h, _] = self.slicer.grid.dims;
+        [w.div_ceil(self.panel[0]), h.div_ceil(self.panel[1])]
+    }
+
+    /// The runs of every column of rows `y0..y1`, a panel at a time, and the evaluator's
+    /// counts (one "slice" per panel, whose pixels are the panel's segments).
+    pub fn rows(&self, eval: &dyn SliceEval, y0: usize, y1: usize) -> (ColumnRuns, OpCounts) {
+        let [w, _, _] = self.slicer.grid.dims;
+        let [pw, ph] = self.panel;
+        let columns = PixelBox {
+            x0: 0,
+            y0,
+            x1: w,
+            y1,
+        };
+        let mut per_column: Vec<Vec<Run>> = vec![vec![]; columns.pixels()];
+        let mut counts = OpCounts::default();
+        for py in y0 / ph..y1.div_ceil(ph) {
+            for px in 0..self.panel_grid()[0] {
+                let b = PixelBox {
+                    x0: px * pw,
+                    y0: (py * ph).max(y0),
+                    x1: ((px + 1) * pw).min(w),
+                    y1: ((py + 1) * ph).min(y1),
+                };
+                let prims = &self.panels[py * self.panel_grid()[0] + px];
+                let runs = self.panel_runs(eval, b, prims, &mut counts);
+                for (c, r) in runs.into_iter().enumerate() {
+                    let (x, y) = (b.x0 + c % b.width(), b.y0 + c / b.width());
+                    per_column[(y - y0) * w + x] = r;
+                }
+            }
+        }
+        let mut out = ColumnRuns {
+            columns,
+            start: Vec::with_capacity(per_column.len() + 1),
+            runs: vec![],
+        };
+        out.start.push(0);
+        for r in per_column {
+            out.runs.extend(r);
+            out.start.push(out.runs.len());
+        }
+        (out, counts)
+    }
+
+    /// The runs of the columns of box `b` (row-major), whose primitives are `prims`.
+    fn panel_runs(
+        &self,
+        eval: &dyn SliceEval,
+        b: PixelBox,
+        prims: &[u32],
+        counts: &mut OpCounts,
+    ) -> Vec<Vec<Run>> {
+        let nz = self.slicer.grid.dims[2] as u32;
+        let mut seg = Segments::default();
+        let mut span = vec![];
+        for y in b.y0..b.y1 {
+            for x in b.x0..b.x1 {
+                seg.open_column();
+                for &p in prims {
+                    span.clear();
+                    self.slabs(p as usize, x, y, &mut span);
+                    seg.add(p, &span, nz);
+                }
+                seg.close_column();
+            }
+        }
+        let masks = seg.masks(self.depths.len());
+        let labels = eval.eval(&masks, counts);
+        seg.columns()
+            .map(|(starts, range)| {
+                let mut runs: Vec<Run> = vec![];
+                for (&k, i) in starts.iter().zip(range) {
+                    // A scene without primitives has no labels: nothing is inside.
+                    let colour = self.colour(labels.get(i).copied().unwrap_or(0));
+                    if runs.last().is_none_or(|r| r.colour != colour) {
+                        runs.push(Run { k, colour });
+                    }
+                }
+                runs
+            })
+            .collect()
+    }
+
+    /// A label's colour code (0: outside), as the slab routes colour it.
+    fn colour(&self, label: u32) -> u8 {
+        match label {
+            0 => 0,
+            l => self.slicer.colours[l as usize - 1],
+        }
+    }
+
+    /// Primitive p's runs of slabs (first, last) along column (x, y), in order.
+    fn slabs(&self, p: usize, x: usize, y: usize, out: &mut Vec<(u32, u32)>) {
+        let s = self.slicer;
+        match &self.depths[p] {
+            Depths::Word(planes) => out.push(planes.slabs(s, x as i64, y as i64)),
+            Depths::Float(prim) => out.push(float_slabs(s, *prim, x, y)),
+            Depths::Mesh(runs, b) => {
+                if (b.x0..b.x1).contains(&x) && (b.y0..b.y1).contains(&y) {
+                    out.extend_from_slice(&runs.0[(y - b.y0) * b.width() + (x - b.x0)]);
+                }
+            }
+            Depths::Dataset(d) => {
+                let nz = s.grid.dims[2];
+                let inside = |k: usize| d.inside(s.grid.centre(x, y, k));
+                let mut k = 0;
+                while k < nz {
+                    if inside(k) {
+                        let first = k;
+                        while k + 1 < nz && inside(k + 1) {
+                            k += 1;
+                        }
+                        out.push((first as u32, k as u32));
+                    }
+                    k += 1;
+                }
+            }
+        }
+        out.retain(|(a, b)| a <= b);
+    }
+}
+
+const EMPTY_BOX: PixelBox = PixelBox {
+    x0: 0,
+    y0: 0,
+    x1: 0,
+    y1: 0,
+};
+
+fn window(b: PixelBox) -> Window {
+    Window {
+        x0: b.x0,
+        y0: b.y0,
+        w: b.width(),
+        h: b.height(),
+    }
+}
+
+/// Per panel, the primitives whose outline meets it, in index order.
+fn panel_lists(slicer: &Slicer, [pw, ph]: [usize; 2]) -> Vec<Vec<u32>> {
+    let [w, h, _] = slicer.grid.dims;
+    let (nx, ny) = (w.div_ceil(pw), h.div_ceil(ph));
+    let mut lists = vec![vec![]; nx * ny];
+    for (p, b) in slicer.outlines.iter().enumerate() {
+        let Some(b) = b else { continue };
+        for py in b.y0 / ph..b.y1.div_ceil(ph).min(ny) {
+            for px in b.x0 / pw..b.x1.div_ceil(pw).min(nx) {
+                lists[py * nx + px].push(p as u32);
+            }
+        }
+    }
+    lists
+}
+
+/// The segments of a panel's columns: where, along each column, some primitive's membership
+/// changes, and which primitives hold each segment.
+#[derive(Default)]
+struct Segments {
+    /// First slab of every segment, column after column.
+    starts: Vec<u32>,
+    /// Where each column's segments start in `starts`.
+    column: Vec<usize>,
+    /// Every primitive run: (primitive, column, first slab, last slab).
+    held: Vec<(u32, u32, u32, u32)>,
+}
+
+impl Segments {
+    fn open_column(&mut self) {
+        self.column.push(self.starts.len());
+        self.starts.push(0);
+    }
+
+    /// Primitive p fills `runs` of the open column, on a grid `nz` slabs deep.
+    fn add(&mut self, p: u32, runs: &[(u32, u32)], nz: u32) {
+        let c = (self.column.len() - 1) as u32;
+        for &(a, b) in runs {
+            self.starts.push(a);
+            if b + 1 < nz {
+                self.starts.push(b + 1);
+            }
+            self.held.push((p, c, a, b));
+        }
+    }
+
+    fn close_column(&mut self) {
+        let c = *self.column.last().unwrap_or(&0);
+        let col = &mut self.starts[c..];
+        col.sort_unstable();
+        let n = dedup_sorted(col);
+        self.starts.truncate(c + n);
+    }
+
+    /// One mask per primitive over every segment of the panel: set where it holds the
+    /// segment; empty (no allocation) for primitives with no run here.
+    fn masks(&self, prims: usize) -> Vec<Mask> {
+        let len = self.starts.len();
+        let mut masks: Vec<Mask> = (0..prims).map(|_| Mask::new(0)).collect();
+        if let Some(m) = masks.first_mut() {
+            *m = Mask::new(len); // the slice's length, whoever holds a run
+        }
+        for &(p, c, a, b) in &self.held {
+            let m = &mut masks[p as usize];
+            if m.len() != len {
+                *m = Mask::new(len);
+            }
+            let (from, to) = self.range(c as usize);
+            let first = from + self.starts[from..to].partition_point(|&k| k < a);
+            for s in first..to {
+                if self.starts[s] > b {
+                    break;
+                }
+                m.set(s, true);
+            }
+        }
+        masks
+    }
+
+    /// Column c's segments: indices into `starts`.
+    fn range(&self, c: usize) -> (usize, usize) {
+        let to = self.column.get(c + 1).copied().unwrap_or(self.starts.len());
+        (self.column[c], to)
+    }
+
+    /// Each column's segment starts and their range of indices.
+    fn columns(&self) -> impl Iterator<Item = (&[u32], std::ops::Range<usize>)> + '_ {
+        (0..self.column.len()).map(|c| {
+            let (a, b) = self.range(c);
+            (&self.starts[a..b], a..b)
+        })
+    }
+}
+
+/// Removes repeats from a sorted slice in place; returns the length kept.
+fn dedup_sorted(v: &mut [u32]) -> usize {
+    let mut n = 0;
+    for i in 0..v.len() {
+        if n == 0 || v[i] != v[n - 1] {
+            v[n] = v[i];
+            n += 1;
+        }
+    }
+    n
+}
+
+/// Bands of rows the run route works in: one panel row each, so a band's primitives are
+/// those of its panels.
+fn bands(slicer: &Slicer) -> Vec<(usize, usize)> {
+    let h = slicer.grid.dims[1];
+    let ph = slicer.panel.unwrap_or(DEFAULT_PANEL)[1].max(1);
+    (0..h.div_ceil(ph))
+        .map(|b| (b * ph, ((b + 1) * ph).min(h)))
+        .collect()
+}
+
+/// Ticks [`voxelize_runs`] makes: one per band of rows.
+pub fn ticks(slicer: &Slicer) -> usize {
+    bands(slicer).len()
+}
+
+/// The whole volume by the run route, bands of rows in parallel, each band's runs written
+/// row by row ([`write_rows`]); `tick` once per band. The work counts are [`Work`]'s except
+/// `ops`, which counts the evaluator's work per segment, and `simulated_pixel_clocks` (0).
+pub fn voxelize_runs(
+    slicer: &Slicer,
+    float: bool,
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    mut work: Work,
+) -> Result<(Volume, Work)> {
+    let [nx, ny, nz] = slicer.grid.dims;
+    let columns = Columns::new(slicer, float)?;
+    let bands = bands(slicer);
+    let mut voxels = vec![0u8; nx * ny * nz];
+    // Every (y, z) row of the volume, grouped by band: band b owns rows y0..y1 of every slab.
+    let mut owned: Vec<Vec<&mut [u8]>> = bands.iter().map(|_| vec![]).collect();
+    let band_of = |y: usize| y / slicer.panel.unwrap_or(DEFAULT_PANEL)[1].max(1);
+    for (r, row) in voxels.chunks_mut(nx.max(1)).enumerate() {
+        owned[band_of(r % ny)].push(row);
+    }
+    let counted: Vec<(usize, OpCounts)> = owned
+        .into_par_iter()
+        .zip(bands)
+        .map(|(mut rows, (y0, y1))| {
+            let (runs, ops) = columns.rows(eval, y0, y1);
+            write_rows(&runs, nz, &mut rows);
+            tick();
+            (runs.filled(nz), ops)
+        })
+        .collect();
+    for (filled, ops) in counted {
+        work.filled += filled;
+        work.ops += ops;
+    }
+    Ok((
+        Volume {
+            dims: slicer.grid.dims,
+            voxels,
+        },
+        work,
+    ))
+}
+
+/// Writes the runs of rows y0..y1 (all X) into `rows`, the volume's rows of those y for every
+/// slab, slab-major (`rows[k·(y1 − y0) + (y − y0)]`), left zero where a row is empty.
+pub fn write_rows(runs: &ColumnRuns, nz: usize, rows: &mut [&mut [u8]]) {
+    let b = runs.columns;
+    let (w, h) = (b.width(), b.height());
+    let mut cur = vec![0u8; w];
+    for y in 0..h {
+        // Colour changes along z as (k, x, colour), in order of k.
+        let mut changes: Vec<(u32, u32, u8)> = vec![];
+        for x in 0..w {
+            let col = runs.column(b.x0 + x, b.y0 + y);
+            cur[x] = col.first().map_or(0, |r| r.colour);
+            changes.extend(col.iter().skip(1).map(|r| (r.k, x as u32, r.colour)));
+        }
+        changes.sort_unstable_by_key(|c| c.0);
+        let mut filled = cur.iter().filter(|&&c| c != 0).count();
+        let mut next = changes.iter().peekable();
+        for k in 0..nz {
+            while let Some(&(_, x, c)) = next.next_if(|c| c.0 as usize == k) {
+                let old = std::mem::replace(&mut cur[x as usize], c);
+                filled = filled + usize::from(c != 0) - usize::from(old != 0);
+            }
+            if filled > 0 {
+                rows[k * h + y].copy_from_slice(&cur);
+            }
+        }
+    }
+}
+
+/// Slices `slabs` of the run route handed to `sink` in order of k, as
+/// [`crate::voxelize_slabs`] does for the slab routes: the runs of every column computed
+/// first (bands in parallel), then swept along z.
+pub fn sweep_slices<E: From<crate::Error>>(
+    slicer: &Slicer,
+    float: bool,
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    slabs: std::ops::Range<usize>,
+    sink: &mut crate::SliceSink<E>,
+    mut work: Work,
+) -> Result<Work, E> {
+    let [nx, ny, _] = slicer.grid.dims;
+    let columns = Columns::new(slicer, float)?;
+    let banded: Vec<(ColumnRuns, OpCounts)> = bands(slicer)
+        .into_par_iter()
+        .map(|(y0, y1)| {
+            let r = columns.rows(eval, y0, y1);
+            tick();
+            r
+        })
+        .collect();
+    let mut cur = vec![0u8; nx * ny];
+    // Per slab in slabs (after the first), the pixels whose colour changes there.
+    let mut changes: Vec<Vec<(u32, u8)>> = vec![vec![]; slabs.len()];
+    for (runs, ops) in &banded {
+        work.ops += *ops;
+        let b = runs.columns;
+        for y in b.y0..b.y1 {
+            for x in 0..nx {
+                let col = runs.column(x, y);
+                let i = y * nx + x;
+                let at = col.partition_point(|r| (r.k as usize) <= slabs.start);
+                cur[i] = at.checked_sub(1).map_or(0, |a| col[a].colour);
+                for r in &col[at..] {
+                    let k = r.k as usize;
+                    if k >= slabs.end {
+                        break;
+                    }
+                    changes[k - slabs.start].push((i as u32, r.colour));
+                }
+            }
+        }
+    }
+    drop(banded);
+    for (k, ch) in slabs.zip(changes) {
+        for (i, c) in ch {
+            cur[i as usize] = c;
+        }
+        work.filled += cur.iter().filter(|&&v| v != 0).count();
+        sink(k, &cur)?;
+    }
+    Ok(work)
+}

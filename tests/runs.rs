@@ -1,0 +1,266 @@
+//! The run route (`crates/voxel/src/runs.rs`) against the slab routes it takes its depths
+//! from: the same volume voxel for voxel, on the word and the float model, either sampling,
+//! every evaluator, any panel size, convex solids, meshes and datasets; the same slices when
+//! handed on slab by slab; and every primitive's footprint inside the outline it is visited on.
+
+mod common;
+
+use std::path::PathBuf;
+
+use csgpix::blist::BlistEval;
+use csgpix::evaluate::{StackEval, TreeEval};
+use csgpix::sampled::load_scene;
+use csgpix::scad::parse_csg;
+use csgpix::slice::SliceEval;
+use csgpix::solid::{CsgNode, CsgScene};
+use csgpix::voxel::{
+    float_ranges, voxelize, voxelize_slabs, word_ranges, Error, Grid, Route, Sampling, Slicer,
+    SlicerOptions, Volume, Work,
+};
+use proptest::prelude::*;
+use rtl_model::Equations;
+
+fn run(slicer: &Slicer, route: Route, eval: &dyn SliceEval) -> (Volume, Work) {
+    voxelize(slicer, route, Equations::Derived.set(), eval, &|| {}).unwrap()
+}
+
+/// The run route of either model equals its slab route: volume, filled voxels, frames and
+/// clocks (the evaluator's counts differ: per segment, not per voxel).
+fn check_equal(slicer: &Slicer, eval: &dyn SliceEval) {
+    for float in [false, true] {
+        let route = Route::Runs { float };
+        let set = Equations::Derived.set();
+        let by_slab = voxelize(slicer, route.by_slab(), set.clone(), eval, &|| {});
+        let by_runs = voxelize(slicer, route, set, eval, &|| {});
+        let ((a, wa), (b, wb)) = match (by_runs, by_slab) {
+            (Ok(a), Ok(b)) => (a, b),
+            (a, b) => {
+                // A plane the word cannot hold fails both routes alike.
+                assert_eq!(a.err(), b.err());
+                continue;
+            }
+        };
+        let differ = a
+            .voxels
+            .iter()
+            .zip(&b.voxels)
+            .filter(|(x, y)| x != y)
+            .count();
+        assert_eq!(
+            differ,
+            0,
+            "{route:?}: {differ} voxels differ from {:?}",
+            route.by_slab()
+        );
+        assert_eq!(
+            (wa.filled, wa.cycles, wa.frames, wa.full_pixel_clocks),
+            (wb.filled, wb.cycles, wb.frames, wb.full_pixel_clocks)
+        );
+    }
+}
+
+fn evaluator(i: usize, root: &CsgNode) -> Box<dyn SliceEval> {
+    match i {
+        0 => Box::new(BlistEval::new(root)),
+        1 => Box::new(TreeEval::new(root)),
+        _ => Box::new(StackEval::new(root)),
+    }
+}
+
+/// A random tree over a scene's primitives: the file's tree, wrapped in a complement or
+/// differences with its own leaves, so inside-through-complement and repeated leaves occur.
+fn reshape(root: CsgNode, how: usize, prims: usize) -> CsgNode {
+    use CsgNode::*;
+    match how {
+        0 => root,
+        1 => Complement(Box::new(root)),
+        2 => Difference(vec![Complement(Box::new(Solid(0))), root]),
+        _ => Union(vec![
+            Difference(vec![Solid(prims - 1), root.clone()]),
+            Intersection(vec![root, Complement(Box::new(Solid(0)))]),
+        ]),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    #[test]
+    fn runs_are_the_slab_routes_voxels(
+        text in common::random_scene(),
+        dims in prop::array::uniform3(1usize..19),
+        slab in any::<bool>(),
+        e in 0usize..3,
+        how in 0usize..4,
+        panel in prop::option::of(prop::array::uniform2(1usize..9)),
+    ) {
+        let mut scene = parse_csg(&text, "random").unwrap();
+        scene.root = reshape(scene.root.clone(), how, scene.solids.len());
+        let opts = SlicerOptions {
+            sampling: if slab { Sampling::Slab } else { Sampling::Centre },
+            panel,
+            ..SlicerOptions::default()
+        };
+        let slicer = Slicer::new(&scene, Grid::of_scene(&scene, dims).unwrap(), opts).unwrap();
+        check_equal(&slicer, evaluator(e, &scene.root).as_ref());
+    }
+
+    #[test]
+    fn footprints_lie_inside_the_outlines(
+        text in common::random_scene(),
+        dims in prop::array::uniform3(1usize..40),
+        slab in any::<bool>(),
+    ) {
+        let scene = parse_csg(&text, "random").unwrap();
+        let opts = SlicerOptions {
+            sampling: if slab { Sampling::Slab } else { Sampling::Centre },
+            ..SlicerOptions::default()
+        };
+        let slicer = Slicer::new(&scene, Grid::of_scene(&scene, dims).unwrap(), opts).unwrap();
+        check_outlines(&slicer);
+    }
+
+    #[test]
+    fn run_slices_are_the_whole_runs(
+        text in common::random_scene(),
+        cuts in prop::collection::vec(0usize..20, 0..3),
+        float in any::<bool>(),
+    ) {
+        let scene = parse_csg(&text, "random").unwrap();
+        let grid = Grid::of_scene(&scene, [13, 11, 17]).unwrap();
+        let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
+        check_slices(&slicer, float, &BlistEval::new(&scene.root), &cuts);
+    }
+}
+
+/// Every pixel where a solid fills some slab lies in its outline.
+fn check_outlines(slicer: &Slicer) {
+    let w = slicer.grid.dims[0];
+    for p in 0..slicer.lists.len() {
+        // A plane the word cannot hold fails the word route: the float ranges remain.
+        let word = word_ranges(slicer, p).ok();
+        for r in word.iter().chain([&float_ranges(slicer, p)]) {
+            for (i, &(a, b)) in r.0.iter().enumerate() {
+                if a > b {
+                    continue;
+                }
+                let (x, y) = (i % w, i / w);
+                let o = slicer.outlines[p].unwrap_or_else(|| panic!("solid {p} has no outline"));
+                assert!(
+                    (o.x0..o.x1).contains(&x) && (o.y0..o.y1).contains(&y),
+                    "solid {p} fills pixel ({x}, {y}) outside its outline {o:?}"
+                );
+            }
+        }
+    }
+}
+
+/// Slices of slab ranges cut at `cuts` are the whole run's, in order.
+fn check_slices(slicer: &Slicer, float: bool, eval: &dyn SliceEval, cuts: &[usize]) {
+    let route = Route::Runs { float };
+    let (whole, work) = run(slicer, route, eval);
+    let nz = slicer.grid.dims[2];
+    let len = slicer.grid.slice_len();
+    let mut bounds: Vec<usize> = cuts.iter().map(|c| c % (nz + 1)).collect();
+    bounds.extend([0, nz]);
+    bounds.sort_unstable();
+    let mut filled = 0;
+    for w in bounds.windows(2) {
+        let mut next = w[0];
+        let set = Equations::Derived.set();
+        let part =
+            voxelize_slabs::<Error>(slicer, route, set, eval, &|| {}, w[0]..w[1], &mut |k, s| {
+                assert_eq!(k, next);
+                assert_eq!(s, &whole.voxels[k * len..(k + 1) * len], "slice {k}");
+                next += 1;
+                Ok(())
+            })
+            .unwrap();
+        assert_eq!(next, w[1]);
+        filled += part.filled;
+    }
+    assert_eq!(filled, work.filled);
+}
+
+fn scene_path(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("vectors/scenes")
+        .join(name)
+}
+
+/// A loaded scene on `dims` with its imports.
+fn loaded_slicer(name: &str, dims: [usize; 3], panel: Option<[usize; 2]>) -> (CsgScene, Slicer) {
+    let l = load_scene(&scene_path(name)).unwrap();
+    let grid = Grid::of_scene(&l.scene, dims).unwrap();
+    let grid = match l.sampled.is_empty() {
+        true => grid,
+        false => l.grid(dims).unwrap(),
+    };
+    let opts = SlicerOptions {
+        sampled: l.sampled,
+        panel,
+        ..SlicerOptions::default()
+    };
+    let slicer = Slicer::new(&l.scene, grid, opts).unwrap();
+    (l.scene, slicer)
+}
+
+#[test]
+fn the_bundled_scenes_by_runs() {
+    for (name, dims) in [
+        ("csg-logo.csg", [40, 36, 33]),
+        ("twelve.csg", [33, 35, 31]),
+        ("figure-5.2.csg", [30, 30, 30]),
+        ("figure-5.6.csg", [28, 26, 24]),
+        ("hollow-cube.csg", [21, 22, 23]),
+    ] {
+        for panel in [None, Some([7, 5])] {
+            let (scene, slicer) = loaded_slicer(name, dims, panel);
+            for e in 0..3 {
+                check_equal(&slicer, evaluator(e, &scene.root).as_ref());
+            }
+            check_outlines(&slicer);
+        }
+    }
+}
+
+/// Concave extrusions and a rotate_extrude become closed mesh primitives: their runs come
+/// from crossings kept over their outline only.
+#[test]
+fn mesh_primitives_by_runs() {
+    let text = "difference() {\n\
+        linear_extrude(height = 6, twist = 40, slices = 4) polygon(points = [[0, 0], [8, 0], [8, 8], [4, 3], [0, 8]]);\n\
+        multmatrix([[1, 0, 0, 4], [0, 1, 0, 4], [0, 0, 1, 3], [0, 0, 0, 1]]) sphere($fn = 10, r = 2.5);\n\
+        }\n\
+        multmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) rotate_extrude(angle = 200, $fn = 12) polygon(points = [[1, 0], [3, 0], [3, 2], [2, 1], [1, 2]]);\n";
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("meshes.csg");
+    std::fs::write(&path, text).unwrap();
+    let l = load_scene(&path).unwrap();
+    assert!(l.sampled.len() >= 2, "the extrusions are mesh primitives");
+    for dims in [[31, 17, 12], [8, 40, 21]] {
+        let grid = l.grid(dims).unwrap();
+        let opts = SlicerOptions {
+            sampled: l.sampled.clone(),
+            panel: Some([6, 4]),
+            ..SlicerOptions::default()
+        };
+        let slicer = Slicer::new(&l.scene, grid, opts).unwrap();
+        check_equal(&slicer, &BlistEval::new(&l.scene.root));
+        check_slices(&slicer, false, &StackEval::new(&l.scene.root), &[5, 9]);
+    }
+}
+
+/// Where voxels take a dataset's grey values the run route hands over to the slab route.
+#[test]
+fn grey_datasets_go_by_slab() {
+    let l = load_scene(&scene_path("figure-5.6.csg")).unwrap();
+    let grid = l.grid([20, 20, 20]).unwrap();
+    let opts = SlicerOptions {
+        sampled: l.sampled,
+        grey: true,
+        ..SlicerOptions::default()
+    };
+    let slicer = Slicer::new(&l.scene, grid, opts).unwrap();
+    assert!(!csgpix::voxel::runs::applies(&slicer));
+    check_equal(&slicer, &BlistEval::new(&l.scene.root));
+}
