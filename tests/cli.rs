@@ -490,6 +490,9 @@ fn voxelize_eval_blist_reports_the_label_register() {
             "20",
             "--eval",
             eval,
+            // Counts per voxel (§5.5) are the slab route's; the run route counts per run.
+            "--route",
+            "intervals",
             "--json",
             "-o",
             s(&out),
@@ -497,6 +500,7 @@ fn voxelize_eval_blist_reports_the_label_register() {
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
         assert_eq!(v["eval"], eval);
+        assert_eq!(v["route"], "intervals");
         // (Cube1 + Cube2) - (Cylinder1 + Cylinder2): two names besides 0, so two bits.
         assert_eq!(v["label_bits"], 2, "{v}");
         if eval == "blist" {

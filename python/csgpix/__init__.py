@@ -85,7 +85,7 @@ def voxelize(
     bounds: Optional[Tuple[Vec3, Vec3]] = None,
     sampling: str = "centre",
     model: str = "word",
-    route: str = "intervals",
+    route: str = "runs",
     eval: str = "blist",
     grey: bool = False,
     blend: Optional[str] = None,
@@ -99,7 +99,7 @@ def voxelize(
 
     ``z=(k0, k1)`` voxelizes slabs k0..k1 of that grid only: the same voxels as those slabs
     of the whole volume, computed without the others. ``model`` is ``cycle``, ``word`` or
-    ``float``; ``route`` (word) ``intervals`` or ``array``; ``eval`` ``blist``, ``tree`` or
+    ``float``; ``route`` ``runs`` (word or float), ``intervals`` or ``array`` (word); ``eval`` ``blist``, ``tree`` or
     ``stack``; ``sampling`` ``centre`` or ``slab`` (docs/voxelization.md).
 
     A run whose memory estimate is over ``max_memory`` MiB (default: the memory available

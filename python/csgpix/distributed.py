@@ -70,7 +70,7 @@ def voxelize_zarr(
     bounds: Optional[Tuple[Tuple[float, float, float], Tuple[float, float, float]]] = None,
     sampling: str = "centre",
     model: str = "word",
-    route: str = "intervals",
+    route: str = "runs",
     eval: str = "blist",
     grey: bool = False,
     blend: Optional[str] = None,

@@ -253,10 +253,12 @@ impl RunOptions {
         let model: Model = model.parse().map_err(text)?;
         let route = match (model, route) {
             (Model::Cycle, _) => Route::Array { cycle: true },
+            (Model::Word, "runs") => Route::Runs { float: false },
             (Model::Word, "intervals") => Route::Intervals,
             (Model::Word, "array") => Route::Array { cycle: false },
+            (Model::Float, "runs") => Route::Runs { float: true },
             (Model::Float, _) => Route::Float,
-            (_, r) => return Err(text(format!("route {r:?}: `intervals` or `array`"))),
+            (_, r) => return Err(text(format!("route {r:?}: `runs`, `intervals` or `array`"))),
         };
         if !["blist", "tree", "stack"].contains(&eval) {
             return Err(text(format!("eval {eval:?}: `blist`, `tree` or `stack`")));
@@ -382,7 +384,7 @@ pub fn slab_range(z: Option<(usize, usize)>, nz: usize) -> PyResult<std::ops::Ra
 /// (k1 − k0, NY, NX), with the grid's origin (centre of voxel (0, 0, 0)), spacing and dims.
 #[pyfunction]
 #[pyo3(signature = (scene, res=None, *, voxel=None, pad=0, bounds=None, sampling="centre",
-    model="word", route="intervals", eval="blist", grey=false, blend=None, word="10/10/11",
+    model="word", route="runs", eval="blist", grey=false, blend=None, word="10/10/11",
     z=None, max_memory=None))]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 pub fn voxelize<'py>(

@@ -38,7 +38,7 @@ fn chunk_shape(chunk: Option<&Bound<'_, PyAny>>) -> PyResult<[usize; 3]> {
 /// (z, y, x) and `rows`, the number of chunk rows.
 #[pyfunction]
 #[pyo3(signature = (scene, path, res=None, *, voxel=None, pad=0, bounds=None, chunk=None,
-    sampling="centre", model="word", route="intervals", eval="blist", grey=false, blend=None,
+    sampling="centre", model="word", route="runs", eval="blist", grey=false, blend=None,
     word="10/10/11"))]
 #[allow(clippy::too_many_arguments)]
 pub fn zarr_create<'py>(
@@ -75,7 +75,7 @@ pub fn zarr_create<'py>(
 /// Voxelize chunk rows `rows` (r0, r1) of the volume at `path` and store them; the grid is
 /// the store's. `threads`: the voxelizer's (default: every core). Returns the rows' work.
 #[pyfunction]
-#[pyo3(signature = (scene, path, rows, *, sampling="centre", model="word", route="intervals",
+#[pyo3(signature = (scene, path, rows, *, sampling="centre", model="word", route="runs",
     eval="blist", grey=false, blend=None, word="10/10/11", threads=None, max_memory=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn zarr_write_rows<'py>(

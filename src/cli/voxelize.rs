@@ -564,22 +564,6 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         .threads
         .map_or_else(rayon::current_num_threads, usize::from);
     let chunk = a.chunk.unwrap_or([csgpix::zarr::DEFAULT_CHUNK; 3]);
-    let prims = scene.primitive_count();
-    let mut need = match a.format {
-        FormatArg::Nrrd => memory_estimate(&grid, prims, threads),
-        FormatArg::Zarr => csgpix::zarr::memory_estimate(&grid, chunk, prims, threads)?,
-    };
-    for s in &loaded.sampled {
-        need = need.saturating_add(s.memory_estimate(&grid));
-    }
-    if let Some(st) = a.store {
-        need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
-    }
-    let fix = match a.format {
-        FormatArg::Nrrd => "lower --res",
-        FormatArg::Zarr => "lower --res or --chunk",
-    };
-    a.mem.check(need, "this run", fix)?;
     let opts = SlicerOptions {
         fmt: a.word,
         sampling: a.grid.sampling.sampling(),
@@ -591,13 +575,15 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
     let eval = evaluator(a.eval, scene);
     let route = route_of(a.model, a.route, &slicer);
+    let need = estimate(&a, &slicer, route, eval.as_ref(), threads, chunk)?;
+    let fix = match a.format {
+        FormatArg::Nrrd => "lower --res",
+        FormatArg::Zarr => "lower --res or --chunk",
+    };
+    a.mem.check(need, "this run", fix)?;
     let set = Equations::from(a.equations).set();
     let t0 = Instant::now();
-    let calls = match a.format {
-        FormatArg::Zarr => grid.dims[2].div_ceil(chunk[0].clamp(1, grid.dims[2].max(1))),
-        FormatArg::Nrrd => 1,
-    };
-    let bar = progress(&slicer, route, calls);
+    let bar = progress(&slicer, route);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -665,6 +651,46 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let figures = (work, store, mesh);
     let run = (wall, to_stdout, need);
     report(&a, scene, &slicer, eval.as_ref(), figures, run, None)
+}
+
+/// An upper bound of the run's memory (docs/memory.md), by route and output: the run route's
+/// follows the primitives' footprints, the slab routes' every primitive's per-pixel ranges.
+fn estimate(
+    a: &Args,
+    slicer: &Slicer,
+    route: Route,
+    eval: &dyn SliceEval,
+    threads: usize,
+    chunk: [usize; 3],
+) -> Result<u64, String> {
+    let grid = &slicer.grid;
+    let prims = slicer.primitive_count();
+    let runs = matches!(route, Route::Runs { .. });
+    let whole_volume = a.format == FormatArg::Nrrd && a.store.is_none();
+    let mut need = match (runs, a.format) {
+        (true, FormatArg::Nrrd) => {
+            csgpix::voxel::runs::memory_estimate(slicer, eval, threads, whole_volume)
+        }
+        (true, FormatArg::Zarr) => {
+            csgpix::voxel::runs::memory_estimate(slicer, eval, threads, false)
+                .saturating_add(csgpix::zarr::writer_bytes(grid.dims, chunk)?)
+        }
+        (false, FormatArg::Nrrd) => memory_estimate(grid, prims, threads),
+        (false, FormatArg::Zarr) => csgpix::zarr::memory_estimate(grid, chunk, prims, threads)?,
+    };
+    if !runs {
+        for s in &slicer.sampled {
+            need = need.saturating_add(s.memory_estimate(grid));
+        }
+    }
+    if let Some(st) = a.store {
+        need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
+        if runs {
+            // The volume is gathered slice by slice beside the store.
+            need = need.saturating_add(grid.dims.iter().map(|&d| d as u64).product());
+        }
+    }
+    Ok(need)
 }
 
 /// A Zarr store's error, naming `-o` where the library names the staging directory.
@@ -802,12 +828,12 @@ fn evaluator(e: EvalArg, scene: &CsgScene) -> Box<dyn SliceEval> {
 }
 
 /// A progress bar for runs that take a while: slices on the slab routes, bands of rows on
-/// the run route (which ticks once per band, `calls` times over for a Zarr store's rows).
-fn progress(slicer: &Slicer, route: Route, calls: usize) -> ProgressBar {
+/// the run route (which ticks once per band).
+fn progress(slicer: &Slicer, route: Route) -> ProgressBar {
     let [_, _, nz] = slicer.grid.dims;
     let voxels = slicer.grid.slice_len() * nz;
     let (len, unit) = match route {
-        Route::Runs { .. } => (csgpix::voxel::runs::ticks(slicer) * calls, "row bands"),
+        Route::Runs { .. } => (csgpix::voxel::runs::ticks(slicer), "row bands"),
         _ => (nz, "slices"),
     };
     let heavy = match route {

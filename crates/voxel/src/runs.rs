@@ -75,12 +75,21 @@ impl ColumnRuns {
     }
 }
 
-/// Non-empty voxels of one column's runs.
+/// Non-empty voxels of one column's runs, on a grid `nz` slabs deep.
 fn filled_in(runs: &[Run], nz: usize) -> usize {
+    filled_between(runs, 0..nz)
+}
+
+/// Non-empty voxels of one column's runs within slabs `slabs` (its end at most the grid's).
+fn filled_between(runs: &[Run], slabs: std::ops::Range<usize>) -> usize {
     runs.iter()
         .enumerate()
         .filter(|(_, r)| r.colour != 0)
-        .map(|(i, r)| runs.get(i + 1).map_or(nz, |n| n.k as usize) - r.k as usize)
+        .map(|(i, r)| {
+            let end = runs.get(i + 1).map_or(slabs.end, |n| n.k as usize);
+            let (a, b) = ((r.k as usize).max(slabs.start), end.min(slabs.end));
+            b.saturating_sub(a)
+        })
         .sum()
 }
 
@@ -509,6 +518,7 @@ pub fn sweep_slices<E: From<crate::Error>>(
         for y in b.y0..b.y1 {
             for x in 0..nx {
                 let col = runs.column(x, y);
+                work.filled += filled_between(col, slabs.clone());
                 let i = y * nx + x;
                 let at = col.partition_point(|r| (r.k as usize) <= slabs.start);
                 cur[i] = at.checked_sub(1).map_or(0, |a| col[a].colour);
@@ -527,8 +537,90 @@ pub fn sweep_slices<E: From<crate::Error>>(
         for (i, c) in ch {
             cur[i as usize] = c;
         }
-        work.filled += cur.iter().filter(|&&v| v != 0).count();
         sink(k, &cur)?;
     }
     Ok(work)
+}
+
+/// Runs a column of a panel can have: one, plus two per run of each of its `prims`
+/// primitives (a convex solid has one run, a mesh about one per two crossings: taken as
+/// [`MESH_RUNS`], as [`crate::sampled::Sampled::memory_estimate`] takes two crossings), never
+/// more than the slabs.
+fn segments_bound(slicer: &Slicer, prims: &[u32], nz: u64) -> u64 {
+    let solids = slicer.lists.len();
+    let runs: u64 = prims
+        .iter()
+        .map(
+            |&p| match slicer.sampled.get((p as usize).wrapping_sub(solids)) {
+                None => 1,
+                Some(s) if s.is_dataset() => nz,
+                Some(_) => MESH_RUNS,
+            },
+        )
+        .sum();
+    runs.saturating_mul(2).saturating_add(1).min(nz.max(1))
+}
+
+/// Runs assumed per column for a mesh primitive in the memory estimate.
+pub const MESH_RUNS: u64 = 2;
+
+/// An upper bound of the memory of a run-route run (docs/memory.md): the volume (`volume`;
+/// else the slices' runs of the whole grid, held to be swept along z), the rows' handles,
+/// each mesh's runs over its outline, and per thread a band's runs and its panel's segments,
+/// masks (only the panel's primitives hold bits) and evaluator state. It follows the
+/// primitives' footprints: a primitive costs where its outline is, not on every pixel.
+pub fn memory_estimate(slicer: &Slicer, eval: &dyn SliceEval, threads: usize, volume: bool) -> u64 {
+    let [nx, ny, nz] = slicer.grid.dims.map(|d| d as u64);
+    let panel = slicer.panel.unwrap_or(DEFAULT_PANEL).map(|p| p.max(1));
+    let lists = panel_lists(slicer, panel);
+    let [pw, ph] = panel.map(|p| p as u64);
+    let across = nx.div_ceil(pw) as usize;
+    let prims = slicer.primitive_count() as u64;
+    let mut bands = 0u64;
+    let mut band = 0u64;
+    let mut grid_runs = 0u64;
+    for (i, l) in lists.iter().enumerate() {
+        let columns = pw.saturating_mul(ph);
+        let segs = columns.saturating_mul(segments_bound(slicer, l, nz));
+        // Segments (4 bytes), their labels (4) and runs (8), the runs' handles (24 a column),
+        // the primitive runs held (16 each), the masks (32 a primitive, a bit a segment for
+        // the panel's own) and the evaluator's state.
+        let transient = segs
+            .saturating_mul(16)
+            .saturating_add(columns.saturating_mul(16 * l.len() as u64))
+            .saturating_add(prims.saturating_mul(32))
+            .saturating_add((l.len() as u64).saturating_mul(segs / 8 + 8))
+            .saturating_add(eval.state_bytes(segs as usize) as u64);
+        let kept = segs
+            .saturating_mul(8)
+            .saturating_add(columns.saturating_mul(24));
+        band = band.saturating_add(kept).saturating_add(transient);
+        grid_runs = grid_runs.saturating_add(kept);
+        if (i + 1) % across == 0 {
+            bands = bands.max(band);
+            band = 0;
+        }
+    }
+    let meshes: u64 = slicer
+        .sampled
+        .iter()
+        .zip(&slicer.outlines[slicer.lists.len()..])
+        .filter(|(s, _)| !s.is_dataset())
+        .map(|(s, b)| {
+            let pixels = b.map_or(0, |b| b.pixels() as u64);
+            pixels.saturating_mul(24 + 2 * 16 + 24 + 2 * 8) + s.triangle_count() as u64 * 64
+        })
+        .sum();
+    let held = match volume {
+        true => nx
+            .saturating_mul(ny)
+            .saturating_mul(nz)
+            .saturating_add(nz.saturating_mul(ny).saturating_mul(16)),
+        false => grid_runs
+            .saturating_mul(2)
+            .saturating_add(nx.saturating_mul(ny)),
+    };
+    held.saturating_add(meshes)
+        .saturating_add((threads as u64).saturating_mul(bands))
+        .saturating_add(crate::drive::PROCESS_BYTES)
 }

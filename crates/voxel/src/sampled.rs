@@ -111,6 +111,14 @@ impl Sampled {
         }
     }
 
+    /// A mesh's triangles (0 for a dataset).
+    pub fn triangle_count(&self) -> usize {
+        match &self.shape {
+            Shape::Mesh(m) => m.triangles.len(),
+            Shape::Dataset { .. } => 0,
+        }
+    }
+
     /// Whether it is a dataset (not a mesh).
     pub fn is_dataset(&self) -> bool {
         matches!(self.shape, Shape::Dataset { .. })
