@@ -4,6 +4,7 @@
 use csgpix_scene::trimesh::{TriMesh, Window};
 
 use crate::error::Result;
+use crate::footprint::PixelBox;
 use crate::sampled::SlabRuns;
 use crate::slice::Mask;
 use crate::slicer::Slicer;
@@ -75,16 +76,78 @@ impl WordPlanes {
         Ok(WordPlanes(planes))
     }
 
+    /// The planes that decide the solid's interval somewhere in panel `b`, or None when the
+    /// solid is nowhere in it: the depth generator's planes pruned as the thesis's panels
+    /// draw only the planes that reach them (§2.5). A plane's value is linear over the panel
+    /// and, where none of its corner values wraps, lies between its corner values, so:
+    ///
+    /// * a perpendicular plane (Y) non-negative at every corner never refuses a pixel: dropped;
+    ///   negative at every corner, it refuses them all: None;
+    /// * a front plane whose largest corner value is below the largest of the front planes'
+    ///   smallest corner values, M, is everywhere below the plane that has M: it never sets
+    ///   the interval's start (ties kept), and so for back planes and the end.
+    ///
+    /// Planes whose value wraps at a corner are kept and take no part. [`WordPlanes::slabs`] of
+    /// the pruned planes is that of all of them at every pixel of `b` (tested).
+    pub(crate) fn in_panel(&self, fmt: &rtl_model::WordFormat, b: PixelBox) -> Option<WordPlanes> {
+        let corners = |c: &rtl_model::Coeffs| -> Option<(i64, i64)> {
+            let (x1, y1) = (b.x1 as i64 - 1, b.y1 as i64 - 1);
+            let v = [
+                (b.x0 as i64, b.y0 as i64),
+                (x1, b.y0 as i64),
+                (b.x0 as i64, y1),
+                (x1, y1),
+            ]
+            .map(|(x, y)| c.c0 + x * c.dx + y * c.dy);
+            let fits = v.iter().all(|&v| fmt.wrap(v) == v);
+            fits.then(|| (*v.iter().min().unwrap_or(&0), *v.iter().max().unwrap_or(&0)))
+        };
+        let ext: Vec<Option<(i64, i64)>> = self.0.iter().map(|(c, _, _)| corners(c)).collect();
+        // The front plane with the largest minimum, the back plane with the smallest maximum.
+        let pick = |front: bool| {
+            let planes = self.0.iter().zip(&ext).enumerate();
+            let sided = planes.filter(|(_, ((_, y, h), e))| !*y && *h == front && e.is_some());
+            let key = |(i, (_, e)): (usize, (_, &Option<(i64, i64)>))| {
+                let (lo, hi) = e.unwrap_or_default();
+                (if front { lo } else { -hi }, i)
+            };
+            sided
+                .map(key)
+                .max()
+                .map(|(v, i)| (if front { v } else { -v }, i))
+        };
+        let (front, back) = (pick(true), pick(false));
+        let mut kept = Vec::with_capacity(self.0.len());
+        for (i, (plane, e)) in self.0.iter().zip(&ext).enumerate() {
+            let (_, y, h) = *plane;
+            let keep = match (e, y, h) {
+                (None, _, _) => true,
+                (Some((_, hi)), true, _) if *hi < 0 => return None,
+                (Some((lo, _)), true, _) => *lo < 0,
+                (Some((_, hi)), false, true) => front.is_none_or(|(m, g)| i == g || *hi >= m),
+                (Some((lo, _)), false, false) => back.is_none_or(|(m, g)| i == g || *lo <= m),
+            };
+            if keep {
+                kept.push(*plane);
+            }
+        }
+        Some(WordPlanes(kept))
+    }
+
     /// The slabs the solid fills along pixel (x, y)'s ray: DEPGEN's Z0 + x·dZx + y·dZy
     /// wrapped to the word, reduced to the interval inside every plane.
     pub(crate) fn slabs(&self, slicer: &Slicer, x: i64, y: i64) -> (u32, u32) {
-        let fmt = &slicer.fmt;
+        let (lo, hi) = self.interval(&slicer.fmt, x, y).unwrap_or((1, 0));
+        slabs_of(slicer, lo, hi)
+    }
+
+    /// The depths (raw words) inside the solid along pixel (x, y)'s ray; None when none are.
+    fn interval(&self, fmt: &rtl_model::WordFormat, x: i64, y: i64) -> Option<(i128, i128)> {
         let values = self
             .0
             .iter()
             .map(|(c, py, ph)| (fmt.wrap(c.c0 + x * c.dx + y * c.dy) as i128, *py, *ph));
-        let (lo, hi) = ray_interval(values, i128::MIN, i128::MAX).unwrap_or((1, 0));
-        slabs_of(slicer, lo, hi)
+        ray_interval(values, i128::MIN, i128::MAX)
     }
 }
 
@@ -206,4 +269,61 @@ pub fn mesh_runs_in(slicer: &Slicer, mesh: &TriMesh, win: Window) -> SlabRuns {
             })
             .collect(),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::slicer::SlicerOptions;
+    use csgpix_scene::grid::Grid;
+    use proptest::prelude::*;
+
+    /// A sphere or cone of many faces, turned and placed anywhere on the grid.
+    fn solid() -> impl Strategy<Value = String> {
+        let shape = prop_oneof![
+            (6usize..40, 2.0..9.0f64).prop_map(|(n, r)| format!("sphere($fn = {n}, r = {r:.3});")),
+            (3usize..40, 2.0..12.0f64, 0.0..6.0f64).prop_map(|(n, h, r)| format!(
+                "cylinder($fn = {n}, h = {h:.3}, r1 = {r:.3}, r2 = 1, center = true);"
+            )),
+        ];
+        (shape, -3.0..3.0f64, prop::array::uniform3(-6.0..6.0f64)).prop_map(|(s, a, t)| {
+            let (c, si) = (a.cos(), a.sin());
+            format!(
+                "multmatrix([[{c}, 0, {si}, {}], [0, 1, 0, {}], [{}, 0, {c}, {}], [0, 0, 0, 1]]) {{ {s} }}",
+                t[0], t[1], -si, t[2]
+            )
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// The planes kept for a panel give every pixel of it the slabs all the planes give.
+        #[test]
+        fn planes_pruned_to_a_panel_decide_as_all_do(
+            text in solid(),
+            n in 8usize..80,
+            at in prop::array::uniform2(0usize..80),
+            size in prop::array::uniform2(1usize..24),
+        ) {
+            let scene = csgpix_openscad::parse_csg(&text, "s.csg").unwrap();
+            let lo = glam::DVec3::splat(-12.0);
+            let grid = Grid::new([n, n, n], lo, -lo).unwrap();
+            let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
+            let all = WordPlanes::of(&slicer, 0).unwrap();
+            let (x0, y0) = (at[0] % n, at[1] % n);
+            let b = PixelBox { x0, y0, x1: (x0 + size[0]).min(n), y1: (y0 + size[1]).min(n) };
+            let kept = all.in_panel(&slicer.fmt, b);
+            for y in b.y0..b.y1 {
+                for x in b.x0..b.x1 {
+                    let (x, y) = (x as i64, y as i64);
+                    let want = all.interval(&slicer.fmt, x, y);
+                    let got = kept.as_ref().and_then(|k| k.interval(&slicer.fmt, x, y));
+                    prop_assert_eq!(got, want, "({}, {})", x, y);
+                }
+            }
+            if let Some(k) = kept {
+                prop_assert!(k.0.len() <= all.0.len());
+            }
+        }
+    }
 }

@@ -211,13 +211,24 @@ impl<'a> Columns<'a> {
         let nz = self.slicer.grid.dims[2] as u32;
         let mut seg = Segments::default();
         let mut span = vec![];
+        let here: Vec<(u32, Option<WordPlanes>)> = prims
+            .iter()
+            .filter_map(|&p| match &self.depths[p as usize] {
+                Depths::Word(w) => w.in_panel(&self.slicer.fmt, b).map(|w| (p, Some(w))),
+                _ => Some((p, None)),
+            })
+            .collect();
         for y in b.y0..b.y1 {
             for x in b.x0..b.x1 {
                 seg.open_column();
-                for &p in prims {
+                for (p, planes) in &here {
                     span.clear();
-                    self.slabs(p as usize, x, y, &mut span);
-                    seg.add(p, &span, nz);
+                    match planes {
+                        Some(w) => span.push(w.slabs(self.slicer, x as i64, y as i64)),
+                        None => self.slabs(*p as usize, x, y, &mut span),
+                    }
+                    span.retain(|(a, b)| a <= b);
+                    seg.add(*p, &span, nz);
                 }
                 seg.close_column();
             }
