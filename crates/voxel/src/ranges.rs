@@ -102,36 +102,20 @@ impl WordPlanes {
             let fits = v.iter().all(|&v| fmt.wrap(v) == v);
             fits.then(|| (*v.iter().min().unwrap_or(&0), *v.iter().max().unwrap_or(&0)))
         };
-        let ext: Vec<Option<(i64, i64)>> = self.0.iter().map(|(c, _, _)| corners(c)).collect();
-        // The front plane with the largest minimum, the back plane with the smallest maximum.
-        let pick = |front: bool| {
-            let planes = self.0.iter().zip(&ext).enumerate();
-            let sided = planes.filter(|(_, ((_, y, h), e))| !*y && *h == front && e.is_some());
-            let key = |(i, (_, e)): (usize, (_, &Option<(i64, i64)>))| {
-                let (lo, hi) = e.unwrap_or_default();
-                (if front { lo } else { -hi }, i)
-            };
-            sided
-                .map(key)
-                .max()
-                .map(|(v, i)| (if front { v } else { -v }, i))
-        };
-        let (front, back) = (pick(true), pick(false));
-        let mut kept = Vec::with_capacity(self.0.len());
-        for (i, (plane, e)) in self.0.iter().zip(&ext).enumerate() {
-            let (_, y, h) = *plane;
-            let keep = match (e, y, h) {
-                (None, _, _) => true,
-                (Some((_, hi)), true, _) if *hi < 0 => return None,
-                (Some((lo, _)), true, _) => *lo < 0,
-                (Some((_, hi)), false, true) => front.is_none_or(|(m, g)| i == g || *hi >= m),
-                (Some((lo, _)), false, false) => back.is_none_or(|(m, g)| i == g || *lo <= m),
-            };
-            if keep {
-                kept.push(*plane);
-            }
-        }
-        Some(WordPlanes(kept))
+        let ext: Vec<_> = self
+            .0
+            .iter()
+            .map(|(c, y, h)| ((*y, *h), corners(c)))
+            .collect();
+        let keep = decisive(&ext)?;
+        Some(WordPlanes(
+            self.0
+                .iter()
+                .zip(keep)
+                .filter(|(_, k)| *k)
+                .map(|(p, _)| *p)
+                .collect(),
+        ))
     }
 
     /// The slabs the solid fills along pixel (x, y)'s ray: DEPGEN's Z0 + x·dZx + y·dZy
@@ -164,6 +148,107 @@ pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges> {
         }
     }
     Ok(SlabRanges(out))
+}
+
+/// A plane's (Y, H) flags and its smallest and largest value over a panel, if known.
+type PlaneRange<T> = ((bool, bool), Option<(T, T)>);
+
+/// Which of a convex solid's planes can decide a pixel of a panel, from each plane's (Y, H)
+/// flags and its smallest and largest value over the panel (None: not known, kept); None when
+/// a perpendicular plane is negative all over it, so the solid is nowhere there. See
+/// [`WordPlanes::in_panel`] for the argument.
+fn decisive<T: PartialOrd + Copy + Default>(planes: &[PlaneRange<T>]) -> Option<Vec<bool>> {
+    // The front plane with the largest minimum, the back plane with the smallest maximum.
+    let mut front: Option<(T, usize)> = None;
+    let mut back: Option<(T, usize)> = None;
+    for (i, &((y, h), e)) in planes.iter().enumerate() {
+        match (e, y, h) {
+            (Some((lo, _)), false, true) if front.is_none_or(|(m, _)| lo > m) => {
+                front = Some((lo, i))
+            }
+            (Some((_, hi)), false, false) if back.is_none_or(|(m, _)| hi < m) => {
+                back = Some((hi, i))
+            }
+            _ => {}
+        }
+    }
+    let zero = T::default();
+    planes
+        .iter()
+        .enumerate()
+        .map(|(i, &((y, h), e))| match (e, y, h) {
+            (None, _, _) => Some(true),
+            (Some((_, hi)), true, _) if hi < zero => None,
+            (Some((lo, _)), true, _) => Some(lo < zero),
+            (Some((_, hi)), false, true) => Some(front.is_none_or(|(m, g)| i == g || hi >= m)),
+            (Some((lo, _)), false, false) => Some(back.is_none_or(|(m, g)| i == g || lo <= m)),
+        })
+        .collect()
+}
+
+/// A solid's planes as f64 (Z0, dZx, dZy, Y, H), for [`Route::Float`](crate::Route::Float)'s
+/// depths: the same values [`float_interval`] computes, in the same order.
+pub(crate) struct FloatPlanes(Vec<(f64, f64, f64, bool, bool)>);
+
+impl FloatPlanes {
+    /// Solid `prim`'s planes.
+    pub(crate) fn of(slicer: &Slicer, prim: usize) -> FloatPlanes {
+        let planes = slicer.lists[prim].planes.iter();
+        FloatPlanes(planes.map(|p| (p.z0, p.dzx, p.dzy, p.y, p.h)).collect())
+    }
+
+    /// [`WordPlanes::in_panel`] in f64: (Z0 + x·dZx) + y·dZy rounded at each step is monotone
+    /// in x and in y (rounding is monotone), so over a panel it lies between its corner values
+    /// as the exact plane does; planes with a corner value not finite are kept.
+    pub(crate) fn in_panel(&self, b: PixelBox) -> Option<FloatPlanes> {
+        let (x0, y0, x1, y1) = (
+            b.x0 as f64,
+            b.y0 as f64,
+            (b.x1 - 1) as f64,
+            (b.y1 - 1) as f64,
+        );
+        let ext: Vec<_> = self
+            .0
+            .iter()
+            .map(|&(z0, dx, dy, y, h)| {
+                let v = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)].map(|(x, y)| z0 + x * dx + y * dy);
+                let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+                let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+                ((y, h), v.iter().all(|v| v.is_finite()).then_some((lo, hi)))
+            })
+            .collect();
+        let keep = decisive(&ext)?;
+        Some(FloatPlanes(
+            self.0
+                .iter()
+                .zip(keep)
+                .filter(|(_, k)| *k)
+                .map(|(p, _)| *p)
+                .collect(),
+        ))
+    }
+
+    /// The exact depths inside the solid along pixel (x, y)'s ray ([`float_interval`]).
+    fn interval(&self, x: usize, y: usize) -> Option<(f64, f64)> {
+        let (x, y) = (x as f64, y as f64);
+        let values = self
+            .0
+            .iter()
+            .map(|&(z0, dx, dy, py, ph)| (z0 + x * dx + y * dy, py, ph));
+        ray_interval(values, f64::NEG_INFINITY, f64::INFINITY)
+    }
+
+    /// The slabs the solid fills along pixel (x, y)'s ray ([`float_slabs`]).
+    pub(crate) fn slabs(&self, slicer: &Slicer, x: usize, y: usize) -> (u32, u32) {
+        match self.interval(x, y) {
+            Some((lo, hi)) => slabs_of(
+                slicer,
+                raw_depth(slicer, lo, true),
+                raw_depth(slicer, hi, false),
+            ),
+            None => (1, 0),
+        }
+    }
 }
 
 /// The exact depth interval [lo, hi] of primitive `prim` along pixel (x, y)'s ray, in depth
@@ -323,6 +408,15 @@ mod tests {
             }
             if let Some(k) = kept {
                 prop_assert!(k.0.len() <= all.0.len());
+            }
+            let all = FloatPlanes::of(&slicer, 0);
+            let kept = all.in_panel(b);
+            for y in b.y0..b.y1 {
+                for x in b.x0..b.x1 {
+                    let want = all.interval(x, y);
+                    prop_assert_eq!(want, float_interval(&slicer, 0, x, y));
+                    prop_assert_eq!(kept.as_ref().and_then(|k| k.interval(x, y)), want);
+                }
             }
         }
     }

@@ -28,7 +28,7 @@ use csgpix_scene::trimesh::Window;
 use crate::drive::Work;
 use crate::error::Result;
 use crate::footprint::PixelBox;
-use crate::ranges::{float_slabs, mesh_runs_in, WordPlanes};
+use crate::ranges::{mesh_runs_in, FloatPlanes, WordPlanes};
 use crate::sampled::{Shape, SlabRuns};
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::slicer::{Slicer, DEFAULT_PANEL};
@@ -105,7 +105,7 @@ enum Depths<'a> {
     /// A convex solid's plane words (the array's depths).
     Word(WordPlanes),
     /// A convex solid's exact depths.
-    Float(usize),
+    Float(FloatPlanes),
     /// A mesh's runs over its outline, computed once.
     Mesh(SlabRuns, PixelBox),
     /// A dataset, sampled at the voxel centres of the column.
@@ -129,7 +129,7 @@ impl<'a> Columns<'a> {
         let mut depths: Vec<Depths> = (0..solids)
             .into_par_iter()
             .map(|p| match float {
-                true => Ok(Depths::Float(p)),
+                true => Ok(Depths::Float(FloatPlanes::of(slicer, p))),
                 false => WordPlanes::of(slicer, p).map(Depths::Word),
             })
             .collect::<Result<_>>()?;
@@ -211,10 +211,13 @@ impl<'a> Columns<'a> {
         let nz = self.slicer.grid.dims[2] as u32;
         let mut seg = Segments::default();
         let mut span = vec![];
-        let here: Vec<(u32, Option<WordPlanes>)> = prims
+        let here: Vec<(u32, Option<Pruned>)> = prims
             .iter()
             .filter_map(|&p| match &self.depths[p as usize] {
-                Depths::Word(w) => w.in_panel(&self.slicer.fmt, b).map(|w| (p, Some(w))),
+                Depths::Word(w) => w
+                    .in_panel(&self.slicer.fmt, b)
+                    .map(|w| (p, Some(Pruned::Word(w)))),
+                Depths::Float(f) => f.in_panel(b).map(|f| (p, Some(Pruned::Float(f)))),
                 _ => Some((p, None)),
             })
             .collect();
@@ -224,7 +227,10 @@ impl<'a> Columns<'a> {
                 for (p, planes) in &here {
                     span.clear();
                     match planes {
-                        Some(w) => span.push(w.slabs(self.slicer, x as i64, y as i64)),
+                        Some(Pruned::Word(w)) => {
+                            span.push(w.slabs(self.slicer, x as i64, y as i64))
+                        }
+                        Some(Pruned::Float(f)) => span.push(f.slabs(self.slicer, x, y)),
                         None => self.slabs(*p as usize, x, y, &mut span),
                     }
                     span.retain(|(a, b)| a <= b);
@@ -263,7 +269,7 @@ impl<'a> Columns<'a> {
         let s = self.slicer;
         match &self.depths[p] {
             Depths::Word(planes) => out.push(planes.slabs(s, x as i64, y as i64)),
-            Depths::Float(prim) => out.push(float_slabs(s, *prim, x, y)),
+            Depths::Float(planes) => out.push(planes.slabs(s, x, y)),
             Depths::Mesh(runs, b) => {
                 if (b.x0..b.x1).contains(&x) && (b.y0..b.y1).contains(&y) {
                     out.extend_from_slice(&runs.0[(y - b.y0) * b.width() + (x - b.x0)]);
@@ -287,6 +293,12 @@ impl<'a> Columns<'a> {
         }
         out.retain(|(a, b)| a <= b);
     }
+}
+
+/// A solid's planes pruned to a panel.
+enum Pruned {
+    Word(WordPlanes),
+    Float(FloatPlanes),
 }
 
 const EMPTY_BOX: PixelBox = PixelBox {
@@ -478,9 +490,9 @@ pub fn write_rows(runs: &ColumnRuns, nz: usize, rows: &mut [&mut [u8]]) {
     for y in 0..h {
         // Colour changes along z as (k, x, colour), in order of k.
         let mut changes: Vec<(u32, u32, u8)> = vec![];
-        for x in 0..w {
+        for (x, c) in cur.iter_mut().enumerate() {
             let col = runs.column(b.x0 + x, b.y0 + y);
-            cur[x] = col.first().map_or(0, |r| r.colour);
+            *c = col.first().map_or(0, |r| r.colour);
             changes.extend(col.iter().skip(1).map(|r| (r.k, x as u32, r.colour)));
         }
         changes.sort_unstable_by_key(|c| c.0);
