@@ -294,7 +294,10 @@ fn rows_bytes(levels: &[Level]) -> u64 {
         .iter()
         .map(|v| {
             let [nx, ny, nz] = v.dims.map(|d| d as u64);
-            (v.chunk[0] as u64).min(nz).saturating_mul(ny).saturating_mul(nx)
+            (v.chunk[0] as u64)
+                .min(nz)
+                .saturating_mul(ny)
+                .saturating_mul(nx)
         })
         .fold(0u64, u64::saturating_add)
 }
@@ -324,11 +327,8 @@ pub fn writer_bytes(dims: [usize; 3], layout: &Layout, threads: usize) -> Result
                 .saturating_add(batch.saturating_mul(bound))
                 .saturating_add(index.saturating_mul(2))
         }
-        None => (WRITERS as u64).saturating_mul(
-            chunk
-                .saturating_add(bound)
-                .saturating_add(DEFLATE_STATE),
-        ),
+        None => (WRITERS as u64)
+            .saturating_mul(chunk.saturating_add(bound).saturating_add(DEFLATE_STATE)),
     };
     Ok(rows.saturating_add(writing))
 }
@@ -336,12 +336,7 @@ pub fn writer_bytes(dims: [usize; 3], layout: &Layout, threads: usize) -> Result
 /// An upper bound of the memory of a run into a store of `layout` (docs/memory.md): the
 /// voxelizer's without a volume ([`csgpix_voxel::memory_estimate_rows`]) and
 /// [`writer_bytes`].
-pub fn memory_estimate(
-    grid: &Grid,
-    layout: &Layout,
-    prims: usize,
-    threads: usize,
-) -> Result<u64> {
+pub fn memory_estimate(grid: &Grid, layout: &Layout, prims: usize, threads: usize) -> Result<u64> {
     let held = writer_bytes(grid.dims, layout, threads)?;
     Ok(csgpix_voxel::memory_estimate_rows(
         grid, prims, threads, held,
@@ -472,7 +467,12 @@ fn array_builder(level: &Level) -> Result<ArrayBuilder, String> {
     let u64s = |s: [usize; 3]| s.map(|c| c as u64).to_vec();
     let gzip = Arc::new(GzipCodec::new(GZIP_LEVEL).map_err(|e| e.to_string())?);
     let uint8 = zarrs::array::data_type::uint8();
-    let mut b = ArrayBuilder::new(vec![nz, ny, nx], u64s(level.grid_unit()), uint8.clone(), 0u8);
+    let mut b = ArrayBuilder::new(
+        vec![nz, ny, nx],
+        u64s(level.grid_unit()),
+        uint8.clone(),
+        0u8,
+    );
     match level.shard {
         Some(_) => {
             let inner = level
@@ -577,14 +577,11 @@ impl ZarrVolume {
             .get("csgpix")
             .ok_or_else(|| bad("no `csgpix` attribute".into()))?;
         let grid = grid_of(ours).map_err(|e| bad(format!("attribute `csgpix`: {e}")))?;
-        let field = |key: &str| -> Result<Option<Value>> {
-            Ok(ours.get(key).cloned())
-        };
+        let field = |key: &str| -> Result<Option<Value>> { Ok(ours.get(key).cloned()) };
         let layout = match (field("chunk")?, field("shard")?, field("levels")?) {
             (Some(c), Some(s), Some(l)) => {
-                let parse = |v: Value, what: &str| {
-                    bad(format!("attribute `csgpix`: `{what}`: {v}"))
-                };
+                let parse =
+                    |v: Value, what: &str| bad(format!("attribute `csgpix`: `{what}`: {v}"));
                 Layout {
                     chunk: serde_json::from_value(c.clone()).map_err(|_| parse(c, "chunk"))?,
                     shard: serde_json::from_value(s.clone()).map_err(|_| parse(s, "shard"))?,
@@ -789,7 +786,12 @@ impl ZarrVolume {
     }
 
     /// An unsharded level's row, one chunk file each through zarrs, [`WRITERS`] at a time.
-    fn write_chunks(&self, array: &Array<FilesystemStore>, row: usize, cut: &shard::RowCut) -> Result<u64> {
+    fn write_chunks(
+        &self,
+        array: &Array<FilesystemStore>,
+        row: usize,
+        cut: &shard::RowCut,
+    ) -> Result<u64> {
         let [_, cy, cx] = cut.chunk;
         let across = cut.nx.div_ceil(cx);
         let chunks = cut.ny.div_ceil(cy) * across;
@@ -805,7 +807,9 @@ impl ZarrVolume {
             match cut.chunk_bytes(bj, bi) {
                 Some(chunk) => {
                     written.fetch_add(1, Ordering::Relaxed);
-                    array.store_chunk_opt(&at, chunk, &options).map_err(|e| err(&e))
+                    array
+                        .store_chunk_opt(&at, chunk, &options)
+                        .map_err(|e| err(&e))
                 }
                 None => array.erase_chunk(&at).map_err(|e| err(&e)),
             }
@@ -1027,7 +1031,14 @@ mod tests {
         );
         assert!(plan([9; 3], &sharded([3; 3], 2, 0)).is_err());
         // Unsharded: no shard at any level.
-        let u = plan([300, 20, 20], &Layout { shard: 1, ..Layout::new([4; 3]) }).unwrap();
+        let u = plan(
+            [300, 20, 20],
+            &Layout {
+                shard: 1,
+                ..Layout::new([4; 3])
+            },
+        )
+        .unwrap();
         assert_eq!(u.len(), 2);
         assert!(u.iter().all(|v| v.shard.is_none()));
     }
@@ -1039,12 +1050,17 @@ mod tests {
         let [nx, ny, nz] = [5, 6, 7];
         let value = |i: usize, j: usize, k: usize| (1 + i + 10 * j + 100 * k) as u8;
         for (layout, file) in [
-            (unsharded([3, 4, 2]), "0/c/2/1/2"), // 3 rows of 2 × 3 chunks
+            (unsharded([3, 4, 2]), "0/c/2/1/2"),     // 3 rows of 2 × 3 chunks
             (sharded([3, 4, 2], 2, 1), "0/c/2/0/1"), // shards of 2 × 2 chunks: 1 × 2
         ] {
             let dir = tempfile::tempdir().unwrap();
-            let v = ZarrVolume::create(&dir.path().join("a"), &grid([nx, ny, nz]), &layout, &attrs())
-                .unwrap();
+            let v = ZarrVolume::create(
+                &dir.path().join("a"),
+                &grid([nx, ny, nz]),
+                &layout,
+                &attrs(),
+            )
+            .unwrap();
             for (row, slabs) in v.chunk_rows().into_iter().enumerate().rev() {
                 let mut slices = vec![];
                 for k in slabs {
@@ -1068,7 +1084,11 @@ mod tests {
             }
             assert!(dir.path().join("a").join(file).is_file(), "{layout:?}");
             let files = v.files_written();
-            assert_eq!(files, [v.levels()[0].files_per_row() as u64 * 3], "{layout:?}");
+            assert_eq!(
+                files,
+                [v.levels()[0].files_per_row() as u64 * 3],
+                "{layout:?}"
+            );
         }
     }
 
@@ -1189,7 +1209,10 @@ mod tests {
         ZarrVolume::create(&c, &g, &sharded([2, 2, 2], 2, 1), &attrs()).unwrap();
         let meta = c.join("0/zarr.json");
         let mut m: Value = serde_json::from_slice(&std::fs::read(&meta).unwrap()).unwrap();
-        assert_eq!(m["chunk_grid"]["configuration"]["chunk_shape"], json!([2, 4, 4]));
+        assert_eq!(
+            m["chunk_grid"]["configuration"]["chunk_shape"],
+            json!([2, 4, 4])
+        );
         m["chunk_grid"]["configuration"]["chunk_shape"] = json!([2, 2, 4]);
         std::fs::write(&meta, m.to_string()).unwrap();
         let e = ZarrVolume::open(&c).unwrap_err().to_string();
@@ -1220,7 +1243,17 @@ mod tests {
     #[test]
     fn the_writers_estimate() {
         let d = [2048, 2048, 2048];
-        let s = |shard| writer_bytes(d, &Layout { shard, ..Layout::default() }, 2).unwrap();
+        let s = |shard| {
+            writer_bytes(
+                d,
+                &Layout {
+                    shard,
+                    ..Layout::default()
+                },
+                2,
+            )
+            .unwrap()
+        };
         // A shard costs its index alone, 16 bytes a chunk (64 is cut to the grid's 32).
         assert_eq!(s(64) - s(16), 2 * 16 * (32 * 32 - 16 * 16));
         let row0 = 64 * 2048 * 2048u64;

@@ -87,12 +87,7 @@ struct Open {
 /// chunks each: every shard with a non-zero voxel, and no file (an existing one removed) for
 /// the others. Inner chunks are compressed a batch at a time on rayon's pool and appended in
 /// C order, so the bytes do not depend on the threads. Returns the shard files written.
-pub(crate) fn write_row(
-    dir: &Path,
-    row: usize,
-    cut: &RowCut,
-    per: [usize; 2],
-) -> Result<u64> {
+pub(crate) fn write_row(dir: &Path, row: usize, cut: &RowCut, per: [usize; 2]) -> Result<u64> {
     let [_, cy, cx] = cut.chunk;
     let (gy, gx) = (cut.ny.div_ceil(cy), cut.nx.div_ceil(cx));
     let (shy, shx) = (gy.div_ceil(per[0]), gx.div_ceil(per[1]));
