@@ -554,13 +554,14 @@ fn a_sharded_pyramid_reads_back_as_the_downsampled_volume() {
     }
 }
 
-/// The scene voxelized with `args` to `dir/v.nrrd` and, in chunks `chunk`, to `dir/v.zarr`.
-fn nrrd_and_store(dir: &Path, scene: &str, args: &[&str], chunk: &str) -> (PathBuf, PathBuf) {
+/// The scene voxelized with `args` to `dir/v.nrrd` and, with `zarr` besides, to
+/// `dir/v.zarr`.
+fn nrrd_and_store(dir: &Path, scene: &str, args: &[&str], zarr: &[&str]) -> (PathBuf, PathBuf) {
     let (nrrd, store) = (dir.join("v.nrrd"), dir.join("v.zarr"));
     let base = [&["voxelize", scene][..], args].concat();
     run_ok(&[&base[..], &["-o", s(&nrrd)]].concat());
-    let zarr = ["-o", s(&store), "--format", "zarr", "--chunk", chunk];
-    run_ok(&[&base[..], &zarr[..]].concat());
+    let to = ["-o", s(&store), "--format", "zarr"];
+    run_ok(&[&base[..], &to[..], zarr].concat());
     (nrrd, store)
 }
 
@@ -574,7 +575,7 @@ fn the_metadata_places_the_volume_as_nrrd_does() {
         d.path(),
         "vectors/scenes/cube-minus-cylinder.csg",
         &["--voxel", "0.7", "--pad", "2"],
-        "8x400x16",
+        &["--chunk", "8x400x16"],
     );
 
     // The NRRD header's numbers, as written (shortest round-trip decimals).
@@ -849,7 +850,8 @@ fn the_estimate_does_not_grow_with_depth() {
     // water mark (Linux records it at exec), and this file's in-process tests reach 137 MiB.
 }
 
-/// zarr-python reads the store as the NRRD volume (`tests/data/read_zarr.py`); skipped,
+/// zarr-python reads the sharded store and its pyramid as the NRRD volume and its
+/// downsamples (`tests/data/read_zarr.py`); skipped,
 /// saying so, where `python3 -c "import zarr"` fails, unless `CSGPIX_ZARR_PYTHON=require`
 /// (.ci/run, which installs zarr-python) makes that a failure.
 #[test]
@@ -871,7 +873,7 @@ fn zarr_python_reads_the_store() {
         d.path(),
         "vectors/scenes/figure-5.2.csg",
         &["--res", "30x26x21"],
-        "4x16x8",
+        &["--chunk", "4x16x8", "--shard", "2", "--levels", "3"],
     );
     let o = std::process::Command::new("python3")
         .arg("tests/data/read_zarr.py")
@@ -886,4 +888,5 @@ fn zarr_python_reads_the_store() {
         String::from_utf8_lossy(&o.stderr)
     );
     assert!(out.contains("equal: shape (21, 26, 30)"), "{out}");
+    assert!(out.contains("shards (4, 32, 16), 3 levels"), "{out}");
 }
