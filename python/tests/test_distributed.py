@@ -97,9 +97,10 @@ def test_dask_workers_write_the_command_lines_store(tmp_path, client, scene, arg
 def test_rows_grouped_into_tasks_give_the_same_store(tmp_path, client):
     path = str(SCENES / "twelve.csg")
     a, b = tmp_path / "a.zarr", tmp_path / "b.zarr"
-    cd.voxelize_zarr(path, a, 32, chunk=4)
-    rep = cd.voxelize_zarr(path, b, 32, chunk=4, rows_per_task=3, client=client)
-    assert (rep["rows"], rep["tasks"]) == (8, 3)
+    cd.voxelize_zarr(path, a, 32, chunk=4, shard=2, levels=3)
+    rep = cd.voxelize_zarr(path, b, 32, chunk=4, shard=2, levels=3, rows_per_task=3, client=client)
+    assert (rep["rows"], rep["tasks"], rep["levels"]) == (8, 3, 3)
+    assert any(f.startswith("2/c/") for f in files(b)), "level 2 written by the tasks"
     assert_same_tree(a, b)
 
 
