@@ -751,20 +751,28 @@ impl ZarrVolume {
                 ny,
             });
         }
-        self.write_level_row(0, row, slices, slabs)?;
+        let mut unsynced = shard::Unsynced::default();
+        self.write_level_row(0, row, slices, slabs, &mut unsynced)?;
         let mut below: Option<Vec<u8>> = None;
         let mut size = [nx, ny, slabs];
         for l in 1..self.levels.len() {
             let next = downsample(below.as_deref().unwrap_or(slices), size);
             size = size.map(|d| d.div_ceil(2));
-            self.write_level_row(l, row, &next, size[2])?;
+            self.write_level_row(l, row, &next, size[2], &mut unsynced)?;
             below = Some(next);
         }
-        Ok(())
+        unsynced.flush()
     }
 
     /// Level `l`'s chunk row `row`: `slabs` slices of the level's nx × ny.
-    fn write_level_row(&self, l: usize, row: usize, slices: &[u8], slabs: usize) -> Result<()> {
+    fn write_level_row(
+        &self,
+        l: usize,
+        row: usize,
+        slices: &[u8],
+        slabs: usize,
+        unsynced: &mut shard::Unsynced,
+    ) -> Result<()> {
         let v = &self.levels[l];
         let [nx, ny, _] = v.level.dims;
         let cut = shard::RowCut {
@@ -777,7 +785,7 @@ impl ZarrVolume {
         let written = match v.level.shard {
             Some([_, sy, sx]) => {
                 let per = [sy / v.level.chunk[1], sx / v.level.chunk[2]];
-                shard::write_row(&self.path.join(l.to_string()), row, &cut, per)?
+                shard::write_row(&self.path.join(l.to_string()), row, &cut, per, unsynced)?
             }
             None => self.write_chunks(&v.array, row, &cut)?,
         };

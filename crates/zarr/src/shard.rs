@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use csgpix_scene::output::staged_write;
 use rayon::prelude::*;
 
-use crate::{Error, Result, GZIP_LEVEL};
+use crate::{Error, Result, GZIP_LEVEL, WRITERS};
 
 /// Inner chunks compressed at once per thread of the pool: the batch is held compressed
 /// until it is appended, in order, to the shard files.
@@ -86,8 +86,15 @@ struct Open {
 /// Write one level's chunk row `row` as shard files `dir/c/ROW/SJ/SI` of `per` (Y, X) inner
 /// chunks each: every shard with a non-zero voxel, and no file (an existing one removed) for
 /// the others. Inner chunks are compressed a batch at a time on rayon's pool and appended in
-/// C order, so the bytes do not depend on the threads. Returns the shard files written.
-pub(crate) fn write_row(dir: &Path, row: usize, cut: &RowCut, per: [usize; 2]) -> Result<u64> {
+/// C order, so the bytes do not depend on the threads. Finished files are left to
+/// `unsynced` to sync. Returns the shard files written.
+pub(crate) fn write_row(
+    dir: &Path,
+    row: usize,
+    cut: &RowCut,
+    per: [usize; 2],
+    unsynced: &mut Unsynced,
+) -> Result<u64> {
     let [_, cy, cx] = cut.chunk;
     let (gy, gx) = (cut.ny.div_ceil(cy), cut.nx.div_ceil(cx));
     let (shy, shx) = (gy.div_ceil(per[0]), gx.div_ceil(per[1]));
@@ -117,11 +124,10 @@ pub(crate) fn write_row(dir: &Path, row: usize, cut: &RowCut, per: [usize; 2]) -
             .map(|&(_, _, bj, bi)| cut.chunk_bytes(bj, bi).map(|c| gzip(&c)).transpose())
             .collect::<std::io::Result<_>>()
             .map_err(|e| io(dir, e))?;
-        let mut finished = vec![];
         for (&(at, q, _, _), bytes) in todo.iter().zip(packed) {
             if open.as_ref().is_none_or(|o| o.at != at) {
                 if let Some(o) = open.take() {
-                    finished.extend(finish(o)?);
+                    unsynced.push(finish(o)?)?;
                 }
                 open = Some(Open {
                     at,
@@ -151,10 +157,9 @@ pub(crate) fn write_row(dir: &Path, row: usize, cut: &RowCut, per: [usize; 2]) -
             o.index[2 * q + 1] = bytes.len() as u64;
             o.end += bytes.len() as u64;
         }
-        sync(finished)?;
     }
     if let Some(o) = open.take() {
-        sync(finish(o)?.into_iter().collect())?;
+        unsynced.push(finish(o)?)?;
     }
     Ok(written)
 }
@@ -176,13 +181,41 @@ fn finish(o: Open) -> Result<Option<(PathBuf, File)>> {
     Ok(Some((o.path, file)))
 }
 
-/// Files to the disk, several at once (each `sync_all` waits on the disk, as zarrs's store
-/// does for each chunk it writes).
-fn sync(files: Vec<(PathBuf, File)>) -> Result<()> {
-    files.into_par_iter().try_for_each(|(path, f)| {
-        f.sync_all().map_err(|e| Error::Store {
-            path,
-            message: e.to_string(),
+/// Shard files written and not yet synced to the disk: synced [`WRITERS`] at once, each on
+/// a thread of its own (`sync_all` waits on the disk, as zarrs's store does for each chunk
+/// it writes, and one at a time a row's shards of every level would wait in turn), when
+/// that many are pending and when a row is done ([`Unsynced::flush`]).
+#[derive(Default)]
+pub(crate) struct Unsynced(Vec<(PathBuf, File)>);
+
+impl Unsynced {
+    fn push(&mut self, file: Option<(PathBuf, File)>) -> Result<()> {
+        self.0.extend(file);
+        match self.0.len() >= WRITERS {
+            true => self.flush(),
+            false => Ok(()),
+        }
+    }
+
+    /// Every pending file synced; the first error returned.
+    pub fn flush(&mut self) -> Result<()> {
+        let files = std::mem::take(&mut self.0);
+        std::thread::scope(|scope| {
+            let syncs: Vec<_> = files
+                .into_iter()
+                .map(|(path, f)| {
+                    scope.spawn(move || {
+                        f.sync_all().map_err(|e| Error::Store {
+                            path,
+                            message: e.to_string(),
+                        })
+                    })
+                })
+                .collect();
+            syncs.into_iter().try_for_each(|s| {
+                s.join()
+                    .unwrap_or_else(|_| Err(Error::Msg("a sync thread panicked".into())))
+            })
         })
-    })
+    }
 }
