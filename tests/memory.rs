@@ -177,7 +177,7 @@ fn the_default_limit_follows_ulimit() {
 fn estimates_are_above_the_measured_peaks() {
     let dir = tempfile::tempdir().unwrap();
     let o = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
-    let (png, nrrd, phantom) = (o("r.png"), o("v.nrrd"), o("p.nrrd"));
+    let (png, nrrd, phantom, zarr) = (o("r.png"), o("v.nrrd"), o("p.nrrd"), o("v.zarr"));
     let runs: Vec<Vec<&str>> = vec![
         vec![
             "render",
@@ -204,6 +204,30 @@ fn estimates_are_above_the_measured_peaks() {
             "512",
             "-o",
             &nrrd,
+        ],
+        // --format zarr: sharded with a pyramid of 2 levels (the defaults at 512³), and one
+        // file a chunk, each run replacing the store of the one before.
+        vec![
+            "voxelize",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            "512",
+            "--format",
+            "zarr",
+            "-o",
+            &zarr,
+        ],
+        vec![
+            "voxelize",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            "512",
+            "--format",
+            "zarr",
+            "--shard",
+            "none",
+            "-o",
+            &zarr,
         ],
         vec!["phantom", "--size", "256", "-o", &phantom],
         vec!["requirements", "vectors/scenes/twelve.csg", "--res", "2048"],

@@ -8,7 +8,7 @@
 //! library that wrote it. `tests/data/read_zarr.py` reads them with zarr-python as well.
 
 mod common;
-use common::{csgpix, estimate_mib, peak_mib};
+use common::{csgpix, estimate_mib};
 
 use std::collections::BTreeMap;
 use std::io::Read;
@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 
 use csgpix::blist::BlistEval;
 use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
-use csgpix::zarr::{voxelize_rows, VolumeAttrs, ZarrVolume};
+use csgpix::zarr::{voxelize_rows, Layout, VolumeAttrs, ZarrVolume};
 use serde_json::Value;
 
 fn s(p: &Path) -> &str {
@@ -43,53 +43,158 @@ fn floats(v: &Value) -> Vec<f64> {
         .collect()
 }
 
-/// The volume of a store (X fastest, then Y, then Z) and its dims X, Y, Z, read from the
-/// files alone. Asserts on the way that no chunk file is all 0 (such chunks are skipped).
+/// The volume of a store's level 0 (X fastest, then Y, then Z) and its dims X, Y, Z, read
+/// from the files alone ([`read_level`]).
 fn read_store(dir: &Path) -> ([usize; 3], Vec<u8>) {
-    let meta = json(&dir.join("0/zarr.json"));
+    read_level(dir, 0)
+}
+
+/// The gunzipped bytes of one chunk, asserting it is a whole chunk and not all 0 (such
+/// chunks are skipped).
+fn gunzip_chunk(gz: &[u8], len: usize, what: &str) -> Vec<u8> {
+    let mut chunk = vec![];
+    flate2::read::GzDecoder::new(gz)
+        .read_to_end(&mut chunk)
+        .unwrap();
+    assert_eq!(chunk.len(), len, "{what}");
+    assert!(chunk.iter().any(|&v| v != 0), "{what}: all 0");
+    chunk
+}
+
+/// Level `level` of a store and its dims X, Y, Z, read from the files by the Zarr v3 spec's
+/// words: unsharded, a gzip file a chunk at `c/K/J/I`; sharded (`sharding_indexed`, index
+/// at the end, little-endian (offset, length) pairs in C order, `u64::MAX` for none), a
+/// file a shard holding its inner chunks. Missing files and chunks are the fill value.
+fn read_level(dir: &Path, level: usize) -> ([usize; 3], Vec<u8>) {
+    let meta = json(&dir.join(format!("{level}/zarr.json")));
     assert_eq!(meta["data_type"], "uint8");
     assert_eq!(meta["fill_value"], 0);
     assert_eq!(
         meta["chunk_key_encoding"]["configuration"]["separator"],
         "/"
     );
-    let codecs: Vec<&str> = meta["codecs"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| c["name"].as_str().unwrap())
-        .collect();
-    assert_eq!(codecs, ["bytes", "gzip"]);
+    let names = |codecs: &Value| -> Vec<String> {
+        codecs
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c["name"].as_str().unwrap().to_string())
+            .collect()
+    };
     let [nz, ny, nx]: [usize; 3] = usizes(&meta["shape"]).try_into().unwrap();
-    let [cz, cy, cx]: [usize; 3] = usizes(&meta["chunk_grid"]["configuration"]["chunk_shape"])
+    let unit: [usize; 3] = usizes(&meta["chunk_grid"]["configuration"]["chunk_shape"])
         .try_into()
         .unwrap();
+    let codecs = &meta["codecs"];
+    let inner: Option<[usize; 3]> = match names(codecs)[..] {
+        [ref a, ref b] if a == "bytes" && b == "gzip" => None,
+        [ref s] if s == "sharding_indexed" => {
+            let c = &codecs[0]["configuration"];
+            assert_eq!(names(&c["codecs"]), ["bytes", "gzip"]);
+            assert_eq!(names(&c["index_codecs"]), ["bytes"]);
+            assert_eq!(c["index_codecs"][0]["configuration"]["endian"], "little");
+            assert_eq!(c["index_location"], "end");
+            Some(usizes(&c["chunk_shape"]).try_into().unwrap())
+        }
+        _ => panic!("codecs {codecs}"),
+    };
+    let chunk = inner.unwrap_or(unit);
+    let [cz, cy, cx] = chunk;
+    let per = unit
+        .iter()
+        .zip(chunk)
+        .map(|(u, c)| {
+            assert_eq!(u % c, 0, "a shard is a whole number of chunks");
+            u / c
+        })
+        .collect::<Vec<_>>();
     let mut voxels = vec![0u8; nx * ny * nz];
-    for bk in 0..nz.div_ceil(cz) {
-        for bj in 0..ny.div_ceil(cy) {
-            for bi in 0..nx.div_ceil(cx) {
-                let file = dir.join(format!("0/c/{bk}/{bj}/{bi}"));
-                let Ok(gz) = std::fs::read(&file) else {
+    let mut put = |[bk, bj, bi]: [usize; 3], chunk: &[u8]| {
+        if bk * cz >= nz || bj * cy >= ny || bi * cx >= nx {
+            return;
+        }
+        for z in 0..cz.min(nz - bk * cz) {
+            for y in 0..cy.min(ny - bj * cy) {
+                for x in 0..cx.min(nx - bi * cx) {
+                    let (k, j, i) = (bk * cz + z, bj * cy + y, bi * cx + x);
+                    voxels[(k * ny + j) * nx + i] = chunk[(z * cy + y) * cx + x];
+                }
+            }
+        }
+    };
+    let [uz, uy, ux] = unit;
+    for sk in 0..nz.div_ceil(uz) {
+        for sj in 0..ny.div_ceil(uy) {
+            for si in 0..nx.div_ceil(ux) {
+                let file = dir.join(format!("{level}/c/{sk}/{sj}/{si}"));
+                let Ok(bytes) = std::fs::read(&file) else {
                     continue; // the fill value
                 };
-                let mut chunk = vec![];
-                flate2::read::GzDecoder::new(&gz[..])
-                    .read_to_end(&mut chunk)
-                    .unwrap();
-                assert_eq!(chunk.len(), cz * cy * cx, "{}", file.display());
-                assert!(chunk.iter().any(|&v| v != 0), "{}: all 0", file.display());
-                for z in 0..cz.min(nz - bk * cz) {
-                    for y in 0..cy.min(ny - bj * cy) {
-                        for x in 0..cx.min(nx - bi * cx) {
-                            let (k, j, i) = (bk * cz + z, bj * cy + y, bi * cx + x);
-                            voxels[(k * ny + j) * nx + i] = chunk[(z * cy + y) * cx + x];
-                        }
-                    }
+                let what = file.display().to_string();
+                if inner.is_none() {
+                    put([sk, sj, si], &gunzip_chunk(&bytes, cz * cy * cx, &what));
+                    continue;
                 }
+                let n = per.iter().product::<usize>();
+                let index: Vec<u64> = bytes[bytes.len() - 16 * n..]
+                    .chunks(8)
+                    .map(|b| u64::from_le_bytes(b.try_into().unwrap()))
+                    .collect();
+                let mut end = 0;
+                let mut any = false;
+                for q in 0..n {
+                    let (off, len) = (index[2 * q], index[2 * q + 1]);
+                    if (off, len) == (u64::MAX, u64::MAX) {
+                        continue;
+                    }
+                    // C order, packed from the start of the file.
+                    assert_eq!(off as usize, end, "{what}: inner chunk {q}");
+                    end += len as usize;
+                    any = true;
+                    let (qz, qj, qi) = (q / (per[1] * per[2]), q / per[2] % per[1], q % per[2]);
+                    let at = [sk * per[0] + qz, sj * per[1] + qj, si * per[2] + qi];
+                    let c = gunzip_chunk(&bytes[off as usize..end], cz * cy * cx, &what);
+                    put(at, &c);
+                }
+                assert!(any, "{what}: a shard with no chunk");
+                assert_eq!(end + 16 * n, bytes.len(), "{what}");
             }
         }
     }
     ([nx, ny, nz], voxels)
+}
+
+/// Level 0 downsampled `levels - 1` times by the documented rule, written here again: the
+/// most frequent non-zero value of each 2×2×2 block, ties to the smallest, 0 when all are.
+fn pyramid(dims: [usize; 3], voxels: &[u8], levels: usize) -> Vec<([usize; 3], Vec<u8>)> {
+    let mut out = vec![(dims, voxels.to_vec())];
+    for _ in 1..levels {
+        let ([nx, ny, nz], src) = out.last().unwrap();
+        let (nx, ny, nz) = (*nx, *ny, *nz);
+        let d = [nx.div_ceil(2), ny.div_ceil(2), nz.div_ceil(2)];
+        let mut v = vec![0u8; d.iter().product()];
+        for k in 0..d[2] {
+            for j in 0..d[1] {
+                for i in 0..d[0] {
+                    let mut count = [0usize; 256];
+                    for z in 2 * k..(2 * k + 2).min(nz) {
+                        for y in 2 * j..(2 * j + 2).min(ny) {
+                            for x in 2 * i..(2 * i + 2).min(nx) {
+                                count[src[(z * ny + y) * nx + x] as usize] += 1;
+                            }
+                        }
+                    }
+                    // max_by_key keeps the last maximum: scan from 255 down to 1.
+                    let best = (1..256usize).rev().max_by_key(|&c| count[c]).unwrap();
+                    if count[best] > 0 {
+                        v[(k * d[1] + j) * d[0] + i] = best as u8;
+                    }
+                }
+            }
+        }
+        out.push((d, v));
+    }
+    out
 }
 
 /// Every file under `dir`, by its path below it, with its bytes.
@@ -121,28 +226,48 @@ fn run_ok(args: &[&str]) -> std::process::Output {
 }
 
 /// The CLI's store equals its NRRD volume voxel for voxel, for chunk shapes that divide the
-/// grid, that do not, that are cut to it, and one voxel deep; and the JSON reports agree.
+/// grid, that do not, that are cut to it, and one voxel deep, sharded (the default, and
+/// shards cut at the grid's edge) and not; and the JSON reports agree.
 #[test]
 fn the_store_is_the_nrrd_volume_voxel_for_voxel() {
     let d = tempfile::tempdir().unwrap();
-    let cases: [(&str, &str, &[&str]); 6] = [
-        ("figure-5.2.csg", "24x20x16", &["8"]),
-        ("figure-5.2.csg", "24x20x16", &["5x7x9"]),
-        ("twelve.csg", "33x17x29", &["16x16x16"]),
-        ("twelve.csg", "33x17x29", &["1x64x3"]),
+    let cases: [(&str, &str, &[&str]); 8] = [
+        ("figure-5.2.csg", "24x20x16", &["--chunk", "8"]),
+        (
+            "figure-5.2.csg",
+            "24x20x16",
+            &["--chunk", "5x7x9", "--shard", "2"],
+        ),
+        (
+            "twelve.csg",
+            "33x17x29",
+            &["--chunk", "16x16x16", "--shard", "none"],
+        ),
+        (
+            "twelve.csg",
+            "33x17x29",
+            &["--chunk", "1x64x3", "--shard", "4"],
+        ),
+        (
+            "twelve.csg",
+            "33x17x29",
+            &["--chunk", "1x4x3", "--shard", "1"],
+        ),
         ("hollow-cube.csg", "20", &[]),
-        ("csg-logo.csg", "31x32x30", &["7x32x32"]),
+        ("csg-logo.csg", "31x32x30", &["--chunk", "7x32x32"]),
+        (
+            "csg-logo.csg",
+            "31x32x30",
+            &["--chunk", "7x5x3", "--shard", "3"],
+        ),
     ];
-    for (n, (scene, res, chunk)) in cases.iter().enumerate() {
+    for (n, (scene, res, extra)) in cases.iter().enumerate() {
         let scene = format!("vectors/scenes/{scene}");
         let nrrd = d.path().join(format!("v{n}.nrrd"));
         let store = d.path().join(format!("v{n}.zarr"));
         let base = ["voxelize", &scene, "--res", res, "--json", "-o"];
         let a = run_ok(&[&base[..], &[s(&nrrd)]].concat());
-        let mut args = [&base[..], &[s(&store), "--format", "zarr"]].concat();
-        if let [c] = chunk {
-            args.extend(["--chunk", c]);
-        }
+        let args = [&base[..], &[s(&store), "--format", "zarr"], extra].concat();
         let b = run_ok(&args);
         let (dims, voxels) = csgpix::nrrd::read(&std::fs::read(&nrrd).unwrap()).unwrap();
         let (zdims, zvoxels) = read_store(&store);
@@ -157,9 +282,16 @@ fn the_store_is_the_nrrd_volume_voxel_for_voxel() {
             serde_json::from_slice(&a.stdout).unwrap(),
             serde_json::from_slice(&b.stdout).unwrap(),
         );
-        let chunk = b.as_object_mut().unwrap().remove("chunk").unwrap();
-        let rows = b.as_object_mut().unwrap().remove("chunk_rows").unwrap();
+        let mut take = |key: &str| b.as_object_mut().unwrap().remove(key).unwrap();
+        let (chunk, rows, shard) = (take("chunk"), take("chunk_rows"), take("shard"));
+        let (levels, files) = (take("levels"), take("files_written"));
         assert_eq!(rows, usizes(&b["dims"])[2].div_ceil(usizes(&chunk)[0]));
+        assert_eq!(levels, 1, "{args:?}: every side at most 256, no pyramid");
+        let sharded = !extra.contains(&"none") && !extra.contains(&"1");
+        assert_eq!(shard.is_array(), sharded, "{args:?}: {shard}");
+        // Files written: the files there are.
+        let on_disk = files_in(&store.join("0/c"));
+        assert_eq!(files, serde_json::json!([on_disk]), "{args:?}");
         for v in [&mut a, &mut b] {
             for key in ["wall_seconds", "memory_estimate"] {
                 v.as_object_mut().unwrap().remove(key);
@@ -167,6 +299,11 @@ fn the_store_is_the_nrrd_volume_voxel_for_voxel() {
         }
         assert_eq!(a, b, "{args:?}");
     }
+}
+
+/// Files under `dir`, at any depth.
+fn files_in(dir: &Path) -> usize {
+    files(dir).len()
 }
 
 /// The library's store equals `voxelize`'s volume (every route it can take here), and two
@@ -190,7 +327,12 @@ fn voxelize_rows_writes_the_volume_of_voxelize() {
         for run in 0..2 {
             let path = d.path().join(format!("{route:?}-{run}.zarr"));
             let attrs = VolumeAttrs::new("twelve", "codes");
-            let store = ZarrVolume::create(&path, &grid, [4, 8, 8], &attrs).unwrap();
+            let layout = Layout {
+                shard: 2,
+                levels: Some(3),
+                ..Layout::new([4, 8, 8])
+            };
+            let store = ZarrVolume::create(&path, &grid, &layout, &attrs).unwrap();
             let rows = store.chunk_rows().len();
             let w =
                 voxelize_rows(&slicer, route, set.clone(), &eval, &|| {}, &store, 0..rows).unwrap();
@@ -198,6 +340,13 @@ fn voxelize_rows_writes_the_volume_of_voxelize() {
             let (dims, voxels) = read_store(&path);
             assert_eq!(dims, grid.dims);
             assert!(voxels == volume.voxels, "{route:?}");
+            for (l, want) in pyramid(dims, &voxels, 3).into_iter().enumerate() {
+                assert!(read_level(&path, l) == want, "{route:?}: level {l}");
+                assert!(
+                    store.read_level(l).unwrap() == want.1,
+                    "{route:?}: zarrs, level {l}"
+                );
+            }
             trees.push(files(&path));
         }
         assert!(trees[0] == trees[1], "{route:?}: two runs differ");
@@ -220,11 +369,20 @@ fn rows_split_across_tasks_give_the_same_files() {
         "csgpix voxelize csg-logo.csg",
         "uint8 colour codes, 0 empty",
     );
-    let chunk = [6, 16, 32]; // 45 slabs: 7 rows of 6 and one of 3; X and Y not divided
+    // 45 slabs: 7 rows of 6 and one of 3; X and Y not divided. Shards of 2 × 2 chunks, cut
+    // at the edges (3 × 3 a row); level 1's chunks 3 deep (each level-0 row one of its).
+    let chunk = [6, 8, 8];
+    let layout = Layout {
+        chunk,
+        shard: 2,
+        levels: Some(2),
+    };
     let whole = d.path().join("whole.zarr");
-    let store = ZarrVolume::create(&whole, &grid, chunk, &attrs).unwrap();
+    let store = ZarrVolume::create(&whole, &grid, &layout, &attrs).unwrap();
     assert_eq!(store.chunk_rows().len(), 8);
     assert_eq!(store.chunk_rows()[7], 42..45);
+    assert_eq!(store.levels()[1].chunk, [3, 8, 8]);
+    assert_eq!(store.levels()[0].files_per_row(), 9);
     let once = voxelize_rows(
         &slicer,
         Route::Intervals,
@@ -237,10 +395,11 @@ fn rows_split_across_tasks_give_the_same_files() {
     .unwrap();
 
     let split = d.path().join("split.zarr");
-    ZarrVolume::create(&split, &grid, chunk, &attrs).unwrap();
+    ZarrVolume::create(&split, &grid, &layout, &attrs).unwrap();
     let task = |rows: std::ops::Range<usize>| {
         let store = ZarrVolume::open(&split).unwrap();
         assert_eq!((store.chunk(), store.grid()), (chunk, &grid));
+        assert_eq!(store.layout(), layout);
         voxelize_rows(
             &slicer,
             Route::Intervals,
@@ -261,6 +420,10 @@ fn rows_split_across_tasks_give_the_same_files() {
     });
     let (a, b) = (files(&whole), files(&split));
     assert!(a.len() > 3, "{:?}", a.keys());
+    // Several shards a row, at both levels.
+    for shard in ["0/c/3/1/1", "1/c/3/0/1"] {
+        assert!(a.contains_key(Path::new(shard)), "{shard}: {:?}", a.keys());
+    }
     assert_eq!(a.keys().collect::<Vec<_>>(), b.keys().collect::<Vec<_>>());
     for (p, bytes) in &a {
         assert!(b[p] == *bytes, "{} differs", p.display());
@@ -300,7 +463,7 @@ fn rows_split_across_tasks_give_the_same_files() {
         "chunk row 7: expected 4320 bytes (slabs 3 of 40x36), got 10"
     );
     // A store is created only where nothing is.
-    let e = ZarrVolume::create(&split, &grid, chunk, &attrs).unwrap_err();
+    let e = ZarrVolume::create(&split, &grid, &layout, &attrs).unwrap_err();
     assert!(
         e.to_string()
             .ends_with("exists and is not an empty directory"),
@@ -310,13 +473,95 @@ fn rows_split_across_tasks_give_the_same_files() {
     assert!(e.ends_with("not a csgpix Zarr volume: no zarr.json"), "{e}");
 }
 
-/// The scene voxelized with `args` to `dir/v.nrrd` and, in chunks `chunk`, to `dir/v.zarr`.
-fn nrrd_and_store(dir: &Path, scene: &str, args: &[&str], chunk: &str) -> (PathBuf, PathBuf) {
+/// A sharded store with 3 levels from the command line: level 0 is the NRRD volume, levels
+/// 1 and 2 its downsamples by the documented rule (read from the files, and by zarrs), each
+/// placed at the centre of the voxels it covers; the shard files are exactly those the rule
+/// predicts (one per shard with a non-zero voxel), as many as `--json` reports.
+#[test]
+fn a_sharded_pyramid_reads_back_as_the_downsampled_volume() {
+    let d = tempfile::tempdir().unwrap();
+    let (nrrd, store) = (d.path().join("v.nrrd"), d.path().join("v.zarr"));
+    let base = [
+        "voxelize",
+        "vectors/scenes/csg-logo.csg",
+        "--res",
+        "70x60x52",
+    ];
+    run_ok(&[&base[..], &["-o", s(&nrrd)]].concat());
+    let zarr = [
+        "--format", "zarr", "--chunk", "8x16x16", "--shard", "2", "--levels", "3",
+    ];
+    let o = run_ok(&[&base[..], &zarr[..], &["--json", "-o", s(&store)]].concat());
+    let report: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(report["levels"], 3);
+    assert_eq!(usizes(&report["shard"]), [8, 32, 32]);
+    let (dims, voxels) = csgpix::nrrd::read(&std::fs::read(&nrrd).unwrap()).unwrap();
+    let want = pyramid(dims, &voxels, 3);
+    assert_eq!(want[2].0, [18, 15, 13]);
+    let opened = ZarrVolume::open(&store).unwrap();
+    let levels = opened.levels();
+    let mut predicted_total = 0;
+    for (l, (ldims, lvox)) in want.iter().enumerate() {
+        assert!(read_level(&store, l) == (*ldims, lvox.clone()), "level {l}");
+        assert!(opened.read_level(l).unwrap() == *lvox, "level {l} by zarrs");
+        // The rule's shards: level 0's rows of 8 slabs are 4 and 2 slabs deep at levels 1
+        // and 2; shards are 2 × 2 chunks of 16 across.
+        let [nx, ny, nz] = *ldims;
+        let (cz, cy, cx) = (8 >> l, 16.min(ny), 16.min(nx));
+        let (sy, sx) = (2.min(ny.div_ceil(cy)) * cy, 2.min(nx.div_ceil(cx)) * cx);
+        assert_eq!(levels[l].chunk, [cz, cy, cx]);
+        assert_eq!(levels[l].shard, Some([cz, sy, sx]));
+        let mut predicted = vec![];
+        for r in 0..nz.div_ceil(cz) {
+            for sj in 0..ny.div_ceil(sy) {
+                for si in 0..nx.div_ceil(sx) {
+                    let any = (r * cz..((r + 1) * cz).min(nz)).any(|k| {
+                        (sj * sy..((sj + 1) * sy).min(ny)).any(|j| {
+                            (si * sx..((si + 1) * sx).min(nx))
+                                .any(|i| lvox[(k * ny + j) * nx + i] != 0)
+                        })
+                    });
+                    if any {
+                        predicted.push(PathBuf::from(format!("{r}/{sj}/{si}")));
+                    }
+                }
+            }
+        }
+        let there: Vec<PathBuf> = files(&store.join(format!("{l}/c"))).into_keys().collect();
+        assert_eq!(there, predicted, "level {l}");
+        assert_eq!(report["files_written"][l], predicted.len(), "level {l}");
+        predicted_total += predicted.len();
+    }
+    assert!(
+        predicted_total > 3 * 7,
+        "{predicted_total}: a few shards a level"
+    );
+    // Placement: scale doubles, the translation moves to the centre of the coarser voxel.
+    let group = json(&store.join("zarr.json"));
+    let ds = group["attributes"]["ome"]["multiscales"][0]["datasets"]
+        .as_array()
+        .unwrap()
+        .clone();
+    assert_eq!(ds.len(), 3);
+    let t = |l: usize, i: usize, key: &str| floats(&ds[l]["coordinateTransformations"][i][key]);
+    let (s0, t0) = (t(0, 0, "scale"), t(0, 1, "translation"));
+    for (l, f) in [(1, 2.0), (2, 4.0)] {
+        assert_eq!(ds[l]["path"], l.to_string());
+        let scale: Vec<f64> = s0.iter().map(|s| s * f).collect();
+        assert_eq!(t(l, 0, "scale"), scale, "level {l}");
+        let shift: Vec<f64> = (0..3).map(|a| t0[a] + s0[a] * ((f - 1.0) / 2.0)).collect();
+        assert_eq!(t(l, 1, "translation"), shift, "level {l}");
+    }
+}
+
+/// The scene voxelized with `args` to `dir/v.nrrd` and, with `zarr` besides, to
+/// `dir/v.zarr`.
+fn nrrd_and_store(dir: &Path, scene: &str, args: &[&str], zarr: &[&str]) -> (PathBuf, PathBuf) {
     let (nrrd, store) = (dir.join("v.nrrd"), dir.join("v.zarr"));
     let base = [&["voxelize", scene][..], args].concat();
     run_ok(&[&base[..], &["-o", s(&nrrd)]].concat());
-    let zarr = ["-o", s(&store), "--format", "zarr", "--chunk", chunk];
-    run_ok(&[&base[..], &zarr[..]].concat());
+    let to = ["-o", s(&store), "--format", "zarr"];
+    run_ok(&[&base[..], &to[..], zarr].concat());
     (nrrd, store)
 }
 
@@ -330,7 +575,7 @@ fn the_metadata_places_the_volume_as_nrrd_does() {
         d.path(),
         "vectors/scenes/cube-minus-cylinder.csg",
         &["--voxel", "0.7", "--pad", "2"],
-        "8x400x16",
+        &["--chunk", "8x400x16"],
     );
 
     // The NRRD header's numbers, as written (shortest round-trip decimals).
@@ -400,8 +645,12 @@ fn the_metadata_places_the_volume_as_nrrd_does() {
     let array = json(&store.join("0/zarr.json"));
     assert_eq!(array["node_type"], "array");
     assert_eq!(usizes(&array["shape"]), [sizes[2], sizes[1], sizes[0]]);
-    let chunk = usizes(&array["chunk_grid"]["configuration"]["chunk_shape"]);
+    // Sharded by default: the chunk grid's unit is the shard, 64 chunks a side cut to the
+    // grid; the chunk asked for is the inner chunk.
+    let chunk = usizes(&array["codecs"][0]["configuration"]["chunk_shape"]);
     assert_eq!(chunk, [8, sizes[1].min(400), 16]);
+    let shard = usizes(&array["chunk_grid"]["configuration"]["chunk_shape"]);
+    assert_eq!(shard, [8, chunk[1], sizes[0].div_ceil(16) * 16]);
     assert_eq!(array["dimension_names"], serde_json::json!(["z", "y", "x"]));
     // No library version, no time: the bytes depend on the volume alone.
     assert!(
@@ -445,6 +694,12 @@ fn refusals_replacement_and_repeatability() {
         ),
         (vec!["--chunk", "0"], "each side must be 1..=65536"),
         (vec!["--chunk", "4x4"], "expected N or ZxYxX"),
+        (vec!["--levels", "9"], "--levels 9: at most 5 here"),
+        (
+            vec!["--chunk", "2", "--levels", "3"],
+            "--levels 3: at most 2 here",
+        ),
+        (vec!["--shard", "0"], "1..=65536 chunks a side, or `none`"),
         (
             vec!["--max-memory", "1"],
             "over --max-memory 1: lower --res or --chunk",
@@ -475,6 +730,12 @@ fn refusals_replacement_and_repeatability() {
         &[&base[..], &["--chunk", "8", "-o", s(&nrrd)]].concat(),
         "--chunk applies to --format zarr only",
     );
+    for flag in ["--shard", "--levels"] {
+        refused(
+            &[&base[..], &[flag, "2", "-o", s(&nrrd)]].concat(),
+            &format!("{flag} applies to --format zarr only"),
+        );
+    }
     refused(
         &[&base[..], &["--format", "zarr", "-o", s(&nrrd)]].concat(),
         "the name must end in .zarr",
@@ -564,17 +825,17 @@ fn a_signal_while_chunks_are_written_leaves_nothing() {
     }
 }
 
-/// Memory: the Zarr run's estimate does not grow with the grid's depth where NRRD's does, and
-/// it is above the peak measured (docs/memory.md has the larger runs).
+/// Memory: the Zarr run's estimate does not grow with the grid's depth where NRRD's does (for
+/// given levels: the default adds a level, a row of 1/8 the one below, per doubling).
 #[cfg(target_os = "linux")]
 #[test]
-fn the_estimate_does_not_grow_with_depth_and_bounds_the_peak() {
+fn the_estimate_does_not_grow_with_depth() {
     let d = tempfile::tempdir().unwrap();
     let (nrrd, store) = (d.path().join("v.nrrd"), d.path().join("v.zarr"));
     let est = |res: &str, zarr: bool| {
         let mut a = vec!["voxelize", "vectors/scenes/twelve.csg", "--res", res];
         match zarr {
-            true => a.extend(["--format", "zarr", "-o", s(&store)]),
+            true => a.extend(["--format", "zarr", "--levels", "3", "-o", s(&store)]),
             false => a.extend(["-o", s(&nrrd)]),
         }
         estimate_mib(&a)
@@ -584,23 +845,13 @@ fn the_estimate_does_not_grow_with_depth_and_bounds_the_peak() {
     assert_eq!(z1, z2, "the Zarr estimate grows with depth");
     assert!(n2 > n1 + 1000, "NRRD's: {n1} {n2}");
 
-    let args = [
-        "voxelize",
-        "vectors/scenes/twelve.csg",
-        "--res",
-        "384",
-        "--format",
-        "zarr",
-        "-o",
-        s(&store),
-    ];
-    let peak = peak_mib(&args);
-    let estimate = estimate_mib(&args);
-    eprintln!("twelve.csg 384³ --format zarr: estimate {estimate} MiB, peak {peak} MiB");
-    assert!(estimate >= peak, "estimate {estimate} MiB, peak {peak} MiB");
+    // The peak against the estimate is measured in tests/memory.rs, whose other tests run
+    // no voxelizer in their own process: a child's ru_maxrss starts from its parent's high
+    // water mark (Linux records it at exec), and this file's in-process tests reach 137 MiB.
 }
 
-/// zarr-python reads the store as the NRRD volume (`tests/data/read_zarr.py`); skipped,
+/// zarr-python reads the sharded store and its pyramid as the NRRD volume and its
+/// downsamples (`tests/data/read_zarr.py`); skipped,
 /// saying so, where `python3 -c "import zarr"` fails, unless `CSGPIX_ZARR_PYTHON=require`
 /// (.ci/run, which installs zarr-python) makes that a failure.
 #[test]
@@ -622,7 +873,7 @@ fn zarr_python_reads_the_store() {
         d.path(),
         "vectors/scenes/figure-5.2.csg",
         &["--res", "30x26x21"],
-        "4x16x8",
+        &["--chunk", "4x16x8", "--shard", "2", "--levels", "3"],
     );
     let o = std::process::Command::new("python3")
         .arg("tests/data/read_zarr.py")
@@ -637,4 +888,5 @@ fn zarr_python_reads_the_store() {
         String::from_utf8_lossy(&o.stderr)
     );
     assert!(out.contains("equal: shape (21, 26, 30)"), "{out}");
+    assert!(out.contains("shards (4, 32, 16), 3 levels"), "{out}");
 }

@@ -64,6 +64,8 @@ def voxelize_zarr(
     *,
     client: Any = None,
     chunk: Union[int, Tuple[int, int, int]] = 64,
+    shard: Union[int, str] = 64,
+    levels: Optional[int] = None,
     rows_per_task: int = 1,
     voxel: Optional[float] = None,
     pad: int = 0,
@@ -81,10 +83,13 @@ def voxelize_zarr(
     """Voxelize ``scene`` into the Zarr volume ``out`` (a new directory), chunk rows as
     tasks of the Dask ``client`` (``dask.distributed.Client``), or in this process when
     ``client`` is None (one call over every row). Grid and run options are those of :func:`csgpix.voxelize`; ``chunk``
-    is N or (Z, Y, X) voxels; ``threads`` is each task's voxelizer threads (default: the
+    is N or (Z, Y, X) voxels; ``shard`` chunks a shard side (``"none"`` or 1: one file a
+    chunk); ``levels`` the multiscale pyramid's (default: the command line's, until the
+    largest side is at most 256); each task writes its rows at every level, since row r of
+    level 0 makes row r of each coarser level (docs/zarr.md); ``threads`` is each task's voxelizer threads (default: the
     worker's cores); ``max_memory`` (MiB, default: the memory available where the task runs)
-    bounds each task's estimate, checked in the task before it allocates. Returns the run's figures: ``dims``, ``chunk``, ``rows``, ``tasks`` and the
-    work summed over the tasks.
+    bounds each task's estimate, checked in the task before it allocates. Returns the run's figures: ``dims``, ``chunk``, ``shard``, ``levels``, ``rows``, ``tasks`` and the
+    work summed over the tasks (with ``files_written``, the shard or chunk files of every level).
 
     Nothing is left behind on failure: the staging directory is removed and ``out`` is not
     created. ``out`` must not exist.
@@ -103,7 +108,7 @@ def voxelize_zarr(
     try:
         meta = _native.zarr_create(
             scene, str(staging), res, voxel=voxel, pad=pad, bounds=bounds, chunk=chunk,
-            sampling=sampling, model=model, route=route, eval=eval, grey=grey, blend=blend,
+            shard=shard, levels=levels, sampling=sampling, model=model, route=route, eval=eval, grey=grey, blend=blend,
             word=word,
         )
         rows = meta["rows"]

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use csgpix_zarr::{voxelize_rows, VolumeAttrs, ZarrVolume, DEFAULT_CHUNK};
+use csgpix_zarr::{voxelize_rows, Layout, VolumeAttrs, ZarrVolume, DEFAULT_CHUNK, DEFAULT_SHARD};
 use rtl_model::Equations;
 
 use crate::errors::{text, voxel};
@@ -33,13 +33,27 @@ fn chunk_shape(chunk: Option<&Bound<'_, PyAny>>) -> PyResult<[usize; 3]> {
         .map_err(|_| text("chunk: an int N or a tuple (Z, Y, X)".into()))
 }
 
+/// `shard` as N chunks a side, "none" for no shards (1), or the default when not given.
+fn shard_side(shard: Option<&Bound<'_, PyAny>>) -> PyResult<usize> {
+    let Some(s) = shard else {
+        return Ok(DEFAULT_SHARD);
+    };
+    if s.extract::<String>().is_ok_and(|t| t == "none") {
+        return Ok(1);
+    }
+    s.extract::<usize>()
+        .map_err(|_| text("shard: an int N (chunks a shard side) or \"none\"".into()))
+}
+
 /// Write the metadata of the volume of `scene` on its grid at `path` (a new or empty
-/// directory), as `csgpix voxelize --format zarr` does; returns `dims` (x, y, z), `chunk`
-/// (z, y, x) and `rows`, the number of chunk rows.
+/// directory), as `csgpix voxelize --format zarr` does (`shard`: chunks a shard side, or
+/// "none"; `levels`: the pyramid's, default as the command line's); returns `dims` (x, y,
+/// z), `chunk` (z, y, x), `shard` (z, y, x, or None), `levels` and `rows`, the number of
+/// chunk rows.
 #[pyfunction]
 #[pyo3(signature = (scene, path, res=None, *, voxel=None, pad=0, bounds=None, chunk=None,
-    sampling="centre", model="word", route="runs", eval="blist", grey=false, blend=None,
-    word="10/10/11"))]
+    shard=None, levels=None, sampling="centre", model="word", route="runs", eval="blist",
+    grey=false, blend=None, word="10/10/11"))]
 #[allow(clippy::too_many_arguments)]
 pub fn zarr_create<'py>(
     py: Python<'py>,
@@ -50,6 +64,8 @@ pub fn zarr_create<'py>(
     pad: usize,
     bounds: Option<([f64; 3], [f64; 3])>,
     chunk: Option<&Bound<'py, PyAny>>,
+    shard: Option<&Bound<'py, PyAny>>,
+    levels: Option<usize>,
     sampling: &str,
     model: &str,
     route: &str,
@@ -64,16 +80,24 @@ pub fn zarr_create<'py>(
     opts.slicer(scene, grid)?;
     let values = csgpix_zarr::values_text(grey, blend.is_some());
     let attrs = VolumeAttrs::new(format!("csgpix voxelize {}", scene.name), values);
-    let store = ZarrVolume::create(&path, &grid, chunk_shape(chunk)?, &attrs).map_err(zarr)?;
+    let layout = Layout {
+        chunk: chunk_shape(chunk)?,
+        shard: shard_side(shard)?,
+        levels,
+    };
+    let store = ZarrVolume::create(&path, &grid, &layout, &attrs).map_err(zarr)?;
     let d = PyDict::new(py);
     d.set_item("dims", store.dims())?;
     d.set_item("chunk", store.chunk())?;
+    d.set_item("shard", store.levels()[0].shard)?;
+    d.set_item("levels", store.levels().len())?;
     d.set_item("rows", store.chunk_rows().len())?;
     Ok(d)
 }
 
 /// Voxelize chunk rows `rows` (r0, r1) of the volume at `path` and store them; the grid is
-/// the store's. `threads`: the voxelizer's (default: every core). Returns the rows' work.
+/// the store's. `threads`: the voxelizer's (default: every core). Returns the rows' work,
+/// and `files_written`: the shard (or chunk) files it wrote, every level.
 #[pyfunction]
 #[pyo3(signature = (scene, path, rows, *, sampling="centre", model="word", route="runs",
     eval="blist", grey=false, blend=None, word="10/10/11", threads=None, max_memory=None))]
@@ -104,7 +128,7 @@ pub fn zarr_write_rows<'py>(
     let grid = *store.grid();
     let prims = scene.loaded.scene.primitive_count();
     let need =
-        csgpix_zarr::memory_estimate(&grid, store.chunk(), prims, pool.current_num_threads())
+        csgpix_zarr::memory_estimate(&grid, &store.layout(), prims, pool.current_num_threads())
             .map_err(zarr)?
             .saturating_add(imports_bytes(scene, &grid));
     check_memory(need, max_memory)?;
@@ -132,5 +156,6 @@ pub fn zarr_write_rows<'py>(
     d.set_item("cycles", work.cycles)?;
     d.set_item("simulated_pixel_clocks", work.simulated_pixel_clocks)?;
     d.set_item("full_pixel_clocks", work.full_pixel_clocks)?;
+    d.set_item("files_written", store.files_written().iter().sum::<u64>())?;
     Ok(d)
 }

@@ -4,6 +4,7 @@ voxels csgpix.voxelize gives; a failed run leaves nothing behind."""
 
 import filecmp
 import shutil
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -12,6 +13,9 @@ import pytest
 import csgpix
 import csgpix.distributed as cd
 from conftest import SCENES, run_cli
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests" / "data"))
+import read_zarr  # noqa: E402  (the downsample rule in numpy, shared with tests/zarr.rs)
 
 zarr = pytest.importorskip("zarr", reason="zarr-python is not installed: pip install './python[test]'")
 distributed = pytest.importorskip("distributed", reason="dask.distributed is not installed")
@@ -48,6 +52,14 @@ def client():
     [
         ("csg-logo.csg", ["--res", "48x40x50", "--chunk", "8x16x16"], dict(res=(48, 40, 50), chunk=(8, 16, 16))),
         ("figure-5.6.csg", ["--res", "40", "--grey", "--chunk", "7"], dict(res=40, grey=True, chunk=7)),
+        # Sharded with a pyramid: each task writes its rows of every level.
+        (
+            "twelve.csg",
+            ["--res", "44x40x36", "--chunk", "4x8x8", "--shard", "2", "--levels", "3"],
+            dict(res=(44, 40, 36), chunk=(4, 8, 8), shard=2, levels=3),
+        ),
+        ("csg-logo.csg", ["--res", "30", "--chunk", "4", "--shard", "none", "--levels", "2"],
+         dict(res=30, chunk=4, shard="none", levels=2)),
     ],
 )
 def test_dask_workers_write_the_command_lines_store(tmp_path, client, scene, args, kw):
@@ -72,14 +84,23 @@ def test_dask_workers_write_the_command_lines_store(tmp_path, client, scene, arg
     shift = next(t["translation"] for t in tr if t["type"] == "translation")
     assert np.allclose(scale, vol.spacing[::-1]) and np.allclose(shift, vol.origin[::-1])
     assert [a["name"] for a in ms["axes"]] == ["z", "y", "x"]
+    # The pyramid: each level the rule's downsample of the one below (tests/data/read_zarr.py).
+    assert rep2["levels"] == len(ms["datasets"]) == kw.get("levels", 1)
+    level = vol.data
+    for l in range(1, rep2["levels"]):
+        level = read_zarr.downsample(level)
+        assert np.array_equal(g[str(l)][:], level), f"level {l}"
+    written = sum(1 for f in files(dist) if "/c/" in f)
+    assert rep2["files_written"] == rep["files_written"] == written > 0
 
 
 def test_rows_grouped_into_tasks_give_the_same_store(tmp_path, client):
     path = str(SCENES / "twelve.csg")
     a, b = tmp_path / "a.zarr", tmp_path / "b.zarr"
-    cd.voxelize_zarr(path, a, 32, chunk=4)
-    rep = cd.voxelize_zarr(path, b, 32, chunk=4, rows_per_task=3, client=client)
-    assert (rep["rows"], rep["tasks"]) == (8, 3)
+    cd.voxelize_zarr(path, a, 32, chunk=4, shard=2, levels=3)
+    rep = cd.voxelize_zarr(path, b, 32, chunk=4, shard=2, levels=3, rows_per_task=3, client=client)
+    assert (rep["rows"], rep["tasks"], rep["levels"]) == (8, 3, 3)
+    assert any(f.startswith("2/c/") for f in files(b)), "level 2 written by the tasks"
     assert_same_tree(a, b)
 
 

@@ -106,6 +106,16 @@ pub struct Args {
     /// Memory holds one chunk row: Z × NY × NX bytes.
     #[arg(long, value_parser = parse_chunk)]
     chunk: Option<[usize; 3]>,
+    /// --format zarr: chunks per shard side across Y and X (a shard file is one chunk deep
+    /// and N×N chunks wide, cut to the grid), or `none` (or 1) for one file per chunk.
+    /// Costs no memory: shards are written a chunk at a time. Default 64.
+    #[arg(long, value_parser = parse_shard)]
+    shard: Option<usize>,
+    /// --format zarr: multiscale levels, 1 for none; each halves every axis of the one
+    /// before, a voxel taking the most frequent non-zero label of its 8 (docs/zarr.md).
+    /// Default: until the largest side is at most 256, as far as the chunk depth halves.
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=32))]
+    levels: Option<u16>,
     /// Also write every slice as a PNG into this directory.
     #[arg(long)]
     slices: Option<PathBuf>,
@@ -346,6 +356,18 @@ fn parse_chunk(s: &str) -> Result<[usize; 3], String> {
     Ok(chunk)
 }
 
+/// `--shard`: N chunks a side (1..=65536), or `none` for 1.
+fn parse_shard(s: &str) -> Result<usize, String> {
+    if s == "none" {
+        return Ok(1);
+    }
+    match s.trim().parse::<usize>() {
+        Ok(n) if (1..=65536).contains(&n) => Ok(n),
+        Ok(_) => Err(format!("{s}: 1..=65536 chunks a side, or `none`")),
+        Err(e) => Err(format!("{s:?}: {e}; expected N or `none`")),
+    }
+}
+
 pub fn parse_bounds(s: &str) -> Result<(DVec3, DVec3), String> {
     let v: Vec<f64> = s
         .split(',')
@@ -399,11 +421,9 @@ struct Report {
     work: Work,
     #[serde(skip_serializing_if = "Option::is_none")]
     store: Option<StoreReport>,
-    /// With --format zarr: the store's chunk shape (Z, Y, X) and its chunk rows.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    chunk: Option<[usize; 3]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    chunk_rows: Option<usize>,
+    /// With --format zarr: the store's layout and files.
+    #[serde(flatten)]
+    zarr: Option<ZarrReport>,
     /// With `--mesh`: its triangles and open edges.
     #[serde(flatten)]
     mesh: Option<MeshReport>,
@@ -414,6 +434,21 @@ struct Report {
     /// children, subtrees meshed by `--fallback openscad`. Left out when there are none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     warnings: Vec<String>,
+}
+
+/// The `--format zarr` figures of the JSON report.
+#[derive(Serialize, Clone, Debug)]
+struct ZarrReport {
+    /// Level 0's chunk shape (a shard's inner chunk), Z, Y, X.
+    chunk: [usize; 3],
+    chunk_rows: usize,
+    /// Level 0's shard shape, Z, Y, X; null when unsharded (--shard none).
+    shard: Option<[usize; 3]>,
+    /// Multiscale levels, level 0 included.
+    levels: usize,
+    /// Files written per level: shard files, or chunk files when unsharded (all-0 shards
+    /// and chunks have none).
+    files_written: Vec<u64>,
 }
 
 /// `sum:KS,KD` or `max`.
@@ -481,8 +516,13 @@ pub fn flag_message(e: Error) -> String {
 /// the options that need the whole volume in memory, and standard output.
 fn check_format(a: &Args) -> Result<(), String> {
     if a.format == FormatArg::Nrrd {
-        return match a.chunk {
-            Some(_) => Err("--chunk applies to --format zarr only".into()),
+        let zarr_only = [
+            ("--chunk", a.chunk.is_some()),
+            ("--shard", a.shard.is_some()),
+            ("--levels", a.levels.is_some()),
+        ];
+        return match zarr_only.iter().find(|(_, given)| *given) {
+            Some((flag, _)) => Err(format!("{flag} applies to --format zarr only")),
             None => Ok(()),
         };
     }
@@ -563,7 +603,11 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let threads = a
         .threads
         .map_or_else(rayon::current_num_threads, usize::from);
-    let chunk = a.chunk.unwrap_or([csgpix::zarr::DEFAULT_CHUNK; 3]);
+    let layout = csgpix::zarr::Layout {
+        chunk: a.chunk.unwrap_or([csgpix::zarr::DEFAULT_CHUNK; 3]),
+        shard: a.shard.unwrap_or(csgpix::zarr::DEFAULT_SHARD),
+        levels: a.levels.map(usize::from),
+    };
     let opts = SlicerOptions {
         fmt: a.word,
         sampling: a.grid.sampling.sampling(),
@@ -575,7 +619,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
     let eval = evaluator(a.eval, scene);
     let route = route_of(a.model, a.route, &slicer);
-    let need = estimate(&a, &slicer, route, eval.as_ref(), threads, chunk)?;
+    let need = estimate(&a, &slicer, route, eval.as_ref(), threads, &layout)?;
     let fix = match a.format {
         FormatArg::Nrrd => "lower --res",
         FormatArg::Zarr => "lower --res or --chunk",
@@ -596,7 +640,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             csgpix::zarr::values_text(a.grey, a.blend.is_some()),
         );
         let store =
-            ZarrVolume::create(&root, &grid, chunk, &attrs).map_err(|e| zarr_message(e, &a))?;
+            ZarrVolume::create(&root, &grid, &layout, &attrs).map_err(|e| zarr_message(e, &a))?;
         let rows = store.chunk_rows().len();
         let work = pool
             .install(|| voxelize_rows(&slicer, route, set, eval.as_ref(), &tick, &store, 0..rows))
@@ -604,7 +648,13 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         bar.finish_and_clear();
         let wall = t0.elapsed().as_secs_f64();
         named.outs.commit()?;
-        let zarr = Some((store.chunk(), rows));
+        let zarr = Some(ZarrReport {
+            chunk: store.chunk(),
+            chunk_rows: rows,
+            shard: store.levels()[0].shard,
+            levels: store.levels().len(),
+            files_written: store.files_written(),
+        });
         return report(
             &a,
             scene,
@@ -661,7 +711,7 @@ fn estimate(
     route: Route,
     eval: &dyn SliceEval,
     threads: usize,
-    chunk: [usize; 3],
+    layout: &csgpix::zarr::Layout,
 ) -> Result<u64, String> {
     let grid = &slicer.grid;
     let prims = slicer.primitive_count();
@@ -673,10 +723,11 @@ fn estimate(
         }
         (true, FormatArg::Zarr) => {
             csgpix::voxel::runs::memory_estimate(slicer, eval, threads, false)
-                .saturating_add(csgpix::zarr::writer_bytes(grid.dims, chunk)?)
+                .saturating_add(zarr_bytes(grid.dims, layout, threads, a)?)
         }
         (false, FormatArg::Nrrd) => memory_estimate(grid, prims, threads),
-        (false, FormatArg::Zarr) => csgpix::zarr::memory_estimate(grid, chunk, prims, threads)?,
+        (false, FormatArg::Zarr) => csgpix::zarr::memory_estimate(grid, layout, prims, threads)
+            .map_err(|e| zarr_message(e, a))?,
     };
     if !runs {
         for s in &slicer.sampled {
@@ -693,11 +744,26 @@ fn estimate(
     Ok(need)
 }
 
+/// What the Zarr writer holds (`csgpix_zarr::writer_bytes`).
+fn zarr_bytes(
+    dims: [usize; 3],
+    layout: &csgpix::zarr::Layout,
+    threads: usize,
+    a: &Args,
+) -> Result<u64, String> {
+    csgpix::zarr::writer_bytes(dims, layout, threads).map_err(|e| zarr_message(e, a))
+}
+
 /// A Zarr store's error, naming `-o` where the library names the staging directory.
 fn zarr_message(e: csgpix::zarr::Error, a: &Args) -> String {
     use csgpix::zarr::Error as Z;
     match e {
         Z::Store { message, .. } => format!("-o {}: {message}", a.out.display()),
+        Z::BadLevels { levels, max, depth } => format!(
+            "--levels {levels}: at most {max} here (with more than one chunk row, 2^(levels-1) \
+             must divide the chunk depth, {depth}; and no level past a 1x1x1 one)"
+        ),
+        e @ Z::BadChunk { .. } => format!("--chunk: {e}"),
         e => e.to_string(),
     }
 }
@@ -859,7 +925,7 @@ fn report(
     eval: &dyn SliceEval,
     (work, store, mesh): (Work, Option<StoreReport>, Option<MeshReport>),
     (wall, to_stderr, memory_estimate): (f64, bool, u64),
-    zarr: Option<([usize; 3], usize)>,
+    zarr: Option<ZarrReport>,
 ) -> Result<ExitCode, String> {
     let say = |line: String| super::report_line(&line, to_stderr);
     let pixels = slicer.grid.slice_len();
@@ -892,8 +958,7 @@ fn report(
         state_bits_per_voxel: eval.state_bytes(pixels) * 8 / pixels.max(1),
         work,
         store,
-        chunk: zarr.map(|z| z.0),
-        chunk_rows: zarr.map(|z| z.1),
+        zarr,
         mesh,
         hardware_seconds: work.cycles as f64 * 1e-7,
         wall_seconds: wall,

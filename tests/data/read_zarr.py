@@ -2,9 +2,12 @@
 
     python3 tests/data/read_zarr.py OUT.zarr OUT.nrrd
 
-Prints `equal: shape (nz, ny, nx), ...` and exits 0 when the array equals the NRRD samples
-voxel for voxel and the OME-Zarr scale and translation are the NRRD header's space directions
-and origin (Z, Y, X); otherwise says what differs and exits 1. Called by tests/zarr.rs.
+Prints `equal: shape (nz, ny, nx), ...` and exits 0 when level 0 equals the NRRD samples
+voxel for voxel, each coarser level of the multiscale pyramid equals the NRRD volume
+downsampled by the rule of docs/zarr.md (written here again, in numpy), and the OME-Zarr
+scale and translation are the NRRD header's space directions and origin (Z, Y, X), doubled
+and moved to the centre of the coarser voxel per level; otherwise says what differs and exits
+1. Called by tests/zarr.rs.
 """
 
 import sys
@@ -28,6 +31,20 @@ def read_nrrd(path):
     nx, ny, nz = (int(w) for w in fields["sizes"].split())
     samples = np.frombuffer(data[end + 2 :], dtype=np.uint8).reshape(nz, ny, nx)
     return samples, fields
+
+
+def downsample(a):
+    """The next level: each axis halved rounding up, a voxel the most frequent non-zero value
+    of its (up to) 8, ties to the smallest, 0 when all are 0. Padding with 0 changes nothing."""
+    a = np.pad(a, [(0, n % 2) for n in a.shape])
+    nz, ny, nx = (n // 2 for n in a.shape)
+    blocks = a.reshape(nz, 2, ny, 2, nx, 2).transpose(0, 2, 4, 1, 3, 5).reshape(-1, 8)
+    values = blocks.astype(np.int64)
+    counts = (values[:, :, None] == values[:, None, :]).sum(axis=2)
+    score = np.where(values != 0, counts * 256 + (255 - values), -1)
+    best = values[np.arange(len(values)), score.argmax(axis=1)]
+    best[score.max(axis=1) < 0] = 0
+    return best.astype(np.uint8).reshape(nz, ny, nx)
 
 
 def numbers(text):
@@ -56,12 +73,28 @@ def main():
         problems.append(f"scale {scale}, NRRD space directions {dirs}")
     if translation != origin[::-1]:
         problems.append(f"translation {translation}, NRRD space origin {origin}")
+    datasets = ome["multiscales"][0]["datasets"]
+    level = want
+    for l, ds in enumerate(datasets[1:], start=1):
+        level = downsample(level)
+        got_l = group[ds["path"]][:]
+        if ds["path"] != str(l):
+            problems.append(f"dataset {l} has path {ds['path']}")
+        elif got_l.shape != level.shape or not np.array_equal(got_l, level):
+            problems.append(f"level {l} is not the downsample of level {l - 1}")
+        t = ds["coordinateTransformations"]
+        f = 2.0**l
+        if not np.allclose(t[0]["scale"], np.array(scale) * f, rtol=1e-12, atol=0):
+            problems.append(f"level {l} scale {t[0]['scale']}")
+        centre = np.array(translation) + np.array(scale) * (f - 1) / 2
+        if not np.allclose(t[1]["translation"], centre, rtol=1e-12, atol=1e-12):
+            problems.append(f"level {l} translation {t[1]['translation']}, not {centre}")
     if problems:
         print("; ".join(problems))
         sys.exit(1)
     print(
-        f"equal: shape {got.shape}, chunks {array.chunks}, {int(np.count_nonzero(got))} filled, "
-        f"zarr-python {zarr.__version__}"
+        f"equal: shape {got.shape}, chunks {array.chunks}, shards {array.shards}, "
+        f"{len(datasets)} levels, {int(np.count_nonzero(got))} filled, zarr-python {zarr.__version__}"
     )
 
 

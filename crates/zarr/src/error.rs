@@ -16,6 +16,23 @@ pub enum Error {
         /// The shape asked for, Z, Y, X.
         chunk: [usize; 3],
     },
+    /// Shards of 0 chunks a side.
+    #[error("shards of 0 chunks a side: give 1 (no shards) or more")]
+    BadShard,
+    /// More pyramid levels than the grid and the chunk depth allow ([`crate::max_levels`]).
+    #[error(
+        "{levels} levels: this grid and chunk depth {depth} allow 1 to {max} (each level \
+         halves a chunk row, so 2^(levels-1) must divide the depth when the grid has more than \
+         one row; no level past a 1x1x1 one)"
+    )]
+    BadLevels {
+        /// Levels asked for.
+        levels: usize,
+        /// The most allowed.
+        max: usize,
+        /// Level 0's chunk depth (cut to the grid).
+        depth: usize,
+    },
     /// `create` was pointed at something other than a new or empty directory: it writes a
     /// whole store, and stale chunks of another would read as voxels.
     #[error("{}: exists and is not an empty directory", .path.display())]

@@ -7,10 +7,19 @@
 //! # Layout
 //!
 //! ```text
-//! OUT.zarr/zarr.json      group: "ome" (OME-Zarr 0.5 multiscales, one level) and "csgpix"
-//! OUT.zarr/0/zarr.json    array: uint8, shape (nz, ny, nx), chunks (cz, cy, cx), fill 0, gzip
-//! OUT.zarr/0/c/K/J/I      chunk (K, J, I), gzip of its C-order bytes; absent when all 0
+//! OUT.zarr/zarr.json        group: "ome" (OME-Zarr 0.5 multiscales, a dataset per level), "csgpix"
+//! OUT.zarr/L/zarr.json      level L's array: uint8, shape (nz, ny, nx) halved L times (ceil),
+//!                           fill 0; shards of S×S chunks (sharding_indexed, inner gzip)
+//! OUT.zarr/L/c/R/SJ/SI      shard (R, SJ, SI) of chunk row R; absent when all 0
 //! ```
+//!
+//! Level 0 is the grid; level L ([`plan`]) halves every axis of level L−1, rounding up, each
+//! voxel the [`label_of`] its ≤ 8 voxels there (the most frequent non-zero value, ties to the
+//! smallest, 0 when all are 0). Level L's chunks are level 0's with the depth halved L times,
+//! so chunk row R of level 0 makes chunk row R of every level, and a row stays a unit of
+//! work whatever the levels. A shard is one chunk deep and `S` chunks a side across Y and X
+//! (cut to the level); with `S` = 1 the array is unsharded, one gzip file a chunk at
+//! `L/c/R/J/I`.
 //!
 //! The array is indexed `[k, j, i]` for voxel (i, j, k): numpy's C order of the voxelizer's
 //! slices (X fastest, then Y, then Z; [`csgpix_voxel::Volume`]), so a slice k is `arr[k]`.
@@ -24,22 +33,23 @@
 //!
 //! [`ZarrVolume::create`] writes the metadata; then any process can
 //! [`ZarrVolume::open`] the store and [`voxelize_rows`] any range of its
-//! [`chunk_rows`](ZarrVolume::chunk_rows): rows are disjoint sets of chunk files, and the
-//! voxelizer gives every slab the same slice whatever range it is computed in
+//! [`chunk_rows`](ZarrVolume::chunk_rows): rows are disjoint sets of files at every level,
+//! and the voxelizer gives every slab the same slice whatever range it is computed in
 //! ([`csgpix_voxel::voxelize_slabs`]), so the files are byte for byte those of one run over
 //! every row (tested: `tests/zarr.rs`).
 //!
 //! # Empty chunks
 //!
-//! A chunk whose voxels are all 0 (the fill value) is not written, and is removed if a file
-//! for it exists: zarrs's default (`store_empty_chunks` off), which Zarr readers read as the
-//! fill value. Which files exist therefore depends only on the voxels.
+//! A chunk whose voxels are all 0 (the fill value) is not written: inside a shard its index
+//! entry says so, and a shard with no such chunk has no file (an existing one is removed);
+//! Zarr readers read both as the fill value. Which files exist, and their bytes, therefore
+//! depend only on the voxels.
 //!
 //! # Example
 //!
 //! ```
 //! use csgpix_voxel::{blist::BlistEval, Grid, Route, Slicer, SlicerOptions};
-//! use csgpix_zarr::{voxelize_rows, VolumeAttrs, ZarrVolume};
+//! use csgpix_zarr::{voxelize_rows, Layout, VolumeAttrs, ZarrVolume};
 //! use glam::DVec3;
 //!
 //! # fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -48,8 +58,11 @@
 //! let dir = tempfile::tempdir()?;
 //! let path = dir.path().join("cube.zarr");
 //! let attrs = VolumeAttrs::new("cube.csg", "uint8 colour codes, 0 empty");
-//! let volume = ZarrVolume::create(&path, &grid, [4, 16, 16], &attrs)?;
+//! let layout = Layout { levels: Some(3), ..Layout::new([4, 16, 16]) };
+//! let volume = ZarrVolume::create(&path, &grid, &layout, &attrs)?;
 //! assert_eq!(volume.chunk_rows(), [0..4, 4..8, 8..10]);
+//! assert_eq!(volume.levels()[2].dims, [4, 4, 3]);
+//! assert_eq!(volume.levels()[2].chunk, [1, 4, 4]);
 //!
 //! // Two "tasks", each opening the store: rows 0..2, then row 2.
 //! let slicer = Slicer::new(&scene, grid, SlicerOptions::default())?;
@@ -62,16 +75,23 @@
 //!     filled += work.filled;
 //! }
 //! assert_eq!(filled, 16 * 16 * 10);
-//! assert!(path.join("0/c/2/0/0").exists());
+//! assert!(path.join("0/c/2/0/0").exists()); // level 0's shard of row 2
+//! assert!(path.join("2/c/2/0/0").exists()); // level 2's, made from it
+//! assert_eq!(volume_files(&path), 9); // 3 rows, 3 levels, one shard each
+//! # fn volume_files(p: &std::path::Path) -> usize {
+//! #     (0..3).map(|l| (0..3).filter(|r| p.join(format!("{l}/c/{r}/0/0")).is_file()).count()).sum()
+//! # }
 //! # Ok(())
 //! # }
 //! ```
 
 mod error;
+pub mod pyramid;
+mod shard;
 
 use std::ops::Range;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::Arc;
 
 use csgpix_scene::grid::Grid;
@@ -81,31 +101,42 @@ use csgpix_voxel::{Route, Slicer, Work};
 use glam::DVec3;
 use rtl_model::EquationSet;
 use serde_json::{json, Value};
-use zarrs::array::codec::GzipCodec;
+use zarrs::array::codec::{BytesCodec, GzipCodec, ShardingCodecBuilder};
 use zarrs::array::{Array, ArrayBuilder, ArrayMetadataOptions, CodecOptions};
 use zarrs::filesystem::FilesystemStore;
 use zarrs::group::{Group, GroupBuilder};
 
 pub use error::{Error, Result};
+pub use pyramid::{downsample, label_of};
 
 /// The side of a cubic chunk when none is asked for: a chunk row of a 2048² grid is then
 /// 256 MiB, and a chunk 256 KiB before compression (docs/zarr.md).
 pub const DEFAULT_CHUNK: usize = 64;
+
+/// Inner chunks per shard side (Y and X) when none is asked for: with 64³ chunks a shard is
+/// 64 × 4096 × 4096 voxels, and a 16384³ store 6,400 files over 7 levels (docs/zarr.md has
+/// the counts). A shard is never held whole ([`shard`]), so its size costs no memory.
+pub const DEFAULT_SHARD: usize = 64;
+
+/// The default pyramid stops at the first level whose largest side is at most this.
+pub const PYRAMID_SIDE: usize = 256;
 
 /// gzip's level for every chunk: zlib's default. On twelve.csg at 1024³ level 1 made a store
 /// 2.6× as large (6.29 MB against 2.39) in the same wall time, since writing, not
 /// compressing, is what a run waits on (docs/zarr.md has the figures).
 pub const GZIP_LEVEL: u32 = 6;
 
-/// Chunks of a row written at once, each on its own thread. zarrs's filesystem store syncs
-/// every chunk file to the disk before it returns (`File::sync_all`), so a writer spends most
-/// of its time waiting on the disk, not compressing: with 2 writers a 1024³ run spent 6.5 s
-/// of its 21 s there (docs/zarr.md). Threads apart from rayon's, so that they wait without
-/// holding the voxelizer's workers; each holds a chunk and its gzip stream.
+/// Unsharded arrays (`shard` 1): chunks of a row written at once, each on its own thread.
+/// zarrs's filesystem store syncs every chunk file to the disk before it returns
+/// (`File::sync_all`), so a writer spends most of its time waiting on the disk, not
+/// compressing: with 2 writers a 1024³ run spent 6.5 s of its 21 s there (docs/zarr.md).
+/// Threads apart from rayon's, so that they wait without holding the voxelizer's workers;
+/// each holds a chunk and its gzip stream.
 pub const WRITERS: usize = 8;
 
-/// The dataset path of the one multiscale level, under the group.
-const LEVEL: &str = "0";
+/// Bytes of a deflate stream's own state (window, hash chains, pending output) per thread
+/// compressing: zlib's is about 268 KiB at level 6; counted at twice that.
+const DEFLATE_STATE: u64 = 512 << 10;
 
 /// What the `csgpix` attribute says of a volume besides its grid.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -126,33 +157,62 @@ impl VolumeAttrs {
     }
 }
 
-/// A csgpix volume in a Zarr v3 store on the filesystem: the group, and its uint8 array at
-/// `0`, shape (nz, ny, nx), written a chunk row at a time.
-pub struct ZarrVolume {
-    path: PathBuf,
-    array: Array<FilesystemStore>,
-    grid: Grid,
-    /// Chunk shape, Z, Y, X.
-    chunk: [usize; 3],
+/// How a store is cut: chunks, shards and pyramid levels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layout {
+    /// The chunk (a shard's inner chunk) of level 0, Z, Y, X, before [`chunk_shape`] cuts
+    /// it to the grid.
+    pub chunk: [usize; 3],
+    /// Inner chunks per shard side across Y and X (a shard is one chunk deep); 1 writes no
+    /// shards, one file per chunk.
+    pub shard: usize,
+    /// Multiscale levels, level 0 the grid itself; None: [`default_levels`], within what the
+    /// chunk depth allows ([`max_levels`]).
+    pub levels: Option<usize>,
 }
 
-impl std::fmt::Debug for ZarrVolume {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("ZarrVolume")
-            .field("path", &self.path)
-            .field("grid", &self.grid)
-            .field("chunk", &self.chunk)
-            .finish()
+impl Layout {
+    /// Chunks `chunk`, shards of [`DEFAULT_SHARD`] chunks a side, the default levels.
+    pub fn new(chunk: [usize; 3]) -> Layout {
+        Layout {
+            chunk,
+            shard: DEFAULT_SHARD,
+            levels: None,
+        }
     }
 }
 
-// A binding holds a store across threads (a Python class must be `Send`), and rows are
-// written from several: checked when the crate compiles.
-const _: fn() = || {
-    fn shared<T: Send + Sync>() {}
-    shared::<ZarrVolume>();
-    shared::<Error>();
-};
+impl Default for Layout {
+    fn default() -> Layout {
+        Layout::new([DEFAULT_CHUNK; 3])
+    }
+}
+
+/// One level of the pyramid as written: the array at `OUT.zarr/L`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Level {
+    /// Voxels along X, Y and Z: level 0's halved `l` times, rounding up.
+    pub dims: [usize; 3],
+    /// The chunk (inner chunk when sharded), Z, Y, X: level 0's depth halved `l` times, so
+    /// that every chunk row of level 0 makes exactly one of this level.
+    pub chunk: [usize; 3],
+    /// The shard, Z, Y, X (a whole number of chunks), or None when unsharded.
+    pub shard: Option<[usize; 3]>,
+}
+
+impl Level {
+    /// The array's chunk grid unit: the shard, or the chunk when unsharded.
+    pub fn grid_unit(&self) -> [usize; 3] {
+        self.shard.unwrap_or(self.chunk)
+    }
+
+    /// Files a chunk row of this level can have: shards (or chunks) across Y times across X.
+    pub fn files_per_row(&self) -> usize {
+        let [nx, ny, _] = self.dims;
+        let [_, uy, ux] = self.grid_unit();
+        ny.div_ceil(uy) * nx.div_ceil(ux)
+    }
+}
 
 /// The chunk shape a store of `dims` (X, Y, Z) gets for `chunk` (Z, Y, X): each side at most
 /// the grid's, so that a small grid is not padded out to a large chunk.
@@ -164,32 +224,162 @@ pub fn chunk_shape(dims: [usize; 3], chunk: [usize; 3]) -> Result<[usize; 3]> {
     Ok([chunk[0].min(nz), chunk[1].min(ny), chunk[2].min(nx)])
 }
 
-/// Bytes a run over a store of `chunk` holds besides the voxelizer's own: one chunk row of
-/// slices, and per writer ([`WRITERS`]) a chunk copied out of it and its gzip stream (at
-/// most the chunk and zlib's bound, `deflateBound`).
-pub fn writer_bytes(dims: [usize; 3], chunk: [usize; 3]) -> Result<u64> {
-    let [cz, cy, cx] = chunk_shape(dims, chunk)?.map(|c| c as u64);
-    let [nx, ny, _] = dims.map(|d| d as u64);
-    let row = cz.saturating_mul(ny).saturating_mul(nx);
-    let chunk = cz.saturating_mul(cy).saturating_mul(cx);
-    let per_writer = chunk.saturating_mul(2).saturating_add(chunk / 8 + 64);
-    Ok(row.saturating_add((WRITERS as u64).saturating_mul(per_writer)))
+/// Levels the default pyramid has on `dims`: level 0, then one more per halving until the
+/// largest side is at most [`PYRAMID_SIDE`] (384³: 2 levels, 4096³: 5, 16384³: 7).
+pub fn default_levels(dims: [usize; 3]) -> usize {
+    let mut side = dims.into_iter().max().unwrap_or(1);
+    let mut levels = 1;
+    while side > PYRAMID_SIDE {
+        side = side.div_ceil(2);
+        levels += 1;
+    }
+    levels
 }
 
-/// An upper bound of the memory of a run into a store of `chunk` (docs/memory.md): the
+/// The most levels a store of `dims` with chunks `chunk` (cut, Z first) can have: each
+/// chunk row of level 0 makes one chunk row of every level, so when the grid has more than
+/// one row the chunk depth must halve exactly, 2^(levels-1) dividing it (64: at most 7
+/// levels); and no level past the first that is 1×1×1.
+pub fn max_levels(dims: [usize; 3], chunk: [usize; 3]) -> usize {
+    let mut side = dims.into_iter().max().unwrap_or(1);
+    let mut levels = 1;
+    while side > 1 {
+        side = side.div_ceil(2);
+        levels += 1;
+    }
+    let cz = chunk[0];
+    if dims[2] > cz {
+        levels = levels.min(1 + cz.trailing_zeros() as usize);
+    }
+    levels
+}
+
+/// The levels of a store of `dims` cut by `layout`.
+pub fn plan(dims: [usize; 3], layout: &Layout) -> Result<Vec<Level>> {
+    let chunk = chunk_shape(dims, layout.chunk)?;
+    if layout.shard == 0 {
+        return Err(Error::BadShard);
+    }
+    let max = max_levels(dims, chunk);
+    let levels = match layout.levels {
+        None => default_levels(dims).min(max),
+        Some(l) if (1..=max).contains(&l) => l,
+        Some(l) => {
+            return Err(Error::BadLevels {
+                levels: l,
+                max,
+                depth: chunk[0],
+            })
+        }
+    };
+    let [cz, cy, cx] = chunk;
+    Ok((0..levels)
+        .map(|l| {
+            let dims = dims.map(|d| d.div_ceil(1 << l));
+            let [nx, ny, _] = dims;
+            let chunk = [cz.div_ceil(1 << l), cy.min(ny), cx.min(nx)];
+            let shard = (layout.shard > 1).then(|| {
+                let across = |n: usize, c: usize| layout.shard.min(n.div_ceil(c)) * c;
+                [chunk[0], across(ny, chunk[1]), across(nx, chunk[2])]
+            });
+            Level { dims, chunk, shard }
+        })
+        .collect())
+}
+
+/// Bytes of chunk row slices a run holds per level: level 0's row (buffered by
+/// [`voxelize_rows`]) and each coarser level's, made from it.
+fn rows_bytes(levels: &[Level]) -> u64 {
+    levels
+        .iter()
+        .map(|v| {
+            let [nx, ny, nz] = v.dims.map(|d| d as u64);
+            (v.chunk[0] as u64)
+                .min(nz)
+                .saturating_mul(ny)
+                .saturating_mul(nx)
+        })
+        .fold(0u64, u64::saturating_add)
+}
+
+/// Bytes a run over a store of `layout` on `threads` threads holds besides the voxelizer's
+/// own: one chunk row of slices per level, and while a row is written, the larger of
+/// - sharded: per thread a chunk copied out of the row and its deflate state, and a batch
+///   ([`BATCH_PER_THREAD`](shard::BATCH_PER_THREAD) per thread) of compressed chunks, each
+///   at most zlib's bound; with a shard's index;
+/// - unsharded: per writer ([`WRITERS`]) a chunk copied out of the row and its gzip stream
+///   (at most the chunk and zlib's bound) and deflate state.
+///
+/// Level 0's chunk is the largest, and levels are written one after another.
+pub fn writer_bytes(dims: [usize; 3], layout: &Layout, threads: usize) -> Result<u64> {
+    let levels = plan(dims, layout)?;
+    let rows = rows_bytes(&levels);
+    let [cz, cy, cx] = levels[0].chunk.map(|c| c as u64);
+    let chunk = cz.saturating_mul(cy).saturating_mul(cx);
+    let bound = shard::gzip_bound(chunk);
+    let threads = threads.max(1) as u64;
+    let writing = match levels[0].shard {
+        Some([_, sy, sx]) => {
+            let index = ((sy / levels[0].chunk[1]) * (sx / levels[0].chunk[2])) as u64 * 16;
+            let batch = shard::BATCH_PER_THREAD as u64 * threads;
+            threads
+                .saturating_mul(chunk.saturating_add(DEFLATE_STATE))
+                .saturating_add(batch.saturating_mul(bound))
+                .saturating_add(index.saturating_mul(2))
+        }
+        None => (WRITERS as u64)
+            .saturating_mul(chunk.saturating_add(bound).saturating_add(DEFLATE_STATE)),
+    };
+    Ok(rows.saturating_add(writing))
+}
+
+/// An upper bound of the memory of a run into a store of `layout` (docs/memory.md): the
 /// voxelizer's without a volume ([`csgpix_voxel::memory_estimate_rows`]) and
 /// [`writer_bytes`].
-pub fn memory_estimate(
-    grid: &Grid,
-    chunk: [usize; 3],
-    prims: usize,
-    threads: usize,
-) -> Result<u64> {
-    let held = writer_bytes(grid.dims, chunk)?;
+pub fn memory_estimate(grid: &Grid, layout: &Layout, prims: usize, threads: usize) -> Result<u64> {
+    let held = writer_bytes(grid.dims, layout, threads)?;
     Ok(csgpix_voxel::memory_estimate_rows(
         grid, prims, threads, held,
     ))
 }
+
+/// A level's array and what this process wrote into it.
+struct LevelArray {
+    level: Level,
+    array: Array<FilesystemStore>,
+    /// Shard (or chunk) files written by this `ZarrVolume`.
+    written: AtomicU64,
+}
+
+/// A csgpix volume in a Zarr v3 store on the filesystem: the group, and a uint8 array per
+/// level of its pyramid at `0`, `1`, …, shape (nz, ny, nx) halved per level, written a chunk
+/// row at a time.
+pub struct ZarrVolume {
+    path: PathBuf,
+    grid: Grid,
+    /// Inner chunks per shard side (1: unsharded).
+    shard: usize,
+    levels: Vec<LevelArray>,
+}
+
+impl std::fmt::Debug for ZarrVolume {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ZarrVolume")
+            .field("path", &self.path)
+            .field("grid", &self.grid)
+            .field("shard", &self.shard)
+            .field("levels", &self.levels())
+            .finish()
+    }
+}
+
+// A binding holds a store across threads (a Python class must be `Send`), and rows are
+// written from several: checked when the crate compiles.
+const _: fn() = || {
+    fn shared<T: Send + Sync>() {}
+    shared::<ZarrVolume>();
+    shared::<Error>();
+};
 
 fn store_err(path: &Path) -> impl Fn(&dyn std::fmt::Display) -> Error + '_ {
     move |e| Error::Store {
@@ -204,25 +394,39 @@ fn zyx(v: DVec3) -> [f64; 3] {
 }
 
 /// The group's attributes: OME-Zarr 0.5's `ome` (<https://ngff.openmicroscopy.org/0.5/>,
-/// "multiscales": axes, one dataset with exactly one scale then one translation) and ours.
+/// "multiscales": axes, one dataset per level with exactly one scale then one translation)
+/// and ours. Level l's voxel is 2^l of level 0's along each axis, and its voxel 0 covers
+/// level 0's voxels 0..2^l: its centre is `(2^l − 1)/2` voxels of level 0 past theirs.
 /// Keys are written in this order (serde_json keeps insertion order under zarrs), so the
-/// bytes of `zarr.json` depend on the grid and the texts alone.
-fn group_attributes(grid: &Grid, attrs: &VolumeAttrs) -> serde_json::Map<String, Value> {
+/// bytes of `zarr.json` depend on the grid, the layout and the texts alone.
+fn group_attributes(
+    grid: &Grid,
+    chunk: [usize; 3],
+    shard: usize,
+    levels: usize,
+    attrs: &VolumeAttrs,
+) -> serde_json::Map<String, Value> {
     let axis = |name: &str| json!({"name": name, "type": "space"});
     let origin = grid.centre(0, 0, 0);
     let spacing = grid.voxel();
+    let datasets: Vec<Value> = (0..levels)
+        .map(|l| {
+            let f = (1u64 << l) as f64;
+            json!({
+                "path": l.to_string(),
+                "coordinateTransformations": [
+                    {"type": "scale", "scale": zyx(spacing * f)},
+                    {"type": "translation", "translation": zyx(origin + spacing * ((f - 1.0) / 2.0))},
+                ],
+            })
+        })
+        .collect();
     let ome = json!({
         "version": "0.5",
         "multiscales": [{
             "name": "csgpix",
             "axes": [axis("z"), axis("y"), axis("x")],
-            "datasets": [{
-                "path": LEVEL,
-                "coordinateTransformations": [
-                    {"type": "scale", "scale": zyx(spacing)},
-                    {"type": "translation", "translation": zyx(origin)},
-                ],
-            }],
+            "datasets": datasets,
         }],
     });
     let ours = json!({
@@ -234,6 +438,9 @@ fn group_attributes(grid: &Grid, attrs: &VolumeAttrs) -> serde_json::Map<String,
         "axes": "x, y, z above; the array is indexed [k, j, i] for voxel (i, j, k)",
         "comment": attrs.comment,
         "values": attrs.values,
+        "chunk": chunk,
+        "shard": shard,
+        "levels": levels,
     });
     let mut m = serde_json::Map::new();
     m.insert("ome".into(), ome);
@@ -252,19 +459,55 @@ fn codec_options() -> CodecOptions {
     CodecOptions::default().with_store_empty_chunks(false)
 }
 
+/// The array of `level`: uint8, fill 0, dimension names z, y, x; gzip at [`GZIP_LEVEL`],
+/// inside the `sharding_indexed` codec when sharded (index at the end, `bytes`
+/// little-endian, no checksum).
+fn array_builder(level: &Level) -> Result<ArrayBuilder, String> {
+    let [nx, ny, nz] = level.dims.map(|d| d as u64);
+    let u64s = |s: [usize; 3]| s.map(|c| c as u64).to_vec();
+    let gzip = Arc::new(GzipCodec::new(GZIP_LEVEL).map_err(|e| e.to_string())?);
+    let uint8 = zarrs::array::data_type::uint8();
+    let mut b = ArrayBuilder::new(
+        vec![nz, ny, nx],
+        u64s(level.grid_unit()),
+        uint8.clone(),
+        0u8,
+    );
+    match level.shard {
+        Some(_) => {
+            let inner = level
+                .chunk
+                .map(|c| std::num::NonZeroU64::new(c as u64).expect("chunk sides are > 0"))
+                .to_vec();
+            let sharding = ShardingCodecBuilder::new(inner, &uint8)
+                .bytes_to_bytes_codecs(vec![gzip])
+                .index_array_to_bytes_codec(Arc::new(BytesCodec::little()))
+                .index_bytes_to_bytes_codecs(vec![])
+                .build_arc();
+            b.array_to_bytes_codec(sharding);
+        }
+        None => {
+            b.bytes_to_bytes_codecs(vec![gzip]);
+        }
+    }
+    b.dimension_names(Some(["z", "y", "x"]));
+    Ok(b)
+}
+
 impl ZarrVolume {
     /// Write the metadata of a volume on `grid` at `path` (a new or empty directory): the
-    /// group's `zarr.json` with its OME-Zarr 0.5 and `csgpix` attributes, and the array's at
-    /// `path/0` (uint8, shape (nz, ny, nx), chunks `chunk` (Z, Y, X) cut to the grid by
-    /// [`chunk_shape`], fill 0, gzip at [`GZIP_LEVEL`], dimension names z, y, x). No chunk is
-    /// written: a volume nobody voxelizes reads as all 0.
+    /// group's `zarr.json` with its OME-Zarr 0.5 and `csgpix` attributes, and each level's
+    /// array at `path/L` ([`plan`]: uint8, shape (nz, ny, nx) halved per level, chunks
+    /// `layout.chunk` (Z, Y, X) cut to the grid, in shards of `layout.shard` chunks a side,
+    /// fill 0, gzip at [`GZIP_LEVEL`], dimension names z, y, x). No chunk is written: a
+    /// volume nobody voxelizes reads as all 0.
     pub fn create(
         path: &Path,
         grid: &Grid,
-        chunk: [usize; 3],
+        layout: &Layout,
         attrs: &VolumeAttrs,
     ) -> Result<ZarrVolume> {
-        let chunk = chunk_shape(grid.dims, chunk)?;
+        let levels = plan(grid.dims, layout)?;
         let err = store_err(path);
         let _writing = staged_write().ok_or(Error::Interrupted)?;
         match std::fs::read_dir(path) {
@@ -281,36 +524,43 @@ impl ZarrVolume {
         }
         let store = Arc::new(FilesystemStore::new(path).map_err(|e| err(&e))?);
         let group = GroupBuilder::new()
-            .attributes(group_attributes(grid, attrs))
+            .attributes(group_attributes(
+                grid,
+                levels[0].chunk,
+                layout.shard,
+                levels.len(),
+                attrs,
+            ))
             .build(store.clone(), "/")
             .map_err(|e| err(&e))?;
         group.store_metadata().map_err(|e| err(&e))?;
-        let [nx, ny, nz] = grid.dims.map(|d| d as u64);
-        let gzip = GzipCodec::new(GZIP_LEVEL).map_err(|e| err(&e))?;
-        let array = ArrayBuilder::new(
-            vec![nz, ny, nx],
-            chunk.map(|c| c as u64).to_vec(),
-            zarrs::array::data_type::uint8(),
-            0u8,
-        )
-        .bytes_to_bytes_codecs(vec![Arc::new(gzip)])
-        .dimension_names(Some(["z", "y", "x"]))
-        .build(store, &format!("/{LEVEL}"))
-        .map_err(|e| err(&e))?;
-        array
-            .store_metadata_opt(&metadata_options())
-            .map_err(|e| err(&e))?;
+        let mut arrays = vec![];
+        for (l, level) in levels.into_iter().enumerate() {
+            let array = array_builder(&level)
+                .map_err(|e| err(&e))?
+                .build(store.clone(), &format!("/{l}"))
+                .map_err(|e| err(&e))?;
+            array
+                .store_metadata_opt(&metadata_options())
+                .map_err(|e| err(&e))?;
+            arrays.push(LevelArray {
+                level,
+                array,
+                written: AtomicU64::new(0),
+            });
+        }
         Ok(ZarrVolume {
             path: path.into(),
-            array,
             grid: *grid,
-            chunk,
+            shard: layout.shard,
+            levels: arrays,
         })
     }
 
-    /// Open a volume [`create`](ZarrVolume::create) wrote (by this process or another):
-    /// its grid from the `csgpix` attribute, its chunk shape from the array, both checked
-    /// against each other.
+    /// Open a volume [`create`](ZarrVolume::create) wrote (by this process or another): its
+    /// grid and layout from the `csgpix` attribute, each level's array checked against them.
+    /// A store of one unsharded level from before shards and levels (no `chunk`, `shard` or
+    /// `levels` in the attribute) opens with its array's chunks.
     pub fn open(path: &Path) -> Result<ZarrVolume> {
         let err = store_err(path);
         let bad = |reason: String| Error::NotAVolume {
@@ -327,37 +577,78 @@ impl ZarrVolume {
             .get("csgpix")
             .ok_or_else(|| bad("no `csgpix` attribute".into()))?;
         let grid = grid_of(ours).map_err(|e| bad(format!("attribute `csgpix`: {e}")))?;
-        let array = Array::open(store, &format!("/{LEVEL}")).map_err(|e| bad(e.to_string()))?;
-        let [nx, ny, nz] = grid.dims.map(|d| d as u64);
-        if array.shape() != [nz, ny, nx] {
-            return Err(bad(format!(
-                "array shape {:?} is not (nz, ny, nx) of dims {:?}",
-                array.shape(),
-                grid.dims
-            )));
-        }
-        if array.data_type() != &zarrs::array::data_type::uint8() {
-            return Err(bad("the array is not uint8".into()));
-        }
-        let chunk = array
-            .chunk_shape_usize(&[0, 0, 0])
-            .map_err(|e| bad(e.to_string()))?;
-        let chunk: [usize; 3] = chunk
-            .try_into()
-            .map_err(|_| bad("the array is not 3D".into()))?;
-        // A regular grid: every chunk has the shape of the first.
-        if chunk.contains(&0) {
-            return Err(bad("a chunk side is 0".into()));
-        }
-        let [cz, cy, cx] = chunk.map(|c| c as u64);
-        if array.chunk_grid_shape() != [nz.div_ceil(cz), ny.div_ceil(cy), nx.div_ceil(cx)] {
-            return Err(bad("the chunk grid is not regular".into()));
+        let field = |key: &str| -> Result<Option<Value>> { Ok(ours.get(key).cloned()) };
+        let layout = match (field("chunk")?, field("shard")?, field("levels")?) {
+            (Some(c), Some(s), Some(l)) => {
+                let parse =
+                    |v: Value, what: &str| bad(format!("attribute `csgpix`: `{what}`: {v}"));
+                Layout {
+                    chunk: serde_json::from_value(c.clone()).map_err(|_| parse(c, "chunk"))?,
+                    shard: serde_json::from_value(s.clone()).map_err(|_| parse(s, "shard"))?,
+                    levels: Some(
+                        serde_json::from_value(l.clone()).map_err(|_| parse(l, "levels"))?,
+                    ),
+                }
+            }
+            _ => {
+                // Before shards and levels: one level, its chunks those of the array.
+                let array = Array::open(store.clone(), &format!("/{}", 0))
+                    .map_err(|e| bad(e.to_string()))?;
+                let chunk = array
+                    .chunk_shape_usize(&[0, 0, 0])
+                    .map_err(|e| bad(e.to_string()))?;
+                Layout {
+                    chunk: chunk
+                        .try_into()
+                        .map_err(|_| bad("the array is not 3D".into()))?,
+                    shard: 1,
+                    levels: Some(1),
+                }
+            }
+        };
+        let levels = plan(grid.dims, &layout).map_err(|e| bad(e.to_string()))?;
+        let mut arrays = vec![];
+        for (l, level) in levels.into_iter().enumerate() {
+            let bad = |what: String| bad(format!("level {l}: {what}"));
+            let array =
+                Array::open(store.clone(), &format!("/{l}")).map_err(|e| bad(e.to_string()))?;
+            let [nx, ny, nz] = level.dims.map(|d| d as u64);
+            if array.shape() != [nz, ny, nx] {
+                return Err(bad(format!(
+                    "array shape {:?} is not (nz, ny, nx) of dims {:?}",
+                    array.shape(),
+                    level.dims
+                )));
+            }
+            if array.data_type() != &zarrs::array::data_type::uint8() {
+                return Err(bad("the array is not uint8".into()));
+            }
+            // Chunks (or shards) and inner chunks as the attribute's layout makes them.
+            let want = array_builder(&level)
+                .map_err(&bad)?
+                .build_metadata()
+                .map_err(|e| bad(e.to_string()))?;
+            let have = serde_json::to_value(array.metadata()).map_err(|e| bad(e.to_string()))?;
+            let want = serde_json::to_value(want).map_err(|e| bad(e.to_string()))?;
+            for key in ["chunk_grid", "codecs"] {
+                if have[key] != want[key] {
+                    return Err(bad(format!(
+                        "`{key}` is {}, not {} as the `csgpix` attribute's layout makes it",
+                        have[key], want[key]
+                    )));
+                }
+            }
+            arrays.push(LevelArray {
+                level,
+                array,
+                written: AtomicU64::new(0),
+            });
         }
         Ok(ZarrVolume {
             path: path.into(),
-            array,
             grid,
-            chunk,
+            shard: layout.shard,
+            levels: arrays,
         })
     }
 
@@ -376,29 +667,70 @@ impl ZarrVolume {
         self.grid.dims
     }
 
-    /// The array's chunk shape, Z, Y, X.
+    /// Level 0's chunk shape (a shard's inner chunk when sharded), Z, Y, X.
     pub fn chunk(&self) -> [usize; 3] {
-        self.chunk
+        self.levels[0].level.chunk
     }
 
-    /// The slabs (k ranges) of each chunk row, in order: `cz` slabs each, the last fewer
-    /// when `cz` does not divide nz.
+    /// Inner chunks per shard side (1: unsharded).
+    pub fn shard(&self) -> usize {
+        self.shard
+    }
+
+    /// The pyramid's levels, level 0 first.
+    pub fn levels(&self) -> Vec<Level> {
+        self.levels.iter().map(|v| v.level).collect()
+    }
+
+    /// The layout the store was created with (its levels given).
+    pub fn layout(&self) -> Layout {
+        Layout {
+            chunk: self.chunk(),
+            shard: self.shard,
+            levels: Some(self.levels.len()),
+        }
+    }
+
+    /// Shard files (chunk files when unsharded) this value has written, per level.
+    pub fn files_written(&self) -> Vec<u64> {
+        self.levels
+            .iter()
+            .map(|v| v.written.load(Ordering::Relaxed))
+            .collect()
+    }
+
+    /// The slabs (k ranges) of each chunk row of level 0, in order: `cz` slabs each, the
+    /// last fewer when `cz` does not divide nz. Row r of every coarser level is made from
+    /// row r of level 0.
     pub fn chunk_rows(&self) -> Vec<Range<usize>> {
-        let (nz, cz) = (self.grid.dims[2], self.chunk[0]);
+        let (nz, cz) = (self.grid.dims[2], self.chunk()[0]);
         (0..nz).step_by(cz).map(|a| a..(a + cz).min(nz)).collect()
     }
 
     /// Bytes of the largest chunk row's slices (what [`voxelize_rows`] buffers).
     pub fn row_bytes(&self) -> usize {
         let [nx, ny, nz] = self.grid.dims;
-        self.chunk[0].min(nz) * ny * nx
+        self.chunk()[0].min(nz) * ny * nx
     }
 
-    /// Store chunk row `row`: `slices` are its slabs' slices in order of k, each nx × ny
-    /// bytes, X fastest then Y (the voxelizer's). Every chunk of the row is written (gzip),
-    /// [`WRITERS`] at a time; a chunk all 0 is not written, and a file left for it by an
-    /// earlier write is removed. On an error the first one is returned, and chunks of the
-    /// row may be written or not.
+    /// Level `l`'s whole array as zarrs reads it, C order (nz, ny, nx) of the level: for
+    /// tests and small stores.
+    pub fn read_level(&self, l: usize) -> Result<Vec<u8>> {
+        let a = &self
+            .levels
+            .get(l)
+            .ok_or_else(|| Error::Msg(format!("level {l}: the store has {}", self.levels.len())))?
+            .array;
+        a.retrieve_array_subset(&a.subset_all())
+            .map_err(|e| store_err(&self.path)(&e))
+    }
+
+    /// Store chunk row `row` of every level: `slices` are level 0's slabs' slices in order
+    /// of k, each nx × ny bytes, X fastest then Y (the voxelizer's); each coarser level's
+    /// row is [`downsample`]d from the level below's. Each shard (or chunk) with a non-zero
+    /// voxel is written; one all 0 is not, and a file left for it by an earlier write is
+    /// removed. On an error the first one is returned, and files of the row may be written
+    /// or not.
     pub fn write_row(&self, row: usize, slices: &[u8]) -> Result<()> {
         let rows = self.chunk_rows();
         let slabs = rows
@@ -419,31 +751,76 @@ impl ZarrVolume {
                 ny,
             });
         }
-        let [cz, cy, cx] = self.chunk;
-        let across = nx.div_ceil(cx);
-        let chunks = ny.div_ceil(cy) * across;
+        let mut unsynced = shard::Unsynced::default();
+        self.write_level_row(0, row, slices, slabs, &mut unsynced)?;
+        let mut below: Option<Vec<u8>> = None;
+        let mut size = [nx, ny, slabs];
+        for l in 1..self.levels.len() {
+            let next = downsample(below.as_deref().unwrap_or(slices), size);
+            size = size.map(|d| d.div_ceil(2));
+            self.write_level_row(l, row, &next, size[2], &mut unsynced)?;
+            below = Some(next);
+        }
+        unsynced.flush()
+    }
+
+    /// Level `l`'s chunk row `row`: `slabs` slices of the level's nx × ny.
+    fn write_level_row(
+        &self,
+        l: usize,
+        row: usize,
+        slices: &[u8],
+        slabs: usize,
+        unsynced: &mut shard::Unsynced,
+    ) -> Result<()> {
+        let v = &self.levels[l];
+        let [nx, ny, _] = v.level.dims;
+        let cut = shard::RowCut {
+            slices,
+            nx,
+            ny,
+            slabs,
+            chunk: v.level.chunk,
+        };
+        let written = match v.level.shard {
+            Some([_, sy, sx]) => {
+                let per = [sy / v.level.chunk[1], sx / v.level.chunk[2]];
+                shard::write_row(&self.path.join(l.to_string()), row, &cut, per, unsynced)?
+            }
+            None => self.write_chunks(&v.array, row, &cut)?,
+        };
+        v.written.fetch_add(written, Ordering::Relaxed);
+        Ok(())
+    }
+
+    /// An unsharded level's row, one chunk file each through zarrs, [`WRITERS`] at a time.
+    fn write_chunks(
+        &self,
+        array: &Array<FilesystemStore>,
+        row: usize,
+        cut: &shard::RowCut,
+    ) -> Result<u64> {
+        let [_, cy, cx] = cut.chunk;
+        let across = cut.nx.div_ceil(cx);
+        let chunks = cut.ny.div_ceil(cy) * across;
         let options = codec_options();
+        let written = AtomicU64::new(0);
         let write = |c: usize| -> Result<()> {
             let (bj, bi) = (c / across, c % across);
-            let (j0, i0) = (bj * cy, bi * cx);
-            let (h, w) = (cy.min(ny - j0), cx.min(nx - i0));
-            // The chunk's C-order bytes; past the grid's edge (the last chunk of an axis
-            // that `c` does not divide) the fill value, as the Zarr spec pads edge chunks.
-            let mut chunk = vec![0u8; cz * cy * cx];
-            for z in 0..slabs {
-                for y in 0..h {
-                    let src = (z * ny + j0 + y) * nx + i0;
-                    let dst = (z * cy + y) * cx;
-                    chunk[dst..dst + w].copy_from_slice(&slices[src..src + w]);
-                }
-            }
             let at = [row as u64, bj as u64, bi as u64];
             // The store makes the chunk's directories as it writes: never after a signal's
             // cleanup has removed a staged store (crates/scene/src/output.rs).
             let _writing = staged_write().ok_or(Error::Interrupted)?;
-            self.array
-                .store_chunk_opt(&at, chunk, &options)
-                .map_err(|e| store_err(&self.path)(&e))
+            let err = store_err(&self.path);
+            match cut.chunk_bytes(bj, bi) {
+                Some(chunk) => {
+                    written.fetch_add(1, Ordering::Relaxed);
+                    array
+                        .store_chunk_opt(&at, chunk, &options)
+                        .map_err(|e| err(&e))
+                }
+                None => array.erase_chunk(&at).map_err(|e| err(&e)),
+            }
         };
         // WRITERS threads take the row's chunks in turn; the first error stops them all.
         let (next, failed) = (AtomicUsize::new(0), AtomicBool::new(false));
@@ -468,7 +845,8 @@ impl ZarrVolume {
                 first = first.and(r);
             }
             first
-        })
+        })?;
+        Ok(written.into_inner())
     }
 }
 
@@ -568,11 +946,20 @@ mod tests {
         VolumeAttrs::new("test", "codes")
     }
 
-    /// The whole array as zarrs reads it, C order (nz, ny, nx).
-    fn read_all(v: &ZarrVolume) -> Vec<u8> {
-        v.array
-            .retrieve_array_subset(&v.array.subset_all())
-            .unwrap()
+    fn unsharded(chunk: [usize; 3]) -> Layout {
+        Layout {
+            chunk,
+            shard: 1,
+            levels: Some(1),
+        }
+    }
+
+    fn sharded(chunk: [usize; 3], shard: usize, levels: usize) -> Layout {
+        Layout {
+            chunk,
+            shard,
+            levels: Some(levels),
+        }
     }
 
     #[test]
@@ -586,7 +973,7 @@ mod tests {
         let v = ZarrVolume::create(
             &dir.path().join("a"),
             &grid([5, 6, 11]),
-            [4, 4, 4],
+            &unsharded([4, 4, 4]),
             &attrs(),
         )
         .unwrap();
@@ -595,20 +982,171 @@ mod tests {
         assert_eq!(v.row_bytes(), 4 * 6 * 5);
     }
 
-    /// Voxel (i, j, k) is element [k, j, i]; rows written in any order, edge chunks cut.
+    /// The levels and shards of the rule (docs/zarr.md): depth halved per level, sides cut
+    /// to each level, shards a whole number of chunks cut to the level.
     #[test]
-    fn a_row_lands_at_k_j_i() {
-        let dir = tempfile::tempdir().unwrap();
-        let [nx, ny, nz] = [5, 6, 7];
-        let v = ZarrVolume::create(
-            &dir.path().join("a"),
-            &grid([nx, ny, nz]),
-            [3, 4, 2],
-            &attrs(),
+    fn the_plan_halves_levels_and_cuts_shards() {
+        let p = plan([1000, 300, 130], &sharded([64, 64, 64], 4, 3)).unwrap();
+        assert_eq!(
+            p,
+            [
+                Level {
+                    dims: [1000, 300, 130],
+                    chunk: [64, 64, 64],
+                    shard: Some([64, 256, 256])
+                },
+                Level {
+                    dims: [500, 150, 65],
+                    chunk: [32, 64, 64],
+                    shard: Some([32, 192, 256])
+                },
+                Level {
+                    dims: [250, 75, 33],
+                    chunk: [16, 64, 64],
+                    shard: Some([16, 128, 256])
+                },
+            ]
+        );
+        assert_eq!(p[0].files_per_row(), 2 * 4);
+        assert_eq!(p[2].files_per_row(), 1);
+        // Defaults: levels until the largest side is at most 256, within the depth's halvings.
+        assert_eq!(default_levels([384; 3]), 2);
+        assert_eq!(default_levels([256, 10, 10]), 1);
+        assert_eq!(default_levels([4096; 3]), 5);
+        assert_eq!(default_levels([16384; 3]), 7);
+        assert_eq!(default_levels([32768; 3]), 8);
+        assert_eq!(max_levels([32768; 3], [64; 3]), 7);
+        assert_eq!(max_levels([100, 100, 100], [12, 64, 64]), 3);
+        // One row: any depth halves; no level past 1×1×1.
+        assert_eq!(max_levels([5, 3, 7], [7, 3, 5]), 4);
+        let one = plan([5, 3, 7], &sharded([64; 3], 2, 4)).unwrap();
+        assert_eq!(one[3].dims, [1, 1, 1]);
+        assert_eq!(one[3].chunk, [1, 1, 1]);
+        assert_eq!(one[1].chunk, [4, 2, 3]);
+        let l = plan([100, 100, 100], &Layout::new([12, 64, 64])).unwrap();
+        assert_eq!(l.len(), 1, "100 ≤ 256: no pyramid by default");
+        assert_eq!(
+            plan([100, 100, 100], &sharded([12, 64, 64], 64, 4)).unwrap_err(),
+            Error::BadLevels {
+                levels: 4,
+                max: 3,
+                depth: 12
+            }
+        );
+        assert_eq!(
+            plan([9; 3], &sharded([3; 3], 0, 1)).unwrap_err(),
+            Error::BadShard
+        );
+        assert!(plan([9; 3], &sharded([3; 3], 2, 0)).is_err());
+        // Unsharded: no shard at any level.
+        let u = plan(
+            [300, 20, 20],
+            &Layout {
+                shard: 1,
+                ..Layout::new([4; 3])
+            },
         )
         .unwrap();
+        assert_eq!(u.len(), 2);
+        assert!(u.iter().all(|v| v.shard.is_none()));
+    }
+
+    /// Voxel (i, j, k) is element [k, j, i]; rows written in any order, edge chunks cut;
+    /// sharded and not.
+    #[test]
+    fn a_row_lands_at_k_j_i() {
+        let [nx, ny, nz] = [5, 6, 7];
         let value = |i: usize, j: usize, k: usize| (1 + i + 10 * j + 100 * k) as u8;
-        for (row, slabs) in v.chunk_rows().into_iter().enumerate().rev() {
+        for (layout, file) in [
+            (unsharded([3, 4, 2]), "0/c/2/1/2"),     // 3 rows of 2 × 3 chunks
+            (sharded([3, 4, 2], 2, 1), "0/c/2/0/1"), // shards of 2 × 2 chunks: 1 × 2
+        ] {
+            let dir = tempfile::tempdir().unwrap();
+            let v = ZarrVolume::create(
+                &dir.path().join("a"),
+                &grid([nx, ny, nz]),
+                &layout,
+                &attrs(),
+            )
+            .unwrap();
+            for (row, slabs) in v.chunk_rows().into_iter().enumerate().rev() {
+                let mut slices = vec![];
+                for k in slabs {
+                    for j in 0..ny {
+                        slices.extend((0..nx).map(|i| value(i, j, k)));
+                    }
+                }
+                v.write_row(row, &slices).unwrap();
+            }
+            let all = v.read_level(0).unwrap();
+            for k in 0..nz {
+                for j in 0..ny {
+                    for i in 0..nx {
+                        assert_eq!(
+                            all[(k * ny + j) * nx + i],
+                            value(i, j, k),
+                            "{layout:?} ({i}, {j}, {k})"
+                        );
+                    }
+                }
+            }
+            assert!(dir.path().join("a").join(file).is_file(), "{layout:?}");
+            let files = v.files_written();
+            assert_eq!(
+                files,
+                [v.levels()[0].files_per_row() as u64 * 3],
+                "{layout:?}"
+            );
+        }
+    }
+
+    /// A chunk that becomes all 0 loses its file (sharded: its index entry, then its shard's
+    /// file); the rest read as 0 without one.
+    #[test]
+    fn all_zero_chunks_have_no_file() {
+        for layout in [unsharded([2, 4, 2]), sharded([2, 4, 2], 2, 1)] {
+            let dir = tempfile::tempdir().unwrap();
+            let path = dir.path().join("a");
+            let v = ZarrVolume::create(&path, &grid([4, 4, 4]), &layout, &attrs()).unwrap();
+            let mut row = vec![0u8; 2 * 4 * 4];
+            row[3] = 9; // voxel (3, 0, 0): chunk (0, 0, 1)
+            v.write_row(0, &row).unwrap();
+            let (kept, gone) = match layout.shard {
+                1 => ("0/c/0/0/1", "0/c/0/0/0"),
+                _ => ("0/c/0/0/0", "0/c/1/0/0"),
+            };
+            assert!(path.join(kept).is_file(), "{layout:?}");
+            assert!(!path.join(gone).exists(), "{layout:?}");
+            if layout.shard > 1 {
+                // One inner chunk of two, and a 2-entry index: (offset 0, its length) and
+                // (MAX, MAX) for the empty one.
+                let bytes = std::fs::read(path.join(kept)).unwrap();
+                let index: Vec<u64> = bytes[bytes.len() - 32..]
+                    .chunks(8)
+                    .map(|b| u64::from_le_bytes(b.try_into().unwrap()))
+                    .collect();
+                assert_eq!(index[..2], [u64::MAX, u64::MAX]);
+                assert_eq!(index[2..], [0, bytes.len() as u64 - 32]);
+            }
+            assert_eq!(v.read_level(0).unwrap()[3], 9);
+            v.write_row(0, &[0; 32]).unwrap();
+            assert!(!path.join(kept).exists(), "{layout:?}");
+            assert!(v.read_level(0).unwrap().iter().all(|&x| x == 0));
+        }
+    }
+
+    /// Each level read back is the downsample of the one below, and is placed at the centre
+    /// of the voxels it covers.
+    #[test]
+    fn levels_are_downsamples_of_the_level_below() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("a");
+        let [nx, ny, nz] = [13, 9, 11];
+        let g = grid([nx, ny, nz]);
+        let v = ZarrVolume::create(&path, &g, &sharded([4, 4, 4], 2, 3), &attrs()).unwrap();
+        assert_eq!(v.chunk_rows().len(), 3);
+        let value = |i: usize, j: usize, k: usize| ((i * 7 + j * 3 + k) % 5) as u8;
+        for (row, slabs) in v.chunk_rows().into_iter().enumerate() {
             let mut slices = vec![];
             for k in slabs {
                 for j in 0..ny {
@@ -617,36 +1155,26 @@ mod tests {
             }
             v.write_row(row, &slices).unwrap();
         }
-        let all = read_all(&v);
-        for k in 0..nz {
-            for j in 0..ny {
-                for i in 0..nx {
-                    assert_eq!(
-                        all[(k * ny + j) * nx + i],
-                        value(i, j, k),
-                        "({i}, {j}, {k})"
-                    );
-                }
-            }
+        let mut want = v.read_level(0).unwrap();
+        let mut dims = [nx, ny, nz];
+        for l in 1..3 {
+            want = downsample(&want, dims);
+            dims = dims.map(|d| d.div_ceil(2));
+            assert_eq!(v.levels()[l].dims, dims);
+            assert_eq!(v.read_level(l).unwrap(), want, "level {l}");
         }
-        // 3 rows of 2 × 3 chunks.
-        assert!(dir.path().join("a/0/c/2/1/2").is_file());
-    }
-
-    /// A chunk that becomes all 0 loses its file; the rest read as 0 without one.
-    #[test]
-    fn all_zero_chunks_have_no_file() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("a");
-        let v = ZarrVolume::create(&path, &grid([4, 4, 4]), [2, 4, 2], &attrs()).unwrap();
-        let mut row = vec![0u8; 2 * 4 * 4];
-        row[3] = 9; // voxel (3, 0, 0): chunk (0, 0, 1)
-        v.write_row(0, &row).unwrap();
-        assert!(path.join("0/c/0/0/1").is_file());
-        assert!(!path.join("0/c/0/0/0").exists());
-        v.write_row(0, &[0; 32]).unwrap();
-        assert!(!path.join("0/c/0/0/1").exists());
-        assert!(read_all(&v).iter().all(|&x| x == 0));
+        let group: Value =
+            serde_json::from_slice(&std::fs::read(path.join("zarr.json")).unwrap()).unwrap();
+        let ds = &group["attributes"]["ome"]["multiscales"][0]["datasets"];
+        let t = &ds[2]["coordinateTransformations"];
+        let (o, s) = (g.centre(0, 0, 0), g.voxel());
+        assert_eq!(ds[2]["path"], "2");
+        assert_eq!(t[0]["scale"], json!(zyx(s * 4.0)));
+        // Level 2's voxel 0 covers level 0's 0..4: its centre is 1.5 voxels past theirs.
+        assert_eq!(t[1]["translation"], json!(zyx(o + s * 1.5)));
+        let reopened = ZarrVolume::open(&path).unwrap();
+        assert_eq!(reopened.levels(), v.levels());
+        assert_eq!(reopened.layout(), sharded([4, 4, 4], 2, 3));
     }
 
     #[test]
@@ -654,9 +1182,10 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("a");
         let g = grid([9, 8, 7]);
-        ZarrVolume::create(&path, &g, [5, 5, 5], &attrs()).unwrap();
+        ZarrVolume::create(&path, &g, &Layout::new([5, 5, 5]), &attrs()).unwrap();
         let v = ZarrVolume::open(&path).unwrap();
         assert_eq!((*v.grid(), v.chunk(), v.dims()), (g, [5, 5, 5], [9, 8, 7]));
+        assert_eq!(v.shard(), DEFAULT_SHARD);
 
         // A Zarr group that is not ours.
         let foreign = dir.path().join("b");
@@ -676,19 +1205,38 @@ mod tests {
         let e = ZarrVolume::open(&path).unwrap_err().to_string();
         assert!(e.contains("not a csgpix Zarr volume"), "{e}");
         // create: only where nothing is.
-        let e = ZarrVolume::create(&path, &g, [5, 5, 5], &attrs()).unwrap_err();
+        let e = ZarrVolume::create(&path, &g, &Layout::new([5, 5, 5]), &attrs()).unwrap_err();
         assert_eq!(e, Error::NotEmpty { path: path.clone() });
         let file = dir.path().join("f");
         std::fs::write(&file, b"x").unwrap();
-        let e = ZarrVolume::create(&file, &g, [5, 5, 5], &attrs()).unwrap_err();
+        let e = ZarrVolume::create(&file, &g, &Layout::new([5, 5, 5]), &attrs()).unwrap_err();
         assert_eq!(e, Error::NotEmpty { path: file });
+
+        // An array whose shards are not what the attribute says.
+        let c = dir.path().join("c");
+        ZarrVolume::create(&c, &g, &sharded([2, 2, 2], 2, 1), &attrs()).unwrap();
+        let meta = c.join("0/zarr.json");
+        let mut m: Value = serde_json::from_slice(&std::fs::read(&meta).unwrap()).unwrap();
+        assert_eq!(
+            m["chunk_grid"]["configuration"]["chunk_shape"],
+            json!([2, 4, 4])
+        );
+        m["chunk_grid"]["configuration"]["chunk_shape"] = json!([2, 2, 4]);
+        std::fs::write(&meta, m.to_string()).unwrap();
+        let e = ZarrVolume::open(&c).unwrap_err().to_string();
+        assert!(e.contains("level 0: `chunk_grid` is"), "{e}");
     }
 
     #[test]
     fn bad_rows_are_refused_in_one_line() {
         let dir = tempfile::tempdir().unwrap();
-        let v = ZarrVolume::create(&dir.path().join("a"), &grid([2, 3, 5]), [4, 3, 2], &attrs())
-            .unwrap();
+        let v = ZarrVolume::create(
+            &dir.path().join("a"),
+            &grid([2, 3, 5]),
+            &Layout::new([4, 3, 2]),
+            &attrs(),
+        )
+        .unwrap();
         assert_eq!(
             v.write_row(2, &[]).unwrap_err().to_string(),
             "chunk row 2: the volume has rows 0..2"
@@ -697,5 +1245,27 @@ mod tests {
             v.write_row(1, &[1; 7]).unwrap_err().to_string(),
             "chunk row 1: expected 6 bytes (slabs 1 of 2x3), got 7"
         );
+    }
+
+    /// The writer's estimate grows with the rows and the chunk, not with the shard.
+    #[test]
+    fn the_writers_estimate() {
+        let d = [2048, 2048, 2048];
+        let s = |shard| {
+            writer_bytes(
+                d,
+                &Layout {
+                    shard,
+                    ..Layout::default()
+                },
+                2,
+            )
+            .unwrap()
+        };
+        // A shard costs its index alone, 16 bytes a chunk (64 is cut to the grid's 32).
+        assert_eq!(s(64) - s(16), 2 * 16 * (32 * 32 - 16 * 16));
+        let row0 = 64 * 2048 * 2048u64;
+        assert!(s(64) > row0 + row0 / 8 && s(64) < row0 + row0 / 7 + (8 << 20));
+        assert!(s(1) > row0 + 8 * (64 << 12));
     }
 }

@@ -1,0 +1,221 @@
+//! Shard files of Zarr v3's `sharding_indexed` codec, written as a stream: each inner chunk
+//! is gzipped and appended to its shard's file as soon as it is compressed, and the index
+//! (an offset and a length per inner chunk, little-endian u64, C order; both `u64::MAX` for
+//! an empty one) goes at the end (`index_location: "end"`). A shard is therefore never held
+//! whole: a run holds a batch of compressed inner chunks, not a shard (docs/zarr.md says why
+//! zarrs's own shard encoder is not used to write them; zarrs reads them back in the tests).
+//!
+//! <https://zarr-specs.readthedocs.io/en/latest/v3/codecs/sharding-indexed/index.html>
+
+use std::fs::File;
+use std::io::{Read, Write};
+use std::path::{Path, PathBuf};
+
+use csgpix_scene::output::staged_write;
+use rayon::prelude::*;
+
+use crate::{Error, Result, GZIP_LEVEL, WRITERS};
+
+/// Inner chunks compressed at once per thread of the pool: the batch is held compressed
+/// until it is appended, in order, to the shard files.
+pub(crate) const BATCH_PER_THREAD: usize = 2;
+
+/// zlib's worst case for `n` bytes in a gzip member (zarrs's `GzipCodec` bound): what a
+/// compressed inner chunk can take.
+pub(crate) fn gzip_bound(n: u64) -> u64 {
+    n + 10 + 8 + n.div_ceil(8) + n.div_ceil(64) + 5
+}
+
+/// gzip of `data` at [`GZIP_LEVEL`], as zarrs's gzip codec writes it (header time 0).
+pub(crate) fn gzip(data: &[u8]) -> std::io::Result<Vec<u8>> {
+    let mut e = flate2::read::GzEncoder::new(data, flate2::Compression::new(GZIP_LEVEL));
+    let mut out = Vec::with_capacity(gzip_bound(data.len() as u64) as usize);
+    e.read_to_end(&mut out)?;
+    Ok(out)
+}
+
+/// One level's chunk row as the writer sees it: the row's slices and how the level is cut.
+pub(crate) struct RowCut<'a> {
+    /// The row's slabs' slices in order, each `nx × ny`, X fastest.
+    pub slices: &'a [u8],
+    /// The level's voxels along X and Y, and the row's slabs.
+    pub nx: usize,
+    pub ny: usize,
+    pub slabs: usize,
+    /// The inner chunk, Z, Y, X (Z: the row's depth at this level).
+    pub chunk: [usize; 3],
+}
+
+impl RowCut<'_> {
+    /// Inner chunk (bj, bi) of the row in C order, padded with 0 past the grid's edges; None
+    /// when all its voxels are 0 (nothing is copied then).
+    pub fn chunk_bytes(&self, bj: usize, bi: usize) -> Option<Vec<u8>> {
+        let [cz, cy, cx] = self.chunk;
+        let (j0, i0) = (bj * cy, bi * cx);
+        let (h, w) = (cy.min(self.ny - j0), cx.min(self.nx - i0));
+        let line = |z: usize, y: usize| {
+            let src = (z * self.ny + j0 + y) * self.nx + i0;
+            &self.slices[src..src + w]
+        };
+        let any = (0..self.slabs).any(|z| (0..h).any(|y| line(z, y).iter().any(|&v| v != 0)));
+        if !any {
+            return None;
+        }
+        let mut chunk = vec![0u8; cz * cy * cx];
+        for z in 0..self.slabs {
+            for y in 0..h {
+                let dst = (z * cy + y) * cx;
+                chunk[dst..dst + w].copy_from_slice(line(z, y));
+            }
+        }
+        Some(chunk)
+    }
+}
+
+/// The shard being written.
+struct Open {
+    /// Shard (sj, si) of the row.
+    at: (usize, usize),
+    path: PathBuf,
+    file: Option<File>,
+    /// Offset and length of each inner chunk, C order; `u64::MAX` for none.
+    index: Vec<u64>,
+    end: u64,
+}
+
+/// Write one level's chunk row `row` as shard files `dir/c/ROW/SJ/SI` of `per` (Y, X) inner
+/// chunks each: every shard with a non-zero voxel, and no file (an existing one removed) for
+/// the others. Inner chunks are compressed a batch at a time on rayon's pool and appended in
+/// C order, so the bytes do not depend on the threads. Finished files are left to
+/// `unsynced` to sync. Returns the shard files written.
+pub(crate) fn write_row(
+    dir: &Path,
+    row: usize,
+    cut: &RowCut,
+    per: [usize; 2],
+    unsynced: &mut Unsynced,
+) -> Result<u64> {
+    let [_, cy, cx] = cut.chunk;
+    let (gy, gx) = (cut.ny.div_ceil(cy), cut.nx.div_ceil(cx));
+    let (shy, shx) = (gy.div_ceil(per[0]), gx.div_ceil(per[1]));
+    let io = |path: &Path, e: std::io::Error| Error::Store {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    };
+    // Every inner chunk of the row in the grid, shard by shard (row-major), each shard's in
+    // its C order: (shard, index in the shard, chunk j, chunk i).
+    let mut items = (0..shy * shx).flat_map(|s| {
+        let (sj, si) = (s / shx, s % shx);
+        (0..per[0] * per[1]).filter_map(move |q| {
+            let (bj, bi) = (sj * per[0] + q / per[1], si * per[1] + q % per[1]);
+            (bj < gy && bi < gx).then_some(((sj, si), q, bj, bi))
+        })
+    });
+    let batch = BATCH_PER_THREAD * rayon::current_num_threads().max(1);
+    let mut open: Option<Open> = None;
+    let mut written = 0u64;
+    loop {
+        let todo: Vec<_> = items.by_ref().take(batch).collect();
+        if todo.is_empty() {
+            break;
+        }
+        let packed: Vec<Option<Vec<u8>>> = todo
+            .par_iter()
+            .map(|&(_, _, bj, bi)| cut.chunk_bytes(bj, bi).map(|c| gzip(&c)).transpose())
+            .collect::<std::io::Result<_>>()
+            .map_err(|e| io(dir, e))?;
+        for (&(at, q, _, _), bytes) in todo.iter().zip(packed) {
+            if open.as_ref().is_none_or(|o| o.at != at) {
+                if let Some(o) = open.take() {
+                    unsynced.push(finish(o)?)?;
+                }
+                open = Some(Open {
+                    at,
+                    path: dir.join(format!("c/{row}/{}/{}", at.0, at.1)),
+                    file: None,
+                    index: vec![u64::MAX; 2 * per[0] * per[1]],
+                    end: 0,
+                });
+            }
+            let (Some(o), Some(bytes)) = (open.as_mut(), bytes) else {
+                continue;
+            };
+            if o.file.is_none() {
+                // Directories are made, and the file created, never after a signal's cleanup
+                // has removed a staged store (crates/scene/src/output.rs); once open, writes
+                // land in the file whatever becomes of its name.
+                let _writing = staged_write().ok_or(Error::Interrupted)?;
+                if let Some(parent) = o.path.parent() {
+                    std::fs::create_dir_all(parent).map_err(|e| io(parent, e))?;
+                }
+                o.file = Some(File::create(&o.path).map_err(|e| io(&o.path, e))?);
+                written += 1;
+            }
+            let file = o.file.as_mut().expect("opened above");
+            file.write_all(&bytes).map_err(|e| io(&o.path, e))?;
+            o.index[2 * q] = o.end;
+            o.index[2 * q + 1] = bytes.len() as u64;
+            o.end += bytes.len() as u64;
+        }
+    }
+    if let Some(o) = open.take() {
+        unsynced.push(finish(o)?)?;
+    }
+    Ok(written)
+}
+
+/// The shard's index appended, or its stale file removed when it has no inner chunk.
+fn finish(o: Open) -> Result<Option<(PathBuf, File)>> {
+    let io = |e: std::io::Error| Error::Store {
+        path: o.path.clone(),
+        message: e.to_string(),
+    };
+    let Some(mut file) = o.file else {
+        return match std::fs::remove_file(&o.path) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(io(e)),
+            _ => Ok(None),
+        };
+    };
+    let index: Vec<u8> = o.index.iter().flat_map(|v| v.to_le_bytes()).collect();
+    file.write_all(&index).map_err(io)?;
+    Ok(Some((o.path, file)))
+}
+
+/// Shard files written and not yet synced to the disk: synced [`WRITERS`] at once, each on
+/// a thread of its own (`sync_all` waits on the disk, as zarrs's store does for each chunk
+/// it writes, and one at a time a row's shards of every level would wait in turn), when
+/// that many are pending and when a row is done ([`Unsynced::flush`]).
+#[derive(Default)]
+pub(crate) struct Unsynced(Vec<(PathBuf, File)>);
+
+impl Unsynced {
+    fn push(&mut self, file: Option<(PathBuf, File)>) -> Result<()> {
+        self.0.extend(file);
+        match self.0.len() >= WRITERS {
+            true => self.flush(),
+            false => Ok(()),
+        }
+    }
+
+    /// Every pending file synced; the first error returned.
+    pub fn flush(&mut self) -> Result<()> {
+        let files = std::mem::take(&mut self.0);
+        std::thread::scope(|scope| {
+            let syncs: Vec<_> = files
+                .into_iter()
+                .map(|(path, f)| {
+                    scope.spawn(move || {
+                        f.sync_all().map_err(|e| Error::Store {
+                            path,
+                            message: e.to_string(),
+                        })
+                    })
+                })
+                .collect();
+            syncs.into_iter().try_for_each(|s| {
+                s.join()
+                    .unwrap_or_else(|_| Err(Error::Msg("a sync thread panicked".into())))
+            })
+        })
+    }
+}
