@@ -47,7 +47,7 @@ use csgpix_sculpt::octree::{OptimizedOctree, StoreBuilder};
 use csgpix_voxel::{Route, Slicer};
 
 /// The optimized octree of a sliced scene (`tree` its CSG tree), fed slice by slice from the
-/// voxelizer's interval route with the Blist (seed 000 §4.3.4: no dense volume of the scene
+/// voxelizer's run route with the Blist (seed 000 §4.3.4: no dense volume of the scene
 /// is made); `budget` bounds the leaves kept while building, in bytes. The store's own
 /// errors come back whole (e.g. [`csgpix_sculpt::Error::OverBudget`]), the voxelizer's as
 /// their message.
@@ -60,7 +60,7 @@ pub fn octree_from_scene(
     let mut b = csgpix_sculpt::octree::optimized::builder(slicer.grid.dims, budget)?;
     let streamed = csgpix_voxel::voxelize_streaming(
         slicer,
-        Route::Intervals,
+        Route::Runs { float: false },
         rtl_model::Equations::Derived.set(),
         &eval,
         &|| {},

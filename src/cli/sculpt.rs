@@ -242,7 +242,7 @@ fn load_nrrd(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     Ok((store, frame, dims))
 }
 
-/// Voxelizes the scene as `voxelize` does (word model, intervals route, Blist evaluator),
+/// Voxelizes the scene as `voxelize` does (word model, run route, Blist evaluator),
 /// feeding the optimized octree slice by slice.
 fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let name = a.input.display().to_string();

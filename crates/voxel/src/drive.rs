@@ -24,7 +24,8 @@ pub struct Work {
     pub cycles: u64,
     /// P·Vz frames drawn (primitives × slabs).
     pub frames: u64,
-    /// The evaluator's operations (§5.5).
+    /// The evaluator's operations (§5.5): per voxel (the stack: per slice) on the slab
+    /// routes, per segment of a column on [`Route::Runs`].
     pub ops: OpCounts,
     /// Pixel-clocks the simulator ran (array route: Σ over simulated frames of pixels ×
     /// clocks; 0 on the other routes, which simulate no pixel).
@@ -199,7 +200,8 @@ fn frame_mask(
 
 /// Voxelize: every slab's primitive masks by `route`, evaluated by `eval`, slabs in
 /// parallel; the result does not depend on the number of threads. `tick` is called once per
-/// finished slab (for a progress bar).
+/// finished slab (for a progress bar); on [`Route::Runs`] once per band of rows
+/// ([`crate::runs::ticks`] in all), which computes the volume column by column instead.
 pub fn voxelize(
     slicer: &Slicer,
     route: Route,
