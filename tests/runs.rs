@@ -264,3 +264,60 @@ fn grey_datasets_go_by_slab() {
     assert!(!csgpix::voxel::runs::applies(&slicer));
     check_equal(&slicer, &BlistEval::new(&l.scene.root));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+    /// A brick (any box of columns × any slab range) is that part of the whole volume.
+    #[test]
+    fn bricks_are_parts_of_the_whole_volume(
+        text in common::random_scene(),
+        corner in prop::array::uniform3(0usize..17),
+        size in prop::array::uniform3(0usize..17),
+        float in any::<bool>(),
+    ) {
+        let scene = parse_csg(&text, "random").unwrap();
+        let dims = [15, 13, 16];
+        let grid = Grid::of_scene(&scene, dims).unwrap();
+        let opts = SlicerOptions { panel: Some([4, 3]), ..SlicerOptions::default() };
+        let slicer = Slicer::new(&scene, grid, opts).unwrap();
+        let eval = BlistEval::new(&scene.root);
+        let (whole, _) = run(&slicer, Route::Runs { float }, &eval);
+        let lo = [0, 1, 2].map(|a| corner[a] % dims[a]);
+        let hi = [0, 1, 2].map(|a| (lo[a] + size[a]).min(dims[a]));
+        let b = csgpix::voxel::PixelBox { x0: lo[0], y0: lo[1], x1: hi[0].max(lo[0] + 1), y1: hi[1].max(lo[1] + 1) };
+        let (brick, filled) =
+            csgpix::voxel::runs::voxelize_brick(&slicer, float, &eval, b, lo[2]..hi[2]).unwrap();
+        let mut want = vec![];
+        for k in lo[2]..hi[2] {
+            for y in b.y0..b.y1 {
+                let at = (k * dims[1] + y) * dims[0];
+                want.extend_from_slice(&whole.voxels[at + b.x0..at + b.x1]);
+            }
+        }
+        prop_assert_eq!(filled, want.iter().filter(|&&v| v != 0).count());
+        prop_assert_eq!(brick, want);
+    }
+}
+
+#[test]
+fn a_brick_outside_the_grid_is_refused() {
+    let scene = parse_csg("cube(size = [2, 2, 2]);", "cube").unwrap();
+    let slicer = Slicer::new(
+        &scene,
+        Grid::of_scene(&scene, [4, 4, 4]).unwrap(),
+        SlicerOptions::default(),
+    )
+    .unwrap();
+    let eval = BlistEval::new(&scene.root);
+    let b = csgpix::voxel::PixelBox {
+        x0: 0,
+        y0: 0,
+        x1: 5,
+        y1: 4,
+    };
+    let err = csgpix::voxel::runs::voxelize_brick(&slicer, false, &eval, b, 0..4).unwrap_err();
+    assert!(
+        err.to_string().contains("not inside the grid 4x4x4"),
+        "{err}"
+    );
+}

@@ -161,29 +161,38 @@ impl<'a> Columns<'a> {
     /// The runs of every column of rows `y0..y1`, a panel at a time, and the evaluator's
     /// counts (one "slice" per panel, whose pixels are the panel's segments).
     pub fn rows(&self, eval: &dyn SliceEval, y0: usize, y1: usize) -> (ColumnRuns, OpCounts) {
-        let [w, _, _] = self.slicer.grid.dims;
+        let w = self.slicer.grid.dims[0];
+        self.columns(
+            eval,
+            PixelBox {
+                x0: 0,
+                y0,
+                x1: w,
+                y1,
+            },
+        )
+    }
+
+    /// The runs of the columns of `columns` (a brick's, within the array), panel by panel: a
+    /// panel cut by the box computes only the columns inside it.
+    pub fn columns(&self, eval: &dyn SliceEval, columns: PixelBox) -> (ColumnRuns, OpCounts) {
         let [pw, ph] = self.panel;
-        let columns = PixelBox {
-            x0: 0,
-            y0,
-            x1: w,
-            y1,
-        };
+        let across = self.panel_grid()[0];
         let mut per_column: Vec<Vec<Run>> = vec![vec![]; columns.pixels()];
         let mut counts = OpCounts::default();
-        for py in y0 / ph..y1.div_ceil(ph) {
-            for px in 0..self.panel_grid()[0] {
+        for py in columns.y0 / ph..columns.y1.div_ceil(ph) {
+            for px in columns.x0 / pw..columns.x1.div_ceil(pw) {
                 let b = PixelBox {
-                    x0: px * pw,
-                    y0: (py * ph).max(y0),
-                    x1: ((px + 1) * pw).min(w),
-                    y1: ((py + 1) * ph).min(y1),
+                    x0: (px * pw).max(columns.x0),
+                    y0: (py * ph).max(columns.y0),
+                    x1: ((px + 1) * pw).min(columns.x1),
+                    y1: ((py + 1) * ph).min(columns.y1),
                 };
-                let prims = &self.panels[py * self.panel_grid()[0] + px];
+                let prims = &self.panels[py * across + px];
                 let runs = self.panel_runs(eval, b, prims, &mut counts);
                 for (c, r) in runs.into_iter().enumerate() {
                     let (x, y) = (b.x0 + c % b.width(), b.y0 + c / b.width());
-                    per_column[(y - y0) * w + x] = r;
+                    per_column[(y - columns.y0) * columns.width() + (x - columns.x0)] = r;
                 }
             }
         }
@@ -463,7 +472,7 @@ pub fn voxelize_runs(
         .zip(bands)
         .map(|(mut rows, (y0, y1))| {
             let (runs, ops) = columns.rows(eval, y0, y1);
-            write_rows(&runs, nz, &mut rows);
+            write_rows(&runs, 0..nz, &mut rows);
             tick();
             (runs.filled(nz), ops)
         })
@@ -481,9 +490,10 @@ pub fn voxelize_runs(
     ))
 }
 
-/// Writes the runs of rows y0..y1 (all X) into `rows`, the volume's rows of those y for every
-/// slab, slab-major (`rows[k·(y1 − y0) + (y − y0)]`), left zero where a row is empty.
-pub fn write_rows(runs: &ColumnRuns, nz: usize, rows: &mut [&mut [u8]]) {
+/// Writes the runs of `runs`' columns over slabs `slabs` into `rows`: one row of the columns'
+/// width per (slab, y), slab-major (`rows[(k − k0)·h + (y − y0)]`), left as they are (zero)
+/// where a row is empty.
+pub fn write_rows(runs: &ColumnRuns, slabs: std::ops::Range<usize>, rows: &mut [&mut [u8]]) {
     let b = runs.columns;
     let (w, h) = (b.width(), b.height());
     let mut cur = vec![0u8; w];
@@ -492,22 +502,52 @@ pub fn write_rows(runs: &ColumnRuns, nz: usize, rows: &mut [&mut [u8]]) {
         let mut changes: Vec<(u32, u32, u8)> = vec![];
         for (x, c) in cur.iter_mut().enumerate() {
             let col = runs.column(b.x0 + x, b.y0 + y);
-            *c = col.first().map_or(0, |r| r.colour);
-            changes.extend(col.iter().skip(1).map(|r| (r.k, x as u32, r.colour)));
+            let at = col.partition_point(|r| (r.k as usize) <= slabs.start);
+            *c = at.checked_sub(1).map_or(0, |a| col[a].colour);
+            let later = col[at..].iter().take_while(|r| (r.k as usize) < slabs.end);
+            changes.extend(later.map(|r| (r.k, x as u32, r.colour)));
         }
         changes.sort_unstable_by_key(|c| c.0);
         let mut filled = cur.iter().filter(|&&c| c != 0).count();
         let mut next = changes.iter().peekable();
-        for k in 0..nz {
+        for k in slabs.clone() {
             while let Some(&(_, x, c)) = next.next_if(|c| c.0 as usize == k) {
                 let old = std::mem::replace(&mut cur[x as usize], c);
                 filled = filled + usize::from(c != 0) - usize::from(old != 0);
             }
             if filled > 0 {
-                rows[k * h + y].copy_from_slice(&cur);
+                rows[(k - slabs.start) * h + y].copy_from_slice(&cur);
             }
         }
     }
+}
+
+/// One brick of the volume: the columns of `columns` over slabs `slabs`, as the whole run
+/// gives them, in the volume's order within the brick (X fastest, then Y, then Z), and the
+/// voxels filled in it. What one task of a run split into bricks computes (docs/scale-out.md):
+/// only the brick's columns are evaluated, so its memory is the brick's voxels and its
+/// columns' runs (and each mesh primitive's crossings over its outline), not a whole slice's.
+pub fn voxelize_brick(
+    slicer: &Slicer,
+    float: bool,
+    eval: &dyn SliceEval,
+    columns: PixelBox,
+    slabs: std::ops::Range<usize>,
+) -> Result<(Vec<u8>, usize)> {
+    let [nx, ny, nz] = slicer.grid.dims;
+    if columns.x1 > nx || columns.y1 > ny || slabs.end > nz || slabs.start > slabs.end {
+        return Err(crate::Error::Msg(format!(
+            "brick {columns:?} × slabs {slabs:?} is not inside the grid {nx}x{ny}x{nz}"
+        )));
+    }
+    let (runs, _) = Columns::new(slicer, float)?.columns(eval, columns);
+    let filled = (0..runs.start.len() - 1)
+        .map(|c| filled_between(&runs.runs[runs.start[c]..runs.start[c + 1]], slabs.clone()))
+        .sum();
+    let mut voxels = vec![0u8; columns.pixels() * slabs.len()];
+    let mut rows: Vec<&mut [u8]> = voxels.chunks_mut(columns.width().max(1)).collect();
+    write_rows(&runs, slabs, &mut rows);
+    Ok((voxels, filled))
 }
 
 /// Slices `slabs` of the run route handed to `sink` in order of k, as
