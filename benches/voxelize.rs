@@ -1,27 +1,38 @@
 //! Voxelizing `vectors/scenes/twelve.csg` (13 convex solids under union, difference and
 //! intersection): csgpix's routes and evaluators against a peer, the `fidget` crate's JIT
-//! evaluating the same solids as an implicit expression. See `docs/voxelize-bench.md`.
+//! evaluating the same solids as an implicit expression, in two modes (dense and pruned); then
+//! the floor: each route's whole run against allocating, filling and writing the volume, on
+//! three scenes. See `docs/voxelize-bench.md`.
 //!
-//! `cargo bench --bench voxelize` (full: 128³ and 256³, median of 3) or
-//! `cargo bench --bench voxelize -- --quick` (64³ and 128³, one run); `--json` prints every
-//! figure as one JSON object instead of the table. Every figure comes from this run, measured
-//! back to back, so ratios suffer less from a busy machine than figures from separate runs
-//! would (they still move: see the doc). Threads: rayon's default pool (all cores).
+//! `cargo bench --bench voxelize` (full: the twelve.csg section at 128³ and 256³, median of 3,
+//! then the floor at 256³, 512³ and 1024³), `-- --quick` (64³ and 128³ for both, one run),
+//! `-- --floor` (the floor section only), `--sizes A,B,…` (the floor's sizes), `--cells A,B,…`
+//! (the pruned peer's cell sides, [`pruned::CELLS`] by default); `--json` prints every figure
+//! as one JSON object instead of the table. Every figure comes from this run, measured back to
+//! back, so ratios suffer less from a busy machine than figures from separate runs would (they
+//! still move: see the doc). Threads: rayon's default pool (all cores).
 //!
 //! * `word`: [`Route::Intervals`] with each evaluator. Wall time is from the parsed scene to
 //!   the volume ([`Slicer::new`] + [`voxelize`]); voxels/s is voxels of the grid over it; state
 //!   is [`SliceEval::state_bytes`] per voxel.
 //! * `cycle` vs `word`: the array routes (every P·Vz frame simulated) at small sizes only.
-//! * peer: every convex solid is the max over its faces of n·p − d (outward unit normal by
-//!   Newell's method); union = min, intersection = max, difference = max(a, −b), complement =
-//!   −a; JIT-compiled, evaluated one Z-slice per call at the voxel centres ([`Grid::centre`]),
-//!   inside when the value is <= 0. Its wall time includes building and compiling the
-//!   expression. It samples the centre point where csgpix samples the centre's Z-segment
-//!   (`crates/voxel/src/drive.rs`), so the two may differ at surfaces only: the agreement figures count
-//!   differing voxels and how many of them lie on a surface of either volume.
+//! * peer, dense mode: every convex solid is the max over its faces of n·p − d (outward unit
+//!   normal by Newell's method); union = min, intersection = max, difference = max(a, −b),
+//!   complement = −a; JIT-compiled, evaluated one Z-slice per call at the voxel centres
+//!   ([`Grid::centre`]), inside when the value is <= 0: every clause at every voxel. Its wall
+//!   time includes building and compiling the expression. It samples the centre point where
+//!   csgpix samples the centre's Z-segment (`crates/voxel/src/drive.rs`), so the two may
+//!   differ at surfaces only: the agreement figures count differing voxels and how many of
+//!   them lie on a surface of either volume.
+//! * peer, pruned mode (`voxelize/pruned.rs`): the same expression evaluated as fidget's own
+//!   renderers do, by recursive subdivision with interval arithmetic and tape simplification;
+//!   voxel for voxel the dense mode's (asserted at the smallest size).
 //! * phases: the word route's work split into passes (slicer setup, per-pixel slab ranges,
 //!   toggle lists, the slab-mask sweep, evaluation, colour codes, assembly), each pass over
 //!   all slabs in parallel except assembly, which `voxelize` also does on one thread.
+//! * floor (`voxelize/floor.rs`): twelve.csg, csg-logo.csg and figure-5.6.csg (a dataset
+//!   beside solids), each route of [`floor_routes`] and both peers from the scene to the NRRD
+//!   file, against allocating, filling and writing the same bytes.
 
 use std::time::Instant;
 

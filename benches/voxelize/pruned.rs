@@ -27,7 +27,8 @@ use rayon::prelude::*;
 
 /// Cell sides in voxels, top level first (the bench's `--cells` replaces them); each divides
 /// the one before it. 64 → 16 → 4 splits by 4 per axis (64 children) per level; the 4³ leaves
-/// are evaluated in bulk, 64 points a call. docs/voxelize-bench.md compares other choices.
+/// are evaluated in bulk, 64 points a call. Other choices timed within the run-to-run spread
+/// of this shared machine (docs/voxelize-bench.md), so none replaced it.
 pub const CELLS: [usize; 3] = [64, 16, 4];
 
 type Handle = RenderHandle<JitFunction>;
