@@ -1,27 +1,38 @@
 //! Voxelizing `vectors/scenes/twelve.csg` (13 convex solids under union, difference and
 //! intersection): csgpix's routes and evaluators against a peer, the `fidget` crate's JIT
-//! evaluating the same solids as an implicit expression. See `docs/voxelize-bench.md`.
+//! evaluating the same solids as an implicit expression, in two modes (dense and pruned); then
+//! the floor: each route's whole run against allocating, filling and writing the volume, on
+//! three scenes. See `docs/voxelize-bench.md`.
 //!
-//! `cargo bench --bench voxelize` (full: 128³ and 256³, median of 3) or
-//! `cargo bench --bench voxelize -- --quick` (64³ and 128³, one run); `--json` prints every
-//! figure as one JSON object instead of the table. Every figure comes from this run, measured
-//! back to back, so ratios suffer less from a busy machine than figures from separate runs
-//! would (they still move: see the doc). Threads: rayon's default pool (all cores).
+//! `cargo bench --bench voxelize` (full: the twelve.csg section at 128³ and 256³, median of 3,
+//! then the floor at 256³, 512³ and 1024³), `-- --quick` (64³ and 128³ for both, one run),
+//! `-- --floor` (the floor section only), `--sizes A,B,…` (the floor's sizes), `--cells A,B,…`
+//! (the pruned peer's cell sides, [`pruned::CELLS`] by default); `--json` prints every figure
+//! as one JSON object instead of the table. Every figure comes from this run, measured back to
+//! back, so ratios suffer less from a busy machine than figures from separate runs would (they
+//! still move: see the doc). Threads: rayon's default pool (all cores).
 //!
 //! * `word`: [`Route::Intervals`] with each evaluator. Wall time is from the parsed scene to
 //!   the volume ([`Slicer::new`] + [`voxelize`]); voxels/s is voxels of the grid over it; state
 //!   is [`SliceEval::state_bytes`] per voxel.
 //! * `cycle` vs `word`: the array routes (every P·Vz frame simulated) at small sizes only.
-//! * peer: every convex solid is the max over its faces of n·p − d (outward unit normal by
-//!   Newell's method); union = min, intersection = max, difference = max(a, −b), complement =
-//!   −a; JIT-compiled, evaluated one Z-slice per call at the voxel centres ([`Grid::centre`]),
-//!   inside when the value is <= 0. Its wall time includes building and compiling the
-//!   expression. It samples the centre point where csgpix samples the centre's Z-segment
-//!   (`crates/voxel/src/drive.rs`), so the two may differ at surfaces only: the agreement figures count
-//!   differing voxels and how many of them lie on a surface of either volume.
+//! * peer, dense mode: every convex solid is the max over its faces of n·p − d (outward unit
+//!   normal by Newell's method); union = min, intersection = max, difference = max(a, −b),
+//!   complement = −a; JIT-compiled, evaluated one Z-slice per call at the voxel centres
+//!   ([`Grid::centre`]), inside when the value is <= 0: every clause at every voxel. Its wall
+//!   time includes building and compiling the expression. It samples the centre point where
+//!   csgpix samples the centre's Z-segment (`crates/voxel/src/drive.rs`), so the two may
+//!   differ at surfaces only: the agreement figures count differing voxels and how many of
+//!   them lie on a surface of either volume.
+//! * peer, pruned mode (`voxelize/pruned.rs`): the same expression evaluated as fidget's own
+//!   renderers do, by recursive subdivision with interval arithmetic and tape simplification;
+//!   voxel for voxel the dense mode's (asserted at the smallest size).
 //! * phases: the word route's work split into passes (slicer setup, per-pixel slab ranges,
 //!   toggle lists, the slab-mask sweep, evaluation, colour codes, assembly), each pass over
 //!   all slabs in parallel except assembly, which `voxelize` also does on one thread.
+//! * floor (`voxelize/floor.rs`): twelve.csg, csg-logo.csg and figure-5.6.csg (a dataset
+//!   beside solids), each route of [`floor_routes`] and both peers from the scene to the NRRD
+//!   file, against allocating, filling and writing the same bytes.
 
 use std::time::Instant;
 
@@ -39,6 +50,12 @@ use glam::DVec3;
 use rayon::prelude::*;
 use rtl_model::{Equations, WordFormat};
 use serde_json::{json, Value};
+
+// In a folder of their own, which cargo does not take for bench targets.
+#[path = "voxelize/floor.rs"]
+mod floor;
+#[path = "voxelize/pruned.rs"]
+mod pruned;
 
 const SCENE: &str = include_str!("../vectors/scenes/twelve.csg");
 const FMT: WordFormat = WordFormat::THESIS;
@@ -62,6 +79,13 @@ fn evaluators(scene: &CsgScene) -> Vec<(&'static str, Box<dyn SliceEval>)> {
     v.push(("tree", Box::new(TreeEval::new(&scene.root))));
     v.push(("stack", Box::new(StackEval::new(&scene.root))));
     v
+}
+
+/// THE ROUTE PLUG: the routes the floor section measures (`floor.rs`), each with the Blist
+/// evaluator. A route added here is measured, printed and in the JSON with nothing else to
+/// change.
+fn floor_routes() -> Vec<(&'static str, Route)> {
+    vec![("intervals", Route::Intervals), ("float", Route::Float)]
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -201,11 +225,9 @@ fn peer_build(scene: &CsgScene) -> (JitShape, usize) {
     (shape, size)
 }
 
-/// The peer from the parsed scene to the membership volume: build, compile, evaluate every
-/// Z-slice (one bulk call each, slices in parallel).
-fn peer_run(scene: &CsgScene, n: usize) -> Vec<bool> {
-    let g = grid(scene, n);
-    let (shape, _) = peer_build(scene);
+/// The dense peer's evaluation: every Z-slice in one bulk call (every clause at every voxel
+/// centre), slices in parallel; membership 1 inside (value <= 0), 0 outside.
+fn dense_eval(shape: &JitShape, g: &Grid) -> Vec<u8> {
     let tape = shape.ez_float_slice_tape();
     let [nx, ny, nz] = g.dims;
     let xs: Vec<f32> = (0..nx * ny)
@@ -214,18 +236,33 @@ fn peer_run(scene: &CsgScene, n: usize) -> Vec<bool> {
     let ys: Vec<f32> = (0..nx * ny)
         .map(|i| g.centre(0, i / nx, 0).y as f32)
         .collect();
-    let slices: Vec<Vec<bool>> = (0..nz)
-        .into_par_iter()
-        .map_init(
-            || (JitShape::new_float_slice_eval(), vec![0f32; nx * ny]),
-            |(eval, zs), k| {
-                zs.fill(g.centre(0, 0, k).z as f32);
-                let out = eval.eval(&tape, &xs, &ys, zs).expect("peer eval");
-                out.iter().map(|&v| v <= 0.0).collect()
-            },
-        )
-        .collect();
-    slices.concat()
+    let mut voxels = vec![0u8; nx * ny * nz];
+    voxels.par_chunks_mut(nx * ny).enumerate().for_each_init(
+        || (JitShape::new_float_slice_eval(), vec![0f32; nx * ny]),
+        |(eval, zs), (k, slice)| {
+            zs.fill(g.centre(0, 0, k).z as f32);
+            let out = eval.eval(&tape, &xs, &ys, zs).expect("peer eval");
+            for (o, &v) in slice.iter_mut().zip(out) {
+                *o = u8::from(v <= 0.0);
+            }
+        },
+    );
+    voxels
+}
+
+/// The dense peer from the parsed scene to the membership volume: build, compile, evaluate.
+fn dense_run(scene: &CsgScene, n: usize) -> Vec<u8> {
+    dense_eval(&peer_build(scene).0, &grid(scene, n))
+}
+
+/// The pruned peer from the parsed scene to the membership volume: build, compile, evaluate
+/// by subdivision into cells of the sides `cells`.
+fn pruned_run(scene: &CsgScene, n: usize, cells: &[usize]) -> Vec<u8> {
+    pruned::pruned_eval(&peer_build(scene).0, &grid(scene, n), cells)
+}
+
+fn membership(v: &[u8]) -> Vec<bool> {
+    v.iter().map(|&c| c != 0).collect()
 }
 
 /// How two membership volumes differ.
@@ -475,23 +512,18 @@ fn peer_self_check(scene: &CsgScene, n: usize) -> usize {
             })
         })
         .collect();
-    let peer = peer_run(scene, n);
+    let peer = membership(&dense_run(scene, n));
     reference.iter().zip(&peer).filter(|(a, b)| a != b).count()
 }
 
 // ---------------------------------------------------------------------------------------------
 
-struct Opts {
-    quick: bool,
-    json: bool,
-}
-
-fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let opts = Opts {
-        quick: args.iter().any(|a| a == "--quick"),
-        json: args.iter().any(|a| a == "--json"),
-    };
+/// The section on twelve.csg: every evaluator on the word route, the float route, the
+/// peers, agreement, phases and the array routes; its JSON fields and summary lines.
+fn word_section(
+    opts: &Opts,
+    say: &dyn Fn(String),
+) -> (serde_json::Map<String, Value>, Vec<String>) {
     let (sizes, cycle_sizes, runs) = if opts.quick {
         ([64usize, 128], vec![32usize], 1)
     } else {
@@ -500,12 +532,6 @@ fn main() {
     let scene = parse_csg(SCENE, "twelve.csg").expect("twelve.csg");
     let evals = evaluators(&scene);
     let threads = rayon::current_num_threads();
-    let t_all = Instant::now();
-    let say = |s: String| {
-        if !opts.json {
-            println!("{s}");
-        }
-    };
     say(format!(
         "voxelize bench: twelve.csg, {} solids, {} threads, median of {runs}{}",
         scene.solids.len(),
@@ -577,12 +603,22 @@ fn main() {
                     .count()
             })
             .sum();
-        let (t_peer, peer) = median(runs, || peer_run(&scene, n));
+        let (t_peer, peer) = median(runs, || dense_run(&scene, n));
+        let peer = membership(&peer);
         say(format!(
-            "{n}^3 peer fidget jit: {t_peer:8.3} s  {:.3e} voxels/s  (of which build+compile \
-             {t_build:.4} s, {peer_size} tape clauses over {peer_planes} face planes)",
+            "{n}^3 peer fidget dense (jit, every clause at every voxel): {t_peer:8.3} s  \
+             {:.3e} voxels/s  (of which build+compile {t_build:.4} s, {peer_size} tape clauses \
+             over {peer_planes} face planes)",
             voxels / t_peer
         ));
+        let row = PeerRow {
+            n,
+            runs,
+            dense: &peer,
+            t_dense: t_peer,
+            smallest: n == sizes[0],
+        };
+        let (t_pruned, pruned_json) = pruned_row(&scene, &row, &opts.cells, say);
         let dims = [n; 3];
         let w_in = inside_of(&word_volume);
         let f_in = inside_of(&float_volume);
@@ -629,8 +665,9 @@ fn main() {
                 }
             ));
             summary.push(format!(
-                "summary {n}^3 {name}/peer time ratio {:.3}",
-                t / t_peer
+                "summary {n}^3 {name}/dense peer time ratio {:.3}, /pruned peer {:.3}",
+                t / t_peer,
+                t / t_pruned
             ));
         }
         if evals[0].0 != "blist" {
@@ -639,7 +676,11 @@ fn main() {
             ));
         }
         summary.push(format!(
-            "summary {n}^3 peer {t_peer:.3} s; differs from float in {} voxels ({:.2e}, {} on a \
+            "summary {n}^3 pruned peer {t_pruned:.3} s, {:.3} of the dense peer's time",
+            t_pruned / t_peer
+        ));
+        summary.push(format!(
+            "summary {n}^3 dense peer {t_peer:.3} s; differs from float in {} voxels ({:.2e}, {} on a \
              surface), from word in {} ({:.2e}, {} on a surface)",
             vs_float["differing"],
             vs_float["fraction"].as_f64().unwrap_or(f64::NAN),
@@ -656,6 +697,7 @@ fn main() {
                 "word": word_json,
                 "float_stack_wall_s": t_float,
                 "peer": {
+                    "mode": "dense",
                     "wall_s": t_peer,
                     "voxels_per_s": voxels / t_peer,
                     "build_compile_s": t_build,
@@ -666,6 +708,7 @@ fn main() {
                     "vs_float_centre": vs_float_centre,
                     "vs_word_centre": vs_word_centre,
                 },
+                "peer_pruned": pruned_json,
                 "word_vs_float": word_vs_float,
                 "phases": ph,
             }),
@@ -705,22 +748,158 @@ fn main() {
             }),
         );
     }
+    let mut report = serde_json::Map::new();
+    for (k, v) in [
+        ("scene", json!("vectors/scenes/twelve.csg")),
+        ("solids", json!(scene.solids.len())),
+        ("threads", json!(rayon::current_num_threads())),
+        ("runs", json!(runs)),
+        ("quick", json!(opts.quick)),
+        ("blist_available", json!(evals[0].0 == "blist")),
+        (
+            "peer_self_check",
+            json!({"n": check_n, "differing": self_check}),
+        ),
+        ("sizes", Value::Object(sizes_json)),
+        ("array_routes", Value::Object(cycle_json)),
+    ] {
+        report.insert(k.to_string(), v);
+    }
+    (report, summary)
+}
+
+/// What `pruned_row` compares the pruned peer with: the dense peer at N³.
+struct PeerRow<'a> {
+    n: usize,
+    runs: usize,
+    /// The dense peer's membership and time.
+    dense: &'a [bool],
+    t_dense: f64,
+    /// The smallest size of the section, where the two must agree voxel for voxel.
+    smallest: bool,
+}
+
+/// The pruned peer at N³ beside the dense one: its time (median of `runs`, from the parsed
+/// scene, as the dense peer's) and the voxels where the two differ. Interval arithmetic only
+/// prunes what no centre of the cell can change, so there should be none; the bench asserts
+/// it at the smallest size and reports the count at every size.
+fn pruned_row(
+    scene: &CsgScene,
+    row: &PeerRow,
+    cells: &[usize],
+    say: &dyn Fn(String),
+) -> (f64, Value) {
+    let n = row.n;
+    let (t, v) = median(row.runs, || pruned_run(scene, n, cells));
+    let differing = membership(&v)
+        .iter()
+        .zip(row.dense)
+        .filter(|(a, b)| a != b)
+        .count();
+    let voxels = (n * n * n) as f64;
+    say(format!(
+        "{n}^3 peer fidget pruned (cells {cells:?}): {t:8.3} s  {:.3e} voxels/s  \
+         pruned/dense time {:.3}; {differing} voxels differ from the dense peer",
+        voxels / t,
+        t / row.t_dense
+    ));
+    if row.smallest {
+        assert_eq!(
+            differing, 0,
+            "{n}^3: the pruned peer differs from the dense one"
+        );
+    }
+    let figures = json!({
+        "mode": "pruned",
+        "cells": cells,
+        "wall_s": t,
+        "voxels_per_s": voxels / t,
+        "over_dense": t / row.t_dense,
+        "vs_dense_differing": differing,
+    });
+    (t, figures)
+}
+
+struct Opts {
+    quick: bool,
+    json: bool,
+    /// `--floor`: the floor section only.
+    floor_only: bool,
+    /// `--sizes A,B,…`: the floor section's N.
+    floor_sizes: Vec<usize>,
+    /// `--cells A,B,…`: the pruned peer's cell sides, top level first.
+    cells: Vec<usize>,
+}
+
+impl Opts {
+    fn parse() -> Opts {
+        let args: Vec<String> = std::env::args().skip(1).collect();
+        let quick = args.iter().any(|a| a == "--quick");
+        let default_sizes = if quick {
+            vec![64, 128]
+        } else {
+            vec![256, 512, 1024]
+        };
+        Opts {
+            quick,
+            json: args.iter().any(|a| a == "--json"),
+            floor_only: args.iter().any(|a| a == "--floor"),
+            floor_sizes: list_arg(&args, "--sizes").unwrap_or(default_sizes),
+            cells: list_arg(&args, "--cells").unwrap_or(pruned::CELLS.to_vec()),
+        }
+    }
+}
+
+/// `NAME A,B,…` or `NAME=A,B,…` among `args`, as numbers.
+fn list_arg(args: &[String], name: &str) -> Option<Vec<usize>> {
+    let at = args.iter().position(|a| a == name);
+    let text = match at {
+        Some(i) => args.get(i + 1).map(String::as_str),
+        None => args
+            .iter()
+            .find_map(|a| a.strip_prefix(&format!("{name}="))),
+    }?;
+    let list: Vec<usize> = text
+        .split(',')
+        .map(|v| {
+            v.trim()
+                .parse()
+                .unwrap_or_else(|e| panic!("{name} {text}: {e}"))
+        })
+        .collect();
+    assert!(
+        list.iter().all(|&v| v > 0),
+        "{name} {text}: every value must be positive"
+    );
+    Some(list)
+}
+
+fn main() {
+    let opts = Opts::parse();
+    let t_all = Instant::now();
+    let say = |s: String| {
+        if !opts.json {
+            println!("{s}");
+        }
+    };
+    let (mut report, mut summary) = if opts.floor_only {
+        Default::default()
+    } else {
+        word_section(&opts, &say)
+    };
+    let floor = floor::floor(&floor::FloorArgs {
+        sizes: &opts.floor_sizes,
+        quick: opts.quick,
+        cells: &opts.cells,
+        say: &say,
+    });
+    summary.extend(floor::summary(&floor));
+    report.insert("floor".into(), floor);
     let total = t_all.elapsed().as_secs_f64();
     if opts.json {
-        let all = json!({
-            "scene": "vectors/scenes/twelve.csg",
-            "solids": scene.solids.len(),
-            "threads": threads,
-            "runs": runs,
-            "quick": opts.quick,
-            "blist_available": evals[0].0 == "blist",
-            "peer_self_check": {"n": check_n, "differing": self_check},
-            "sizes": sizes_json,
-            "array_routes": cycle_json,
-            "summary": summary,
-            "total_s": total,
-        });
-        println!("{all}");
+        report.insert("summary".into(), json!(summary));
+        report.insert("total_s".into(), json!(total));
+        println!("{}", Value::Object(report));
     } else {
         for s in &summary {
             println!("{s}");
