@@ -7,7 +7,8 @@
 //! `cargo bench --bench voxelize` (full: the twelve.csg section at 128³ and 256³, median of 3,
 //! then the floor at 256³, 512³ and 1024³), `-- --quick` (64³ and 128³ for both, one run),
 //! `-- --floor` (the floor section only), `--sizes A,B,…` (the floor's sizes), `--cells A,B,…`
-//! (the pruned peer's cell sides, [`pruned::CELLS`] by default); `--json` prints every figure
+//! (the pruned peer's cell sides, [`pruned::CELLS`] by default), `--no-dense` (the floor without
+//! the dense peer, about 200 s a run at 1024³); `--json` prints every figure
 //! as one JSON object instead of the table. Every figure comes from this run, measured back to
 //! back, so ratios suffer less from a busy machine than figures from separate runs would (they
 //! still move: see the doc). Threads: rayon's default pool (all cores).
@@ -85,7 +86,12 @@ fn evaluators(scene: &CsgScene) -> Vec<(&'static str, Box<dyn SliceEval>)> {
 /// evaluator. A route added here is measured, printed and in the JSON with nothing else to
 /// change.
 fn floor_routes() -> Vec<(&'static str, Route)> {
-    vec![("intervals", Route::Intervals), ("float", Route::Float)]
+    vec![
+        ("runs", Route::Runs { float: false }),
+        ("runs-float", Route::Runs { float: true }),
+        ("intervals", Route::Intervals),
+        ("float", Route::Float),
+    ]
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -829,6 +835,8 @@ struct Opts {
     floor_sizes: Vec<usize>,
     /// `--cells A,B,…`: the pruned peer's cell sides, top level first.
     cells: Vec<usize>,
+    /// `--no-dense`: the floor section leaves the dense peer out.
+    dense: bool,
 }
 
 impl Opts {
@@ -846,6 +854,7 @@ impl Opts {
             floor_only: args.iter().any(|a| a == "--floor"),
             floor_sizes: list_arg(&args, "--sizes").unwrap_or(default_sizes),
             cells: list_arg(&args, "--cells").unwrap_or(pruned::CELLS.to_vec()),
+            dense: !args.iter().any(|a| a == "--no-dense"),
         }
     }
 }
@@ -891,6 +900,7 @@ fn main() {
         sizes: &opts.floor_sizes,
         quick: opts.quick,
         cells: &opts.cells,
+        dense: opts.dense,
         say: &say,
     });
     summary.extend(floor::summary(&floor));

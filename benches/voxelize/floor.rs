@@ -41,6 +41,8 @@ pub struct FloorArgs<'a> {
     pub quick: bool,
     /// The pruned peer's cell sides.
     pub cells: &'a [usize],
+    /// Whether to run the dense peer too (`--no-dense` leaves it out: about 200 s at 1024³).
+    pub dense: bool,
     pub say: &'a dyn Fn(String),
 }
 
@@ -196,9 +198,12 @@ fn peer_figures(
             ([t, t_write, t + t_write], if compare { v } else { vec![] })
         })
     };
-    let (dense, dense_v) = peer(&|| dense_eval(&peer_build(scene).0, grid));
+    let (dense, dense_v) = match a.dense {
+        true => peer(&|| dense_eval(&peer_build(scene).0, grid)),
+        false => ([f64::NAN; 3], vec![]),
+    };
     let (pruned, pruned_v) = peer(&|| pruned_eval(&peer_build(scene).0, grid, a.cells));
-    let differing = compare.then(|| {
+    let differing = (compare && a.dense).then(|| {
         let differ = dense_v.iter().zip(&pruned_v).filter(|(x, y)| x != y);
         differ.count()
     });
