@@ -107,15 +107,7 @@ impl WordPlanes {
             .iter()
             .map(|(c, y, h)| ((*y, *h), corners(c)))
             .collect();
-        let keep = decisive(&ext)?;
-        Some(WordPlanes(
-            self.0
-                .iter()
-                .zip(keep)
-                .filter(|(_, k)| *k)
-                .map(|(p, _)| *p)
-                .collect(),
-        ))
+        decisive(&self.0, &ext).map(WordPlanes)
     }
 
     /// The slabs the solid fills along pixel (x, y)'s ray: DEPGEN's Z0 + x·dZx + y·dZy
@@ -153,11 +145,14 @@ pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges> {
 /// A plane's (Y, H) flags and its smallest and largest value over a panel, if known.
 type PlaneRange<T> = ((bool, bool), Option<(T, T)>);
 
-/// Which of a convex solid's planes can decide a pixel of a panel, from each plane's (Y, H)
-/// flags and its smallest and largest value over the panel (None: not known, kept); None when
+/// The planes of `all` that can decide a pixel of a panel, from each plane's (Y, H) flags and
+/// its smallest and largest value over the panel (`planes`; None: not known, kept); None when
 /// a perpendicular plane is negative all over it, so the solid is nowhere there. See
 /// [`WordPlanes::in_panel`] for the argument.
-fn decisive<T: PartialOrd + Copy + Default>(planes: &[PlaneRange<T>]) -> Option<Vec<bool>> {
+fn decisive<P: Copy, T: PartialOrd + Copy + Default>(
+    all: &[P],
+    planes: &[PlaneRange<T>],
+) -> Option<Vec<P>> {
     // The front plane with the largest minimum, the back plane with the smallest maximum.
     let mut front: Option<(T, usize)> = None;
     let mut back: Option<(T, usize)> = None;
@@ -173,17 +168,20 @@ fn decisive<T: PartialOrd + Copy + Default>(planes: &[PlaneRange<T>]) -> Option<
         }
     }
     let zero = T::default();
-    planes
-        .iter()
-        .enumerate()
-        .map(|(i, &((y, h), e))| match (e, y, h) {
-            (None, _, _) => Some(true),
-            (Some((_, hi)), true, _) if hi < zero => None,
-            (Some((lo, _)), true, _) => Some(lo < zero),
-            (Some((_, hi)), false, true) => Some(front.is_none_or(|(m, g)| i == g || hi >= m)),
-            (Some((lo, _)), false, false) => Some(back.is_none_or(|(m, g)| i == g || lo <= m)),
-        })
-        .collect()
+    let mut kept = Vec::with_capacity(all.len());
+    for (i, (&p, &((y, h), e))) in all.iter().zip(planes).enumerate() {
+        let keep = match (e, y, h) {
+            (None, _, _) => true,
+            (Some((_, hi)), true, _) if hi < zero => return None,
+            (Some((lo, _)), true, _) => lo < zero,
+            (Some((_, hi)), false, true) => front.is_none_or(|(m, g)| i == g || hi >= m),
+            (Some((lo, _)), false, false) => back.is_none_or(|(m, g)| i == g || lo <= m),
+        };
+        if keep {
+            kept.push(p);
+        }
+    }
+    Some(kept)
 }
 
 /// A solid's planes as f64 (Z0, dZx, dZy, Y, H), for [`Route::Float`](crate::Route::Float)'s
@@ -217,15 +215,7 @@ impl FloatPlanes {
                 ((y, h), v.iter().all(|v| v.is_finite()).then_some((lo, hi)))
             })
             .collect();
-        let keep = decisive(&ext)?;
-        Some(FloatPlanes(
-            self.0
-                .iter()
-                .zip(keep)
-                .filter(|(_, k)| *k)
-                .map(|(p, _)| *p)
-                .collect(),
-        ))
+        decisive(&self.0, &ext).map(FloatPlanes)
     }
 
     /// The exact depths inside the solid along pixel (x, y)'s ray ([`float_interval`]).

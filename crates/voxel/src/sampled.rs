@@ -133,7 +133,8 @@ impl Sampled {
     }
 }
 
-fn corners(lo: DVec3, hi: DVec3) -> impl Iterator<Item = DVec3> {
+/// The eight corners of a box.
+pub(crate) fn corners(lo: DVec3, hi: DVec3) -> impl Iterator<Item = DVec3> {
     (0..8).map(move |c| {
         DVec3::new(
             if c & 1 == 0 { lo.x } else { hi.x },

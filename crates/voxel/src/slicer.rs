@@ -209,7 +209,7 @@ impl Slicer {
             .map(|s| outline(&frame, s.vertices.iter().map(|&v| DVec3::from(v)), w, h))
             .chain(sampled.iter().map(|s| {
                 let (lo, hi) = s.bounds();
-                outline(&frame, box_corners(lo, hi), w, h)
+                outline(&frame, crate::sampled::corners(lo, hi), w, h)
             }))
             .collect();
         let colours = lists
@@ -357,15 +357,4 @@ fn outline(
         y1: end(hi.y, h).max(0.0) as usize,
     };
     (b.x0 < b.x1 && b.y0 < b.y1).then_some(b)
-}
-
-/// The eight corners of a box.
-fn box_corners(lo: DVec3, hi: DVec3) -> impl Iterator<Item = DVec3> {
-    (0..8).map(move |c| {
-        DVec3::new(
-            if c & 1 == 0 { lo.x } else { hi.x },
-            if c & 2 == 0 { lo.y } else { hi.y },
-            if c & 4 == 0 { lo.z } else { hi.z },
-        )
-    })
 }
