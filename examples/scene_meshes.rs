@@ -48,11 +48,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         sep(&mut out, &mut first);
         match &s.shape {
             Shape::Mesh(m) => {
-                let tris: Vec<[usize; 3]> = m
-                    .triangles
-                    .iter()
-                    .map(|t| t.map(|v| v as usize))
-                    .collect();
+                let tris: Vec<[usize; 3]> =
+                    m.triangles.iter().map(|t| t.map(|v| v as usize)).collect();
                 primitive(&mut out, m.vertices.iter().map(|v| v.to_array()), &tris)?;
             }
             Shape::Dataset { .. } => {
