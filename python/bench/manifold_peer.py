@@ -10,8 +10,8 @@ For every scene (default: every vectors/designs/meshes/*.csg and *.csg.gz, the l
 to a temporary file, plus vectors/scenes/{twelve,csg-logo,figure-5.2}.csg) and every grid:
 
 - csgpix: the wall time of the whole process `csgpix voxelize SCENE --res N -o out.nrrd --json`
-  and its peak RSS (`os.wait4`).
-- Manifold, in a child process of this script (its peak RSS from `os.wait4`):
+  and its peak RSS (one more run under `/usr/bin/time -f %M`).
+- Manifold, in a child process of this script (its peak RSS from `/usr/bin/time -f %M`):
   (a) the scene read: `scene_meshes` (examples/scene_meshes.rs, csgpix's own reader printing
       every primitive as a mesh, the tree and the grid box) and `json.loads`: reported, not
       counted, since it stands for the user's own scene reader;
@@ -49,10 +49,23 @@ CHILD_TIMEOUT = 900.0
 # ---------------------------------------------------------------- processes
 
 
-def run_timed(cmd, stdout_path=None, timeout=CHILD_TIMEOUT):
-    """Run `cmd`; (wall seconds, peak RSS in MiB, exit status, stderr tail)."""
+TIME = Path("/usr/bin/time")
+
+
+def run_timed(cmd, stdout_path=None, timeout=CHILD_TIMEOUT, rss=False):
+    """Run `cmd`; (wall seconds, peak RSS in MiB or None, exit status, stderr tail).
+
+    The peak RSS (`rss=True`) comes from `/usr/bin/time -f %M`, which adds its own exec to the
+    wall time; without it the RSS is None. `os.wait4`'s ru_maxrss is not used: a child
+    forked (vfork) from this process starts with this process's high-water mark, which the
+    scenes' JSON makes far larger than csgpix's own."""
     out = open(stdout_path, "wb") if stdout_path else subprocess.DEVNULL
     err = tempfile.TemporaryFile()
+    rss_file = None
+    if rss and TIME.exists():
+        fd, rss_file = tempfile.mkstemp(prefix="manifold_peer.rss.")
+        os.close(fd)
+        cmd = [str(TIME), "-f", "%M", "-o", rss_file] + list(cmd)
     t0 = time.perf_counter()
     p = subprocess.Popen(cmd, stdout=out, stderr=err)
     deadline = t0 + timeout
@@ -74,7 +87,14 @@ def run_timed(cmd, stdout_path=None, timeout=CHILD_TIMEOUT):
     tail = err.read()[-2000:].decode("utf-8", "replace")
     err.close()
     code = os.waitstatus_to_exitcode(status) if status != -9 else -9
-    return wall, ru.ru_maxrss / 1024.0, code, tail
+    peak = None
+    if rss_file:
+        try:
+            peak = int(Path(rss_file).read_text().split()[-1]) / 1024.0
+        except (ValueError, IndexError):
+            pass
+        os.unlink(rss_file)
+    return wall, peak, code, tail
 
 
 def best_of(fn, runs=3):
@@ -268,7 +288,7 @@ def bench_scene(path, resolutions, csgpix, meshes_bin, work):
     if "error" not in row:
         child = work / f"{name}.child.json"
         wall, rss, code, err = run_timed(
-            [sys.executable, __file__, "--mesh-step", str(js), str(stl)], stdout_path=child)
+            [sys.executable, __file__, "--mesh-step", str(js), str(stl)], stdout_path=child, rss=True)
         if code != 0:
             last = err.strip().splitlines()[-1] if err.strip() else f"exit {code}"
             row["manifold_error"] = last
@@ -291,7 +311,9 @@ def bench_scene(path, resolutions, csgpix, meshes_bin, work):
 
         b = best_of(run_csgpix)
         if b:
-            g["csgpix_s"], g["csgpix_rss_mib"] = b
+            g["csgpix_s"] = b[0]
+            g["csgpix_rss_mib"] = run_timed([str(csgpix), "voxelize", str(scene), "--res", str(n),
+                                             "-o", str(out)], rss=True)[1]
         if "mesh_s" not in row:
             continue
         mout = work / f"{name}.{n}.mesh.nrrd"
@@ -313,7 +335,10 @@ def bench_scene(path, resolutions, csgpix, meshes_bin, work):
 
             b = best_of(run_mesh)
             if b:
-                g["voxelize_mesh_s"], g["voxelize_mesh_rss_mib"] = b
+                g["voxelize_mesh_s"] = b[0]
+                g["voxelize_mesh_rss_mib"] = run_timed(
+                    [str(csgpix), "voxelize", str(mscene), "--res", str(n), "--bounds", bstr,
+                     "-o", str(mout)], rss=True)[1]
         if "voxelize_mesh_s" in g:
             g["manifold_full_s"] = row["mesh_s"] + g["voxelize_mesh_s"]
         if "csgpix_s" in g and "manifold_full_s" in g:
@@ -414,13 +439,15 @@ def summary_line(r, resolutions):
 def print_table(rows, resolutions, medians):
     for n in resolutions:
         print(f"\n{n}³: design | primitives | csgpix s | scene read s | Manifold mesh s | voxelize-mesh s "
-              "| ratio full | ratio mesh | IoU")
+              "| ratio full | ratio mesh | IoU | csgpix MiB | mesh-step MiB | voxelize-mesh MiB")
         for r in rows:
             g = r["grids"].get(str(n), {})
             read = r.get("scene_meshes_s", 0) + r.get("parse_s", 0) + r.get("arrays_s", 0)
             print(f"{r['design']} | {r.get('primitives', '—')} | {fmt(g.get('csgpix_s'))} | {fmt(read)} | "
                   f"{fmt(r.get('mesh_s'))} | {fmt(g.get('voxelize_mesh_s'))} | "
-                  f"{fmt(g.get('ratio_full'), 2)} | {fmt(g.get('ratio_mesh'), 2)} | {fmt(g.get('iou'), 4)}")
+                  f"{fmt(g.get('ratio_full'), 2)} | {fmt(g.get('ratio_mesh'), 2)} | {fmt(g.get('iou'), 4)} | "
+                  f"{fmt(g.get('csgpix_rss_mib'), 0)} | {fmt(r.get('manifold_child_rss_mib'), 0)} | "
+                  f"{fmt(g.get('voxelize_mesh_rss_mib'), 0)}")
         if str(n) in medians:
             m = medians[str(n)]
             print(f"median over {m['designs']} designs at {n}³: full {m['ratio_full']:.2f}, "
