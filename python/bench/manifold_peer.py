@@ -408,7 +408,7 @@ def main():
         "date": time.strftime("%Y-%m-%d %H:%M:%S %Z"),
         "nproc": os.cpu_count(),
         "loadavg_start_end": [load_start, os.getloadavg()],
-        "manifold3d": getattr(__import__("manifold3d"), "__version__", None),
+        "manifold3d": manifold_version(),
         "resolutions": resolutions,
         "medians_designs": medians,
         "rows": rows,
@@ -417,6 +417,15 @@ def main():
     if args.json:
         print(json.dumps(report, indent=1))
     return 0
+
+
+def manifold_version():
+    try:
+        from importlib.metadata import version
+
+        return version("manifold3d")
+    except Exception:
+        return None
 
 
 def summary_line(r, resolutions):
