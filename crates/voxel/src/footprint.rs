@@ -47,6 +47,22 @@ impl PixelBox {
         }
     }
 
+    /// The pixels in both (None when they share none).
+    pub fn intersect(self, o: PixelBox) -> Option<PixelBox> {
+        let b = PixelBox {
+            x0: self.x0.max(o.x0),
+            y0: self.y0.max(o.y0),
+            x1: self.x1.min(o.x1),
+            y1: self.y1.min(o.y1),
+        };
+        (b.x0 < b.x1 && b.y0 < b.y1).then_some(b)
+    }
+
+    /// Whether pixel (x, y) is in the box.
+    pub fn contains(&self, x: usize, y: usize) -> bool {
+        (self.x0..self.x1).contains(&x) && (self.y0..self.y1).contains(&y)
+    }
+
     /// The smallest box holding both.
     pub fn union(self, o: PixelBox) -> PixelBox {
         PixelBox {

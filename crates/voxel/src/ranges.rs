@@ -38,13 +38,16 @@ impl SlabRanges {
 /// meets, both ends closed.
 pub(crate) fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
     const EMPTY: (u32, u32) = (1, 0);
-    let (z0, s) = (slicer.z_plane(0) as i128, slicer.slab_raw as i128);
-    let (a, b) = slicer.window();
-    let (a, b) = (a as i128, b as i128);
-    let last_slab = slicer.grid.dims[2] as i128 - 1;
     if lo > hi {
         return EMPTY;
     }
+    // Depths past ±2^62 meet the same slabs as ±2^62 (every slab window lies within the word,
+    // far inside that): clamped, the arithmetic fits an i64.
+    const FAR: i128 = 1 << 62;
+    let (lo, hi) = (lo.clamp(-FAR, FAR) as i64, hi.clamp(-FAR, FAR) as i64);
+    let (z0, s) = (slicer.z_plane(0), slicer.slab_raw);
+    let (a, b) = slicer.window();
+    let last_slab = slicer.grid.dims[2] as i64 - 1;
     // Slab k's window is [z0 + k·s + a, z0 + k·s + b] in raw units: it meets [lo, hi] when
     // z0 + k·s + a <= hi and z0 + k·s + b >= lo, i.e. k <= ⌊(hi − z0 − a) / s⌋ and
     // k >= ⌈(lo − z0 − b) / s⌉.
@@ -85,11 +88,14 @@ impl WordPlanes {
     ///   negative at every corner, it refuses them all: None;
     /// * a front plane whose largest corner value is below the largest of the front planes'
     ///   smallest corner values, M, is everywhere below the plane that has M: it never sets
-    ///   the interval's start (ties kept), and so for back planes and the end.
+    ///   the interval's start (ties kept), and so for back planes and the end;
+    /// * the interval starts at M or later and ends at the back planes' m or sooner at every
+    ///   pixel, so when [M, m] meets no slab the solid fills nothing in the panel: None.
     ///
     /// Planes whose value wraps at a corner are kept and take no part. [`WordPlanes::slabs`] of
     /// the pruned planes is that of all of them at every pixel of `b` (tested).
-    pub(crate) fn in_panel(&self, fmt: &rtl_model::WordFormat, b: PixelBox) -> Option<WordPlanes> {
+    pub(crate) fn in_panel(&self, slicer: &Slicer, b: PixelBox) -> Option<WordPlanes> {
+        let fmt = &slicer.fmt;
         let corners = |c: &rtl_model::Coeffs| -> Option<(i64, i64)> {
             let (x1, y1) = (b.x1 as i64 - 1, b.y1 as i64 - 1);
             let v = [
@@ -107,7 +113,13 @@ impl WordPlanes {
             .iter()
             .map(|(c, y, h)| ((*y, *h), corners(c)))
             .collect();
-        decisive(&self.0, &ext).map(WordPlanes)
+        let d = decisive(&self.0, &ext)?;
+        let (lo, hi) = (
+            d.lo.map_or(i128::MIN, i128::from),
+            d.hi.map_or(i128::MAX, i128::from),
+        );
+        let (first, last) = slabs_of(slicer, lo, hi);
+        (first <= last).then_some(WordPlanes(d.kept))
     }
 
     /// The slabs the solid fills along pixel (x, y)'s ray: DEPGEN's Z0 + x·dZx + y·dZy
@@ -152,7 +164,7 @@ type PlaneRange<T> = ((bool, bool), Option<(T, T)>);
 fn decisive<P: Copy, T: PartialOrd + Copy + Default>(
     all: &[P],
     planes: &[PlaneRange<T>],
-) -> Option<Vec<P>> {
+) -> Option<Decisive<P, T>> {
     // The front plane with the largest minimum, the back plane with the smallest maximum.
     let mut front: Option<(T, usize)> = None;
     let mut back: Option<(T, usize)> = None;
@@ -181,7 +193,20 @@ fn decisive<P: Copy, T: PartialOrd + Copy + Default>(
             kept.push(p);
         }
     }
-    Some(kept)
+    Some(Decisive {
+        kept,
+        lo: front.map(|(m, _)| m),
+        hi: back.map(|(m, _)| m),
+    })
+}
+
+/// The planes that decide a panel, and bounds of the interval inside them at every pixel of
+/// it: it starts at `lo` or later and ends at `hi` or sooner (None: no such bound known). A
+/// panel whose bounds meet no slab holds nothing of the solid.
+struct Decisive<P, T> {
+    kept: Vec<P>,
+    lo: Option<T>,
+    hi: Option<T>,
 }
 
 /// A solid's planes as f64 (Z0, dZx, dZy, Y, H), for [`Route::Float`](crate::Route::Float)'s
@@ -198,7 +223,7 @@ impl FloatPlanes {
     /// [`WordPlanes::in_panel`] in f64: (Z0 + x·dZx) + y·dZy rounded at each step is monotone
     /// in x and in y (rounding is monotone), so over a panel it lies between its corner values
     /// as the exact plane does; planes with a corner value not finite are kept.
-    pub(crate) fn in_panel(&self, b: PixelBox) -> Option<FloatPlanes> {
+    pub(crate) fn in_panel(&self, slicer: &Slicer, b: PixelBox) -> Option<FloatPlanes> {
         let (x0, y0, x1, y1) = (
             b.x0 as f64,
             b.y0 as f64,
@@ -215,7 +240,11 @@ impl FloatPlanes {
                 ((y, h), v.iter().all(|v| v.is_finite()).then_some((lo, hi)))
             })
             .collect();
-        decisive(&self.0, &ext).map(FloatPlanes)
+        let d = decisive(&self.0, &ext)?;
+        let lo = d.lo.map_or(i128::MIN, |v| raw_depth(slicer, v, true));
+        let hi = d.hi.map_or(i128::MAX, |v| raw_depth(slicer, v, false));
+        let (first, last) = slabs_of(slicer, lo, hi);
+        (first <= last).then_some(FloatPlanes(d.kept))
     }
 
     /// The exact depths inside the solid along pixel (x, y)'s ray ([`float_interval`]).
@@ -370,6 +399,11 @@ mod tests {
         })
     }
 
+    /// An empty run of slabs.
+    fn empty((first, last): (u32, u32)) -> bool {
+        first > last
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(48))]
         /// The planes kept for a panel give every pixel of it the slabs all the planes give.
@@ -387,25 +421,30 @@ mod tests {
             let all = WordPlanes::of(&slicer, 0).unwrap();
             let (x0, y0) = (at[0] % n, at[1] % n);
             let b = PixelBox { x0, y0, x1: (x0 + size[0]).min(n), y1: (y0 + size[1]).min(n) };
-            let kept = all.in_panel(&slicer.fmt, b);
+            let kept = all.in_panel(&slicer, b);
             for y in b.y0..b.y1 {
                 for x in b.x0..b.x1 {
                     let (x, y) = (x as i64, y as i64);
                     let want = all.interval(&slicer.fmt, x, y);
-                    let got = kept.as_ref().and_then(|k| k.interval(&slicer.fmt, x, y));
-                    prop_assert_eq!(got, want, "({}, {})", x, y);
+                    match &kept {
+                        Some(k) => prop_assert_eq!(k.interval(&slicer.fmt, x, y), want),
+                        None => prop_assert!(empty(all.slabs(&slicer, x, y))),
+                    }
                 }
             }
             if let Some(k) = kept {
                 prop_assert!(k.0.len() <= all.0.len());
             }
             let all = FloatPlanes::of(&slicer, 0);
-            let kept = all.in_panel(b);
+            let kept = all.in_panel(&slicer, b);
             for y in b.y0..b.y1 {
                 for x in b.x0..b.x1 {
                     let want = all.interval(x, y);
                     prop_assert_eq!(want, float_interval(&slicer, 0, x, y));
-                    prop_assert_eq!(kept.as_ref().and_then(|k| k.interval(x, y)), want);
+                    match &kept {
+                        Some(k) => prop_assert_eq!(k.interval(x, y), want),
+                        None => prop_assert!(empty(all.slabs(&slicer, x, y))),
+                    }
                 }
             }
         }

@@ -220,20 +220,30 @@ impl<'a> Columns<'a> {
         let nz = self.slicer.grid.dims[2] as u32;
         let mut seg = Segments::default();
         let mut span = vec![];
-        let here: Vec<(u32, Option<Pruned>)> = prims
+        // Each primitive on the columns of its outline within the panel, its planes pruned
+        // to those columns.
+        let here: Vec<(u32, PixelBox, Option<Pruned>)> = prims
             .iter()
-            .filter_map(|&p| match &self.depths[p as usize] {
-                Depths::Word(w) => w
-                    .in_panel(&self.slicer.fmt, b)
-                    .map(|w| (p, Some(Pruned::Word(w)))),
-                Depths::Float(f) => f.in_panel(b).map(|f| (p, Some(Pruned::Float(f)))),
-                _ => Some((p, None)),
+            .filter_map(|&p| {
+                let o = self.slicer.outlines[p as usize].and_then(|o| o.intersect(b))?;
+                match &self.depths[p as usize] {
+                    Depths::Word(w) => w
+                        .in_panel(self.slicer, o)
+                        .map(|w| (p, o, Some(Pruned::Word(w)))),
+                    Depths::Float(f) => f
+                        .in_panel(self.slicer, o)
+                        .map(|f| (p, o, Some(Pruned::Float(f)))),
+                    _ => Some((p, o, None)),
+                }
             })
             .collect();
         for y in b.y0..b.y1 {
             for x in b.x0..b.x1 {
                 seg.open_column();
-                for (p, planes) in &here {
+                for (p, o, planes) in &here {
+                    if !o.contains(x, y) {
+                        continue;
+                    }
                     span.clear();
                     match planes {
                         Some(Pruned::Word(w)) => {
@@ -394,13 +404,10 @@ impl Segments {
                 *m = Mask::new(len);
             }
             let (from, to) = self.range(c as usize);
-            let first = from + self.starts[from..to].partition_point(|&k| k < a);
-            for s in first..to {
-                if self.starts[s] > b {
-                    break;
-                }
-                m.set(s, true);
-            }
+            let col = &self.starts[from..to];
+            let first = from + col.partition_point(|&k| k < a);
+            let end = from + col.partition_point(|&k| k <= b);
+            m.set_range(first..end);
         }
         masks
     }

@@ -71,6 +71,22 @@ impl Mask {
         }
     }
 
+    /// Set pixels `r` (a word at a time).
+    pub fn set_range(&mut self, r: std::ops::Range<usize>) {
+        let (mut i, end) = (r.start, r.end.min(self.len));
+        while i < end {
+            let (w, bit) = (i / 64, i % 64);
+            let n = (64 - bit).min(end - i);
+            let ones = if n == 64 {
+                !0
+            } else {
+                ((1u64 << n) - 1) << bit
+            };
+            self.words[w] |= ones;
+            i += n;
+        }
+    }
+
     /// Flip pixel i.
     pub fn toggle(&mut self, i: usize) {
         self.words[i / 64] ^= 1u64 << (i % 64);
@@ -160,4 +176,24 @@ pub trait SliceEval: Sync {
     /// Bytes of per-voxel intermediate state the evaluator keeps (label register, stack…),
     /// for a slice of `pixels` voxels.
     fn state_bytes(&self, pixels: usize) -> usize;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Mask;
+
+    #[test]
+    fn set_range_sets_exactly_the_range() {
+        for len in [1, 63, 64, 65, 130] {
+            for a in 0..len {
+                for b in a..=len {
+                    let mut m = Mask::new(len);
+                    m.set_range(a..b);
+                    let ok = (0..len).all(|i| m.get(i) == (a..b).contains(&i));
+                    assert!(ok, "{len} {a}..{b}");
+                    assert_eq!(m.count_ones(), b - a);
+                }
+            }
+        }
+    }
 }
