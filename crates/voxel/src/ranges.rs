@@ -257,7 +257,7 @@ impl FloatPlanes {
         ray_interval(values, f64::NEG_INFINITY, f64::INFINITY)
     }
 
-    /// The slabs the solid fills along pixel (x, y)'s ray ([`float_slabs`]).
+    /// The slabs the solid fills along pixel (x, y)'s ray, from its exact interval.
     pub(crate) fn slabs(&self, slicer: &Slicer, x: usize, y: usize) -> (u32, u32) {
         match self.interval(x, y) {
             Some((lo, hi)) => slabs_of(
@@ -331,23 +331,12 @@ pub fn toggle_run(t: &mut [Vec<u32>], i: usize, (first, last): (u32, u32)) {
 /// [`Route::Float`](crate::Route::Float): the same slabs from the exact intervals.
 pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
     let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
+    let planes = FloatPlanes::of(slicer, prim);
     SlabRanges(
         (0..w * h)
-            .map(|i| float_slabs(slicer, prim, i % w, i / w))
+            .map(|i| planes.slabs(slicer, i % w, i / w))
             .collect(),
     )
-}
-
-/// The slabs solid `prim` fills along pixel (x, y)'s ray, from its exact interval.
-pub(crate) fn float_slabs(slicer: &Slicer, prim: usize, x: usize, y: usize) -> (u32, u32) {
-    match float_interval(slicer, prim, x, y) {
-        Some((lo, hi)) => slabs_of(
-            slicer,
-            raw_depth(slicer, lo, true),
-            raw_depth(slicer, hi, false),
-        ),
-        None => (1, 0),
-    }
 }
 
 /// Per pixel, the slabs a closed mesh fills: the crossings of the pixel's ray with its

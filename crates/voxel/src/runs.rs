@@ -64,20 +64,14 @@ impl ColumnRuns {
         &self.runs[self.start[c]..self.start[c + 1]]
     }
 
-    /// Voxels of the columns that are not empty, on a grid `nz` slabs deep.
-    pub fn filled(&self, nz: usize) -> usize {
-        (0..self.start.len() - 1)
-            .map(|c| {
-                let runs = &self.runs[self.start[c]..self.start[c + 1]];
-                filled_in(runs, nz)
-            })
+    /// Voxels of the columns within slabs `slabs` (its end at most the grid's) that are not
+    /// empty.
+    pub fn filled(&self, slabs: std::ops::Range<usize>) -> usize {
+        self.start
+            .windows(2)
+            .map(|c| filled_between(&self.runs[c[0]..c[1]], slabs.clone()))
             .sum()
     }
-}
-
-/// Non-empty voxels of one column's runs, on a grid `nz` slabs deep.
-fn filled_in(runs: &[Run], nz: usize) -> usize {
-    filled_between(runs, 0..nz)
 }
 
 /// Non-empty voxels of one column's runs within slabs `slabs` (its end at most the grid's).
@@ -106,10 +100,44 @@ enum Depths<'a> {
     Word(WordPlanes),
     /// A convex solid's exact depths.
     Float(FloatPlanes),
+    /// An import: a mesh or a dataset.
+    Sampled(SampledDepths<'a>),
+}
+
+/// Where an import's runs come from along a column.
+enum SampledDepths<'a> {
     /// A mesh's runs over its outline, computed once.
     Mesh(SlabRuns, PixelBox),
     /// A dataset, sampled at the voxel centres of the column.
     Dataset(&'a crate::sampled::Sampled),
+}
+
+impl SampledDepths<'_> {
+    /// The import's runs of slabs (first, last) along column (x, y), in order.
+    fn slabs(&self, slicer: &Slicer, x: usize, y: usize, out: &mut Vec<(u32, u32)>) {
+        match self {
+            SampledDepths::Mesh(runs, b) => {
+                if b.contains(x, y) {
+                    out.extend_from_slice(&runs.0[(y - b.y0) * b.width() + (x - b.x0)]);
+                }
+            }
+            SampledDepths::Dataset(d) => {
+                let nz = slicer.grid.dims[2];
+                let inside = |k: usize| d.inside(slicer.grid.centre(x, y, k));
+                let mut k = 0;
+                while k < nz {
+                    if inside(k) {
+                        let first = k;
+                        while k + 1 < nz && inside(k + 1) {
+                            k += 1;
+                        }
+                        out.push((first as u32, k as u32));
+                    }
+                    k += 1;
+                }
+            }
+        }
+    }
 }
 
 /// A scene ready to be swept column by column.
@@ -137,9 +165,9 @@ impl<'a> Columns<'a> {
             depths.push(match &s.shape {
                 Shape::Mesh(m) => {
                     let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
-                    Depths::Mesh(mesh_runs_in(slicer, m, window(b)), b)
+                    Depths::Sampled(SampledDepths::Mesh(mesh_runs_in(slicer, m, window(b)), b))
                 }
-                Shape::Dataset { .. } => Depths::Dataset(s),
+                Shape::Dataset { .. } => Depths::Sampled(SampledDepths::Dataset(s)),
             });
         }
         let panel = slicer.panel.unwrap_or(DEFAULT_PANEL).map(|p| p.max(1));
@@ -222,36 +250,27 @@ impl<'a> Columns<'a> {
         let mut span = vec![];
         // Each primitive on the columns of its outline within the panel, its planes pruned
         // to those columns.
-        let here: Vec<(u32, PixelBox, Option<Pruned>)> = prims
+        let here: Vec<(u32, PixelBox, Pruned)> = prims
             .iter()
             .filter_map(|&p| {
                 let o = self.slicer.outlines[p as usize].and_then(|o| o.intersect(b))?;
-                match &self.depths[p as usize] {
-                    Depths::Word(w) => w
-                        .in_panel(self.slicer, o)
-                        .map(|w| (p, o, Some(Pruned::Word(w)))),
-                    Depths::Float(f) => f
-                        .in_panel(self.slicer, o)
-                        .map(|f| (p, o, Some(Pruned::Float(f)))),
-                    _ => Some((p, o, None)),
-                }
+                let pruned = match &self.depths[p as usize] {
+                    Depths::Word(w) => Pruned::Word(w.in_panel(self.slicer, o)?),
+                    Depths::Float(f) => Pruned::Float(f.in_panel(self.slicer, o)?),
+                    Depths::Sampled(d) => Pruned::Sampled(d),
+                };
+                Some((p, o, pruned))
             })
             .collect();
         for y in b.y0..b.y1 {
             for x in b.x0..b.x1 {
                 seg.open_column();
-                for (p, o, planes) in &here {
+                for (p, o, pruned) in &here {
                     if !o.contains(x, y) {
                         continue;
                     }
                     span.clear();
-                    match planes {
-                        Some(Pruned::Word(w)) => {
-                            span.push(w.slabs(self.slicer, x as i64, y as i64))
-                        }
-                        Some(Pruned::Float(f)) => span.push(f.slabs(self.slicer, x, y)),
-                        None => self.slabs(*p as usize, x, y, &mut span),
-                    }
+                    pruned.slabs(self.slicer, x, y, &mut span);
                     span.retain(|(a, b)| a <= b);
                     seg.add(*p, &span, nz);
                 }
@@ -282,42 +301,24 @@ impl<'a> Columns<'a> {
             l => self.slicer.colours[l as usize - 1],
         }
     }
-
-    /// Primitive p's runs of slabs (first, last) along column (x, y), in order.
-    fn slabs(&self, p: usize, x: usize, y: usize, out: &mut Vec<(u32, u32)>) {
-        let s = self.slicer;
-        match &self.depths[p] {
-            Depths::Word(planes) => out.push(planes.slabs(s, x as i64, y as i64)),
-            Depths::Float(planes) => out.push(planes.slabs(s, x, y)),
-            Depths::Mesh(runs, b) => {
-                if (b.x0..b.x1).contains(&x) && (b.y0..b.y1).contains(&y) {
-                    out.extend_from_slice(&runs.0[(y - b.y0) * b.width() + (x - b.x0)]);
-                }
-            }
-            Depths::Dataset(d) => {
-                let nz = s.grid.dims[2];
-                let inside = |k: usize| d.inside(s.grid.centre(x, y, k));
-                let mut k = 0;
-                while k < nz {
-                    if inside(k) {
-                        let first = k;
-                        while k + 1 < nz && inside(k + 1) {
-                            k += 1;
-                        }
-                        out.push((first as u32, k as u32));
-                    }
-                    k += 1;
-                }
-            }
-        }
-        out.retain(|(a, b)| a <= b);
-    }
 }
 
-/// A solid's planes pruned to a panel.
-enum Pruned {
+/// A primitive's source of runs in one panel: a solid's planes pruned to it, or an import's.
+enum Pruned<'d, 'a> {
     Word(WordPlanes),
     Float(FloatPlanes),
+    Sampled(&'d SampledDepths<'a>),
+}
+
+impl Pruned<'_, '_> {
+    /// The primitive's runs of slabs (first, last) along column (x, y), in order.
+    fn slabs(&self, slicer: &Slicer, x: usize, y: usize, out: &mut Vec<(u32, u32)>) {
+        match self {
+            Pruned::Word(w) => out.push(w.slabs(slicer, x as i64, y as i64)),
+            Pruned::Float(f) => out.push(f.slabs(slicer, x, y)),
+            Pruned::Sampled(d) => d.slabs(slicer, x, y, out),
+        }
+    }
 }
 
 const EMPTY_BOX: PixelBox = PixelBox {
@@ -481,7 +482,7 @@ pub fn voxelize_runs(
             let (runs, ops) = columns.rows(eval, y0, y1);
             write_rows(&runs, 0..nz, &mut rows);
             tick();
-            (runs.filled(nz), ops)
+            (runs.filled(0..nz), ops)
         })
         .collect();
     for (filled, ops) in counted {
@@ -548,9 +549,7 @@ pub fn voxelize_brick(
         )));
     }
     let (runs, _) = Columns::new(slicer, float)?.columns(eval, columns);
-    let filled = (0..runs.start.len() - 1)
-        .map(|c| filled_between(&runs.runs[runs.start[c]..runs.start[c + 1]], slabs.clone()))
-        .sum();
+    let filled = runs.filled(slabs.clone());
     let mut voxels = vec![0u8; columns.pixels() * slabs.len()];
     let mut rows: Vec<&mut [u8]> = voxels.chunks_mut(columns.width().max(1)).collect();
     write_rows(&runs, slabs, &mut rows);
@@ -584,11 +583,11 @@ pub fn sweep_slices<E: From<crate::Error>>(
     let mut changes: Vec<Vec<(u32, u8)>> = vec![vec![]; slabs.len()];
     for (runs, ops) in &banded {
         work.ops += *ops;
+        work.filled += runs.filled(slabs.clone());
         let b = runs.columns;
         for y in b.y0..b.y1 {
             for x in 0..nx {
                 let col = runs.column(x, y);
-                work.filled += filled_between(col, slabs.clone());
                 let i = y * nx + x;
                 let at = col.partition_point(|r| (r.k as usize) <= slabs.start);
                 cur[i] = at.checked_sub(1).map_or(0, |a| col[a].colour);
@@ -675,11 +674,7 @@ pub fn memory_estimate(slicer: &Slicer, eval: &dyn SliceEval, threads: usize, vo
         .sampled
         .iter()
         .zip(&slicer.outlines[slicer.lists.len()..])
-        .filter(|(s, _)| !s.is_dataset())
-        .map(|(s, b)| {
-            let pixels = b.map_or(0, |b| b.pixels() as u64);
-            pixels.saturating_mul(24 + 2 * 16 + 24 + 2 * 8) + s.triangle_count() as u64 * 64
-        })
+        .map(|(s, b)| s.memory_estimate_over(b.map_or(0, |b| b.pixels() as u64)))
         .sum();
     let held = match volume {
         true => nx

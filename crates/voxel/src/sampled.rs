@@ -102,19 +102,14 @@ impl Sampled {
     /// list per pixel (24 bytes) and about two crossings of 8 bytes each (plus as much while
     /// they are collected), and its slab runs and toggles; a dataset is resampled in place.
     pub fn memory_estimate(&self, grid: &Grid) -> u64 {
-        match &self.shape {
-            Shape::Mesh(m) => {
-                let pixels = grid.slice_len() as u64;
-                pixels * (24 + 2 * 16 + 24 + 2 * 8) + m.triangles.len() as u64 * 64
-            }
-            Shape::Dataset { .. } => 0,
-        }
+        self.memory_estimate_over(grid.slice_len() as u64)
     }
 
-    /// A mesh's triangles (0 for a dataset).
-    pub fn triangle_count(&self) -> usize {
+    /// [`Sampled::memory_estimate`] for a mesh whose crossings are kept over `pixels` pixels
+    /// only (its outline, on the run route).
+    pub fn memory_estimate_over(&self, pixels: u64) -> u64 {
         match &self.shape {
-            Shape::Mesh(m) => m.triangles.len(),
+            Shape::Mesh(m) => pixels * (24 + 2 * 16 + 24 + 2 * 8) + m.triangles.len() as u64 * 64,
             Shape::Dataset { .. } => 0,
         }
     }
