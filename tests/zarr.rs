@@ -15,8 +15,8 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 
 use csgpix::blist::BlistEval;
-use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
-use csgpix::zarr::{voxelize_rows, Layout, VolumeAttrs, ZarrVolume};
+use csgpix::voxel::{voxelize, Grid, PixelBox, Route, Slicer, SlicerOptions};
+use csgpix::zarr::{voxelize_bricks, voxelize_rows, Layout, VolumeAttrs, ZarrVolume};
 use serde_json::Value;
 
 fn s(p: &Path) -> &str {
@@ -285,6 +285,29 @@ fn the_store_is_the_nrrd_volume_voxel_for_voxel() {
         let mut take = |key: &str| b.as_object_mut().unwrap().remove(key).unwrap();
         let (chunk, rows, shard) = (take("chunk"), take("chunk_rows"), take("shard"));
         let (levels, files) = (take("levels"), take("files_written"));
+        // The run route writes bricks of a tile; every chunk is counted once by what it
+        // holds, as many as the grid has (one level).
+        let (tile, bricks, held) = (take("tile"), take("bricks"), take("chunks"));
+        let [tx, ty] = usizes(&tile)[..] else {
+            panic!("{tile}")
+        };
+        let [nx, ny, _] = usizes(&b["dims"])[..] else {
+            panic!()
+        };
+        let tiles = nx.div_ceil(tx) * ny.div_ceil(ty);
+        assert_eq!(
+            bricks,
+            serde_json::json!(rows.as_u64().unwrap() as usize * tiles)
+        );
+        let [_, cy, cx] = usizes(&chunk)[..] else {
+            panic!()
+        };
+        let chunks = rows.as_u64().unwrap() as usize * ny.div_ceil(cy) * nx.div_ceil(cx);
+        let counted: u64 = ["empty", "uniform", "mixed"]
+            .iter()
+            .map(|k| held[k].as_u64().unwrap())
+            .sum();
+        assert_eq!(counted as usize, chunks, "{args:?}: {held}");
         assert_eq!(rows, usizes(&b["dims"])[2].div_ceil(usizes(&chunk)[0]));
         assert_eq!(levels, 1, "{args:?}: every side at most 256, no pyramid");
         let sharded = !extra.contains(&"none") && !extra.contains(&"1");
@@ -473,6 +496,119 @@ fn rows_split_across_tasks_give_the_same_files() {
     assert!(e.ends_with("not a csgpix Zarr volume: no zarr.json"), "{e}");
 }
 
+/// Bricks (chunk rows × tiles) written by the run route in any order, by separate "tasks"
+/// that open the store another created, give every file of every level byte for byte as
+/// whole rows do, sharded or not, tiles of one or several files; what the runs say of a
+/// chunk (one value throughout) is what its voxels say; the tasks' work sums to one run's.
+#[test]
+fn bricks_give_the_files_of_whole_rows() {
+    let d = tempfile::tempdir().unwrap();
+    let set = rtl_model::Equations::Derived.set();
+    for (name, dims) in [("csg-logo", [70, 52, 45]), ("twelve", [41, 33, 30])] {
+        let text = std::fs::read_to_string(format!("vectors/scenes/{name}.csg")).unwrap();
+        let scene = csgpix::scad::parse_csg(&text, name).unwrap();
+        let grid = Grid::of_scene(&scene, dims).unwrap();
+        let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
+        let eval = BlistEval::new(&scene.root);
+        let route = Route::Runs { float: false };
+        let attrs = VolumeAttrs::new(name, "codes");
+        let mut uniform = 0;
+        for (i, layout) in [
+            Layout {
+                chunk: [8, 8, 8],
+                shard: 2,
+                levels: Some(3),
+            },
+            Layout {
+                chunk: [4, 8, 8],
+                shard: 1,
+                levels: Some(2),
+            },
+            Layout {
+                chunk: [8, 4, 4],
+                shard: 3,
+                levels: Some(2),
+            },
+            Layout {
+                chunk: [8, 16, 16],
+                shard: 2,
+                levels: Some(1),
+            },
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let rows_path = d.path().join(format!("{name}-{i}-rows.zarr"));
+            let store = ZarrVolume::create(&rows_path, &grid, &layout, &attrs).unwrap();
+            let rows = store.chunk_rows().len();
+            let once =
+                voxelize_rows(&slicer, route, set.clone(), &eval, &|| {}, &store, 0..rows).unwrap();
+            let tiles = store.tiles();
+            assert!(
+                tiles.len() > 1,
+                "{name} {layout:?}: one tile {:?}",
+                store.tile()
+            );
+
+            let bricks_path = d.path().join(format!("{name}-{i}-bricks.zarr"));
+            ZarrVolume::create(&bricks_path, &grid, &layout, &attrs).unwrap();
+            // Tasks of a row range × a tile, last first, two at once.
+            let task = |rows: std::ops::Range<usize>, tile: PixelBox| {
+                let store = ZarrVolume::open(&bricks_path).unwrap();
+                let w = voxelize_bricks(
+                    &slicer,
+                    false,
+                    set.clone(),
+                    &eval,
+                    &|| {},
+                    &store,
+                    rows,
+                    &[tile],
+                )
+                .unwrap();
+                (w, store.chunks_held())
+            };
+            let mut done = vec![];
+            let half = rows / 2;
+            for &tile in tiles.iter().rev() {
+                std::thread::scope(|sc| {
+                    let a = sc.spawn(|| task(half..rows, tile));
+                    let b = sc.spawn(|| task(0..half, tile));
+                    done.push(a.join().unwrap());
+                    done.push(b.join().unwrap());
+                });
+            }
+            let (a, b) = (files(&rows_path), files(&bricks_path));
+            assert_eq!(
+                a.keys().collect::<Vec<_>>(),
+                b.keys().collect::<Vec<_>>(),
+                "{name} {layout:?}"
+            );
+            for (p, bytes) in &a {
+                assert!(b[p] == *bytes, "{name} {layout:?}: {} differs", p.display());
+            }
+            let sum = |f: &dyn Fn(&csgpix::voxel::Work) -> u64| {
+                done.iter().map(|(w, _)| f(w)).sum::<u64>()
+            };
+            assert_eq!(sum(&|w| w.filled as u64), once.filled as u64);
+            assert_eq!(sum(&|w| w.frames), once.frames);
+            assert_eq!(sum(&|w| w.cycles), once.cycles);
+            // The runs found chunks inside a part (written without looking at a voxel), and
+            // every chunk is counted once by what it holds, as whole rows count them.
+            let held = |f: fn(&csgpix::zarr::ChunksHeld) -> u64| {
+                done.iter().map(|(_, h)| f(h)).sum::<u64>()
+            };
+            let rows_held = store.chunks_held();
+            assert_eq!(held(|h| h.empty), rows_held.empty, "{name} {layout:?}");
+            assert_eq!(held(|h| h.uniform), rows_held.uniform, "{name} {layout:?}");
+            assert_eq!(held(|h| h.mixed), rows_held.mixed, "{name} {layout:?}");
+            assert!(rows_held.mixed > 0, "{name} {layout:?}: {rows_held:?}");
+            uniform += rows_held.uniform;
+        }
+        assert!(uniform > 0, "{name}: no chunk inside a part");
+    }
+}
+
 /// A sharded store with 3 levels from the command line: level 0 is the NRRD volume, levels
 /// 1 and 2 its downsamples by the documented rule (read from the files, and by zarrs), each
 /// placed at the centre of the voxels it covers; the shard files are exactly those the rule
@@ -505,10 +641,12 @@ fn a_sharded_pyramid_reads_back_as_the_downsampled_volume() {
         assert!(read_level(&store, l) == (*ldims, lvox.clone()), "level {l}");
         assert!(opened.read_level(l).unwrap() == *lvox, "level {l} by zarrs");
         // The rule's shards: level 0's rows of 8 slabs are 4 and 2 slabs deep at levels 1
-        // and 2; shards are 2 × 2 chunks of 16 across.
+        // and 2; shards are 2 × 2 chunks of 16 across at level 0, halved per level (at least
+        // one chunk), so that each covers the scene of a level-0 shard.
         let [nx, ny, nz] = *ldims;
         let (cz, cy, cx) = (8 >> l, 16.min(ny), 16.min(nx));
-        let (sy, sx) = (2.min(ny.div_ceil(cy)) * cy, 2.min(nx.div_ceil(cx)) * cx);
+        let per = (2usize >> l).max(1);
+        let (sy, sx) = (per.min(ny.div_ceil(cy)) * cy, per.min(nx.div_ceil(cx)) * cx);
         assert_eq!(levels[l].chunk, [cz, cy, cx]);
         assert_eq!(levels[l].shard, Some([cz, sy, sx]));
         let mut predicted = vec![];

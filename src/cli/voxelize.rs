@@ -21,7 +21,7 @@ use csgpix::voxel::{
     memory_estimate, voxelize, voxelize_streaming, BindingProblem, Error, Grid, GridSpec, Route,
     Sampling, Slicer, SlicerOptions, Volume, Work,
 };
-use csgpix::zarr::{voxelize_rows, VolumeAttrs, ZarrVolume};
+use csgpix::zarr::{voxelize_bricks, voxelize_rows, VolumeAttrs, ZarrVolume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::{Equations, WordFormat};
@@ -449,6 +449,13 @@ struct ZarrReport {
     /// Files written per level: shard files, or chunk files when unsharded (all-0 shards
     /// and chunks have none).
     files_written: Vec<u64>,
+    /// A brick's columns, X, Y (the run route writes brick by brick; else null).
+    tile: Option<[usize; 2]>,
+    /// Bricks written (chunk rows × tiles), or null.
+    bricks: Option<usize>,
+    /// Chunks of every level by what they hold: `empty` (skipped), `uniform` (one value,
+    /// compressed once), `mixed`.
+    chunks: csgpix::zarr::ChunksHeld,
 }
 
 /// `sum:KS,KD` or `max`.
@@ -642,8 +649,26 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         let store =
             ZarrVolume::create(&root, &grid, &layout, &attrs).map_err(|e| zarr_message(e, &a))?;
         let rows = store.chunk_rows().len();
+        let tiles = store.tiles();
+        let bricks = matches!(route, Route::Runs { .. }).then_some(rows * tiles.len());
+        if let Some(n) = bricks {
+            bar.set_length(n as u64);
+            bar.set_message("bricks");
+        }
         let work = pool
-            .install(|| voxelize_rows(&slicer, route, set, eval.as_ref(), &tick, &store, 0..rows))
+            .install(|| match route {
+                Route::Runs { float } => voxelize_bricks(
+                    &slicer,
+                    float,
+                    set,
+                    eval.as_ref(),
+                    &tick,
+                    &store,
+                    0..rows,
+                    &tiles,
+                ),
+                _ => voxelize_rows(&slicer, route, set, eval.as_ref(), &tick, &store, 0..rows),
+            })
             .map_err(|e| zarr_message(e, &a))?;
         bar.finish_and_clear();
         let wall = t0.elapsed().as_secs_f64();
@@ -654,6 +679,9 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             shard: store.levels()[0].shard,
             levels: store.levels().len(),
             files_written: store.files_written(),
+            tile: bricks.map(|_| store.tile()),
+            bricks,
+            chunks: store.chunks_held(),
         });
         return report(
             &a,
@@ -902,6 +930,7 @@ fn progress(slicer: &Slicer, route: Route) -> ProgressBar {
         Route::Runs { .. } => (csgpix::voxel::runs::ticks(slicer), "row bands"),
         _ => (nz, "slices"),
     };
+
     let heavy = match route {
         Route::Array { .. } => true,
         Route::Runs { .. } => voxels > 100_000_000,
@@ -911,10 +940,12 @@ fn progress(slicer: &Slicer, route: Route) -> ProgressBar {
         true => ProgressBar::new(len as u64),
         false => ProgressBar::hidden(),
     };
-    let template = format!("{{elapsed_precise}} [{{bar:40}}] {{pos}}/{{len}} {unit}");
-    if let Ok(style) = ProgressStyle::with_template(&template) {
+    // The unit is the message, so that a Zarr run by bricks can count bricks instead.
+    let template = "{elapsed_precise} [{bar:40}] {pos}/{len} {msg}";
+    if let Ok(style) = ProgressStyle::with_template(template) {
         bar.set_style(style);
     }
+    bar.set_message(unit);
     bar
 }
 

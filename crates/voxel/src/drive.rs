@@ -418,7 +418,7 @@ fn convex_source(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Con
 
 /// The clocks and frames of a run over `slabs` slabs, counted from the programs: the same on
 /// every route.
-fn counted_work(slicer: &Slicer, set: &EquationSet, slabs: usize) -> Result<Work> {
+pub fn counted_work(slicer: &Slicer, set: &EquationSet, slabs: usize) -> Result<Work> {
     let cfg = slicer.config();
     let [nx, ny, _] = slicer.grid.dims;
     let (prims, nz) = (slicer.lists.len(), slabs);

@@ -21,6 +21,11 @@ pub struct PixelBox {
 }
 
 impl PixelBox {
+    /// The box `x0..x1` × `y0..y1`.
+    pub const fn new(x0: usize, y0: usize, x1: usize, y1: usize) -> PixelBox {
+        PixelBox { x0, y0, x1, y1 }
+    }
+
     /// Columns.
     pub fn width(&self) -> usize {
         self.x1 - self.x0

@@ -74,6 +74,28 @@ impl ColumnRuns {
     }
 }
 
+impl ColumnRuns {
+    /// The one colour every voxel of the columns of `b` (within [`ColumnRuns::columns`])
+    /// has over `slabs`, if they have one: a chunk inside or outside every part, known from
+    /// the runs without a voxel.
+    pub fn uniform(&self, b: PixelBox, slabs: std::ops::Range<usize>) -> Option<u8> {
+        let mut colour = None;
+        for y in b.y0..b.y1 {
+            for x in b.x0..b.x1 {
+                let col = self.column(x, y);
+                let at = col.partition_point(|r| (r.k as usize) <= slabs.start);
+                let c = at.checked_sub(1).map_or(0, |a| col[a].colour);
+                let changes = col.get(at).is_some_and(|r| (r.k as usize) < slabs.end);
+                if changes || colour.is_some_and(|v| v != c) {
+                    return None;
+                }
+                colour = Some(c);
+            }
+        }
+        colour
+    }
+}
+
 /// Non-empty voxels of one column's runs within slabs `slabs` (its end at most the grid's).
 fn filled_between(runs: &[Run], slabs: std::ops::Range<usize>) -> usize {
     runs.iter()
@@ -548,12 +570,89 @@ pub fn voxelize_brick(
             "brick {columns:?} × slabs {slabs:?} is not inside the grid {nx}x{ny}x{nz}"
         )));
     }
-    let (runs, _) = Columns::new(slicer, float)?.columns(eval, columns);
+    let runs = Columns::new(slicer, float)?.brick(eval, columns);
     let filled = runs.filled(slabs.clone());
     let mut voxels = vec![0u8; columns.pixels() * slabs.len()];
-    let mut rows: Vec<&mut [u8]> = voxels.chunks_mut(columns.width().max(1)).collect();
-    write_rows(&runs, slabs, &mut rows);
+    runs.write(slabs, &mut voxels);
     Ok((voxels, filled))
+}
+
+/// A brick's columns' runs, a band of panel rows each (computed in parallel): what
+/// [`write_brick`] writes slab range after slab range, and the evaluator's counts.
+pub struct BrickRuns {
+    /// The brick's columns.
+    pub columns: PixelBox,
+    /// Its bands' runs, top to bottom, each the brick's width.
+    pub bands: Vec<ColumnRuns>,
+    /// The evaluator's work.
+    pub ops: OpCounts,
+}
+
+impl Columns<'_> {
+    /// The runs of the columns of `b`, bands of panel rows in parallel.
+    pub fn brick(&self, eval: &dyn SliceEval, b: PixelBox) -> BrickRuns {
+        let ph = self.panel[1];
+        let bands: Vec<PixelBox> = (b.y0 / ph..b.y1.div_ceil(ph))
+            .map(|p| PixelBox::new(b.x0, (p * ph).max(b.y0), b.x1, ((p + 1) * ph).min(b.y1)))
+            .collect();
+        let done: Vec<(ColumnRuns, OpCounts)> = bands
+            .into_par_iter()
+            .map(|band| self.columns(eval, band))
+            .collect();
+        let mut ops = OpCounts::default();
+        let bands = done
+            .into_iter()
+            .map(|(r, o)| {
+                ops += o;
+                r
+            })
+            .collect();
+        BrickRuns {
+            columns: b,
+            bands,
+            ops,
+        }
+    }
+}
+
+impl BrickRuns {
+    /// Voxels filled within `slabs`.
+    pub fn filled(&self, slabs: std::ops::Range<usize>) -> usize {
+        self.bands.iter().map(|b| b.filled(slabs.clone())).sum()
+    }
+
+    /// The one colour of the columns of `b` (within the brick) over `slabs`, if any
+    /// ([`ColumnRuns::uniform`]).
+    pub fn uniform(&self, b: PixelBox, slabs: std::ops::Range<usize>) -> Option<u8> {
+        let mut colour = None;
+        for band in &self.bands {
+            let Some(part) = band.columns.intersect(b) else {
+                continue;
+            };
+            let c = band.uniform(part, slabs.clone())?;
+            if colour.is_some_and(|v| v != c) {
+                return None;
+            }
+            colour = Some(c);
+        }
+        colour
+    }
+
+    /// The brick's voxels over `slabs` into `voxels` (zeroed; X fastest, then Y, then Z,
+    /// the brick's width and height), bands in parallel.
+    pub fn write(&self, slabs: std::ops::Range<usize>, voxels: &mut [u8]) {
+        let b = self.columns;
+        let (w, h) = (b.width().max(1), b.height());
+        let mut owned: Vec<Vec<&mut [u8]>> = self.bands.iter().map(|_| vec![]).collect();
+        let band_of = |y: usize| self.bands.partition_point(|r| r.columns.y1 <= b.y0 + y);
+        for (r, row) in voxels.chunks_mut(w).enumerate() {
+            owned[band_of(r % h)].push(row);
+        }
+        owned
+            .into_par_iter()
+            .zip(&self.bands)
+            .for_each(|(mut rows, runs)| write_rows(runs, slabs.clone(), &mut rows));
+    }
 }
 
 /// Slices `slabs` of the run route handed to `sink` in order of k, as

@@ -90,6 +90,14 @@ pub enum Error {
         /// Voxels along Y.
         ny: usize,
     },
+    /// Columns that are neither the whole grid nor one of the volume's tiles.
+    #[error("columns {columns}: a brick is the whole grid or one tile of {tile:?} (X, Y) voxels")]
+    BadBrick {
+        /// The columns given.
+        columns: String,
+        /// The volume's tile.
+        tile: [usize; 2],
+    },
     /// The slicer's grid is not the one the volume was created for.
     #[error(
         "the grid {found} is not the volume's {expected}: voxelize on the grid it was created for"

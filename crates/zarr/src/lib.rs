@@ -96,9 +96,11 @@ use std::sync::Arc;
 
 use csgpix_scene::grid::Grid;
 use csgpix_scene::output::staged_write;
+use csgpix_voxel::runs::BrickRuns;
 use csgpix_voxel::slice::SliceEval;
-use csgpix_voxel::{Route, Slicer, Work};
+use csgpix_voxel::{PixelBox, Route, Slicer, Work};
 use glam::DVec3;
+use rayon::prelude::*;
 use rtl_model::EquationSet;
 use serde_json::{json, Value};
 use zarrs::array::codec::{BytesCodec, GzipCodec, ShardingCodecBuilder};
@@ -186,6 +188,17 @@ impl Default for Layout {
     fn default() -> Layout {
         Layout::new([DEFAULT_CHUNK; 3])
     }
+}
+
+/// A run's chunks by what they hold ([`ZarrVolume::chunks_held`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct ChunksHeld {
+    /// All 0: skipped.
+    pub empty: u64,
+    /// One non-zero value throughout.
+    pub uniform: u64,
+    /// Anything else.
+    pub mixed: u64,
 }
 
 /// One level of the pyramid as written: the array at `OUT.zarr/L`.
@@ -278,13 +291,41 @@ pub fn plan(dims: [usize; 3], layout: &Layout) -> Result<Vec<Level>> {
             let dims = dims.map(|d| d.div_ceil(1 << l));
             let [nx, ny, _] = dims;
             let chunk = [cz.div_ceil(1 << l), cy.min(ny), cx.min(nx)];
+            // Level l's shard is `shard >> l` chunks a side (at least 1), so that while the
+            // chunk's sides stay, every level's shard covers the scene a level-0 shard does:
+            // a brick of level-0 shards makes whole files at every level ([`tile`]).
+            let per = (layout.shard >> l).max(1);
             let shard = (layout.shard > 1).then(|| {
-                let across = |n: usize, c: usize| layout.shard.min(n.div_ceil(c)) * c;
+                let across = |n: usize, c: usize| per.min(n.div_ceil(c)) * c;
                 [chunk[0], across(ny, chunk[1]), across(nx, chunk[2])]
             });
             Level { dims, chunk, shard }
         })
         .collect())
+}
+
+/// The XY tile (level-0 voxels along X, then Y) of a brick: the least side that every
+/// level's file (its shard, or chunk when unsharded), scaled back to level 0, divides, so a
+/// brick of rows × tile makes whole files at every level and its downsampled levels start on
+/// even voxels; the grid's side when that is larger. Tiles start at multiples of it.
+pub fn tile(dims: [usize; 3], levels: &[Level]) -> [usize; 2] {
+    let side = |axis: usize, n: usize| {
+        let t = levels.iter().enumerate().fold(1usize, |t, (l, v)| {
+            lcm(t, v.grid_unit()[axis].saturating_mul(1 << l))
+        });
+        t.min(n).max(1)
+    };
+    [side(2, dims[0]), side(1, dims[1])]
+}
+
+fn lcm(a: usize, b: usize) -> usize {
+    let gcd = |mut a: usize, mut b: usize| {
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    (a / gcd(a, b)).saturating_mul(b)
 }
 
 /// Bytes of chunk row slices a run holds per level: level 0's row (buffered by
@@ -360,6 +401,8 @@ pub struct ZarrVolume {
     /// Inner chunks per shard side (1: unsharded).
     shard: usize,
     levels: Vec<LevelArray>,
+    /// Chunks of one value, compressed once.
+    uniform: shard::UniformChunks,
 }
 
 impl std::fmt::Debug for ZarrVolume {
@@ -554,6 +597,7 @@ impl ZarrVolume {
             grid: *grid,
             shard: layout.shard,
             levels: arrays,
+            uniform: Default::default(),
         })
     }
 
@@ -649,6 +693,7 @@ impl ZarrVolume {
             grid,
             shard: layout.shard,
             levels: arrays,
+            uniform: Default::default(),
         })
     }
 
@@ -699,6 +744,22 @@ impl ZarrVolume {
             .collect()
     }
 
+    /// Chunks (inner chunks when sharded) of every level this value has been given, by what
+    /// they hold: all 0 (skipped: no bytes), one non-zero value throughout (compressed once
+    /// per value), anything else (compressed).
+    pub fn chunks_held(&self) -> ChunksHeld {
+        let [empty, uniform, mixed] = self
+            .uniform
+            .counts
+            .each_ref()
+            .map(|c| c.load(Ordering::Relaxed));
+        ChunksHeld {
+            empty,
+            uniform,
+            mixed,
+        }
+    }
+
     /// The slabs (k ranges) of each chunk row of level 0, in order: `cz` slabs each, the
     /// last fewer when `cz` does not divide nz. Row r of every coarser level is made from
     /// row r of level 0.
@@ -732,6 +793,72 @@ impl ZarrVolume {
     /// removed. On an error the first one is returned, and files of the row may be written
     /// or not.
     pub fn write_row(&self, row: usize, slices: &[u8]) -> Result<()> {
+        let [nx, ny, _] = self.grid.dims;
+        self.write_brick(row, PixelBox::new(0, 0, nx, ny), slices, None)
+    }
+
+    /// The XY tile of a brick ([`tile`]): a brick is a chunk row's columns of one tile.
+    pub fn tile(&self) -> [usize; 2] {
+        let levels: Vec<Level> = self.levels.iter().map(|v| v.level).collect();
+        tile(self.grid.dims, &levels)
+    }
+
+    /// The tiles of the grid, row-major: the columns of each brick.
+    pub fn tiles(&self) -> Vec<PixelBox> {
+        let [nx, ny, _] = self.grid.dims;
+        let [tx, ty] = self.tile();
+        (0..ny.div_ceil(ty))
+            .flat_map(|j| {
+                (0..nx.div_ceil(tx)).map(move |i| {
+                    PixelBox::new(
+                        i * tx,
+                        j * ty,
+                        ((i + 1) * tx).min(nx),
+                        ((j + 1) * ty).min(ny),
+                    )
+                })
+            })
+            .collect()
+    }
+
+    /// Store the brick of chunk row `row` and the tile `columns` (one of [`tiles`](Self::tiles),
+    /// or the whole grid) at every level, as [`write_row`](Self::write_row) stores a row:
+    /// `slices` are the brick's slices, each `columns`' width × height. `known` says, where
+    /// the caller knows it (from the runs), which of the brick's level-0 chunks hold one
+    /// value throughout (row-major over the brick's chunks; see [`RowCut`](shard::RowCut)):
+    /// those are written without looking at their voxels. The files depend on the voxels
+    /// alone, so bricks written in any order, by any process, make the row's files.
+    pub fn write_brick(
+        &self,
+        row: usize,
+        columns: PixelBox,
+        slices: &[u8],
+        known: Option<&[Option<u8>]>,
+    ) -> Result<()> {
+        let slabs = self.brick_slabs(row, columns, slices.len())?;
+        let mut unsynced = shard::Unsynced::default();
+        let [w, h] = [columns.width(), columns.height()];
+        self.write_level_brick(0, row, columns, [w, h, slabs], slices, known, &mut unsynced)?;
+        let mut below: Option<Vec<u8>> = None;
+        let mut size = [w, h, slabs];
+        for l in 1..self.levels.len() {
+            let next = downsample(below.as_deref().unwrap_or(slices), size);
+            size = size.map(|d| d.div_ceil(2));
+            let b = PixelBox::new(
+                columns.x0 >> l,
+                columns.y0 >> l,
+                (columns.x0 >> l) + size[0],
+                (columns.y0 >> l) + size[1],
+            );
+            let known = known.map(|k| self.coarsen(k, columns, l));
+            self.write_level_brick(l, row, b, size, &next, known.as_deref(), &mut unsynced)?;
+            below = Some(next);
+        }
+        unsynced.flush()
+    }
+
+    /// The slabs of row `row`, checking that `columns` is a brick and `len` its bytes.
+    fn brick_slabs(&self, row: usize, columns: PixelBox, len: usize) -> Result<usize> {
         let rows = self.chunk_rows();
         let slabs = rows
             .get(row)
@@ -741,51 +868,85 @@ impl ZarrVolume {
             })?
             .len();
         let [nx, ny, _] = self.grid.dims;
-        if slices.len() != slabs * nx * ny {
-            return Err(Error::RowLength {
-                row,
-                expected: slabs * nx * ny,
-                got: slices.len(),
-                slabs,
-                nx,
-                ny,
+        let [tx, ty] = self.tile();
+        let whole = PixelBox::new(0, 0, nx, ny);
+        let on_tile = columns.x0.is_multiple_of(tx)
+            && columns.y0.is_multiple_of(ty)
+            && columns.x1 == (columns.x0 + tx).min(nx)
+            && columns.y1 == (columns.y0 + ty).min(ny);
+        if columns != whole && !on_tile {
+            return Err(Error::BadBrick {
+                columns: format!("{columns:?}"),
+                tile: [tx, ty],
             });
         }
-        let mut unsynced = shard::Unsynced::default();
-        self.write_level_row(0, row, slices, slabs, &mut unsynced)?;
-        let mut below: Option<Vec<u8>> = None;
-        let mut size = [nx, ny, slabs];
-        for l in 1..self.levels.len() {
-            let next = downsample(below.as_deref().unwrap_or(slices), size);
-            size = size.map(|d| d.div_ceil(2));
-            self.write_level_row(l, row, &next, size[2], &mut unsynced)?;
-            below = Some(next);
+        let (w, h) = (columns.width(), columns.height());
+        if len != slabs * w * h {
+            return Err(Error::RowLength {
+                row,
+                expected: slabs * w * h,
+                got: len,
+                slabs,
+                nx: w,
+                ny: h,
+            });
         }
-        unsynced.flush()
+        Ok(slabs)
     }
 
-    /// Level `l`'s chunk row `row`: `slabs` slices of the level's nx × ny.
-    fn write_level_row(
+    /// What level `l`'s chunks of the brick on `columns` hold, from its level-0 chunks'
+    /// `known`: one value where every level-0 chunk it covers is known to hold that value.
+    fn coarsen(&self, known: &[Option<u8>], columns: PixelBox, l: usize) -> Vec<Option<u8>> {
+        let [_, cy0, cx0] = self.levels[0].level.chunk;
+        let [_, cy, cx] = self.levels[l].level.chunk;
+        let across0 = columns.width().div_ceil(cx0);
+        let (w, h) = (columns.width(), columns.height());
+        let (wl, hl) = (w.div_ceil(1 << l), h.div_ceil(1 << l));
+        let mut out = vec![];
+        for bj in 0..hl.div_ceil(cy) {
+            for bi in 0..wl.div_ceil(cx) {
+                // Level-0 voxels of the chunk, within the brick, then its level-0 chunks.
+                let ys = (bj * cy) << l..(((bj + 1) * cy) << l).min(h);
+                let xs = (bi * cx) << l..(((bi + 1) * cx) << l).min(w);
+                let mut values = (ys.start / cy0..ys.end.div_ceil(cy0)).flat_map(|j| {
+                    (xs.start / cx0..xs.end.div_ceil(cx0)).map(move |i| known[j * across0 + i])
+                });
+                let first = values.next().flatten();
+                out.push(first.filter(|&v| values.all(|u| u == Some(v))));
+            }
+        }
+        out
+    }
+
+    /// Level `l`'s part of a brick: the tile `b` of the level, `size` its voxels (X, Y,
+    /// slabs).
+    #[allow(clippy::too_many_arguments)]
+    fn write_level_brick(
         &self,
         l: usize,
         row: usize,
+        b: PixelBox,
+        size: [usize; 3],
         slices: &[u8],
-        slabs: usize,
+        known: Option<&[Option<u8>]>,
         unsynced: &mut shard::Unsynced,
     ) -> Result<()> {
         let v = &self.levels[l];
-        let [nx, ny, _] = v.level.dims;
+        let [_, cy, cx] = v.level.chunk;
         let cut = shard::RowCut {
             slices,
-            nx,
-            ny,
-            slabs,
+            nx: size[0],
+            ny: size[1],
+            slabs: size[2],
             chunk: v.level.chunk,
+            at: [b.y0 / cy, b.x0 / cx],
+            known,
         };
         let written = match v.level.shard {
             Some([_, sy, sx]) => {
-                let per = [sy / v.level.chunk[1], sx / v.level.chunk[2]];
-                shard::write_row(&self.path.join(l.to_string()), row, &cut, per, unsynced)?
+                let per = [sy / cy, sx / cx];
+                let dir = self.path.join(l.to_string());
+                shard::write_row(&dir, row, &cut, per, &self.uniform, unsynced)?
             }
             None => self.write_chunks(&v.array, row, &cut)?,
         };
@@ -800,19 +961,23 @@ impl ZarrVolume {
         row: usize,
         cut: &shard::RowCut,
     ) -> Result<u64> {
-        let [_, cy, cx] = cut.chunk;
-        let across = cut.nx.div_ceil(cx);
-        let chunks = cut.ny.div_ceil(cy) * across;
+        let (down, across) = cut.grid();
+        let chunks = down * across;
         let options = codec_options();
         let written = AtomicU64::new(0);
         let write = |c: usize| -> Result<()> {
             let (bj, bi) = (c / across, c % across);
-            let at = [row as u64, bj as u64, bi as u64];
+            let at = [row, cut.at[0] + bj, cut.at[1] + bi].map(|c| c as u64);
             // The store makes the chunk's directories as it writes: never after a signal's
             // cleanup has removed a staged store (crates/scene/src/output.rs).
             let _writing = staged_write().ok_or(Error::Interrupted)?;
             let err = store_err(&self.path);
-            match cut.chunk_bytes(bj, bi) {
+            let held = cut.held(bj, bi);
+            self.uniform.count(held);
+            match (held != shard::Held::Empty)
+                .then(|| cut.chunk_bytes(bj, bi))
+                .flatten()
+            {
                 Some(chunk) => {
                     written.fetch_add(1, Ordering::Relaxed);
                     array
@@ -883,20 +1048,8 @@ pub fn voxelize_rows(
     volume: &ZarrVolume,
     rows: Range<usize>,
 ) -> Result<Work> {
-    if slicer.grid != volume.grid {
-        return Err(Error::GridMismatch {
-            expected: grid_text(&volume.grid),
-            found: grid_text(&slicer.grid),
-        });
-    }
+    check_rows(slicer, volume, &rows)?;
     let all = volume.chunk_rows();
-    if rows.start > rows.end || rows.end > all.len() {
-        return Err(Error::RowsRange {
-            start: rows.start,
-            end: rows.end,
-            rows: all.len(),
-        });
-    }
     if rows.is_empty() {
         return Ok(Work::default());
     }
@@ -912,6 +1065,93 @@ pub fn voxelize_rows(
         }
         Ok::<(), Error>(())
     })
+}
+
+/// Voxelize the bricks of chunk rows `rows` × `tiles` (each one of [`ZarrVolume::tiles`]) of
+/// `volume` by the run route and store them ([`ZarrVolume::write_brick`]): per tile, its
+/// columns' runs (only its columns: [`csgpix_voxel::runs::Columns::brick`]), then per row the
+/// brick's voxels, its chunks that one run fills (or leaves empty) known from the runs.
+/// Memory is one tile's runs and one brick's rows, whatever the grid's width. `tick` once a
+/// brick. The frames and clocks of a row (the array's, counted from the programs) go with
+/// the brick of the tile at the grid's origin, so runs over disjoint bricks sum to the whole
+/// run's [`Work`]. The run route must apply ([`csgpix_voxel::runs::applies`]).
+#[allow(clippy::too_many_arguments)]
+pub fn voxelize_bricks(
+    slicer: &Slicer,
+    float: bool,
+    set: EquationSet,
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    volume: &ZarrVolume,
+    rows: Range<usize>,
+    tiles: &[PixelBox],
+) -> Result<Work> {
+    check_rows(slicer, volume, &rows)?;
+    if !csgpix_voxel::runs::applies(slicer) {
+        return Err(Error::Msg(
+            "bricks take the run route, which does not apply to grey datasets or blends".into(),
+        ));
+    }
+    let all = volume.chunk_rows();
+    let columns = csgpix_voxel::runs::Columns::new(slicer, float)?;
+    let mut work = Work::default();
+    for &tile in tiles {
+        let runs = columns.brick(eval, tile);
+        work.ops += runs.ops;
+        for row in rows.clone() {
+            let slabs = all[row].clone();
+            if tile.x0 == 0 && tile.y0 == 0 {
+                let counted = csgpix_voxel::drive::counted_work(slicer, &set, slabs.len())?;
+                work.frames += counted.frames;
+                work.cycles += counted.cycles;
+                work.full_pixel_clocks += counted.full_pixel_clocks;
+            }
+            work.filled += runs.filled(slabs.clone());
+            let known = known_chunks(&runs, volume.chunk(), slabs.clone());
+            let mut voxels = vec![0u8; tile.pixels() * slabs.len()];
+            runs.write(slabs, &mut voxels);
+            volume.write_brick(row, tile, &voxels, Some(&known))?;
+            tick();
+        }
+    }
+    Ok(work)
+}
+
+/// What each level-0 chunk of a brick holds, from its runs (row-major over the brick's
+/// chunks): one colour, or None where the runs change within it.
+fn known_chunks(runs: &BrickRuns, [_, cy, cx]: [usize; 3], slabs: Range<usize>) -> Vec<Option<u8>> {
+    let b = runs.columns;
+    let boxes: Vec<PixelBox> = (b.y0..b.y1)
+        .step_by(cy)
+        .flat_map(|y| {
+            (b.x0..b.x1)
+                .step_by(cx)
+                .map(move |x| PixelBox::new(x, y, (x + cx).min(b.x1), (y + cy).min(b.y1)))
+        })
+        .collect();
+    boxes
+        .into_par_iter()
+        .map(|c| runs.uniform(c, slabs.clone()))
+        .collect()
+}
+
+/// The slicer is on the volume's grid and `rows` are among its rows.
+fn check_rows(slicer: &Slicer, volume: &ZarrVolume, rows: &Range<usize>) -> Result<()> {
+    if slicer.grid != volume.grid {
+        return Err(Error::GridMismatch {
+            expected: grid_text(&volume.grid),
+            found: grid_text(&slicer.grid),
+        });
+    }
+    let n = volume.chunk_rows().len();
+    if rows.start > rows.end || rows.end > n {
+        return Err(Error::RowsRange {
+            start: rows.start,
+            end: rows.end,
+            rows: n,
+        });
+    }
+    Ok(())
 }
 
 /// What a volume's values mean, for the `csgpix` attribute's `values`: colour codes, with
@@ -962,6 +1202,66 @@ mod tests {
         }
     }
 
+    proptest::proptest! {
+        /// Every file (shard, or chunk when unsharded) of every level lies in one tile,
+        /// scaled back to level 0, and tiles start on voxels even at every level.
+        #[test]
+        fn a_tile_holds_whole_files_of_every_level(
+            dims in proptest::array::uniform3(1usize..600),
+            chunk in proptest::array::uniform3(1usize..70),
+            shard in 1usize..9,
+            levels in 1usize..8,
+        ) {
+            let layout = Layout { chunk, shard, levels: None };
+            let mut levels_of = plan(dims, &layout).unwrap();
+            levels_of.truncate(levels);
+            let [tx, ty] = tile(dims, &levels_of);
+            for (l, v) in levels_of.iter().enumerate() {
+                let [_, uy, ux] = v.grid_unit();
+                for (t, u, n) in [(tx, ux, dims[0]), (ty, uy, dims[1])] {
+                    // A tile is the whole side, or a whole number of the level's files.
+                    proptest::prop_assert!(t == n || (t % (u << l) == 0), "{t} {u} {l} {n}");
+                    proptest::prop_assert!(t == n || t % (1 << (levels_of.len() - 1)) == 0);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn shards_cover_the_same_scene_at_every_level() {
+        let levels = plan([4096, 4096, 4096], &Layout::default()).unwrap();
+        assert_eq!(levels.len(), 5);
+        for (l, v) in levels.iter().enumerate() {
+            let [_, sy, sx] = v.shard.unwrap();
+            assert_eq!([sy << l, sx << l], [4096, 4096], "level {l}");
+        }
+        assert_eq!(tile([4096, 4096, 4096], &levels), [4096, 4096]);
+        assert_eq!(
+            tile(
+                [16384, 16384, 16384],
+                &plan([16384; 3], &Layout::default()).unwrap()
+            ),
+            [4096, 4096]
+        );
+        let small = Layout {
+            shard: 8,
+            ..Layout::default()
+        };
+        assert_eq!(
+            tile([16384; 3], &plan([16384; 3], &small).unwrap()),
+            [4096, 4096]
+        );
+        let small = Layout {
+            shard: 8,
+            levels: Some(4),
+            ..Layout::default()
+        };
+        assert_eq!(
+            tile([16384; 3], &plan([16384; 3], &small).unwrap()),
+            [512, 512]
+        );
+    }
+
     #[test]
     fn chunks_are_cut_to_the_grid_and_rows_cover_every_slab_once() {
         assert_eq!(chunk_shape([10, 20, 30], [64, 8, 64]).unwrap(), [30, 8, 10]);
@@ -983,7 +1283,7 @@ mod tests {
     }
 
     /// The levels and shards of the rule (docs/zarr.md): depth halved per level, sides cut
-    /// to each level, shards a whole number of chunks cut to the level.
+    /// to each level, shards a whole number of chunks, halved per level, cut to the level.
     #[test]
     fn the_plan_halves_levels_and_cuts_shards() {
         let p = plan([1000, 300, 130], &sharded([64, 64, 64], 4, 3)).unwrap();
@@ -998,17 +1298,19 @@ mod tests {
                 Level {
                     dims: [500, 150, 65],
                     chunk: [32, 64, 64],
-                    shard: Some([32, 192, 256])
+                    shard: Some([32, 128, 128])
                 },
                 Level {
                     dims: [250, 75, 33],
                     chunk: [16, 64, 64],
-                    shard: Some([16, 128, 256])
+                    shard: Some([16, 64, 64])
                 },
             ]
         );
+        // Level l's shard is 4 >> l chunks a side: each covers a level-0 shard's scene.
         assert_eq!(p[0].files_per_row(), 2 * 4);
-        assert_eq!(p[2].files_per_row(), 1);
+        assert_eq!(p[1].files_per_row(), 2 * 4);
+        assert_eq!(p[2].files_per_row(), 2 * 4);
         // Defaults: levels until the largest side is at most 256, within the depth's halvings.
         assert_eq!(default_levels([384; 3]), 2);
         assert_eq!(default_levels([256, 10, 10]), 1);

@@ -7,13 +7,17 @@
 //!
 //! <https://zarr-specs.readthedocs.io/en/latest/v3/codecs/sharding-indexed/index.html>
 
+use std::collections::HashMap;
 use std::fs::File;
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
 
 use csgpix_scene::output::staged_write;
 use rayon::prelude::*;
 
+use crate::pyramid::all_equal;
 use crate::{Error, Result, GZIP_LEVEL, WRITERS};
 
 /// Inner chunks compressed at once per thread of the pool: the batch is held compressed
@@ -34,33 +38,98 @@ pub(crate) fn gzip(data: &[u8]) -> std::io::Result<Vec<u8>> {
     Ok(out)
 }
 
-/// One level's chunk row as the writer sees it: the row's slices and how the level is cut.
+/// One level's chunk row, or a brick's part of it, as the writer sees it: the slices and
+/// how the level is cut.
 pub(crate) struct RowCut<'a> {
-    /// The row's slabs' slices in order, each `nx × ny`, X fastest.
+    /// The slabs' slices in order, each `nx × ny`, X fastest.
     pub slices: &'a [u8],
-    /// The level's voxels along X and Y, and the row's slabs.
+    /// The voxels along X and Y (the brick's at this level), and the row's slabs.
     pub nx: usize,
     pub ny: usize,
     pub slabs: usize,
     /// The inner chunk, Z, Y, X (Z: the row's depth at this level).
     pub chunk: [usize; 3],
+    /// The level's chunk (j, i) the slices start at (0, 0 for a whole row).
+    pub at: [usize; 2],
+    /// What each chunk of the cut holds where the caller knows it (row-major, `ny / cy`
+    /// rounded up by `nx / cx` rounded up): `Some(v)` when every voxel is `v`, None when
+    /// unknown. Without it the writer looks at the voxels.
+    pub known: Option<&'a [Option<u8>]>,
+}
+
+/// What an inner chunk holds, padded with 0 past the grid's edges.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Held {
+    /// Every voxel 0: no chunk is written.
+    Empty,
+    /// Every voxel one non-zero value (a chunk inside a part).
+    Uniform(u8),
+    /// Anything else.
+    Mixed,
 }
 
 impl RowCut<'_> {
-    /// Inner chunk (bj, bi) of the row in C order, padded with 0 past the grid's edges; None
-    /// when all its voxels are 0 (nothing is copied then).
-    pub fn chunk_bytes(&self, bj: usize, bi: usize) -> Option<Vec<u8>> {
-        let [cz, cy, cx] = self.chunk;
+    /// The chunks across X and Y of the cut.
+    pub fn grid(&self) -> (usize, usize) {
+        (
+            self.ny.div_ceil(self.chunk[1]),
+            self.nx.div_ceil(self.chunk[2]),
+        )
+    }
+
+    /// The voxels of chunk (bj, bi) inside the grid, Y then X, and one of its lines.
+    fn extent<'s>(
+        &'s self,
+        bj: usize,
+        bi: usize,
+    ) -> (usize, usize, impl Fn(usize, usize) -> &'s [u8]) {
+        let [_, cy, cx] = self.chunk;
         let (j0, i0) = (bj * cy, bi * cx);
         let (h, w) = (cy.min(self.ny - j0), cx.min(self.nx - i0));
-        let line = |z: usize, y: usize| {
+        let line = move |z: usize, y: usize| {
             let src = (z * self.ny + j0 + y) * self.nx + i0;
             &self.slices[src..src + w]
         };
-        let any = (0..self.slabs).any(|z| (0..h).any(|y| line(z, y).iter().any(|&v| v != 0)));
-        if !any {
+        (h, w, line)
+    }
+
+    /// What chunk (bj, bi) of the cut holds: as the caller knows it, or from its voxels.
+    pub fn held(&self, bj: usize, bi: usize) -> Held {
+        let whole = |h: usize, w: usize| [self.slabs, h, w] == self.chunk;
+        let (h, w, line) = self.extent(bj, bi);
+        let known = self.known.and_then(|k| k[bj * self.grid().1 + bi]);
+        let first = match known {
+            Some(v) => v,
+            None => {
+                let first = line(0, 0)[0];
+                let same = (0..self.slabs).all(|z| (0..h).all(|y| all_equal(line(z, y), first)));
+                if !same {
+                    return Held::Mixed;
+                }
+                first
+            }
+        };
+        match first {
+            0 => Held::Empty,
+            // Padding past the grid's edge is 0: such a chunk is not one value.
+            v if whole(h, w) => Held::Uniform(v),
+            _ => Held::Mixed,
+        }
+    }
+
+    /// Inner chunk (bj, bi) of the cut in C order, padded with 0 past the grid's edges; None
+    /// when all its voxels are 0 (nothing is copied then).
+    pub fn chunk_bytes(&self, bj: usize, bi: usize) -> Option<Vec<u8>> {
+        if self.held(bj, bi) == Held::Empty {
             return None;
         }
+        Some(self.copy(bj, bi))
+    }
+
+    /// Chunk (bj, bi) copied out, padded with 0.
+    fn copy(&self, bj: usize, bi: usize) -> Vec<u8> {
+        let [cz, cy, cx] = self.chunk;
+        let (h, w, line) = self.extent(bj, bi);
         let mut chunk = vec![0u8; cz * cy * cx];
         for z in 0..self.slabs {
             for y in 0..h {
@@ -68,7 +137,59 @@ impl RowCut<'_> {
                 chunk[dst..dst + w].copy_from_slice(line(z, y));
             }
         }
-        Some(chunk)
+        chunk
+    }
+}
+
+/// A compressed chunk, shared where it is one value's.
+type Packed = Arc<Vec<u8>>;
+
+/// Compressed chunks of one value throughout, by value and shape: most of a large volume's
+/// chunks are inside or outside every part, and gzip gives the same bytes for the same
+/// chunk, so each is compressed once per run.
+/// It counts the chunks it is given by what they hold.
+#[derive(Default)]
+pub(crate) struct UniformChunks {
+    cache: Mutex<HashMap<(u8, [usize; 3]), Packed>>,
+    /// Chunks packed: empty (no bytes), one value (from the cache), mixed (compressed).
+    pub counts: [AtomicU64; 3],
+}
+
+impl UniformChunks {
+    fn get(&self, v: u8, chunk: [usize; 3]) -> std::io::Result<Arc<Vec<u8>>> {
+        let mut map = self.cache.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(c) = map.get(&(v, chunk)) {
+            return Ok(c.clone());
+        }
+        let bytes = Arc::new(gzip(&vec![v; chunk.iter().product()])?);
+        map.insert((v, chunk), bytes.clone());
+        Ok(bytes)
+    }
+
+    /// One more chunk that holds `held`.
+    pub fn count(&self, held: Held) {
+        let i = match held {
+            Held::Empty => 0,
+            Held::Uniform(_) => 1,
+            Held::Mixed => 2,
+        };
+        self.counts[i].fetch_add(1, Ordering::Relaxed);
+    }
+
+    /// Chunk (bj, bi) of `cut` compressed: None when empty, from the cache when one value.
+    pub fn pack(
+        &self,
+        cut: &RowCut,
+        bj: usize,
+        bi: usize,
+    ) -> std::io::Result<Option<Arc<Vec<u8>>>> {
+        let held = cut.held(bj, bi);
+        self.count(held);
+        match held {
+            Held::Empty => Ok(None),
+            Held::Uniform(v) => self.get(v, cut.chunk).map(Some),
+            Held::Mixed => gzip(&cut.copy(bj, bi)).map(|c| Some(Arc::new(c))),
+        }
     }
 }
 
@@ -93,11 +214,14 @@ pub(crate) fn write_row(
     row: usize,
     cut: &RowCut,
     per: [usize; 2],
+    uniform: &UniformChunks,
     unsynced: &mut Unsynced,
 ) -> Result<u64> {
-    let [_, cy, cx] = cut.chunk;
-    let (gy, gx) = (cut.ny.div_ceil(cy), cut.nx.div_ceil(cx));
+    let (gy, gx) = cut.grid();
     let (shy, shx) = (gy.div_ceil(per[0]), gx.div_ceil(per[1]));
+    // The cut starts on a shard ([`crate::tile`]): its shards are the level's from here.
+    debug_assert!(cut.at[0].is_multiple_of(per[0]) && cut.at[1].is_multiple_of(per[1]));
+    let first = [cut.at[0] / per[0], cut.at[1] / per[1]];
     let io = |path: &Path, e: std::io::Error| Error::Store {
         path: path.to_path_buf(),
         message: e.to_string(),
@@ -119,9 +243,9 @@ pub(crate) fn write_row(
         if todo.is_empty() {
             break;
         }
-        let packed: Vec<Option<Vec<u8>>> = todo
+        let packed: Vec<Option<Arc<Vec<u8>>>> = todo
             .par_iter()
-            .map(|&(_, _, bj, bi)| cut.chunk_bytes(bj, bi).map(|c| gzip(&c)).transpose())
+            .map(|&(_, _, bj, bi)| uniform.pack(cut, bj, bi))
             .collect::<std::io::Result<_>>()
             .map_err(|e| io(dir, e))?;
         for (&(at, q, _, _), bytes) in todo.iter().zip(packed) {
@@ -131,7 +255,7 @@ pub(crate) fn write_row(
                 }
                 open = Some(Open {
                     at,
-                    path: dir.join(format!("c/{row}/{}/{}", at.0, at.1)),
+                    path: dir.join(format!("c/{row}/{}/{}", first[0] + at.0, first[1] + at.1)),
                     file: None,
                     index: vec![u64::MAX; 2 * per[0] * per[1]],
                     end: 0,
