@@ -99,6 +99,7 @@ def zarr_write_rows(
     path: _Path,
     rows: Tuple[int, int],
     *,
+    tiles: Optional[Tuple[int, int]] = None,
     sampling: str = "centre",
     model: str = "word",
     route: str = "runs",

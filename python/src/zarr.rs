@@ -1,13 +1,17 @@
 //! Zarr volumes written a chunk row at a time (docs/zarr.md), in pieces any process can
 //! take: `zarr_create` writes the store's metadata, `zarr_write_rows` voxelizes and stores a
-//! range of its chunk rows. `csgpix.distributed` runs the second as Dask tasks.
+//! range of its chunk rows, or their bricks of some XY tiles. `csgpix.distributed` runs the
+//! second as Dask tasks.
 
 use std::path::PathBuf;
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use csgpix_zarr::{voxelize_rows, Layout, VolumeAttrs, ZarrVolume, DEFAULT_CHUNK, DEFAULT_SHARD};
+use csgpix_voxel::Route;
+use csgpix_zarr::{
+    voxelize_bricks, voxelize_rows, Layout, VolumeAttrs, ZarrVolume, DEFAULT_CHUNK, DEFAULT_SHARD,
+};
 use rtl_model::Equations;
 
 use crate::errors::{text, voxel};
@@ -48,8 +52,9 @@ fn shard_side(shard: Option<&Bound<'_, PyAny>>) -> PyResult<usize> {
 /// Write the metadata of the volume of `scene` on its grid at `path` (a new or empty
 /// directory), as `csgpix voxelize --format zarr` does (`shard`: chunks a shard side, or
 /// "none"; `levels`: the pyramid's, default as the command line's); returns `dims` (x, y,
-/// z), `chunk` (z, y, x), `shard` (z, y, x, or None), `levels` and `rows`, the number of
-/// chunk rows.
+/// z), `chunk` (z, y, x), `shard` (z, y, x, or None), `levels`, `rows`, the number of
+/// chunk rows, `tile` (x, y) and `tiles`, the XY tiles of a brick, and `bricks`: whether
+/// the run computes tiles apart (the run route, where it applies).
 #[pyfunction]
 #[pyo3(signature = (scene, path, res=None, *, voxel=None, pad=0, bounds=None, chunk=None,
     shard=None, levels=None, sampling="centre", model="word", route="runs", eval="blist",
@@ -77,7 +82,9 @@ pub fn zarr_create<'py>(
     let grid = GridOptions::new(res, voxel, pad, bounds)?.grid(scene)?;
     // Checked here so that a bad option fails before any file is written.
     let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
-    opts.slicer(scene, grid)?;
+    let slicer = opts.slicer(scene, grid)?;
+    let bricks = matches!(opts.route, Route::Runs { .. }) && csgpix_voxel::runs::applies(&slicer);
+    drop(slicer);
     let values = csgpix_zarr::values_text(grey, blend.is_some());
     let attrs = VolumeAttrs::new(format!("csgpix voxelize {}", scene.name), values);
     let layout = Layout {
@@ -92,21 +99,28 @@ pub fn zarr_create<'py>(
     d.set_item("shard", store.levels()[0].shard)?;
     d.set_item("levels", store.levels().len())?;
     d.set_item("rows", store.chunk_rows().len())?;
+    d.set_item("tile", store.tile())?;
+    d.set_item("tiles", store.tiles().len())?;
+    d.set_item("bricks", bricks)?;
     Ok(d)
 }
 
 /// Voxelize chunk rows `rows` (r0, r1) of the volume at `path` and store them; the grid is
-/// the store's. `threads`: the voxelizer's (default: every core). Returns the rows' work,
-/// and `files_written`: the shard (or chunk) files it wrote, every level.
+/// the store's. `tiles` (t0, t1): only the bricks of those XY tiles (indices into the
+/// store's tiles, row-major; default all), which the run route alone computes apart.
+/// `threads`: the voxelizer's (default: every core). Returns the bricks' work, and
+/// `files_written`: the shard (or chunk) files it wrote, every level.
 #[pyfunction]
-#[pyo3(signature = (scene, path, rows, *, sampling="centre", model="word", route="runs",
-    eval="blist", grey=false, blend=None, word="10/10/11", threads=None, max_memory=None))]
+#[pyo3(signature = (scene, path, rows, *, tiles=None, sampling="centre", model="word",
+    route="runs", eval="blist", grey=false, blend=None, word="10/10/11", threads=None,
+    max_memory=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn zarr_write_rows<'py>(
     py: Python<'py>,
     scene: &Scene,
     path: PathBuf,
     rows: (usize, usize),
+    tiles: Option<(usize, usize)>,
     sampling: &str,
     model: &str,
     route: &str,
@@ -126,27 +140,70 @@ pub fn zarr_write_rows<'py>(
     // Checked before anything is allocated: the store's grid and chunks are what its
     // zarr.json says, whoever wrote it.
     let grid = *store.grid();
-    let prims = scene.loaded.scene.primitive_count();
-    let need =
-        csgpix_zarr::memory_estimate(&grid, &store.layout(), prims, pool.current_num_threads())
-            .map_err(zarr)?
-            .saturating_add(imports_bytes(scene, &grid));
-    check_memory(need, max_memory)?;
     let slicer = opts.slicer(scene, grid)?;
     let eval = opts.evaluator(scene);
+    let all = store.tiles();
+    let float = match opts.route {
+        Route::Runs { float } if csgpix_voxel::runs::applies(&slicer) => Some(float),
+        _ => None,
+    };
+    let (t0, t1) = tiles.unwrap_or((0, all.len()));
+    if t0 > t1 || t1 > all.len() || (float.is_none() && (t0, t1) != (0, all.len())) {
+        return Err(text(format!(
+            "tiles ({t0}, {t1}): the store has tiles 0..{}, and only the run route voxelizes \
+             some of them",
+            all.len()
+        )));
+    }
+    let threads = pool.current_num_threads();
+    let need = match float {
+        Some(_) => {
+            let layout = store.layout();
+            csgpix_voxel::runs::memory_estimate_bricks(
+                &slicer,
+                eval.as_ref(),
+                threads,
+                store.tile(),
+            )
+            .saturating_add(
+                csgpix_zarr::writer_bytes_bricks(grid.dims, &layout, threads).map_err(zarr)?,
+            )
+        }
+        None => {
+            let prims = scene.loaded.scene.primitive_count();
+            csgpix_zarr::memory_estimate(&grid, &store.layout(), prims, threads)
+                .map_err(zarr)?
+                .saturating_add(imports_bytes(scene, &grid))
+        }
+    };
+    check_memory(need, max_memory)?;
     let set = Equations::Derived.set();
+    let rows = rows.0..rows.1;
     let work = py
         .detach(|| {
-            pool.install(|| {
-                voxelize_rows(
+            pool.install(|| match float {
+                Some(float) => {
+                    let tiles = &all[t0..t1];
+                    voxelize_bricks(
+                        &slicer,
+                        float,
+                        set,
+                        eval.as_ref(),
+                        &|| {},
+                        &store,
+                        rows,
+                        tiles,
+                    )
+                }
+                None => voxelize_rows(
                     &slicer,
                     opts.route,
                     set,
                     eval.as_ref(),
                     &|| {},
                     &store,
-                    rows.0..rows.1,
-                )
+                    rows,
+                ),
             })
         })
         .map_err(zarr)?;

@@ -70,7 +70,10 @@ def test_dask_workers_write_the_command_lines_store(tmp_path, client, scene, arg
     assert_same_tree(want, local)
     dist = tmp_path / "dask.zarr"
     rep2 = cd.voxelize_zarr(path, dist, client=client, **kw)
-    assert rep2["tasks"] == rep2["rows"] > 3, "several tasks, on several workers"
+    # A task a brick: a chunk row of one XY tile (every tile at once off the run route).
+    tiles = rep2["tiles"] if rep2["bricks"] else 1
+    assert rep2["tasks"] == rep2["rows"] * tiles, rep2
+    assert rep2["tasks"] > 3, "several tasks, on several workers"
     assert_same_tree(want, dist)
     assert rep2["filled"] == rep["filled"] > 0
     # zarr-python reads the voxels csgpix.voxelize gives, placed as the grid is.
@@ -99,9 +102,24 @@ def test_rows_grouped_into_tasks_give_the_same_store(tmp_path, client):
     a, b = tmp_path / "a.zarr", tmp_path / "b.zarr"
     cd.voxelize_zarr(path, a, 32, chunk=4, shard=2, levels=3)
     rep = cd.voxelize_zarr(path, b, 32, chunk=4, shard=2, levels=3, rows_per_task=3, client=client)
-    assert (rep["rows"], rep["tasks"], rep["levels"]) == (8, 3, 3)
+    # Tiles of 16 × 16 columns: level 2's shard is one 4 × 4 chunk, 16 × 16 of level 0.
+    assert (rep["rows"], rep["tile"], rep["tiles"], rep["levels"]) == (8, [16, 16], 4, 3)
+    assert rep["tasks"] == 3 * 4
     assert any(f.startswith("2/c/") for f in files(b)), "level 2 written by the tasks"
     assert_same_tree(a, b)
+
+
+@pytest.mark.parametrize("rows_per_task,tiles_per_task,tasks", [(1, 1, 5 * 16), (3, 2, 2 * 8), (8, None, 1)])
+def test_bricks_as_tasks_give_the_command_lines_store(tmp_path, client, rows_per_task, tiles_per_task, tasks):
+    scene = SCENES / "csg-logo.csg"
+    want = cli_zarr(tmp_path, scene, "--res", "60x52x40", "--chunk", "8x8x8", "--shard", "2", "--levels", "2")
+    out = tmp_path / "bricks.zarr"
+    rep = cd.voxelize_zarr(str(scene), out, (60, 52, 40), chunk=8, shard=2, levels=2, client=client,
+                           rows_per_task=rows_per_task, tiles_per_task=tiles_per_task)
+    # Tiles of 16 × 16 columns (a shard of 2 × 2 chunks at level 0, of 1 at level 1): 4 × 4.
+    assert (rep["rows"], rep["tile"], rep["tiles"], rep["bricks"]) == (5, [16, 16], 16, True)
+    assert rep["tasks"] == tasks
+    assert_same_tree(want, out)
 
 
 def test_a_failed_task_leaves_nothing(tmp_path, client):

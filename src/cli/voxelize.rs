@@ -750,8 +750,12 @@ fn estimate(
             csgpix::voxel::runs::memory_estimate(slicer, eval, threads, whole_volume)
         }
         (true, FormatArg::Zarr) => {
-            csgpix::voxel::runs::memory_estimate(slicer, eval, threads, false)
-                .saturating_add(zarr_bytes(grid.dims, layout, threads, a)?)
+            let levels = csgpix::zarr::plan(grid.dims, layout).map_err(|e| zarr_message(e, a))?;
+            let tile = csgpix::zarr::tile(grid.dims, &levels);
+            let writer = csgpix::zarr::writer_bytes_bricks(grid.dims, layout, threads)
+                .map_err(|e| zarr_message(e, a))?;
+            csgpix::voxel::runs::memory_estimate_bricks(slicer, eval, threads, tile)
+                .saturating_add(writer)
         }
         (false, FormatArg::Nrrd) => memory_estimate(grid, prims, threads),
         (false, FormatArg::Zarr) => csgpix::zarr::memory_estimate(grid, layout, prims, threads)
@@ -770,16 +774,6 @@ fn estimate(
         }
     }
     Ok(need)
-}
-
-/// What the Zarr writer holds (`csgpix_zarr::writer_bytes`).
-fn zarr_bytes(
-    dims: [usize; 3],
-    layout: &csgpix::zarr::Layout,
-    threads: usize,
-    a: &Args,
-) -> Result<u64, String> {
-    csgpix::zarr::writer_bytes(dims, layout, threads).map_err(|e| zarr_message(e, a))
 }
 
 /// A Zarr store's error, naming `-o` where the library names the staging directory.

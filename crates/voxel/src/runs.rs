@@ -739,52 +739,110 @@ pub const MESH_RUNS: u64 = 2;
 /// primitives' footprints: a primitive costs where its outline is, not on every pixel.
 pub fn memory_estimate(slicer: &Slicer, eval: &dyn SliceEval, threads: usize, volume: bool) -> u64 {
     let [nx, ny, nz] = slicer.grid.dims.map(|d| d as u64);
-    let panel = slicer.panel.unwrap_or(DEFAULT_PANEL).map(|p| p.max(1));
-    let lists = panel_lists(slicer, panel);
-    let [pw, ph] = panel.map(|p| p as u64);
-    let across = nx.div_ceil(pw) as usize;
-    let prims = slicer.primitive_count() as u64;
-    let mut bands = 0u64;
-    let mut band = 0u64;
-    let mut grid_runs = 0u64;
-    for (i, l) in lists.iter().enumerate() {
-        let columns = pw.saturating_mul(ph);
-        let segs = columns.saturating_mul(segments_bound(slicer, l, nz));
-        // Segments (4 bytes), their labels (4) and runs (8), the runs' handles (24 a column),
-        // the primitive runs held (16 each), the masks (32 a primitive, a bit a segment for
-        // the panel's own) and the evaluator's state.
-        let transient = segs
-            .saturating_mul(16)
-            .saturating_add(columns.saturating_mul(16 * l.len() as u64))
-            .saturating_add(prims.saturating_mul(32))
-            .saturating_add((l.len() as u64).saturating_mul(segs / 8 + 8))
-            .saturating_add(eval.state_bytes(segs as usize) as u64);
-        let kept = segs
-            .saturating_mul(8)
-            .saturating_add(columns.saturating_mul(24));
-        band = band.saturating_add(kept).saturating_add(transient);
-        grid_runs = grid_runs.saturating_add(kept);
-        if (i + 1) % across == 0 {
-            bands = bands.max(band);
-            band = 0;
-        }
-    }
-    let meshes: u64 = slicer
-        .sampled
-        .iter()
-        .zip(&slicer.outlines[slicer.lists.len()..])
-        .map(|(s, b)| s.memory_estimate_over(b.map_or(0, |b| b.pixels() as u64)))
-        .sum();
+    let panels = PanelBytes::of(slicer, eval);
     let held = match volume {
         true => nx
             .saturating_mul(ny)
             .saturating_mul(nz)
             .saturating_add(nz.saturating_mul(ny).saturating_mul(16)),
-        false => grid_runs
+        false => panels
+            .kept
+            .iter()
+            .fold(0u64, |a, &k| a.saturating_add(k))
             .saturating_mul(2)
             .saturating_add(nx.saturating_mul(ny)),
     };
-    held.saturating_add(meshes)
-        .saturating_add((threads as u64).saturating_mul(bands))
-        .saturating_add(crate::drive::PROCESS_BYTES)
+    panels.total(slicer, threads, held)
+}
+
+/// [`memory_estimate`] of a run by bricks of `tile` columns (X, Y; tiles start at its
+/// multiples), one brick at a time: the largest tile's runs instead of the grid's (the
+/// brick's voxels are the writer's to count).
+pub fn memory_estimate_bricks(
+    slicer: &Slicer,
+    eval: &dyn SliceEval,
+    threads: usize,
+    tile: [usize; 2],
+) -> u64 {
+    let [nx, ny, _] = slicer.grid.dims;
+    let panels = PanelBytes::of(slicer, eval);
+    let [pw, ph] = panels.panel;
+    let across = nx.div_ceil(pw);
+    let [tx, ty] = tile.map(|t| t.max(1));
+    let mut per_tile = vec![0u64; nx.div_ceil(tx) * ny.div_ceil(ty)];
+    for (i, &k) in panels.kept.iter().enumerate() {
+        // A panel's runs are held by every tile its columns meet.
+        let (px, py) = (i % across, i / across);
+        for ty_ in (py * ph) / ty..((py + 1) * ph).min(ny).div_ceil(ty) {
+            for tx_ in (px * pw) / tx..((px + 1) * pw).min(nx).div_ceil(tx) {
+                let t = &mut per_tile[ty_ * nx.div_ceil(tx) + tx_];
+                *t = t.saturating_add(k);
+            }
+        }
+    }
+    let held = per_tile.into_iter().max().unwrap_or(0);
+    panels.total(slicer, threads, held)
+}
+
+/// What each panel of a run-route run holds: its runs, kept while its band's slices are
+/// written, and the largest band's transient state.
+struct PanelBytes {
+    panel: [usize; 2],
+    /// Per panel (row-major), its columns' runs and their handles.
+    kept: Vec<u64>,
+    /// The largest band's runs and working state.
+    band: u64,
+}
+
+impl PanelBytes {
+    fn of(slicer: &Slicer, eval: &dyn SliceEval) -> PanelBytes {
+        let [nx, _, nz] = slicer.grid.dims.map(|d| d as u64);
+        let panel = slicer.panel.unwrap_or(DEFAULT_PANEL).map(|p| p.max(1));
+        let lists = panel_lists(slicer, panel);
+        let [pw, ph] = panel.map(|p| p as u64);
+        let across = nx.div_ceil(pw) as usize;
+        let prims = slicer.primitive_count() as u64;
+        let (mut bands, mut band) = (0u64, 0u64);
+        let mut kept_all = Vec::with_capacity(lists.len());
+        for (i, l) in lists.iter().enumerate() {
+            let columns = pw.saturating_mul(ph);
+            let segs = columns.saturating_mul(segments_bound(slicer, l, nz));
+            // Segments (4 bytes), their labels (4) and runs (8), the runs' handles (24 a
+            // column), the primitive runs held (16 each), the masks (32 a primitive, a bit a
+            // segment for the panel's own) and the evaluator's state.
+            let transient = segs
+                .saturating_mul(16)
+                .saturating_add(columns.saturating_mul(16 * l.len() as u64))
+                .saturating_add(prims.saturating_mul(32))
+                .saturating_add((l.len() as u64).saturating_mul(segs / 8 + 8))
+                .saturating_add(eval.state_bytes(segs as usize) as u64);
+            let kept = segs
+                .saturating_mul(8)
+                .saturating_add(columns.saturating_mul(24));
+            band = band.saturating_add(kept).saturating_add(transient);
+            kept_all.push(kept);
+            if (i + 1) % across == 0 {
+                bands = bands.max(band);
+                band = 0;
+            }
+        }
+        PanelBytes {
+            panel,
+            kept: kept_all,
+            band: bands,
+        }
+    }
+
+    /// `held` with each mesh's runs over its outline, a band per thread and the process.
+    fn total(&self, slicer: &Slicer, threads: usize, held: u64) -> u64 {
+        let meshes: u64 = slicer
+            .sampled
+            .iter()
+            .zip(&slicer.outlines[slicer.lists.len()..])
+            .map(|(s, b)| s.memory_estimate_over(b.map_or(0, |b| b.pixels() as u64)))
+            .sum();
+        held.saturating_add(meshes)
+            .saturating_add((threads as u64).saturating_mul(self.band))
+            .saturating_add(crate::drive::PROCESS_BYTES)
+    }
 }

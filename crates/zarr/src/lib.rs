@@ -329,16 +329,20 @@ fn lcm(a: usize, b: usize) -> usize {
 }
 
 /// Bytes of chunk row slices a run holds per level: level 0's row (buffered by
-/// [`voxelize_rows`]) and each coarser level's, made from it.
-fn rows_bytes(levels: &[Level]) -> u64 {
+/// [`voxelize_rows`]) and each coarser level's, made from it; of `xy` columns (X, Y) of
+/// level 0 when a brick's.
+fn rows_bytes(levels: &[Level], xy: Option<[usize; 2]>) -> u64 {
     levels
         .iter()
-        .map(|v| {
-            let [nx, ny, nz] = v.dims.map(|d| d as u64);
-            (v.chunk[0] as u64)
-                .min(nz)
-                .saturating_mul(ny)
-                .saturating_mul(nx)
+        .enumerate()
+        .map(|(l, v)| {
+            let [mut nx, mut ny, nz] = v.dims;
+            if let Some([tx, ty]) = xy {
+                (nx, ny) = (nx.min(tx.div_ceil(1 << l)), ny.min(ty.div_ceil(1 << l)));
+            }
+            (v.chunk[0].min(nz) as u64)
+                .saturating_mul(ny as u64)
+                .saturating_mul(nx as u64)
         })
         .fold(0u64, u64::saturating_add)
 }
@@ -353,8 +357,22 @@ fn rows_bytes(levels: &[Level]) -> u64 {
 ///
 /// Level 0's chunk is the largest, and levels are written one after another.
 pub fn writer_bytes(dims: [usize; 3], layout: &Layout, threads: usize) -> Result<u64> {
+    writer_bytes_over(dims, layout, threads, false)
+}
+
+/// [`writer_bytes`] of a run by bricks ([`voxelize_bricks`]): a brick's rows, not a row's.
+pub fn writer_bytes_bricks(dims: [usize; 3], layout: &Layout, threads: usize) -> Result<u64> {
+    writer_bytes_over(dims, layout, threads, true)
+}
+
+fn writer_bytes_over(
+    dims: [usize; 3],
+    layout: &Layout,
+    threads: usize,
+    bricks: bool,
+) -> Result<u64> {
     let levels = plan(dims, layout)?;
-    let rows = rows_bytes(&levels);
+    let rows = rows_bytes(&levels, bricks.then(|| tile(dims, &levels)));
     let [cz, cy, cx] = levels[0].chunk.map(|c| c as u64);
     let chunk = cz.saturating_mul(cy).saturating_mul(cx);
     let bound = shard::gzip_bound(chunk);
