@@ -13,6 +13,7 @@ import argparse
 import filecmp
 import json
 import os
+import resource
 import shutil
 import sys
 import tempfile
@@ -37,7 +38,12 @@ def main() -> int:
     ap.add_argument("--workers", type=int, nargs="+", default=[1, 2])
     ap.add_argument("--tasks-per-worker", type=int, default=2,
                     help="chunk rows are grouped into this many tasks per worker (each task "
-                         "sets up the scene's slab ranges once)")
+                         "sets up the scene once)")
+    ap.add_argument("--shard", type=int, default=64,
+                    help="chunks a shard side: a brick's tile is a shard's columns (docs/zarr.md)")
+    ap.add_argument("--tiles-per-task", type=int, default=None,
+                    help="XY tiles a task takes (default: all; the run route's bricks)")
+    ap.add_argument("--route", default="runs")
     ap.add_argument("--json", action="store_true", help="print the figures as JSON")
     a = ap.parse_args()
     from dask.distributed import Client, LocalCluster
@@ -47,12 +53,13 @@ def main() -> int:
     rows = []
     try:
         t = time.perf_counter()
-        base = cd.voxelize_zarr(scene, work / "base.zarr", a.res, chunk=a.chunk, threads=1)
+        opts = dict(chunk=a.chunk, shard=a.shard, route=a.route)
+        base = cd.voxelize_zarr(scene, work / "base.zarr", a.res, threads=1, **opts)
         t_base = time.perf_counter() - t
         rows.append(dict(run="this process, 1 thread", workers=0, seconds=t_base, speedup=1.0, identical=True,
                          task_seconds=base["task_microseconds"] / 1e6))
         t = time.perf_counter()
-        both = cd.voxelize_zarr(scene, work / "threads.zarr", a.res, chunk=a.chunk)
+        both = cd.voxelize_zarr(scene, work / "threads.zarr", a.res, **opts)
         s = time.perf_counter() - t
         rows.append(dict(run=f"this process, {os.cpu_count()} threads", workers=0, seconds=s,
                          speedup=t_base / s, task_seconds=both["task_microseconds"] / 1e6,
@@ -64,24 +71,28 @@ def main() -> int:
                 out = work / f"w{n}.zarr"
                 t = time.perf_counter()
                 per = -(-base["rows"] // (n * a.tasks_per_worker))
-                rep = cd.voxelize_zarr(scene, out, a.res, chunk=a.chunk, threads=1, client=client,
-                                       rows_per_task=per)
+                rep = cd.voxelize_zarr(scene, out, a.res, threads=1, client=client, rows_per_task=per,
+                                       tiles_per_task=a.tiles_per_task, **opts)
                 s = time.perf_counter() - t
+                # Each worker's peak resident memory (a fresh process per cluster).
+                peaks = client.run(lambda: resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
             rows.append(dict(run=f"LocalCluster, {n} worker process(es)", workers=n, seconds=s,
-                             tasks=-(-base["rows"] // per),
+                             tasks=rep["tasks"], worker_peak_mib=sorted(round(k / 1024) for k in peaks.values()),
                              task_seconds=rep["task_microseconds"] / 1e6,
                              speedup=t_base / s, identical=tree_equal(work / "base.zarr", out)))
             shutil.rmtree(out)
     finally:
         shutil.rmtree(work, ignore_errors=True)
-    fig = dict(scene=a.scene, res=a.res, chunk=a.chunk, rows_of_chunks=base["rows"],
-               filled=base["filled"], cores=os.cpu_count(), runs=rows)
+    fig = dict(scene=a.scene, res=a.res, chunk=a.chunk, shard=a.shard, route=a.route, tile=base["tile"],
+               tiles=base["tiles"], rows_of_chunks=base["rows"], filled=base["filled"], cores=os.cpu_count(),
+               driver_peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024), runs=rows)
     if a.json:
         print(json.dumps(fig, indent=2))
     else:
         for r in rows:
+            peaks = f"  worker peaks {r['worker_peak_mib']} MiB" if "worker_peak_mib" in r else ""
             print(f"{r['run']:<40} {r['seconds']:8.2f} s  x{r['speedup']:.2f}  "
-                  f"in tasks {r['task_seconds']:.2f} s  identical={r['identical']}")
+                  f"in tasks {r['task_seconds']:.2f} s{peaks}  identical={r['identical']}")
     return 0 if all(r["identical"] for r in rows) else 1
 
 
