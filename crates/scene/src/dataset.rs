@@ -43,6 +43,11 @@ impl Dataset {
         Ok(Dataset { nrrd, inverse })
     }
 
+    /// The inverse of the axis steps: scene offsets from the origin → index coordinates.
+    pub fn inverse(&self) -> &DMat3 {
+        &self.inverse
+    }
+
     /// The continuous index coordinates of scene point `p`.
     pub fn index_of(&self, p: DVec3) -> DVec3 {
         self.inverse * (p - self.nrrd.origin)
@@ -54,13 +59,37 @@ impl Dataset {
     pub fn sample(&self, p: DVec3) -> Option<f64> {
         let q = self.index_of(p);
         let [nx, ny, nz] = self.nrrd.sizes;
-        let (x0, x1, tx) = cell(q.x, nx)?;
-        let (y0, y1, ty) = cell(q.y, ny)?;
+        let (xc, yc) = (cell(q.x, nx)?, cell(q.y, ny)?);
         let (z0, z1, tz) = cell(q.z, nz)?;
-        let v = |i, j, k| f64::from(self.nrrd.at(i, j, k));
-        let row = |j, k| lerp(v(x0, j, k), v(x1, j, k), tx);
-        let plane = |k| lerp(row(y0, k), row(y1, k), ty);
-        Some(lerp(plane(z0), plane(z1), tz))
+        Some(lerp(self.plane(xc, yc, z0), self.plane(xc, yc, z1), tz))
+    }
+
+    /// The value interpolated in x, then y, at lattice z-plane `k`, for the x and y cells
+    /// of [`cell`]: the two inner steps of [`Dataset::sample`]'s trilinear interpolation.
+    fn plane(&self, (x0, x1, tx): Cell, (y0, y1, ty): Cell, k: usize) -> f64 {
+        let v = |i, j| f64::from(self.nrrd.at(i, j, k));
+        let row = |j| lerp(v(x0, j), v(x1, j), tx);
+        lerp(row(y0), row(y1), ty)
+    }
+
+    /// The lattice column at index coordinates (`qx`, `qy`): every z-plane's value there,
+    /// interpolated as [`Dataset::sample`] does; `None` outside the lattice in x or y.
+    /// [`Column::value_at`] then gives `sample` at any index z of the column.
+    pub fn column(&self, qx: f64, qy: f64) -> Option<Column> {
+        let mut c = Column { planes: vec![] };
+        self.fill_column(qx, qy, &mut c).then_some(c)
+    }
+
+    /// [`Dataset::column`] into `c`, reusing its storage; false (and `c` unchanged) outside
+    /// the lattice.
+    pub fn fill_column(&self, qx: f64, qy: f64, c: &mut Column) -> bool {
+        let [nx, ny, nz] = self.nrrd.sizes;
+        let (Some(xc), Some(yc)) = (cell(qx, nx), cell(qy, ny)) else {
+            return false;
+        };
+        c.planes.clear();
+        c.planes.extend((0..nz).map(|k| self.plane(xc, yc, k)));
+        true
     }
 
     /// The scene-space box around the lattice's 8 corners (sample centres, not voxel faces).
@@ -92,9 +121,37 @@ impl Dataset {
     }
 }
 
+/// The values of one lattice column of a dataset at fixed index x and y: per lattice z-plane
+/// the value interpolated in x and y ([`Dataset::column`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Column {
+    planes: Vec<f64>,
+}
+
+impl Column {
+    /// The value at lattice z-plane `k` (below the dataset's z size).
+    pub fn plane(&self, k: usize) -> f64 {
+        self.planes[k]
+    }
+
+    /// The value at index z `qz`, as [`Dataset::sample`] gives it at index (qx, qy, qz) (the
+    /// same operations on the same values); `None` outside the lattice.
+    pub fn value_at(&self, qz: f64) -> Option<f64> {
+        cell(qz, self.planes.len()).map(|c| self.value_in(c))
+    }
+
+    /// The value in z-cell `(z0, z1, tz)` (from [`cell`]).
+    pub fn value_in(&self, (z0, z1, tz): Cell) -> f64 {
+        lerp(self.planes[z0], self.planes[z1], tz)
+    }
+}
+
+/// A lattice cell on one axis: the two samples and the weight of the second ([`cell`]).
+pub type Cell = (usize, usize, f64);
+
 /// The lattice cell of index coordinate `q` on an axis of `n` samples: the two samples and
 /// the weight of the second; `None` outside [0, n − 1].
-fn cell(q: f64, n: usize) -> Option<(usize, usize, f64)> {
+pub fn cell(q: f64, n: usize) -> Option<Cell> {
     let top = (n - 1) as f64;
     if !(q >= -INDEX_TOLERANCE && q <= top + INDEX_TOLERANCE) {
         return None;
@@ -106,7 +163,7 @@ fn cell(q: f64, n: usize) -> Option<(usize, usize, f64)> {
 }
 
 /// `a` at t = 0, `b` at t = 1, exactly.
-fn lerp(a: f64, b: f64, t: f64) -> f64 {
+pub fn lerp(a: f64, b: f64, t: f64) -> f64 {
     (1.0 - t) * a + t * b
 }
 
@@ -247,6 +304,26 @@ mod tests {
             let p = d.nrrd.origin + d.nrrd.directions * q;
             let v = d.sample(p).unwrap();
             assert!((v - linear(q)).abs() < 1e-9, "{q}: {v} vs {}", linear(q));
+        }
+    }
+
+    #[test]
+    fn a_column_samples_as_sample_does_bit_for_bit() {
+        let (d, phantom) = (linear_dataset(), Dataset::new(phantom(7)).unwrap());
+        let mut r = unit_stream();
+        for d in [d, phantom] {
+            let (lo, hi) = d.bounds();
+            for _ in 0..3000 {
+                // Some points outside, some on lattice planes.
+                let mut p = lo + (hi - lo) * DVec3::new(r(), r(), r()) * 1.2 - (hi - lo) * 0.1;
+                if r() < 0.2 {
+                    p = d.nrrd.origin + d.nrrd.directions * (d.index_of(p)).round();
+                }
+                let q = d.index_of(p);
+                let by_column = d.column(q.x, q.y).and_then(|c| c.value_at(q.z));
+                let bits = |v: Option<f64>| v.map(f64::to_bits);
+                assert_eq!(bits(by_column), bits(d.sample(p)), "{p}");
+            }
         }
     }
 

@@ -25,6 +25,9 @@ use rayon::prelude::*;
 use csgpix_scene::grid::Volume;
 use csgpix_scene::trimesh::Window;
 
+use csgpix_scene::dataset::Column;
+
+use crate::dataset_runs::DatasetColumns;
 use crate::drive::Work;
 use crate::error::Result;
 use crate::footprint::PixelBox;
@@ -130,34 +133,21 @@ enum Depths<'a> {
 enum SampledDepths<'a> {
     /// A mesh's runs over its outline, computed once.
     Mesh(SlabRuns, PixelBox),
-    /// A dataset, sampled at the voxel centres of the column.
-    Dataset(&'a crate::sampled::Sampled),
+    /// A dataset, sampled at the voxel centres of the column ([`DatasetColumns`]).
+    Dataset(DatasetColumns<'a>),
 }
 
 impl SampledDepths<'_> {
-    /// The import's runs of slabs (first, last) along column (x, y), in order.
-    fn slabs(&self, slicer: &Slicer, x: usize, y: usize, out: &mut Vec<(u32, u32)>) {
+    /// The import's runs of slabs (first, last) along column (x, y), in order; `column` is
+    /// a dataset's scratch space.
+    fn slabs(&self, x: usize, y: usize, column: &mut Column, out: &mut Vec<(u32, u32)>) {
         match self {
             SampledDepths::Mesh(runs, b) => {
                 if b.contains(x, y) {
                     out.extend_from_slice(&runs.0[(y - b.y0) * b.width() + (x - b.x0)]);
                 }
             }
-            SampledDepths::Dataset(d) => {
-                let nz = slicer.grid.dims[2];
-                let inside = |k: usize| d.inside(slicer.grid.centre(x, y, k));
-                let mut k = 0;
-                while k < nz {
-                    if inside(k) {
-                        let first = k;
-                        while k + 1 < nz && inside(k + 1) {
-                            k += 1;
-                        }
-                        out.push((first as u32, k as u32));
-                    }
-                    k += 1;
-                }
-            }
+            SampledDepths::Dataset(d) => d.runs(x, y, column, out),
         }
     }
 }
@@ -189,7 +179,10 @@ impl<'a> Columns<'a> {
                     let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
                     Depths::Sampled(SampledDepths::Mesh(mesh_runs_in(slicer, m, window(b)), b))
                 }
-                Shape::Dataset { .. } => Depths::Sampled(SampledDepths::Dataset(s)),
+                Shape::Dataset { .. } => {
+                    let d = DatasetColumns::new(s, &slicer.grid).expect("a dataset");
+                    Depths::Sampled(SampledDepths::Dataset(d))
+                }
             });
         }
         let panel = slicer.panel.unwrap_or(DEFAULT_PANEL).map(|p| p.max(1));
@@ -270,6 +263,7 @@ impl<'a> Columns<'a> {
         let nz = self.slicer.grid.dims[2] as u32;
         let mut seg = Segments::default();
         let mut span = vec![];
+        let mut column = Column::default();
         // Each primitive on the columns of its outline within the panel, its planes pruned
         // to those columns.
         let here: Vec<(u32, PixelBox, Pruned)> = prims
@@ -292,7 +286,7 @@ impl<'a> Columns<'a> {
                         continue;
                     }
                     span.clear();
-                    pruned.slabs(self.slicer, x, y, &mut span);
+                    pruned.slabs(self.slicer, x, y, &mut column, &mut span);
                     span.retain(|(a, b)| a <= b);
                     seg.add(*p, &span, nz);
                 }
@@ -333,12 +327,20 @@ enum Pruned<'d, 'a> {
 }
 
 impl Pruned<'_, '_> {
-    /// The primitive's runs of slabs (first, last) along column (x, y), in order.
-    fn slabs(&self, slicer: &Slicer, x: usize, y: usize, out: &mut Vec<(u32, u32)>) {
+    /// The primitive's runs of slabs (first, last) along column (x, y), in order; `column`
+    /// is a dataset's scratch space.
+    fn slabs(
+        &self,
+        slicer: &Slicer,
+        x: usize,
+        y: usize,
+        column: &mut Column,
+        out: &mut Vec<(u32, u32)>,
+    ) {
         match self {
             Pruned::Word(w) => out.push(w.slabs(slicer, x as i64, y as i64)),
             Pruned::Float(f) => out.push(f.slabs(slicer, x, y)),
-            Pruned::Sampled(d) => d.slabs(slicer, x, y, out),
+            Pruned::Sampled(d) => d.slabs(x, y, column, out),
         }
     }
 }

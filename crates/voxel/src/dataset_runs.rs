@@ -1,0 +1,477 @@
+//! A dataset import's runs along a pixel column without sampling every voxel: exactly the
+//! voxels [`Sampled::inside`] gives at the voxel centres, in a few samples per lattice cell
+//! where the import's placement allows it, voxel by voxel otherwise.
+//!
+//! Voxel (x, y, k)'s membership is computed as centre c = `grid.centre(x, y, k)` → file
+//! point f = `to_file.transform_point3(c)` → offset d = f − origin → index q = `inverse · d`
+//! ([`Dataset::index_of`]) → a lattice cell per axis → the trilinear value, inside when at or
+//! above the threshold ([`Dataset::sample`]). Along a column only c.z moves. When the
+//! placement keeps index x and y off c.z ([`ColumnMap::of`]), the x and y steps of the
+//! interpolation are done once per column ([`Dataset::fill_column`]) and only index z is
+//! computed per voxel, by `index_of` itself. Index z then moves one way along the column, so
+//! the voxels of one lattice z-cell are consecutive: a cell whose two plane values lie clearly
+//! on one side of the threshold ([`side`]) is filled or skipped whole, its ends found by a
+//! search ([`first_true`]); only the other cells are sampled voxel by voxel.
+
+use std::ops::Range;
+
+use glam::{DMat3, DMat4, DVec3};
+
+use crate::sampled::{Sampled, Shape};
+use csgpix_scene::dataset::{cell, Cell, Column, Dataset};
+use csgpix_scene::grid::Grid;
+
+/// How index z moves along every pixel column of a grid, for a placement whose index x and y
+/// do not move along it: the condition of the column-at-a-time path.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ColumnMap {
+    /// 1 when index z never decreases as k grows, −1 when it never increases.
+    dir: i64,
+}
+
+impl ColumnMap {
+    /// The column map of a dataset placed by scene → file map `to_file`, with axis-step
+    /// inverse `inverse`, on `grid`; `None` when index x or y may differ between two voxels
+    /// of a column, or index z may move both ways along one.
+    ///
+    /// The operations, in order (glam 0.30's `transform_point3` and `DMat3 * DVec3`, no fused
+    /// multiply-add), X, Y, Z, W being `to_file`'s columns and I_s `inverse`'s:
+    /// c.z = min.z + (k + ½)·v.z; f_s = W_s + (Z_s·c.z + (Y_s·c.y + X_s·c.x)); d_s = f_s − o_s;
+    /// q_r = (I_0r·d_0 + I_1r·d_1) + I_2r·d_2. Only c.z depends on k. Hence, with every
+    /// entry and c.z finite:
+    ///
+    /// * where Z_s = ±0, Z_s·c.z = ±0, and adding ±0 leaves a value unchanged (only a zero
+    ///   sum's sign may differ; inf and NaN stay): f_s and d_s keep one value ("fixed" s);
+    /// * where I_sx = I_sy = ±0 for every moving s (Z_s ≠ 0), and d_s is finite, the moving
+    ///   terms of q_x and q_y are ±0: q_x and q_y keep one value;
+    /// * the later steps (`cell`: comparisons, clamp, floor, a subtraction; `lerp`: −, ·, +)
+    ///   give equal values for equal inputs (again up to a zero's sign, which no comparison
+    ///   sees), so every voxel of the column is sampled with the same x and y cells;
+    /// * rounding is monotone, so c.z never decreases with k, a moving d_s moves the way of
+    ///   sign(Z_s), and q_z moves one way when every moving term I_sz·d_s does: `dir`.
+    ///
+    /// A moving d_s that is not finite somewhere makes q_z there not finite (its term is ±inf
+    /// or NaN): [`DatasetColumns`] checks q at both ends of each column, and d_s is monotone
+    /// in between.
+    pub fn of(grid: &Grid, to_file: &DMat4, inverse: &DMat3) -> Option<ColumnMap> {
+        let nz = grid.dims[2];
+        // c.z does not depend on (x, y), and is monotone in k: its ends bound it.
+        let ends = [grid.centre(0, 0, 0).z, grid.centre(0, 0, nz - 1).z];
+        if !(to_file.is_finite() && inverse.is_finite() && ends.iter().all(|c| c.is_finite())) {
+            return None;
+        }
+        let moving = to_file.z_axis.truncate().to_array();
+        let steps = [inverse.x_axis, inverse.y_axis, inverse.z_axis];
+        let mut dir = 0;
+        for (z, i) in moving.into_iter().zip(steps) {
+            if z == 0.0 {
+                continue;
+            }
+            if i.x != 0.0 || i.y != 0.0 {
+                return None;
+            }
+            if i.z == 0.0 {
+                continue;
+            }
+            let d = if (z > 0.0) == (i.z > 0.0) { 1 } else { -1 };
+            if dir != 0 && d != dir {
+                return None;
+            }
+            dir = d;
+        }
+        // No moving term: index z is the same all along; either way is one way.
+        Some(ColumnMap {
+            dir: if dir == 0 { 1 } else { dir },
+        })
+    }
+}
+
+/// A dataset import ready to give its runs of slabs along the columns of a grid.
+pub struct DatasetColumns<'a> {
+    sampled: &'a Sampled,
+    data: &'a Dataset,
+    threshold: f64,
+    to_file: &'a DMat4,
+    grid: &'a Grid,
+    map: Option<ColumnMap>,
+}
+
+impl<'a> DatasetColumns<'a> {
+    /// The dataset import `s` on `grid` (`None` for a mesh).
+    pub fn new(s: &'a Sampled, grid: &'a Grid) -> Option<DatasetColumns<'a>> {
+        let Shape::Dataset {
+            data,
+            threshold,
+            to_file,
+        } = &s.shape
+        else {
+            return None;
+        };
+        Some(DatasetColumns {
+            sampled: s,
+            data,
+            threshold: *threshold,
+            to_file,
+            grid,
+            map: ColumnMap::of(grid, to_file, data.inverse()),
+        })
+    }
+
+    /// Whether columns go a lattice cell at a time ([`ColumnMap::of`]), not voxel by voxel.
+    pub fn by_cells(&self) -> bool {
+        self.map.is_some()
+    }
+
+    /// The runs of slabs (first, last) inside the dataset along column (x, y), in order,
+    /// appended to `out`; `column` is scratch space.
+    pub fn runs(&self, x: usize, y: usize, column: &mut Column, out: &mut Vec<(u32, u32)>) {
+        match self.map {
+            Some(map) => self.runs_by_cells(map, x, y, column, out),
+            None => self.runs_by_voxels(x, y, out),
+        }
+    }
+
+    /// [`DatasetColumns::runs`] from [`Sampled::inside`] at every voxel centre.
+    pub fn runs_by_voxels(&self, x: usize, y: usize, out: &mut Vec<(u32, u32)>) {
+        let start = out.len();
+        for k in 0..self.grid.dims[2] {
+            if self.sampled.inside(self.grid.centre(x, y, k)) {
+                push_run(out, start, k, k);
+            }
+        }
+    }
+
+    /// Voxel (x, y, k)'s index coordinates, as [`Sampled::sample`] computes them.
+    fn index(&self, x: usize, y: usize, k: usize) -> DVec3 {
+        let p = self.to_file.transform_point3(self.grid.centre(x, y, k));
+        self.data.index_of(p)
+    }
+
+    /// [`DatasetColumns::runs`] a lattice cell at a time, under `map`.
+    fn runs_by_cells(
+        &self,
+        map: ColumnMap,
+        x: usize,
+        y: usize,
+        column: &mut Column,
+        out: &mut Vec<(u32, u32)>,
+    ) {
+        let nz = self.grid.dims[2];
+        let (first, last) = (self.index(x, y, 0), self.index(x, y, nz - 1));
+        if !(first.is_finite() && last.is_finite()) {
+            // Some offset overflows along the column (see `ColumnMap::of`).
+            return self.runs_by_voxels(x, y, out);
+        }
+        // Index x and y are first's all along the column (`ColumnMap::of`).
+        if !self.data.fill_column(first.x, first.y, column) {
+            return;
+        }
+        let walk = Walk {
+            columns: self,
+            x,
+            y,
+            column,
+            dir: map.dir,
+            n: self.data.nrrd.sizes[2],
+            start: first.z,
+            slope: (last.z - first.z) / (nz - 1).max(1) as f64,
+        };
+        walk.runs(out);
+    }
+}
+
+/// One column walked a lattice cell at a time.
+struct Walk<'c, 'a> {
+    columns: &'c DatasetColumns<'a>,
+    x: usize,
+    y: usize,
+    column: &'c Column,
+    /// [`ColumnMap`]'s direction.
+    dir: i64,
+    /// The dataset's z size.
+    n: usize,
+    /// Index z at k = 0 and its mean step per voxel: guesses only.
+    start: f64,
+    slope: f64,
+}
+
+impl Walk<'_, '_> {
+    /// Voxel k's z-cell ([`cell`], exactly as [`Dataset::sample`] finds it) and its place
+    /// along the lattice: the cell's first plane, −1 before plane 0, n past the last.
+    fn position(&self, k: usize) -> (i64, Option<Cell>) {
+        let qz = self.columns.index(self.x, self.y, k).z;
+        match cell(qz, self.n) {
+            Some(c) => (c.0 as i64, Some(c)),
+            // Index z is finite along the column: outside is below or above.
+            None if qz < 0.0 => (-1, None),
+            None => (self.n as i64, None),
+        }
+    }
+
+    /// [`Walk::position`] oriented to never decrease as k grows.
+    fn key(&self, k: usize) -> i64 {
+        self.dir * self.position(k).0
+    }
+
+    /// The voxel where the line through index z's ends reaches index z `q`: a guess.
+    fn guess(&self, q: f64) -> usize {
+        let k = ((q - self.start) / self.slope).ceil();
+        if k.is_finite() && k > 0.0 {
+            k.min(usize::MAX as f64) as usize
+        } else {
+            0
+        }
+    }
+
+    /// The runs of the column, appended to `out`.
+    fn runs(&self, out: &mut Vec<(u32, u32)>) {
+        let (nz, n) = (self.columns.grid.dims[2], self.n as i64);
+        let start = out.len();
+        // The lattice is entered at index z 0 going up, at its last plane going down.
+        let (before, entry) = match self.dir > 0 {
+            true => (-1, 0.0),
+            false => (-n, (n - 1) as f64),
+        };
+        let mut k = first_true(0..nz, self.guess(entry), |k| self.key(k) > before);
+        while k < nz {
+            let (z0, Some(c)) = self.position(k) else {
+                break; // past the lattice: index z does not come back
+            };
+            let (a, b) = (self.column.plane(c.0), self.column.plane(c.1));
+            k = match side(a, b, self.columns.threshold) {
+                Some(inside) => {
+                    // The cell's voxels end where index z reaches the next cell's plane.
+                    let next = (z0 + i64::from(self.dir > 0)) as f64;
+                    let key = self.dir * z0;
+                    let end = first_true(k + 1..nz, self.guess(next), |j| self.key(j) > key);
+                    if inside {
+                        push_run(out, start, k, end - 1);
+                    }
+                    end
+                }
+                None => self.by_voxels(k, c, out, start),
+            };
+        }
+    }
+
+    /// Voxel by voxel from voxel k, in z-cell `c`, while the voxels stay in that cell; the
+    /// voxel after the last.
+    fn by_voxels(
+        &self,
+        mut k: usize,
+        mut c: Cell,
+        out: &mut Vec<(u32, u32)>,
+        start: usize,
+    ) -> usize {
+        let nz = self.columns.grid.dims[2];
+        loop {
+            if self.column.value_in(c) >= self.columns.threshold {
+                push_run(out, start, k, k);
+            }
+            k += 1;
+            if k == nz {
+                return k;
+            }
+            match self.position(k) {
+                (_, Some(next)) if next.0 == c.0 => c = next,
+                _ => return k,
+            }
+        }
+    }
+}
+
+/// Whether every value the last interpolation step can give between plane values `a` and
+/// `b`, `lerp(a, b, t)` = fl(fl(fl(1 − t)·a) + fl(t·b)) for t in [0, 1], is at or above
+/// `threshold` (`Some(true)`) or below it (`Some(false)`); `None` when that is not certain.
+///
+/// With u = fl(1 − t) in [0, 1], |u − (1 − t)| ≤ ε (ε = 2⁻⁵³, unit roundoff) and
+/// M = max(|a|, |b|): u·a + t·b lies within ε·M of (1 − t)·a + t·b, which lies in
+/// [min(a, b), max(a, b)]; the two products and the sum each add a relative error of at most
+/// ε, at most ε·(u·|a| + t·|b|)·(2 + ε) + 3·2⁻¹⁰⁷⁵ (subnormal results) in all, u + t ≤ 1 + ε.
+/// So the rounded value is within 4.1·ε·M + 3·2⁻¹⁰⁷⁵ of [min(a, b), max(a, b)]. The margin,
+/// 4·`f64::EPSILON`·M + `f64::MIN_POSITIVE` = 8·ε·M + 2⁻¹⁰²², is over twice that, which also
+/// covers the rounding of the differences compared with it.
+fn side(a: f64, b: f64, threshold: f64) -> Option<bool> {
+    if !(a.is_finite() && b.is_finite()) {
+        return None;
+    }
+    let margin = 4.0 * f64::EPSILON * a.abs().max(b.abs()) + f64::MIN_POSITIVE;
+    if threshold - a.max(b) > margin {
+        Some(false)
+    } else if a.min(b) - threshold > margin {
+        Some(true)
+    } else {
+        None
+    }
+}
+
+/// The first index of `range` where `pred` holds (`range.end` when none does), for a `pred`
+/// that, once true, stays true over `range`: tried next to `guess` first, then in steps
+/// doubling away from it, then by halving.
+pub fn first_true(range: Range<usize>, guess: usize, pred: impl Fn(usize) -> bool) -> usize {
+    // The answer is in lo..=hi throughout.
+    let (mut lo, mut hi) = (range.start, range.end.max(range.start));
+    let g = guess.clamp(lo, hi);
+    let mut step = 1;
+    if g == hi || pred(g) {
+        hi = g;
+        while lo < hi {
+            let m = hi.saturating_sub(step).max(lo);
+            if !pred(m) {
+                lo = m + 1;
+                break;
+            }
+            hi = m;
+            step *= 2;
+        }
+    } else {
+        lo = g + 1;
+        while lo < hi {
+            let m = (lo + step - 1).min(hi - 1);
+            if pred(m) {
+                hi = m;
+                break;
+            }
+            lo = m + 1;
+            step *= 2;
+        }
+    }
+    while lo < hi {
+        let m = lo + (hi - lo) / 2;
+        if pred(m) {
+            hi = m;
+        } else {
+            lo = m + 1;
+        }
+    }
+    lo
+}
+
+/// Add slabs `first..=last` to the runs `out[start..]`, joining the last when they touch.
+fn push_run(out: &mut Vec<(u32, u32)>, start: usize, first: usize, last: usize) {
+    match out[start..].last_mut() {
+        Some(r) if r.1 as usize + 1 == first => r.1 = last as u32,
+        _ => out.push((first as u32, last as u32)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn first_true_finds_every_boundary_from_every_guess() {
+        for len in 0..40 {
+            for start in [0, 3] {
+                let range = start..start + len;
+                for answer in range.start..=range.end {
+                    for guess in 0..start + len + 3 {
+                        let calls = std::cell::Cell::new(0);
+                        let pred = |i: usize| {
+                            assert!(range.contains(&i), "probed {i} outside {range:?}");
+                            calls.set(calls.get() + 1);
+                            i >= answer
+                        };
+                        assert_eq!(first_true(range.clone(), guess, pred), answer);
+                        if guess == answer && answer > start && answer < start + len {
+                            assert_eq!(calls.get(), 2, "a right guess costs two probes");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn side_is_certain_only_clear_of_the_threshold() {
+        assert_eq!(side(0.0, 100.0, 300.0), Some(false));
+        assert_eq!(side(400.0, 1000.0, 300.0), Some(true));
+        assert_eq!(side(200.0, 400.0, 300.0), None);
+        assert_eq!(side(300.0, 400.0, 300.0), None, "a value on the threshold");
+        assert_eq!(side(f64::NAN, 400.0, 300.0), None);
+        let below = 300.0 - 2.0 * 300.0 * f64::EPSILON;
+        assert_eq!(side(below, below, 300.0), None, "within the margin");
+        // Exhaustive over t on a fine grid: what side promises, lerp keeps.
+        let lerp = csgpix_scene::dataset::lerp;
+        let near = [
+            300.0 - 1e-12,
+            300.0 * (1.0 + 1e-14),
+            299.0,
+            301.0,
+            1e-300,
+            -5.0,
+        ];
+        for &a in &near {
+            for &b in &near {
+                let Some(inside) = side(a, b, 300.0) else {
+                    continue;
+                };
+                for i in 0..=1000 {
+                    let t = i as f64 / 1000.0;
+                    assert_eq!(lerp(a, b, t) >= 300.0, inside, "{a} {b} {t}");
+                }
+            }
+        }
+    }
+
+    fn to_file(z: DVec3) -> DMat4 {
+        let mut m = DMat4::from_scale(DVec3::new(2.0, -3.0, 0.5));
+        m.w_axis = glam::DVec4::new(1.0, 2.0, 3.0, 1.0);
+        m.z_axis = z.extend(0.0);
+        m
+    }
+
+    #[test]
+    fn column_map_needs_index_x_and_y_off_scene_z() {
+        let grid = Grid::new([4, 4, 4], DVec3::ZERO, DVec3::ONE).unwrap();
+        let diag = DMat3::from_diagonal(DVec3::new(0.5, 2.0, -0.25));
+        let up = ColumnMap::of(&grid, &to_file(DVec3::Z), &DMat3::IDENTITY);
+        assert_eq!(up, Some(ColumnMap { dir: 1 }));
+        let down = ColumnMap::of(&grid, &to_file(DVec3::Z), &diag);
+        assert_eq!(down, Some(ColumnMap { dir: -1 }));
+        // -0.0 entries are zeros too.
+        let signed = ColumnMap::of(&grid, &to_file(DVec3::new(-0.0, 0.0, 2.0)), &diag);
+        assert_eq!(signed, Some(ColumnMap { dir: -1 }));
+        // Scene z into file x: fine if index x and y do not read file x.
+        let perm = DMat3::from_cols(DVec3::Z, DVec3::X, DVec3::Y);
+        let swapped = ColumnMap::of(&grid, &to_file(DVec3::X), &perm);
+        assert_eq!(swapped, Some(ColumnMap { dir: 1 }));
+        assert_eq!(ColumnMap::of(&grid, &to_file(DVec3::X), &diag), None);
+        // Any trace of scene z in file x or y, of file z in index x or y: voxel by voxel.
+        let tilt = DVec3::new(1e-300, 0.0, 1.0);
+        assert_eq!(ColumnMap::of(&grid, &to_file(tilt), &diag), None);
+        let mut skew = diag;
+        skew.z_axis.y = -1e-17;
+        assert_eq!(ColumnMap::of(&grid, &to_file(DVec3::Z), &skew), None);
+        // Both file x and z moving, index z reading them with opposite signs: not one way.
+        // (Singular steps: an invertible inverse cannot keep two moving axes off index x, y.)
+        let two = to_file(DVec3::new(1.0, 0.0, 1.0));
+        let xy = DVec3::new(1.0, 1.0, 0.0);
+        let mixed = DMat3::from_cols(DVec3::Z, xy, -DVec3::Z);
+        assert_eq!(ColumnMap::of(&grid, &two, &mixed), None);
+        let same = DMat3::from_cols(DVec3::Z, xy, DVec3::Z);
+        assert_eq!(
+            ColumnMap::of(&grid, &two, &same),
+            Some(ColumnMap { dir: 1 })
+        );
+        let into_x = DMat3::from_cols(DVec3::X, xy, DVec3::Z);
+        assert_eq!(
+            ColumnMap::of(&grid, &two, &into_x),
+            None,
+            "file x feeds index x"
+        );
+        // Not finite.
+        let mut inf = to_file(DVec3::Z);
+        inf.w_axis.x = f64::INFINITY;
+        assert_eq!(ColumnMap::of(&grid, &inf, &diag), None);
+        assert_eq!(
+            ColumnMap::of(&grid, &to_file(DVec3::Z), &(diag * f64::NAN)),
+            None
+        );
+        let huge = Grid::new([4, 4, 4], DVec3::splat(-1e308), DVec3::splat(1e308)).unwrap();
+        assert_eq!(ColumnMap::of(&huge, &to_file(DVec3::Z), &diag), None);
+        // Scene z moving nothing: index z is fixed, one way.
+        let flat = ColumnMap::of(&grid, &to_file(DVec3::ZERO), &diag);
+        assert_eq!(flat, Some(ColumnMap { dir: 1 }));
+    }
+}
