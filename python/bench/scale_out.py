@@ -13,7 +13,6 @@ import argparse
 import filecmp
 import json
 import os
-import resource
 import shutil
 import sys
 import tempfile
@@ -30,6 +29,12 @@ def tree_equal(a: Path, b: Path) -> bool:
     return fa == fb and all(filecmp.cmp(a / f, b / f, shallow=False) for f in fa)
 
 
+def _peak_kib() -> int:
+    """This process's peak resident memory (VmHWM), KiB."""
+    with open("/proc/self/status") as f:
+        return next(int(line.split()[1]) for line in f if line.startswith("VmHWM:"))
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--scene", default="vectors/scenes/csg-logo.csg")
@@ -43,6 +48,10 @@ def main() -> int:
                     help="chunks a shard side: a brick's tile is a shard's columns (docs/zarr.md)")
     ap.add_argument("--tiles-per-task", type=int, default=None,
                     help="XY tiles a task takes (default: all; the run route's bricks)")
+    ap.add_argument("--rows-per-task", type=int, default=None,
+                    help="chunk rows a task takes (default: from --tasks-per-worker); with "
+                         "--tiles-per-task 1 and every row, a task is a tile's whole depth, "
+                         "its columns' runs computed once")
     ap.add_argument("--route", default="runs")
     ap.add_argument("--json", action="store_true", help="print the figures as JSON")
     a = ap.parse_args()
@@ -70,12 +79,13 @@ def main() -> int:
                 client.run(lambda: None)  # workers up before the clock starts
                 out = work / f"w{n}.zarr"
                 t = time.perf_counter()
-                per = -(-base["rows"] // (n * a.tasks_per_worker))
+                per = a.rows_per_task or -(-base["rows"] // (n * a.tasks_per_worker))
                 rep = cd.voxelize_zarr(scene, out, a.res, threads=1, client=client, rows_per_task=per,
                                        tiles_per_task=a.tiles_per_task, **opts)
                 s = time.perf_counter() - t
-                # Each worker's peak resident memory (a fresh process per cluster).
-                peaks = client.run(lambda: resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
+                # Each worker's peak resident memory: VmHWM, which a new program starts
+                # afresh (ru_maxrss keeps the parent's high-water mark across fork and exec).
+                peaks = client.run(_peak_kib)
             rows.append(dict(run=f"LocalCluster, {n} worker process(es)", workers=n, seconds=s,
                              tasks=rep["tasks"], worker_peak_mib=sorted(round(k / 1024) for k in peaks.values()),
                              task_seconds=rep["task_microseconds"] / 1e6,
@@ -85,7 +95,7 @@ def main() -> int:
         shutil.rmtree(work, ignore_errors=True)
     fig = dict(scene=a.scene, res=a.res, chunk=a.chunk, shard=a.shard, route=a.route, tile=base["tile"],
                tiles=base["tiles"], rows_of_chunks=base["rows"], filled=base["filled"], cores=os.cpu_count(),
-               driver_peak_mib=round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024), runs=rows)
+               driver_peak_mib=round(_peak_kib() / 1024), runs=rows)
     if a.json:
         print(json.dumps(fig, indent=2))
     else:

@@ -1113,6 +1113,8 @@ pub fn voxelize_bricks(
     let all = volume.chunk_rows();
     let columns = csgpix_voxel::runs::Columns::new(slicer, float)?;
     let mut work = Work::default();
+    // One buffer for every brick: a fresh one a brick costs its pages' faults each time.
+    let mut voxels: Vec<u8> = vec![];
     for &tile in tiles {
         let runs = columns.brick(eval, tile);
         work.ops += runs.ops;
@@ -1126,7 +1128,8 @@ pub fn voxelize_bricks(
             }
             work.filled += runs.filled(slabs.clone());
             let known = known_chunks(&runs, volume.chunk(), slabs.clone());
-            let mut voxels = vec![0u8; tile.pixels() * slabs.len()];
+            voxels.clear();
+            voxels.resize(tile.pixels() * slabs.len(), 0);
             runs.write(slabs, &mut voxels);
             volume.write_brick(row, tile, &voxels, Some(&known))?;
             tick();
