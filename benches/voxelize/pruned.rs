@@ -42,6 +42,12 @@ pub fn pruned_eval(shape: &JitShape, g: &Grid, cells: &[usize]) -> Vec<u8> {
     );
     let [nx, ny, nz] = g.dims;
     let mut voxels = vec![0u8; nx * ny * nz];
+    // Every page touched now, in parallel, as the run route does: cells proven outside are
+    // never written, and a zeroed allocation's untouched pages would be mapped one at a time
+    // by the file's write instead.
+    voxels
+        .par_chunks_mut((nx * ny).max(1))
+        .for_each(|s| s.fill(0));
     let job = Job {
         axes: Axes::of(g),
         out: Out::new(&mut voxels, g.dims),

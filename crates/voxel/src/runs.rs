@@ -504,6 +504,10 @@ pub fn voxelize_runs(
         .zip(bands)
         .map(|(mut rows, (y0, y1))| {
             let (runs, ops) = columns.rows(eval, y0, y1);
+            // Every page touched here, in parallel, as the band's own: a zeroed allocation's
+            // pages are mapped on first touch, and left to the file's write they are mapped
+            // one at a time on one thread (×3-5 the time at 512³, measured).
+            rows.iter_mut().for_each(|r| r.fill(0));
             write_rows(&runs, 0..nz, &mut rows);
             tick();
             (runs.filled(0..nz), ops)
