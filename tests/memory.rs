@@ -229,6 +229,19 @@ fn estimates_are_above_the_measured_peaks() {
             "-o",
             &zarr,
         ],
+        // By bricks of 128² columns (shards of 2 chunks a side), 16 a chunk row.
+        vec![
+            "voxelize",
+            "vectors/scenes/csg-logo.csg",
+            "--res",
+            "512",
+            "--format",
+            "zarr",
+            "--shard",
+            "2",
+            "-o",
+            &zarr,
+        ],
         vec!["phantom", "--size", "256", "-o", &phantom],
         vec!["requirements", "vectors/scenes/twelve.csg", "--res", "2048"],
     ];
