@@ -58,6 +58,19 @@ fn large_runs_are_refused_under_ulimit_before_allocating() {
             "vectors/scenes/twelve.csg",
             "--res",
             "1500",
+            "--route",
+            "intervals",
+            "-o",
+            &nrrd,
+        ],
+        // The run route streams the file, but a preview needs the volume.
+        vec![
+            "voxelize",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            "1500",
+            "--preview",
+            &png,
             "-o",
             &nrrd,
         ],
@@ -87,6 +100,45 @@ fn large_runs_are_refused_under_ulimit_before_allocating() {
         refused(&out, "--max-memory");
     }
     assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none());
+}
+
+/// The run route writes the NRRD file slice by slice: a 1 GiB volume is written under 512 MiB
+/// of address space, the bytes those of the volume held whole (the slab route's).
+#[cfg(target_os = "linux")]
+#[test]
+fn a_streamed_volume_is_larger_than_the_address_space() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.nrrd"), dir.path().join("b.nrrd"));
+    let args = |out: &Path| {
+        let o = out.to_str().unwrap().to_string();
+        vec![
+            "voxelize",
+            "vectors/scenes/csg-logo.csg",
+            "--res",
+            "1024",
+            "-o",
+            &o,
+        ]
+        .into_iter()
+        .map(String::from)
+        .collect::<Vec<_>>()
+    };
+    let streamed = args(&a);
+    let streamed: Vec<&str> = streamed.iter().map(String::as_str).collect();
+    let out = under_ulimit(512 << 10, &streamed);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    let whole = args(&b);
+    let mut whole: Vec<&str> = whole.iter().map(String::as_str).collect();
+    whole.extend(["--route", "intervals"]);
+    assert!(common::csgpix(&whole).status.success());
+    let (x, y) = (std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+    assert!(
+        x.len() > 1 << 30 && x == y,
+        "{} and {} bytes",
+        x.len(),
+        y.len()
+    );
 }
 
 #[test]

@@ -963,25 +963,30 @@ fn a_signal_while_chunks_are_written_leaves_nothing() {
     }
 }
 
-/// Memory: the Zarr run's estimate does not grow with the grid's depth where NRRD's does (for
-/// given levels: the default adds a level, a row of 1/8 the one below, per doubling).
+/// Memory: the Zarr run's estimate does not grow with the grid's depth where NRRD's does when
+/// the volume is held (the slab route; for given levels: the default adds a level, a row of
+/// 1/8 the one below, per doubling); the run route's NRRD file, written slice by slice,
+/// grows by its columns' runs only.
 #[cfg(target_os = "linux")]
 #[test]
 fn the_estimate_does_not_grow_with_depth() {
     let d = tempfile::tempdir().unwrap();
     let (nrrd, store) = (d.path().join("v.nrrd"), d.path().join("v.zarr"));
-    let est = |res: &str, zarr: bool| {
+    let est = |res: &str, out: &str| {
         let mut a = vec!["voxelize", "vectors/scenes/twelve.csg", "--res", res];
-        match zarr {
-            true => a.extend(["--format", "zarr", "--levels", "3", "-o", s(&store)]),
-            false => a.extend(["-o", s(&nrrd)]),
+        match out {
+            "zarr" => a.extend(["--format", "zarr", "--levels", "3", "-o", s(&store)]),
+            "whole" => a.extend(["--route", "intervals", "-o", s(&nrrd)]),
+            _ => a.extend(["-o", s(&nrrd)]),
         }
         estimate_mib(&a)
     };
-    let (z1, z2) = (est("512x512x64", true), est("512x512x4096", true));
-    let (n1, n2) = (est("512x512x64", false), est("512x512x4096", false));
+    let (z1, z2) = (est("512x512x64", "zarr"), est("512x512x4096", "zarr"));
+    let (n1, n2) = (est("512x512x64", "whole"), est("512x512x4096", "whole"));
+    let (r1, r2) = (est("512x512x64", "runs"), est("512x512x4096", "runs"));
     assert_eq!(z1, z2, "the Zarr estimate grows with depth");
     assert!(n2 > n1 + 1000, "NRRD's: {n1} {n2}");
+    assert!(r2 < r1 + 100, "the streamed NRRD's: {r1} {r2}");
 
     // The peak against the estimate is measured in tests/memory.rs, whose other tests run
     // no voxelizer in their own process: a child's ru_maxrss starts from its parent's high

@@ -18,8 +18,8 @@ use csgpix::sampled::{load_scene_with, parse_binding, scene_from_expr, Binding, 
 use csgpix::slice::SliceEval;
 use csgpix::solid::CsgScene;
 use csgpix::voxel::{
-    memory_estimate, voxelize, voxelize_streaming, BindingProblem, Error, Grid, GridSpec, Route,
-    Sampling, Slicer, SlicerOptions, Volume, Work,
+    memory_estimate, voxelize, voxelize_slabs, voxelize_streaming, BindingProblem, Error, Grid,
+    GridSpec, Route, Sampling, Slicer, SlicerOptions, Volume, Work,
 };
 use csgpix::zarr::{voxelize_bricks, voxelize_rows, VolumeAttrs, ZarrVolume};
 use glam::DVec3;
@@ -626,7 +626,8 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
     let eval = evaluator(a.eval, scene);
     let route = route_of(a.model, a.route, &slicer);
-    let need = estimate(&a, &slicer, route, eval.as_ref(), threads, &layout)?;
+    let stream = streams(&a, route, &slicer, eval.as_ref(), threads);
+    let need = estimate(&a, &slicer, route, eval.as_ref(), threads, &layout, stream)?;
     let fix = match a.format {
         FormatArg::Nrrd => "lower --res",
         FormatArg::Zarr => "lower --res or --chunk",
@@ -693,6 +694,36 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             zarr,
         );
     }
+    if stream {
+        let comment = format!("csgpix voxelize {name}");
+        let out = named.nrrd;
+        let work = pool.install(|| {
+            stream_nrrd(
+                &mut named.outs,
+                out,
+                &slicer,
+                route,
+                set,
+                eval.as_ref(),
+                &tick,
+                &comment,
+            )
+        })?;
+        bar.finish_and_clear();
+        let wall = t0.elapsed().as_secs_f64();
+        let to_stdout = named.outs.uses_stdout();
+        named.outs.commit()?;
+        let run = (wall, to_stdout, need);
+        return report(
+            &a,
+            scene,
+            &slicer,
+            eval.as_ref(),
+            (work, None, None),
+            run,
+            None,
+        );
+    }
     let budget = a.mem.bytes().saturating_sub(need);
     let (volume, work, store) = match a.store {
         None => pool
@@ -731,6 +762,67 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     report(&a, scene, &slicer, eval.as_ref(), figures, run, None)
 }
 
+/// Whether the NRRD file is written slice by slice as the run route sweeps them, the volume
+/// never held: when nothing else needs it (no --slices, --preview, --mesh or --store) and the
+/// columns' runs, held for the sweep, are estimated below the volume (thousands of small
+/// primitives can make them the larger).
+fn streams(a: &Args, route: Route, slicer: &Slicer, eval: &dyn SliceEval, threads: usize) -> bool {
+    let alone = a.slices.is_none() && a.preview.is_none() && a.mesh.is_none();
+    let runs = matches!(route, Route::Runs { .. });
+    let eligible = a.format == FormatArg::Nrrd && a.store.is_none() && alone && runs;
+    eligible && {
+        use csgpix::voxel::runs::memory_estimate as runs_estimate;
+        runs_estimate(slicer, eval, threads, false) <= runs_estimate(slicer, eval, threads, true)
+    }
+}
+
+/// The NRRD file `out`: its header, then every slice in order of k as the run route sweeps
+/// the columns' runs ([`voxelize_slabs`]), so memory is the runs and one slice, not the
+/// volume, and the bytes are those of the volume written whole.
+#[allow(clippy::too_many_arguments)]
+fn stream_nrrd(
+    outs: &mut Outputs,
+    out: Out,
+    slicer: &Slicer,
+    route: Route,
+    set: rtl_model::EquationSet,
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    comment: &str,
+) -> Result<Work, String> {
+    let nz = slicer.grid.dims[2];
+    let mut done: Option<Result<Work, Error>> = None;
+    let written = outs.write(out, |w| {
+        w.write_all(csgpix::nrrd::header(&slicer.grid, comment).as_bytes())?;
+        // The sink's own error is the file's; a voxelizer's error is told apart below.
+        let mut io: Option<std::io::Error> = None;
+        let mut sink = |_: usize, s: &[u8]| {
+            w.write_all(s).map_err(|e| {
+                let msg = e.to_string();
+                io = Some(e);
+                Error::Msg(msg)
+            })
+        };
+        let r = voxelize_slabs(slicer, route, set, eval, tick, 0..nz, &mut sink);
+        if let Some(e) = io {
+            return Err(e);
+        }
+        let failed = r.is_err();
+        done = Some(r);
+        match failed {
+            true => Err(std::io::Error::other("the voxelization failed")),
+            false => Ok(()),
+        }
+    });
+    match (done, written) {
+        // The voxelizer's error, as the whole-volume path reports it.
+        (Some(Err(e)), _) => Err(e.into()),
+        (_, Err(e)) => Err(e.to_string()),
+        (Some(Ok(work)), Ok(())) => Ok(work),
+        (None, Ok(())) => Err("the volume was not voxelized".into()),
+    }
+}
+
 /// An upper bound of the run's memory (docs/memory.md), by route and output: the run route's
 /// follows the primitives' footprints, the slab routes' every primitive's per-pixel ranges.
 fn estimate(
@@ -740,11 +832,13 @@ fn estimate(
     eval: &dyn SliceEval,
     threads: usize,
     layout: &csgpix::zarr::Layout,
+    stream: bool,
 ) -> Result<u64, String> {
     let grid = &slicer.grid;
     let prims = slicer.primitive_count();
     let runs = matches!(route, Route::Runs { .. });
-    let whole_volume = a.format == FormatArg::Nrrd && a.store.is_none();
+    // Streamed, the NRRD output holds the runs and a slice, as a Zarr row sweep does.
+    let whole_volume = a.format == FormatArg::Nrrd && a.store.is_none() && !stream;
     let mut need = match (runs, a.format) {
         (true, FormatArg::Nrrd) => {
             csgpix::voxel::runs::memory_estimate(slicer, eval, threads, whole_volume)
