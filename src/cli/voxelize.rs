@@ -96,9 +96,11 @@ pub struct Args {
     /// store, a directory named *.zarr.
     #[arg(short = 'o', long)]
     out: PathBuf,
-    /// `nrrd`: one file, the volume assembled in memory. `zarr`: an OME-Zarr 0.5 (Zarr v3)
-    /// store written a chunk row at a time, so memory does not grow with the grid's depth
-    /// (docs/zarr.md); not with --preview, --slices, --mesh or --store.
+    /// `nrrd`: one file, written slice by slice on the run route when nothing else needs the
+    /// volume (no --preview, --slices, --mesh or --store), else assembled in memory. `zarr`:
+    /// an OME-Zarr 0.5 (Zarr v3) store written a brick (a chunk row of one XY tile) at a time
+    /// on the run route, a chunk row at a time otherwise, so memory does not grow with the
+    /// grid's depth (docs/zarr.md); not with --preview, --slices, --mesh or --store.
     #[arg(long, value_enum, default_value_t)]
     format: FormatArg,
     /// --format zarr: the chunk shape, N for N×N×N or ZxYxX in the array's order (Z first, as
@@ -276,10 +278,10 @@ struct StoreReport {
 /// `--format`: what `-o` is.
 #[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
 enum FormatArg {
-    /// A NRRD volume (one file; the volume is held in memory).
+    /// A NRRD volume (one file; streamed on the run route, else held in memory).
     #[default]
     Nrrd,
-    /// An OME-Zarr 0.5 store (a directory; written a chunk row at a time).
+    /// An OME-Zarr 0.5 store (a directory; written a brick or a chunk row at a time).
     Zarr,
 }
 
