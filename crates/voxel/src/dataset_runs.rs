@@ -10,9 +10,10 @@
 //! interpolation are done once per column ([`Dataset::fill_column`]) and only index z is
 //! computed per voxel, by `index_of` itself. Index z then moves one way along the column, so
 //! the voxels of one lattice z-cell are consecutive: a cell whose two plane values lie clearly
-//! on one side of the threshold ([`side`]) is filled or skipped whole, its ends found by a
-//! search ([`first_true`]); in the other cells, which the threshold crosses, a search finds
-//! the voxels near the crossing, and only those are sampled one by one ([`Walk::crossing`]).
+//! on one side of the threshold ([`side`]) is filled or skipped whole, together with the cells
+//! after it on the same side, their end found by a search ([`first_true`]); in the other
+//! cells, which the threshold crosses, a search finds the voxels near the crossing, and only
+//! those are sampled one by one ([`Walk::crossing`]).
 
 use std::ops::Range;
 
@@ -239,18 +240,42 @@ impl Walk<'_, '_> {
                 break; // past the lattice: index z does not come back
             };
             let (a, b) = (self.column.plane(c.0), self.column.plane(c.1));
-            let end = self.cell_end(k, z0);
-            match side(a, b, self.columns.threshold) {
-                Some(true) => push_run(out, start, k, end - 1),
-                Some(false) => {}
-                None => self.crossing(k..end, z0, (a, b), out, start),
-            }
-            k = end;
+            k = match side(a, b, self.columns.threshold) {
+                Some(inside) => {
+                    let end = self.cell_end(k, self.same_side(z0, inside));
+                    if inside {
+                        push_run(out, start, k, end - 1);
+                    }
+                    end
+                }
+                None => {
+                    let end = self.cell_end(k, z0);
+                    self.crossing(k..end, z0, (a, b), out, start);
+                    end
+                }
+            };
         }
     }
 
-    /// The voxel after the last of z-cell `z0` (plane), voxel `k` being in it: where index z
-    /// reaches the next cell's plane.
+    /// The last z-cell (first plane) from cell `z0` on, the column's way, before a cell whose
+    /// planes are not all on side `inside` ([`side`]): the voxels of those cells, consecutive
+    /// (index z is monotone), all take that side, and one search finds where they end.
+    fn same_side(&self, z0: i64, inside: bool) -> i64 {
+        let top = self.n.saturating_sub(2) as i64; // the last cell's first plane
+        let mut last = z0;
+        while (0..=top).contains(&(last + self.dir)) {
+            let next = (last + self.dir) as usize;
+            let (a, b) = (self.column.plane(next), self.column.plane(next + 1));
+            if side(a, b, self.columns.threshold) != Some(inside) {
+                break;
+            }
+            last = next as i64;
+        }
+        last
+    }
+
+    /// The voxel after the last of z-cell `z0` (plane), voxel `k` being in it or in a cell
+    /// before: where index z reaches the next cell's plane.
     fn cell_end(&self, k: usize, z0: i64) -> usize {
         let next = (z0 + i64::from(self.dir > 0)) as f64;
         let key = self.dir * z0;
