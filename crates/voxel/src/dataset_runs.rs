@@ -10,8 +10,10 @@
 //! interpolation are done once per column ([`Dataset::fill_column`]) and only index z is
 //! computed per voxel, by `index_of` itself. Index z then moves one way along the column, so
 //! the voxels of one lattice z-cell are consecutive: a cell whose two plane values lie clearly
-//! on one side of the threshold ([`side`]) is filled or skipped whole, its ends found by a
-//! search ([`first_true`]); only the other cells are sampled voxel by voxel.
+//! on one side of the threshold ([`side`]) is filled or skipped whole, together with the cells
+//! after it on the same side, their end found by a search ([`first_true`]); in the other
+//! cells, which the threshold crosses, a search finds the voxels near the crossing, and only
+//! those are sampled one by one ([`Walk::crossing`]).
 
 use std::ops::Range;
 
@@ -240,45 +242,165 @@ impl Walk<'_, '_> {
             let (a, b) = (self.column.plane(c.0), self.column.plane(c.1));
             k = match side(a, b, self.columns.threshold) {
                 Some(inside) => {
-                    // The cell's voxels end where index z reaches the next cell's plane.
-                    let next = (z0 + i64::from(self.dir > 0)) as f64;
-                    let key = self.dir * z0;
-                    let end = first_true(k + 1..nz, self.guess(next), |j| self.key(j) > key);
+                    let end = self.cell_end(k, self.same_side(z0, inside));
                     if inside {
                         push_run(out, start, k, end - 1);
                     }
                     end
                 }
-                None => self.by_voxels(k, c, out, start),
+                None => {
+                    let end = self.cell_end(k, z0);
+                    self.crossing(k..end, z0, (a, b), out, start);
+                    end
+                }
             };
         }
     }
 
-    /// Voxel by voxel from voxel k, in z-cell `c`, while the voxels stay in that cell; the
-    /// voxel after the last.
-    fn by_voxels(
-        &self,
-        mut k: usize,
-        mut c: Cell,
-        out: &mut Vec<(u32, u32)>,
-        start: usize,
-    ) -> usize {
+    /// The last z-cell (first plane) from cell `z0` on, the column's way, before a cell whose
+    /// planes are not all on side `inside` ([`side`]): the voxels of those cells, consecutive
+    /// (index z is monotone), all take that side, and one search finds where they end.
+    fn same_side(&self, z0: i64, inside: bool) -> i64 {
+        let top = self.n.saturating_sub(2) as i64; // the last cell's first plane
+        let mut last = z0;
+        while (0..=top).contains(&(last + self.dir)) {
+            let next = (last + self.dir) as usize;
+            let (a, b) = (self.column.plane(next), self.column.plane(next + 1));
+            if side(a, b, self.columns.threshold) != Some(inside) {
+                break;
+            }
+            last = next as i64;
+        }
+        last
+    }
+
+    /// The voxel after the last of z-cell `z0` (plane), voxel `k` being in it or in a cell
+    /// before: where index z reaches the next cell's plane.
+    fn cell_end(&self, k: usize, z0: i64) -> usize {
+        let next = (z0 + i64::from(self.dir > 0)) as f64;
+        let key = self.dir * z0;
         let nz = self.columns.grid.dims[2];
-        loop {
-            if self.column.value_in(c) >= self.columns.threshold {
+        first_true(k + 1..nz, self.guess(next), |j| self.key(j) > key)
+    }
+
+    /// Voxel k's value as [`Dataset::sample`] gives it (NaN outside the lattice, which
+    /// `voxels` of one cell never are).
+    fn value(&self, k: usize) -> f64 {
+        self.position(k)
+            .1
+            .map_or(f64::NAN, |c| self.column.value_in(c))
+    }
+
+    /// Voxels `voxels` evaluated one by one, their runs appended to `out[start..]`.
+    fn each(&self, voxels: Range<usize>, out: &mut Vec<(u32, u32)>, start: usize) {
+        for k in voxels {
+            if self.value(k) >= self.columns.threshold {
                 push_run(out, start, k, k);
-            }
-            k += 1;
-            if k == nz {
-                return k;
-            }
-            match self.position(k) {
-                (_, Some(next)) if next.0 == c.0 => c = next,
-                _ => return k,
             }
         }
     }
+
+    /// The runs of `voxels`, all of z-cell `z0` (plane), whose plane values `a`, `b` are not
+    /// clear of the threshold ([`side`]): a few voxels evaluated, the rest filled by side.
+    ///
+    /// Within the cell the value is v(t) = `lerp(a, b, t)`, t = index z − z0 from [`cell`],
+    /// and t is monotone in k (index z is, rounding is, and z0 is fixed). The exact
+    /// g(t) = (1 − t)·a + t·b is linear, so for voxels i ≤ j ≤ l, g(t_j) lies between g(t_i)
+    /// and g(t_l). [`side`]'s argument gives |v(t) − g(t)| ≤ δ = 4.1·ε·M + 3·2⁻¹⁰⁷⁵,
+    /// M = max(|a|, |b|) (ε = 2⁻⁵³), and v = a at t = 0, b at t = 1, exactly. Hence, if two
+    /// values x = v(t_i) and y = v(t_l) (or a plane value for t = 0, 1) are both more than
+    /// 2δ below the threshold, every voxel with t between t_i and t_l has v < threshold:
+    /// outside; both more than 2δ above: inside. [`clear`] decides that with margin
+    /// 8·`f64::EPSILON`·M + `f64::MIN_POSITIVE` = 16·ε·M + 2⁻¹⁰²², near twice 2δ, which also
+    /// covers the rounding of its differences and of the margin itself.
+    ///
+    /// So: the voxels from the first to the last one found clear together with the plane the
+    /// column enters the cell by (a search near where g reaches the threshold) take that
+    /// side; the voxels from the first found clear with the plane it leaves by, to the end,
+    /// take that one; the voxels between, where v may wiggle around the threshold, are
+    /// evaluated one by one. Every voxel is thus either evaluated or covered by a [`clear`]
+    /// verdict on values actually computed: exact whatever the searches find (they only
+    /// assume the verdicts monotone for speed). Planes not finite: all one by one.
+    fn crossing(
+        &self,
+        voxels: Range<usize>,
+        z0: i64,
+        (a, b): (f64, f64),
+        out: &mut Vec<(u32, u32)>,
+        start: usize,
+    ) {
+        if !(a.is_finite() && b.is_finite()) || voxels.len() <= SHORT_CELL {
+            return self.each(voxels, out, start);
+        }
+        let threshold = self.columns.threshold;
+        let margin = 8.0 * f64::EPSILON * a.abs().max(b.abs()) + f64::MIN_POSITIVE;
+        let (enter, leave) = if self.dir > 0 { (a, b) } else { (b, a) };
+        // Where the exact g reaches the threshold: a guess for both searches.
+        let guess = self.guess(z0 as f64 + (threshold - a) / (b - a));
+        let clear_with = |plane: f64| move |v: f64| clear(plane, v, threshold, margin);
+        let head = self.last_clear(voxels.clone(), guess, clear_with(enter));
+        let from = match head {
+            Some((j, inside)) => {
+                if inside {
+                    push_run(out, start, voxels.start, j);
+                }
+                j + 1
+            }
+            None => voxels.start,
+        };
+        let tail = self.first_clear(from..voxels.end, guess, clear_with(leave));
+        self.each(from..tail.map_or(voxels.end, |(j, _)| j), out, start);
+        if let Some((j, true)) = tail {
+            push_run(out, start, j, voxels.end - 1);
+        }
+    }
+
+    /// The last voxel of `voxels` found by a search from `guess` whose value `verdict` finds
+    /// clear of the threshold, and its side; `None` when none was found.
+    fn last_clear(
+        &self,
+        voxels: Range<usize>,
+        guess: usize,
+        verdict: impl Fn(f64) -> Option<bool>,
+    ) -> Option<(usize, bool)> {
+        let found = std::cell::Cell::new(None);
+        first_true(voxels, guess, |j| match verdict(self.value(j)) {
+            Some(inside) => {
+                if found.get().is_none_or(|(f, _)| f < j) {
+                    found.set(Some((j, inside)));
+                }
+                false
+            }
+            None => true,
+        });
+        found.get()
+    }
+
+    /// The first voxel of `voxels` found by a search from `guess` whose value `verdict` finds
+    /// clear of the threshold, and its side; `None` when none was found.
+    fn first_clear(
+        &self,
+        voxels: Range<usize>,
+        guess: usize,
+        verdict: impl Fn(f64) -> Option<bool>,
+    ) -> Option<(usize, bool)> {
+        let found = std::cell::Cell::new(None);
+        first_true(voxels, guess, |j| match verdict(self.value(j)) {
+            Some(inside) => {
+                if found.get().is_none_or(|(f, _)| f > j) {
+                    found.set(Some((j, inside)));
+                }
+                true
+            }
+            None => false,
+        });
+        found.get()
+    }
 }
+
+/// Crossing cells of at most this many voxels are evaluated voxel by voxel: their searches
+/// would cost about as much.
+const SHORT_CELL: usize = 6;
 
 /// Whether every value the last interpolation step can give between plane values `a` and
 /// `b`, `lerp(a, b, t)` = fl(fl(fl(1 − t)·a) + fl(t·b)) for t in [0, 1], is at or above
@@ -292,13 +414,20 @@ impl Walk<'_, '_> {
 /// 4·`f64::EPSILON`·M + `f64::MIN_POSITIVE` = 8·ε·M + 2⁻¹⁰²², is over twice that, which also
 /// covers the rounding of the differences compared with it.
 fn side(a: f64, b: f64, threshold: f64) -> Option<bool> {
-    if !(a.is_finite() && b.is_finite()) {
+    let margin = 4.0 * f64::EPSILON * a.abs().max(b.abs()) + f64::MIN_POSITIVE;
+    clear(a, b, threshold, margin)
+}
+
+/// Whether `x` and `y` are both more than `margin` at or above `threshold` (`Some(true)`)
+/// or below it (`Some(false)`), by computed differences; `None` otherwise, or when either is
+/// not finite.
+fn clear(x: f64, y: f64, threshold: f64, margin: f64) -> Option<bool> {
+    if !(x.is_finite() && y.is_finite()) {
         return None;
     }
-    let margin = 4.0 * f64::EPSILON * a.abs().max(b.abs()) + f64::MIN_POSITIVE;
-    if threshold - a.max(b) > margin {
+    if threshold - x.max(y) > margin {
         Some(false)
-    } else if a.min(b) - threshold > margin {
+    } else if x.min(y) - threshold > margin {
         Some(true)
     } else {
         None

@@ -2,7 +2,11 @@
 //! same column sampled at every voxel centre (`Sampled::inside`): the same runs, column by
 //! column, for random small datasets (sizes 1-9, u8 and u16 samples, thresholds on and
 //! between sample values), placed axis-aligned (scales of either sign, axes swapped,
-//! translations: the cell path) or not (the voxel path), on random grids around them.
+//! translations: the cell path) or not (the voxel path), on random grids around them; and
+//! fine grids over datasets of 2-4 samples a side, so that many voxels share a lattice cell
+//! the threshold crosses (`Walk::crossing`): thresholds on sample values, on a voxel's own
+//! value, on the value midway between two samples, planes nearly or exactly equal (where
+//! lerp's rounding wiggles around the threshold), either direction along index z.
 
 use csgpix_scene::dataset::{Column, Dataset};
 use csgpix_scene::grid::Grid;
@@ -158,6 +162,19 @@ fn dataset(sizes: [usize; 3], wide: bool, values: &[u16], p: &Placement) -> Opti
     Dataset::new(Nrrd::new(sizes, samples, p.origin, p.steps, t).ok()?).ok()
 }
 
+/// The dataset import of `data` at `threshold`.
+fn import(data: Dataset, threshold: f64, to_file: DMat4) -> Sampled {
+    Sampled {
+        shape: Shape::Dataset {
+            data: Box::new(data),
+            threshold,
+            to_file,
+        },
+        colour: 1,
+        file: "random.nrrd".into(),
+    }
+}
+
 /// Every column's runs, by cells and by voxels, equal; whether the cell path was taken.
 fn check(s: &Sampled, grid: &Grid) -> Result<bool, TestCaseError> {
     let d = DatasetColumns::new(s, grid).unwrap();
@@ -232,4 +249,176 @@ fn the_phantom_by_cells() {
         let grid = Grid::new([24, 20, 97], DVec3::splat(-11.0), DVec3::splat(11.0)).unwrap();
         assert!(check(&s, &grid).unwrap(), "by cells");
     }
+}
+
+/// A small dataset of float samples: 1-4 a side in x and y, 2-4 in z; integers, or values
+/// within a few ulps of one float (plane values nearly equal: lerp's rounding decides).
+fn small_samples() -> impl Strategy<Value = ([usize; 3], Vec<f32>)> {
+    ([1usize..=4, 1usize..=4, 2usize..=4], 0.001f32..1000.0).prop_flat_map(|(sizes, base)| {
+        let n = sizes.iter().product::<usize>();
+        let near =
+            (-3i32..=3).prop_map(move |d| f32::from_bits((base.to_bits() as i32 + d) as u32));
+        let values = prop_oneof![
+            prop::collection::vec((0u16..=255).prop_map(f32::from), n),
+            prop::collection::vec(prop::sample::select(vec![0.0f32, 2.0, 7.0]), n),
+            prop::collection::vec(near, n),
+            prop::collection::vec(prop::sample::select(vec![base, base.next_up()]), n),
+        ];
+        (Just(sizes), values)
+    })
+}
+
+/// The threshold of a case: a sample value, midway between two, a voxel's own value
+/// (`Sampled::sample` there: it ties at that voxel), any value near the samples, or a sample
+/// value moved by an ulp or so (equal planes then cross it by rounding alone).
+#[derive(Clone, Debug)]
+enum Threshold {
+    Sample(prop::sample::Index),
+    Midway(prop::sample::Index, prop::sample::Index),
+    Voxel(
+        prop::sample::Index,
+        prop::sample::Index,
+        prop::sample::Index,
+    ),
+    Within(f64),
+    /// A sample value moved by this many ulps (of f64).
+    Beside(prop::sample::Index, i8),
+}
+
+fn threshold() -> impl Strategy<Value = Threshold> {
+    let i = any::<prop::sample::Index>;
+    prop_oneof![
+        1 => i().prop_map(Threshold::Sample),
+        1 => (i(), i()).prop_map(|(a, b)| Threshold::Midway(a, b)),
+        2 => (i(), i(), i()).prop_map(|(x, y, z)| Threshold::Voxel(x, y, z)),
+        1 => (-0.1f64..1.1).prop_map(Threshold::Within),
+        1 => (i(), -3i8..=3).prop_map(|(i, d)| Threshold::Beside(i, d)),
+    ]
+}
+
+impl Threshold {
+    fn value(&self, values: &[f32], s: &Sampled, grid: &Grid) -> f64 {
+        let v = |i: &prop::sample::Index| f64::from(values[i.index(values.len())]);
+        match self {
+            Threshold::Sample(i) => v(i),
+            Threshold::Midway(a, b) => (v(a) + v(b)) / 2.0,
+            Threshold::Voxel(x, y, z) => {
+                let [nx, ny, nz] = grid.dims;
+                let c = grid.centre(x.index(nx), y.index(ny), z.index(nz));
+                s.sample(c).unwrap_or(f64::NAN)
+            }
+            Threshold::Within(t) => {
+                let (lo, hi) = values.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &x| {
+                    (lo.min(f64::from(x)), hi.max(f64::from(x)))
+                });
+                lo + t * (hi - lo)
+            }
+            Threshold::Beside(i, d) => {
+                let step = |x: f64| if *d < 0 { x.next_down() } else { x.next_up() };
+                (0..d.unsigned_abs()).fold(v(i), |x, _| step(x))
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1024))]
+
+    #[test]
+    fn crossing_cells_of_many_voxels(
+        (sizes, values) in small_samples(),
+        placement in aligned(),
+        dims in [1usize..=3, 1usize..=3, 20usize..=200],
+        grow in [0.5f64..1.6, 0.5f64..1.6, 0.8f64..1.3],
+        shift in [-0.4f64..0.4, -0.4f64..0.4, -0.1f64..0.1],
+        snap in prop::option::of((-6i32..=-2, [0usize..3, 0usize..3, 0usize..6])),
+        threshold in threshold(),
+    ) {
+        let nrrd = Nrrd::new(sizes, values.clone(), placement.origin, placement.steps, SampleType::Float);
+        let Some(data) = nrrd.ok().and_then(|n| Dataset::new(n).ok()) else {
+            return Ok(()); // singular steps
+        };
+        let s = import(data.clone(), 0.0, placement.to_file);
+        let (lo, hi) = s.bounds();
+        prop_assume!(lo.is_finite() && hi.is_finite());
+        let grid = match snap {
+            Some((e, back)) => grid_snapped(lo, dims, e, back),
+            None => grid_around(lo, hi, dims, grow, shift),
+        };
+        let s = import(data, threshold.value(&values, &s, &grid), placement.to_file);
+        prop_assert!(check(&s, &grid)?, "by cells");
+    }
+}
+
+/// A 1×1×2 dataset of samples `z` along index z (step `step`, origin 0, identity map), on
+/// 96 voxels of ¼ (⅛ with `eighths`) along scene z from −1 − ⅛ (mirrored for a negative
+/// step): voxel centres at scene z −1 + ¼·i (⅛·i), index z that over `step`.
+fn two_planes(z: [f32; 2], step: f64, threshold: f64, eighths: bool) -> (Sampled, Grid) {
+    let steps = DMat3::from_diagonal(DVec3::new(1.0, 1.0, step));
+    let nrrd = Nrrd::new([1, 1, 2], z.to_vec(), DVec3::ZERO, steps, SampleType::Float).unwrap();
+    let s = import(Dataset::new(nrrd).unwrap(), threshold, DMat4::IDENTITY);
+    let v = if eighths { 0.125 } else { 0.25 };
+    let n = 96;
+    let (lo, hi) = (-1.0 - v / 2.0, -1.0 - v / 2.0 + n as f64 * v);
+    let (lo, hi) = if step > 0.0 { (lo, hi) } else { (-hi, -lo) };
+    let grid = Grid::new(
+        [1, 1, n],
+        DVec3::new(-0.5, -0.5, lo),
+        DVec3::new(0.5, 0.5, hi),
+    )
+    .unwrap();
+    (s, grid)
+}
+
+/// g(t) meets the threshold exactly at a voxel centre: a = 0, b = 2, threshold 1 at t = ½;
+/// a = 1, b = 5, threshold 2 at t = ¼; a = 0, b = 1, threshold ⅜ at t = ⅜ (on ⅛ voxels);
+/// either way along index z, with the samples swapped.
+#[test]
+fn thresholds_met_exactly_at_a_voxel() {
+    for (z, threshold) in [([0.0, 2.0], 1.0), ([1.0, 5.0], 2.0), ([0.0, 1.0], 0.375)] {
+        for z in [z, [z[1], z[0]]] {
+            for step in [1.0, -1.0, 0.5, -2.0] {
+                for eighths in [false, true] {
+                    let (s, grid) = two_planes(z, step, threshold, eighths);
+                    let hit = (0..grid.dims[2])
+                        .any(|k| s.sample(grid.centre(0, 0, k)) == Some(threshold));
+                    let on = eighths && step.abs() == 1.0;
+                    assert!(hit || !on, "{z:?} {step}: no voxel on the threshold");
+                    assert!(check(&s, &grid).unwrap(), "by cells");
+                }
+            }
+        }
+    }
+}
+
+/// Equal planes on the threshold or an ulp or two (of f64) off it, and planes an ulp (of f32)
+/// apart: lerp's rounding alone decides each voxel, in several runs per cell (the test checks there are some).
+#[test]
+fn equal_planes_wiggle_around_the_threshold() {
+    let mut wiggles = 0;
+    for a in [0.1f32, 1.0 / 3.0, 7.0, 300.7, 1e-30, 12345.678] {
+        let (up, wide) = (a.next_up(), f64::from(a));
+        let cases = [
+            ([a, a], wide),
+            ([a, a], wide.next_up()),
+            ([a, a], wide.next_up().next_up()),
+            ([a, a], wide.next_down()),
+            ([a, up], f64::from(up)),
+            ([up, a], wide),
+        ];
+        for (z, threshold) in cases {
+            for step in [1.0, -1.0, 0.75, -3.0] {
+                for eighths in [false, true] {
+                    let (s, grid) = two_planes(z, step, threshold, eighths);
+                    let mut runs = vec![];
+                    DatasetColumns::new(&s, &grid)
+                        .unwrap()
+                        .runs_by_voxels(0, 0, &mut runs);
+                    wiggles += usize::from(runs.len() > 1);
+                    assert!(check(&s, &grid).unwrap(), "by cells");
+                }
+            }
+        }
+    }
+    assert!(wiggles > 0, "no case where rounding splits a cell's runs");
 }
