@@ -628,8 +628,20 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
     let eval = evaluator(a.eval, scene);
     let route = route_of(a.model, a.route, &slicer);
-    let stream = streams(&a, route, &slicer, eval.as_ref(), threads);
-    let need = estimate(&a, &slicer, route, eval.as_ref(), threads, &layout, stream)?;
+    // The run route's NRRD estimates, with and without the volume: they decide whether the
+    // file is streamed, and the one that applies is the run's.
+    let runs_nrrd = (matches!(route, Route::Runs { .. }) && a.format == FormatArg::Nrrd)
+        .then(|| csgpix::voxel::runs::memory_estimates(&slicer, eval.as_ref(), threads));
+    let stream = streams(&a, route, runs_nrrd);
+    let need = estimate(
+        &a,
+        &slicer,
+        route,
+        eval.as_ref(),
+        threads,
+        &layout,
+        (stream, runs_nrrd),
+    )?;
     let fix = match a.format {
         FormatArg::Nrrd => "lower --res",
         FormatArg::Zarr => "lower --res or --chunk",
@@ -768,14 +780,12 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
 /// never held: when nothing else needs it (no --slices, --preview, --mesh or --store) and the
 /// columns' runs, held for the sweep, are estimated below the volume (thousands of small
 /// primitives can make them the larger).
-fn streams(a: &Args, route: Route, slicer: &Slicer, eval: &dyn SliceEval, threads: usize) -> bool {
+/// `runs_nrrd`: the run route's NRRD estimates, without and with the volume.
+fn streams(a: &Args, route: Route, runs_nrrd: Option<[u64; 2]>) -> bool {
     let alone = a.slices.is_none() && a.preview.is_none() && a.mesh.is_none();
     let runs = matches!(route, Route::Runs { .. });
     let eligible = a.format == FormatArg::Nrrd && a.store.is_none() && alone && runs;
-    eligible && {
-        use csgpix::voxel::runs::memory_estimate as runs_estimate;
-        runs_estimate(slicer, eval, threads, false) <= runs_estimate(slicer, eval, threads, true)
-    }
+    eligible && runs_nrrd.is_some_and(|[swept, whole]| swept <= whole)
 }
 
 /// The NRRD file `out`: its header, then every slice in order of k as the run route sweeps
@@ -834,7 +844,7 @@ fn estimate(
     eval: &dyn SliceEval,
     threads: usize,
     layout: &csgpix::zarr::Layout,
-    stream: bool,
+    (stream, runs_nrrd): (bool, Option<[u64; 2]>),
 ) -> Result<u64, String> {
     let grid = &slicer.grid;
     let prims = slicer.primitive_count();
@@ -842,9 +852,9 @@ fn estimate(
     // Streamed, the NRRD output holds the runs and a slice, as a Zarr row sweep does.
     let whole_volume = a.format == FormatArg::Nrrd && a.store.is_none() && !stream;
     let mut need = match (runs, a.format) {
-        (true, FormatArg::Nrrd) => {
-            csgpix::voxel::runs::memory_estimate(slicer, eval, threads, whole_volume)
-        }
+        (true, FormatArg::Nrrd) => runs_nrrd
+            .unwrap_or_else(|| csgpix::voxel::runs::memory_estimates(slicer, eval, threads))
+            [usize::from(whole_volume)],
         (true, FormatArg::Zarr) => {
             let levels = csgpix::zarr::plan(grid.dims, layout).map_err(|e| zarr_message(e, a))?;
             let tile = csgpix::zarr::tile(grid.dims, &levels);

@@ -363,17 +363,7 @@ impl Walk<'_, '_> {
         guess: usize,
         verdict: impl Fn(f64) -> Option<bool>,
     ) -> Option<(usize, bool)> {
-        let found = std::cell::Cell::new(None);
-        first_true(voxels, guess, |j| match verdict(self.value(j)) {
-            Some(inside) => {
-                if found.get().is_none_or(|(f, _)| f < j) {
-                    found.set(Some((j, inside)));
-                }
-                false
-            }
-            None => true,
-        });
-        found.get()
+        self.clear_end(voxels, guess, verdict, false)
     }
 
     /// The first voxel of `voxels` found by a search from `guess` whose value `verdict` finds
@@ -384,15 +374,28 @@ impl Walk<'_, '_> {
         guess: usize,
         verdict: impl Fn(f64) -> Option<bool>,
     ) -> Option<(usize, bool)> {
+        self.clear_end(voxels, guess, verdict, true)
+    }
+
+    /// [`Walk::first_clear`] (`first`) or [`Walk::last_clear`]: the search's predicate is
+    /// "clear" for the first such voxel, "not clear" past the last one; the extreme voxel
+    /// found clear is kept.
+    fn clear_end(
+        &self,
+        voxels: Range<usize>,
+        guess: usize,
+        verdict: impl Fn(f64) -> Option<bool>,
+        first: bool,
+    ) -> Option<(usize, bool)> {
         let found = std::cell::Cell::new(None);
         first_true(voxels, guess, |j| match verdict(self.value(j)) {
             Some(inside) => {
-                if found.get().is_none_or(|(f, _)| f > j) {
+                if found.get().is_none_or(|(f, _)| (j < f) == first) {
                     found.set(Some((j, inside)));
                 }
-                true
+                first
             }
-            None => false,
+            None => !first,
         });
         found.get()
     }

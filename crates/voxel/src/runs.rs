@@ -744,21 +744,25 @@ pub const MESH_RUNS: u64 = 2;
 /// masks (only the panel's primitives hold bits) and evaluator state. It follows the
 /// primitives' footprints: a primitive costs where its outline is, not on every pixel.
 pub fn memory_estimate(slicer: &Slicer, eval: &dyn SliceEval, threads: usize, volume: bool) -> u64 {
+    memory_estimates(slicer, eval, threads)[usize::from(volume)]
+}
+
+/// [`memory_estimate`] both ways, the panels' bytes counted once: without the volume (the
+/// runs swept slice by slice) and with it.
+pub fn memory_estimates(slicer: &Slicer, eval: &dyn SliceEval, threads: usize) -> [u64; 2] {
     let [nx, ny, nz] = slicer.grid.dims.map(|d| d as u64);
     let panels = PanelBytes::of(slicer, eval);
-    let held = match volume {
-        true => nx
-            .saturating_mul(ny)
-            .saturating_mul(nz)
-            .saturating_add(nz.saturating_mul(ny).saturating_mul(16)),
-        false => panels
-            .kept
-            .iter()
-            .fold(0u64, |a, &k| a.saturating_add(k))
-            .saturating_mul(2)
-            .saturating_add(nx.saturating_mul(ny)),
-    };
-    panels.total(slicer, threads, held)
+    let volume = nx
+        .saturating_mul(ny)
+        .saturating_mul(nz)
+        .saturating_add(nz.saturating_mul(ny).saturating_mul(16));
+    let swept = panels
+        .kept
+        .iter()
+        .fold(0u64, |a, &k| a.saturating_add(k))
+        .saturating_mul(2)
+        .saturating_add(nx.saturating_mul(ny));
+    [swept, volume].map(|held| panels.total(slicer, threads, held))
 }
 
 /// [`memory_estimate`] of a run by bricks of `tile` columns (X, Y; tiles start at its
