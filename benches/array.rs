@@ -5,8 +5,8 @@
 //! (§5.2) scaled to the array, drawn and composed four times, so every stage position is used.
 
 use criterion::{criterion_group, BenchmarkId, Criterion, Throughput};
-use csgpix::compile::scene_ops;
-use csgpix::display_list::DisplayList;
+use csgpix::draw::compile::scene_ops;
+use csgpix::scene::display_list::DisplayList;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, Op, WordArray};
 
 fn program(cfg: &ArrayConfig) -> Vec<Op> {

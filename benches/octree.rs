@@ -19,13 +19,13 @@
 
 use std::time::Instant;
 
-use csgpix::blist::BlistEval;
-use csgpix::octree::build::{Merge, Pyramid};
-use csgpix::octree::cell::CellLayers;
-use csgpix::octree::key::Key;
-use csgpix::octree::mc::marching_cubes;
-use csgpix::octree::{depth_for, from_volume, StoreKind};
-use csgpix::scad::parse_csg;
+use csgpix::openscad::parse_csg;
+use csgpix::sculpt::octree::build::{Merge, Pyramid};
+use csgpix::sculpt::octree::cell::CellLayers;
+use csgpix::sculpt::octree::key::Key;
+use csgpix::sculpt::octree::mc::marching_cubes;
+use csgpix::sculpt::octree::{depth_for, from_volume, StoreKind};
+use csgpix::voxel::blist::BlistEval;
 use csgpix::voxel::{voxelize, Grid, Route, Sampling, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
 use rtl_model::Equations;

@@ -22,8 +22,8 @@
 
 use std::time::Instant;
 
-use csgpix::octree::{self, optimized::Leaves, OptimizedOctree, VoxelStore};
-use csgpix::scad::parse_csg;
+use csgpix::openscad::parse_csg;
+use csgpix::sculpt::octree::{self, optimized::Leaves, OptimizedOctree, VoxelStore};
 use csgpix::sculpt::{Frame, Latency, Sculptor, Tool};
 use csgpix::voxel::{Grid, Sampling, Slicer, SlicerOptions};
 use glam::DVec3;
@@ -83,7 +83,8 @@ fn twelve(n: usize) -> (OptimizedOctree, Frame, f64) {
         },
     )
     .expect("slicer");
-    let store = csgpix::octree_from_scene(&slicer, &scene.root, u64::MAX).expect("store");
+    let store =
+        csgpix::run::store::octree_from_scene(&slicer, &scene.root, u64::MAX).expect("store");
     (store, Frame::of_grid(&grid), 8.6)
 }
 
@@ -106,7 +107,7 @@ fn literal_nodes(before: &OptimizedOctree, after: &OptimizedOctree) -> u64 {
     let d = before.depth();
     let mut extra = 0u64;
     before.for_each_leaf(&mut |k, _| {
-        let l = csgpix::octree::key::level(k);
+        let l = csgpix::sculpt::octree::key::level(k);
         if l < d && after.table().get(k).is_none() {
             extra += 8u64.pow(d - l) - 1;
         }

@@ -37,10 +37,10 @@
 
 use std::time::Instant;
 
-use csgpix::evaluate::{colour_labels, direct, LeafOrder, StackEval, TreeEval};
-use csgpix::scad::parse_csg;
-use csgpix::slice::{Labels, Mask, OpCounts, SliceEval};
-use csgpix::solid::{ConvexSolid, CsgNode, CsgScene};
+use csgpix::openscad::parse_csg;
+use csgpix::scene::solid::{ConvexSolid, CsgNode, CsgScene};
+use csgpix::voxel::evaluate::{colour_labels, direct, LeafOrder, StackEval, TreeEval};
+use csgpix::voxel::slice::{Labels, Mask, OpCounts, SliceEval};
 use csgpix::voxel::{
     voxelize, word_ranges, Grid, Route, Sampling, SlabRanges, Slicer, SlicerOptions, Volume,
 };
@@ -68,7 +68,7 @@ const FMT: WordFormat = WordFormat::THESIS;
 /// enters the bench; every table, summary and JSON figure picks it up as `blist`. Return
 /// `None` to measure without it.
 fn blist(scene: &CsgScene) -> Option<Box<dyn SliceEval>> {
-    Some(Box::new(csgpix::blist::BlistEval::new(&scene.root)))
+    Some(Box::new(csgpix::voxel::blist::BlistEval::new(&scene.root)))
 }
 
 /// The evaluators measured, Blist first when there is one.

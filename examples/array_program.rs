@@ -7,8 +7,8 @@
 use std::fmt::Write as _;
 use std::io::Write as _;
 
-use csgpix::compile::scene_ops;
-use csgpix::display_list::DisplayList;
+use csgpix::draw::compile::scene_ops;
+use csgpix::scene::display_list::DisplayList;
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 

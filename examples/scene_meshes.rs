@@ -22,14 +22,14 @@
 use std::fmt::Write as _;
 use std::io::Write as _;
 
-use csgpix::sampled::Shape;
-use csgpix::solid::CsgNode;
+use csgpix::scene::solid::CsgNode;
+use csgpix::voxel::sampled::Shape;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let path = std::env::args()
         .nth(1)
         .ok_or("usage: scene_meshes SCENE.csg")?;
-    let loaded = csgpix::sampled::load_scene(std::path::Path::new(&path))?;
+    let loaded = csgpix::voxel::sampled::load_scene(std::path::Path::new(&path))?;
     let (lo, hi) = loaded.bounds()?;
     let mut out = String::new();
     out.push_str("{\"primitives\": [");

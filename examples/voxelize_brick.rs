@@ -8,7 +8,7 @@
 
 use std::time::Instant;
 
-use csgpix::blist::BlistEval;
+use csgpix::voxel::blist::BlistEval;
 use csgpix::voxel::{runs, Grid, PixelBox, Slicer, SlicerOptions};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -28,7 +28,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         num(5, (n - depth) / 2)?,
     );
     let t0 = Instant::now();
-    let loaded = csgpix::sampled::load_scene(std::path::Path::new(&path))?;
+    let loaded = csgpix::voxel::sampled::load_scene(std::path::Path::new(&path))?;
     let grid = Grid::of_scene(&loaded.scene, [n; 3])?;
     let opts = SlicerOptions {
         sampled: loaded.sampled,

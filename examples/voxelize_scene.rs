@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 use std::io::Write as _;
 
-use csgpix::blist::BlistEval;
+use csgpix::voxel::blist::BlistEval;
 use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
 use rtl_model::Equations;
 
@@ -21,7 +21,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .into()
     });
     let n: usize = args.next().map_or(Ok(32), |s| s.parse())?;
-    let loaded = csgpix::sampled::load_scene(std::path::Path::new(&path))?;
+    let loaded = csgpix::voxel::sampled::load_scene(std::path::Path::new(&path))?;
     let grid = Grid::of_scene(&loaded.scene, [n; 3])?;
     let opts = SlicerOptions {
         sampled: loaded.sampled,

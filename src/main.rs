@@ -1,6 +1,7 @@
-//! The `csgpix` command line: a thin layer over the `csgpix` and `rtl-model` libraries.
+//! The `csgpix` command line: clap parses the flags into a command of the run layer
+//! (`csgpix-run`), which runs it; this file turns its outcome into an exit status.
 
-mod cli;
+use csgpix_run as cli;
 
 use std::process::ExitCode;
 
@@ -29,7 +30,7 @@ fn main() -> ExitCode {
         }
     };
     // Staged outputs are removed if the run is interrupted (crates/scene/src/output.rs).
-    if let Err(e) = csgpix::output::install_signal_cleanup() {
+    if let Err(e) = csgpix_scene::output::install_signal_cleanup() {
         eprintln!("csgpix: cannot watch for signals: {e}");
         return ExitCode::from(2);
     }

@@ -3,9 +3,9 @@
 
 use std::collections::BTreeMap;
 
-use csgpix::blist::{BlistRow, BlistTable};
-use csgpix::csg_expr::parse;
-use csgpix::solid::CsgNode;
+use csgpix::scene::csg_expr::parse;
+use csgpix::scene::solid::CsgNode;
+use csgpix::voxel::blist::{BlistRow, BlistTable};
 use proptest::prelude::*;
 
 /// The tree of Figure 4.4 (its text is garbled in the OCR).

@@ -434,7 +434,7 @@ fn voxelize_writes_the_same_nrrd_for_any_thread_count() {
         outs.push(std::fs::read(&out).unwrap());
     }
     assert!(outs.iter().all(|o| *o == outs[0]));
-    let (dims, voxels) = csgpix::nrrd::read(&outs[0]).unwrap();
+    let (dims, voxels) = csgpix::scene::nrrd::read(&outs[0]).unwrap();
     assert_eq!(dims, [24, 20, 16]);
     assert!(voxels.iter().any(|&v| v != 0) && voxels.contains(&0));
     let head = String::from_utf8_lossy(&outs[0][..400]);
@@ -514,7 +514,7 @@ fn voxelize_eval_blist_reports_the_label_register() {
             // At least one row per voxel, at most one per row (4 rows).
             assert!((8000..=4 * 8000).contains(&c), "{c}");
         }
-        let (_, voxels) = csgpix::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
+        let (_, voxels) = csgpix::scene::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
         filled.push(voxels.iter().map(|&c| c != 0).collect::<Vec<_>>());
     }
     assert_eq!(filled[0], filled[1]);
@@ -735,7 +735,7 @@ fn voxelize_grid_options_and_sampling() {
     assert_eq!(r["voxel"], serde_json::json!([0.5, 0.5, 0.5]));
     assert_eq!(r["min"], serde_json::json!([-11.0, -11.0, -11.0]));
     assert_eq!(r["filled"], 40 * 40 * 40 - 20 * 20 * 20);
-    let (dims, v) = csgpix::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
+    let (dims, v) = csgpix::scene::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
     assert_eq!(dims, [44; 3]);
     assert_eq!(v[0], 0, "padding is empty");
     for bad in [

@@ -7,8 +7,8 @@
 mod common;
 use common::volume;
 
-use csgpix::octree::mc::marching_cubes;
-use csgpix::octree::{from_volume, OptimizedOctree, StoreKind};
+use csgpix::sculpt::octree::mc::marching_cubes;
+use csgpix::sculpt::octree::{from_volume, OptimizedOctree, StoreKind};
 use csgpix::sculpt::{Frame, Sculptor, Tool};
 use csgpix::voxel::Volume;
 use glam::DVec3;

@@ -2,10 +2,10 @@
 //! way (§5.2.1) by `cycle` and `word` (identical in every register), and compared with exact
 //! ray casting (`float`), where every differing pixel must be explained (docs/rendering.md).
 
-use csgpix::compile::clip_scene_ops;
-use csgpix::float::agreement;
-use csgpix::project::{project, View};
-use csgpix::scad::parse_csg;
+use csgpix::draw::compile::clip_scene_ops;
+use csgpix::draw::float::agreement;
+use csgpix::draw::project::{project, View};
+use csgpix::openscad::parse_csg;
 mod common;
 
 use common::random_scene;

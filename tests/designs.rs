@@ -15,8 +15,8 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use csgpix::scad::Fallback;
-use csgpix::solid::{CsgNode, CsgScene, Import};
+use csgpix::openscad::Fallback;
+use csgpix::scene::solid::{CsgNode, CsgScene, Import};
 use csgpix::voxel::{Grid, Route};
 use glam::DVec3;
 
@@ -118,7 +118,7 @@ fn csgpix_voxels(
         let last = e.lines().rfind(|l| !l.contains("warning:")).unwrap_or("");
         return Err(last.trim_start_matches("csgpix: ").to_string());
     }
-    let (_, v) = csgpix::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
+    let (_, v) = csgpix::scene::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
     Ok((v.iter().map(|&c| c != 0).collect(), seconds))
 }
 

@@ -2,10 +2,12 @@
 //! other, against the reference `direct`, on trees as deep as files can make, and against the
 //! operation counts of §5.5.
 
-use csgpix::blist::BlistEval;
-use csgpix::evaluate::{direct, leaf_count, tree_depth, Compile, StackEval, StackUnit, TreeEval};
-use csgpix::slice::{Labels, Mask, OpCounts, SliceEval};
-use csgpix::solid::CsgNode;
+use csgpix::scene::solid::CsgNode;
+use csgpix::voxel::blist::BlistEval;
+use csgpix::voxel::evaluate::{
+    direct, leaf_count, tree_depth, Compile, StackEval, StackUnit, TreeEval,
+};
+use csgpix::voxel::slice::{Labels, Mask, OpCounts, SliceEval};
 use proptest::prelude::*;
 
 use CsgNode::{Complement, Difference, Empty, Intersection, Solid, Union};

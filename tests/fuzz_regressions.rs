@@ -7,27 +7,27 @@ use std::path::Path;
 fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
     match target {
         "csg" => {
-            let text = csgpix::input::text(bytes.to_vec(), "f.csg").ok()?;
-            csgpix::scad::parse_csg(&text, "f.csg")
+            let text = csgpix::scene::input::text(bytes.to_vec(), "f.csg").ok()?;
+            csgpix::openscad::parse_csg(&text, "f.csg")
                 .err()
                 .map(|e| e.to_string())
         }
-        "display_list" => match csgpix::input::text(bytes.to_vec(), "f.dl") {
-            Ok(text) => csgpix::display_list::DisplayList::parse(&text, "f.dl")
+        "display_list" => match csgpix::scene::input::text(bytes.to_vec(), "f.dl") {
+            Ok(text) => csgpix::scene::display_list::DisplayList::parse(&text, "f.dl")
                 .err()
                 .map(|e| e.to_string()),
             Err(e) => Some(e.to_string()),
         },
         "nrrd" => {
             let dir = Path::new("/nonexistent-csgpix-fuzz");
-            csgpix::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), 1 << 20)
+            csgpix::scene::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), 1 << 20)
                 .err()
                 .map(|e| e.to_string())
         }
-        "stl" => csgpix::trimesh::TriMesh::parse(bytes, "f.stl", false)
+        "stl" => csgpix::scene::trimesh::TriMesh::parse(bytes, "f.stl", false)
             .err()
             .map(|e| e.to_string()),
-        "obj" => csgpix::trimesh::TriMesh::parse(bytes, "f.obj", true)
+        "obj" => csgpix::scene::trimesh::TriMesh::parse(bytes, "f.obj", true)
             .err()
             .map(|e| e.to_string()),
         other => panic!("no checks for fuzz target {other}"),
@@ -55,7 +55,7 @@ fn every_input_the_fuzzers_found_gets_a_one_line_answer() {
 
 #[test]
 fn a_file_name_with_line_breaks_is_quoted_on_one_line() {
-    let e = csgpix::scad::parse_csg("import(file = \"a\nb.dxf\");\n", "t.csg").unwrap_err();
+    let e = csgpix::openscad::parse_csg("import(file = \"a\nb.dxf\");\n", "t.csg").unwrap_err();
     let e = e.to_string();
     assert!(!e.contains('\n'), "{e}");
     assert!(e.contains("a\\nb.dxf"), "{e}");

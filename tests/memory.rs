@@ -348,7 +348,7 @@ fn ten_thousand_primitives_fit_by_their_footprints() {
     assert!(estimate <= 400, "estimate {estimate} MiB");
     // Every hole is cut: voxel centres inside the slab and outside every hole, as counted
     // here (the grid spans 0..100 × 0..100 × 0..22; no centre lies on a face).
-    let (_, voxels) = csgpix::nrrd::read(&std::fs::read(&nrrd).unwrap()).unwrap();
+    let (_, voxels) = csgpix::scene::nrrd::read(&std::fs::read(&nrrd).unwrap()).unwrap();
     let in_hole = |c: f64| (0.25..=0.75).contains(&(c - c.floor()));
     let centre = |i: usize, size: f64| (i as f64 + 0.5) * size / 256.0;
     let mut want = 0;

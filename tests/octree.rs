@@ -5,13 +5,13 @@
 mod common;
 use common::volume;
 
-use csgpix::blist::BlistEval;
-use csgpix::octree::cell::{case_of, cell_of, cut_edges};
-use csgpix::octree::key::{coords2, key, key2, parent};
-use csgpix::octree::mc::marching_cubes;
-use csgpix::octree::table::KeyTable;
-use csgpix::octree::{from_volume, OptimizedOctree, StoreKind, VoxelStore};
-use csgpix::scad::parse_csg;
+use csgpix::openscad::parse_csg;
+use csgpix::sculpt::octree::cell::{case_of, cell_of, cut_edges};
+use csgpix::sculpt::octree::key::{coords2, key, key2, parent};
+use csgpix::sculpt::octree::mc::marching_cubes;
+use csgpix::sculpt::octree::table::KeyTable;
+use csgpix::sculpt::octree::{from_volume, OptimizedOctree, StoreKind, VoxelStore};
+use csgpix::voxel::blist::BlistEval;
 use csgpix::voxel::{voxelize, voxelize_streaming, Grid, Route, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
 use proptest::prelude::*;
@@ -380,7 +380,7 @@ fn a_store_built_while_voxelizing_equals_one_built_from_the_volume() {
     let eval = BlistEval::new(&scene.root);
     let set = Equations::Derived.set();
     let (vol, _) = voxelize(&slicer, Route::Intervals, set.clone(), &eval, &|| {}).unwrap();
-    let mut b = csgpix::octree::builder(StoreKind::Octree, vol.dims, BUDGET).unwrap();
+    let mut b = csgpix::sculpt::octree::builder(StoreKind::Octree, vol.dims, BUDGET).unwrap();
     voxelize_streaming(
         &slicer,
         Route::Intervals,

@@ -6,7 +6,7 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use csgpix::scad::parse_csg;
+use csgpix::openscad::parse_csg;
 
 fn dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/openscad")
@@ -154,8 +154,8 @@ fn far_coverage_mismatches(a: &[Option<f64>], b: &[Option<f64>], w: usize, h: us
 
 #[test]
 fn scenes_match_openscads_own_csg_evaluation() {
-    use csgpix::compile::clip_scene_ops;
-    use csgpix::project::{project, Frame, View};
+    use csgpix::draw::compile::clip_scene_ops;
+    use csgpix::draw::project::{project, Frame, View};
     use rtl_model::program::{CReg, Reg};
     use rtl_model::{Array, ArrayConfig, CycleArray, Equations};
 

@@ -31,7 +31,7 @@ fn openscad(input: &Path, out: &Path) -> bool {
 }
 
 fn occupancy(path: &Path) -> Vec<bool> {
-    let (_, v) = csgpix::nrrd::read(&std::fs::read(path).unwrap()).unwrap();
+    let (_, v) = csgpix::scene::nrrd::read(&std::fs::read(path).unwrap()).unwrap();
     v.iter().map(|&c| c != 0).collect()
 }
 
@@ -117,7 +117,7 @@ fn off_faces(csg: &Path, lo: [f64; 3], hi: [f64; 3]) -> Vec<bool> {
     use glam::DVec3;
     let n = 64usize;
     let text = std::fs::read_to_string(csg).unwrap_or_default();
-    let Ok(scene) = csgpix::scad::parse_csg(&text, "x.csg") else {
+    let Ok(scene) = csgpix::openscad::parse_csg(&text, "x.csg") else {
         return vec![true; n * n * n];
     };
     let grid = csgpix::voxel::Grid::new([n; 3], DVec3::from(lo), DVec3::from(hi)).unwrap();

@@ -18,9 +18,9 @@ use common::iou;
 
 use std::path::{Path, PathBuf};
 
-use csgpix::blist::BlistEval;
-use csgpix::sampled::load_imports;
-use csgpix::scad::parse_csg;
+use csgpix::openscad::parse_csg;
+use csgpix::voxel::blist::BlistEval;
+use csgpix::voxel::sampled::load_imports;
 use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
 use glam::DVec3;
 use proptest::prelude::*;

@@ -5,10 +5,10 @@
 mod common;
 
 use common::csgpix;
-use csgpix::blist::BlistEval;
-use csgpix::sampled::load_imports;
-use csgpix::scad::parse_csg;
-use csgpix::solid::{CsgNode, CsgScene};
+use csgpix::openscad::parse_csg;
+use csgpix::scene::solid::{CsgNode, CsgScene};
+use csgpix::voxel::blist::BlistEval;
+use csgpix::voxel::sampled::load_imports;
 use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
 use rtl_model::Equations;
@@ -340,6 +340,10 @@ fn scad_files_are_read_through_openscad() {
         out2.to_str().unwrap(),
     ]);
     assert!(o.status.success());
-    let read = |p: &std::path::Path| csgpix::nrrd::read(&std::fs::read(p).unwrap()).unwrap().1;
+    let read = |p: &std::path::Path| {
+        csgpix::scene::nrrd::read(&std::fs::read(p).unwrap())
+            .unwrap()
+            .1
+    };
     assert_eq!(read(&out), read(&out2));
 }

@@ -33,7 +33,7 @@ fn run(dir: &Path, scad: &str, extra: &[&str]) -> (Option<i32>, String, String) 
 }
 
 fn occupancy(path: &Path) -> Vec<bool> {
-    let (_, v) = csgpix::nrrd::read(&std::fs::read(path).unwrap()).unwrap();
+    let (_, v) = csgpix::scene::nrrd::read(&std::fs::read(path).unwrap()).unwrap();
     v.iter().map(|&c| c != 0).collect()
 }
 

@@ -38,7 +38,7 @@ fn bad_svg_is_one_line_at_the_import() {
     )
     .unwrap();
     std::fs::write(tmp.path().join("page.svg"), "<html/>").unwrap();
-    let options = csgpix::scad::ReadOptions {
+    let options = csgpix::openscad::ReadOptions {
         dir: Some(tmp.path().to_path_buf()),
         ..Default::default()
     };
@@ -48,7 +48,7 @@ fn bad_svg_is_one_line_at_the_import() {
         ("missing.svg", "cannot read it"),
     ] {
         let text = format!("union() {{\n  linear_extrude(1)\n    import(file = \"{file}\");\n}}\n");
-        let e = csgpix::scad::parse_csg_with(&text, "t.csg", &options)
+        let e = csgpix::openscad::parse_csg_with(&text, "t.csg", &options)
             .err()
             .unwrap_or_else(|| panic!("{file} accepted"))
             .to_string();

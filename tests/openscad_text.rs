@@ -13,12 +13,12 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use csgpix::blist::BlistEval;
-use csgpix::sampled::load_imports;
-use csgpix::scad::extrude::signed_area;
-use csgpix::scad::parse_csg;
-use csgpix::scad::text::{render, segments, Fonts, TextSpec};
-use csgpix::solid::{CsgNode, CsgScene, Import};
+use csgpix::openscad::extrude::signed_area;
+use csgpix::openscad::parse_csg;
+use csgpix::openscad::text::{render, segments, Fonts, TextSpec};
+use csgpix::scene::solid::{CsgNode, CsgScene, Import};
+use csgpix::voxel::blist::BlistEval;
+use csgpix::voxel::sampled::load_imports;
 use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
 use glam::DVec3;
 use rtl_model::Equations;

@@ -4,11 +4,11 @@
 mod common;
 
 use common::random_scene;
-use csgpix::compile::clip_scene_ops;
-use csgpix::panels::{render_on_panels, PanelScene};
-use csgpix::project::{project, View};
-use csgpix::scad::parse_csg;
-use csgpix::solid::CsgScene;
+use csgpix::draw::compile::clip_scene_ops;
+use csgpix::draw::panels::{render_on_panels, PanelScene};
+use csgpix::draw::project::{project, View};
+use csgpix::openscad::parse_csg;
+use csgpix::scene::solid::CsgScene;
 use proptest::prelude::*;
 use rtl_model::program::{CReg, Reg};
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray, WordFormat};

@@ -5,9 +5,9 @@
 mod common;
 
 use common::random_scene;
-use csgpix::blist::BlistEval;
-use csgpix::scad::parse_csg;
-use csgpix::solid::CsgScene;
+use csgpix::openscad::parse_csg;
+use csgpix::scene::solid::CsgScene;
+use csgpix::voxel::blist::BlistEval;
 use csgpix::voxel::footprints;
 use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions, Volume, Work};
 use proptest::prelude::*;

@@ -7,12 +7,12 @@ mod common;
 
 use std::path::PathBuf;
 
-use csgpix::blist::BlistEval;
-use csgpix::evaluate::{StackEval, TreeEval};
-use csgpix::sampled::load_scene;
-use csgpix::scad::parse_csg;
-use csgpix::slice::SliceEval;
-use csgpix::solid::{CsgNode, CsgScene};
+use csgpix::openscad::parse_csg;
+use csgpix::scene::solid::{CsgNode, CsgScene};
+use csgpix::voxel::blist::BlistEval;
+use csgpix::voxel::evaluate::{StackEval, TreeEval};
+use csgpix::voxel::sampled::load_scene;
+use csgpix::voxel::slice::SliceEval;
 use csgpix::voxel::{
     float_ranges, voxelize, voxelize_slabs, word_ranges, Error, Grid, Route, Sampling, Slicer,
     SlicerOptions, Volume, Work,

@@ -6,10 +6,10 @@
 mod common;
 
 use common::{face_planes as planes, random_scene};
-use csgpix::evaluate::direct;
-use csgpix::scad::parse_csg;
-use csgpix::slice::SliceEval;
-use csgpix::solid::CsgScene;
+use csgpix::openscad::parse_csg;
+use csgpix::scene::solid::CsgScene;
+use csgpix::voxel::evaluate::direct;
+use csgpix::voxel::slice::SliceEval;
 use csgpix::voxel::{voxelize, Grid, Route, Sampling, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
 use proptest::prelude::*;
@@ -35,7 +35,7 @@ fn run(scene: &CsgScene, grid: Grid, sampling: Sampling, route: Route) -> (Slice
         },
     )
     .unwrap();
-    let eval = csgpix::blist::BlistEval::new(&scene.root);
+    let eval = csgpix::voxel::blist::BlistEval::new(&scene.root);
     let eval: &dyn SliceEval = &eval;
     let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), eval, &|| {}).unwrap();
     (slicer, v)

@@ -7,8 +7,8 @@ mod common;
 
 use std::collections::HashMap;
 
-use csgpix::mesh::{self, Tri};
-use csgpix::octree::{mc, OptimizedOctree, VoxelStore};
+use csgpix::scene::mesh::{self, Tri};
+use csgpix::sculpt::octree::{mc, OptimizedOctree, VoxelStore};
 use csgpix::sculpt::{parse_path, parse_tool, Frame, Sculptor, Tool};
 use csgpix::voxel::Volume;
 use glam::DVec3;

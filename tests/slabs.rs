@@ -4,9 +4,9 @@
 
 mod common;
 
-use csgpix::blist::BlistEval;
-use csgpix::sampled::load_scene;
-use csgpix::scad::parse_csg;
+use csgpix::openscad::parse_csg;
+use csgpix::voxel::blist::BlistEval;
+use csgpix::voxel::sampled::load_scene;
 use csgpix::voxel::{
     voxelize, voxelize_slabs, Error, Grid, Route, Slicer, SlicerOptions, Volume, Work,
 };

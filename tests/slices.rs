@@ -4,7 +4,7 @@
 mod common;
 
 use common::random_scene;
-use csgpix::scad::parse_csg;
+use csgpix::openscad::parse_csg;
 use csgpix::voxel::{array_mask, float_ranges, word_ranges, Grid, Sampling, Slicer, SlicerOptions};
 use proptest::prelude::*;
 use rtl_model::Equations;

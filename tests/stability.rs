@@ -13,13 +13,13 @@ use common::csgpix;
 
 use std::path::Path;
 
-use csgpix::blist::BlistTable;
-use csgpix::clip_expr::Clip;
-use csgpix::compile::{check_window, clip_scene_ops, scene_ops};
-use csgpix::display_list::{DisplayList, DlPlane};
-use csgpix::float::{self, agreement, rounding_bound, ScreenRule};
-use csgpix::project::{self, display_lists, max_slope, Frame, View};
-use csgpix::scad::parse_csg;
+use csgpix::draw::compile::{check_window, clip_scene_ops, scene_ops};
+use csgpix::draw::float::{self, agreement, rounding_bound, ScreenRule};
+use csgpix::draw::project::{self, display_lists, max_slope, Frame, View};
+use csgpix::openscad::parse_csg;
+use csgpix::scene::clip_expr::Clip;
+use csgpix::scene::display_list::{DisplayList, DlPlane};
+use csgpix::voxel::blist::BlistTable;
 use rtl_model::depgen::{pixel_add, DepGen};
 use rtl_model::program::{CReg, Coeffs, Op, Reg};
 use rtl_model::select::vectors::{derive_with_ties, Ties};
@@ -27,7 +27,7 @@ use rtl_model::{
     ArchState, Array, ArrayConfig, CycleArray, EquationSet, Equations, WordArray, WordFormat,
 };
 
-const INTERIOR: u32 = csgpix::compile::INTERIOR_COLOUR;
+const INTERIOR: u32 = csgpix::draw::compile::INTERIOR_COLOUR;
 
 fn s(p: &Path) -> &str {
     p.to_str().unwrap()
@@ -637,7 +637,7 @@ fn depgen_values(g: &DepGen, fmt: &WordFormat, c: &Coeffs, w: usize, h: usize) -
 /// Max over the screen of |word − exact| / 1, that error at the four corners, and the
 /// largest ratio error / bound.
 fn depgen_error(fmt: &WordFormat, g: &DepGen, z: [f64; 3], n: usize) -> (f64, [f64; 4], f64) {
-    let c = csgpix::compile::coeffs(fmt, z[0], z[1], z[2]).unwrap();
+    let c = csgpix::draw::compile::coeffs(fmt, z[0], z[1], z[2]).unwrap();
     let v = depgen_values(g, fmt, &c, n, n);
     let (mut max, mut ratio) = (0.0f64, 0.0f64);
     let mut corners = [0.0; 4];
@@ -862,7 +862,7 @@ fn trees_100000_deep_from_a_file_are_refused_in_one_line() {
     let depth = 100_000;
     let text = "union() {\n".repeat(depth) + "cube(1);\n" + &"}\n".repeat(depth);
     std::fs::write(&path, &text).unwrap();
-    let limit = csgpix::scad::MAX_NESTING;
+    let limit = csgpix::openscad::MAX_NESTING;
     let want = format!(
         "csgpix: {}:{}:1: statements nested deeper than {limit} levels",
         path.display(),
@@ -893,7 +893,7 @@ fn trees_100000_deep_from_a_file_are_refused_in_one_line() {
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(err.lines().count(), 1);
-    let max = csgpix::csg_expr::MAX_DEPTH;
+    let max = csgpix::scene::csg_expr::MAX_DEPTH;
     assert!(
         err.starts_with(&format!("csgpix: EXPR:1:{}: ", max + 1)),
         "{err}"

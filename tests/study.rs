@@ -9,8 +9,8 @@ use common::csgpix;
 
 use std::path::Path;
 
-use csgpix::scad::parse_csg;
-use csgpix::study::{prepare, with_fragments, Model, Point, Sweep, CSV_HEADER};
+use csgpix::openscad::parse_csg;
+use csgpix::run::sweep::{prepare, with_fragments, Model, Point, Sweep, CSV_HEADER};
 
 fn scene_text(name: &str) -> String {
     let path = format!("{}/vectors/scenes/{name}.csg", env!("CARGO_MANIFEST_DIR"));

@@ -4,10 +4,10 @@
 //! one where the thesis's screen rule for back planes applies (docs/select-logic.md) and the
 //! float model with that rule (`ScreenRule::Thesis`) gives what the hardware shows.
 
-use csgpix::clip_expr::Clip;
-use csgpix::compile::{clip_scene_ops, scene_ops};
-use csgpix::display_list::DisplayList;
-use csgpix::float::{self, agreement, ScreenRule};
+use csgpix::draw::compile::{clip_scene_ops, scene_ops};
+use csgpix::draw::float::{self, agreement, ScreenRule};
+use csgpix::scene::clip_expr::Clip;
+use csgpix::scene::display_list::DisplayList;
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 

@@ -6,15 +6,15 @@ use common::csgpix;
 
 use std::path::Path;
 
-use csgpix::panels::{
+use csgpix::draw::panels::{
     bins, count_cycles, estimate, panel_work, presence, tiling, translate, PanelScene,
 };
-use csgpix::project::View;
-use csgpix::scad::parse_csg;
-use csgpix::throughput::{
+use csgpix::draw::project::View;
+use csgpix::draw::throughput::{
     panel_surfaces_per_frame, slices_per_second, surfaces_per_frame, surfaces_per_second,
     table_2_1, table_panels, Hardware, Reading,
 };
+use csgpix::openscad::parse_csg;
 use rtl_model::array::program_cycles;
 use rtl_model::program::CReg;
 use rtl_model::{Array, CycleArray, Equations, WordFormat};
@@ -115,7 +115,7 @@ fn the_20_million_of_5_5_is_table_2_1s_128_row_not_a_128_screen() {
     assert!((slices_per_second(stated, 6.0) - 3_333_333.333_333).abs() < 1e-3);
 }
 
-fn scene(name: &str) -> csgpix::solid::CsgScene {
+fn scene(name: &str) -> csgpix::scene::solid::CsgScene {
     let path = Path::new(ROOT).join("vectors/scenes").join(name);
     parse_csg(&std::fs::read_to_string(&path).unwrap(), name).unwrap()
 }
@@ -139,7 +139,7 @@ fn check_panels_through_the_simulator(
     name: &str,
     screen: (usize, usize),
     panel: (usize, usize),
-) -> Vec<csgpix::panels::PanelWork> {
+) -> Vec<csgpix::draw::panels::PanelWork> {
     let ps = PanelScene::new(&scene(name), View::Iso, screen, thesis_word()).unwrap();
     let set = Equations::Derived.set();
     let work = panel_work(&ps, panel, &count_cycles(&set)).unwrap();

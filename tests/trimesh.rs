@@ -3,8 +3,8 @@
 //! against closed forms on aligned solids and against the generalized winding number on
 //! random closed meshes with frequent ties.
 
-use csgpix::mesh::Tri;
-use csgpix::trimesh::TriMesh;
+use csgpix::scene::mesh::Tri;
+use csgpix::scene::trimesh::TriMesh;
 use glam::DVec3;
 use proptest::prelude::*;
 

@@ -16,9 +16,9 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use csgpix::clip_expr::Clip;
-use csgpix::compile::{clip_scene_ops, scene_ops};
-use csgpix::display_list::DisplayList;
+use csgpix::draw::compile::{clip_scene_ops, scene_ops};
+use csgpix::scene::clip_expr::Clip;
+use csgpix::scene::display_list::DisplayList;
 use rtl_model::array::check_program;
 use rtl_model::program::{translate, CReg, Op};
 use rtl_model::verilog::stimulus::expected_states;
@@ -395,7 +395,7 @@ fn cost_script_maps_sgene_the_comparator_and_the_pixel_to_gates_and_luts() {
         };
         let ffs = count("DFF");
         // `csgpix throughput --area` costs panels with these figures: they must be Yosys's.
-        let cost = csgpix::throughput::PIXEL_COST;
+        let cost = csgpix::draw::throughput::PIXEL_COST;
         match what.trim() {
             "pixel lut4" => costed.push((count("$lut"), ffs, cost.lut4, cost.flip_flops)),
             "pixel lut6" => costed.push((count("$lut"), ffs, cost.lut6, cost.flip_flops)),

@@ -8,11 +8,11 @@ mod common;
 use std::path::{Path, PathBuf};
 
 use common::csgpix;
-use csgpix::blist::BlistEval;
-use csgpix::evaluate::{direct, StackEval, TreeEval};
-use csgpix::sampled::{load_imports, load_scene, Loaded};
-use csgpix::slice::SliceEval;
-use csgpix::solid::{CsgScene, Import};
+use csgpix::scene::solid::{CsgScene, Import};
+use csgpix::voxel::blist::BlistEval;
+use csgpix::voxel::evaluate::{direct, StackEval, TreeEval};
+use csgpix::voxel::sampled::{load_imports, load_scene, Loaded};
+use csgpix::voxel::slice::SliceEval;
 use csgpix::voxel::{voxelize, word_ranges, Grid, Route, Slicer, SlicerOptions, Volume};
 use rtl_model::Equations;
 
@@ -116,7 +116,7 @@ fn figure_5_6_keeps_the_phantoms_cavities_and_the_bores() {
 }
 
 /// Triangles of a convex solid's faces (fans), in scene units.
-fn faces_of(s: &csgpix::solid::ConvexSolid) -> Vec<csgpix::mesh::Tri> {
+fn faces_of(s: &csgpix::scene::solid::ConvexSolid) -> Vec<csgpix::scene::mesh::Tri> {
     let v = |i: usize| s.vertices[i].map(|c| c as f32);
     s.faces
         .iter()
@@ -132,7 +132,7 @@ fn as_meshes(scene: &CsgScene, dir: &Path) -> Loaded {
         .enumerate()
         .map(|(i, s)| {
             let file = format!("solid{i}.stl");
-            csgpix::mesh::write(&dir.join(&file), &faces_of(s), "test").unwrap();
+            csgpix::scene::mesh::write(&dir.join(&file), &faces_of(s), "test").unwrap();
             Import {
                 file,
                 threshold: None,
@@ -238,7 +238,7 @@ fn a_mesh_of_a_solids_faces_voxelizes_as_the_solid() {
 #[test]
 fn a_hollow_mesh_keeps_its_cavity() {
     let dir = tempfile::tempdir().unwrap();
-    let cube = |lo: f32, hi: f32, flip: bool| -> Vec<csgpix::mesh::Tri> {
+    let cube = |lo: f32, hi: f32, flip: bool| -> Vec<csgpix::scene::mesh::Tri> {
         let c = |x: bool, y: bool, z: bool| [x, y, z].map(|b| if b { hi } else { lo });
         // Outward faces of the unit box, as quads (counter-clockwise from outside).
         let quads = [
@@ -293,7 +293,7 @@ fn a_hollow_mesh_keeps_its_cavity() {
     let mut tris = cube(0.0, 10.0, false);
     tris.extend(cube(3.0, 7.0, true));
     let stl = dir.path().join("hollow.stl");
-    csgpix::mesh::write(&stl, &tris, "hollow").unwrap();
+    csgpix::scene::mesh::write(&stl, &tris, "hollow").unwrap();
     let out = dir.path().join("h.nrrd");
     let o = csgpix(&[
         "voxelize",
@@ -308,7 +308,7 @@ fn a_hollow_mesh_keeps_its_cavity() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let (dims, v) = csgpix::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
+    let (dims, v) = csgpix::scene::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
     assert_eq!(dims, [20; 3]);
     let at = |i: usize, j: usize, k: usize| v[(k * 20 + j) * 20 + i];
     assert_ne!(at(1, 1, 1), 0, "the shell");
@@ -396,7 +396,7 @@ fn mc_round_trip(
     let o = csgpix(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let read = |f: &str| {
-        let (_, voxels) = csgpix::nrrd::read(&std::fs::read(f).unwrap()).unwrap();
+        let (_, voxels) = csgpix::scene::nrrd::read(&std::fs::read(f).unwrap()).unwrap();
         voxels.iter().map(|&c| c != 0).collect::<Vec<bool>>()
     };
     let (a, b) = (read(&a_out), read(&b_out));
@@ -500,7 +500,11 @@ fn blending_and_grey_output() {
         let o = csgpix(&args);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     }
-    let read = |f: &str| csgpix::nrrd::read(&std::fs::read(d(f)).unwrap()).unwrap().1;
+    let read = |f: &str| {
+        csgpix::scene::nrrd::read(&std::fs::read(d(f)).unwrap())
+            .unwrap()
+            .1
+    };
     let (labels, grey, blend) = (read("l.nrrd"), read("g.nrrd"), read("b.nrrd"));
     let f = |v: &[u8]| v.iter().map(|&c| c != 0).collect::<Vec<_>>();
     assert_eq!(
@@ -550,8 +554,8 @@ fn the_checked_in_phantom_is_what_the_generator_writes() {
 #[test]
 fn an_openscad_import_statement_places_the_mesh_like_a_solid() {
     let dir = tempfile::tempdir().unwrap();
-    let cube = csgpix::scad::parse_csg("cube(size = [4, 6, 8], center = true);", "c").unwrap();
-    csgpix::mesh::write(
+    let cube = csgpix::openscad::parse_csg("cube(size = [4, 6, 8], center = true);", "c").unwrap();
+    csgpix::scene::mesh::write(
         &dir.path().join("box.stl"),
         &faces_of(&cube.solids[0]),
         "box",
@@ -581,7 +585,9 @@ fn an_openscad_import_statement_places_the_mesh_like_a_solid() {
                 out.to_str().unwrap(),
             ]);
             assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-            csgpix::nrrd::read(&std::fs::read(&out).unwrap()).unwrap().1
+            csgpix::scene::nrrd::read(&std::fs::read(&out).unwrap())
+                .unwrap()
+                .1
         })
         .collect();
     let count = |v: &[u8]| v.iter().filter(|&&c| c != 0).count();

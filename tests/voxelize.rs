@@ -2,12 +2,12 @@
 //! threads, `word` differs from `float` only where the rounding bound allows, hidden cavities
 //! survive (§5.9).
 
-use csgpix::blist::BlistEval;
-use csgpix::evaluate::{direct, StackEval, TreeEval};
-use csgpix::float::rounding_bound;
-use csgpix::scad::parse_csg;
-use csgpix::slice::SliceEval;
-use csgpix::solid::CsgScene;
+use csgpix::draw::float::rounding_bound;
+use csgpix::openscad::parse_csg;
+use csgpix::scene::solid::CsgScene;
+use csgpix::voxel::blist::BlistEval;
+use csgpix::voxel::evaluate::{direct, StackEval, TreeEval};
+use csgpix::voxel::slice::SliceEval;
 use csgpix::voxel::{
     float_interval, float_ranges, voxelize, word_ranges, Grid, Route, Slicer, SlicerOptions, Volume,
 };

@@ -9,11 +9,11 @@
 mod common;
 
 use common::primitive;
-use csgpix::float::rounding_bound;
-use csgpix::project::perpendicular_scale;
-use csgpix::scad::parse_csg;
-use csgpix::slice::SliceEval;
-use csgpix::solid::CsgScene;
+use csgpix::draw::float::rounding_bound;
+use csgpix::draw::project::perpendicular_scale;
+use csgpix::openscad::parse_csg;
+use csgpix::scene::solid::CsgScene;
+use csgpix::voxel::slice::SliceEval;
 use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions, Volume};
 use proptest::prelude::*;
 use rtl_model::{Equations, WordFormat};
@@ -28,7 +28,7 @@ fn stated_scale(fmt: &WordFormat, w: usize, h: usize) -> f64 {
 
 fn run(scene: &CsgScene, grid: Grid, route: Route) -> (Slicer, Volume) {
     let slicer = Slicer::new(scene, grid, SlicerOptions::default()).unwrap();
-    let eval = csgpix::blist::BlistEval::new(&scene.root);
+    let eval = csgpix::voxel::blist::BlistEval::new(&scene.root);
     let eval: &dyn SliceEval = &eval;
     let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), eval, &|| {}).unwrap();
     (slicer, v)
@@ -199,7 +199,7 @@ fn the_washer_plate_matches_float() {
             out.to_str().unwrap(),
         ]);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        let (_, v) = csgpix::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
+        let (_, v) = csgpix::scene::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
         v.iter().map(|&c| c != 0).collect::<Vec<bool>>()
     };
     let (word, float) = (voxels("word"), voxels("float"));
@@ -229,7 +229,7 @@ fn perpendicular_planes_are_scaled_to_the_word() {
             SlicerOptions::default(),
         )
         .unwrap();
-        csgpix::compile::check_window(&slicer.lists, &fmt, 64, 64).unwrap();
+        csgpix::draw::compile::check_window(&slicer.lists, &fmt, 64, 64).unwrap();
         for pl in slicer.lists.iter().flat_map(|l| &l.planes).filter(|p| p.y) {
             let s = pl.dzx.hypot(pl.dzy);
             assert!(s >= stated_scale(&fmt, 64, 64), "{name}: {pl:?}");

@@ -14,7 +14,7 @@ use std::collections::BTreeMap;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
-use csgpix::blist::BlistEval;
+use csgpix::voxel::blist::BlistEval;
 use csgpix::voxel::{voxelize, Grid, PixelBox, Route, Slicer, SlicerOptions};
 use csgpix::zarr::{voxelize_bricks, voxelize_rows, Layout, VolumeAttrs, ZarrVolume};
 use serde_json::Value;
@@ -269,7 +269,7 @@ fn the_store_is_the_nrrd_volume_voxel_for_voxel() {
         let a = run_ok(&[&base[..], &[s(&nrrd)]].concat());
         let args = [&base[..], &[s(&store), "--format", "zarr"], extra].concat();
         let b = run_ok(&args);
-        let (dims, voxels) = csgpix::nrrd::read(&std::fs::read(&nrrd).unwrap()).unwrap();
+        let (dims, voxels) = csgpix::scene::nrrd::read(&std::fs::read(&nrrd).unwrap()).unwrap();
         let (zdims, zvoxels) = read_store(&store);
         assert_eq!(zdims, dims, "{args:?}");
         assert!(
@@ -335,7 +335,7 @@ fn files_in(dir: &Path) -> usize {
 fn voxelize_rows_writes_the_volume_of_voxelize() {
     let d = tempfile::tempdir().unwrap();
     let text = std::fs::read_to_string("vectors/scenes/twelve.csg").unwrap();
-    let scene = csgpix::scad::parse_csg(&text, "twelve.csg").unwrap();
+    let scene = csgpix::openscad::parse_csg(&text, "twelve.csg").unwrap();
     let grid = Grid::of_scene(&scene, [21, 18, 13]).unwrap();
     let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
     let eval = BlistEval::new(&scene.root);
@@ -383,7 +383,7 @@ fn voxelize_rows_writes_the_volume_of_voxelize() {
 fn rows_split_across_tasks_give_the_same_files() {
     let d = tempfile::tempdir().unwrap();
     let text = std::fs::read_to_string("vectors/scenes/csg-logo.csg").unwrap();
-    let scene = csgpix::scad::parse_csg(&text, "csg-logo.csg").unwrap();
+    let scene = csgpix::openscad::parse_csg(&text, "csg-logo.csg").unwrap();
     let grid = Grid::of_scene(&scene, [40, 36, 45]).unwrap();
     let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
     let eval = BlistEval::new(&scene.root);
@@ -506,7 +506,7 @@ fn bricks_give_the_files_of_whole_rows() {
     let set = rtl_model::Equations::Derived.set();
     for (name, dims) in [("csg-logo", [70, 52, 45]), ("twelve", [41, 33, 30])] {
         let text = std::fs::read_to_string(format!("vectors/scenes/{name}.csg")).unwrap();
-        let scene = csgpix::scad::parse_csg(&text, name).unwrap();
+        let scene = csgpix::openscad::parse_csg(&text, name).unwrap();
         let grid = Grid::of_scene(&scene, dims).unwrap();
         let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
         let eval = BlistEval::new(&scene.root);
@@ -631,7 +631,7 @@ fn a_sharded_pyramid_reads_back_as_the_downsampled_volume() {
     let report: Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(report["levels"], 3);
     assert_eq!(usizes(&report["shard"]), [8, 32, 32]);
-    let (dims, voxels) = csgpix::nrrd::read(&std::fs::read(&nrrd).unwrap()).unwrap();
+    let (dims, voxels) = csgpix::scene::nrrd::read(&std::fs::read(&nrrd).unwrap()).unwrap();
     let want = pyramid(dims, &voxels, 3);
     assert_eq!(want[2].0, [18, 15, 13]);
     let opened = ZarrVolume::open(&store).unwrap();

@@ -21,9 +21,9 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use csgpix::blist::BlistEval;
-use csgpix::grid::Grid;
-use csgpix::sampled::{load_scene, Loaded};
+use csgpix::scene::grid::Grid;
+use csgpix::voxel::blist::BlistEval;
+use csgpix::voxel::sampled::{load_scene, Loaded};
 use csgpix::voxel::{voxelize, Route, Slicer, SlicerOptions};
 use rayon::prelude::*;
 use rtl_model::Equations;
@@ -265,7 +265,7 @@ fn route_volume(loaded: &Loaded, grid: &Grid, route: Route) -> (f64, Vec<u8>) {
 fn write_nrrd(path: &Path, grid: &Grid, voxels: &[u8], comment: &str) -> f64 {
     let t0 = Instant::now();
     let mut w = BufWriter::new(File::create(path).expect("create the NRRD file"));
-    csgpix::nrrd::write_volume(&mut w, grid, voxels, comment).expect("write the NRRD file");
+    csgpix::scene::nrrd::write_volume(&mut w, grid, voxels, comment).expect("write the NRRD file");
     w.flush().expect("flush the NRRD file");
     drop(w);
     let t = t0.elapsed().as_secs_f64();

@@ -17,7 +17,7 @@
 
 use std::marker::PhantomData;
 
-use csgpix::grid::Grid;
+use csgpix::scene::grid::Grid;
 use fidget::eval::Function;
 use fidget::jit::{JitFloatSliceEval, JitFunction, JitIntervalEval, JitShape};
 use fidget::render::RenderHandle;

@@ -3,9 +3,9 @@
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|bytes: &[u8]| {
-    let r = match csgpix::input::text(bytes.to_vec(), "f.dl") {
+    let r = match csgpix::scene::input::text(bytes.to_vec(), "f.dl") {
         Ok(text) => {
-            csgpix::display_list::DisplayList::parse(&text, "f.dl").map_err(|e| e.to_string())
+            csgpix::scene::display_list::DisplayList::parse(&text, "f.dl").map_err(|e| e.to_string())
         }
         Err(e) => Err(e.to_string()),
     };

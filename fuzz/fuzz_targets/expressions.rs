@@ -9,10 +9,10 @@ fuzz_target!(|bytes: &[u8]| {
     };
     let text = String::from_utf8_lossy(rest);
     let err = match which % 3 {
-        0 => csgpix::csg_expr::parse(&text).err().map(|e| e.to_string()),
+        0 => csgpix::scene::csg_expr::parse(&text).err().map(|e| e.to_string()),
         1 => {
             let names: Vec<String> = ["A", "B", "C"].map(String::from).to_vec();
-            csgpix::clip_expr::Clip::parse(&text, &names)
+            csgpix::scene::clip_expr::Clip::parse(&text, &names)
                 .err()
                 .map(|e| e.to_string())
         }

@@ -4,7 +4,7 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|bytes: &[u8]| {
     if let Err(e) =
-        csgpix::trimesh::TriMesh::parse(bytes, "f.stl", false).map_err(|e| e.to_string())
+        csgpix::scene::trimesh::TriMesh::parse(bytes, "f.stl", false).map_err(|e| e.to_string())
     {
         assert!(!e.contains('\n'), "two lines: {e}");
     }

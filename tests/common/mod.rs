@@ -50,7 +50,7 @@ pub fn csgpix(args: &[&str]) -> std::process::Output {
 
 /// Outward face planes (unit normal, offset) of a convex solid, by Newell's method: the
 /// geometry direct evaluation checks the slices against.
-pub fn face_planes(s: &csgpix::solid::ConvexSolid) -> Vec<(glam::DVec3, f64)> {
+pub fn face_planes(s: &csgpix::scene::solid::ConvexSolid) -> Vec<(glam::DVec3, f64)> {
     use glam::DVec3;
     s.faces
         .iter()
@@ -198,19 +198,20 @@ pub fn iou(a: &[bool], b: &[bool]) -> f64 {
 /// The occupancy of a scene on `grid` by `route` (Blist, derived equations), its imports
 /// loaded relative to `base`.
 pub fn scene_occupancy(
-    scene: &csgpix::solid::CsgScene,
+    scene: &csgpix::scene::solid::CsgScene,
     base: &std::path::Path,
     grid: &csgpix::voxel::Grid,
     route: csgpix::voxel::Route,
 ) -> Result<Vec<bool>, String> {
     use csgpix::voxel::{voxelize, Slicer, SlicerOptions};
-    let sampled = csgpix::sampled::load_imports(scene, "t.csg", base).map_err(|e| e.to_string())?;
+    let sampled =
+        csgpix::voxel::sampled::load_imports(scene, "t.csg", base).map_err(|e| e.to_string())?;
     let opts = SlicerOptions {
         sampled,
         ..SlicerOptions::default()
     };
     let slicer = Slicer::new(scene, *grid, opts).map_err(|e| e.to_string())?;
-    let eval = csgpix::blist::BlistEval::new(&scene.root);
+    let eval = csgpix::voxel::blist::BlistEval::new(&scene.root);
     let set = rtl_model::Equations::Derived.set();
     let (v, _) = voxelize(&slicer, route, set, &eval, &|| {}).map_err(|e| e.to_string())?;
     Ok(v.voxels.iter().map(|&c| c != 0).collect())
@@ -242,16 +243,16 @@ pub fn compare_with_off(
     name: &str,
     word: csgpix::voxel::Route,
 ) -> Result<(f64, f64), String> {
-    use csgpix::solid::{CsgNode, CsgScene, Import};
+    use csgpix::scene::solid::{CsgNode, CsgScene, Import};
     use csgpix::voxel::{Grid, Route};
     use glam::DVec3;
     let text = std::fs::read_to_string(dir.join(format!("{name}.csg"))).unwrap();
     // Files the export names (an SVG drawing) are found beside it.
-    let options = csgpix::scad::ReadOptions {
+    let options = csgpix::openscad::ReadOptions {
         dir: Some(dir.to_path_buf()),
         ..Default::default()
     };
-    let ours = csgpix::scad::parse_csg_with(&text, &format!("{name}.csg"), &options)
+    let ours = csgpix::openscad::parse_csg_with(&text, &format!("{name}.csg"), &options)
         .map_err(|e| e.to_string())?;
     let tris = read_off(&dir.join(format!("{name}.off")));
     let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));

@@ -6,8 +6,8 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use csgpix::compile::{clip_scene_ops, coeffs, scene_ops, CompileError};
-use csgpix::output::{Out, Outputs};
+use csgpix_draw::compile::{clip_scene_ops, coeffs, scene_ops, CompileError};
+use csgpix_scene::output::{Out, Outputs};
 use rtl_model::array::{check_program, program_cycles};
 use rtl_model::program::{translate, Op};
 use rtl_model::verilog::{pixel, stimulus};
@@ -15,7 +15,7 @@ use rtl_model::{ArrayConfig, CycleArray, Equations, WordFormat};
 
 use super::array_args::{parse_size, parse_word};
 use super::memory::MaxMemory;
-use csgpix::draw::scenes::Scene;
+use csgpix_draw::scenes::Scene;
 
 #[derive(clap::Args, Debug)]
 #[command(
@@ -142,7 +142,7 @@ fn is_display_list(p: &Path) -> bool {
 }
 
 /// Refuse a plane whose value leaves the depth word somewhere on the window the array shows
-/// (`csgpix::compile::check_window` at an origin): DEPGEN's adders keep N_D bits and wrap
+/// (`csgpix_draw::compile::check_window` at an origin): DEPGEN's adders keep N_D bits and wrap
 /// (docs/depth-word.md). The value is linear, so its extremes are at the window's corners.
 fn check_window(
     scene: &Scene,
@@ -230,7 +230,7 @@ fn write_image(
     cfg: &ArrayConfig,
     codes: &[u32],
 ) -> Result<(), String> {
-    let rgb = csgpix::palette::image_rgb(codes, None);
+    let rgb = csgpix_draw::palette::image_rgb(codes, None);
     let mut img = image::RgbImage::new(cfg.width as u32, cfg.height as u32);
     for (i, c) in rgb.iter().enumerate() {
         img.put_pixel(
@@ -239,7 +239,7 @@ fn write_image(
             image::Rgb(*c),
         );
     }
-    Ok(outs.write_in(out, "expected.png", |w| csgpix::png::write_png(w, &img))?)
+    Ok(outs.write_in(out, "expected.png", |w| crate::png::write_png(w, &img))?)
 }
 
 /// What was written and how to run it: the command lines `run.sh` holds, from the directory.

@@ -1,8 +1,8 @@
 //! The libraries' errors in the command line's words: where an error says what to change,
 //! these name the option that changes it.
 
-use csgpix::draw::Error as DrawError;
-use csgpix::sculpt::Error as SculptError;
+use csgpix_draw::Error as DrawError;
+use csgpix_sculpt::Error as SculptError;
 
 /// A drawing error; a scene too deep for the word names `--word` and `--size`.
 pub fn draw(e: DrawError) -> String {
@@ -17,8 +17,8 @@ pub fn draw(e: DrawError) -> String {
 
 /// A scene that could not be loaded for drawing: a projection too deep for the word names
 /// `--word` and `--size` as [`draw`] does.
-pub fn load(e: csgpix::draw::scenes::LoadError) -> String {
-    use csgpix::draw::scenes::LoadError;
+pub fn load(e: csgpix_draw::scenes::LoadError) -> String {
+    use csgpix_draw::scenes::LoadError;
     match e {
         LoadError::Draw { path, error } => format!("{path}: {}", draw(error)),
         e => e.to_string(),

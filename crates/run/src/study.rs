@@ -5,12 +5,12 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use csgpix::output::{Out, Outputs};
+use csgpix_scene::output::{Out, Outputs};
 use std::time::Instant;
 
 use super::voxelize::SamplingArg;
-use csgpix::study::{charts, csv, prepare, Model, Point, Prepared, Sweep};
-use csgpix::voxel::memory_estimate;
+use crate::sweep::{charts, csv, prepare, Model, Point, Prepared, Sweep};
+use csgpix_voxel::memory_estimate;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 
@@ -77,7 +77,7 @@ struct Report<'a> {
 pub fn run(a: Args) -> Result<ExitCode, String> {
     a.mem.limit_readers();
     let file = a.scene.display().to_string();
-    let text = csgpix::scad::scene_text(&a.scene)?;
+    let text = csgpix_openscad::scene_text(&a.scene)?;
     let sweep = Sweep {
         bits: a.bits.clone(),
         fragments: a.fragments.clone(),

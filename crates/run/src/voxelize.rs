@@ -7,21 +7,21 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::ValueEnum;
-use csgpix::blend::{BlendEval, Union};
-use csgpix::blist::{BlistEval, BlistTable};
-use csgpix::draw::Model;
-use csgpix::evaluate::{StackEval, TreeEval};
-use csgpix::octree::{self, StoreKind};
-use csgpix::output::{Out, Outputs};
-use csgpix::palette::rgb;
-use csgpix::sampled::{load_scene_with, parse_binding, scene_from_expr, Binding, Loaded};
-use csgpix::slice::SliceEval;
-use csgpix::solid::CsgScene;
-use csgpix::voxel::{
+use csgpix_draw::palette::rgb;
+use csgpix_draw::Model;
+use csgpix_scene::output::{Out, Outputs};
+use csgpix_scene::solid::CsgScene;
+use csgpix_sculpt::octree::{self, StoreKind};
+use csgpix_voxel::blend::{BlendEval, Union};
+use csgpix_voxel::blist::{BlistEval, BlistTable};
+use csgpix_voxel::evaluate::{StackEval, TreeEval};
+use csgpix_voxel::sampled::{load_scene_with, parse_binding, scene_from_expr, Binding, Loaded};
+use csgpix_voxel::slice::SliceEval;
+use csgpix_voxel::{
     memory_estimate, voxelize, voxelize_slabs, voxelize_streaming, BindingProblem, Error, Grid,
     GridSpec, Route, Sampling, Slicer, SlicerOptions, Volume, Work,
 };
-use csgpix::zarr::{voxelize_bricks, voxelize_rows, VolumeAttrs, ZarrVolume};
+use csgpix_zarr::{voxelize_bricks, voxelize_rows, VolumeAttrs, ZarrVolume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::{Equations, WordFormat};
@@ -160,11 +160,11 @@ pub enum FallbackArg {
     Openscad,
 }
 
-impl From<FallbackArg> for csgpix::scad::Fallback {
+impl From<FallbackArg> for csgpix_openscad::Fallback {
     fn from(f: FallbackArg) -> Self {
         match f {
-            FallbackArg::None => csgpix::scad::Fallback::Refuse,
-            FallbackArg::Openscad => csgpix::scad::Fallback::Openscad,
+            FallbackArg::None => csgpix_openscad::Fallback::Refuse,
+            FallbackArg::Openscad => csgpix_openscad::Fallback::Openscad,
         }
     }
 }
@@ -457,7 +457,7 @@ struct ZarrReport {
     bricks: Option<usize>,
     /// Chunks of every level by what they hold: `empty` (skipped), `uniform` (one value,
     /// compressed once), `mixed`.
-    chunks: csgpix::zarr::ChunksHeld,
+    chunks: csgpix_zarr::ChunksHeld,
 }
 
 /// `sum:KS,KD` or `max`.
@@ -492,9 +492,11 @@ fn load(a: &Args) -> Result<Loaded, String> {
     match (&a.scene, &a.expr) {
         (Some(p), _) => {
             // The scene's vertices count against --max-memory too.
-            let options = csgpix::scad::ReadOptions {
+            let options = csgpix_openscad::ReadOptions {
                 fallback: a.fallback.into(),
-                max_vertices: Some(csgpix::scad::ReadOptions::max_vertices_for(a.mem.bytes())),
+                max_vertices: Some(csgpix_openscad::ReadOptions::max_vertices_for(
+                    a.mem.bytes(),
+                )),
                 ..Default::default()
             };
             load_scene_with(p, &options).map_err(flag_message)
@@ -562,7 +564,7 @@ struct Named {
     nrrd: Out,
     slices: Option<Out>,
     preview: Option<Out>,
-    mesh: Option<(Out, csgpix::mesh::Format)>,
+    mesh: Option<(Out, csgpix_scene::mesh::Format)>,
 }
 
 fn name_outputs(a: &Args) -> Result<Named, String> {
@@ -581,8 +583,8 @@ fn name_outputs(a: &Args) -> Result<Named, String> {
     let preview = preview.transpose()?;
     let mesh = match &a.mesh {
         Some(p) => {
-            let out = outs.file("--mesh", p, &csgpix::mesh::EXTENSIONS)?;
-            Some((out, csgpix::mesh::Format::of_path(p)?))
+            let out = outs.file("--mesh", p, &csgpix_scene::mesh::EXTENSIONS)?;
+            Some((out, csgpix_scene::mesh::Format::of_path(p)?))
         }
         None => None,
     };
@@ -612,9 +614,9 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let threads = a
         .threads
         .map_or_else(rayon::current_num_threads, usize::from);
-    let layout = csgpix::zarr::Layout {
-        chunk: a.chunk.unwrap_or([csgpix::zarr::DEFAULT_CHUNK; 3]),
-        shard: a.shard.unwrap_or(csgpix::zarr::DEFAULT_SHARD),
+    let layout = csgpix_zarr::Layout {
+        chunk: a.chunk.unwrap_or([csgpix_zarr::DEFAULT_CHUNK; 3]),
+        shard: a.shard.unwrap_or(csgpix_zarr::DEFAULT_SHARD),
         levels: a.levels.map(usize::from),
     };
     let opts = SlicerOptions {
@@ -631,7 +633,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     // The run route's NRRD estimates, with and without the volume: they decide whether the
     // file is streamed, and the one that applies is the run's.
     let runs_nrrd = (matches!(route, Route::Runs { .. }) && a.format == FormatArg::Nrrd)
-        .then(|| csgpix::voxel::runs::memory_estimates(&slicer, eval.as_ref(), threads));
+        .then(|| csgpix_voxel::runs::memory_estimates(&slicer, eval.as_ref(), threads));
     let stream = streams(&a, route, runs_nrrd);
     let need = estimate(
         &a,
@@ -659,7 +661,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         let root = named.outs.stage_root(named.nrrd)?;
         let attrs = VolumeAttrs::new(
             format!("csgpix voxelize {name}"),
-            csgpix::zarr::values_text(a.grey, a.blend.is_some()),
+            csgpix_zarr::values_text(a.grey, a.blend.is_some()),
         );
         let store =
             ZarrVolume::create(&root, &grid, &layout, &attrs).map_err(|e| zarr_message(e, &a))?;
@@ -767,7 +769,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     };
     let voxels = &volume.voxels;
     outs.write(named.nrrd, |w| {
-        csgpix::nrrd::write_volume(w, &grid, voxels, &comment)
+        csgpix_scene::nrrd::write_volume(w, &grid, voxels, &comment)
     })?;
     let to_stdout = outs.uses_stdout();
     named.outs.commit()?;
@@ -805,7 +807,7 @@ fn stream_nrrd(
     let nz = slicer.grid.dims[2];
     let mut done: Option<Result<Work, Error>> = None;
     let written = outs.write(out, |w| {
-        w.write_all(csgpix::nrrd::header(&slicer.grid, comment).as_bytes())?;
+        w.write_all(csgpix_scene::nrrd::header(&slicer.grid, comment).as_bytes())?;
         // The sink's own error is the file's; a voxelizer's error is told apart below.
         let mut io: Option<std::io::Error> = None;
         let mut sink = |_: usize, s: &[u8]| {
@@ -843,7 +845,7 @@ fn estimate(
     route: Route,
     eval: &dyn SliceEval,
     threads: usize,
-    layout: &csgpix::zarr::Layout,
+    layout: &csgpix_zarr::Layout,
     (stream, runs_nrrd): (bool, Option<[u64; 2]>),
 ) -> Result<u64, String> {
     let grid = &slicer.grid;
@@ -853,18 +855,18 @@ fn estimate(
     let whole_volume = a.format == FormatArg::Nrrd && a.store.is_none() && !stream;
     let mut need = match (runs, a.format) {
         (true, FormatArg::Nrrd) => runs_nrrd
-            .unwrap_or_else(|| csgpix::voxel::runs::memory_estimates(slicer, eval, threads))
+            .unwrap_or_else(|| csgpix_voxel::runs::memory_estimates(slicer, eval, threads))
             [usize::from(whole_volume)],
         (true, FormatArg::Zarr) => {
-            let levels = csgpix::zarr::plan(grid.dims, layout).map_err(|e| zarr_message(e, a))?;
-            let tile = csgpix::zarr::tile(grid.dims, &levels);
-            let writer = csgpix::zarr::writer_bytes_bricks(grid.dims, layout, threads)
+            let levels = csgpix_zarr::plan(grid.dims, layout).map_err(|e| zarr_message(e, a))?;
+            let tile = csgpix_zarr::tile(grid.dims, &levels);
+            let writer = csgpix_zarr::writer_bytes_bricks(grid.dims, layout, threads)
                 .map_err(|e| zarr_message(e, a))?;
-            csgpix::voxel::runs::memory_estimate_bricks(slicer, eval, threads, tile)
+            csgpix_voxel::runs::memory_estimate_bricks(slicer, eval, threads, tile)
                 .saturating_add(writer)
         }
         (false, FormatArg::Nrrd) => memory_estimate(grid, prims, threads),
-        (false, FormatArg::Zarr) => csgpix::zarr::memory_estimate(grid, layout, prims, threads)
+        (false, FormatArg::Zarr) => csgpix_zarr::memory_estimate(grid, layout, prims, threads)
             .map_err(|e| zarr_message(e, a))?,
     };
     if !runs {
@@ -883,8 +885,8 @@ fn estimate(
 }
 
 /// A Zarr store's error, naming `-o` where the library names the staging directory.
-fn zarr_message(e: csgpix::zarr::Error, a: &Args) -> String {
-    use csgpix::zarr::Error as Z;
+fn zarr_message(e: csgpix_zarr::Error, a: &Args) -> String {
+    use csgpix_zarr::Error as Z;
     match e {
         Z::Store { message, .. } => format!("-o {}: {message}", a.out.display()),
         Z::BadLevels { levels, max, depth } => format!(
@@ -915,13 +917,13 @@ const MESH_BYTES_PER_SURFACE_VOXEL: u64 = 420;
 /// cells past the grid's far faces are meshed too (docs/octree.md).
 fn write_mesh(
     outs: &mut Outputs,
-    (out, format): (Out, csgpix::mesh::Format),
+    (out, format): (Out, csgpix_scene::mesh::Format),
     grid: &Grid,
     v: &Volume,
     budget: u64,
     comment: &str,
 ) -> Result<MeshReport, String> {
-    let surface = csgpix::voxel::surface_voxels(v);
+    let surface = csgpix_voxel::surface_voxels(v);
     let need = octree::memory_estimate(octree::StoreKind::Octree, v.dims)?
         .saturating_add(surface.saturating_mul(MESH_BYTES_PER_SURFACE_VOXEL));
     if need > budget {
@@ -932,19 +934,19 @@ fn write_mesh(
         ));
     }
     let store = octree::OptimizedOctree::from_volume(v, budget).map_err(lib_errors::sculpt)?;
-    let frame = csgpix::sculpt::Frame::of_grid(grid);
-    let tris: Vec<csgpix::mesh::Tri> = octree::mc::marching_cubes(&store)
+    let frame = csgpix_sculpt::Frame::of_grid(grid);
+    let tris: Vec<csgpix_scene::mesh::Tri> = octree::mc::marching_cubes(&store)
         .triangles
         .iter()
         .map(|t| t.map(|p| frame.to_scene(p)))
         .collect();
     outs.write(out, |w| {
-        csgpix::mesh::write_format(w, format, &tris, comment)
+        csgpix_scene::mesh::write_format(w, format, &tris, comment)
     })?;
     Ok(MeshReport {
         mesh_triangles: tris.len(),
         mesh_memory_estimate: need,
-        mesh_open_edges: csgpix::mesh::open_edges(&tris),
+        mesh_open_edges: csgpix_scene::mesh::open_edges(&tris),
     })
 }
 
@@ -987,7 +989,7 @@ fn with_store(
 }
 
 /// The route a model and `--route` ask for: the run route where it gives the volume
-/// ([`csgpix::voxel::runs::applies`]), else its slab route.
+/// ([`csgpix_voxel::runs::applies`]), else its slab route.
 fn route_of(model: Model, route: RouteArg, slicer: &Slicer) -> Route {
     let r = match (model, route) {
         (Model::Cycle, _) => Route::Array { cycle: true },
@@ -997,7 +999,7 @@ fn route_of(model: Model, route: RouteArg, slicer: &Slicer) -> Route {
         (Model::Float, RouteArg::Runs) => Route::Runs { float: true },
         (Model::Float, _) => Route::Float,
     };
-    match csgpix::voxel::runs::applies(slicer) {
+    match csgpix_voxel::runs::applies(slicer) {
         true => r,
         false => r.by_slab(),
     }
@@ -1027,7 +1029,7 @@ fn progress(slicer: &Slicer, route: Route) -> ProgressBar {
     let [_, _, nz] = slicer.grid.dims;
     let voxels = slicer.grid.slice_len() * nz;
     let (len, unit) = match route {
-        Route::Runs { .. } => (csgpix::voxel::runs::ticks(slicer), "row bands"),
+        Route::Runs { .. } => (csgpix_voxel::runs::ticks(slicer), "row bands"),
         _ => (nz, "slices"),
     };
 
@@ -1183,7 +1185,7 @@ impl Values {
     fn rgb(self, c: u8) -> [u8; 3] {
         match self {
             Values::Grey => [c; 3],
-            Values::Mixed if c >= csgpix::voxel::GREY_BASE => [c; 3],
+            Values::Mixed if c >= csgpix_voxel::GREY_BASE => [c; 3],
             _ => rgb(c as u32),
         }
     }
@@ -1199,7 +1201,7 @@ fn write_preview(outs: &mut Outputs, out: Out, v: &Volume, grey: Values) -> Resu
     let mut left = 0;
     for (w, h, codes, depths) in &views {
         let rgb = match grey {
-            Values::Codes => csgpix::palette::image_rgb(codes, Some(depths)),
+            Values::Codes => csgpix_draw::palette::image_rgb(codes, Some(depths)),
             _ => shaded(codes, depths, grey),
         };
         for (i, c) in rgb.iter().enumerate() {
@@ -1213,7 +1215,7 @@ fn write_preview(outs: &mut Outputs, out: Out, v: &Volume, grey: Values) -> Resu
         left += w * scale + 4;
         let _ = h;
     }
-    Ok(outs.write(out, |w| csgpix::png::write_png(w, &img))?)
+    Ok(outs.write(out, |w| crate::png::write_png(w, &img))?)
 }
 
 /// Values shaded by depth as the palette view shades colours: nearest full, farthest 45%.
@@ -1245,7 +1247,7 @@ fn write_slices(outs: &mut Outputs, dir: Out, v: &Volume, grey: Values) -> Resul
             img.put_pixel((i % nx) as u32, (i / nx) as u32, image::Rgb(px));
         }
         let name = format!("slice-{k:04}.png");
-        outs.write_in(dir, &name, |w| csgpix::png::write_png(w, &img))?;
+        outs.write_in(dir, &name, |w| crate::png::write_png(w, &img))?;
     }
     Ok(())
 }

@@ -4,13 +4,13 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use csgpix::blist::BlistTable;
-use csgpix::compile::clip_scene_ops;
-use csgpix::project::{project, Projected};
-use csgpix::requirements::DepthLayout;
-use csgpix::solid::CsgScene;
-use csgpix::voxel::{footprints, touched_panels, Footprint, PixelBox};
-use csgpix::voxel::{slice_ops, Grid, Slicer, SlicerOptions};
+use csgpix_draw::compile::clip_scene_ops;
+use csgpix_draw::project::{project, Projected};
+use csgpix_scene::solid::CsgScene;
+use csgpix_voxel::blist::BlistTable;
+use csgpix_voxel::requirements::DepthLayout;
+use csgpix_voxel::{footprints, touched_panels, Footprint, PixelBox};
+use csgpix_voxel::{slice_ops, Grid, Slicer, SlicerOptions};
 use glam::DVec3;
 use rtl_model::array::{check_program, program_cycles};
 use rtl_model::{ArrayConfig, Equations, WordFormat};
@@ -117,7 +117,7 @@ struct Report {
 pub fn run(a: Args) -> Result<ExitCode, String> {
     a.mem.limit_readers();
     let at = |e: String| format!("{}: {e}", a.scene.display());
-    let scene = csgpix::scad::read_scene(&a.scene)?;
+    let scene = csgpix_openscad::read_scene(&a.scene)?;
     scene.require_convex(&a.scene.display().to_string(), "`requirements`")?;
     if !(a.precision > 0.0 && a.precision.is_finite()) {
         return Err(format!(
@@ -130,7 +130,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         None => Grid::of_scene(&scene, a.res),
     }
     .map_err(|e| match e.kind {
-        csgpix::scene::Kind::NeedsBounds => at("the scene has no solids: give --bounds".into()),
+        csgpix_scene::Kind::NeedsBounds => at("the scene has no solids: give --bounds".into()),
         _ => at(e.into()),
     })?;
     a.mem
@@ -256,7 +256,7 @@ fn render_program(a: &Args, scene: &CsgScene) -> Result<(usize, u64), String> {
     let ops = clip_scene_ops(&lists, &clip, &cfg.fmt, cfg.colour_bits).map_err(|(i, e)| match e
         .field
     {
-        csgpix::compile::WHOLE_PROGRAM => e.msg,
+        csgpix_draw::compile::WHOLE_PROGRAM => e.msg,
         _ => format!("solid {}: {}", i + 1, e.msg),
     })?;
     let levels = check_program(&ops, 64).map_err(|e| e.to_string())?;

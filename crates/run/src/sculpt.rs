@@ -5,11 +5,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use csgpix::mesh;
-use csgpix::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
-use csgpix::output::Outputs;
-use csgpix::sculpt::{self, Frame, Latency, Sculptor, Step, Tool};
-use csgpix::voxel::{memory_estimate, Slicer, SlicerOptions, Volume};
+use csgpix_scene::mesh;
+use csgpix_scene::output::Outputs;
+use csgpix_sculpt::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
+use csgpix_sculpt::{self as sculpt, Frame, Latency, Sculptor, Step, Tool};
+use csgpix_voxel::{memory_estimate, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -118,7 +118,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
             a.stiffness
         ));
     }
-    let text = csgpix::input::read_text(&a.path)?;
+    let text = csgpix_scene::input::read_text(&a.path)?;
     let path = sculpt::parse_path(&text, &a.path.display().to_string())?;
     let t0 = Instant::now();
     let (store, frame, dims) = load(&a)?;
@@ -232,7 +232,7 @@ fn load(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
 /// `space directions`), filled where `--threshold` says.
 fn load_nrrd(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let p = &a.input;
-    let n = csgpix::nrrd::read_nrrd(p)?;
+    let n = csgpix_scene::nrrd::read_nrrd(p)?;
     let frame = sculpt::nrrd_frame(&n).map_err(|e| format!("{}: {e}", p.display()))?;
     let dims = n.sizes;
     let voxels = sculpt::nrrd_voxels(&n, a.threshold);
@@ -246,7 +246,7 @@ fn load_nrrd(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
 /// feeding the optimized octree slice by slice.
 fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
     let name = a.input.display().to_string();
-    let loaded = csgpix::sampled::load_scene(&a.input)?;
+    let loaded = csgpix_voxel::sampled::load_scene(&a.input)?;
     let scene = &loaded.scene;
     let grid = a
         .grid
@@ -263,7 +263,7 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
         ..SlicerOptions::default()
     };
     let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
-    let store = csgpix::octree_from_scene(&slicer, &scene.root, budget - need)
+    let store = crate::store::octree_from_scene(&slicer, &scene.root, budget - need)
         .map_err(lib_errors::sculpt)?;
     Ok((store, Frame::of_grid(&grid), grid.dims))
 }

@@ -1,25 +1,37 @@
-//! Subcommands. Each returns its exit code, or an error message (exit status 2).
+//! The run layer of csgpix: every command's job, from its flags to its outputs, shared by
+//! the `csgpix` binary (clap → [`Cli`] → [`run`]) and the Python binding (keyword arguments
+//! → the same options and runs, `python/src`).
+//!
+//! One module per command ([`voxelize`], [`render`], [`sculpt`], …): its flags (`Args`,
+//! parsed by clap), its run and its report; beside them what the commands share: the memory
+//! limit ([`memory`]), the study's sweep ([`sweep`]) and charts ([`plot`]), PNG output
+//! ([`png`]) and voxel stores fed from the voxelizer ([`store`]). Each command returns its
+//! exit code, or an error message (exit status 2).
 
-mod array_args;
-mod blist;
-mod export_verilog;
-mod gen_vectors;
+pub mod array_args;
+pub mod blist;
+pub mod export_verilog;
+pub mod gen_vectors;
 mod lib_errors;
-mod memory;
-mod phantom;
-mod render;
-mod requirements;
-mod sculpt;
-mod study;
-mod throughput;
-mod verify_select;
-mod voxelize;
+pub mod memory;
+pub mod phantom;
+pub mod plot;
+pub mod png;
+pub mod render;
+pub mod requirements;
+pub mod sculpt;
+pub mod store;
+pub mod study;
+pub mod sweep;
+pub mod throughput;
+pub mod verify_select;
+pub mod voxelize;
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use csgpix::draw::Model;
-use csgpix::project::View;
+use csgpix_draw::project::View;
+use csgpix_draw::Model;
 use rtl_model::Equations;
 
 #[derive(Parser, Debug)]
@@ -167,7 +179,7 @@ pub fn write_generated(
             ExitCode::from(1)
         });
     }
-    let mut outs = csgpix::output::Outputs::new();
+    let mut outs = csgpix_scene::output::Outputs::new();
     let dir = outs.dir("--out", out)?;
     for (name, text) in files {
         outs.write_in(dir, name, |w| w.write_all(text.as_bytes()))?;

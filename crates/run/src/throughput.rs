@@ -4,17 +4,19 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use csgpix::output::{Out, Outputs};
+use csgpix_scene::output::{Out, Outputs};
 
-use csgpix::panels::{count_cycles, estimate, panel_work, PanelScene, PanelWork, SceneEstimate};
-use csgpix::plot::{Chart, Series};
-use csgpix::project::Frame;
-use csgpix::solid::CsgScene;
-use csgpix::throughput::{
+use crate::plot::{Chart, Series};
+use csgpix_draw::panels::{
+    count_cycles, estimate, panel_work, PanelScene, PanelWork, SceneEstimate,
+};
+use csgpix_draw::project::Frame;
+use csgpix_draw::throughput::{
     area_rows, panel_ratio, panel_surfaces_per_frame, slices_per_second, surfaces_per_frame,
     surfaces_per_second, table_2_1, table_panels, AreaRow, Hardware, PanelRow, PixelCost, Reading,
     PIXEL_COST,
 };
+use csgpix_scene::solid::CsgScene;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, Op, WordFormat};
 use serde::Serialize;
 
@@ -248,7 +250,7 @@ fn print_area(r: &AreaReport) {
 }
 
 fn read_scene(path: &Path) -> Result<CsgScene, String> {
-    let scene = csgpix::scad::read_scene(path)?;
+    let scene = csgpix_openscad::read_scene(path)?;
     scene.require_convex(&path.display().to_string(), "`throughput`")?;
     Ok(scene)
 }
@@ -293,11 +295,11 @@ fn scene_report(
     let set = Equations::Derived.set();
     let counted = count_cycles(&set);
     let simulated = |cfg: &ArrayConfig, ops: &[Op]| {
-        simulate(cfg, &set, ops, a.mem).map_err(csgpix::draw::Error::Msg)
+        simulate(cfg, &set, ops, a.mem).map_err(csgpix_draw::Error::Msg)
     };
-    let count: &csgpix::panels::Counter = if a.simulate { &simulated } else { &counted };
+    let count: &csgpix_draw::panels::Counter = if a.simulate { &simulated } else { &counted };
     let all = vec![true; ps.lists.len()];
-    let in_scene = |e: csgpix::draw::Error| format!("{}: {e}", path.display());
+    let in_scene = |e: csgpix_draw::Error| format!("{}: {e}", path.display());
     let ops = ps.frame_ops(&all).map_err(in_scene)?;
     let one = counted(&ps.panel_config(a.screen), &ops)?;
     let mut estimates = vec![];

@@ -36,12 +36,12 @@ use glam::DVec3;
 use rtl_model::{Equations, WordFormat};
 use serde::Serialize;
 
-use crate::blist::BlistEval;
-use crate::float::rounding_bound;
 use crate::plot::{Chart, Series};
-use crate::scad::parse_csg;
-use crate::solid::CsgScene;
-use crate::voxel::{
+use csgpix_draw::float::rounding_bound;
+use csgpix_openscad::parse_csg;
+use csgpix_scene::solid::CsgScene;
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::{
     float_interval, voxelize, Grid, Route, Sampling, Slicer, SlicerOptions, Volume,
 };
 
@@ -560,7 +560,7 @@ fn plane_words(slicer: &Slicer, prim: usize) -> Result<Vec<PlaneWord>, String> {
         .planes
         .iter()
         .map(|p| {
-            crate::compile::coeffs(&slicer.fmt, p.z0, p.dzx, p.dzy)
+            csgpix_draw::compile::coeffs(&slicer.fmt, p.z0, p.dzx, p.dzy)
                 .map(|c| PlaneWord { c, y: p.y, h: p.h })
                 .map_err(|(_, msg)| format!("solid {}: {msg}", prim + 1))
         })
@@ -577,7 +577,7 @@ fn word_interval(fmt: &WordFormat, planes: &[PlaneWord], x: i64, y: i64) -> Opti
             p.h,
         )
     });
-    crate::voxel::ray_interval(values, f64::NEG_INFINITY, f64::INFINITY)
+    csgpix_voxel::ray_interval(values, f64::NEG_INFINITY, f64::INFINITY)
 }
 
 /// The CSV header; `wall_s` is last so runs compare without it.

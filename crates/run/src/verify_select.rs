@@ -31,7 +31,7 @@ fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> Result<Pla, String> {
     let (name, text) = match dir {
         Some(d) => {
             let p = d.join(format!("{}.pla", t.name()));
-            let text = csgpix::input::read_text(&p)?;
+            let text = csgpix_scene::input::read_text(&p)?;
             (p.display().to_string(), text)
         }
         None => (

@@ -4,14 +4,14 @@
 use std::path::PathBuf;
 
 use clap::ValueEnum;
-use csgpix::output::{Out, Outputs};
+use csgpix_scene::output::{Out, Outputs};
 use rtl_model::array::check_program;
 use rtl_model::probe::Recorder;
 use rtl_model::select::vectors::{derive_with_ties, Ties};
 use rtl_model::Op;
 use rtl_model::{Array, ArrayConfig, CycleArray, EquationSet, Equations, WordArray, WordFormat};
 
-pub use csgpix::draw::Model;
+pub use csgpix_draw::Model;
 
 use super::EquationsArg;
 

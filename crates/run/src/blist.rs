@@ -3,8 +3,8 @@
 
 use std::process::ExitCode;
 
-use csgpix::blist::BlistTable;
-use csgpix::csg_expr::{self, CsgExpr};
+use csgpix_scene::csg_expr::{self, CsgExpr};
+use csgpix_voxel::blist::BlistTable;
 use serde::Serialize;
 
 #[derive(clap::Args, Debug)]

@@ -1,7 +1,7 @@
 //! `--max-memory`: the one memory limit every allocating command checks its estimate against
 //! before it allocates (docs/memory.md).
 
-pub use csgpix::scene::memory::{default_mib, MAX_MIB};
+pub use csgpix_scene::memory::{default_mib, MAX_MIB};
 
 /// `--max-memory`, flattened into each command that allocates in proportion to its input.
 #[derive(clap::Args, Debug, Clone, Copy)]
@@ -23,7 +23,7 @@ impl MaxMemory {
     /// Make the file readers refuse what would not fit: NRRD volumes are refused by their
     /// header's `sizes`, before their data (gzip or raw) is read.
     pub fn limit_readers(&self) {
-        csgpix::nrrd::limit_samples_to_memory(self.bytes(), "--max-memory");
+        csgpix_scene::nrrd::limit_samples_to_memory(self.bytes(), "--max-memory");
     }
 
     /// Refuse `need` bytes of `what` when over the limit, saying how to lower it (`fix`).

@@ -5,9 +5,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use csgpix::compile::{clip_scene_ops, scene_ops};
-use csgpix::output::{Out, Outputs};
-use csgpix::palette::image_rgb;
+use csgpix_draw::compile::{clip_scene_ops, scene_ops};
+use csgpix_draw::palette::image_rgb;
+use csgpix_scene::output::{Out, Outputs};
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::array::check_program;
 use rtl_model::program::{CReg, Op, Reg};
@@ -17,8 +17,8 @@ use serde::Serialize;
 
 use super::array_args::{ArrayArgs, Model};
 use super::ViewArg;
-use csgpix::draw::scenes::Scene;
-use csgpix::float::{self, ScreenRule};
+use csgpix_draw::float::{self, ScreenRule};
+use csgpix_draw::scenes::Scene;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -94,7 +94,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         .check(memory_estimate(&a, &cfg), "this render", "lower --size")?;
     let scene = Scene::load(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)
         .map_err(super::lib_errors::load)?;
-    csgpix::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
+    csgpix_draw::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
         .map_err(|(i, e)| scene.locate(i, &e))?;
     let compiled = match (&scene.clip, scene.empty) {
         (_, true) => Ok(vec![]),
@@ -200,14 +200,14 @@ fn memory_estimate(a: &Args, cfg: &rtl_model::ArrayConfig) -> u64 {
     };
     let arrays = match a.panel.and_then(|p| p.0) {
         Some([pw, ph]) if a.array.model != Model::Float => {
-            let (pw, ph) = csgpix::panels::clamp_panel((pw, ph), (cfg.width, cfg.height));
+            let (pw, ph) = csgpix_draw::panels::clamp_panel((pw, ph), (cfg.width, cfg.height));
             let panel = rtl_model::ArrayConfig {
                 width: pw,
                 height: ph,
                 ..*cfg
             };
             // Per panel its list of solids (a vector and an index at least, 32 bytes).
-            let (cols, rows) = csgpix::panels::tiling((cfg.width, cfg.height), (pw, ph));
+            let (cols, rows) = csgpix_draw::panels::tiling((cfg.width, cfg.height), (pw, ph));
             let lists = (cols as u64 * rows as u64).saturating_mul(32);
             array(&panel)
                 .saturating_add(pixels * 8)
@@ -269,17 +269,18 @@ fn on_panels(
     scene: &Scene,
     cfg: &rtl_model::ArrayConfig,
     panel: (usize, usize),
-) -> Result<csgpix::panels::PanelImage, String> {
+) -> Result<csgpix_draw::panels::PanelImage, String> {
     let Some(csg) = &scene.csg else {
         return Err("--panel needs one .csg scene (display lists have no footprint)".into());
     };
     if a.array.probe.is_some() {
         return Err("--panel and --probe do not go together: probes watch the whole array".into());
     }
-    let ps = csgpix::panels::PanelScene::new(csg, a.view.into(), (cfg.width, cfg.height), cfg.fmt)
-        .map_err(|e| format!("{}: {}", a.scenes[0].display(), super::lib_errors::draw(e)))?;
+    let ps =
+        csgpix_draw::panels::PanelScene::new(csg, a.view.into(), (cfg.width, cfg.height), cfg.fmt)
+            .map_err(|e| format!("{}: {}", a.scenes[0].display(), super::lib_errors::draw(e)))?;
     let cycle = a.array.model == Model::Cycle;
-    Ok(csgpix::panels::render_on_panels(
+    Ok(csgpix_draw::panels::render_on_panels(
         &ps,
         panel,
         cycle,
