@@ -20,7 +20,7 @@ use rtl_model::select::GOLDEN;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 
 use crate::errors::{load, text};
-use crate::voxel::parse_word;
+use crate::voxel::word_format;
 
 /// The array's program for a scene, and the configuration it was compiled for.
 #[pyclass(module = "csgpix._native", frozen)]
@@ -114,7 +114,7 @@ pub fn compile(
     word: &str,
 ) -> PyResult<Program> {
     let mut cfg = ArrayConfig::new(width, height);
-    cfg.fmt = parse_word(word)?;
+    cfg.fmt = word_format(word)?;
     cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
     cfg.check().map_err(text)?;
     let scene = Scene::load(&paths(scene)?, clip, self::view(view)?, &cfg).map_err(load)?;

@@ -7,13 +7,12 @@ use glam::DVec3;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 
-use csgpix_draw::Model;
-use csgpix_voxel::blend::{BlendEval, Union};
-use csgpix_voxel::blist::BlistEval;
-use csgpix_voxel::evaluate::{StackEval, TreeEval};
+use csgpix_run::array_args::parse_word;
+use csgpix_run::memory::Limit;
+use csgpix_run::voxelize::{imports_estimate, parse_blend, Voxelization};
 use csgpix_voxel::sampled::{load_scene, scene_from_expr, Binding, Loaded};
 use csgpix_voxel::slice::SliceEval;
-use csgpix_voxel::{voxelize_slabs, Grid, GridSpec, Route, Sampling, Slicer, SlicerOptions};
+use csgpix_voxel::{Grid, GridSpec, Route, Slicer};
 use rtl_model::{Equations, WordFormat};
 
 use crate::errors::{text, voxel};
@@ -128,29 +127,17 @@ pub fn load_expr(expr: &str, prims: Vec<(String, Bound<'_, PyAny>)>) -> PyResult
 /// the memory available now, before their data is read (as the command line's
 /// `--max-memory` does).
 fn limit_readers() {
-    let bytes = csgpix_scene::memory::default_mib() << 20;
-    csgpix_scene::nrrd::limit_samples_to_memory(bytes, "the memory available (MemAvailable)");
+    Limit::new(None, "the memory available (MemAvailable)").limit_readers();
 }
 
 /// Refuse a run whose estimate `need` (bytes) is over `max_memory` MiB, by default the memory
 /// available now (docs/memory.md), before anything is allocated.
 pub fn check_memory(need: u64, max_memory: Option<u64>) -> PyResult<()> {
-    use csgpix_scene::memory::{default_mib, MAX_MIB};
-    let mib = max_memory.unwrap_or_else(default_mib).clamp(1, MAX_MIB);
-    if need <= mib << 20 {
-        return Ok(());
-    }
-    Err(text(format!(
-        "this run needs about {} MiB, over max_memory {mib}: lower res (or z, or chunk) \
-         or raise max_memory",
-        need.div_ceil(1 << 20)
-    )))
-}
-
-/// Bytes the imports of `scene` hold on `grid` (datasets' samples, meshes' runs).
-pub fn imports_bytes(scene: &Scene, grid: &Grid) -> u64 {
-    let each = scene.loaded.sampled.iter().map(|s| s.memory_estimate(grid));
-    each.fold(0, u64::saturating_add)
+    let limit = Limit::new(max_memory, "max_memory");
+    let fix = "lower res (or z, or chunk)";
+    limit
+        .check(need, "this run", fix)
+        .map_err(|e| text(e.to_string()))
 }
 
 fn binding(name: String, v: &Bound<'_, PyAny>) -> PyResult<Binding> {
@@ -224,14 +211,16 @@ fn resolution(res: Option<&Bound<'_, PyAny>>) -> PyResult<Option<[usize; 3]>> {
         .map_err(|_| text("res: an int N or a tuple (NX, NY, NZ)".into()))
 }
 
-/// Everything but the grid that decides a run's voxels.
-pub struct RunOptions {
-    pub sampling: Sampling,
-    pub route: Route,
-    pub eval: String,
-    pub grey: bool,
-    pub blend: Option<Union>,
-    pub word: WordFormat,
+/// Everything but the grid that decides a run's voxels: the command line's options
+/// ([`Voxelization`]), from keyword arguments spelled as its flags' values.
+pub struct RunOptions(pub Voxelization);
+
+/// A keyword argument's value by its flag's parser: the command line's names and forms.
+fn parsed<T: std::str::FromStr>(s: &str) -> PyResult<T>
+where
+    T::Err: std::fmt::Display,
+{
+    s.parse().map_err(|e: T::Err| text(e.to_string()))
 }
 
 impl RunOptions {
@@ -245,64 +234,39 @@ impl RunOptions {
         blend: Option<&str>,
         word: &str,
     ) -> PyResult<RunOptions> {
-        let sampling = match sampling {
-            "centre" | "center" => Sampling::Centre,
-            "slab" => Sampling::Slab,
-            s => return Err(text(format!("sampling {s:?}: `centre` or `slab`"))),
-        };
-        let model: Model = model.parse().map_err(text)?;
-        let route = match (model, route) {
-            (Model::Cycle, _) => Route::Array { cycle: true },
-            (Model::Word, "runs") => Route::Runs { float: false },
-            (Model::Word, "intervals") => Route::Intervals,
-            (Model::Word, "array") => Route::Array { cycle: false },
-            (Model::Float, "runs") => Route::Runs { float: true },
-            (Model::Float, _) => Route::Float,
-            (_, r) => return Err(text(format!("route {r:?}: `runs`, `intervals` or `array`"))),
-        };
-        if !["blist", "tree", "stack"].contains(&eval) {
-            return Err(text(format!("eval {eval:?}: `blist`, `tree` or `stack`")));
-        }
         let blend = match blend {
             None => None,
-            Some("max") => Some(Union::Max),
-            Some(s) => Some(parse_sum(s)?),
+            Some(b) => Some(parse_blend(b).map_err(|e| text(format!("blend {b:?}: {e}")))?),
         };
         if grey && blend.is_some() {
             return Err(text("grey and blend: give one".into()));
         }
-        Ok(RunOptions {
-            sampling,
-            route,
-            eval: eval.to_string(),
+        let word = word_format(word)?;
+        Ok(RunOptions(Voxelization {
+            sampling: parsed(sampling)?,
+            model: model.parse().map_err(text)?,
+            route: parsed(route)?,
+            eval: parsed(eval)?,
+            equations: Equations::Derived,
+            word,
+            panel: Some(csgpix_voxel::DEFAULT_PANEL),
             grey,
             blend,
-            word: parse_word(word)?,
-        })
+        }))
+    }
+
+    /// The route these options take on `slicer`.
+    pub fn route(&self, slicer: &Slicer) -> Route {
+        self.0.route(slicer)
     }
 
     pub fn evaluator(&self, scene: &Scene) -> Box<dyn SliceEval + Send + Sync> {
-        let root = &scene.loaded.scene.root;
-        match self.eval.as_str() {
-            "tree" => Box::new(TreeEval::new(root)),
-            "stack" => Box::new(StackEval::new(root)),
-            _ => Box::new(BlistEval::new(root)),
-        }
+        self.0.evaluator(&scene.loaded.scene)
     }
 
     /// The slicer of `scene` on `grid`.
     pub fn slicer(&self, scene: &Scene, grid: Grid) -> PyResult<Slicer> {
-        let opts = SlicerOptions {
-            fmt: self.word,
-            sampling: self.sampling,
-            panel: Some(csgpix_voxel::DEFAULT_PANEL),
-            grey: self.grey,
-            blend: self
-                .blend
-                .map(|u| BlendEval::new(&scene.loaded.scene.root, u)),
-            sampled: scene.loaded.sampled.clone(),
-        };
-        Slicer::new(&scene.loaded.scene, grid, opts).map_err(voxel)
+        self.0.slicer(&scene.loaded, grid).map_err(voxel)
     }
 
     /// Slabs `z` of the scene: the slices' bytes, x fastest, then y, then k.
@@ -314,61 +278,14 @@ impl RunOptions {
         z: std::ops::Range<usize>,
     ) -> PyResult<Vec<u8>> {
         let eval = self.evaluator(scene);
-        let set = Equations::Derived.set();
-        let route = self.route;
-        py.detach(|| {
-            let mut out = Vec::with_capacity(z.len() * slicer.grid.slice_len());
-            voxelize_slabs::<csgpix_voxel::Error>(
-                slicer,
-                route,
-                set,
-                eval.as_ref(),
-                &|| {},
-                z,
-                &mut |_, s| {
-                    out.extend_from_slice(s);
-                    Ok(())
-                },
-            )
-            .map(|_| out)
-        })
-        .map_err(voxel)
+        py.detach(|| self.0.slabs(slicer, eval.as_ref(), z))
+            .map_err(voxel)
     }
 }
 
-fn parse_sum(s: &str) -> PyResult<Union> {
-    let bad = || {
-        text(format!(
-            "blend {s:?}: `max` or `sum:KS,KD` (e.g. sum:0.5,0.5)"
-        ))
-    };
-    let (ks, kd) = s
-        .strip_prefix("sum:")
-        .and_then(|r| r.split_once(','))
-        .ok_or_else(bad)?;
-    let f = |v: &str| {
-        v.trim()
-            .parse::<f64>()
-            .ok()
-            .filter(|x| *x >= 0.0 && x.is_finite())
-    };
-    match (f(ks), f(kd)) {
-        (Some(ks), Some(kd)) => Ok(Union::Sum { ks, kd }),
-        _ => Err(bad()),
-    }
-}
-
-/// A depth word `FRACTION/INTEGER/OVERFLOW`, e.g. `10/10/11` (§2.3.1).
-pub fn parse_word(s: &str) -> PyResult<WordFormat> {
-    let f: Vec<&str> = s.split('/').collect();
-    let bad = |m: String| text(format!("word {s:?}: {m}"));
-    let [fr, i, o] = f[..] else {
-        return Err(bad(
-            "expected FRACTION/INTEGER/OVERFLOW, e.g. 10/10/11".into()
-        ));
-    };
-    let n = |v: &str| v.trim().parse::<u32>().map_err(|e| bad(e.to_string()));
-    WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| bad(e.to_string()))
+/// A depth word `FRACTION/INTEGER/OVERFLOW`, e.g. `10/10/11` (§2.3.1), as `--word`.
+pub fn word_format(s: &str) -> PyResult<WordFormat> {
+    parse_word(s).map_err(|e| text(format!("word {s:?}: {e}")))
 }
 
 /// The slab range `z` of `nz` slabs: all of them when None.
@@ -412,10 +329,10 @@ pub fn voxelize<'py>(
     held.dims[2] = slabs.len().max(1);
     let threads = rayon::current_num_threads();
     let prims = scene.loaded.scene.primitive_count();
-    let need = csgpix_voxel::memory_estimate(&held, prims, threads)
-        .saturating_add(imports_bytes(scene, &grid));
-    check_memory(need, max_memory)?;
     let slicer = opts.slicer(scene, grid)?;
+    let need = csgpix_voxel::memory_estimate(&held, prims, threads)
+        .saturating_add(imports_estimate(&slicer));
+    check_memory(need, max_memory)?;
     let [nx, ny, _] = grid.dims;
     let n = slabs.len();
     let bytes = opts.run(py, scene, &slicer, slabs)?;

@@ -15,7 +15,8 @@ use csgpix_zarr::{
 use rtl_model::Equations;
 
 use crate::errors::{text, voxel};
-use crate::voxel::{check_memory, imports_bytes, GridOptions, RunOptions, Scene};
+use crate::voxel::{check_memory, GridOptions, RunOptions, Scene};
+use csgpix_run::voxelize::zarr_rows_estimate;
 
 /// A Zarr store's error, kept whole where it wraps a scene error.
 fn zarr(e: csgpix_zarr::Error) -> PyErr {
@@ -83,7 +84,7 @@ pub fn zarr_create<'py>(
     // Checked here so that a bad option fails before any file is written.
     let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
     let slicer = opts.slicer(scene, grid)?;
-    let bricks = matches!(opts.route, Route::Runs { .. }) && csgpix_voxel::runs::applies(&slicer);
+    let bricks = matches!(opts.route(&slicer), Route::Runs { .. });
     drop(slicer);
     let values = csgpix_zarr::values_text(grey, blend.is_some());
     let attrs = VolumeAttrs::new(format!("csgpix voxelize {}", scene.name), values);
@@ -143,8 +144,9 @@ pub fn zarr_write_rows<'py>(
     let slicer = opts.slicer(scene, grid)?;
     let eval = opts.evaluator(scene);
     let all = store.tiles();
-    let float = match opts.route {
-        Route::Runs { float } if csgpix_voxel::runs::applies(&slicer) => Some(float),
+    let route = opts.route(&slicer);
+    let float = match route {
+        Route::Runs { float } => Some(float),
         _ => None,
     };
     let (t0, t1) = tiles.unwrap_or((0, all.len()));
@@ -156,26 +158,7 @@ pub fn zarr_write_rows<'py>(
         )));
     }
     let threads = pool.current_num_threads();
-    let need = match float {
-        Some(_) => {
-            let layout = store.layout();
-            csgpix_voxel::runs::memory_estimate_bricks(
-                &slicer,
-                eval.as_ref(),
-                threads,
-                store.tile(),
-            )
-            .saturating_add(
-                csgpix_zarr::writer_bytes_bricks(grid.dims, &layout, threads).map_err(zarr)?,
-            )
-        }
-        None => {
-            let prims = scene.loaded.scene.primitive_count();
-            csgpix_zarr::memory_estimate(&grid, &store.layout(), prims, threads)
-                .map_err(zarr)?
-                .saturating_add(imports_bytes(scene, &grid))
-        }
-    };
+    let need = zarr_rows_estimate(&slicer, route, eval.as_ref(), threads, &store).map_err(zarr)?;
     check_memory(need, max_memory)?;
     let set = Equations::Derived.set();
     let rows = rows.0..rows.1;
@@ -197,7 +180,7 @@ pub fn zarr_write_rows<'py>(
                 }
                 None => voxelize_rows(
                     &slicer,
-                    opts.route,
+                    route,
                     set,
                     eval.as_ref(),
                     &|| {},

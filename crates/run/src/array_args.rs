@@ -1,6 +1,7 @@
 //! Options every command that runs the array shares: size, model, equations, word format,
 //! stack depth, memory limit, waveform probes.
 
+use crate::Error;
 use std::path::PathBuf;
 
 use clap::ValueEnum;
@@ -67,42 +68,44 @@ pub struct ArrayArgs {
 #[derive(Clone, Debug)]
 pub struct Probes(pub Vec<(usize, usize)>);
 
-pub fn parse_size(s: &str) -> Result<(usize, usize), String> {
+pub fn parse_size(s: &str) -> crate::error::Parsed<(usize, usize)> {
     let (w, h) = s
         .split_once(['x', 'X'])
         .ok_or("expected WIDTHxHEIGHT, e.g. 250x250")?;
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
     let (w, h) = (n(w)?, n(h)?);
     if w == 0 || h == 0 || w > 65536 || h > 65536 {
-        return Err(format!("{w}x{h}: each side must be 1..=65536"));
+        return Err(crate::error::BadValue(format!(
+            "{w}x{h}: each side must be 1..=65536"
+        )));
     }
     Ok((w, h))
 }
 
-pub fn parse_word(s: &str) -> Result<WordFormat, String> {
+pub fn parse_word(s: &str) -> crate::error::Parsed<WordFormat> {
     let f: Vec<&str> = s.split('/').collect();
     let [fr, i, o] = f[..] else {
         return Err("expected FRACTION/INTEGER/OVERFLOW, e.g. 10/10/11".into());
     };
     let n = |v: &str| v.trim().parse::<u32>().map_err(|e| format!("{v:?}: {e}"));
-    WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| e.to_string())
+    WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| e.to_string().into())
 }
 
-pub fn parse_range(s: &str) -> Result<(u64, u64), String> {
+pub fn parse_range(s: &str) -> crate::error::Parsed<(u64, u64)> {
     let (a, b) = s
         .split_once("..")
         .ok_or("expected FIRST..LAST, e.g. 0..120")?;
     let n = |v: &str| v.trim().parse::<u64>().map_err(|e| format!("{v:?}: {e}"));
     let (a, b) = (n(a)?, n(b)?);
     if a > b || b - a > 100_000 {
-        return Err(format!(
+        return Err(crate::error::BadValue(format!(
             "{a}..{b}: need FIRST <= LAST and at most 100000 clocks"
-        ));
+        )));
     }
     Ok((a, b))
 }
 
-pub fn parse_probes(s: &str) -> Result<Probes, String> {
+pub fn parse_probes(s: &str) -> crate::error::Parsed<Probes> {
     let v = s
         .split(';')
         .filter(|p| !p.trim().is_empty())
@@ -122,27 +125,27 @@ pub fn parse_probes(s: &str) -> Result<Probes, String> {
 
 impl ArrayArgs {
     /// The array's configuration, checked.
-    pub fn config(&self) -> Result<ArrayConfig, String> {
+    pub fn config(&self) -> crate::Result<ArrayConfig> {
         let mut cfg = ArrayConfig::new(self.size.0, self.size.1);
         cfg.fmt = self.word;
         // Colour registers move within a window, so a very short word narrows them too.
         cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
         cfg.stack_depth = self.stack_depth;
-        cfg.check()?;
+        cfg.check().map_err(Error::Rtl)?;
         Ok(cfg)
     }
 
     /// The equation set SGENE is built from.
-    pub fn equations(&self) -> Result<EquationSet, String> {
+    pub fn equations(&self) -> crate::Result<EquationSet> {
         let eq: Equations = self.equations.into();
         match (eq, self.ties) {
             (_, TiesArg::Minimal) => Ok(eq.set()),
-            (Equations::Printed, _) => Err(
-                "--ties applies to the derived equations; the printed ones fix their own ties"
-                    .into(),
-            ),
-            (Equations::Derived, TiesArg::Keep) => derive_with_ties(Ties::Keep),
-            (Equations::Derived, TiesArg::Put) => derive_with_ties(Ties::Put),
+            (Equations::Printed, _) => Err(Error::options(
+                "--ties",
+                "--ties applies to the derived equations; the printed ones fix their own ties",
+            )),
+            (Equations::Derived, TiesArg::Keep) => derive_with_ties(Ties::Keep).map_err(Error::Rtl),
+            (Equations::Derived, TiesArg::Put) => derive_with_ties(Ties::Put).map_err(Error::Rtl),
         }
     }
 
@@ -161,14 +164,17 @@ impl ArrayArgs {
     /// `--stack-depth`, else the program is refused): the levels no operation reaches hold 0
     /// throughout, so the state is the same, and the cycle model stores one bit-plane less per
     /// level. Returns the array and the levels modelled.
-    pub fn build(&self, ops: &[Op]) -> Result<(Box<dyn Array>, usize), String> {
+    pub fn build(&self, ops: &[Op]) -> crate::Result<(Box<dyn Array>, usize)> {
         let mut cfg = self.config()?;
-        cfg.stack_depth = check_program(ops, cfg.stack_depth).map_err(|e| e.to_string())?;
+        cfg.stack_depth = check_program(ops, cfg.stack_depth)?;
         let need = match self.model {
             Model::Cycle => CycleArray::memory_bytes(&cfg),
             Model::Word => WordArray::memory_bytes(&cfg),
             Model::Float => {
-                return Err("the float model is not an array: it has no registers or clock".into())
+                return Err(Error::options(
+                    "--model",
+                    "the float model is not an array: it has no registers or clock",
+                ))
             }
         };
         let what = format!("a {}x{} {} array", cfg.width, cfg.height, self.model.name());
@@ -179,13 +185,13 @@ impl ArrayArgs {
             _ => Box::new(CycleArray::new(cfg, set)),
         };
         if let Some(p) = &self.probe {
-            arr.attach_probe(Recorder::new(cfg, p.0.clone())?);
+            arr.attach_probe(Recorder::new(cfg, p.0.clone()).map_err(Error::Rtl)?);
         }
         Ok((arr, cfg.stack_depth))
     }
 
     /// Name the VCD and the SVG timing diagram among the run's outputs, if asked for.
-    pub fn wave_outputs(&self, outs: &mut Outputs) -> Result<[Option<Out>; 2], String> {
+    pub fn wave_outputs(&self, outs: &mut Outputs) -> crate::Result<[Option<Out>; 2]> {
         let vcd = self
             .vcd
             .as_ref()
@@ -203,7 +209,7 @@ impl ArrayArgs {
         arr: &mut dyn Array,
         outs: &mut Outputs,
         [vcd, svg]: [Option<Out>; 2],
-    ) -> Result<(), String> {
+    ) -> crate::Result<()> {
         let Some(rec) = arr.take_probe() else {
             return Ok(());
         };

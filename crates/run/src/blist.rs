@@ -27,8 +27,8 @@ pub struct Args {
     trace: Option<String>,
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
-    let e = csg_expr::parse(&a.expr).map_err(|e| e.in_file("EXPR").to_string())?;
+pub fn run(a: Args) -> crate::Result<ExitCode> {
+    let e = csg_expr::parse(&a.expr).map_err(|e| e.in_file("EXPR"))?;
     let table = BlistTable::compile(&e.root);
     let bits = a.trace.as_deref().map(|b| trace_bits(b, &e)).transpose()?;
     let trace = bits.as_ref().map(|bits| {
@@ -45,23 +45,29 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
 }
 
 /// `--trace` as one classification per primitive.
-fn trace_bits(text: &str, e: &CsgExpr) -> Result<Vec<bool>, String> {
+fn trace_bits(text: &str, e: &CsgExpr) -> crate::Result<Vec<bool>> {
     let bits: Vec<bool> = text
         .chars()
         .enumerate()
         .map(|(i, c)| match c {
             '0' => Ok(false),
             '1' => Ok(true),
-            c => Err(format!("--trace:1:{}: expected 0 or 1, found {c:?}", i + 1)),
+            c => Err(csgpix_scene::Error::at(
+                "--trace",
+                1,
+                i + 1,
+                format!("expected 0 or 1, found {c:?}"),
+            )),
         })
         .collect::<Result<_, _>>()?;
     if bits.len() != e.names.len() {
-        return Err(format!(
-            "--trace:1:1: expected {} bits, one per primitive ({}), found {}",
+        let message = format!(
+            "expected {} bits, one per primitive ({}), found {}",
             e.names.len(),
             e.names.join(", "),
             bits.len()
-        ));
+        );
+        return Err(csgpix_scene::Error::at("--trace", 1, 1, message).into());
     }
     Ok(bits)
 }
@@ -102,7 +108,7 @@ fn report_json(
     table: &BlistTable,
     e: &CsgExpr,
     trace: Option<&(Vec<u32>, bool)>,
-) -> Result<String, String> {
+) -> crate::Result<String> {
     let rows = table
         .rows
         .iter()
@@ -122,7 +128,7 @@ fn report_json(
         rows,
         trace: trace.map(|t| &t.0[..]),
     };
-    serde_json::to_string(&report).map_err(|e| e.to_string())
+    Ok(serde_json::to_string(&report)?)
 }
 
 fn print_text(

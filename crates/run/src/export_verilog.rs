@@ -3,6 +3,7 @@
 //! every pixel after every clock against the `cycle` model (docs/verilog.md, "Running
 //! tb_array from the CLI").
 
+use crate::Error;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -57,48 +58,55 @@ pub struct Args {
     mem: MaxMemory,
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
+pub fn run(a: Args) -> crate::Result<ExitCode> {
     if !a.scene.is_empty() {
         return scene(&a);
     }
     let out = a.out.as_deref().unwrap_or(Path::new("rtl-model/verilog"));
-    super::write_generated(&rtl_model::verilog::files()?, out, a.check)
+    super::write_generated(
+        &rtl_model::verilog::files().map_err(Error::Rtl)?,
+        out,
+        a.check,
+    )
 }
 
-fn parse_origin(s: &str) -> Result<(usize, usize), String> {
+fn parse_origin(s: &str) -> crate::error::Parsed<(usize, usize)> {
     let (x, y) = s.split_once(',').ok_or("expected X,Y, e.g. 56,90")?;
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
     let (x, y) = (n(x)?, n(y)?);
     if x > 1 << 20 || y > 1 << 20 {
-        return Err(format!("{x},{y}: each coordinate must be at most 1048576"));
+        return Err(crate::error::BadValue(format!(
+            "{x},{y}: each coordinate must be at most 1048576"
+        )));
     }
     Ok((x, y))
 }
 
 /// The array the scene runs on: `--size`, `--word`, the thesis colours and stack.
-fn config(a: &Args) -> Result<ArrayConfig, String> {
+fn config(a: &Args) -> crate::Result<ArrayConfig> {
     let mut cfg = ArrayConfig::new(a.size.0, a.size.1);
     cfg.fmt = a.word;
     // Colour registers move within a window, so a very short word narrows them too.
     cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
-    cfg.check()?;
+    cfg.check().map_err(Error::Rtl)?;
     Ok(cfg)
 }
 
 /// `--scene`: compile, bound, simulate clock by clock, stage every file, commit, report.
-fn scene(a: &Args) -> Result<ExitCode, String> {
+fn scene(a: &Args) -> crate::Result<ExitCode> {
     let Some(dir) = &a.out else {
-        return Err("--scene needs -o DIR (rtl-model/verilog holds no stimulus)".into());
+        let message = "--scene needs -o DIR (rtl-model/verilog holds no stimulus)";
+        return Err(Error::options("-o", message));
     };
     let mut outs = Outputs::new();
     let out = outs.dir("-o", dir)?;
     let cfg = config(a)?;
     let ops = program(a, &cfg)?;
     let set = Equations::Derived.set();
-    check_program(&ops, cfg.stack_depth).map_err(|e| e.to_string())?;
+    check_program(&ops, cfg.stack_depth)?;
     let cycles = program_cycles(&cfg, &set, &ops);
     bound(a, &cfg, cycles)?;
-    let want = stimulus::expected_states(cfg, &ops, &set)?;
+    let want = stimulus::expected_states(cfg, &ops, &set).map_err(Error::Rtl)?;
     let control = pixel::control_stream(&cfg, &set, &ops);
     let mut files = stimulus::array_files(&cfg);
     files.push(("control.hex".into(), control));
@@ -116,22 +124,23 @@ fn scene(a: &Args) -> Result<ExitCode, String> {
 
 /// The scene's program for the window at `--origin`: display lists compiled as `render`
 /// compiles them, then moved so the array's pixel (0, 0) is the screen's (x0, y0).
-fn program(a: &Args, cfg: &ArrayConfig) -> Result<Vec<Op>, String> {
+fn program(a: &Args, cfg: &ArrayConfig) -> crate::Result<Vec<Op>> {
     if let Some(p) = a.scene.iter().find(|p| !is_display_list(p)) {
-        return Err(format!(
+        let message = format!(
             "--scene {}: export-verilog takes display lists (.dl)",
             p.display()
-        ));
+        );
+        return Err(Error::options("--scene", message));
     }
     let view = super::ViewArg::default().into();
     let scene =
         Scene::load(&a.scene, a.clip.as_deref(), view, cfg).map_err(super::lib_errors::load)?;
-    check_window(&scene, cfg, a.origin).map_err(|(i, e)| scene.locate(i, &e))?;
+    check_window(&scene, cfg, a.origin).map_err(|(i, e)| Error::Compile(scene.locate(i, &e)))?;
     let mut ops = match &scene.clip {
         None => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
         Some(expr) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
     }
-    .map_err(|(i, e)| scene.locate(i, &e))?;
+    .map_err(|(i, e)| Error::Compile(scene.locate(i, &e)))?;
     translate(&mut ops, a.origin.0, a.origin.1);
     Ok(ops)
 }
@@ -187,12 +196,13 @@ fn check_window(
 
 /// Refuse, before simulating, a stream longer than tb_array holds or an expected-state file
 /// (held in memory, [`stimulus::expected_bytes`]) over `--max-memory`.
-fn bound(a: &Args, cfg: &ArrayConfig, cycles: u64) -> Result<(), String> {
+fn bound(a: &Args, cfg: &ArrayConfig, cycles: u64) -> crate::Result<()> {
     if cycles > stimulus::MAX_CYCLES {
-        return Err(format!(
+        let message = format!(
             "the scene takes {cycles} clocks, over the {} tb_array holds (MAXCLK): fewer planes",
             stimulus::MAX_CYCLES
-        ));
+        );
+        return Err(Error::options("--scene", message));
     }
     let text = stimulus::expected_bytes(cfg, cycles);
     // The control stream (a line of 13 bytes a clock), the cycle model, the process.
@@ -206,19 +216,20 @@ fn bound(a: &Args, cfg: &ArrayConfig, cycles: u64) -> Result<(), String> {
         cfg.pixels(),
         stimulus::line_bytes(cfg)
     );
-    a.mem.check(need, &what, "a smaller --size or fewer planes")
+    Ok(a.mem
+        .check(need, &what, "a smaller --size or fewer planes")?)
 }
 
 #[cfg(unix)]
-fn make_executable(outs: &mut Outputs, out: Out, name: &str) -> Result<(), String> {
+fn make_executable(outs: &mut Outputs, out: Out, name: &str) -> crate::Result<()> {
     use std::os::unix::fs::PermissionsExt;
     let p = outs.stage_path(out, name)?;
     std::fs::set_permissions(&p, std::fs::Permissions::from_mode(0o755))
-        .map_err(|e| format!("{}: {e}", p.display()))
+        .map_err(|source| Error::Io { path: p, source })
 }
 
 #[cfg(not(unix))]
-fn make_executable(_: &mut Outputs, _: Out, _: &str) -> Result<(), String> {
+fn make_executable(_: &mut Outputs, _: Out, _: &str) -> crate::Result<()> {
     Ok(())
 }
 
@@ -229,7 +240,7 @@ fn write_image(
     out: Out,
     cfg: &ArrayConfig,
     codes: &[u32],
-) -> Result<(), String> {
+) -> crate::Result<()> {
     let rgb = csgpix_draw::palette::image_rgb(codes, None);
     let mut img = image::RgbImage::new(cfg.width as u32, cfg.height as u32);
     for (i, c) in rgb.iter().enumerate() {

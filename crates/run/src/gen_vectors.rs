@@ -1,5 +1,6 @@
 //! `csgpix gen-vectors`: regenerate `vectors/select/` from the case tables.
 
+use crate::Error;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -17,6 +18,7 @@ pub struct Args {
     check: bool,
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
-    super::write_generated(&rtl_model::select::vectors::generate()?, &a.out, a.check)
+pub fn run(a: Args) -> crate::Result<ExitCode> {
+    let files = rtl_model::select::vectors::generate().map_err(Error::Rtl)?;
+    super::write_generated(&files, &a.out, a.check)
 }

@@ -10,6 +10,7 @@
 
 pub mod array_args;
 pub mod blist;
+pub mod error;
 pub mod export_verilog;
 pub mod gen_vectors;
 mod lib_errors;
@@ -33,6 +34,8 @@ use clap::{Parser, Subcommand, ValueEnum};
 use csgpix_draw::project::View;
 use csgpix_draw::Model;
 use rtl_model::Equations;
+
+pub use error::{Error, Result};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -101,7 +104,8 @@ impl From<EquationsArg> for Equations {
     }
 }
 
-pub fn run(cli: Cli) -> Result<ExitCode, String> {
+/// Run the command `cli` names: its exit code, or the error that stopped it.
+pub fn run(cli: Cli) -> Result<ExitCode> {
     match cli.cmd {
         Cmd::GenVectors(a) => gen_vectors::run(a),
         Cmd::Phantom(a) => phantom::run(a),
@@ -165,7 +169,7 @@ pub fn write_generated(
     files: &[(String, String)],
     out: &std::path::Path,
     check: bool,
-) -> Result<ExitCode, String> {
+) -> Result<ExitCode> {
     if check {
         let stale = files
             .iter()

@@ -4,34 +4,45 @@
 use csgpix_draw::Error as DrawError;
 use csgpix_sculpt::Error as SculptError;
 
+use crate::Error;
+
 /// A drawing error; a scene too deep for the word names `--word` and `--size`.
-pub fn draw(e: DrawError) -> String {
+pub fn draw(e: DrawError) -> Error {
     match e {
-        DrawError::DeeperThanMaxdepth { detail, suggested } => format!(
-            "{detail}: use --word {}/{}/{} or a smaller --size",
-            suggested.frac, suggested.int, suggested.ovf
+        DrawError::DeeperThanMaxdepth { detail, suggested } => Error::options(
+            "--word",
+            format!(
+                "{detail}: use --word {}/{}/{} or a smaller --size",
+                suggested.frac, suggested.int, suggested.ovf
+            ),
         ),
-        e => e.to_string(),
+        e => e.into(),
     }
 }
 
 /// A scene that could not be loaded for drawing: a projection too deep for the word names
 /// `--word` and `--size` as [`draw`] does.
-pub fn load(e: csgpix_draw::scenes::LoadError) -> String {
+pub fn load(e: csgpix_draw::scenes::LoadError) -> Error {
     use csgpix_draw::scenes::LoadError;
     match e {
-        LoadError::Draw { path, error } => format!("{path}: {}", draw(error)),
-        e => e.to_string(),
+        LoadError::Draw { path, error } => draw(error).context(path),
+        e => e.into(),
     }
 }
 
 /// A voxel store's or sculpting's error; a store over its budget names `--res` and
 /// `--max-memory`, a bad tool `--tool`, a bad stiffness `--stiffness`.
-pub fn sculpt(e: SculptError) -> String {
+pub fn sculpt(e: SculptError) -> Error {
     match e {
-        SculptError::OverBudget { .. } => format!("{e}: lower --res or raise --max-memory"),
-        SculptError::BadTool { spec, reason } => format!("--tool {spec:?}: {reason}"),
-        SculptError::BadStiffness => "--stiffness must be a finite number >= 0".into(),
-        e => e.to_string(),
+        SculptError::OverBudget { .. } => {
+            Error::options("--res", format!("{e}: lower --res or raise --max-memory"))
+        }
+        SculptError::BadTool { spec, reason } => {
+            Error::options("--tool", format!("--tool {spec:?}: {reason}"))
+        }
+        SculptError::BadStiffness => {
+            Error::options("--stiffness", "--stiffness must be a finite number >= 0")
+        }
+        e => e.into(),
     }
 }

@@ -1,7 +1,67 @@
-//! `--max-memory`: the one memory limit every allocating command checks its estimate against
-//! before it allocates (docs/memory.md).
+//! The memory limit every allocating job checks its estimate against before it allocates
+//! (docs/memory.md): `--max-memory` on the command line, `max_memory` in Python, one
+//! [`Limit`] for both.
 
 pub use csgpix_scene::memory::{default_mib, MAX_MIB};
+
+/// A memory limit, and the name its user gave it in messages.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limit {
+    /// The limit in MiB, 1 to [`MAX_MIB`].
+    pub mib: u64,
+    /// How the caller names the limit: `--max-memory`, `max_memory`.
+    pub name: &'static str,
+}
+
+/// A run refused before it allocated: its estimate is over the limit.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{what} needs about {need_mib} MiB, over {name} {limit_mib}: {fix} or raise the limit")]
+pub struct OverMemory {
+    /// What needs it (`this run`, `--mesh`, …).
+    pub what: String,
+    /// The estimate, MiB (rounded up).
+    pub need_mib: u64,
+    /// The limit's name and value, MiB.
+    pub name: &'static str,
+    /// The limit, MiB.
+    pub limit_mib: u64,
+    /// How to need less.
+    pub fix: String,
+}
+
+impl Limit {
+    /// `mib` MiB (clamped to 1..=[`MAX_MIB`]), or the default: the memory available now
+    /// capped by the address-space limit ([`default_mib`]).
+    pub fn new(mib: Option<u64>, name: &'static str) -> Limit {
+        let mib = mib.unwrap_or_else(default_mib).clamp(1, MAX_MIB);
+        Limit { mib, name }
+    }
+
+    /// The limit in bytes (no wrap: at most 2^63).
+    pub fn bytes(&self) -> u64 {
+        self.mib << 20
+    }
+
+    /// Refuse `need` bytes of `what` when over the limit, saying how to lower it (`fix`).
+    pub fn check(&self, need: u64, what: &str, fix: &str) -> Result<(), OverMemory> {
+        if need <= self.bytes() {
+            return Ok(());
+        }
+        Err(OverMemory {
+            what: what.into(),
+            need_mib: need.div_ceil(1 << 20),
+            name: self.name,
+            limit_mib: self.mib,
+            fix: fix.into(),
+        })
+    }
+
+    /// Make the file readers refuse what would not fit: NRRD volumes are refused by their
+    /// header's `sizes`, before their data (gzip or raw) is read.
+    pub fn limit_readers(&self) {
+        csgpix_scene::nrrd::limit_samples_to_memory(self.bytes(), self.name);
+    }
+}
 
 /// `--max-memory`, flattened into each command that allocates in proportion to its input.
 #[derive(clap::Args, Debug, Clone, Copy)]
@@ -15,27 +75,27 @@ pub struct MaxMemory {
 }
 
 impl MaxMemory {
-    /// The limit in bytes (no wrap: at most 2^63).
-    pub fn bytes(&self) -> u64 {
-        self.mib << 20
+    /// The limit.
+    pub fn limit(&self) -> Limit {
+        Limit {
+            mib: self.mib,
+            name: "--max-memory",
+        }
     }
 
-    /// Make the file readers refuse what would not fit: NRRD volumes are refused by their
-    /// header's `sizes`, before their data (gzip or raw) is read.
+    /// The limit in bytes (no wrap: at most 2^63).
+    pub fn bytes(&self) -> u64 {
+        self.limit().bytes()
+    }
+
+    /// Make the file readers refuse what would not fit ([`Limit::limit_readers`]).
     pub fn limit_readers(&self) {
-        csgpix_scene::nrrd::limit_samples_to_memory(self.bytes(), "--max-memory");
+        self.limit().limit_readers();
     }
 
     /// Refuse `need` bytes of `what` when over the limit, saying how to lower it (`fix`).
-    pub fn check(&self, need: u64, what: &str, fix: &str) -> Result<(), String> {
-        if need <= self.bytes() {
-            return Ok(());
-        }
-        Err(format!(
-            "{what} needs about {} MiB, over --max-memory {}: {fix} or raise the limit",
-            need.div_ceil(1 << 20),
-            self.mib
-        ))
+    pub fn check(&self, need: u64, what: &str, fix: &str) -> Result<(), OverMemory> {
+        self.limit().check(need, what, fix)
     }
 }
 
@@ -49,5 +109,16 @@ mod tests {
         assert_eq!(m.bytes(), 1 << 63);
         assert!(m.check(u64::MAX, "x", "y").is_err());
         assert!(m.check(1 << 63, "x", "y").is_ok());
+    }
+
+    #[test]
+    fn a_refusal_names_the_limit_as_its_caller_does() {
+        let e = Limit::new(Some(16), "max_memory").check(17 << 20, "this run", "lower res");
+        let e = e.unwrap_err();
+        assert_eq!((e.need_mib, e.limit_mib), (17, 16));
+        assert_eq!(
+            e.to_string(),
+            "this run needs about 17 MiB, over max_memory 16: lower res or raise the limit"
+        );
     }
 }

@@ -41,7 +41,7 @@ enum EncodingArg {
     Raw,
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
+pub fn run(a: Args) -> crate::Result<ExitCode> {
     let mut outs = Outputs::new();
     let out = outs.file_or_stdout("-o", &a.out, &["nrrd"])?;
     let n = a.size as usize;

@@ -59,20 +59,46 @@ fn register_font() {
     });
 }
 
+/// A chart that could not be drawn.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PlotError {
+    /// A point is NaN or infinite.
+    #[error("{title}: a point is not finite")]
+    NotFinite {
+        /// The chart's title.
+        title: String,
+    },
+    /// A value on a log axis is zero or negative.
+    #[error("{title}: a value on a log axis is not positive")]
+    NotPositive {
+        /// The chart's title.
+        title: String,
+    },
+    /// The backend could not draw or write the file.
+    #[error("{}: {message}", path.display())]
+    Draw {
+        /// The PNG file.
+        path: std::path::PathBuf,
+        /// The backend's message.
+        message: String,
+    },
+}
+
 impl Chart {
     /// The range of the data along x and y, padded so that no point sits on the frame.
-    fn ranges(&self) -> Result<(Span, Span), String> {
+    fn ranges(&self) -> Result<(Span, Span), PlotError> {
         let pts = || self.series.iter().flat_map(|s| s.points.iter().copied());
         if pts().any(|(x, y)| !x.is_finite() || !y.is_finite()) {
-            return Err(format!("{}: a point is not finite", self.title));
+            return Err(PlotError::NotFinite {
+                title: self.title.clone(),
+            });
         }
         if (self.log_x && pts().any(|(x, _)| x <= 0.0))
             || (self.log_y && pts().any(|(_, y)| y <= 0.0))
         {
-            return Err(format!(
-                "{}: a value on a log axis is not positive",
-                self.title
-            ));
+            return Err(PlotError::NotPositive {
+                title: self.title.clone(),
+            });
         }
         let span = |v: Vec<f64>, log: bool| -> Span {
             let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
@@ -95,11 +121,15 @@ impl Chart {
     }
 
     /// Draw the chart into a PNG of `width` × `height` pixels at `path`.
-    pub fn write_png(&self, path: &Path, width: u32, height: u32) -> Result<(), String> {
+    pub fn write_png(&self, path: &Path, width: u32, height: u32) -> Result<(), PlotError> {
         register_font();
         let ranges = self.ranges()?;
         let corner = self.legend_corner(ranges);
-        let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
+        // plotters' error is generic over its backend: kept as its message.
+        let err = |e: &dyn std::fmt::Display| PlotError::Draw {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        };
         let root = BitMapBackend::new(path, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| err(&e))?;
         match (self.log_x, self.log_y) {

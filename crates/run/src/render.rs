@@ -1,6 +1,7 @@
 //! `csgpix render`: display lists or a `.csg` scene through the array, the composed scene
 //! (C, G) as an image.
 
+use crate::Error;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -81,12 +82,15 @@ struct Report {
     wall_seconds: f64,
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
+pub fn run(a: Args) -> crate::Result<ExitCode> {
     let mut outs = Outputs::new();
     let png = outs.file_or_stdout("-o", &a.out, &["png"])?;
     let waves = a.array.wave_outputs(&mut outs)?;
     if a.json && outs.uses_stdout() {
-        return Err("--json prints to standard output: write the outputs to files".into());
+        return Err(Error::options(
+            "--json",
+            "--json prints to standard output: write the outputs to files",
+        ));
     }
     let cfg = a.array.config()?;
     a.array
@@ -95,19 +99,20 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let scene = Scene::load(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)
         .map_err(super::lib_errors::load)?;
     csgpix_draw::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
-        .map_err(|(i, e)| scene.locate(i, &e))?;
+        .map_err(|(i, e)| Error::Compile(scene.locate(i, &e)))?;
     let compiled = match (&scene.clip, scene.empty) {
         (_, true) => Ok(vec![]),
         (None, false) => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
         (Some(expr), false) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
     };
-    let ops = compiled.map_err(|(i, e)| scene.locate(i, &e))?;
+    let ops = compiled.map_err(|(i, e)| Error::Compile(scene.locate(i, &e)))?;
     let t0 = Instant::now();
     let mut stack_levels = 0;
     let mut simulated = None;
     let (codes, depths, cycles) = if a.array.model == Model::Float {
         if a.array.probe.is_some() {
-            return Err("--probe needs an array model (cycle or word)".into());
+            let message = "--probe needs an array model (cycle or word)";
+            return Err(Error::options("--probe", message));
         }
         let f = float::render(
             &scene.lists,
@@ -163,10 +168,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         wall_seconds: wall,
     };
     if a.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
-        );
+        println!("{}", serde_json::to_string_pretty(&report)?);
     } else {
         let line = format!(
             "{}: {} objects, {} planes, {} cycles ({:.1} us at 10 MHz), {:.3} s wall",
@@ -221,20 +223,20 @@ fn memory_estimate(a: &Args, cfg: &rtl_model::ArrayConfig) -> u64 {
 }
 
 /// Run a program, with a progress bar on a terminal when it is long enough to wait for.
-pub fn run_with_progress(arr: &mut dyn Array, ops: &[Op]) -> Result<(), String> {
-    check_program(ops, arr.config().stack_depth).map_err(|e| e.to_string())?;
+pub fn run_with_progress(arr: &mut dyn Array, ops: &[Op]) -> crate::Result<()> {
+    check_program(ops, arr.config().stack_depth)?;
     let work = ops.len() as u64 * arr.config().pixels() as u64;
     let bar = if work > 50_000_000 {
         ProgressBar::new(ops.len() as u64)
     } else {
         ProgressBar::hidden()
     };
-    bar.set_style(
-        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} operations")
-            .map_err(|e| e.to_string())?,
-    );
+    let template = "{elapsed_precise} [{bar:40}] {pos}/{len} operations";
+    if let Ok(style) = ProgressStyle::with_template(template) {
+        bar.set_style(style);
+    }
     for op in ops {
-        arr.step(op).map_err(|e| e.to_string())?;
+        arr.step(op)?;
         bar.inc(1);
     }
     arr.finish();
@@ -249,7 +251,7 @@ fn write_png(
     width: usize,
     height: usize,
     pixels: &[[u8; 3]],
-) -> Result<(), String> {
+) -> crate::Result<()> {
     let mut img = image::RgbImage::new(width as u32, height as u32);
     for (i, c) in pixels.iter().enumerate() {
         img.put_pixel((i % width) as u32, (i / width) as u32, image::Rgb(*c));
@@ -269,16 +271,18 @@ fn on_panels(
     scene: &Scene,
     cfg: &rtl_model::ArrayConfig,
     panel: (usize, usize),
-) -> Result<csgpix_draw::panels::PanelImage, String> {
+) -> crate::Result<csgpix_draw::panels::PanelImage> {
     let Some(csg) = &scene.csg else {
-        return Err("--panel needs one .csg scene (display lists have no footprint)".into());
+        let message = "--panel needs one .csg scene (display lists have no footprint)";
+        return Err(Error::options("--panel", message));
     };
     if a.array.probe.is_some() {
-        return Err("--panel and --probe do not go together: probes watch the whole array".into());
+        let message = "--panel and --probe do not go together: probes watch the whole array";
+        return Err(Error::options("--panel", message));
     }
     let ps =
         csgpix_draw::panels::PanelScene::new(csg, a.view.into(), (cfg.width, cfg.height), cfg.fmt)
-            .map_err(|e| format!("{}: {}", a.scenes[0].display(), super::lib_errors::draw(e)))?;
+            .map_err(|e| super::lib_errors::draw(e).context(a.scenes[0].display().to_string()))?;
     let cycle = a.array.model == Model::Cycle;
     Ok(csgpix_draw::panels::render_on_panels(
         &ps,

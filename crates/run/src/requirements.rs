@@ -1,6 +1,7 @@
 //! `csgpix requirements`: what a scene needs of the hardware (panels, slabs, word, stack,
 //! label) and the clocks each costs, from the same analysis the simulator prunes with.
 
+use crate::Error;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -114,23 +115,24 @@ struct Report {
     solids: Vec<Solid>,
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
+pub fn run(a: Args) -> crate::Result<ExitCode> {
     a.mem.limit_readers();
-    let at = |e: String| format!("{}: {e}", a.scene.display());
+    let at = |e: Error| e.context(a.scene.display().to_string());
     let scene = csgpix_openscad::read_scene(&a.scene)?;
     scene.require_convex(&a.scene.display().to_string(), "`requirements`")?;
     if !(a.precision > 0.0 && a.precision.is_finite()) {
-        return Err(format!(
-            "--precision {}: must be a positive number",
-            a.precision
-        ));
+        let message = format!("--precision {}: must be a positive number", a.precision);
+        return Err(Error::options("--precision", message));
     }
     let grid = match a.bounds {
         Some((lo, hi)) => Grid::new(a.res, lo, hi),
         None => Grid::of_scene(&scene, a.res),
     }
     .map_err(|e| match e.kind {
-        csgpix_scene::Kind::NeedsBounds => at("the scene has no solids: give --bounds".into()),
+        csgpix_scene::Kind::NeedsBounds => at(Error::options(
+            "--bounds",
+            "the scene has no solids: give --bounds",
+        )),
         _ => at(e.into()),
     })?;
     a.mem
@@ -143,7 +145,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let slicer = Slicer::new(&scene, grid, opts).map_err(|e| at(e.into()))?;
     let report = analyse(&a, &scene, &slicer).map_err(at)?;
     if a.json {
-        let text = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
+        let text = serde_json::to_string_pretty(&report)?;
         println!("{text}");
     } else {
         print_text(&report);
@@ -151,7 +153,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     Ok(ExitCode::SUCCESS)
 }
 
-fn analyse(a: &Args, scene: &CsgScene, slicer: &Slicer) -> Result<Report, String> {
+fn analyse(a: &Args, scene: &CsgScene, slicer: &Slicer) -> crate::Result<Report> {
     let [w, h, nz] = slicer.grid.dims;
     let panel = a.panel.0.unwrap_or([w, h]);
     let fps = footprints(slicer)?;
@@ -161,7 +163,7 @@ fn analyse(a: &Args, scene: &CsgScene, slicer: &Slicer) -> Result<Report, String
     let (mut all, mut needed, mut simulated, mut levels) = (0, 0, 0, 0);
     for (p, fp) in fps.iter().enumerate() {
         let ops = slice_ops(slicer, p, 0)?;
-        levels = levels.max(check_program(&ops, cfg.stack_depth).map_err(|e| e.to_string())?);
+        levels = levels.max(check_program(&ops, cfg.stack_depth)?);
         let frame_clocks = program_cycles(&cfg, &set, &ops);
         all += frame_clocks * nz as u64;
         needed += frame_clocks * fp.slab_count() as u64;
@@ -242,7 +244,7 @@ fn slab_union(fps: &[Footprint]) -> Option<(u32, u32)> {
 
 /// Stack levels and clocks of the scene's render program (the scene's tree as a clipping
 /// function, §5.2.1) on the `--screen` array.
-fn render_program(a: &Args, scene: &CsgScene) -> Result<(usize, u64), String> {
+fn render_program(a: &Args, scene: &CsgScene) -> crate::Result<(usize, u64)> {
     let (w, h) = a.screen;
     let cfg = ArrayConfig {
         fmt: a.word,
@@ -256,10 +258,10 @@ fn render_program(a: &Args, scene: &CsgScene) -> Result<(usize, u64), String> {
     let ops = clip_scene_ops(&lists, &clip, &cfg.fmt, cfg.colour_bits).map_err(|(i, e)| match e
         .field
     {
-        csgpix_draw::compile::WHOLE_PROGRAM => e.msg,
-        _ => format!("solid {}: {}", i + 1, e.msg),
+        csgpix_draw::compile::WHOLE_PROGRAM => Error::Compile(e.msg),
+        _ => Error::Compile(format!("solid {}: {}", i + 1, e.msg)),
     })?;
-    let levels = check_program(&ops, 64).map_err(|e| e.to_string())?;
+    let levels = check_program(&ops, 64)?;
     Ok((
         levels,
         program_cycles(&cfg, &Equations::Derived.set(), &ops),

@@ -1,6 +1,7 @@
 //! `csgpix sculpt`: a spherical tool carved (or added) along a path through the optimized
 //! hash-based octree of a scene or a stored volume (seed 000 Ch. 5-6; docs/sculpting.md).
 
+use crate::Error;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -101,7 +102,7 @@ struct Report {
     write_seconds: f64,
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
+pub fn run(a: Args) -> crate::Result<ExitCode> {
     a.mem.limit_readers();
     let mut outs = Outputs::new();
     let mesh_out = outs.file("-o", &a.out, &mesh::EXTENSIONS)?;
@@ -110,13 +111,14 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     let forces_out = forces_out.map(|f| outs.file_or_stdout("--forces", f, &["csv"]));
     let forces_out = forces_out.transpose()?;
     if a.json && outs.uses_stdout() {
-        return Err("--json prints to standard output: write the outputs to files".into());
+        return Err(Error::options(
+            "--json",
+            "--json prints to standard output: write the outputs to files",
+        ));
     }
     if !(a.stiffness.is_finite() && a.stiffness >= 0.0) {
-        return Err(format!(
-            "--stiffness {}: must be a finite number >= 0",
-            a.stiffness
-        ));
+        let message = format!("--stiffness {}: must be a finite number >= 0", a.stiffness);
+        return Err(Error::options("--stiffness", message));
     }
     let text = csgpix_scene::input::read_text(&a.path)?;
     let path = sculpt::parse_path(&text, &a.path.display().to_string())?;
@@ -179,7 +181,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
 }
 
 /// Every step of the path, with a progress bar for long paths.
-fn run_path(s: &mut Sculptor, path: &[DVec3]) -> Result<Vec<Step>, String> {
+fn run_path(s: &mut Sculptor, path: &[DVec3]) -> crate::Result<Vec<Step>> {
     let bar = if path.len() >= 5000 {
         ProgressBar::new(path.len() as u64)
     } else {
@@ -200,40 +202,50 @@ fn run_path(s: &mut Sculptor, path: &[DVec3]) -> Result<Vec<Step>, String> {
 }
 
 /// `--tool`: `sphere:R`, R in voxels.
-fn parse_tool(s: &str) -> Result<f64, String> {
-    sculpt::parse_tool(s).map_err(lib_errors::sculpt)
+fn parse_tool(s: &str) -> crate::error::Parsed<f64> {
+    sculpt::parse_tool(s).map_err(|e| crate::error::BadValue(lib_errors::sculpt(e).to_string()))
 }
 
-fn finite(s: &str) -> Result<f64, String> {
+fn finite(s: &str) -> crate::error::Parsed<f64> {
     match s.trim().parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        _ => Err(format!("{s:?}: expected a finite number")),
+        _ => Err(crate::error::BadValue(format!(
+            "{s:?}: expected a finite number"
+        ))),
     }
 }
 
 /// The store, its frame and the volume's dims, from a `.csg` scene or a `.nrrd` volume.
-fn load(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
+fn load(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
     let ext = a.input.extension().and_then(|e| e.to_str()).unwrap_or("");
     match ext.to_ascii_lowercase().as_str() {
         "csg" | "scad" if a.threshold.is_some() => {
-            Err("--threshold applies to .nrrd volumes only".into())
+            let message = "--threshold applies to .nrrd volumes only";
+            Err(Error::options("--threshold", message))
         }
         "csg" | "scad" => load_scene(a),
         "nrrd" if a.res.is_none() && !a.grid.any() => load_nrrd(a),
-        "nrrd" => Err("--res, --voxel, --pad and --bounds apply to .csg scenes only".into()),
-        _ => Err(format!(
-            "{}: the input must be a .csg scene or a .nrrd volume",
-            a.input.display()
+        "nrrd" => Err(Error::options(
+            "--res",
+            "--res, --voxel, --pad and --bounds apply to .csg scenes only",
+        )),
+        _ => Err(Error::options(
+            "INPUT",
+            format!(
+                "{}: the input must be a .csg scene or a .nrrd volume",
+                a.input.display()
+            ),
         )),
     }
 }
 
 /// A NRRD volume through the general reader (raw or gzip, any sample type, `spacings` or
 /// `space directions`), filled where `--threshold` says.
-fn load_nrrd(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
+fn load_nrrd(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
     let p = &a.input;
     let n = csgpix_scene::nrrd::read_nrrd(p)?;
-    let frame = sculpt::nrrd_frame(&n).map_err(|e| format!("{}: {e}", p.display()))?;
+    let frame = sculpt::nrrd_frame(&n)
+        .map_err(|e| lib_errors::sculpt(e).context(p.display().to_string()))?;
     let dims = n.sizes;
     let voxels = sculpt::nrrd_voxels(&n, a.threshold);
     drop(n);
@@ -244,14 +256,14 @@ fn load_nrrd(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
 
 /// Voxelizes the scene as `voxelize` does (word model, run route, Blist evaluator),
 /// feeding the optimized octree slice by slice.
-fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> {
+fn load_scene(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
     let name = a.input.display().to_string();
     let loaded = csgpix_voxel::sampled::load_scene(&a.input)?;
     let scene = &loaded.scene;
     let grid = a
         .grid
         .grid(Some(a.res.unwrap_or([128; 3])), &loaded)
-        .map_err(|e| format!("{name}: {e}"))?;
+        .map_err(|e| e.context(&name))?;
     let threads = rayon::current_num_threads();
     let need = memory_estimate(&grid, scene.primitive_count(), threads)
         .saturating_add(octree::memory_estimate(StoreKind::Octree, grid.dims)?);
@@ -262,7 +274,7 @@ fn load_scene(a: &Args) -> Result<(OptimizedOctree, Frame, [usize; 3]), String> 
         sampled: loaded.sampled,
         ..SlicerOptions::default()
     };
-    let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
+    let slicer = Slicer::new(scene, grid, opts).map_err(|e| Error::from(e).context(name))?;
     let store = crate::store::octree_from_scene(&slicer, &scene.root, budget - need)
         .map_err(lib_errors::sculpt)?;
     Ok((store, Frame::of_grid(&grid), grid.dims))
@@ -295,12 +307,9 @@ fn write_forces(w: &mut dyn Write, hips: &[DVec3], steps: &[Step]) -> std::io::R
     }
 }
 
-fn print_report(a: &Args, r: &Report, to_stderr: bool) -> Result<(), String> {
+fn print_report(a: &Args, r: &Report, to_stderr: bool) -> crate::Result<()> {
     if a.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(r).map_err(|e| e.to_string())?
-        );
+        println!("{}", serde_json::to_string_pretty(r)?);
         return Ok(());
     }
     let say = |line: String| super::report_line(&line, to_stderr);

@@ -74,7 +74,7 @@ struct Report<'a> {
     wall_seconds: f64,
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
+pub fn run(a: Args) -> crate::Result<ExitCode> {
     a.mem.limit_readers();
     let file = a.scene.display().to_string();
     let text = csgpix_openscad::scene_text(&a.scene)?;
@@ -107,7 +107,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
 }
 
 /// The largest grid's voxelization, and the reference and float volumes kept beside it.
-fn check_memory(prep: &Prepared, mem: super::memory::MaxMemory) -> Result<(), String> {
+fn check_memory(prep: &Prepared, mem: super::memory::MaxMemory) -> crate::Result<()> {
     let slabs = prep.sweep.slabs.iter().copied().max().unwrap_or(1);
     let grid = prep.grid(slabs)?;
     let solids = prep
@@ -117,7 +117,7 @@ fn check_memory(prep: &Prepared, mem: super::memory::MaxMemory) -> Result<(), St
         .max()
         .unwrap_or(0);
     let need = memory_estimate(&grid, solids, rayon::current_num_threads()).saturating_mul(3);
-    mem.check(need, "this sweep", "lower --res or --slabs")
+    Ok(mem.check(need, "this sweep", "lower --res or --slabs")?)
 }
 
 fn progress(points: usize) -> ProgressBar {
@@ -131,12 +131,7 @@ fn progress(points: usize) -> ProgressBar {
 }
 
 /// Stage study.csv and the charts as the files of directory output `dir`.
-fn write_outputs(
-    outs: &mut Outputs,
-    dir: Out,
-    points: &[Point],
-    scene: &str,
-) -> Result<(), String> {
+fn write_outputs(outs: &mut Outputs, dir: Out, points: &[Point], scene: &str) -> crate::Result<()> {
     let table = csv(points);
     outs.write_in(dir, "study.csv", |w| w.write_all(table.as_bytes()))?;
     for (name, chart) in charts(points, scene) {
@@ -151,7 +146,7 @@ fn report(
     points: &[Point],
     scene: &str,
     wall: f64,
-) -> Result<ExitCode, String> {
+) -> crate::Result<ExitCode> {
     if a.json {
         let r = Report {
             scene: scene.into(),
@@ -160,7 +155,7 @@ fn report(
             points,
             wall_seconds: wall,
         };
-        let text = serde_json::to_string_pretty(&r).map_err(|e| e.to_string())?;
+        let text = serde_json::to_string_pretty(&r)?;
         println!("{text}");
     } else {
         let worst = points.iter().map(|p| p.diff_ref).max().unwrap_or(0);

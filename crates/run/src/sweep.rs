@@ -30,6 +30,7 @@
 //!   and `hardware_s` = cycles at 10 MHz.
 //! * `wall_s`: the simulator's own time for the point's voxelization.
 
+use crate::Error;
 use std::time::Instant;
 
 use glam::DVec3;
@@ -97,19 +98,24 @@ impl Sweep {
     }
 
     /// Refuse empty lists and values no run could use.
-    pub fn check(&self) -> Result<(), String> {
+    pub fn check(&self) -> crate::Result<()> {
         if self.bits.is_empty()
             || self.fragments.is_empty()
             || self.slabs.is_empty()
             || self.models.is_empty()
         {
-            return Err("--bits, --fragments, --slabs and --models each need a value".into());
+            let message = "--bits, --fragments, --slabs and --models each need a value";
+            return Err(Error::options("--bits", message));
         }
         if let Some(f) = self.fragments.iter().find(|&&f| f < 3) {
-            return Err(format!("--fragments {f}: a circle needs at least 3"));
+            let message = format!("--fragments {f}: a circle needs at least 3");
+            return Err(Error::options("--fragments", message));
         }
         if self.slabs.contains(&0) || self.res == 0 {
-            return Err("--slabs and --res must be at least 1".into());
+            return Err(Error::options(
+                "--slabs",
+                "--slabs and --res must be at least 1",
+            ));
         }
         for &b in &self.bits {
             self.word(b)?;
@@ -118,12 +124,13 @@ impl Sweep {
     }
 
     /// The depth word with `frac` fraction bits.
-    pub fn word(&self, frac: u32) -> Result<WordFormat, String> {
+    pub fn word(&self, frac: u32) -> crate::Result<WordFormat> {
         WordFormat::new(frac, self.int_bits, self.ovf_bits).map_err(|e| {
-            format!(
+            let message = format!(
                 "--bits {frac} with {}/{}: {e}",
                 self.int_bits, self.ovf_bits
-            )
+            );
+            Error::options("--bits", message)
         })
     }
 
@@ -346,21 +353,21 @@ pub struct Prepared {
 
 /// Read every tessellation of the scene and lay every grid and word on it, so that any bad
 /// input is refused before a point runs. `file` names the scene in messages.
-pub fn prepare(text: &str, file: &str, sweep: Sweep) -> Result<Prepared, String> {
+pub fn prepare(text: &str, file: &str, sweep: Sweep) -> crate::Result<Prepared> {
     let sweep = sweep.normalized();
     sweep.check()?;
-    parse_csg(text, file)
-        .map_err(|e| e.to_string())?
-        .require_convex(file, "`study`")?;
+    parse_csg(text, file)?.require_convex(file, "`study`")?;
     let mut scenes = vec![];
     for &f in &sweep.fragments {
-        let scene = parse_csg(&with_fragments(text, f), file)
-            .map_err(|e| format!("{e} (with $fn = {f})"))?;
+        let scene = parse_csg(&with_fragments(text, f), file).map_err(|mut e| {
+            e.message = format!("{} (with $fn = {f})", e.message);
+            e
+        })?;
         scenes.push((f, scene));
     }
     let (mut min, mut max) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
     for (_, s) in &scenes {
-        let g = Grid::of_scene(s, [1, 1, 1]).map_err(|e| format!("{file}: {}", bounds_hint(e)))?;
+        let g = Grid::of_scene(s, [1, 1, 1]).map_err(|e| bounds_hint(e).context(file))?;
         (min, max) = (min.min(g.min), max.max(g.max));
     }
     let p = Prepared {
@@ -372,8 +379,7 @@ pub fn prepare(text: &str, file: &str, sweep: Sweep) -> Result<Prepared, String>
     for &slabs in &p.sweep.slabs {
         for &bits in &p.sweep.bits {
             for (_, s) in &p.scenes {
-                p.slicer(s, bits, slabs)
-                    .map_err(|e| format!("{file}: {e}"))?;
+                p.slicer(s, bits, slabs).map_err(|e| e.context(file))?;
             }
         }
     }
@@ -381,16 +387,18 @@ pub fn prepare(text: &str, file: &str, sweep: Sweep) -> Result<Prepared, String>
 }
 
 /// A grid error as the command line words it: a scene without solids needs `--bounds`.
-fn bounds_hint(e: csgpix_scene::Error) -> String {
+fn bounds_hint(e: csgpix_scene::Error) -> Error {
     match e.kind {
-        csgpix_scene::Kind::NeedsBounds => "the scene has no solids: give --bounds".into(),
-        _ => e.to_string(),
+        csgpix_scene::Kind::NeedsBounds => {
+            Error::options("--bounds", "the scene has no solids: give --bounds")
+        }
+        _ => e.into(),
     }
 }
 
 impl Prepared {
     /// The grid of `slabs` slabs: the same box for every tessellation and word.
-    pub fn grid(&self, slabs: usize) -> Result<Grid, String> {
+    pub fn grid(&self, slabs: usize) -> crate::Result<Grid> {
         Ok(Grid::new(
             [self.sweep.res, self.sweep.res, slabs],
             self.min,
@@ -398,7 +406,7 @@ impl Prepared {
         )?)
     }
 
-    fn slicer(&self, scene: &CsgScene, bits: u32, slabs: usize) -> Result<Slicer, String> {
+    fn slicer(&self, scene: &CsgScene, bits: u32, slabs: usize) -> crate::Result<Slicer> {
         let (grid, word) = (self.grid(slabs)?, self.sweep.word(bits)?);
         let opts = SlicerOptions {
             fmt: word,
@@ -410,7 +418,7 @@ impl Prepared {
 
     /// Every point, slabs outermost, then fragments, bits and models (each ascending).
     /// `tick` is called after every point.
-    pub fn run(&self, tick: &dyn Fn()) -> Result<Vec<Point>, String> {
+    pub fn run(&self, tick: &dyn Fn()) -> crate::Result<Vec<Point>> {
         let mut points = Vec::with_capacity(self.sweep.len());
         for &slabs in &self.sweep.slabs {
             let reference = self.reference(slabs)?;
@@ -425,9 +433,10 @@ impl Prepared {
     }
 
     /// The reference of a grid: `float`, finest tessellation, most fraction bits.
-    fn reference(&self, slabs: usize) -> Result<Volume, String> {
-        let (_, scene) = self.scenes.last().ok_or("no tessellation to sweep")?;
-        let bits = *self.sweep.bits.last().ok_or("no bits to sweep")?;
+    fn reference(&self, slabs: usize) -> crate::Result<Volume> {
+        let none = |flag| Error::options(flag, format!("{flag}: nothing to sweep"));
+        let (_, scene) = self.scenes.last().ok_or_else(|| none("--fragments"))?;
+        let bits = *self.sweep.bits.last().ok_or_else(|| none("--bits"))?;
         let slicer = self.slicer(scene, bits, slabs)?;
         Ok(run_model(&slicer, scene, Model::Float)?.0)
     }
@@ -440,7 +449,7 @@ impl Prepared {
         fragments: u32,
         reference: &Volume,
         tick: &dyn Fn(),
-    ) -> Result<Vec<Point>, String> {
+    ) -> crate::Result<Vec<Point>> {
         let (float, _, _) = run_model(slicer, scene, Model::Float)?;
         let err = depth_error(slicer)?;
         let scale = depth_to_scene(slicer);
@@ -476,11 +485,7 @@ impl Prepared {
 
 /// One voxelization: the volume, the array clocks and the wall time. The Blist evaluator
 /// (§4.5) and the derived select equations, as `csgpix voxelize` by default.
-fn run_model(
-    slicer: &Slicer,
-    scene: &CsgScene,
-    model: Model,
-) -> Result<(Volume, u64, f64), String> {
+fn run_model(slicer: &Slicer, scene: &CsgScene, model: Model) -> crate::Result<(Volume, u64, f64)> {
     let eval = BlistEval::new(&scene.root);
     let t0 = Instant::now();
     let (vol, work) = voxelize(
@@ -524,7 +529,7 @@ pub fn depth_to_scene(slicer: &Slicer) -> f64 {
 /// slab masks (§4.4). Each plane word is within 2^-(F+1)·(1 + x + y) of the exact plane
 /// (docs/depth-word.md) and max, min and clamping do not enlarge a difference, so the result
 /// is at most that bound at the far corner.
-pub fn depth_error(slicer: &Slicer) -> Result<f64, String> {
+pub fn depth_error(slicer: &Slicer) -> crate::Result<f64> {
     let fmt = &slicer.fmt;
     let (lo_z, hi_z) = (
         fmt.to_real(slicer.z_plane(0)),
@@ -555,14 +560,14 @@ struct PlaneWord {
     h: bool,
 }
 
-fn plane_words(slicer: &Slicer, prim: usize) -> Result<Vec<PlaneWord>, String> {
+fn plane_words(slicer: &Slicer, prim: usize) -> crate::Result<Vec<PlaneWord>> {
     slicer.lists[prim]
         .planes
         .iter()
         .map(|p| {
             csgpix_draw::compile::coeffs(&slicer.fmt, p.z0, p.dzx, p.dzy)
                 .map(|c| PlaneWord { c, y: p.y, h: p.h })
-                .map_err(|(_, msg)| format!("solid {}: {msg}", prim + 1))
+                .map_err(|(_, msg)| Error::Compile(format!("solid {}: {msg}", prim + 1)))
         })
         .collect()
 }

@@ -1,6 +1,7 @@
 //! `csgpix throughput`: the performance equations of §2.5 and §5.5 (Table 2.1, Figures 2.12
 //! and 5.11), and a scene's measured frame and slice rates on panels against them.
 
+use crate::Error;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -82,14 +83,16 @@ pub struct Args {
 }
 
 /// A positive number, or a fraction A/B.
-fn parse_positive(s: &str) -> Result<f64, String> {
+fn parse_positive(s: &str) -> crate::error::Parsed<f64> {
     let n = |v: &str| v.trim().parse::<f64>().map_err(|e| format!("{v:?}: {e}"));
     let v = match s.split_once('/') {
         Some((a, b)) => n(a)? / n(b)?,
         None => n(s)?,
     };
     if !(v.is_finite() && v > 0.0) {
-        return Err(format!("{s:?}: expected a positive number"));
+        return Err(crate::error::BadValue(format!(
+            "{s:?}: expected a positive number"
+        )));
     }
     Ok(v)
 }
@@ -141,7 +144,7 @@ struct SceneReport {
     per_panel: Option<Vec<PanelWork>>,
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
+pub fn run(a: Args) -> crate::Result<ExitCode> {
     let hw = Hardware {
         bits: a.bits,
         clock_hz: a.clock,
@@ -152,10 +155,11 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         None => table_panels(a.screen),
     };
     if panels.is_empty() {
-        return Err(format!(
+        let message = format!(
             "a {}x{} screen is smaller than Table 2.1's smallest panel (8x8): give --panel",
             a.screen.0, a.screen.1
-        ));
+        );
+        return Err(Error::options("--panel", message));
     }
     let mut outs = Outputs::new();
     let plots = a
@@ -190,7 +194,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         outs.commit()?;
     }
     if a.json {
-        let text = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
+        let text = serde_json::to_string_pretty(&report)?;
         println!("{text}");
     } else {
         print_text(&report);
@@ -198,7 +202,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
     Ok(ExitCode::SUCCESS)
 }
 
-fn lut_inputs(s: &str) -> Result<u8, String> {
+fn lut_inputs(s: &str) -> crate::error::Parsed<u8> {
     match s {
         "4" => Ok(4),
         "6" => Ok(6),
@@ -249,7 +253,7 @@ fn print_area(r: &AreaReport) {
     }
 }
 
-fn read_scene(path: &Path) -> Result<CsgScene, String> {
+fn read_scene(path: &Path) -> crate::Result<CsgScene> {
     let scene = csgpix_openscad::read_scene(path)?;
     scene.require_convex(&path.display().to_string(), "`throughput`")?;
     Ok(scene)
@@ -257,14 +261,15 @@ fn read_scene(path: &Path) -> Result<CsgScene, String> {
 
 /// `--word`, or 10 fraction bits and the fewest integer bits (10 or more) under which the
 /// scene's deepest point stays below maxdepth, the rest overflow bits, N_D = `bits`.
-fn scene_word(a: &Args, scene: &CsgScene) -> Result<WordFormat, String> {
+fn scene_word(a: &Args, scene: &CsgScene) -> crate::Result<WordFormat> {
     if let Some(w) = a.word {
         if w.bits() != a.bits {
-            return Err(format!(
+            let message = format!(
                 "--word gives N_D = {} but --bits is {}: they must agree",
                 w.bits(),
                 a.bits
-            ));
+            );
+            return Err(Error::options("--word", message));
         }
         return Ok(w);
     }
@@ -273,13 +278,14 @@ fn scene_word(a: &Args, scene: &CsgScene) -> Result<WordFormat, String> {
     let int = (deepest.log2().floor() as u32 + 1).max(10);
     let ovf = a.bits as i64 - 1 - 10 - int as i64;
     if ovf < 1 {
-        return Err(format!(
+        let message = format!(
             "the scene is {deepest:.0} depth units deep on a {}x{} screen: {} bits cannot hold \
              10 fraction, {int} integer and 1 overflow bit (give --word or a smaller --screen)",
             a.screen.0, a.screen.1, a.bits
-        ));
+        );
+        return Err(Error::options("--word", message));
     }
-    WordFormat::new(10, int, ovf as u32).map_err(|e| e.to_string())
+    WordFormat::new(10, int, ovf as u32).map_err(|e| Error::options("--bits", e.to_string()))
 }
 
 fn scene_report(
@@ -287,19 +293,19 @@ fn scene_report(
     path: &Path,
     hw: &Hardware,
     panels: &[(usize, usize)],
-) -> Result<SceneReport, String> {
+) -> crate::Result<SceneReport> {
     let scene = read_scene(path)?;
     let fmt = scene_word(a, &scene)?;
     let ps = PanelScene::new(&scene, a.view.into(), a.screen, fmt)
-        .map_err(|e| format!("{}: {}", path.display(), super::lib_errors::draw(e)))?;
+        .map_err(|e| super::lib_errors::draw(e).context(path.display().to_string()))?;
     let set = Equations::Derived.set();
     let counted = count_cycles(&set);
     let simulated = |cfg: &ArrayConfig, ops: &[Op]| {
-        simulate(cfg, &set, ops, a.mem).map_err(csgpix_draw::Error::Msg)
+        simulate(cfg, &set, ops, a.mem).map_err(|e| csgpix_draw::Error::Msg(e.to_string()))
     };
     let count: &csgpix_draw::panels::Counter = if a.simulate { &simulated } else { &counted };
     let all = vec![true; ps.lists.len()];
-    let in_scene = |e: csgpix_draw::Error| format!("{}: {e}", path.display());
+    let in_scene = |e: csgpix_draw::Error| Error::from(e).context(path.display().to_string());
     let ops = ps.frame_ops(&all).map_err(in_scene)?;
     let one = counted(&ps.panel_config(a.screen), &ops)?;
     let mut estimates = vec![];
@@ -336,11 +342,11 @@ fn simulate(
     set: &rtl_model::EquationSet,
     ops: &[Op],
     mem: super::memory::MaxMemory,
-) -> Result<u64, String> {
+) -> crate::Result<u64> {
     let what = format!("--simulate: a {}x{} panel", cfg.width, cfg.height);
     mem.check(CycleArray::memory_bytes(cfg), &what, "use smaller panels")?;
     let mut arr = CycleArray::new(*cfg, set.clone());
-    arr.run(ops).map_err(|e| e.to_string())?;
+    arr.run(ops)?;
     Ok(arr.cycles())
 }
 
@@ -443,8 +449,10 @@ fn write_plots(
     hw: &Hardware,
     screen: (usize, usize),
     scene: Option<&SceneReport>,
-) -> Result<(), String> {
-    let mut write = |c: Chart, name: &str| c.write_png(&outs.stage_path(out, name)?, 800, 560);
+) -> crate::Result<()> {
+    let mut write = |c: Chart, name: &str| -> crate::Result<()> {
+        Ok(c.write_png(&outs.stage_path(out, name)?, 800, 560)?)
+    };
     write(figure_2_12(hw, screen), "figure-2.12.png")?;
     write(figure_5_11(hw, screen), "figure-5.11.png")?;
     if let Some(s) = scene {

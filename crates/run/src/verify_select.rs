@@ -27,7 +27,7 @@ pub struct Args {
     json: bool,
 }
 
-fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> Result<Pla, String> {
+fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> crate::Result<Pla> {
     let (name, text) = match dir {
         Some(d) => {
             let p = d.join(format!("{}.pla", t.name()));
@@ -39,23 +39,20 @@ fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> Result<Pla, String> {
             builtin.to_string(),
         ),
     };
-    Pla::parse(&text).map_err(|e| format!("{name}:{e}"))
+    Pla::parse(&text).map_err(|e| csgpix_scene::Error::at(name, e.line, e.col, e.msg).into())
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
+pub fn run(a: Args) -> crate::Result<ExitCode> {
     let eq: Equations = a.equations.into();
     let set = eq.set();
     let mut reports: Vec<SignalReport> = vec![];
     for (t, text) in GOLDEN {
         let pla = load(&a.vectors, t, text)?;
-        reports.extend(verify_table(&set, t, &pla).map_err(|e| e.to_string())?);
+        reports.extend(verify_table(&set, t, &pla)?);
     }
     let bad: usize = reports.iter().map(|r| r.mismatches.len()).sum();
     if a.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&reports).map_err(|e| e.to_string())?
-        );
+        println!("{}", serde_json::to_string_pretty(&reports)?);
     } else {
         print_text(eq, &reports);
     }

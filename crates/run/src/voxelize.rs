@@ -2,6 +2,7 @@
 //! slice (§4.5 Blist, §4.2 tree, §3.4.1 stack), written as a NRRD volume, or as an OME-Zarr
 //! store a chunk row at a time (`--format zarr`, docs/zarr.md).
 
+use crate::Error;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -18,8 +19,8 @@ use csgpix_voxel::evaluate::{StackEval, TreeEval};
 use csgpix_voxel::sampled::{load_scene_with, parse_binding, scene_from_expr, Binding, Loaded};
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{
-    memory_estimate, voxelize, voxelize_slabs, voxelize_streaming, BindingProblem, Error, Grid,
-    GridSpec, Route, Sampling, Slicer, SlicerOptions, Volume, Work,
+    memory_estimate, voxelize, voxelize_slabs, voxelize_streaming, BindingProblem,
+    Error as VoxelError, Grid, GridSpec, Route, Sampling, Slicer, SlicerOptions, Volume, Work,
 };
 use csgpix_zarr::{voxelize_bricks, voxelize_rows, VolumeAttrs, ZarrVolume};
 use glam::DVec3;
@@ -191,7 +192,7 @@ pub struct GridArgs {
 
 impl GridArgs {
     /// The grid of `res` voxels per axis (or of `--voxel`) over `--bounds` or the scene's.
-    pub fn grid(&self, res: Option<[usize; 3]>, scene: &Loaded) -> Result<Grid, String> {
+    pub fn grid(&self, res: Option<[usize; 3]>, scene: &Loaded) -> crate::Result<Grid> {
         let spec = GridSpec {
             res: res.filter(|_| self.voxel.is_none()),
             voxel: self.voxel,
@@ -211,6 +212,7 @@ impl GridArgs {
 pub enum SamplingArg {
     /// A voxel is inside when its centre is inside the solid.
     #[default]
+    #[value(alias = "center")]
     Centre,
     /// A voxel is inside a primitive when its segment along Z meets it (§4.4).
     Slab,
@@ -230,6 +232,129 @@ impl SamplingArg {
             SamplingArg::Slab => "slab",
         }
     }
+}
+
+/// The flags' value names as [`FromStr`](std::str::FromStr), for the Python binding's keyword
+/// arguments: one spelling of every value, the command line's.
+macro_rules! from_value_name {
+    ($($t:ty: $what:literal),*) => {$(
+        impl std::str::FromStr for $t {
+            type Err = crate::error::BadValue;
+            fn from_str(s: &str) -> crate::error::Parsed<Self> {
+                <$t as ValueEnum>::from_str(s, false).map_err(|_| {
+                    let names: Vec<String> = <$t as ValueEnum>::value_variants()
+                        .iter()
+                        .filter_map(|v| v.to_possible_value())
+                        .map(|v| format!("`{}`", v.get_name()))
+                        .collect();
+                    crate::error::BadValue(format!("{} {s:?}: {}", $what, names.join(", ")))
+                })
+            }
+        }
+    )*};
+}
+from_value_name!(SamplingArg: "sampling", RouteArg: "route", EvalArg: "eval", FormatArg: "format");
+
+/// What decides a voxelization's voxels beside its grid: the flags `voxelize` reads and the
+/// Python binding's keyword arguments, the same options for both.
+#[derive(Clone, Copy, Debug)]
+pub struct Voxelization {
+    /// `--sampling`.
+    pub sampling: SamplingArg,
+    /// `--model`.
+    pub model: Model,
+    /// `--route`.
+    pub route: RouteArg,
+    /// `--eval`.
+    pub eval: EvalArg,
+    /// `--equations`.
+    pub equations: Equations,
+    /// `--word`.
+    pub word: WordFormat,
+    /// `--panel` (None: the whole array).
+    pub panel: Option<[usize; 2]>,
+    /// `--grey`.
+    pub grey: bool,
+    /// `--blend`.
+    pub blend: Option<Union>,
+}
+
+impl Voxelization {
+    /// The slicer of `loaded` on `grid` (§4.4).
+    pub fn slicer(&self, loaded: &Loaded, grid: Grid) -> Result<Slicer, VoxelError> {
+        let scene = &loaded.scene;
+        let opts = SlicerOptions {
+            fmt: self.word,
+            sampling: self.sampling.sampling(),
+            panel: self.panel,
+            grey: self.grey,
+            blend: self.blend.map(|u| BlendEval::new(&scene.root, u)),
+            sampled: loaded.sampled.clone(),
+        };
+        Slicer::new(scene, grid, opts)
+    }
+
+    /// The evaluator of `scene`'s tree per slice (§4.2, §3.4.1, §4.5).
+    pub fn evaluator(&self, scene: &CsgScene) -> Box<dyn SliceEval + Send + Sync> {
+        match self.eval {
+            EvalArg::Tree => Box::new(TreeEval::new(&scene.root)),
+            EvalArg::Stack => Box::new(StackEval::new(&scene.root)),
+            EvalArg::Blist => Box::new(BlistEval::new(&scene.root)),
+        }
+    }
+
+    /// The route the model and `--route` ask for on `slicer`: the run route where it gives
+    /// the volume ([`csgpix_voxel::runs::applies`]), else its slab route.
+    pub fn route(&self, slicer: &Slicer) -> Route {
+        route_of(self.model, self.route, slicer)
+    }
+
+    /// Slabs `z` of the volume: the slices' bytes, x fastest, then y, then k.
+    pub fn slabs(
+        &self,
+        slicer: &Slicer,
+        eval: &dyn SliceEval,
+        z: std::ops::Range<usize>,
+    ) -> Result<Vec<u8>, VoxelError> {
+        let mut out = Vec::with_capacity(z.len() * slicer.grid.slice_len());
+        let set = self.equations.set();
+        let route = self.route(slicer);
+        voxelize_slabs::<VoxelError>(slicer, route, set, eval, &|| {}, z, &mut |_, s| {
+            out.extend_from_slice(s);
+            Ok(())
+        })?;
+        Ok(out)
+    }
+}
+
+/// The memory of voxelizing chunk rows of `store` (bricks of its tiles on the run route,
+/// whole rows else) with `threads` threads: the route's and the writer's (docs/memory.md).
+pub fn zarr_rows_estimate(
+    slicer: &Slicer,
+    route: Route,
+    eval: &dyn SliceEval,
+    threads: usize,
+    store: &ZarrVolume,
+) -> Result<u64, csgpix_zarr::Error> {
+    let grid = &slicer.grid;
+    let layout = store.layout();
+    if matches!(route, Route::Runs { .. }) {
+        let writer = csgpix_zarr::writer_bytes_bricks(grid.dims, &layout, threads)?;
+        let runs = csgpix_voxel::runs::memory_estimate_bricks(slicer, eval, threads, store.tile());
+        return Ok(runs.saturating_add(writer));
+    }
+    let prims = slicer.primitive_count();
+    let rows = csgpix_zarr::memory_estimate(grid, &layout, prims, threads)?;
+    Ok(rows.saturating_add(imports_estimate(slicer)))
+}
+
+/// Bytes the slab routes hold for the imports of `slicer` (datasets' samples, meshes' runs).
+pub fn imports_estimate(slicer: &Slicer) -> u64 {
+    let each = slicer
+        .sampled
+        .iter()
+        .map(|s| s.memory_estimate(&slicer.grid));
+    each.fold(0, u64::saturating_add)
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
@@ -277,7 +402,7 @@ struct StoreReport {
 
 /// `--format`: what `-o` is.
 #[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
-enum FormatArg {
+pub enum FormatArg {
     /// A NRRD volume (one file; streamed on the run route, else held in memory).
     #[default]
     Nrrd,
@@ -285,8 +410,9 @@ enum FormatArg {
     Zarr,
 }
 
+/// `--route` (`route=` in Python): which way the voxels are computed.
 #[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
-enum RouteArg {
+pub enum RouteArg {
     /// Column by column: each primitive's runs along every pixel's ray, the tree evaluated
     /// once per run (the same voxels as `intervals`; `intervals` where voxels take a
     /// dataset's grey value or a blend).
@@ -298,8 +424,9 @@ enum RouteArg {
     Array,
 }
 
+/// `--eval` (`eval=` in Python): the CSG tree's evaluator per slice.
 #[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
-enum EvalArg {
+pub enum EvalArg {
     /// Blist (§4.3-4.5): one label register per voxel.
     #[default]
     Blist,
@@ -314,7 +441,7 @@ enum EvalArg {
 pub struct PanelArg(pub Option<[usize; 2]>);
 
 /// `NXxNY` panels, or `whole` for none.
-pub fn parse_panel(s: &str) -> Result<PanelArg, String> {
+pub fn parse_panel(s: &str) -> crate::error::Parsed<PanelArg> {
     if s == "whole" {
         return Ok(PanelArg(None));
     }
@@ -322,14 +449,14 @@ pub fn parse_panel(s: &str) -> Result<PanelArg, String> {
         return Err("expected NXxNY (e.g. 32x32) or `whole`".into());
     };
     let n = |v: &str| match v.trim().parse::<usize>() {
-        Ok(0) => Err("a panel needs at least one pixel".to_string()),
+        Ok(0) => Err("a panel needs at least one pixel".into()),
         Ok(n) => Ok(n),
-        Err(e) => Err(format!("{v:?}: {e}")),
+        Err(e) => Err(crate::error::BadValue(format!("{v:?}: {e}"))),
     };
     Ok(PanelArg(Some([n(x)?, n(y)?])))
 }
 
-pub fn parse_res(s: &str) -> Result<[usize; 3], String> {
+pub fn parse_res(s: &str) -> crate::error::Parsed<[usize; 3]> {
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
     let parts: Vec<&str> = s.split(['x', 'X']).collect();
     let dims = match parts[..] {
@@ -338,13 +465,15 @@ pub fn parse_res(s: &str) -> Result<[usize; 3], String> {
         _ => return Err("expected N or NXxNYxNZ, e.g. 64 or 64x64x32".into()),
     };
     if dims.iter().any(|&d| d == 0 || d > 65536) {
-        return Err(format!("{s}: each side must be 1..=65536"));
+        return Err(crate::error::BadValue(format!(
+            "{s}: each side must be 1..=65536"
+        )));
     }
     Ok(dims)
 }
 
 /// `--chunk`: N (a cube) or ZxYxX, each side 1..=65536.
-fn parse_chunk(s: &str) -> Result<[usize; 3], String> {
+fn parse_chunk(s: &str) -> crate::error::Parsed<[usize; 3]> {
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
     let parts: Vec<&str> = s.split(['x', 'X']).collect();
     let chunk = match parts[..] {
@@ -353,24 +482,30 @@ fn parse_chunk(s: &str) -> Result<[usize; 3], String> {
         _ => return Err("expected N or ZxYxX, e.g. 64 or 16x256x256".into()),
     };
     if chunk.iter().any(|&c| c == 0 || c > 65536) {
-        return Err(format!("{s}: each side must be 1..=65536"));
+        return Err(crate::error::BadValue(format!(
+            "{s}: each side must be 1..=65536"
+        )));
     }
     Ok(chunk)
 }
 
 /// `--shard`: N chunks a side (1..=65536), or `none` for 1.
-fn parse_shard(s: &str) -> Result<usize, String> {
+fn parse_shard(s: &str) -> crate::error::Parsed<usize> {
     if s == "none" {
         return Ok(1);
     }
     match s.trim().parse::<usize>() {
         Ok(n) if (1..=65536).contains(&n) => Ok(n),
-        Ok(_) => Err(format!("{s}: 1..=65536 chunks a side, or `none`")),
-        Err(e) => Err(format!("{s:?}: {e}; expected N or `none`")),
+        Ok(_) => Err(crate::error::BadValue(format!(
+            "{s}: 1..=65536 chunks a side, or `none`"
+        ))),
+        Err(e) => Err(crate::error::BadValue(format!(
+            "{s:?}: {e}; expected N or `none`"
+        ))),
     }
 }
 
-pub fn parse_bounds(s: &str) -> Result<(DVec3, DVec3), String> {
+pub fn parse_bounds(s: &str) -> crate::error::Parsed<(DVec3, DVec3)> {
     let v: Vec<f64> = s
         .split(',')
         .map(|x| x.trim().parse::<f64>().map_err(|e| format!("{x:?}: {e}")))
@@ -384,9 +519,9 @@ pub fn parse_bounds(s: &str) -> Result<(DVec3, DVec3), String> {
         return Err("every bound must be a finite number".into());
     }
     if !extent.is_finite() {
-        return Err(format!(
+        return Err(crate::error::BadValue(format!(
             "the extent {extent} overflows: bounds must be within ±1e307"
-        ));
+        )));
     }
     if extent.min_element() <= 0.0 {
         return Err("each X1, Y1, Z1 must be greater than its X0, Y0, Z0".into());
@@ -461,7 +596,7 @@ struct ZarrReport {
 }
 
 /// `sum:KS,KD` or `max`.
-fn parse_blend(s: &str) -> Result<Union, String> {
+pub fn parse_blend(s: &str) -> crate::error::Parsed<Union> {
     if s == "max" {
         return Ok(Union::Max);
     }
@@ -471,7 +606,9 @@ fn parse_blend(s: &str) -> Result<Union, String> {
         .ok_or_else(|| format!("{s:?}: expected `max` or `sum:KS,KD` (e.g. sum:0.5,0.5)"))?;
     let f = |v: &str| match v.trim().parse::<f64>() {
         Ok(x) if x.is_finite() && x >= 0.0 => Ok(x),
-        _ => Err(format!("{v:?}: a blending factor is a number >= 0")),
+        _ => Err(crate::error::BadValue(format!(
+            "{v:?}: a blending factor is a number >= 0"
+        ))),
     };
     Ok(Union::Sum {
         ks: f(k.0)?,
@@ -480,6 +617,23 @@ fn parse_blend(s: &str) -> Result<Union, String> {
 }
 
 /// What the run names its input in messages and the NRRD comment.
+impl Args {
+    /// The options that decide the voxels, as flags gave them.
+    pub fn voxelization(&self) -> Voxelization {
+        Voxelization {
+            sampling: self.grid.sampling,
+            model: self.model,
+            route: self.route,
+            eval: self.eval,
+            equations: self.equations.into(),
+            word: self.word,
+            panel: self.panel.0,
+            grey: self.grey,
+            blend: self.blend,
+        }
+    }
+}
+
 fn input_name(a: &Args) -> String {
     match (&a.scene, &a.expr) {
         (Some(p), _) => p.display().to_string(),
@@ -488,7 +642,7 @@ fn input_name(a: &Args) -> String {
     }
 }
 
-fn load(a: &Args) -> Result<Loaded, String> {
+fn load(a: &Args) -> crate::Result<Loaded> {
     match (&a.scene, &a.expr) {
         (Some(p), _) => {
             // The scene's vertices count against --max-memory too.
@@ -502,30 +656,36 @@ fn load(a: &Args) -> Result<Loaded, String> {
             load_scene_with(p, &options).map_err(flag_message)
         }
         (None, Some(e)) => scene_from_expr(e, &a.prim).map_err(flag_message),
-        (None, None) => Err("give a scene file or --expr".into()),
+        (None, None) => Err(Error::options("--expr", "give a scene file or --expr")),
     }
 }
 
 /// A loading error in the words of this command's flags (`--bounds`, `--expr`, `--prim`).
-pub fn flag_message(e: Error) -> String {
+pub fn flag_message(e: VoxelError) -> Error {
     match e {
-        Error::NeedsBounds => format!("{e}: give --bounds"),
-        Error::Expr(m) => format!("--expr: {m}"),
-        Error::Unbound { name } => {
-            format!("--expr: primitive `{name}` needs a file: --prim {name}=FILE")
-        }
-        Error::Binding {
+        VoxelError::NeedsBounds => Error::options("--bounds", format!("{e}: give --bounds")),
+        VoxelError::Expr(m) => Error::options("--expr", format!("--expr: {m}")),
+        VoxelError::Unbound { name } => Error::options(
+            "--expr",
+            format!("--expr: primitive `{name}` needs a file: --prim {name}=FILE"),
+        ),
+        VoxelError::Binding {
             name,
             problem: BindingProblem::NotInExpression,
-        } => format!("--prim {name}: the expression has no primitive `{name}`"),
-        Error::Binding { name, problem } => format!("--prim {name}: {problem}"),
-        e => e.to_string(),
+        } => Error::options(
+            "--prim",
+            format!("--prim {name}: the expression has no primitive `{name}`"),
+        ),
+        VoxelError::Binding { name, problem } => {
+            Error::options("--prim", format!("--prim {name}: {problem}"))
+        }
+        e => e.into(),
     }
 }
 
 /// `--format zarr` with what it cannot do, refused in one line before anything is named:
 /// the options that need the whole volume in memory, and standard output.
-fn check_format(a: &Args) -> Result<(), String> {
+fn check_format(a: &Args) -> crate::Result<()> {
     if a.format == FormatArg::Nrrd {
         let zarr_only = [
             ("--chunk", a.chunk.is_some()),
@@ -533,14 +693,16 @@ fn check_format(a: &Args) -> Result<(), String> {
             ("--levels", a.levels.is_some()),
         ];
         return match zarr_only.iter().find(|(_, given)| *given) {
-            Some((flag, _)) => Err(format!("{flag} applies to --format zarr only")),
+            Some((flag, _)) => Err(Error::options(
+                flag,
+                format!("{flag} applies to --format zarr only"),
+            )),
             None => Ok(()),
         };
     }
     if a.out.as_os_str() == "-" {
-        return Err(
-            "-o -: --format zarr writes a directory (OUT.zarr), not standard output".into(),
-        );
+        let message = "-o -: --format zarr writes a directory (OUT.zarr), not standard output";
+        return Err(Error::options("-o", message));
     }
     let whole = [
         ("--preview", a.preview.is_some()),
@@ -549,9 +711,12 @@ fn check_format(a: &Args) -> Result<(), String> {
         ("--store", a.store.is_some()),
     ];
     match whole.iter().find(|(_, given)| *given) {
-        Some((flag, _)) => Err(format!(
-            "{flag} needs the whole volume in memory: not with --format zarr, which writes \
-             a chunk row at a time (use --format nrrd)"
+        Some((flag, _)) => Err(Error::options(
+            flag,
+            format!(
+                "{flag} needs the whole volume in memory: not with --format zarr, which \
+                 writes a chunk row at a time (use --format nrrd)"
+            ),
         )),
         None => Ok(()),
     }
@@ -567,7 +732,7 @@ struct Named {
     mesh: Option<(Out, csgpix_scene::mesh::Format)>,
 }
 
-fn name_outputs(a: &Args) -> Result<Named, String> {
+fn name_outputs(a: &Args) -> crate::Result<Named> {
     let mut outs = Outputs::new();
     let nrrd = match a.format {
         FormatArg::Nrrd => outs.file_or_stdout("-o", &a.out, &["nrrd"])?,
@@ -589,7 +754,10 @@ fn name_outputs(a: &Args) -> Result<Named, String> {
         None => None,
     };
     if a.json && outs.uses_stdout() {
-        return Err("--json prints to standard output: write the outputs to files".into());
+        return Err(Error::options(
+            "--json",
+            "--json prints to standard output: write the outputs to files",
+        ));
     }
     Ok(Named {
         outs,
@@ -600,16 +768,13 @@ fn name_outputs(a: &Args) -> Result<Named, String> {
     })
 }
 
-pub fn run(a: Args) -> Result<ExitCode, String> {
+pub fn run(a: Args) -> crate::Result<ExitCode> {
     a.mem.limit_readers();
     check_format(&a)?;
     let name = input_name(&a);
     let mut named = name_outputs(&a)?;
     let loaded = load(&a)?;
-    let grid = a
-        .grid
-        .grid(a.res, &loaded)
-        .map_err(|e| format!("{name}: {e}"))?;
+    let grid = a.grid.grid(a.res, &loaded).map_err(|e| e.context(&name))?;
     let scene = &loaded.scene;
     let threads = a
         .threads
@@ -619,17 +784,12 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         shard: a.shard.unwrap_or(csgpix_zarr::DEFAULT_SHARD),
         levels: a.levels.map(usize::from),
     };
-    let opts = SlicerOptions {
-        fmt: a.word,
-        sampling: a.grid.sampling.sampling(),
-        panel: a.panel.0,
-        grey: a.grey,
-        blend: a.blend.map(|u| BlendEval::new(&scene.root, u)),
-        sampled: loaded.sampled,
-    };
-    let slicer = Slicer::new(scene, grid, opts).map_err(|e| format!("{name}: {e}"))?;
-    let eval = evaluator(a.eval, scene);
-    let route = route_of(a.model, a.route, &slicer);
+    let vox = a.voxelization();
+    let slicer = vox
+        .slicer(&loaded, grid)
+        .map_err(|e| Error::from(e).context(&name))?;
+    let eval = vox.evaluator(scene);
+    let route = vox.route(&slicer);
     // The run route's NRRD estimates, with and without the volume: they decide whether the
     // file is streamed, and the one that applies is the run's.
     let runs_nrrd = (matches!(route, Route::Runs { .. }) && a.format == FormatArg::Nrrd)
@@ -649,13 +809,12 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         FormatArg::Zarr => "lower --res or --chunk",
     };
     a.mem.check(need, "this run", fix)?;
-    let set = Equations::from(a.equations).set();
+    let set = vox.equations.set();
     let t0 = Instant::now();
     let bar = progress(&slicer, route);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
-        .build()
-        .map_err(|e| e.to_string())?;
+        .build()?;
     let tick = || bar.inc(1);
     if a.format == FormatArg::Zarr {
         let root = named.outs.stage_root(named.nrrd)?;
@@ -803,37 +962,44 @@ fn stream_nrrd(
     eval: &dyn SliceEval,
     tick: &(dyn Fn() + Sync),
     comment: &str,
-) -> Result<Work, String> {
+) -> crate::Result<Work> {
     let nz = slicer.grid.dims[2];
-    let mut done: Option<Result<Work, Error>> = None;
+    let mut done: Option<Result<Work, Stop>> = None;
     let written = outs.write(out, |w| {
         w.write_all(csgpix_scene::nrrd::header(&slicer.grid, comment).as_bytes())?;
-        // The sink's own error is the file's; a voxelizer's error is told apart below.
-        let mut io: Option<std::io::Error> = None;
-        let mut sink = |_: usize, s: &[u8]| {
-            w.write_all(s).map_err(|e| {
-                let msg = e.to_string();
-                io = Some(e);
-                Error::Msg(msg)
-            })
-        };
-        let r = voxelize_slabs(slicer, route, set, eval, tick, 0..nz, &mut sink);
-        if let Some(e) = io {
-            return Err(e);
-        }
-        let failed = r.is_err();
-        done = Some(r);
-        match failed {
-            true => Err(std::io::Error::other("the voxelization failed")),
-            false => Ok(()),
+        // The sink's own error is the file's, told apart from the voxelizer's.
+        let mut sink = |_: usize, s: &[u8]| w.write_all(s).map_err(Stop::Io);
+        match voxelize_slabs(slicer, route, set, eval, tick, 0..nz, &mut sink) {
+            Err(Stop::Io(e)) => Err(e),
+            r => {
+                let failed = r.is_err();
+                done = Some(r);
+                match failed {
+                    true => Err(std::io::Error::other("the voxelization failed")),
+                    false => Ok(()),
+                }
+            }
         }
     });
     match (done, written) {
         // The voxelizer's error, as the whole-volume path reports it.
-        (Some(Err(e)), _) => Err(e.into()),
-        (_, Err(e)) => Err(e.to_string()),
+        (Some(Err(Stop::Voxel(e))), _) => Err(e.into()),
+        (_, Err(e)) => Err(e.into()),
         (Some(Ok(work)), Ok(())) => Ok(work),
-        (None, Ok(())) => Err("the volume was not voxelized".into()),
+        // The fill returns an I/O error as the file's and sets `done` whenever it succeeds.
+        (Some(Err(Stop::Io(_))) | None, Ok(())) => unreachable!("a fill that succeeded"),
+    }
+}
+
+/// Why a streamed NRRD sweep stopped: the file's write or the voxelizer.
+enum Stop {
+    Io(std::io::Error),
+    Voxel(VoxelError),
+}
+
+impl From<VoxelError> for Stop {
+    fn from(e: VoxelError) -> Stop {
+        Stop::Voxel(e)
     }
 }
 
@@ -847,7 +1013,7 @@ fn estimate(
     threads: usize,
     layout: &csgpix_zarr::Layout,
     (stream, runs_nrrd): (bool, Option<[u64; 2]>),
-) -> Result<u64, String> {
+) -> crate::Result<u64> {
     let grid = &slicer.grid;
     let prims = slicer.primitive_count();
     let runs = matches!(route, Route::Runs { .. });
@@ -870,9 +1036,7 @@ fn estimate(
             .map_err(|e| zarr_message(e, a))?,
     };
     if !runs {
-        for s in &slicer.sampled {
-            need = need.saturating_add(s.memory_estimate(grid));
-        }
+        need = need.saturating_add(imports_estimate(slicer));
     }
     if let Some(st) = a.store {
         need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
@@ -885,16 +1049,22 @@ fn estimate(
 }
 
 /// A Zarr store's error, naming `-o` where the library names the staging directory.
-fn zarr_message(e: csgpix_zarr::Error, a: &Args) -> String {
+fn zarr_message(e: csgpix_zarr::Error, a: &Args) -> Error {
     use csgpix_zarr::Error as Z;
     match e {
-        Z::Store { message, .. } => format!("-o {}: {message}", a.out.display()),
-        Z::BadLevels { levels, max, depth } => format!(
-            "--levels {levels}: at most {max} here (with more than one chunk row, 2^(levels-1) \
-             must divide the chunk depth, {depth}; and no level past a 1x1x1 one)"
+        Z::Store { message, .. } => {
+            Error::options("-o", format!("-o {}: {message}", a.out.display()))
+        }
+        Z::BadLevels { levels, max, depth } => Error::options(
+            "--levels",
+            format!(
+                "--levels {levels}: at most {max} here (with more than one chunk row, \
+                 2^(levels-1) must divide the chunk depth, {depth}; and no level past a \
+                 1x1x1 one)"
+            ),
         ),
-        e @ Z::BadChunk { .. } => format!("--chunk: {e}"),
-        e => e.to_string(),
+        e @ Z::BadChunk { .. } => Error::options("--chunk", format!("--chunk: {e}")),
+        e => e.into(),
     }
 }
 
@@ -922,16 +1092,17 @@ fn write_mesh(
     v: &Volume,
     budget: u64,
     comment: &str,
-) -> Result<MeshReport, String> {
+) -> crate::Result<MeshReport> {
     let surface = csgpix_voxel::surface_voxels(v);
     let need = octree::memory_estimate(octree::StoreKind::Octree, v.dims)?
         .saturating_add(surface.saturating_mul(MESH_BYTES_PER_SURFACE_VOXEL));
     if need > budget {
-        return Err(format!(
+        let message = format!(
             "--mesh: the mesh of {surface} surface voxels needs about {} MiB more, over \
              --max-memory: lower --res or raise the limit",
             need.div_ceil(1 << 20)
-        ));
+        );
+        return Err(Error::options("--mesh", message));
     }
     let store = octree::OptimizedOctree::from_volume(v, budget).map_err(lib_errors::sculpt)?;
     let frame = csgpix_sculpt::Frame::of_grid(grid);
@@ -960,7 +1131,7 @@ fn with_store(
     tick: &(dyn Fn() + Sync),
     kind: StoreKind,
     budget: u64,
-) -> Result<(Volume, Work, Option<StoreReport>), String> {
+) -> crate::Result<(Volume, Work, Option<StoreReport>)> {
     let dims = slicer.grid.dims;
     let mut b = octree::builder(kind, dims, budget).map_err(lib_errors::sculpt)?;
     let mut voxels = Vec::with_capacity(dims.iter().product());
@@ -1015,14 +1186,6 @@ fn route_name(route: Route) -> &'static str {
     }
 }
 
-fn evaluator(e: EvalArg, scene: &CsgScene) -> Box<dyn SliceEval> {
-    match e {
-        EvalArg::Tree => Box::new(TreeEval::new(&scene.root)),
-        EvalArg::Stack => Box::new(StackEval::new(&scene.root)),
-        EvalArg::Blist => Box::new(BlistEval::new(&scene.root)),
-    }
-}
-
 /// A progress bar for runs that take a while: slices on the slab routes, bands of rows on
 /// the run route (which ticks once per band).
 fn progress(slicer: &Slicer, route: Route) -> ProgressBar {
@@ -1059,7 +1222,7 @@ fn report(
     (work, store, mesh): (Work, Option<StoreReport>, Option<MeshReport>),
     (wall, to_stderr, memory_estimate): (f64, bool, u64),
     zarr: Option<ZarrReport>,
-) -> Result<ExitCode, String> {
+) -> crate::Result<ExitCode> {
     let say = |line: String| super::report_line(&line, to_stderr);
     let pixels = slicer.grid.slice_len();
     let table = BlistTable::compile(&scene.root);
@@ -1098,10 +1261,7 @@ fn report(
         warnings: scene.warnings.iter().map(|w| w.to_string()).collect(),
     };
     if a.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&r).map_err(|e| e.to_string())?
-        );
+        println!("{}", serde_json::to_string_pretty(&r)?);
     } else {
         say(format!(
             "{}: {}x{}x{} voxels, {} filled; {} frames, {} clocks ({:.3} s at 10 MHz); {:.3} s wall",
@@ -1191,7 +1351,7 @@ impl Values {
     }
 }
 
-fn write_preview(outs: &mut Outputs, out: Out, v: &Volume, grey: Values) -> Result<(), String> {
+fn write_preview(outs: &mut Outputs, out: Out, v: &Volume, grey: Values) -> crate::Result<()> {
     let views: Vec<_> = (0..3).rev().map(|a| view(v, a)).collect();
     let scale = (256 / v.dims.iter().copied().max().unwrap_or(1)).max(1);
     let width: usize = views.iter().map(|x| x.0 * scale + 4).sum();
@@ -1238,7 +1398,7 @@ fn shaded(codes: &[u32], depths: &[Option<f64>], values: Values) -> Vec<[u8; 3]>
 
 /// Every slice as `slice-KKKK.png` (palette colours, or grey values with `grey`), staged
 /// with the run's other outputs.
-fn write_slices(outs: &mut Outputs, dir: Out, v: &Volume, grey: Values) -> Result<(), String> {
+fn write_slices(outs: &mut Outputs, dir: Out, v: &Volume, grey: Values) -> crate::Result<()> {
     let [nx, ny, nz] = v.dims;
     for k in 0..nz {
         let mut img = image::RgbImage::new(nx as u32, ny as u32);

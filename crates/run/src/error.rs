@@ -1,0 +1,134 @@
+//! The run layer's error: every way a command can refuse or fail, typed, each variant one
+//! line as the command line prints it (`csgpix: MESSAGE`, exit status 2). The libraries'
+//! errors are kept whole ([`Error::Scene`], [`Error::Voxel`], …) so a caller (the Python
+//! binding) reads their fields, e.g. a scene error's file, line and column.
+
+use std::path::PathBuf;
+
+/// A command's error.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// A scene reader's or writer's error (located in its input where it has a place).
+    #[error(transparent)]
+    Scene(#[from] csgpix_scene::Error),
+    /// The voxelizer's.
+    #[error(transparent)]
+    Voxel(#[from] csgpix_voxel::Error),
+    /// Drawing a scene on the array.
+    #[error(transparent)]
+    Draw(#[from] csgpix_draw::Error),
+    /// Loading a scene for drawing.
+    #[error(transparent)]
+    Load(#[from] csgpix_draw::scenes::LoadError),
+    /// A voxel store's or sculpting's.
+    #[error(transparent)]
+    Sculpt(#[from] csgpix_sculpt::Error),
+    /// A Zarr store's.
+    #[error(transparent)]
+    Zarr(#[from] csgpix_zarr::Error),
+    /// A program the array cannot run (its stack, its windows).
+    #[error(transparent)]
+    Program(#[from] rtl_model::program::ProgramError),
+    /// The processor model's refusal (rtl-model's configuration checks, probes, golden
+    /// vectors, stimulus), one line.
+    #[error("{0}")]
+    Rtl(String),
+    /// A program that does not compile for the array, located in its scene
+    /// (`csgpix_draw::scenes::Scene::locate`), one line.
+    #[error("{0}")]
+    Compile(String),
+    /// Golden vectors that do not fit the table they are checked against.
+    #[error(transparent)]
+    Vectors(#[from] rtl_model::select::verify::VectorError),
+    /// A run refused before it allocated: over the memory limit.
+    #[error(transparent)]
+    Memory(#[from] crate::memory::OverMemory),
+    /// Options the command cannot take together, or one it needs and was not given: `flag`
+    /// names the option at fault, `message` says what to change (naming it).
+    #[error("{message}")]
+    Options {
+        /// The option at fault, as the command line spells it (`--json`, `--probe`, `-o`).
+        flag: &'static str,
+        /// The whole line.
+        message: String,
+    },
+    /// A file that could not be read or written.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// An error and what it happened to: an input's name, a flag (`what: source`).
+    #[error("{what}: {source}")]
+    Context {
+        /// The input or option it concerns.
+        what: String,
+        /// The error itself.
+        source: Box<Error>,
+    },
+    /// A chart that could not be drawn.
+    #[error(transparent)]
+    Plot(#[from] crate::plot::PlotError),
+    /// The worker threads could not be started.
+    #[error(transparent)]
+    Threads(#[from] rayon::ThreadPoolBuildError),
+    /// A report that could not be written as JSON.
+    #[error(transparent)]
+    Json(#[from] serde_json::Error),
+}
+
+/// A run's result.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+impl Error {
+    /// Options refused together or alone: `flag` the one at fault, `message` the line.
+    pub fn options(flag: &'static str, message: impl Into<String>) -> Error {
+        Error::Options {
+            flag,
+            message: message.into(),
+        }
+    }
+
+    /// This error, said of `what` (an input's name, a flag).
+    pub fn context(self, what: impl Into<String>) -> Error {
+        Error::Context {
+            what: what.into(),
+            source: Box::new(self),
+        }
+    }
+
+    /// The innermost scene error, where this error is one (or wraps one): its location is
+    /// where the problem is in an input.
+    pub fn scene(&self) -> Option<&csgpix_scene::Error> {
+        match self {
+            Error::Scene(e) => Some(e),
+            Error::Voxel(csgpix_voxel::Error::Scene(e)) => Some(e),
+            Error::Load(csgpix_draw::scenes::LoadError::Scene(e)) => Some(e),
+            Error::Context { source, .. } => source.scene(),
+            _ => None,
+        }
+    }
+}
+
+/// A flag's value that does not parse (clap's value parsers): the reason, one line, which
+/// clap prints after the flag and the value.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct BadValue(pub String);
+
+impl From<&str> for BadValue {
+    fn from(s: &str) -> BadValue {
+        BadValue(s.into())
+    }
+}
+
+impl From<String> for BadValue {
+    fn from(s: String) -> BadValue {
+        BadValue(s)
+    }
+}
+
+/// `Result` of a flag's value parser.
+pub type Parsed<T> = std::result::Result<T, BadValue>;
