@@ -472,6 +472,38 @@ fn voxelize_routes_and_models_agree_and_slices_are_written() {
         assert!(slices.join("slice-0009.png").exists());
     }
     assert!(volumes.iter().all(|v| *v == volumes[0]));
+    // Every slice's pixel indices are the volume's label codes (an indexed PNG), z by z.
+    let nrrd = &volumes[0];
+    let data = &nrrd[nrrd.len() - 1000..];
+    assert!(
+        data.iter().any(|&c| c > 1),
+        "the hollow cube has a colour code"
+    );
+    for k in 0..10 {
+        let png = d.path().join(format!("word-intervals/slice-{k:04}.png"));
+        let (size, indices, palette) = indexed_png(&png);
+        assert_eq!(size, (10, 10));
+        assert_eq!(indices, data[k * 100..(k + 1) * 100], "slice {k}");
+        // The colours shown are the palette's, an entry for every code up to the largest.
+        let top = *data.iter().max().unwrap() as usize;
+        assert_eq!(palette.len(), (top + 1) * 3);
+    }
+}
+
+/// An indexed PNG's size, pixel indices and palette (RGB triples, flattened).
+fn indexed_png(path: &std::path::Path) -> ((u32, u32), Vec<u8>, Vec<u8>) {
+    let file = std::io::BufReader::new(std::fs::File::open(path).unwrap());
+    let mut dec = png::Decoder::new(file);
+    dec.set_transformations(png::Transformations::IDENTITY);
+    let mut reader = dec.read_info().unwrap();
+    let info = reader.info();
+    assert_eq!(info.color_type, png::ColorType::Indexed);
+    let palette = info.palette.as_ref().unwrap().to_vec();
+    let size = (info.width, info.height);
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let frame = reader.next_frame(&mut buf).unwrap();
+    buf.truncate(frame.buffer_size());
+    (size, buf, palette)
 }
 
 /// `--eval blist` is the Blist of `csgpix blist`: its label width is reported, its counts are

@@ -7,7 +7,9 @@
 //! the `--json` reports of the voxelize cases and `bad-memory`'s message when the run route
 //! became the default (its route name, counts per run and memory estimate; every volume
 //! unchanged), and `bad-memory`'s message again when the run route's NRRD output came to be
-//! written slice by slice (the memory estimate without the volume; the files unchanged). A refactoring that changes no behaviour leaves every line equal. Timings (`*seconds*`, `*_s` JSON fields, `time` lines) are removed from
+//! written slice by slice (the memory estimate without the volume; the files unchanged), and
+//! the `--slices` PNGs when they became indexed PNGs whose pixel indices are the label codes.
+//! A refactoring that changes no behaviour leaves every line equal. Timings (`*seconds*`, `*_s` JSON fields, `time` lines) are removed from
 //! standard output before digesting: they are the only bytes that differ from run to run.
 //!
 //! To record the file from another binary (after a change that alters outputs on purpose):

@@ -119,7 +119,8 @@ pub struct Args {
     /// Default: until the largest side is at most 256, as far as the chunk depth halves.
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=32))]
     levels: Option<u16>,
-    /// Also write every slice as a PNG into this directory.
+    /// Also write every slice as a PNG into this directory: indexed, its pixel indices the
+    /// voxels' label codes (or grey values), shown in the palette's colours.
     #[arg(long)]
     slices: Option<PathBuf>,
     /// Also write a PNG of the volume seen along Z, Y and X (first filled voxel, shaded by
@@ -1396,18 +1397,21 @@ fn shaded(codes: &[u32], depths: &[Option<f64>], values: Values) -> Vec<[u8; 3]>
         .collect()
 }
 
-/// Every slice as `slice-KKKK.png` (palette colours, or grey values with `grey`), staged
-/// with the run's other outputs.
+/// Every slice as `slice-KKKK.png`, staged with the run's other outputs: an indexed PNG whose
+/// pixel indices are the voxels' values (label codes, or grey values with `grey`/`blend`),
+/// so the codes survive, shown in the palette's colours (or grey levels).
 fn write_slices(outs: &mut Outputs, dir: Out, v: &Volume, grey: Values) -> crate::Result<()> {
     let [nx, ny, nz] = v.dims;
+    // Entries up to the largest value of the volume: every slice's indices are in range.
+    let top = v.voxels.iter().copied().max().unwrap_or(0);
+    let palette: Vec<[u8; 3]> = (0..=top).map(|c| grey.rgb(c)).collect();
     for k in 0..nz {
-        let mut img = image::RgbImage::new(nx as u32, ny as u32);
-        for (i, &c) in v.voxels[k * nx * ny..(k + 1) * nx * ny].iter().enumerate() {
-            let px = grey.rgb(c);
-            img.put_pixel((i % nx) as u32, (i / nx) as u32, image::Rgb(px));
-        }
+        let slice = &v.voxels[k * nx * ny..(k + 1) * nx * ny];
         let name = format!("slice-{k:04}.png");
-        outs.write_in(dir, &name, |w| crate::png::write_png(w, &img))?;
+        let size = (nx as u32, ny as u32);
+        outs.write_in(dir, &name, |w| {
+            crate::png::write_indexed_png(w, size, slice, &palette)
+        })?;
     }
     Ok(())
 }
