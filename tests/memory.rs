@@ -131,7 +131,9 @@ fn a_streamed_volume_is_larger_than_the_address_space() {
     let whole = args(&b);
     let mut whole: Vec<&str> = whole.iter().map(String::as_str).collect();
     whole.extend(["--route", "intervals"]);
-    assert!(common::csgpix(&whole).status.success());
+    let held = common::csgpix(&whole);
+    let err = String::from_utf8_lossy(&held.stderr);
+    assert!(held.status.success(), "{err}");
     let (x, y) = (std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
     assert!(
         x.len() > 1 << 30 && x == y,

@@ -1,6 +1,6 @@
 """Voxelizing past one machine: one volume's bricks as Dask tasks (docs/scale-out.md).
 
-A volume is a Zarr v3 array (``csgpix voxelize --format zarr``, docs/zarr.md) whose chunks
+A volume is a Zarr v3 array (``csgpix voxelize -o OUT.zarr``, docs/zarr.md) whose chunks
 are ``chunk`` slabs deep: a *chunk row* is every chunk of those slabs, and a *brick* is a
 chunk row's columns of one XY *tile* (the least square of columns that holds whole shard
 files at every level of the pyramid: a shard's side, 4096 voxels by default). The driver
@@ -94,7 +94,7 @@ def voxelize_zarr(
     """Voxelize ``scene`` into the Zarr volume ``out`` (a new directory), chunk rows as
     tasks of the Dask ``client`` (``dask.distributed.Client``), or in this process when
     ``client`` is None (one call over every row). Grid and run options are those of :func:`csgpix.voxelize`; ``chunk``
-    is N or (Z, Y, X) voxels; ``shard`` chunks a shard side (``"none"`` or 1: one file a
+    is N or (X, Y, Z) voxels (as ``res``); ``shard`` chunks a shard side (``"none"`` or 1: one file a
     chunk); ``levels`` the multiscale pyramid's (default: the command line's, until the
     largest side is at most 256); each task writes its bricks at every level, since a brick
     of level 0 makes the same scene's brick of each coarser level (docs/zarr.md). A task is

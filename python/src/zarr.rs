@@ -26,7 +26,7 @@ fn zarr(e: csgpix_zarr::Error) -> PyErr {
     }
 }
 
-/// `chunk` as N or (Z, Y, X).
+/// `chunk` as N or (X, Y, Z), as `res` is; held (Z, Y, X), the array's order.
 fn chunk_shape(chunk: Option<&Bound<'_, PyAny>>) -> PyResult<[usize; 3]> {
     let Some(c) = chunk else {
         return Ok([DEFAULT_CHUNK; 3]);
@@ -34,8 +34,10 @@ fn chunk_shape(chunk: Option<&Bound<'_, PyAny>>) -> PyResult<[usize; 3]> {
     if let Ok(n) = c.extract::<usize>() {
         return Ok([n; 3]);
     }
-    c.extract::<[usize; 3]>()
-        .map_err(|_| text("chunk: an int N or a tuple (Z, Y, X)".into()))
+    let [x, y, z] = c
+        .extract::<[usize; 3]>()
+        .map_err(|_| text("chunk: an int N or a tuple (X, Y, Z)".into()))?;
+    Ok([z, y, x])
 }
 
 /// `shard` as N chunks a side, "none" for no shards (1), or the default when not given.

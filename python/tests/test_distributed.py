@@ -50,13 +50,13 @@ def client():
 @pytest.mark.parametrize(
     "scene,args,kw",
     [
-        ("csg-logo.csg", ["--res", "48x40x50", "--chunk", "8x16x16"], dict(res=(48, 40, 50), chunk=(8, 16, 16))),
+        ("csg-logo.csg", ["--res", "48x40x50", "--chunk", "16x16x8"], dict(res=(48, 40, 50), chunk=(16, 16, 8))),
         ("figure-5.6.csg", ["--res", "40", "--grey", "--chunk", "7"], dict(res=40, grey=True, chunk=7)),
         # Sharded with a pyramid: each task writes its rows of every level.
         (
             "twelve.csg",
-            ["--res", "44x40x36", "--chunk", "4x8x8", "--shard", "2", "--levels", "3"],
-            dict(res=(44, 40, 36), chunk=(4, 8, 8), shard=2, levels=3),
+            ["--res", "44x40x36", "--chunk", "8x8x4", "--shard", "2", "--levels", "3"],
+            dict(res=(44, 40, 36), chunk=(8, 8, 4), shard=2, levels=3),
         ),
         ("csg-logo.csg", ["--res", "30", "--chunk", "4", "--shard", "none", "--levels", "2"],
          dict(res=30, chunk=4, shard="none", levels=2)),

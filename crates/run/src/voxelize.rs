@@ -41,7 +41,7 @@ use super::EquationsArg;
     csgpix voxelize vectors/scenes/cube-minus-cylinder.csg --voxel 0.5 --pad 1 --mesh part.stl -o part.nrrd\n  \
     csgpix voxelize vectors/scenes/hollow-cube.csg --res 32 --sampling slab -o thesis-slabs.nrrd\n  \
     csgpix voxelize vectors/scenes/figure-5.6.csg --res 64 --grey -o head.nrrd\n  \
-    csgpix voxelize vectors/scenes/twelve.csg --res 1024 --format zarr --chunk 64 -o twelve.zarr\n  \
+    csgpix voxelize vectors/scenes/twelve.csg --res 1024 --chunk 64 -o twelve.zarr\n  \
     csgpix voxelize --expr '(head + box) - hole' --prim head=vectors/scenes/phantom.nrrd,threshold=300 \\\n    \
     --prim box=vectors/scenes/figure-5.2.csg --prim hole=part.stl --res 64 --blend max -o blend.nrrd")]
 pub struct Args {
@@ -93,28 +93,29 @@ pub struct Args {
     /// footprint touches; `whole` simulates the whole array for every frame. Same voxels.
     #[arg(long, default_value = "32x32", value_parser = parse_panel)]
     panel: PanelArg,
-    /// Output NRRD volume (uint8 colour codes, 0 empty); with --format zarr an OME-Zarr
-    /// store, a directory named *.zarr.
+    /// Output: a NRRD volume (`*.nrrd`, uint8 colour codes, 0 empty; `-` for standard
+    /// output) or an OME-Zarr store (a directory `*.zarr`): the extension says which.
     #[arg(short = 'o', long)]
     out: PathBuf,
-    /// `nrrd`: one file, written slice by slice on the run route when nothing else needs the
+    /// What -o is, where its extension does not say (by default: `zarr` for *.zarr, else
+    /// `nrrd`). `nrrd`: one file, written slice by slice on the run route when nothing else needs the
     /// volume (no --preview, --slices, --mesh or --store), else assembled in memory. `zarr`:
     /// an OME-Zarr 0.5 (Zarr v3) store written a brick (a chunk row of one XY tile) at a time
     /// on the run route, a chunk row at a time otherwise, so memory does not grow with the
     /// grid's depth (docs/zarr.md); not with --preview, --slices, --mesh or --store.
-    #[arg(long, value_enum, default_value_t)]
-    format: FormatArg,
-    /// --format zarr: the chunk shape, N for N×N×N or ZxYxX in the array's order (Z first, as
-    /// zarr-python reports `chunks`; unlike --res's X×Y×Z); each side cut to the grid's.
+    #[arg(long, value_enum)]
+    format: Option<FormatArg>,
+    /// Zarr store: the chunk shape, N for N×N×N or XxYxZ as --res (the store's `chunk_shape`
+    /// is Z, Y, X, the array's order); each side cut to the grid's.
     /// Memory holds one chunk row: Z × NY × NX bytes.
     #[arg(long, value_parser = parse_chunk)]
     chunk: Option<[usize; 3]>,
-    /// --format zarr: chunks per shard side across Y and X (a shard file is one chunk deep
+    /// Zarr store: chunks per shard side across Y and X (a shard file is one chunk deep
     /// and N×N chunks wide, cut to the grid), or `none` (or 1) for one file per chunk.
     /// Costs no memory: shards are written a chunk at a time. Default 64.
     #[arg(long, value_parser = parse_shard)]
     shard: Option<usize>,
-    /// --format zarr: multiscale levels, 1 for none; each halves every axis of the one
+    /// Zarr store: multiscale levels, 1 for none; each halves every axis of the one
     /// before, a voxel taking the most frequent non-zero label of its 8 (docs/zarr.md).
     /// Default: until the largest side is at most 256, as far as the chunk depth halves.
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=32))]
@@ -473,14 +474,15 @@ pub fn parse_res(s: &str) -> crate::error::Parsed<[usize; 3]> {
     Ok(dims)
 }
 
-/// `--chunk`: N (a cube) or ZxYxX, each side 1..=65536.
+/// `--chunk`: N (a cube) or XxYxZ, each side 1..=65536; held Z, Y, X.
 fn parse_chunk(s: &str) -> crate::error::Parsed<[usize; 3]> {
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
     let parts: Vec<&str> = s.split(['x', 'X']).collect();
     let chunk = match parts[..] {
         [a] => [n(a)?; 3],
-        [z, y, x] => [n(z)?, n(y)?, n(x)?],
-        _ => return Err("expected N or ZxYxX, e.g. 64 or 16x256x256".into()),
+        // Given X×Y×Z as --res is; held Z, Y, X as the array's (and zarr-python's) order.
+        [x, y, z] => [n(z)?, n(y)?, n(x)?],
+        _ => return Err("expected N or XxYxZ, e.g. 64 or 256x256x16".into()),
     };
     if chunk.iter().any(|&c| c == 0 || c > 65536) {
         return Err(crate::error::BadValue(format!(
@@ -619,6 +621,16 @@ pub fn parse_blend(s: &str) -> crate::error::Parsed<Union> {
 
 /// What the run names its input in messages and the NRRD comment.
 impl Args {
+    /// The output's format: `--format`, else `-o`'s extension (`.zarr` a Zarr store, else
+    /// NRRD).
+    pub fn format(&self) -> FormatArg {
+        let zarr = self.out.extension().is_some_and(|e| e == "zarr");
+        self.format.unwrap_or(match zarr {
+            true => FormatArg::Zarr,
+            false => FormatArg::Nrrd,
+        })
+    }
+
     /// The options that decide the voxels, as flags gave them.
     pub fn voxelization(&self) -> Voxelization {
         Voxelization {
@@ -687,7 +699,7 @@ pub fn flag_message(e: VoxelError) -> Error {
 /// `--format zarr` with what it cannot do, refused in one line before anything is named:
 /// the options that need the whole volume in memory, and standard output.
 fn check_format(a: &Args) -> crate::Result<()> {
-    if a.format == FormatArg::Nrrd {
+    if a.format() == FormatArg::Nrrd {
         let zarr_only = [
             ("--chunk", a.chunk.is_some()),
             ("--shard", a.shard.is_some()),
@@ -696,7 +708,7 @@ fn check_format(a: &Args) -> crate::Result<()> {
         return match zarr_only.iter().find(|(_, given)| *given) {
             Some((flag, _)) => Err(Error::options(
                 flag,
-                format!("{flag} applies to --format zarr only"),
+                format!("{flag} applies to a Zarr store only (-o OUT.zarr)"),
             )),
             None => Ok(()),
         };
@@ -715,8 +727,8 @@ fn check_format(a: &Args) -> crate::Result<()> {
         Some((flag, _)) => Err(Error::options(
             flag,
             format!(
-                "{flag} needs the whole volume in memory: not with --format zarr, which \
-                 writes a chunk row at a time (use --format nrrd)"
+                "{flag} needs the whole volume in memory: not with a Zarr store, which is \
+                 written a brick at a time (write a .nrrd file)"
             ),
         )),
         None => Ok(()),
@@ -735,7 +747,7 @@ struct Named {
 
 fn name_outputs(a: &Args) -> crate::Result<Named> {
     let mut outs = Outputs::new();
-    let nrrd = match a.format {
+    let nrrd = match a.format() {
         FormatArg::Nrrd => outs.file_or_stdout("-o", &a.out, &["nrrd"])?,
         FormatArg::Zarr => outs.tree("-o", &a.out, &["zarr"], "zarr.json")?,
     };
@@ -793,7 +805,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     let route = vox.route(&slicer);
     // The run route's NRRD estimates, with and without the volume: they decide whether the
     // file is streamed, and the one that applies is the run's.
-    let runs_nrrd = (matches!(route, Route::Runs { .. }) && a.format == FormatArg::Nrrd)
+    let runs_nrrd = (matches!(route, Route::Runs { .. }) && a.format() == FormatArg::Nrrd)
         .then(|| csgpix_voxel::runs::memory_estimates(&slicer, eval.as_ref(), threads));
     let stream = streams(&a, route, runs_nrrd);
     let need = estimate(
@@ -805,7 +817,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         &layout,
         (stream, runs_nrrd),
     )?;
-    let fix = match a.format {
+    let fix = match a.format() {
         FormatArg::Nrrd => "lower --res",
         FormatArg::Zarr => "lower --res or --chunk",
     };
@@ -817,7 +829,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         .num_threads(threads)
         .build()?;
     let tick = || bar.inc(1);
-    if a.format == FormatArg::Zarr {
+    if a.format() == FormatArg::Zarr {
         let root = named.outs.stage_root(named.nrrd)?;
         let attrs = VolumeAttrs::new(
             format!("csgpix voxelize {name}"),
@@ -946,7 +958,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
 fn streams(a: &Args, route: Route, runs_nrrd: Option<[u64; 2]>) -> bool {
     let alone = a.slices.is_none() && a.preview.is_none() && a.mesh.is_none();
     let runs = matches!(route, Route::Runs { .. });
-    let eligible = a.format == FormatArg::Nrrd && a.store.is_none() && alone && runs;
+    let eligible = a.format() == FormatArg::Nrrd && a.store.is_none() && alone && runs;
     eligible && runs_nrrd.is_some_and(|[swept, whole]| swept <= whole)
 }
 
@@ -1019,8 +1031,8 @@ fn estimate(
     let prims = slicer.primitive_count();
     let runs = matches!(route, Route::Runs { .. });
     // Streamed, the NRRD output holds the runs and a slice, as a Zarr row sweep does.
-    let whole_volume = a.format == FormatArg::Nrrd && a.store.is_none() && !stream;
-    let mut need = match (runs, a.format) {
+    let whole_volume = a.format() == FormatArg::Nrrd && a.store.is_none() && !stream;
+    let mut need = match (runs, a.format()) {
         (true, FormatArg::Nrrd) => runs_nrrd
             .unwrap_or_else(|| csgpix_voxel::runs::memory_estimates(slicer, eval, threads))
             [usize::from(whole_volume)],
