@@ -71,6 +71,25 @@ class Volume:
     def __array__(self, dtype=None, copy=None):
         return self.data if dtype is None else self.data.astype(dtype)
 
+    @property
+    def shape(self) -> Tuple[int, int, int]:
+        """The shape of ``data``: (slabs held, NY, NX)."""
+        return self.data.shape
+
+    @property
+    def dtype(self) -> np.dtype:
+        """``data``'s type: uint8."""
+        return self.data.dtype
+
+    def to_mesh(self, max_memory: Optional[int] = None) -> Tuple[np.ndarray, np.ndarray]:
+        """The surface of the voxels held, as ``csgpix voxelize --mesh`` writes it (global
+        Marching Cubes over the optimized octree, closed and wound outward, in scene units):
+        ``(vertices, faces)``, float32 (V, 3) and uint32 (F, 3), welded; e.g.
+        ``trimesh.Trimesh(*vol.to_mesh())`` is watertight. ``max_memory`` (MiB) as for
+        :func:`voxelize`."""
+        origin = self.centre(0, 0, self.z[0])
+        return _native.mesh(self.data, origin, self.spacing, max_memory=max_memory)
+
     def centre(self, i: int, j: int, k: int) -> Vec3:
         """Centre of voxel (i, j, k) of the grid, in scene units."""
         return tuple(o + n * s for o, n, s in zip(self.origin, (i, j, k), self.spacing))
@@ -133,17 +152,18 @@ class Image:
 
 def render(
     program: Union[Program, str, Sequence[str]],
-    width: int = 256,
-    height: int = 256,
+    width: int = 250,
+    height: int = 250,
     *,
-    model: str = "word",
+    model: str = "cycle",
     equations: str = "derived",
     clip: Optional[str] = None,
     view: str = "iso",
 ) -> Image:
     """Render a compiled :class:`Program`, or compile the scene path(s) first (display lists
     ``.dl``, clipped by ``clip`` over A, B, ...; or one ``.csg``/``.scad`` along ``view``),
-    on the ``cycle`` or ``word`` model of the array or the ``float`` reference."""
+    on the ``cycle`` or ``word`` model of the array or the ``float`` reference. The defaults
+    are the command line's: a 250×250 array (the thesis's window), the ``cycle`` model."""
     if not isinstance(program, Program):
         program = compile(program, width, height, clip=clip, view=view)
     codes, cycles = _native.render(program, model, equations)

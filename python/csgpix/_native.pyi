@@ -46,6 +46,13 @@ def voxelize(
     z: Optional[Tuple[int, int]] = None,
     max_memory: Optional[int] = None,
 ) -> Tuple[npt.NDArray[np.uint8], _Vec3, _Vec3, Tuple[int, int, int]]: ...
+def mesh(
+    data: npt.NDArray[np.uint8],
+    origin: _Vec3,
+    spacing: _Vec3,
+    *,
+    max_memory: Optional[int] = None,
+) -> Tuple[npt.NDArray[np.float32], npt.NDArray[np.uint32]]: ...
 
 # --- drawing on the array ----------------------------------------------------------------
 
@@ -60,15 +67,15 @@ class Program:
 
 def compile(
     scene: Union[_Path, Sequence[_Path]],
-    width: int = 256,
-    height: int = 256,
+    width: int = 250,
+    height: int = 250,
     *,
     clip: Optional[str] = None,
     view: str = "iso",
     word: str = "10/10/11",
 ) -> Program: ...
 def render(
-    program: Program, model: str = "word", equations: str = "derived"
+    program: Program, model: str = "cycle", equations: str = "derived"
 ) -> Tuple[npt.NDArray[np.uint8], int]: ...
 def palette() -> npt.NDArray[np.uint8]: ...
 def verify_select(

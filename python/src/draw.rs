@@ -8,19 +8,17 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use csgpix_draw::compile::{check_window, clip_scene_ops, scene_ops};
 use csgpix_draw::float::{self, ScreenRule};
 use csgpix_draw::project::View;
 use csgpix_draw::scenes::Scene;
 use csgpix_draw::Model;
 use rtl_model::program::{CReg, Op};
-use rtl_model::select::pla::Pla;
-use rtl_model::select::verify::verify_table;
-use rtl_model::select::GOLDEN;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 
-use crate::errors::{load, text};
+use crate::errors::text;
 use crate::voxel::word_format;
+use csgpix_run::error::BadValue;
+use csgpix_run::{EquationsArg, ViewArg};
 
 /// The array's program for a scene, and the configuration it was compiled for.
 #[pyclass(module = "csgpix._native", frozen)]
@@ -73,22 +71,20 @@ impl Program {
     }
 }
 
-/// `derived` or `printed` select equations (§2.3.3).
+/// `derived` or `printed` select equations (§2.3.3), as `--equations`.
+fn equations_arg(name: &str) -> PyResult<Equations> {
+    let e: EquationsArg = name.parse().map_err(|e: BadValue| text(e.to_string()))?;
+    Ok(e.into())
+}
+
+/// The set of [`equations_arg`] `name`.
 pub fn equation_set(name: &str) -> PyResult<rtl_model::EquationSet> {
-    match name {
-        "derived" => Ok(Equations::Derived.set()),
-        "printed" => Ok(Equations::Printed.set()),
-        e => Err(text(format!("equations {e:?}: `derived` or `printed`"))),
-    }
+    Ok(equations_arg(name)?.set())
 }
 
 fn view(name: &str) -> PyResult<View> {
-    match name {
-        "iso" => Ok(View::Iso),
-        "top" => Ok(View::Top),
-        "front" => Ok(View::Front),
-        v => Err(text(format!("view {v:?}: `iso`, `top` or `front`"))),
-    }
+    let v: ViewArg = name.parse().map_err(|e: BadValue| text(e.to_string()))?;
+    Ok(v.into())
 }
 
 /// The scene's paths: one path or a list of them.
@@ -104,7 +100,7 @@ fn paths(scene: &Bound<'_, PyAny>) -> PyResult<Vec<PathBuf>> {
 /// Compile display lists (`.dl`, composed, or clipped by `clip` over objects A, B, … in
 /// order) or one `.csg`/`.scad` scene (projected along `view`) for a `width`×`height` array.
 #[pyfunction]
-#[pyo3(signature = (scene, width=256, height=256, *, clip=None, view="iso", word="10/10/11"))]
+#[pyo3(signature = (scene, width=250, height=250, *, clip=None, view="iso", word="10/10/11"))]
 pub fn compile(
     scene: &Bound<'_, PyAny>,
     width: usize,
@@ -117,15 +113,8 @@ pub fn compile(
     cfg.fmt = word_format(word)?;
     cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
     cfg.check().map_err(text)?;
-    let scene = Scene::load(&paths(scene)?, clip, self::view(view)?, &cfg).map_err(load)?;
-    check_window(&scene.lists, &cfg.fmt, width, height)
-        .map_err(|(i, e)| text(scene.locate(i, &e)))?;
-    let ops = match (&scene.clip, scene.empty) {
-        (_, true) => Ok(vec![]),
-        (None, false) => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
-        (Some(expr), false) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
-    }
-    .map_err(|(i, e)| text(scene.locate(i, &e)))?;
+    let (scene, ops) = csgpix_run::render::compile(&paths(scene)?, clip, self::view(view)?, &cfg)
+        .map_err(crate::errors::run)?;
     cfg.stack_depth = cfg
         .stack_depth
         .max(rtl_model::array::check_program(&ops, usize::MAX).map_err(|e| text(e.to_string()))?);
@@ -135,7 +124,7 @@ pub fn compile(
 /// Run `program` on a model (`cycle`, `word` or the `float` reference) and return the image:
 /// every pixel's colour code (G), shape (height, width), uint8, and the clocks taken.
 #[pyfunction]
-#[pyo3(signature = (program, model="word", equations="derived"))]
+#[pyo3(signature = (program, model="cycle", equations="derived"))]
 pub fn render<'py>(
     py: Python<'py>,
     program: &Program,
@@ -193,22 +182,11 @@ pub fn verify_select<'py>(
     equations: &str,
     vectors: Option<PathBuf>,
 ) -> PyResult<Vec<Bound<'py, PyDict>>> {
-    let set = equation_set(equations)?;
+    let reports = csgpix_run::verify_select::verify(equations_arg(equations)?, &vectors)
+        .map_err(crate::errors::run)?;
     let mut out = vec![];
-    for (t, builtin) in GOLDEN {
-        let (name, body) = match &vectors {
-            Some(d) => {
-                let p = d.join(format!("{}.pla", t.name()));
-                let body = csgpix_scene::input::read_text(&p).map_err(crate::errors::scene)?;
-                (p.display().to_string(), body)
-            }
-            None => (
-                format!("vectors/select/{}.pla", t.name()),
-                builtin.to_string(),
-            ),
-        };
-        let pla = Pla::parse(&body).map_err(|e| text(format!("{name}:{e}")))?;
-        for r in verify_table(&set, t, &pla).map_err(|e| text(e.to_string()))? {
+    {
+        for r in reports {
             let d = PyDict::new(py);
             d.set_item("signal", &r.signal)?;
             d.set_item("rows", r.rows)?;

@@ -75,11 +75,17 @@ pub fn voxel(e: csgpix_voxel::Error) -> PyErr {
     }
 }
 
-/// A scene that could not be loaded for drawing.
-pub fn load(e: csgpix_draw::scenes::LoadError) -> PyErr {
-    use csgpix_draw::scenes::LoadError;
-    match e {
-        LoadError::Scene(e) => scene(e),
-        e => text(e.to_string()),
+/// An error of the run layer: a scene error's place is in the error.
+pub fn run(e: csgpix_run::Error) -> PyErr {
+    match e.scene() {
+        Some(s) => {
+            let place = s.location.as_ref().map(|l| Place {
+                file: l.file.clone(),
+                line: l.line,
+                col: l.col,
+            });
+            error(e.to_string(), place)
+        }
+        None => text(e.to_string()),
     }
 }

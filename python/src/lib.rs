@@ -17,6 +17,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(voxel::load, m)?)?;
     m.add_function(wrap_pyfunction!(voxel::load_expr, m)?)?;
     m.add_function(wrap_pyfunction!(voxel::voxelize, m)?)?;
+    m.add_function(wrap_pyfunction!(voxel::mesh, m)?)?;
     m.add_class::<draw::Program>()?;
     m.add_function(wrap_pyfunction!(draw::compile, m)?)?;
     m.add_function(wrap_pyfunction!(draw::render, m)?)?;

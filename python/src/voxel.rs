@@ -344,3 +344,43 @@ pub fn voxelize<'py>(
         grid.dims,
     ))
 }
+
+/// The surface of a volume (`data[k, j, i]`, uint8, 0 empty) on its grid (`origin` the centre
+/// of voxel (0, 0, 0), `spacing` the voxel's size, both x, y, z) as `csgpix voxelize --mesh`
+/// makes it: global Marching Cubes over the optimized octree, closed and wound outward, in
+/// scene units. Returns the welded vertices (float32, shape (V, 3)) and faces (uint32, shape
+/// (F, 3)), a trimesh-compatible pair.
+#[pyfunction]
+#[pyo3(signature = (data, origin, spacing, *, max_memory=None))]
+#[allow(clippy::type_complexity)]
+pub fn mesh<'py>(
+    py: Python<'py>,
+    data: numpy::PyReadonlyArray3<'py, u8>,
+    origin: [f64; 3],
+    spacing: [f64; 3],
+    max_memory: Option<u64>,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    let array = data.as_array();
+    let &[nz, ny, nx] = array.shape() else {
+        return Err(text("data: a 3-dimensional array, [k, j, i]".into()));
+    };
+    let dims = [nx, ny, nz];
+    let (o, s) = (DVec3::from_array(origin), DVec3::from_array(spacing));
+    let grid = Grid::new(
+        dims,
+        o - s / 2.0,
+        o - s / 2.0 + s * DVec3::new(nx as f64, ny as f64, nz as f64),
+    )
+    .map_err(crate::errors::scene)?;
+    let voxels = array.iter().copied().collect();
+    let volume = csgpix_voxel::Volume { dims, voxels };
+    let limit = Limit::new(max_memory, "max_memory");
+    let (tris, _) = py
+        .detach(|| csgpix_run::voxelize::mesh(&grid, &volume, limit.bytes()))
+        .map_err(crate::errors::run)?;
+    let (vertices, faces) = csgpix_scene::mesh::indexed(&tris);
+    let (nv, nf) = (vertices.len(), faces.len());
+    let v = PyArray1::from_vec(py, vertices.into_iter().flatten().collect()).reshape([nv, 3])?;
+    let f = PyArray1::from_vec(py, faces.into_iter().flatten().collect()).reshape([nf, 3])?;
+    Ok((v.into_any(), f.into_any()))
+}

@@ -180,15 +180,7 @@ pub fn zarr_write_rows<'py>(
                         tiles,
                     )
                 }
-                None => voxelize_rows(
-                    &slicer,
-                    route,
-                    set,
-                    eval.as_ref(),
-                    &|| {},
-                    &store,
-                    rows,
-                ),
+                None => voxelize_rows(&slicer, route, set, eval.as_ref(), &|| {}, &store, rows),
             })
         })
         .map_err(zarr)?;

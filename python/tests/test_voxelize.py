@@ -140,6 +140,7 @@ def test_bad_arguments_are_one_line_errors(call, words):
 def test_the_volume_is_an_array():
     vol = csgpix.voxelize(str(SCENES / "figure-5.2.csg"), 16)
     assert np.asarray(vol) is vol.data
+    assert vol.shape == vol.data.shape == (16, 16, 16) and vol.dtype == np.uint8
     i, j, k = 3, 4, 5
     assert np.allclose(vol.centre(i, j, k), np.add(vol.origin, np.multiply((i, j, k), vol.spacing)))
 
@@ -151,3 +152,27 @@ def test_a_run_over_the_memory_limit_is_refused_before_it_allocates():
     # A slab range holds its slabs only: the same grid fits in a few slabs.
     part = csgpix.voxelize(scene, (64, 64, 4096), z=(0, 2), max_memory=64)
     assert part.data.shape == (2, 64, 64)
+
+
+def test_to_mesh_is_the_command_lines_mesh(tmp):
+    """``Volume.to_mesh()`` is ``--mesh``'s surface: the same triangles and vertices, closed."""
+    scene = SCENES / "figure-5.2.csg"
+    obj = tmp / "m.obj"
+    r = run_cli("voxelize", str(scene), "--res", "24", "--mesh", str(obj), "--json",
+                "-o", str(tmp / "v.nrrd"))
+    assert r.returncode == 0, r.stderr
+    report = json.loads(r.stdout)
+    vertices, faces = csgpix.voxelize(str(scene), 24).to_mesh()
+    assert vertices.dtype == np.float32 and faces.dtype == np.uint32
+    assert faces.shape == (report["mesh_triangles"], 3)
+    # Closed: every edge is in exactly two triangles, once each way.
+    edges = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]])
+    directed = {tuple(e) for e in edges.tolist()}
+    assert len(directed) == len(edges) and all((b, a) in directed for a, b in directed)
+    lines = obj.read_text().splitlines()
+    want = np.array([[float(x) for x in l.split()[1:4]] for l in lines if l.startswith("v ")])
+    assert want.shape == vertices.shape
+    assert np.allclose(np.sort(want, axis=0), np.sort(vertices, axis=0), atol=1e-4)
+    # A slab range meshes the slabs it holds, in the same scene units.
+    part = csgpix.voxelize(str(scene), 24, z=(0, 12)).to_mesh()[0]
+    assert part[:, 2].max() < vertices[:, 2].max() and np.isclose(part[:, 2].min(), vertices[:, 2].min())

@@ -82,6 +82,28 @@ struct Report {
     wall_seconds: f64,
 }
 
+/// Load display lists (composed, or clipped by `clip` over objects A, B, … in order, §5.2.1)
+/// or one `.csg` scene (projected along `view`) and compile them for the array `cfg`: the
+/// scene and its program, every plane checked to fit the window.
+pub fn compile(
+    scenes: &[PathBuf],
+    clip: Option<&str>,
+    view: csgpix_draw::project::View,
+    cfg: &rtl_model::ArrayConfig,
+) -> crate::Result<(Scene, Vec<Op>)> {
+    let scene = Scene::load(scenes, clip, view, cfg).map_err(super::lib_errors::load)?;
+    let locate = |(i, e)| Error::Compile(scene.locate(i, &e));
+    csgpix_draw::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
+        .map_err(locate)?;
+    let compiled = match (&scene.clip, scene.empty) {
+        (_, true) => Ok(vec![]),
+        (None, false) => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
+        (Some(expr), false) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
+    };
+    let ops = compiled.map_err(locate)?;
+    Ok((scene, ops))
+}
+
 pub fn run(a: Args) -> crate::Result<ExitCode> {
     let mut outs = Outputs::new();
     let png = outs.file_or_stdout("-o", &a.out, &["png"])?;
@@ -96,16 +118,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     a.array
         .mem
         .check(memory_estimate(&a, &cfg), "this render", "lower --size")?;
-    let scene = Scene::load(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)
-        .map_err(super::lib_errors::load)?;
-    csgpix_draw::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
-        .map_err(|(i, e)| Error::Compile(scene.locate(i, &e)))?;
-    let compiled = match (&scene.clip, scene.empty) {
-        (_, true) => Ok(vec![]),
-        (None, false) => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
-        (Some(expr), false) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
-    };
-    let ops = compiled.map_err(|(i, e)| Error::Compile(scene.locate(i, &e)))?;
+    let (scene, ops) = compile(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)?;
     let t0 = Instant::now();
     let mut stack_levels = 0;
     let mut simulated = None;

@@ -42,14 +42,21 @@ fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> crate::Result<Pla> {
     Pla::parse(&text).map_err(|e| csgpix_scene::Error::at(name, e.line, e.col, e.msg).into())
 }
 
-pub fn run(a: Args) -> crate::Result<ExitCode> {
-    let eq: Equations = a.equations.into();
+/// Every signal of `eq` checked on every care row of the golden vectors (§2.3.3): the
+/// built-in ones, or the `.pla` files of directory `vectors`.
+pub fn verify(eq: Equations, vectors: &Option<PathBuf>) -> crate::Result<Vec<SignalReport>> {
     let set = eq.set();
     let mut reports: Vec<SignalReport> = vec![];
     for (t, text) in GOLDEN {
-        let pla = load(&a.vectors, t, text)?;
+        let pla = load(vectors, t, text)?;
         reports.extend(verify_table(&set, t, &pla)?);
     }
+    Ok(reports)
+}
+
+pub fn run(a: Args) -> crate::Result<ExitCode> {
+    let eq: Equations = a.equations.into();
+    let reports = verify(eq, &a.vectors)?;
     let bad: usize = reports.iter().map(|r| r.mismatches.len()).sum();
     if a.json {
         println!("{}", serde_json::to_string_pretty(&reports)?);

@@ -236,26 +236,7 @@ impl SamplingArg {
     }
 }
 
-/// The flags' value names as [`FromStr`](std::str::FromStr), for the Python binding's keyword
-/// arguments: one spelling of every value, the command line's.
-macro_rules! from_value_name {
-    ($($t:ty: $what:literal),*) => {$(
-        impl std::str::FromStr for $t {
-            type Err = crate::error::BadValue;
-            fn from_str(s: &str) -> crate::error::Parsed<Self> {
-                <$t as ValueEnum>::from_str(s, false).map_err(|_| {
-                    let names: Vec<String> = <$t as ValueEnum>::value_variants()
-                        .iter()
-                        .filter_map(|v| v.to_possible_value())
-                        .map(|v| format!("`{}`", v.get_name()))
-                        .collect();
-                    crate::error::BadValue(format!("{} {s:?}: {}", $what, names.join(", ")))
-                })
-            }
-        }
-    )*};
-}
-from_value_name!(SamplingArg: "sampling", RouteArg: "route", EvalArg: "eval", FormatArg: "format");
+crate::from_value_name!(SamplingArg: "sampling", RouteArg: "route", EvalArg: "eval", FormatArg: "format");
 
 /// What decides a voxelization's voxels beside its grid: the flags `voxelize` reads and the
 /// Python binding's keyword arguments, the same options for both.
@@ -1096,8 +1077,7 @@ struct MeshReport {
 /// and the writer's welded vertices; measured 196-404 bytes (docs/memory.md).
 const MESH_BYTES_PER_SURFACE_VOXEL: u64 = 420;
 
-/// The volume's surface by global Marching Cubes, in scene units (`--mesh`): closed, as the
-/// cells past the grid's far faces are meshed too (docs/octree.md).
+/// Write the volume's surface (`--mesh`, [`mesh`]) and report it.
 fn write_mesh(
     outs: &mut Outputs,
     (out, format): (Out, csgpix_scene::mesh::Format),
@@ -1106,6 +1086,25 @@ fn write_mesh(
     budget: u64,
     comment: &str,
 ) -> crate::Result<MeshReport> {
+    let (tris, need) = mesh(grid, v, budget)?;
+    outs.write(out, |w| {
+        csgpix_scene::mesh::write_format(w, format, &tris, comment)
+    })?;
+    Ok(MeshReport {
+        mesh_triangles: tris.len(),
+        mesh_memory_estimate: need,
+        mesh_open_edges: csgpix_scene::mesh::open_edges(&tris),
+    })
+}
+
+/// The surface of `v` on `grid` by global Marching Cubes over the optimized octree, in scene
+/// units: closed and wound outward, as the cells past the grid's far faces are meshed too
+/// (docs/octree.md); and its memory estimate, refused when over `budget` bytes.
+pub fn mesh(
+    grid: &Grid,
+    v: &Volume,
+    budget: u64,
+) -> crate::Result<(Vec<csgpix_scene::mesh::Tri>, u64)> {
     let surface = csgpix_voxel::surface_voxels(v);
     let need = octree::memory_estimate(octree::StoreKind::Octree, v.dims)?
         .saturating_add(surface.saturating_mul(MESH_BYTES_PER_SURFACE_VOXEL));
@@ -1124,14 +1123,7 @@ fn write_mesh(
         .iter()
         .map(|t| t.map(|p| frame.to_scene(p)))
         .collect();
-    outs.write(out, |w| {
-        csgpix_scene::mesh::write_format(w, format, &tris, comment)
-    })?;
-    Ok(MeshReport {
-        mesh_triangles: tris.len(),
-        mesh_memory_estimate: need,
-        mesh_open_edges: csgpix_scene::mesh::open_edges(&tris),
-    })
+    Ok((tris, need))
 }
 
 /// Voxelizes while building the store from each slice as it comes (`--store`); the store's
