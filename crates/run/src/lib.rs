@@ -8,6 +8,26 @@
 //! ([`png`]) and voxel stores fed from the voxelizer ([`store`]). Each command returns its
 //! exit code, or an error message (exit status 2).
 
+/// The flags' value names as [`FromStr`](std::str::FromStr), for the Python binding's keyword
+/// arguments: one spelling of every value, the command line's.
+macro_rules! from_value_name {
+    ($($t:ty: $what:literal),*) => {$(
+        impl std::str::FromStr for $t {
+            type Err = crate::error::BadValue;
+            fn from_str(s: &str) -> crate::error::Parsed<Self> {
+                <$t as clap::ValueEnum>::from_str(s, false).map_err(|_| {
+                    let names: Vec<String> = <$t as clap::ValueEnum>::value_variants()
+                        .iter()
+                        .filter_map(|v| v.to_possible_value())
+                        .map(|v| format!("`{}`", v.get_name()))
+                        .collect();
+                    crate::error::BadValue(format!("{} {s:?}: {}", $what, names.join(", ")))
+                })
+            }
+        }
+    )*};
+}
+
 pub mod array_args;
 pub mod blist;
 pub mod error;
@@ -37,27 +57,6 @@ use rtl_model::Equations;
 
 pub use error::{Error, Result};
 
-/// The flags' value names as [`FromStr`](std::str::FromStr), for the Python binding's keyword
-/// arguments: one spelling of every value, the command line's.
-#[macro_export]
-#[doc(hidden)]
-macro_rules! from_value_name {
-    ($($t:ty: $what:literal),*) => {$(
-        impl std::str::FromStr for $t {
-            type Err = crate::error::BadValue;
-            fn from_str(s: &str) -> crate::error::Parsed<Self> {
-                <$t as clap::ValueEnum>::from_str(s, false).map_err(|_| {
-                    let names: Vec<String> = <$t as clap::ValueEnum>::value_variants()
-                        .iter()
-                        .filter_map(|v| v.to_possible_value())
-                        .map(|v| format!("`{}`", v.get_name()))
-                        .collect();
-                    crate::error::BadValue(format!("{} {s:?}: {}", $what, names.join(", ")))
-                })
-            }
-        }
-    )*};
-}
 from_value_name!(ViewArg: "view", EquationsArg: "equations");
 
 #[derive(Parser, Debug)]

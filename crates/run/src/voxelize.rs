@@ -236,7 +236,7 @@ impl SamplingArg {
     }
 }
 
-crate::from_value_name!(SamplingArg: "sampling", RouteArg: "route", EvalArg: "eval", FormatArg: "format");
+from_value_name!(SamplingArg: "sampling", RouteArg: "route", EvalArg: "eval", FormatArg: "format");
 
 /// What decides a voxelization's voxels beside its grid: the flags `voxelize` reads and the
 /// Python binding's keyword arguments, the same options for both.
