@@ -25,6 +25,7 @@ pub use csgpix_scene as scene;
 pub use csgpix_sculpt as sculpt;
 pub use csgpix_voxel as voxel;
 pub use csgpix_zarr as zarr;
+pub use glam;
 pub use rtl_model;
 
 /// The README's Rust blocks, run as doctests so its library example stays true.
