@@ -784,3 +784,59 @@ fn voxelize_grid_options_and_sampling() {
         assert!(!out.exists(), "{bad:?} left an output");
     }
 }
+
+/// `--compress` writes the same voxels gzip-encoded, on the streamed run route and on the
+/// held volume's path alike; `space` is neutral unless an imported dataset declares its own.
+#[test]
+fn voxelize_compress_writes_gzip_nrrd_in_the_scenes_space() {
+    let d = tmp();
+    let run = |scene: &str, extra: &[&str], out: &Path| {
+        let args = [&["voxelize", scene, "--res", "24", "-o", s(out)][..], extra].concat();
+        let o = csgpix(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        std::fs::read(out).unwrap()
+    };
+    let split = |bytes: &[u8]| {
+        let at = bytes.windows(2).position(|w| w == b"\n\n").unwrap();
+        let head = String::from_utf8(bytes[..at].to_vec()).unwrap();
+        (head, bytes[at + 2..].to_vec())
+    };
+    let gunzip = |data: &[u8]| {
+        let mut out = vec![];
+        std::io::Read::read_to_end(&mut flate2::read::GzDecoder::new(data), &mut out).unwrap();
+        out
+    };
+    let twelve = "vectors/scenes/twelve.csg";
+    let (raw_head, raw) = split(&run(twelve, &[], &d.path().join("raw.nrrd")));
+    assert!(
+        raw_head.contains("\nspace: 3D-right-handed\n"),
+        "{raw_head}"
+    );
+    assert!(raw_head.contains("\nencoding: raw\n"), "{raw_head}");
+    // Streamed (the run route alone) and held (with --preview) both compress the same bytes.
+    let preview = d.path().join("p.png");
+    for extra in [vec![], vec!["--preview", s(&preview)]] {
+        let args = [vec!["--compress"], extra].concat();
+        let bytes = run(twelve, &args, &d.path().join("gz.nrrd"));
+        let (head, data) = split(&bytes);
+        assert!(head.contains("\nencoding: gzip\n"), "{head}");
+        assert_eq!(head.replace("encoding: gzip", "encoding: raw"), raw_head);
+        assert!(
+            data.len() < raw.len() / 4,
+            "{} of {} bytes",
+            data.len(),
+            raw.len()
+        );
+        assert_eq!(gunzip(&data), raw);
+    }
+    // A dataset's declared space is the volume's.
+    let (head, _) = split(&run(
+        "vectors/scenes/figure-5.6.csg",
+        &[],
+        &d.path().join("h.nrrd"),
+    ));
+    assert!(
+        head.contains("\nspace: right-anterior-superior\n"),
+        "{head}"
+    );
+}

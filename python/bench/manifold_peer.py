@@ -302,7 +302,7 @@ def bench_scene(path, resolutions, csgpix, meshes_bin, work):
         out = work / f"{name}.{n}.nrrd"
 
         def run_csgpix():
-            w, r, c, e = run_timed([str(csgpix), "voxelize", str(scene), "--res", str(n),
+            w, r, c, e = run_timed([str(csgpix), "voxelize", str(scene), "--res", f"{n}x{n}x{n}",
                                     "-o", str(out), "--json"])
             if c != 0:
                 g["csgpix_error"] = e.strip().splitlines()[-1] if e.strip() else f"exit {c}"
@@ -312,7 +312,7 @@ def bench_scene(path, resolutions, csgpix, meshes_bin, work):
         b = best_of(run_csgpix)
         if b:
             g["csgpix_s"] = b[0]
-            g["csgpix_rss_mib"] = run_timed([str(csgpix), "voxelize", str(scene), "--res", str(n),
+            g["csgpix_rss_mib"] = run_timed([str(csgpix), "voxelize", str(scene), "--res", f"{n}x{n}x{n}",
                                              "-o", str(out)], rss=True)[1]
         if "mesh_s" not in row:
             continue
@@ -326,7 +326,7 @@ def bench_scene(path, resolutions, csgpix, meshes_bin, work):
             bstr = ",".join(repr(float(x)) for x in bounds[0] + bounds[1])
 
             def run_mesh():
-                w, r, c, e = run_timed([str(csgpix), "voxelize", str(mscene), "--res", str(n),
+                w, r, c, e = run_timed([str(csgpix), "voxelize", str(mscene), "--res", f"{n}x{n}x{n}",
                                         "--bounds", bstr, "-o", str(mout), "--json"])
                 if c != 0:
                     g["voxelize_mesh_error"] = e.strip().splitlines()[-1] if e.strip() else f"exit {c}"
@@ -337,7 +337,7 @@ def bench_scene(path, resolutions, csgpix, meshes_bin, work):
             if b:
                 g["voxelize_mesh_s"] = b[0]
                 g["voxelize_mesh_rss_mib"] = run_timed(
-                    [str(csgpix), "voxelize", str(mscene), "--res", str(n), "--bounds", bstr,
+                    [str(csgpix), "voxelize", str(mscene), "--res", f"{n}x{n}x{n}", "--bounds", bstr,
                      "-o", str(mout)], rss=True)[1]
         if "voxelize_mesh_s" in g:
             g["manifold_full_s"] = row["mesh_s"] + g["voxelize_mesh_s"]

@@ -113,8 +113,8 @@ def voxelize(
     max_memory: Optional[int] = None,
 ) -> Volume:
     """Voxelize ``scene`` (a :class:`Scene` or a ``.csg``/``.scad`` path) as
-    ``csgpix voxelize`` does: ``res`` voxels per axis (N or (NX, NY, NZ)) or cubic voxels of
-    side ``voxel``, ``pad`` empty voxels around, over ``bounds`` or the scene's box.
+    ``csgpix voxelize`` does: ``res`` N (N cubic voxels along the longest side of the bounds,
+    as ``--res N``) or (NX, NY, NZ) voxels per axis, or cubic voxels of side ``voxel``, ``pad`` empty voxels around, over ``bounds`` or the scene's box.
 
     ``z=(k0, k1)`` voxelizes slabs k0..k1 of that grid only: the same voxels as those slabs
     of the whole volume, computed without the others. ``model`` is ``cycle``, ``word`` or

@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 
 use csgpix_run::array_args::parse_word;
 use csgpix_run::memory::Limit;
-use csgpix_run::voxelize::{imports_estimate, parse_blend, Voxelization};
+use csgpix_run::voxelize::{imports_estimate, parse_blend, Resolution, Voxelization};
 use csgpix_voxel::sampled::{load_scene, scene_from_expr, Binding, Loaded};
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{Grid, GridSpec, Route, Slicer};
@@ -161,7 +161,7 @@ fn binding(name: String, v: &Bound<'_, PyAny>) -> PyResult<Binding> {
 
 /// The grid and sampling options of a voxelization.
 pub struct GridOptions {
-    pub res: Option<[usize; 3]>,
+    pub res: Option<Resolution>,
     pub voxel: Option<f64>,
     pub pad: usize,
     pub bounds: Option<([f64; 3], [f64; 3])>,
@@ -188,10 +188,16 @@ impl GridOptions {
     }
 
     pub fn grid(&self, scene: &Scene) -> PyResult<Grid> {
+        let spec = match (self.res, self.voxel) {
+            (Some(r), _) => r.spec(),
+            (None, voxel) => GridSpec {
+                voxel,
+                ..GridSpec::default()
+            },
+        };
         let spec = GridSpec {
-            res: self.res,
-            voxel: self.voxel,
             pad: self.pad,
+            ..spec
         };
         let bounds = self
             .bounds
@@ -200,14 +206,14 @@ impl GridOptions {
     }
 }
 
-/// `res` as N or (NX, NY, NZ).
-fn resolution(res: Option<&Bound<'_, PyAny>>) -> PyResult<Option<[usize; 3]>> {
+/// `res` as N (cubic voxels, N along the longest side, as `--res N`) or (NX, NY, NZ).
+fn resolution(res: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Resolution>> {
     let Some(r) = res else { return Ok(None) };
     if let Ok(n) = r.extract::<usize>() {
-        return Ok(Some([n; 3]));
+        return Ok(Some(Resolution::Longest(n)));
     }
     r.extract::<[usize; 3]>()
-        .map(Some)
+        .map(|dims| Some(Resolution::Axes(dims)))
         .map_err(|_| text("res: an int N or a tuple (NX, NY, NZ)".into()))
 }
 

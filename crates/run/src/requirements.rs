@@ -18,7 +18,7 @@ use rtl_model::{ArrayConfig, Equations, WordFormat};
 use serde::Serialize;
 
 use super::array_args::{parse_size, parse_word};
-use super::voxelize::{parse_bounds, parse_panel, parse_res, PanelArg, SamplingArg};
+use super::voxelize::{parse_bounds, parse_panel, parse_res, PanelArg, Resolution, SamplingArg};
 use super::ViewArg;
 
 #[derive(clap::Args, Debug)]
@@ -30,7 +30,7 @@ pub struct Args {
     scene: PathBuf,
     /// Voxel grid the scene is sliced on: N for a cube, or NXxNYxNZ.
     #[arg(long, value_parser = parse_res, default_value = "128")]
-    res: [usize; 3],
+    res: Resolution,
     /// Region, X0,Y0,Z0,X1,Y1,Z1 in scene units (default: the scene's bounds).
     #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
     bounds: Option<(DVec3, DVec3)>,
@@ -125,8 +125,8 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         return Err(Error::options("--precision", message));
     }
     let grid = match a.bounds {
-        Some((lo, hi)) => Grid::new(a.res, lo, hi),
-        None => Grid::of_scene(&scene, a.res),
+        Some((lo, hi)) => a.res.spec().grid(lo, hi),
+        None => Grid::of_scene(&scene, [1; 3]).and_then(|g| a.res.spec().grid(g.min, g.max)),
     }
     .map_err(|e| match e.kind {
         csgpix_scene::Kind::NeedsBounds => at(Error::options(

@@ -17,7 +17,7 @@ use serde::Serialize;
 use std::io::Write;
 
 use super::lib_errors;
-use super::voxelize::{parse_res, GridArgs};
+use super::voxelize::{parse_res, GridArgs, Resolution};
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -39,7 +39,7 @@ pub struct Args {
     threshold: Option<f64>,
     /// Voxels along X, Y, Z for a `.csg` scene: N or NXxNYxNZ (default 128).
     #[arg(long, value_parser = parse_res)]
-    res: Option<[usize; 3]>,
+    res: Option<Resolution>,
     #[command(flatten)]
     grid: GridArgs,
     /// The tool: sphere:R, R in voxels (0 < R <= 128).
@@ -262,7 +262,7 @@ fn load_scene(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
     let scene = &loaded.scene;
     let grid = a
         .grid
-        .grid(Some(a.res.unwrap_or([128; 3])), &loaded)
+        .grid(Some(a.res.unwrap_or(Resolution::Longest(128))), &loaded)
         .map_err(|e| e.context(&name))?;
     let threads = rayon::current_num_threads();
     let need = memory_estimate(&grid, scene.primitive_count(), threads)

@@ -3,6 +3,7 @@
 //! store a chunk row at a time (`--format zarr`, docs/zarr.md).
 
 use crate::Error;
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -10,6 +11,7 @@ use std::time::Instant;
 use clap::ValueEnum;
 use csgpix_draw::palette::rgb;
 use csgpix_draw::Model;
+use csgpix_scene::nrrd::{Encoding, VolumeFormat};
 use csgpix_scene::output::{Out, Outputs};
 use csgpix_scene::solid::CsgScene;
 use csgpix_sculpt::octree::{self, StoreKind};
@@ -65,9 +67,10 @@ pub struct Args {
     /// `sum:KS,KD` (C = KS·Cs + KD·Cd), intersection min, difference max(Cd − Cs, 0).
     #[arg(long, value_parser = parse_blend, conflicts_with = "grey")]
     blend: Option<Union>,
-    /// Voxels along X, Y, Z: N for a cube, or NXxNYxNZ.
+    /// N: N cubic voxels along the bounds' longest side, the other sides covered by as many
+    /// (centred on the bounds); NXxNYxNZ: voxels along X, Y and Z over the bounds.
     #[arg(long, value_parser = parse_res, required_unless_present = "voxel")]
-    res: Option<[usize; 3]>,
+    res: Option<Resolution>,
     #[command(flatten)]
     grid: GridArgs,
     /// Processor model: `cycle` simulates every P·Vz frame clock by clock; `word` uses the
@@ -105,6 +108,10 @@ pub struct Args {
     /// grid's depth (docs/zarr.md); not with --preview, --slices, --mesh or --store.
     #[arg(long, value_enum)]
     format: Option<FormatArg>,
+    /// NRRD output: the data gzip-compressed (`encoding: gzip`, as 3D Slicer, ParaView and
+    /// pynrrd read it), written as it is computed.
+    #[arg(long)]
+    compress: bool,
     /// Zarr store: the chunk shape, N for N×N×N or XxYxZ as --res (the store's `chunk_shape`
     /// is Z, Y, X, the array's order); each side cut to the grid's.
     /// Memory holds one chunk row: Z × NY × NX bytes.
@@ -193,12 +200,19 @@ pub struct GridArgs {
 }
 
 impl GridArgs {
-    /// The grid of `res` voxels per axis (or of `--voxel`) over `--bounds` or the scene's.
-    pub fn grid(&self, res: Option<[usize; 3]>, scene: &Loaded) -> crate::Result<Grid> {
+    /// The grid of `res` (or of `--voxel`) over `--bounds` or the scene's.
+    pub fn grid(&self, res: Option<Resolution>, scene: &Loaded) -> crate::Result<Grid> {
+        let spec = match (self.voxel, res) {
+            (Some(v), _) => GridSpec {
+                voxel: Some(v),
+                ..GridSpec::default()
+            },
+            (None, Some(r)) => r.spec(),
+            (None, None) => GridSpec::default(),
+        };
         let spec = GridSpec {
-            res: res.filter(|_| self.voxel.is_none()),
-            voxel: self.voxel,
             pad: self.pad,
+            ..spec
         };
         scene.grid_over(&spec, self.bounds).map_err(flag_message)
     }
@@ -439,12 +453,42 @@ pub fn parse_panel(s: &str) -> crate::error::Parsed<PanelArg> {
     Ok(PanelArg(Some([n(x)?, n(y)?])))
 }
 
-pub fn parse_res(s: &str) -> crate::error::Parsed<[usize; 3]> {
+/// `--res`: how many voxels, as binvox, OpenVDB and trimesh count them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Resolution {
+    /// `N`: N cubic voxels along the bounds' longest side, the other sides covered by as
+    /// many (the grid centred on the bounds); a cube's bounds get N×N×N over themselves.
+    Longest(usize),
+    /// `NXxNYxNZ`: voxels along X, Y and Z over the bounds (voxels need not be cubic).
+    Axes([usize; 3]),
+}
+
+impl Resolution {
+    /// The grid spec of this resolution (before `--pad`).
+    pub fn spec(self) -> GridSpec {
+        match self {
+            Resolution::Longest(n) => GridSpec {
+                longest: Some(n),
+                ..GridSpec::default()
+            },
+            Resolution::Axes(dims) => GridSpec {
+                res: Some(dims),
+                ..GridSpec::default()
+            },
+        }
+    }
+}
+
+/// `--res`: N (the longest side) or NXxNYxNZ, each 1..=65536.
+pub fn parse_res(s: &str) -> crate::error::Parsed<Resolution> {
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
     let parts: Vec<&str> = s.split(['x', 'X']).collect();
-    let dims = match parts[..] {
-        [a] => [n(a)?; 3],
-        [a, b, c] => [n(a)?, n(b)?, n(c)?],
+    let (res, dims) = match parts[..] {
+        [a] => (Resolution::Longest(n(a)?), [n(a)?; 3]),
+        [a, b, c] => {
+            let dims = [n(a)?, n(b)?, n(c)?];
+            (Resolution::Axes(dims), dims)
+        }
         _ => return Err("expected N or NXxNYxNZ, e.g. 64 or 64x64x32".into()),
     };
     if dims.iter().any(|&d| d == 0 || d > 65536) {
@@ -452,7 +496,7 @@ pub fn parse_res(s: &str) -> crate::error::Parsed<[usize; 3]> {
             "{s}: each side must be 1..=65536"
         )));
     }
-    Ok(dims)
+    Ok(res)
 }
 
 /// `--chunk`: N (a cube) or XxYxZ, each side 1..=65536; held Z, Y, X.
@@ -602,6 +646,19 @@ pub fn parse_blend(s: &str) -> crate::error::Parsed<Union> {
 
 /// What the run names its input in messages and the NRRD comment.
 impl Args {
+    /// How the NRRD volume is written: gzip with `--compress`; the `space` of the first
+    /// dataset the scene imports that declares one, else the neutral `3D-right-handed`.
+    pub fn nrrd_format(&self, slicer: &Slicer) -> VolumeFormat {
+        let declared = slicer.sampled.iter().find_map(|s| s.space());
+        VolumeFormat {
+            space: declared.unwrap_or(csgpix_scene::nrrd::NEUTRAL_SPACE).into(),
+            encoding: match self.compress {
+                true => Encoding::Gzip,
+                false => Encoding::Raw,
+            },
+        }
+    }
+
     /// The output's format: `--format`, else `-o`'s extension (`.zarr` a Zarr store, else
     /// NRRD).
     pub fn format(&self) -> FormatArg {
@@ -693,6 +750,10 @@ fn check_format(a: &Args) -> crate::Result<()> {
             )),
             None => Ok(()),
         };
+    }
+    if a.compress {
+        let message = "--compress applies to a NRRD file (a Zarr store's chunks are gzip already)";
+        return Err(Error::options("--compress", message));
     }
     if a.out.as_os_str() == "-" {
         let message = "-o -: --format zarr writes a directory (OUT.zarr), not standard output";
@@ -863,8 +924,10 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
             zarr,
         );
     }
+    let nrrd_format = a.nrrd_format(&slicer);
     if stream {
         let comment = format!("csgpix voxelize {name}");
+        let head = (comment.as_str(), &nrrd_format);
         let out = named.nrrd;
         let work = pool.install(|| {
             stream_nrrd(
@@ -875,7 +938,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
                 set,
                 eval.as_ref(),
                 &tick,
-                &comment,
+                head,
             )
         })?;
         bar.finish_and_clear();
@@ -922,7 +985,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     };
     let voxels = &volume.voxels;
     outs.write(named.nrrd, |w| {
-        csgpix_scene::nrrd::write_volume(w, &grid, voxels, &comment)
+        csgpix_scene::nrrd::write_volume_as(w, &grid, voxels, &comment, &nrrd_format)
     })?;
     let to_stdout = outs.uses_stdout();
     named.outs.commit()?;
@@ -955,14 +1018,16 @@ fn stream_nrrd(
     set: rtl_model::EquationSet,
     eval: &dyn SliceEval,
     tick: &(dyn Fn() + Sync),
-    comment: &str,
+    (comment, format): (&str, &VolumeFormat),
 ) -> crate::Result<Work> {
     let nz = slicer.grid.dims[2];
     let mut done: Option<Result<Work, Stop>> = None;
     let written = outs.write(out, |w| {
-        w.write_all(csgpix_scene::nrrd::header(&slicer.grid, comment).as_bytes())?;
+        let head = csgpix_scene::nrrd::header_as(&slicer.grid, comment, format);
+        w.write_all(head.as_bytes())?;
+        let mut data = csgpix_scene::nrrd::data_writer(w, format.encoding);
         // The sink's own error is the file's, told apart from the voxelizer's.
-        let mut sink = |_: usize, s: &[u8]| w.write_all(s).map_err(Stop::Io);
+        let mut sink = |_: usize, s: &[u8]| data.write_all(s).map_err(Stop::Io);
         match voxelize_slabs(slicer, route, set, eval, tick, 0..nz, &mut sink) {
             Err(Stop::Io(e)) => Err(e),
             r => {
@@ -970,7 +1035,7 @@ fn stream_nrrd(
                 done = Some(r);
                 match failed {
                     true => Err(std::io::Error::other("the voxelization failed")),
-                    false => Ok(()),
+                    false => data.finish(),
                 }
             }
         }

@@ -246,8 +246,11 @@ pub fn phantom(n: usize) -> Nrrd {
         }
     }
     let directions = DMat3::from_diagonal(DVec3::splat(h));
-    Nrrd::new([n; 3], samples, origin, directions, SampleType::Uint16)
-        .expect("the phantom's samples fill its sizes and are finite")
+    // A CT head: its own frame is the patient's (right, anterior, superior).
+    let mut nrrd = Nrrd::new([n; 3], samples, origin, directions, SampleType::Uint16)
+        .expect("the phantom's samples fill its sizes and are finite");
+    nrrd.space = Some("right-anterior-superior".into());
+    nrrd
 }
 
 #[cfg(test)]

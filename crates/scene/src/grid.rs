@@ -71,15 +71,18 @@ impl Grid {
 /// is refused here rather than by the memory estimate's arithmetic).
 pub const MAX_GRID_SIDE: usize = 1 << 20;
 
-/// How a grid is laid over a region: voxels per axis (`res`) or a cubic voxel size
-/// (`voxel`, the grid centred on the region with whole voxels covering it), then `pad`
-/// empty voxels added on every side.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// How a grid is laid over a region: voxels per axis (`res`), a cubic voxel size (`voxel`,
+/// the grid centred on the region with whole voxels covering it) or a number of cubic voxels
+/// along the region's longest side (`longest`, as binvox, OpenVDB and trimesh take a
+/// resolution), then `pad` empty voxels added on every side. One of the three is given.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct GridSpec {
     /// Voxels along X, Y and Z.
     pub res: Option<[usize; 3]>,
     /// Side of a cubic voxel, in scene units.
     pub voxel: Option<f64>,
+    /// Cubic voxels along the longest side (the others as many as cover theirs).
+    pub longest: Option<usize>,
     /// Empty voxels added on every side.
     pub pad: usize,
 }
@@ -87,9 +90,10 @@ pub struct GridSpec {
 impl GridSpec {
     /// The grid over the box `lo`..`hi`.
     pub fn grid(&self, lo: DVec3, hi: DVec3) -> Result<Grid> {
-        let inner = match (self.res, self.voxel) {
-            (Some(dims), None) => Grid::new(dims, lo, hi)?,
-            (None, Some(size)) => Self::cubic(size, lo, hi)?,
+        let inner = match (self.res, self.voxel, self.longest) {
+            (Some(dims), None, None) => Grid::new(dims, lo, hi)?,
+            (None, Some(size), None) => Self::cubic(size, lo, hi)?,
+            (None, None, Some(n)) => Self::longest(n, lo, hi)?,
             _ => return Err("give the grid as a resolution or a voxel size, not both".into()),
         };
         let v = inner.voxel();
@@ -102,6 +106,19 @@ impl GridSpec {
         }
         let margin = v * pad as f64;
         Grid::new(dims, inner.min - margin, inner.max + margin)
+    }
+
+    /// `n` cubic voxels along the box's longest side, the others covered by as many as they
+    /// need, centred. A cube gets exactly `n` a side over the box itself.
+    fn longest(n: usize, lo: DVec3, hi: DVec3) -> Result<Grid> {
+        let extent = hi - lo;
+        if extent.x == extent.y && extent.y == extent.z {
+            return Grid::new([n; 3], lo, hi);
+        }
+        if n == 0 {
+            return Grid::new([0; 3], lo, hi);
+        }
+        Self::cubic(extent.max_element() / n as f64, lo, hi)
     }
 
     /// Cubic voxels of side `size`: as many as cover each side of the box, centred on it.
@@ -169,7 +186,46 @@ mod grid_tests {
     use super::*;
 
     fn spec(res: Option<[usize; 3]>, voxel: Option<f64>, pad: usize) -> GridSpec {
-        GridSpec { res, voxel, pad }
+        GridSpec {
+            res,
+            voxel,
+            longest: None,
+            pad,
+        }
+    }
+
+    #[test]
+    fn the_longest_side_gets_n_cubic_voxels() {
+        let longest = |n, lo: [f64; 3], hi: [f64; 3]| {
+            let spec = GridSpec {
+                longest: Some(n),
+                ..GridSpec::default()
+            };
+            spec.grid(DVec3::from(lo), DVec3::from(hi)).unwrap()
+        };
+        // 28 / 64 a voxel: 22.8 needs 52.2 → 53 voxels, centred; the longest side exactly 64.
+        let g = longest(64, [-11.4, -11.4, -14.0], [11.4, 11.4, 14.0]);
+        assert_eq!(g.dims, [53, 53, 64]);
+        let v = g.voxel();
+        assert!(
+            (v.x - v.z).abs() < 1e-12 && (v.y - v.z).abs() < 1e-12,
+            "{v}"
+        );
+        assert_eq!((g.min.z, g.max.z), (-14.0, 14.0));
+        assert!((g.min.x + g.max.x).abs() < 1e-12 && g.max.x >= 11.4);
+        // A side that is a whole number of voxels gets exactly that many.
+        assert_eq!(longest(64, [0.0; 3], [32.0, 16.0, 8.0]).dims, [64, 32, 16]);
+        // A cube is the box itself, as --res N×N×N lays it.
+        let cube = longest(10, [-1.0; 3], [2.0; 3]);
+        assert_eq!(
+            cube,
+            Grid::new([10; 3], DVec3::splat(-1.0), DVec3::splat(2.0)).unwrap()
+        );
+        let zero = GridSpec {
+            longest: Some(0),
+            ..GridSpec::default()
+        };
+        assert!(zero.grid(DVec3::ZERO, DVec3::new(1.0, 2.0, 3.0)).is_err());
     }
 
     #[test]

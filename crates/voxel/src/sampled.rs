@@ -58,6 +58,14 @@ pub struct Sampled {
 }
 
 impl Sampled {
+    /// The `space` its dataset's file declared, if it is a dataset and declared one.
+    pub fn space(&self) -> Option<&str> {
+        match &self.shape {
+            Shape::Dataset { data, .. } => data.nrrd.space.as_deref(),
+            _ => None,
+        }
+    }
+
     /// Scene-space box around the primitive.
     pub fn bounds(&self) -> (DVec3, DVec3) {
         match &self.shape {
