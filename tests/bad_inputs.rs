@@ -22,7 +22,7 @@ fn refused(args: &[&str]) -> String {
 
 /// The refusal of `voxelize --expr A --prim A=PRIM --res 8 EXTRA… -o OUT`.
 fn refused_prim(prim: &str, out: &Path, extra: &[&str]) -> String {
-    let head = ["voxelize", "--expr", "A", "--prim", prim, "--res", "8"];
+    let head = ["voxelize", "--expr", "A", "--prim", prim, "--res", "8x8x8"];
     refused(&[&head[..], extra, &["-o", s(out)]].concat())
 }
 
@@ -37,7 +37,7 @@ fn invalid_utf8_is_located_in_every_text_input() {
     };
     let out = s(&d.join("o.nrrd")).to_string();
     let csg = put("u.csg", b"cube(size = [1, 1, 1]);\n  sphere(r = \xff);\n");
-    let e = refused(&["voxelize", s(&csg), "--res", "8", "-o", &out]);
+    let e = refused(&["voxelize", s(&csg), "--res", "8x8x8", "-o", &out]);
     assert_eq!(
         e,
         format!(
@@ -56,7 +56,7 @@ fn invalid_utf8_is_located_in_every_text_input() {
         "sculpt",
         "vectors/scenes/twelve.csg",
         "--res",
-        "8",
+        "8x8x8",
         "--tool",
         "sphere:1",
         "--path",
@@ -105,7 +105,7 @@ fn bounds_that_overflow_or_are_not_numbers_are_refused() {
             "requirements",
             "vectors/scenes/twelve.csg",
             "--res",
-            "8",
+            "8x8x8",
             bounds,
         ]);
         assert!(e.contains(needle), "{bounds}: {e}");
@@ -278,7 +278,7 @@ fn whole_scene_clipping_errors_name_the_scene_or_clip_not_a_face() {
             format!("{m}: the expression expands to more than 4096 products"),
         ),
         (
-            vec!["requirements", m, "--res", "16"],
+            vec!["requirements", m, "--res", "16x16x16"],
             format!("{m}: the expression expands"),
         ),
         (

@@ -455,7 +455,7 @@ fn voxelize_routes_and_models_agree_and_slices_are_written() {
             "voxelize",
             "vectors/scenes/hollow-cube.csg",
             "--res",
-            "10",
+            "10x10x10",
             "--model",
             model,
             "--route",
@@ -519,7 +519,7 @@ fn voxelize_eval_blist_reports_the_label_register() {
             "voxelize",
             "vectors/scenes/figure-5.2.csg",
             "--res",
-            "20",
+            "20x20x20",
             "--eval",
             eval,
             // Counts per voxel (§5.5) are the slab route's; the run route counts per run.
@@ -563,7 +563,7 @@ fn voxelize_refuses_bad_input_without_output() {
     )
     .unwrap();
     for args in [
-        vec!["voxelize", s(&bad), "--res", "8", "-o", s(&out)],
+        vec!["voxelize", s(&bad), "--res", "8x8x8", "-o", s(&out)],
         vec![
             "voxelize",
             "vectors/scenes/hollow-cube.csg",
@@ -576,7 +576,7 @@ fn voxelize_refuses_bad_input_without_output() {
             "voxelize",
             "vectors/scenes/hollow-cube.csg",
             "--res",
-            "8",
+            "8x8x8",
             "--bounds",
             "1,1,1,0,2,2",
             "-o",
@@ -586,7 +586,7 @@ fn voxelize_refuses_bad_input_without_output() {
             "voxelize",
             "vectors/scenes/hollow-cube.csg",
             "--res",
-            "4096",
+            "4096x4096x4096",
             "--max-memory",
             "64",
             "-o",
@@ -602,7 +602,7 @@ fn voxelize_refuses_bad_input_without_output() {
             "{args:?}"
         );
     }
-    let o = csgpix(&["voxelize", s(&bad), "--res", "8", "-o", s(&out)]);
+    let o = csgpix(&["voxelize", s(&bad), "--res", "8x8x8", "-o", s(&out)]);
     assert!(String::from_utf8_lossy(&o.stderr).contains("bad.csg:2:1"));
 }
 
@@ -755,10 +755,10 @@ fn voxelize_grid_options_and_sampling() {
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         serde_json::from_slice(&o.stdout).unwrap()
     };
-    let r = run(&["--res", "32"]);
+    let r = run(&["--res", "32x32x32"]);
     assert_eq!(r["sampling"], "centre");
     assert_eq!(r["filled"], 32 * 32 * 32 - 16 * 16 * 16);
-    let r = run(&["--res", "32", "--sampling", "slab"]);
+    let r = run(&["--res", "32x32x32", "--sampling", "slab"]);
     assert_eq!(r["sampling"], "slab");
     assert_eq!(r["filled"], 32 * 32 * 32 - 16 * 16 * 17);
     // The hollow cube is 20 units wide: 0.5-unit voxels, 40 a side, and 2 of padding.
@@ -774,7 +774,7 @@ fn voxelize_grid_options_and_sampling() {
         &["--voxel", "0"][..],
         &["--voxel", "-1"],
         &["--voxel", "1e-9"],
-        &["--voxel", "1", "--res", "8"],
+        &["--voxel", "1", "--res", "8x8x8"],
     ] {
         std::fs::remove_file(&out).ok();
         let mut args = vec!["voxelize", "vectors/scenes/hollow-cube.csg", "-o", s(&out)];
@@ -791,7 +791,11 @@ fn voxelize_grid_options_and_sampling() {
 fn voxelize_compress_writes_gzip_nrrd_in_the_scenes_space() {
     let d = tmp();
     let run = |scene: &str, extra: &[&str], out: &Path| {
-        let args = [&["voxelize", scene, "--res", "24", "-o", s(out)][..], extra].concat();
+        let args = [
+            &["voxelize", scene, "--res", "24x24x24", "-o", s(out)][..],
+            extra,
+        ]
+        .concat();
         let o = csgpix(&args);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         std::fs::read(out).unwrap()
@@ -839,4 +843,57 @@ fn voxelize_compress_writes_gzip_nrrd_in_the_scenes_space() {
         head.contains("\nspace: right-anterior-superior\n"),
         "{head}"
     );
+}
+
+/// `--res N` lays N cubic voxels on the longest side (as binvox, OpenVDB and trimesh count a
+/// resolution); `--res NXxNYxNZ` that many per axis; a cube's bounds get N×N×N either way.
+#[test]
+fn res_n_is_the_longest_side_in_cubic_voxels() {
+    let d = tmp();
+    let json = |scene: &str, res: &str| {
+        let out = d.path().join("v.nrrd");
+        let o = csgpix(&["voxelize", scene, "--res", res, "--json", "-o", s(&out)]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap()
+    };
+    let dims = |v: &serde_json::Value| -> Vec<u64> {
+        v["dims"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|d| d.as_u64().unwrap())
+            .collect()
+    };
+    let voxel = |v: &serde_json::Value| -> Vec<f64> {
+        v["voxel"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|d| d.as_f64().unwrap())
+            .collect()
+    };
+    // twelve.csg is 22.83 × 22.83 × 28 units: 64 along Z, ⌈22.83 / (28/64)⌉ = 53 across.
+    let twelve = json("vectors/scenes/twelve.csg", "64");
+    assert_eq!(dims(&twelve), [53, 53, 64]);
+    let v = voxel(&twelve);
+    assert!(v.iter().all(|&x| (x - 28.0 / 64.0).abs() < 1e-12), "{v:?}");
+    assert_eq!(
+        dims(&json("vectors/scenes/twelve.csg", "64x64x64")),
+        [64, 64, 64]
+    );
+    // A cube's bounds: the same grid, byte for byte, as the per-axis form.
+    let logo = |res: &str| {
+        let out = d.path().join(format!("logo-{res}.nrrd"));
+        let o = csgpix(&[
+            "voxelize",
+            "vectors/scenes/csg-logo.csg",
+            "--res",
+            res,
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        std::fs::read(out).unwrap()
+    };
+    assert_eq!(logo("32"), logo("32x32x32"));
 }

@@ -91,7 +91,7 @@ fn csgpix_voxels(
         "voxelize",
         csg.to_str().unwrap(),
         "--res",
-        "64",
+        "64x64x64",
         "--bounds",
         &bounds,
     ]);

@@ -57,7 +57,7 @@ fn large_runs_are_refused_under_ulimit_before_allocating() {
             "voxelize",
             "vectors/scenes/twelve.csg",
             "--res",
-            "1500",
+            "1500x1500x1500",
             "--route",
             "intervals",
             "-o",
@@ -68,7 +68,7 @@ fn large_runs_are_refused_under_ulimit_before_allocating() {
             "voxelize",
             "vectors/scenes/twelve.csg",
             "--res",
-            "1500",
+            "1500x1500x1500",
             "--preview",
             &png,
             "-o",
@@ -79,13 +79,13 @@ fn large_runs_are_refused_under_ulimit_before_allocating() {
             "requirements",
             "vectors/scenes/twelve.csg",
             "--res",
-            "16384",
+            "16384x16384x16384",
         ],
         vec![
             "sculpt",
             "vectors/scenes/twelve.csg",
             "--res",
-            "1500",
+            "1500x1500x1500",
             "--tool",
             "sphere:1",
             "--path",
@@ -115,7 +115,7 @@ fn a_streamed_volume_is_larger_than_the_address_space() {
             "voxelize",
             "vectors/scenes/csg-logo.csg",
             "--res",
-            "1024",
+            "1024x1024x1024",
             "-o",
             &o,
         ]
@@ -163,13 +163,20 @@ fn a_difference_of_thousands_of_solids_is_refused_by_render_and_voxelized_in_bli
     );
     refused(&out, "holes.csg: the clipping program would have up to");
     assert!(!png.exists());
-    let out = under_ulimit(1 << 20, &["requirements", s, "--res", "16"]);
+    let out = under_ulimit(1 << 20, &["requirements", s, "--res", "16x16x16"]);
     refused(&out, "clipping program");
     // Blist is linear in the solids: the same scene voxelizes under the same limit.
     let nrrd = dir.path().join("h.nrrd");
     let out = under_ulimit(
         1 << 20,
-        &["voxelize", s, "--res", "16", "-o", nrrd.to_str().unwrap()],
+        &[
+            "voxelize",
+            s,
+            "--res",
+            "16x16x16",
+            "-o",
+            nrrd.to_str().unwrap(),
+        ],
     );
     assert!(
         out.status.success(),
@@ -187,7 +194,7 @@ fn limits_that_would_wrap_and_unbounded_threads_are_refused() {
         "voxelize",
         "vectors/scenes/twelve.csg",
         "--res",
-        "8",
+        "8x8x8",
         "-o",
         n,
     ];
@@ -255,7 +262,7 @@ fn estimates_are_above_the_measured_peaks() {
             "voxelize",
             "vectors/scenes/twelve.csg",
             "--res",
-            "512",
+            "512x512x512",
             "-o",
             &nrrd,
         ],
@@ -265,7 +272,7 @@ fn estimates_are_above_the_measured_peaks() {
             "voxelize",
             "vectors/scenes/twelve.csg",
             "--res",
-            "512",
+            "512x512x512",
             "--format",
             "zarr",
             "-o",
@@ -275,7 +282,7 @@ fn estimates_are_above_the_measured_peaks() {
             "voxelize",
             "vectors/scenes/twelve.csg",
             "--res",
-            "512",
+            "512x512x512",
             "--format",
             "zarr",
             "--shard",
@@ -288,7 +295,7 @@ fn estimates_are_above_the_measured_peaks() {
             "voxelize",
             "vectors/scenes/csg-logo.csg",
             "--res",
-            "512",
+            "512x512x512",
             "--format",
             "zarr",
             "--shard",
@@ -297,7 +304,12 @@ fn estimates_are_above_the_measured_peaks() {
             &zarr,
         ],
         vec!["phantom", "--size", "256", "-o", &phantom],
-        vec!["requirements", "vectors/scenes/twelve.csg", "--res", "2048"],
+        vec![
+            "requirements",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            "2048x2048x2048",
+        ],
     ];
     for args in runs {
         let (estimate, peak) = (estimate_mib(&args), peak_mib(&args));
@@ -332,7 +344,7 @@ fn ten_thousand_primitives_fit_by_their_footprints() {
         "voxelize",
         scene.to_str().unwrap(),
         "--res",
-        "256",
+        "256x256x256",
         "-o",
         nrrd.to_str().unwrap(),
     ];

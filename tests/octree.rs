@@ -514,7 +514,7 @@ fn voxelize_store_reports_table_7_1_and_refuses_what_does_not_fit() {
     let run = |store: &str| {
         let o = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"))
             .args([
-                "voxelize", scene, "--res", "64", &bounds, "--json", "--store", store, "-o",
+                "voxelize", scene, "--res", "64x64x64", &bounds, "--json", "--store", store, "-o",
             ])
             .arg(&out)
             .output()
@@ -534,7 +534,13 @@ fn voxelize_store_reports_table_7_1_and_refuses_what_does_not_fit() {
     let huge = dir.path().join("huge.nrrd");
     let o = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"))
         .args([
-            "voxelize", scene, "--res", "40000", "--store", "octree", "-o",
+            "voxelize",
+            scene,
+            "--res",
+            "40000x40000x40000",
+            "--store",
+            "octree",
+            "-o",
         ])
         .arg(&huge)
         .output()

@@ -17,7 +17,7 @@ use std::process::Command;
 
 use common::csgpix;
 
-const RES: &str = "64";
+const RES: &str = "64x64x64";
 
 /// Runs openscad to export `input` as `out` (.csg or .stl); false when it fails (a 2D-only
 /// example, an empty top level).

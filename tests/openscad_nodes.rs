@@ -295,7 +295,7 @@ fn scad_files_are_read_through_openscad() {
         "voxelize",
         scad.to_str().unwrap(),
         "--res",
-        "16",
+        "16x16x16",
         "-o",
         out.to_str().unwrap(),
     ];
@@ -335,7 +335,7 @@ fn scad_files_are_read_through_openscad() {
         "voxelize",
         csg.to_str().unwrap(),
         "--res",
-        "16",
+        "16x16x16",
         "-o",
         out2.to_str().unwrap(),
     ]);

@@ -36,7 +36,7 @@ fn the_binary_reads_a_projection() {
         "voxelize",
         path.to_str().unwrap(),
         "--res",
-        "16",
+        "16x16x16",
         "-o",
         out.path().join("v.nrrd").to_str().unwrap(),
     ]);

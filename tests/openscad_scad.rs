@@ -21,7 +21,7 @@ fn run(dir: &Path, scad: &str, extra: &[&str]) -> (Option<i32>, String, String) 
         "voxelize",
         file.to_str().unwrap(),
         "--res",
-        "16",
+        "16x16x16",
         "-o",
         out.to_str().unwrap(),
     ];
@@ -52,7 +52,7 @@ fn openscads_voxels(dir: &Path, bounds: &[&str]) -> Vec<bool> {
     let csg = dir.join("whole.csg");
     std::fs::write(&csg, "import(\"whole.stl\");\n").unwrap();
     let out = dir.join("whole.nrrd");
-    let mut a = vec!["voxelize", csg.to_str().unwrap(), "--res", "16"];
+    let mut a = vec!["voxelize", csg.to_str().unwrap(), "--res", "16x16x16"];
     a.extend(bounds);
     a.extend(["-o", out.to_str().unwrap()]);
     let o = csgpix(&a);

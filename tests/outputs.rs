@@ -63,11 +63,11 @@ fn a_fifo_is_written_through_not_replaced() {
         let fifo = fifo.clone();
         std::thread::spawn(move || std::fs::read(fifo).unwrap())
     };
-    let out = csgpix(&["voxelize", TWELVE, "--res", "16", "-o", s(&fifo)]);
+    let out = csgpix(&["voxelize", TWELVE, "--res", "16x16x16", "-o", s(&fifo)]);
     assert!(out.status.success(), "{out:?}");
     let bytes = reader.join().unwrap();
     let file = dir.path().join("file.nrrd");
-    let out = csgpix(&["voxelize", TWELVE, "--res", "16", "-o", s(&file)]);
+    let out = csgpix(&["voxelize", TWELVE, "--res", "16x16x16", "-o", s(&file)]);
     assert!(out.status.success(), "{out:?}");
     assert_eq!(bytes, std::fs::read(&file).unwrap());
     let ft = std::fs::symlink_metadata(&fifo).unwrap().file_type();
@@ -96,8 +96,8 @@ fn dash_writes_the_same_bytes_to_standard_output_and_reports_on_standard_error()
     assert!(String::from_utf8_lossy(&to_stdout.stderr).contains("cycles"));
     // A NRRD volume too.
     let nrrd = dir.path().join("v.nrrd");
-    let a = csgpix(&["voxelize", TWELVE, "--res", "12", "-o", s(&nrrd)]);
-    let b = csgpix(&["voxelize", TWELVE, "--res", "12", "-o", "-"]);
+    let a = csgpix(&["voxelize", TWELVE, "--res", "12x12x12", "-o", s(&nrrd)]);
+    let b = csgpix(&["voxelize", TWELVE, "--res", "12x12x12", "-o", "-"]);
     assert!(a.status.success() && b.status.success(), "{b:?}");
     assert_eq!(b.stdout, std::fs::read(&nrrd).unwrap());
 }
@@ -110,7 +110,7 @@ fn dash_is_refused_where_the_format_or_json_needs_standard_output() {
         "voxelize",
         TWELVE,
         "--res",
-        "8",
+        "8x8x8",
         "--mesh",
         "-",
         "-o",
@@ -121,7 +121,7 @@ fn dash_is_refused_where_the_format_or_json_needs_standard_output() {
         "voxelize",
         TWELVE,
         "--res",
-        "8",
+        "8x8x8",
         "--preview",
         "-",
         "-o",
@@ -135,14 +135,14 @@ fn output_extensions_are_checked_before_the_run() {
     let dir = tempfile::tempdir().unwrap();
     let cases: [(&[&str], &str); 5] = [
         (&["render", CUBE, "-o"], "x.jpg"),
-        (&["voxelize", TWELVE, "--res", "8", "-o"], "x.raw"),
+        (&["voxelize", TWELVE, "--res", "8x8x8", "-o"], "x.raw"),
         (&["phantom", "--size", "4", "-o"], "x.nhdr"),
         (
             &[
                 "voxelize",
                 TWELVE,
                 "--res",
-                "8",
+                "8x8x8",
                 "-o",
                 "/dev/null",
                 "--mesh",
@@ -154,7 +154,7 @@ fn output_extensions_are_checked_before_the_run() {
                 "voxelize",
                 TWELVE,
                 "--res",
-                "8",
+                "8x8x8",
                 "-o",
                 "/dev/null",
                 "--preview",
@@ -180,7 +180,7 @@ fn a_run_that_cannot_write_its_output_leaves_no_side_output() {
         "voxelize",
         TWELVE,
         "--res",
-        "16",
+        "16x16x16",
         "--preview",
         s(&d.join("p.png")),
         "--mesh",
@@ -205,7 +205,7 @@ fn a_run_that_fails_after_naming_its_outputs_leaves_nothing() {
         "voxelize",
         s(&bad),
         "--res",
-        "16",
+        "16x16x16",
         "--preview",
         s(&d.join("p.png")),
         "--slices",
@@ -225,7 +225,7 @@ fn every_output_of_a_run_is_written_together() {
         "voxelize",
         TWELVE,
         "--res",
-        "16",
+        "16x16x16",
         "--preview",
         s(&d.join("p.png")),
         "--mesh",
@@ -249,7 +249,14 @@ fn interrupted(sig: i32) {
     let d = dir.path();
     let mut child = Command::new(env!("CARGO_BIN_EXE_csgpix"))
         .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .args(["voxelize", TWELVE, "--res", "256", "--model", "cycle"])
+        .args([
+            "voxelize",
+            TWELVE,
+            "--res",
+            "256x256x256",
+            "--model",
+            "cycle",
+        ])
         .args([
             "--slices",
             s(&d.join("slices")),
@@ -407,7 +414,7 @@ fn side_outputs_of_render_and_sculpt_go_with_the_output_or_not_at_all() {
         csgpix(&[&probe[..], &["--wave", &p("w.svg"), "-o", png]].concat())
     };
     let sculpt = |forces: &str, mesh: &str| {
-        let head = ["sculpt", TWELVE, "--res", "16", "--tool", "sphere:1"];
+        let head = ["sculpt", TWELVE, "--res", "16x16x16", "--tool", "sphere:1"];
         let tail = [
             "--path",
             "vectors/paths/carve.csv",

@@ -346,7 +346,7 @@ fn the_example_sculpt_writes_a_closed_mesh_and_forces() {
         "sculpt",
         "vectors/scenes/twelve.csg",
         "--res",
-        "64",
+        "64x64x64",
         // Room around the scene (it reaches ±14 in z), so that the tool reaches round it.
         "--bounds=-15,-15,-15,15,15,15",
         "--tool",
@@ -398,7 +398,7 @@ fn bad_input_is_one_line_exit_2_and_no_file() {
             "sculpt",
             "vectors/scenes/twelve.csg",
             "--res",
-            "16",
+            "16x16x16",
             "--tool",
             tool,
             "--path",

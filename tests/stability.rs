@@ -826,7 +826,7 @@ fn a_thousand_and_twenty_four_primitives() {
             "voxelize",
             s(&path),
             "--res",
-            "64",
+            "64x64x64",
             "--eval",
             eval,
             "-o",
@@ -872,7 +872,7 @@ fn trees_100000_deep_from_a_file_are_refused_in_one_line() {
         let out_path = dir.path().join(out_name);
         let mut args = vec![cmd, s(&path), "-o", s(&out_path)];
         if cmd == "voxelize" {
-            args.extend(["--res", "8"]);
+            args.extend(["--res", "8x8x8"]);
         }
         let out = csgpix(&args);
         assert_eq!(out.status.code(), Some(2), "{cmd}");

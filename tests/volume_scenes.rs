@@ -302,7 +302,7 @@ fn a_hollow_mesh_keeps_its_cavity() {
         "--prim",
         &format!("H={}", stl.display()),
         "--res",
-        "20",
+        "20x20x20",
         "--bounds=0,0,0,10,10,10",
         "-o",
         out.to_str().unwrap(),
@@ -433,12 +433,12 @@ fn bad_imports_are_refused_with_file_line_and_column() {
         "union() {\n  cube(1);\n  import(\"nothing.stl\");\n}\n",
     );
     fails_with(
-        &["voxelize", &missing, "--res", "8", "-o", &out],
+        &["voxelize", &missing, "--res", "8x8x8", "-o", &out],
         &["missing.csg:3:3", "nothing.stl"],
     );
     let no_threshold = w("nt.csg", "import(file = \"phantom.nrrd\");\n");
     fails_with(
-        &["voxelize", &no_threshold, "--res", "8", "-o", &out],
+        &["voxelize", &no_threshold, "--res", "8x8x8", "-o", &out],
         &["nt.csg:1:1", "threshold"],
     );
     // An open mesh: a cube without its top face.
@@ -455,19 +455,19 @@ fn bad_imports_are_refused_with_file_line_and_column() {
     w("open.stl", &open);
     let uses_open = w("open.csg", "import(\"open.stl\");\n");
     fails_with(
-        &["voxelize", &uses_open, "--res", "8", "-o", &out],
+        &["voxelize", &uses_open, "--res", "8x8x8", "-o", &out],
         &["open.stl", "not closed"],
     );
     fails_with(
         &[
-            "voxelize", "--expr", "A+B", "--prim", "A=x.stl", "--res", "8", "-o", &out,
+            "voxelize", "--expr", "A+B", "--prim", "A=x.stl", "--res", "8x8x8", "-o", &out,
         ],
         &["`B`"],
     );
     let phantom = format!("A={}", root().join("vectors/scenes/phantom.nrrd").display());
     fails_with(
         &[
-            "voxelize", "--expr", "A", "--prim", &phantom, "--res", "8", "-o", &out,
+            "voxelize", "--expr", "A", "--prim", &phantom, "--res", "8x8x8", "-o", &out,
         ],
         &["--prim A", "threshold"],
     );
@@ -493,7 +493,7 @@ fn blending_and_grey_output() {
         (Some("--grey"), "g.nrrd"),
         (Some("--blend=max"), "b.nrrd"),
     ] {
-        let mut args = vec!["voxelize", &fig, "--res", "24", "-o"];
+        let mut args = vec!["voxelize", &fig, "--res", "24x24x24", "-o"];
         let f = d(file);
         args.push(&f);
         args.extend(flag);
@@ -577,7 +577,7 @@ fn an_openscad_import_statement_places_the_mesh_like_a_solid() {
                 "voxelize",
                 csg.to_str().unwrap(),
                 "--res",
-                "24",
+                "24x24x24",
                 "--bounds=-6.1,-6.2,-8.3,8,8,8",
                 "--model",
                 "float",

@@ -192,7 +192,7 @@ fn the_washer_plate_matches_float() {
             "voxelize",
             csg.to_str().unwrap(),
             "--res",
-            "64",
+            "64x64x64",
             "--model",
             model,
             "-o",

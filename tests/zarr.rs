@@ -811,7 +811,7 @@ fn the_metadata_places_the_volume_as_nrrd_does() {
 fn refusals_replacement_and_repeatability() {
     let d = tempfile::tempdir().unwrap();
     let store = d.path().join("v.zarr");
-    let base = ["voxelize", "vectors/scenes/twelve.csg", "--res", "16"];
+    let base = ["voxelize", "vectors/scenes/twelve.csg", "--res", "16x16x16"];
     let zarr = [&base[..], &["--format", "zarr", "-o", s(&store)]].concat();
     let (png, slices, stl) = (
         d.path().join("p.png"),

@@ -140,7 +140,9 @@ def test_bad_arguments_are_one_line_errors(call, words):
 def test_the_volume_is_an_array():
     vol = csgpix.voxelize(str(SCENES / "figure-5.2.csg"), 16)
     assert np.asarray(vol) is vol.data
-    assert vol.shape == vol.data.shape == (16, 16, 16) and vol.dtype == np.uint8
+    # figure-5.2 is 30 × 30 × 16 units: 16 voxels along its longest sides, 9 along Z.
+    assert vol.shape == vol.data.shape == (9, 16, 16) and vol.dtype == np.uint8
+    assert vol.dims == (16, 16, 9)
     i, j, k = 3, 4, 5
     assert np.allclose(vol.centre(i, j, k), np.add(vol.origin, np.multiply((i, j, k), vol.spacing)))
 
