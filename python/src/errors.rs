@@ -43,7 +43,7 @@ pub fn error(message: String, place: Option<Place>) -> PyErr {
 
 /// An error of the scene crate: its place is in the error.
 pub fn scene(e: csgpix_scene::Error) -> PyErr {
-    let place = e.location.as_ref().map(|l| Place {
+    let place = e.location().map(|l| Place {
         file: l.file.clone(),
         line: l.line,
         col: l.col,

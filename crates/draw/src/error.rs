@@ -48,7 +48,7 @@ impl Error {
     /// Where in its input the problem is, when it has a place there.
     pub fn location(&self) -> Option<&Location> {
         match self {
-            Error::Scene(e) => e.location.as_ref(),
+            Error::Scene(e) => e.location(),
             Error::DeeperThanMaxdepth { .. } | Error::Solid { .. } | Error::Msg(_) => None,
         }
     }

@@ -210,7 +210,7 @@ pub fn parse_csg_with(
         .run()
         .map_err(|fail| Error::at(file, fail.pos.line, fail.pos.col, fail.msg))?;
     for w in &mut scene.warnings {
-        *w = std::mem::replace(w, Error::msg("")).in_file(file);
+        *w = std::mem::replace(w, Error::invalid("")).in_file(file);
     }
     Ok(scene)
 }

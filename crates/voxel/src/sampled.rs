@@ -399,7 +399,7 @@ pub fn parse_binding(s: &str) -> Result<Binding> {
 pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded> {
     let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| {
         // The expression is one line: its column is the place to name.
-        let col = e.location.as_ref().map_or(1, |at| at.col);
+        let col = e.location().map_or(1, |at| at.col);
         Error::Expr(format!("{col}: {}", e.message))
     })?;
     if let Some(b) = bindings.iter().find(|b| !e.names.contains(&b.name)) {
