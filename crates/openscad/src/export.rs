@@ -192,14 +192,7 @@ pub fn in_scad(e: Error, export: &str, scad: &Path) -> Error {
     let mut sites = vec![];
     call_sites(scad, &node, &mut sites, 0);
     match sites.as_slice() {
-        [(path, l, c)] => Error {
-            location: Some(csgpix_scene::Location {
-                file: path.clone(),
-                line: *l,
-                col: *c,
-            }),
-            ..e
-        },
+        [(path, l, c)] => e.problem().clone().located(path.clone(), *l, *c),
         _ => unplaced(e, &file, at.line, Some(&node)),
     }
 }
@@ -209,15 +202,10 @@ fn unplaced(e: Error, file: &str, line: usize, node: Option<&str>) -> Error {
         Some(n) => format!("line {line}, `{n}(…)`"),
         None => format!("line {line}"),
     };
-    let message = format!(
-        "{file}: in the CSG openscad exported from it ({what}): {}",
-        e.message
-    );
-    Error {
-        location: None,
-        message,
-        kind: e.kind,
-    }
+    let problem = e.problem().clone();
+    problem
+        .context(format!("in the CSG openscad exported from it ({what})"))
+        .context(file)
 }
 
 /// The node a line of openscad's export opens: its first name after the modifiers.

@@ -30,7 +30,7 @@ fn assert_err(text: &str, line: usize, col: usize, part: &str) {
     let e = parse_csg(text, "test.csg").expect_err("should be refused");
     let at = e.location().expect("a located error");
     assert_eq!((at.line, at.col), (line, col), "{e}");
-    assert!(e.message.contains(part), "{e}");
+    assert!(e.problem().to_string().contains(part), "{e}");
 }
 
 fn only_solid(text: &str) -> ConvexSolid {

@@ -207,7 +207,10 @@ mod tests {
         assert_eq!(col(Clip::parse("A B", &n).unwrap_err()), 3);
         let deep = format!("{}A{}", "(".repeat(10_000), ")".repeat(10_000));
         assert!(Clip::parse(&deep, &n)
-            .unwrap_err().problem().to_string().contains("deeper"));
+            .unwrap_err()
+            .problem()
+            .to_string()
+            .contains("deeper"));
         let nots = format!("{}A", "!".repeat(10_000));
         assert!(Clip::parse(&nots, &n).is_err());
     }

@@ -180,7 +180,11 @@ mod tests {
         assert_eq!(col("()"), 2);
         assert_eq!(col("A!B"), 2);
         assert_eq!(col("_A"), 1);
-        assert!(parse("(A.B").unwrap_err().problem().to_string().contains("column 1"));
+        assert!(parse("(A.B")
+            .unwrap_err()
+            .problem()
+            .to_string()
+            .contains("column 1"));
     }
 
     #[test]

@@ -37,7 +37,10 @@ impl Dataset {
         }
         if !invertible(&nrrd.directions) || !nrrd.origin.is_finite() {
             let msg = "dataset: expected a finite origin and 3 independent axis steps";
-            return Err(Error::invalid(format!("{msg}, found {:?}", nrrd.directions)));
+            return Err(Error::invalid(format!(
+                "{msg}, found {:?}",
+                nrrd.directions
+            )));
         }
         let inverse = nrrd.directions.inverse();
         Ok(Dataset { nrrd, inverse })

@@ -89,7 +89,11 @@ impl GridSpec {
         let inner = match (self.res, self.voxel) {
             (Some(dims), None) => Grid::new(dims, lo, hi)?,
             (None, Some(size)) => Self::cubic(size, lo, hi)?,
-            _ => return Err(Error::invalid("give the grid as a resolution or a voxel size, not both")),
+            _ => {
+                return Err(Error::invalid(
+                    "give the grid as a resolution or a voxel size, not both",
+                ))
+            }
         };
         let v = inner.voxel();
         let pad = self.pad.min(MAX_GRID_SIDE);

@@ -275,7 +275,9 @@ impl Outputs {
         }
         let resolved = resolve(path).map_err(err)?;
         match std::fs::metadata(&resolved) {
-            Ok(m) if !m.is_dir() => return Err(err(Error::invalid("exists and is not a directory"))),
+            Ok(m) if !m.is_dir() => {
+                return Err(err(Error::invalid("exists and is not a directory")))
+            }
             Ok(_) => {}
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
             Err(e) => return Err(err(Error::Io(e.into()))),
@@ -295,7 +297,12 @@ impl Outputs {
             .prefix(&format!(".{name}."))
             .suffix(".csgpix-tmp")
             .tempdir_in(&base)
-            .map_err(|e| err(Error::io(format_args!("cannot write in {}", base.display()), &e)))?
+            .map_err(|e| {
+                err(Error::io(
+                    format_args!("cannot write in {}", base.display()),
+                    &e,
+                ))
+            })?
             .keep();
         staged.push(dir.clone());
         drop(staged);
@@ -429,7 +436,9 @@ impl Outputs {
                         .context(format!("{flag} {shown}"))
                 })?)
             }
-            _ => Stage::Unnamed(tempfile::tempfile().map_err(|e| Error::io(format_args!("{flag} {shown}"), &e))?),
+            _ => Stage::Unnamed(
+                tempfile::tempfile().map_err(|e| Error::io(format_args!("{flag} {shown}"), &e))?,
+            ),
         };
         self.slots.push(Slot {
             shown,
@@ -580,7 +589,12 @@ fn existing_ancestor(p: &Path) -> Result<(PathBuf, String)> {
         let (dir, name) = split(&cur);
         match std::fs::metadata(&dir) {
             Ok(m) if m.is_dir() => return Ok((dir, name)),
-            Ok(_) => return Err(Error::invalid(format!("{} is not a directory", dir.display()))),
+            Ok(_) => {
+                return Err(Error::invalid(format!(
+                    "{} is not a directory",
+                    dir.display()
+                )))
+            }
             Err(_) if dir != cur && dir.parent().is_some() => cur = dir,
             Err(e) => return Err(Error::io(dir.display(), &e)),
         }
@@ -629,7 +643,10 @@ fn classify(path: &Path) -> Result<Target> {
             let (dir, _) = split(&p);
             return match std::fs::metadata(&dir) {
                 Ok(m) if m.is_dir() => Ok(Target::File(p, 0o644)),
-                Ok(_) => Err(Error::invalid(format!("{} is not a directory", dir.display()))),
+                Ok(_) => Err(Error::invalid(format!(
+                    "{} is not a directory",
+                    dir.display()
+                ))),
                 Err(e) => Err(Error::io(format_args!("directory {}", dir.display()), &e)),
             };
         }

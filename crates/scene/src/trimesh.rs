@@ -548,7 +548,8 @@ mod stl {
     fn binary(bytes: &[u8], file: &str) -> Result<TriMesh> {
         let len = bytes.len() as u64;
         let n = count(bytes).ok_or_else(|| {
-            let msg = format!("binary STL truncated at byte offset {len}: the header needs 84 bytes");
+            let msg =
+                format!("binary STL truncated at byte offset {len}: the header needs 84 bytes");
             Error::invalid(msg).context(file)
         })?;
         if len < 84 + 50 * n {
@@ -736,9 +737,12 @@ mod obj {
     ) -> Result<DVec3, Located> {
         let mut c = [0.0; 3];
         for (k, c) in c.iter_mut().enumerate() {
-            let (col, w) = words
-                .next()
-                .ok_or_else(|| (end, Error::invalid(format!("a vertex needs 3 coordinates, found {k}"))))?;
+            let (col, w) = words.next().ok_or_else(|| {
+                (
+                    end,
+                    Error::invalid(format!("a vertex needs 3 coordinates, found {k}")),
+                )
+            })?;
             *c = finite(w).ok_or_else(|| {
                 (
                     col,
@@ -762,7 +766,10 @@ mod obj {
         if refs.len() < 3 {
             return Err((
                 col,
-                Error::invalid(format!("a face needs at least 3 vertices, found {}", refs.len())),
+                Error::invalid(format!(
+                    "a face needs at least 3 vertices, found {}",
+                    refs.len()
+                )),
             ));
         }
         for k in 1..refs.len() - 1 {
@@ -778,7 +785,9 @@ mod obj {
         let i: i64 = std::str::from_utf8(a)
             .ok()
             .and_then(|s| s.parse().ok())
-            .ok_or_else(|| Error::invalid(format!("expected a vertex index, found `{}`", show(r))))?;
+            .ok_or_else(|| {
+                Error::invalid(format!("expected a vertex index, found `{}`", show(r)))
+            })?;
         let k = match i {
             1.. => usize::try_from(i - 1).ok().filter(|&k| k < n),
             ..=-1 => usize::try_from(n as i64 + i).ok(),
