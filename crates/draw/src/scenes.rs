@@ -35,7 +35,6 @@ pub enum LoadError {
     },
 }
 
-
 /// Where a display list came from, so a compile error can point into the file.
 enum Origin {
     /// A display-list file and its text.
