@@ -112,12 +112,30 @@ pub enum Error {
     /// written ([`csgpix_scene::output::staged_write`]).
     #[error("interrupted: the run's outputs are being removed")]
     Interrupted,
-    /// A problem of this crate's own, one line.
-    #[error("{0}")]
-    Msg(String),
+    /// A pyramid level past the store's levels.
+    #[error("level {level}: the store has {levels}")]
+    LevelRange {
+        /// The level asked for.
+        level: usize,
+        /// How many levels the store has.
+        levels: usize,
+    },
+    /// Bricks were asked of a slicer the run route does not apply to.
+    #[error("bricks take the run route, which does not apply to grey datasets or blends")]
+    NoRunRoute,
+    /// A writing thread panicked (its panic message went to standard error).
+    #[error("{thread} panicked")]
+    Panicked {
+        /// Which thread: `a chunk writer`, `a sync thread`.
+        thread: &'static str,
+    },
 }
 
 /// A `csgpix-zarr` result.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
-csgpix_scene::message_conversions!(Error, Error::Msg);
+impl From<Error> for String {
+    fn from(e: Error) -> String {
+        e.to_string()
+    }
+}

@@ -338,7 +338,7 @@ impl Unsynced {
                 .collect();
             syncs.into_iter().try_for_each(|s| {
                 s.join()
-                    .unwrap_or_else(|_| Err(Error::Msg("a sync thread panicked".into())))
+                    .unwrap_or_else(|_| Err(Error::Panicked { thread: "a sync thread" }))
             })
         })
     }
