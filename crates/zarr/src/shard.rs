@@ -337,8 +337,11 @@ impl Unsynced {
                 })
                 .collect();
             syncs.into_iter().try_for_each(|s| {
-                s.join()
-                    .unwrap_or_else(|_| Err(Error::Panicked { thread: "a sync thread" }))
+                s.join().unwrap_or_else(|_| {
+                    Err(Error::Panicked {
+                        thread: "a sync thread",
+                    })
+                })
             })
         })
     }
