@@ -382,7 +382,7 @@ pub fn prepare(text: &str, file: &str, sweep: Sweep) -> Result<Prepared, String>
 
 /// A grid error as the command line words it: a scene without solids needs `--bounds`.
 fn bounds_hint(e: csgpix_scene::Error) -> String {
-    match e.kind {
+    match e.kind() {
         csgpix_scene::Kind::NeedsBounds => "the scene has no solids: give --bounds".into(),
         _ => e.to_string(),
     }

@@ -116,16 +116,16 @@ pub fn compile(
     let mut cfg = ArrayConfig::new(width, height);
     cfg.fmt = parse_word(word)?;
     cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
-    cfg.check().map_err(text)?;
+    cfg.check().map_err(|e| text(e.to_string()))?;
     let scene = Scene::load(&paths(scene)?, clip, self::view(view)?, &cfg).map_err(load)?;
     check_window(&scene.lists, &cfg.fmt, width, height)
-        .map_err(|(i, e)| text(scene.locate(i, &e)))?;
+        .map_err(|(i, e)| crate::errors::scene(scene.locate_error(i, &e)))?;
     let ops = match (&scene.clip, scene.empty) {
         (_, true) => Ok(vec![]),
         (None, false) => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
         (Some(expr), false) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
     }
-    .map_err(|(i, e)| text(scene.locate(i, &e)))?;
+    .map_err(|(i, e)| crate::errors::scene(scene.locate_error(i, &e)))?;
     cfg.stack_depth = cfg
         .stack_depth
         .max(rtl_model::array::check_program(&ops, usize::MAX).map_err(|e| text(e.to_string()))?);
@@ -142,7 +142,7 @@ pub fn render<'py>(
     model: &str,
     equations: &str,
 ) -> PyResult<(Bound<'py, PyAny>, u64)> {
-    let model: Model = model.parse().map_err(text)?;
+    let model = model.parse::<Model>().map_err(|e| text(e.to_string()))?;
     let set = equation_set(equations)?;
     let cfg = program.cfg;
     let (codes, cycles) = py
@@ -207,7 +207,7 @@ pub fn verify_select<'py>(
                 builtin.to_string(),
             ),
         };
-        let pla = Pla::parse(&body).map_err(|e| text(format!("{name}:{e}")))?;
+        let pla = Pla::parse(&body).map_err(|e| crate::errors::pla(&name, e))?;
         for r in verify_table(&set, t, &pla).map_err(|e| text(e.to_string()))? {
             let d = PyDict::new(py);
             d.set_item("signal", &r.signal)?;

@@ -250,7 +250,7 @@ impl RunOptions {
             "slab" => Sampling::Slab,
             s => return Err(text(format!("sampling {s:?}: `centre` or `slab`"))),
         };
-        let model: Model = model.parse().map_err(text)?;
+        let model = model.parse::<Model>().map_err(|e| text(e.to_string()))?;
         let route = match (model, route) {
             (Model::Cycle, _) => Route::Array { cycle: true },
             (Model::Word, "runs") => Route::Runs { float: false },

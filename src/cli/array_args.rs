@@ -141,8 +141,10 @@ impl ArrayArgs {
                 "--ties applies to the derived equations; the printed ones fix their own ties"
                     .into(),
             ),
-            (Equations::Derived, TiesArg::Keep) => derive_with_ties(Ties::Keep),
-            (Equations::Derived, TiesArg::Put) => derive_with_ties(Ties::Put),
+            (Equations::Derived, TiesArg::Keep) => {
+                derive_with_ties(Ties::Keep).map_err(String::from)
+            }
+            (Equations::Derived, TiesArg::Put) => derive_with_ties(Ties::Put).map_err(String::from),
         }
     }
 

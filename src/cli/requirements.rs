@@ -129,7 +129,7 @@ pub fn run(a: Args) -> Result<ExitCode, String> {
         Some((lo, hi)) => Grid::new(a.res, lo, hi),
         None => Grid::of_scene(&scene, a.res),
     }
-    .map_err(|e| match e.kind {
+    .map_err(|e| match e.kind() {
         csgpix::scene::Kind::NeedsBounds => at("the scene has no solids: give --bounds".into()),
         _ => at(e.into()),
     })?;

@@ -293,7 +293,7 @@ fn scene_report(
     let set = Equations::Derived.set();
     let counted = count_cycles(&set);
     let simulated = |cfg: &ArrayConfig, ops: &[Op]| {
-        simulate(cfg, &set, ops, a.mem).map_err(csgpix::draw::Error::Msg)
+        simulate(cfg, &set, ops, a.mem).map_err(csgpix::draw::Error::Counter)
     };
     let count: &csgpix::panels::Counter = if a.simulate { &simulated } else { &counted };
     let all = vec![true; ps.lists.len()];

@@ -810,9 +810,9 @@ fn stream_nrrd(
         let mut io: Option<std::io::Error> = None;
         let mut sink = |_: usize, s: &[u8]| {
             w.write_all(s).map_err(|e| {
-                let msg = e.to_string();
+                let sink = (&e).into();
                 io = Some(e);
-                Error::Msg(msg)
+                Error::Sink(sink)
             })
         };
         let r = voxelize_slabs(slicer, route, set, eval, tick, 0..nz, &mut sink);

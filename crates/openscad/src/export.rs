@@ -17,10 +17,14 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
         return csgpix_scene::input::read_text(path);
     }
     if !path.is_file() {
-        return Err(Error::invalid(format!("{name}: no such file")));
+        let missing = csgpix_scene::IoError {
+            kind: std::io::ErrorKind::NotFound,
+            message: "no such file".into(),
+        };
+        return Err(Error::Io(missing).context(path.display()));
     }
-    let dir = tempfile::tempdir()
-        .map_err(|e| Error::invalid(format!("{name}: a temporary directory: {e}")))?;
+    let dir =
+        tempfile::tempdir().map_err(|e| Error::io("a temporary directory", &e).context(path.display()))?;
     let out = dir.path().join("scene.csg");
     // `$preview = false`: the tree OpenSCAD renders (F6, STL export), not its preview (a CSG
     // export evaluates `$preview` as true): the voxels are the parts a design prints.
@@ -38,7 +42,7 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
                  or export File → Export → Export as CSG and give the .csg"
             )))
         }
-        Err(e) => return Err(Error::invalid(format!("{name}: running openscad: {e}"))),
+        Err(e) => return Err(Error::io("running openscad", &e).context(path.display())),
         Ok(run) => run,
     };
     let text = std::fs::read_to_string(&out)

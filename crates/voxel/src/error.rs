@@ -188,6 +188,7 @@ impl Error {
         match self {
             Error::Scene(e) => e.location(),
             Error::Draw(e) => e.location(),
+            Error::Context { source, .. } => source.location(),
             _ => None,
         }
     }
