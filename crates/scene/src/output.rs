@@ -332,7 +332,7 @@ impl Outputs {
     ) -> Result<()> {
         let slot = &mut self.slots[out.0];
         let shown = &slot.shown;
-        let err = |e: std::io::Error| Error::io(&shown, &e);
+        let err = |e: std::io::Error| Error::io(shown, &e);
         let file = match &mut slot.stage {
             Stage::Named(s) => s.file(),
             Stage::Unnamed(f) => f,
