@@ -23,8 +23,8 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
         };
         return Err(Error::Io(missing).context(path.display()));
     }
-    let dir =
-        tempfile::tempdir().map_err(|e| Error::io("a temporary directory", &e).context(path.display()))?;
+    let dir = tempfile::tempdir()
+        .map_err(|e| Error::io("a temporary directory", &e).context(path.display()))?;
     let out = dir.path().join("scene.csg");
     // `$preview = false`: the tree OpenSCAD renders (F6, STL export), not its preview (a CSG
     // export evaluates `$preview` as true): the voxels are the parts a design prints.

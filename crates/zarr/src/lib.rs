@@ -1023,11 +1023,9 @@ impl ZarrVolume {
                 .collect();
             let mut first = Ok(());
             for w in writers {
-                let r = w.join().unwrap_or_else(|_| {
-                    Err(Error::Panicked {
-                        thread: "a chunk writer",
-                    })
-                });
+                let r = w.join().unwrap_or(Err(Error::Panicked {
+                    thread: "a chunk writer",
+                }));
                 first = first.and(r);
             }
             first

@@ -337,11 +337,9 @@ impl Unsynced {
                 })
                 .collect();
             syncs.into_iter().try_for_each(|s| {
-                s.join().unwrap_or_else(|_| {
-                    Err(Error::Panicked {
-                        thread: "a sync thread",
-                    })
-                })
+                s.join().unwrap_or(Err(Error::Panicked {
+                    thread: "a sync thread",
+                }))
             })
         })
     }
