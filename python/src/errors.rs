@@ -46,7 +46,9 @@ pub fn error(message: String, place: Option<Place>) -> PyErr {
 /// its kind (`FileNotFoundError`, `PermissionError`, `IsADirectoryError`, else `OSError`),
 /// its message the one line the command line prints.
 fn os_error(kind: std::io::ErrorKind, message: String) -> PyErr {
-    use pyo3::exceptions::{PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError};
+    use pyo3::exceptions::{
+        PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError,
+    };
     use std::io::ErrorKind;
     match kind {
         ErrorKind::NotFound => PyFileNotFoundError::new_err(message),
@@ -104,6 +106,10 @@ pub fn voxel(e: csgpix_voxel::Error) -> PyErr {
     match e {
         csgpix_voxel::Error::Scene(e) => scene(e),
         csgpix_voxel::Error::Draw(e) => draw(e),
+        e @ csgpix_voxel::Error::Binding {
+            problem: csgpix_voxel::BindingProblem::NoSuchFile { .. },
+            ..
+        } => os_error(std::io::ErrorKind::NotFound, e.to_string()),
         e => {
             let at = place(e.location());
             error(e.to_string(), at)
