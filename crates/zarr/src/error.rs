@@ -51,10 +51,10 @@ pub enum Error {
     /// Reading or writing the store failed (the filesystem, or zarrs).
     #[error("{}: {message}", .path.display())]
     Store {
-        /// The store's directory.
+        /// The store's directory (or the file in it).
         path: PathBuf,
-        /// zarrs's or the system's message.
-        message: String,
+        /// The system's or zarrs's error.
+        message: StoreProblem,
     },
     /// A chunk row index past the volume's rows.
     #[error("chunk row {row}: the volume has rows 0..{rows}")]
@@ -129,6 +129,17 @@ pub enum Error {
         /// Which thread: `a chunk writer`, `a sync thread`.
         thread: &'static str,
     },
+}
+
+/// Why reading or writing a store failed.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum StoreProblem {
+    /// The system's error, with its kind (a missing directory, a full disk, ...).
+    #[error(transparent)]
+    Io(#[from] csgpix_scene::IoError),
+    /// zarrs's error, as zarrs words it (its errors can be neither cloned nor compared).
+    #[error("{0}")]
+    Zarrs(String),
 }
 
 /// A `csgpix-zarr` result.

@@ -108,7 +108,7 @@ use zarrs::array::{Array, ArrayBuilder, ArrayMetadataOptions, CodecOptions};
 use zarrs::filesystem::FilesystemStore;
 use zarrs::group::{Group, GroupBuilder};
 
-pub use error::{Error, Result};
+pub use error::{Error, Result, StoreProblem};
 pub use pyramid::{downsample, label_of};
 
 /// The side of a cubic chunk when none is asked for: a chunk row of a 2048² grid is then
@@ -445,7 +445,15 @@ const _: fn() = || {
 fn store_err(path: &Path) -> impl Fn(&dyn std::fmt::Display) -> Error + '_ {
     move |e| Error::Store {
         path: path.to_path_buf(),
-        message: e.to_string(),
+        message: StoreProblem::Zarrs(e.to_string()),
+    }
+}
+
+/// The system's error on the store at `path`.
+fn io_err(path: &Path) -> impl Fn(std::io::Error) -> Error + '_ {
+    move |e| Error::Store {
+        path: path.to_path_buf(),
+        message: StoreProblem::Io(e.into()),
     }
 }
 
@@ -578,10 +586,10 @@ impl ZarrVolume {
                 }
             }
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-                std::fs::create_dir_all(path).map_err(|e| err(&e))?
+                std::fs::create_dir_all(path).map_err(io_err(path))?
             }
             Err(_) if path.exists() => return Err(Error::NotEmpty { path: path.into() }),
-            Err(e) => return Err(err(&e)),
+            Err(e) => return Err(io_err(path)(e)),
         }
         let store = Arc::new(FilesystemStore::new(path).map_err(|e| err(&e))?);
         let group = GroupBuilder::new()
