@@ -79,6 +79,26 @@ pub enum Error {
     /// caller has to give a box.
     #[error("the scene has no solids: give the grid's bounds")]
     NeedsBounds,
+    /// A grid resolution with a side of 0 voxels.
+    #[error("resolution {dims:?}: every side needs at least one voxel")]
+    EmptyResolution {
+        /// The resolution asked for, X, Y, Z.
+        dims: [usize; 3],
+    },
+    /// A grid (padding included) with more voxels along an axis than csgpix allows.
+    #[error("a grid of {dims:?} voxels: at most {limit} per axis")]
+    GridTooLarge {
+        /// The grid's voxels, X, Y, Z.
+        dims: [usize; 3],
+        /// The most voxels along an axis ([`crate::grid::MAX_GRID_SIDE`]).
+        limit: usize,
+    },
+    /// An output's directory (or a parent of it) is a file.
+    #[error("{} is not a directory", OneLine(path))]
+    NotADirectory {
+        /// The path, as shown.
+        path: String,
+    },
     /// Input whose content breaks its format's rules or a setting's range: what is wrong,
     /// one line (the place, when it has one, is in an enclosing [`Error::At`]).
     #[error("{}", OneLine(.0))]

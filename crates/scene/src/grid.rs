@@ -33,9 +33,7 @@ impl Grid {
     /// A grid over an explicit box.
     pub fn new(dims: [usize; 3], min: DVec3, max: DVec3) -> Result<Grid> {
         if dims.contains(&0) {
-            return Err(Error::invalid(format!(
-                "resolution {dims:?}: every side needs at least one voxel"
-            )));
+            return Err(Error::EmptyResolution { dims });
         }
         if !(min.is_finite() && max.is_finite()) || (max - min).min_element() <= 0.0 {
             return Err(Error::invalid(format!(
@@ -99,9 +97,10 @@ impl GridSpec {
         let pad = self.pad.min(MAX_GRID_SIDE);
         let dims = inner.dims.map(|d| d.saturating_add(2 * pad));
         if dims.iter().any(|&d| d > MAX_GRID_SIDE) {
-            return Err(Error::invalid(format!(
-                "a grid of {dims:?} voxels: at most {MAX_GRID_SIDE} per axis"
-            )));
+            return Err(Error::GridTooLarge {
+                dims,
+                limit: MAX_GRID_SIDE,
+            });
         }
         let margin = v * pad as f64;
         Grid::new(dims, inner.min - margin, inner.max + margin)

@@ -590,10 +590,9 @@ fn existing_ancestor(p: &Path) -> Result<(PathBuf, String)> {
         match std::fs::metadata(&dir) {
             Ok(m) if m.is_dir() => return Ok((dir, name)),
             Ok(_) => {
-                return Err(Error::invalid(format!(
-                    "{} is not a directory",
-                    dir.display()
-                )))
+                return Err(Error::NotADirectory {
+                    path: dir.display().to_string(),
+                })
             }
             Err(_) if dir != cur && dir.parent().is_some() => cur = dir,
             Err(e) => return Err(Error::io(dir.display(), &e)),
@@ -643,10 +642,9 @@ fn classify(path: &Path) -> Result<Target> {
             let (dir, _) = split(&p);
             return match std::fs::metadata(&dir) {
                 Ok(m) if m.is_dir() => Ok(Target::File(p, 0o644)),
-                Ok(_) => Err(Error::invalid(format!(
-                    "{} is not a directory",
-                    dir.display()
-                ))),
+                Ok(_) => Err(Error::NotADirectory {
+                    path: dir.display().to_string(),
+                }),
                 Err(e) => Err(Error::io(format_args!("directory {}", dir.display()), &e)),
             };
         }
