@@ -34,12 +34,11 @@ pub(crate) fn mesh(statement: &str, dir: Option<&Path>) -> csgpix_scene::Result<
         .suffix(".csg")
         .tempfile_in(beside)
         .or_else(|_| tempfile::Builder::new().suffix(".csg").tempfile())
-        .map_err(|e| Error::invalid(format!("a temporary file: {e}")))?;
-    let tmp =
-        tempfile::tempdir().map_err(|e| Error::invalid(format!("a temporary directory: {e}")))?;
+        .map_err(|e| Error::io("a temporary file", &e))?;
+    let tmp = tempfile::tempdir().map_err(|e| Error::io("a temporary directory", &e))?;
     let (csg, stl) = (hidden.path().to_path_buf(), tmp.path().join("sub.stl"));
     std::fs::write(&csg, statement)
-        .map_err(|e| Error::invalid(format!("writing {}: {e}", csg.display())))?;
+        .map_err(|e| Error::io(format_args!("writing {}", csg.display()), &e))?;
     let run = std::process::Command::new("openscad")
         .arg("-o")
         .arg(&stl)
@@ -52,7 +51,7 @@ pub(crate) fn mesh(statement: &str, dir: Option<&Path>) -> csgpix_scene::Result<
                 "needs openscad on PATH (Debian: apt-get install openscad)",
             ))
         }
-        Err(e) => return Err(Error::invalid(format!("running openscad: {e}"))),
+        Err(e) => return Err(Error::io("running openscad", &e)),
         Ok(run) => run,
     };
     if !(run.status.success() && stl.is_file()) {

@@ -903,11 +903,8 @@ fn fetch(h: &Header, plan: &Plan, bytes: &[u8], dir: Option<&Path>) -> Result<Ve
                 false => Err(std::io::Error::other("not a regular file")),
             };
             let file = open(&path).map_err(|e| {
-                h.err(
-                    f,
-                    0,
-                    format!("expected a readable data file {}: {e}", path.display()),
-                )
+                let what = format_args!("expected a readable data file {}", path.display());
+                Error::io(what, &e).located(h.file, f.line, f.col)
             })?;
             read_data(std::io::BufReader::new(file), plan)
         }
