@@ -13,7 +13,9 @@ Compile a scene for the array and render it, or step the array's models::
     img = csgpix.render(prog, model="cycle")    # Image: .codes[y, x], .rgb(), .cycles
 
 Every error is a :class:`CsgpixError` (a ``ValueError``) whose message is the command line's
-one line, with ``file``, ``line`` and ``col`` where the problem has a place in a file.
+one line, with ``file``, ``line`` and ``col`` where the problem has a place in a file; a file
+the system cannot read raises the matching :class:`OSError` instead (``FileNotFoundError``,
+``PermissionError``, ``IsADirectoryError``) with the same message.
 """
 
 from __future__ import annotations

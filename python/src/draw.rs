@@ -112,7 +112,7 @@ pub fn compile(
     let mut cfg = ArrayConfig::new(width, height);
     cfg.fmt = word_format(word)?;
     cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
-    cfg.check().map_err(text)?;
+    cfg.check().map_err(|e| text(e.to_string()))?;
     let (scene, ops) = csgpix_run::render::compile(&paths(scene)?, clip, self::view(view)?, &cfg)
         .map_err(crate::errors::run)?;
     cfg.stack_depth = cfg
@@ -131,7 +131,7 @@ pub fn render<'py>(
     model: &str,
     equations: &str,
 ) -> PyResult<(Bound<'py, PyAny>, u64)> {
-    let model: Model = model.parse().map_err(text)?;
+    let model = model.parse::<Model>().map_err(|e| text(e.to_string()))?;
     let set = equation_set(equations)?;
     let cfg = program.cfg;
     let (codes, cycles) = py

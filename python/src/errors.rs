@@ -1,6 +1,7 @@
 //! `csgpix.CsgpixError`: every error of the library as one Python exception, its message the
-//! one line the command line prints, with `file`, `line` and `col` set where the error has a
-//! place in an input (None otherwise).
+//! one line the command line prints, with `file`, `line` and `col` set from the error's place
+//! in an input (None otherwise). A file the system could not read or write raises the
+//! matching `OSError` subclass instead.
 
 use pyo3::prelude::*;
 
@@ -41,51 +42,98 @@ pub fn error(message: String, place: Option<Place>) -> PyErr {
     })
 }
 
-/// An error of the scene crate: its place is in the error.
-pub fn scene(e: csgpix_scene::Error) -> PyErr {
-    let place = e.location.as_ref().map(|l| Place {
+/// The exception for a file the system could not read or write: the `OSError` subclass of
+/// its kind (`FileNotFoundError`, `PermissionError`, `IsADirectoryError`, else `OSError`),
+/// its message the one line the command line prints.
+fn os_error(kind: std::io::ErrorKind, message: String) -> PyErr {
+    use pyo3::exceptions::{
+        PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError,
+    };
+    use std::io::ErrorKind;
+    match kind {
+        ErrorKind::NotFound => PyFileNotFoundError::new_err(message),
+        ErrorKind::PermissionDenied => PyPermissionError::new_err(message),
+        ErrorKind::IsADirectory => PyIsADirectoryError::new_err(message),
+        _ => PyOSError::new_err(message),
+    }
+}
+
+/// The place of a located error, as the exception's attributes.
+fn place(at: Option<&csgpix_scene::Location>) -> Option<Place> {
+    at.map(|l| Place {
         file: l.file.clone(),
         line: l.line,
         col: l.col,
-    });
-    error(e.to_string(), place)
+    })
 }
 
-/// An error known only by its text: a `FILE:LINE:COL: ` prefix, when there is one, is its
-/// place (the form every csgpix message with a place has).
+/// An error of the scene crate: its place and the system's kind of failure are in the error.
+pub fn scene(e: csgpix_scene::Error) -> PyErr {
+    match e.io_kind() {
+        Some(kind) => os_error(kind, e.to_string()),
+        None => error(e.to_string(), place(e.location())),
+    }
+}
+
+/// An error known only by its text (the binding's own checks): no place.
 pub fn text(message: String) -> PyErr {
-    let place = parse_place(&message);
-    error(message, place)
+    error(message, None)
 }
 
-fn parse_place(m: &str) -> Option<Place> {
-    let head = m.split(": ").next()?;
-    let mut parts = head.rsplitn(3, ':');
-    let col = parts.next()?.parse().ok()?;
-    let line = parts.next()?.parse().ok()?;
-    let file = parts.next()?.to_string();
-    Some(Place { file, line, col })
+/// A PLA file `file` that does not parse: `FILE:LINE:COL: message`, placed.
+pub fn pla(file: &str, e: rtl_model::select::pla::PlaError) -> PyErr {
+    let at = Place {
+        file: file.to_string(),
+        line: e.line,
+        col: e.col,
+    };
+    error(format!("{file}:{e}"), Some(at))
+}
+
+/// A drawing error, kept whole where it wraps a scene error.
+pub fn draw(e: csgpix_draw::Error) -> PyErr {
+    match e {
+        csgpix_draw::Error::Scene(e) => scene(e),
+        e => {
+            let at = place(e.location());
+            error(e.to_string(), at)
+        }
+    }
 }
 
 /// A voxelizer's error, kept whole where it wraps a scene error.
 pub fn voxel(e: csgpix_voxel::Error) -> PyErr {
     match e {
         csgpix_voxel::Error::Scene(e) => scene(e),
-        e => text(e.to_string()),
+        csgpix_voxel::Error::Draw(e) => draw(e),
+        e @ csgpix_voxel::Error::Binding {
+            problem: csgpix_voxel::BindingProblem::NoSuchFile { .. },
+            ..
+        } => os_error(std::io::ErrorKind::NotFound, e.to_string()),
+        e => {
+            let at = place(e.location());
+            error(e.to_string(), at)
+        }
     }
 }
 
-/// An error of the run layer: a scene error's place is in the error.
+/// An error of the run layer: the libraries' errors as above; a scene error wrapped in
+/// context keeps its place (and an unreadable file its `OSError`).
 pub fn run(e: csgpix_run::Error) -> PyErr {
-    match e.scene() {
-        Some(s) => {
-            let place = s.location.as_ref().map(|l| Place {
-                file: l.file.clone(),
-                line: l.line,
-                col: l.col,
-            });
-            error(e.to_string(), place)
-        }
-        None => text(e.to_string()),
+    use csgpix_run::Error as R;
+    match e {
+        R::Scene(e) => scene(e),
+        R::Voxel(e) => voxel(e),
+        R::Draw(e) => draw(e),
+        e => match e.scene() {
+            Some(s) => match s.io_kind() {
+                Some(kind) => os_error(kind, e.to_string()),
+                None => {
+                    let at = place(s.location());
+                    error(e.to_string(), at)
+                }
+            },
+            None => text(e.to_string()),
+        },
     }
 }

@@ -129,7 +129,7 @@ def test_a_failed_task_leaves_nothing(tmp_path, client):
     scene = csgpix.load(scene_file)
     scene_file.unlink()
     out = tmp_path / "out.zarr"
-    with pytest.raises(csgpix.CsgpixError, match="gone.csg"):
+    with pytest.raises(FileNotFoundError, match="gone.csg"):
         cd.voxelize_zarr(scene, out, 16, chunk=4, client=client)
     assert list(tmp_path.iterdir()) == [], "no output and no staging directory"
 

@@ -117,6 +117,20 @@ def test_errors_carry_file_line_and_column(tmp):
     assert not (tmp / "x.nrrd").exists()
 
 
+def test_a_missing_file_is_file_not_found(tmp):
+    missing = tmp / "missing.csg"
+    with pytest.raises(FileNotFoundError) as e:
+        csgpix.load(missing)
+    assert str(e.value).startswith(f"{missing}: ") and "\n" not in str(e.value)
+    with pytest.raises(FileNotFoundError):
+        csgpix.load_expr("a", [("a", str(tmp / "missing.stl"))])
+    with pytest.raises(IsADirectoryError):
+        csgpix.load(tmp)
+    # The same words as the command line.
+    r = run_cli("voxelize", str(missing), "--res", "8", "-o", str(tmp / "x.nrrd"))
+    assert r.returncode == 2 and r.stderr.decode().strip().endswith(str(e.value))
+
+
 @pytest.mark.parametrize(
     "call,words",
     [

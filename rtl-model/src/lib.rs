@@ -28,5 +28,5 @@ pub use cycle::CycleArray;
 pub use depth_word::WordFormat;
 pub use program::{Coeffs, Op};
 pub use select::{EquationSet, Equations};
-pub use state::{ArchState, ArrayConfig, Pixel};
+pub use state::{ArchState, ArrayConfig, ConfigError, Pixel};
 pub use word::WordArray;

@@ -62,15 +62,16 @@ fn bits(v: u64, width: u32) -> impl Iterator<Item = Value> {
 
 impl Recorder {
     /// A recorder for the pixels `probes` of an array `cfg`; refuses pixels outside it.
-    pub fn new(cfg: ArrayConfig, probes: Vec<(usize, usize)>) -> Result<Recorder, String> {
-        if let Some(p) = probes
+    pub fn new(cfg: ArrayConfig, probes: Vec<(usize, usize)>) -> Result<Recorder, ProbeOutside> {
+        if let Some(&probe) = probes
             .iter()
             .find(|p| p.0 >= cfg.width || p.1 >= cfg.height)
         {
-            return Err(format!(
-                "probe {},{} lies outside the {}x{} array",
-                p.0, p.1, cfg.width, cfg.height
-            ));
+            return Err(ProbeOutside {
+                probe,
+                width: cfg.width,
+                height: cfg.height,
+            });
         }
         Ok(Recorder {
             cfg,
@@ -288,5 +289,35 @@ impl Recorder {
         } else {
             format!("{:.2}", fmt.to_real(raw))
         }
+    }
+}
+
+/// A probe on a pixel outside the array ([`Recorder::new`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ProbeOutside {
+    /// The pixel, (x, y).
+    pub probe: (usize, usize),
+    /// The array's width.
+    pub width: usize,
+    /// The array's height.
+    pub height: usize,
+}
+
+impl std::fmt::Display for ProbeOutside {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (x, y) = self.probe;
+        write!(
+            f,
+            "probe {x},{y} lies outside the {}x{} array",
+            self.width, self.height
+        )
+    }
+}
+
+impl std::error::Error for ProbeOutside {}
+
+impl From<ProbeOutside> for String {
+    fn from(e: ProbeOutside) -> String {
+        e.to_string()
     }
 }

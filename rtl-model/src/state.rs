@@ -39,25 +39,22 @@ impl ArrayConfig {
     }
 
     /// Reject shapes the array cannot be built in.
-    pub fn check(&self) -> Result<(), String> {
+    pub fn check(&self) -> Result<(), ConfigError> {
         if self.width == 0 || self.height == 0 {
-            return Err(format!(
-                "array {}x{} has no pixels",
-                self.width, self.height
-            ));
+            return Err(ConfigError::NoPixels {
+                width: self.width,
+                height: self.height,
+            });
         }
-        if self.colour_bits == 0 || self.colour_bits > self.fmt.bits().min(32) {
-            return Err(format!(
-                "colour registers of {} bits: need 1..={} (N_D and 32)",
-                self.colour_bits,
-                self.fmt.bits().min(32)
-            ));
+        let max = self.fmt.bits().min(32);
+        if self.colour_bits == 0 || self.colour_bits > max {
+            let bits = self.colour_bits;
+            return Err(ConfigError::ColourBits { bits, max });
         }
         if self.stack_depth > 64 {
-            return Err(format!(
-                "clipping stack of {} levels: at most 64",
-                self.stack_depth
-            ));
+            return Err(ConfigError::StackDepth {
+                levels: self.stack_depth,
+            });
         }
         Ok(())
     }
@@ -146,5 +143,56 @@ impl ArchState {
             self.pixels[i],
             other.pixels[i],
         ))
+    }
+}
+
+/// Why an array cannot be built in a configuration ([`ArrayConfig::check`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ConfigError {
+    /// A width or height of 0.
+    NoPixels {
+        /// Pixels across.
+        width: usize,
+        /// Pixels down.
+        height: usize,
+    },
+    /// Colour registers of 0 bits or wider than the depth word (and 32).
+    ColourBits {
+        /// Bits asked for.
+        bits: u32,
+        /// The most allowed: N_D, at most 32.
+        max: u32,
+    },
+    /// A clipping stack deeper than 64 levels.
+    StackDepth {
+        /// Levels asked for.
+        levels: usize,
+    },
+}
+
+impl std::fmt::Display for ConfigError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ConfigError::NoPixels { width, height } => {
+                write!(f, "array {width}x{height} has no pixels")
+            }
+            ConfigError::ColourBits { bits, max } => {
+                write!(
+                    f,
+                    "colour registers of {bits} bits: need 1..={max} (N_D and 32)"
+                )
+            }
+            ConfigError::StackDepth { levels } => {
+                write!(f, "clipping stack of {levels} levels: at most 64")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ConfigError {}
+
+impl From<ConfigError> for String {
+    fn from(e: ConfigError) -> String {
+        e.to_string()
     }
 }

@@ -310,7 +310,7 @@ pub fn clip_scene_ops(
         let msg = format!(
             "{}: §5.2.1 draws a clipping function product by product, so write it with \
              fewer (voxelize evaluates a .csg tree in Blist, without products)",
-            e.message
+            e.problem()
         );
         (
             0,

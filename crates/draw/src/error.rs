@@ -36,9 +36,57 @@ pub enum Error {
         /// The plane and field at fault.
         error: CompileError,
     },
-    /// A problem of this crate's own, one line.
+    /// The clipping function or tree does not compile as a whole (§5.2): what is wrong.
+    #[error("{}", .0.msg)]
+    Clip(CompileError),
+    /// Binning a scene into panels would take more than `limit` panels of `panel` pixels
+    /// (`cols` x `rows` of them).
+    #[error(
+        "{cols}x{rows} panels of {}x{}: more than {limit} to bin (use larger panels)",
+        panel.0, panel.1
+    )]
+    TooManyPanels {
+        /// Panels across.
+        cols: usize,
+        /// Panels down.
+        rows: usize,
+        /// One panel's width and height, pixels.
+        panel: (usize, usize),
+        /// The most panels binned.
+        limit: usize,
+    },
+    /// A polygon was given fewer than 3 vertices.
+    #[error("a polygon needs at least 3 vertices, got {got}")]
+    TooFewVertices {
+        /// How many were given.
+        got: usize,
+    },
+    /// A program the array refuses (a clipping stack too shallow for it, say).
+    #[error(transparent)]
+    Program(#[from] rtl_model::program::ProgramError),
+    /// A projected scene with no solids: nothing fixes its scale.
+    #[error("the scene has no solids")]
+    NoSolids,
+    /// A polygon whose turns go both ways.
+    #[error("the polygon is not convex: split it into convex pieces")]
+    NotConvex,
+    /// A polygon without area.
+    #[error("the polygon has no area")]
+    NoArea,
+    /// A line with ends at one point or a width not positive.
+    #[error("a line needs two distinct ends and a positive width")]
+    BadLine,
+    /// The cycle counter a caller gave to [`crate::panels`] failed: its message.
     #[error("{0}")]
-    Msg(String),
+    Counter(String),
+    /// A problem about `what` (e.g. the primitive it concerns): `what: source`.
+    #[error("{what}: {source}")]
+    Context {
+        /// What the problem concerns.
+        what: String,
+        /// The problem.
+        source: Box<Error>,
+    },
 }
 
 /// A `csgpix-draw` result.
@@ -48,8 +96,9 @@ impl Error {
     /// Where in its input the problem is, when it has a place there.
     pub fn location(&self) -> Option<&Location> {
         match self {
-            Error::Scene(e) => e.location.as_ref(),
-            Error::DeeperThanMaxdepth { .. } | Error::Solid { .. } | Error::Msg(_) => None,
+            Error::Scene(e) => e.location(),
+            Error::Context { source, .. } => source.location(),
+            _ => None,
         }
     }
 
@@ -61,10 +110,16 @@ impl Error {
                 detail: format!("{what}: {detail}"),
                 suggested,
             },
-            e @ Error::Solid { .. } => Error::Msg(format!("{what}: {e}")),
-            Error::Msg(m) => Error::Msg(format!("{what}: {m}")),
+            e => Error::Context {
+                what: what.to_string(),
+                source: Box::new(e),
+            },
         }
     }
 }
 
-csgpix_scene::message_conversions!(Error, Error::Msg);
+impl From<Error> for String {
+    fn from(e: Error) -> String {
+        e.to_string()
+    }
+}

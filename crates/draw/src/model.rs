@@ -52,14 +52,22 @@ impl fmt::Display for Model {
     }
 }
 
-impl FromStr for Model {
-    type Err = String;
+/// A model name that is none of csgpix's.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("unknown model `{name}`: cycle, word or float")]
+pub struct UnknownModel {
+    /// The name given.
+    pub name: String,
+}
 
-    fn from_str(s: &str) -> Result<Model, String> {
+impl FromStr for Model {
+    type Err = UnknownModel;
+
+    fn from_str(s: &str) -> Result<Model, UnknownModel> {
         Model::ALL
             .into_iter()
             .find(|m| m.name() == s)
-            .ok_or_else(|| format!("unknown model `{s}`: cycle, word or float"))
+            .ok_or_else(|| UnknownModel { name: s.into() })
     }
 }
 

@@ -102,7 +102,7 @@ impl PanelScene {
         let colour_bits = colour_bits(&self.fmt);
         clip_scene_ops(&self.lists, &clip, &self.fmt, colour_bits).map_err(|(solid, error)| {
             match error.field {
-                crate::compile::WHOLE_PROGRAM => Error::Msg(error.msg),
+                crate::compile::WHOLE_PROGRAM => Error::Clip(error),
                 _ => Error::Solid { solid, error },
             }
         })
@@ -258,10 +258,12 @@ pub fn panel_work(
 ) -> Result<Vec<PanelWork>> {
     let (cols, rows) = tiling(ps.screen, panel);
     if cols * rows > MAX_PANELS {
-        return Err(Error::Msg(format!(
-            "{cols}x{rows} panels of {}x{}: more than {MAX_PANELS} to bin (use larger panels)",
-            panel.0, panel.1
-        )));
+        return Err(Error::TooManyPanels {
+            cols,
+            rows,
+            panel,
+            limit: MAX_PANELS,
+        });
     }
     let cfg = ps.panel_config(panel);
     let slice: Vec<u64> = (0..ps.lists.len())
@@ -445,7 +447,7 @@ pub fn render_on_panels(
         } else {
             Box::new(WordArray::new(cfg, set.clone()))
         };
-        arr.run(&ops).map_err(|e| e.to_string())?;
+        arr.run(&ops)?;
         for y in 0..panel.1.min(h - y0) {
             for x in 0..panel.0.min(w - x0) {
                 let p = arr.pixel(x, y);

@@ -41,10 +41,9 @@ fn perpendicular(a: (f64, f64), b: (f64, f64), inside_left: bool) -> Option<DlPl
 /// A convex polygon with vertices in pixel coordinates, in either winding.
 pub fn polygon(support: Support, colour: u32, vertices: &[(f64, f64)]) -> Result<DisplayList> {
     if vertices.len() < 3 {
-        return Err(Error::Msg(format!(
-            "a polygon needs at least 3 vertices, got {}",
-            vertices.len()
-        )));
+        return Err(Error::TooFewVertices {
+            got: vertices.len(),
+        });
     }
     let n = vertices.len();
     let cross = |i: usize| {
@@ -54,7 +53,7 @@ pub fn polygon(support: Support, colour: u32, vertices: &[(f64, f64)]) -> Result
     let turns: Vec<f64> = (0..n).map(cross).collect();
     let left = turns.iter().any(|t| *t > 0.0);
     if turns.iter().any(|t| *t > 0.0) && turns.iter().any(|t| *t < 0.0) {
-        return Err("the polygon is not convex: split it into convex pieces".into());
+        return Err(Error::NotConvex);
     }
     let mut planes = vec![DlPlane {
         z0: support.z0,
@@ -67,7 +66,7 @@ pub fn polygon(support: Support, colour: u32, vertices: &[(f64, f64)]) -> Result
     }];
     planes.extend((0..n).filter_map(|i| perpendicular(vertices[i], vertices[(i + 1) % n], left)));
     if planes.len() < 4 {
-        return Err("the polygon has no area".into());
+        return Err(Error::NoArea);
     }
     Ok(DisplayList {
         planes,
@@ -86,7 +85,7 @@ pub fn line(
     let (ex, ey) = (b.0 - a.0, b.1 - a.1);
     let len = (ex * ex + ey * ey).sqrt();
     if len < 1e-12 || width <= 0.0 {
-        return Err("a line needs two distinct ends and a positive width".into());
+        return Err(Error::BadLine);
     }
     let (nx, ny) = (-ey / len * width / 2.0, ex / len * width / 2.0);
     let corners = [

@@ -90,7 +90,7 @@ impl Frame {
             (a.min(p), b.max(p))
         });
         if !min.is_finite() {
-            return Err("the scene has no solids".into());
+            return Err(Error::NoSolids);
         }
         let ext = (max - min).max(DVec3::splat(1e-9));
         let scale = ((width.max(2) - 1) as f64 / ext.x).min((height.max(2) - 1) as f64 / ext.y);

@@ -15,10 +15,12 @@ use rtl_model::ArrayConfig;
 /// Why a scene could not be loaded.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum LoadError {
-    /// A problem with the files or the clipping function, one line (with `file:line:col`
-    /// where it has a place).
-    #[error("{0}")]
-    Msg(String),
+    /// A `.csg` scene was given with other scene files.
+    #[error("a .csg scene must be the only SCENE (its tree combines its solids)")]
+    CsgNotAlone,
+    /// A clipping function was given with a `.csg` scene.
+    #[error("--clip applies to display lists; a .csg scene's tree is its clipping function")]
+    ClipWithCsg,
     /// A scene file could not be read (its `file:line:col` kept in the error).
     #[error(transparent)]
     Scene(#[from] csgpix_scene::Error),
@@ -31,12 +33,6 @@ pub enum LoadError {
         /// What went wrong.
         error: crate::Error,
     },
-}
-
-impl From<String> for LoadError {
-    fn from(s: String) -> LoadError {
-        LoadError::Msg(s)
-    }
 }
 
 /// Where a display list came from, so a compile error can point into the file.
@@ -75,13 +71,8 @@ impl Scene {
         };
         match paths.iter().position(is_csg) {
             None => Self::load_lists(paths, clip),
-            Some(_) if paths.len() > 1 => Err(LoadError::Msg(
-                "a .csg scene must be the only SCENE (its tree combines its solids)".into(),
-            )),
-            Some(_) if clip.is_some() => Err(LoadError::Msg(
-                "--clip applies to display lists; a .csg scene's tree is its clipping function"
-                    .into(),
-            )),
+            Some(_) if paths.len() > 1 => Err(LoadError::CsgNotAlone),
+            Some(_) if clip.is_some() => Err(LoadError::ClipWithCsg),
             Some(_) => Self::load_csg(&paths[0], view, cfg),
         }
     }
@@ -100,7 +91,7 @@ impl Scene {
             None => None,
             Some(text) => {
                 let names: Vec<String> = (0..lists.len()).map(object_name).collect();
-                let e = Clip::parse(text, &names).map_err(|e| e.in_file("--clip").to_string())?;
+                let e = Clip::parse(text, &names).map_err(|e| e.in_file("--clip"))?;
                 Some(e)
             }
         };
@@ -141,29 +132,32 @@ impl Scene {
 
     /// A compile error on list `i`, as `file:line:col: message`.
     pub fn locate(&self, i: usize, e: &CompileError) -> String {
+        self.locate_error(i, e).to_string()
+    }
+
+    /// A compile error on list `i`, placed in its file: an [`csgpix_scene::Error::At`] where
+    /// it has a line there, else a context (`--clip` or the file) before the message.
+    pub fn locate_error(&self, i: usize, e: &CompileError) -> csgpix_scene::Error {
         use crate::compile::{WHOLE_LIST, WHOLE_PROGRAM};
+        use csgpix_scene::Error;
+        let problem = Error::invalid(e.msg.clone());
         match (&self.origins[i], e.field) {
             // Display lists are clipped by --clip: the whole program is its.
-            (Origin::List { .. }, WHOLE_PROGRAM) => return format!("--clip: {}", e.msg),
+            (Origin::List { .. }, WHOLE_PROGRAM) => return problem.context("--clip"),
             (
                 Origin::List { path, .. } | Origin::Solid { path, .. },
                 WHOLE_PROGRAM | WHOLE_LIST,
-            ) => return format!("{}: {}", path.display(), e.msg),
+            ) => return problem.context(path.display()),
             _ => {}
         }
         match &self.origins[i] {
             Origin::List { path, text } => {
                 let (line, col) = field_position(text, e.plane, e.field).unwrap_or((1, 1));
-                format!("{}:{line}:{col}: {}", path.display(), e.msg)
+                problem.located(path.display().to_string(), line, col)
             }
-            Origin::Solid { path, line } => {
-                format!(
-                    "{}:{line}:1: face {} of this solid: {}",
-                    path.display(),
-                    e.plane + 1,
-                    e.msg
-                )
-            }
+            Origin::Solid { path, line } => problem
+                .context(format_args!("face {} of this solid", e.plane + 1))
+                .located(path.display().to_string(), *line, 1),
         }
     }
 }

@@ -17,10 +17,14 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
         return csgpix_scene::input::read_text(path);
     }
     if !path.is_file() {
-        return Err(Error::msg(format!("{name}: no such file")));
+        let missing = csgpix_scene::IoError {
+            kind: std::io::ErrorKind::NotFound,
+            message: "no such file".into(),
+        };
+        return Err(Error::Io(missing).context(path.display()));
     }
     let dir = tempfile::tempdir()
-        .map_err(|e| Error::msg(format!("{name}: a temporary directory: {e}")))?;
+        .map_err(|e| Error::io("a temporary directory", &e).context(path.display()))?;
     let out = dir.path().join("scene.csg");
     // `$preview = false`: the tree OpenSCAD renders (F6, STL export), not its preview (a CSG
     // export evaluates `$preview` as true): the voxels are the parts a design prints.
@@ -33,12 +37,12 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
         .output();
     let run = match run {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "{name}: reading .scad needs openscad on PATH (Debian: apt-get install openscad); \
                  or export File → Export → Export as CSG and give the .csg"
             )))
         }
-        Err(e) => return Err(Error::msg(format!("{name}: running openscad: {e}"))),
+        Err(e) => return Err(Error::io("running openscad", &e).context(path.display())),
         Ok(run) => run,
     };
     let text = std::fs::read_to_string(&out)
@@ -51,7 +55,7 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
             .find(|l| l.contains("ERROR"))
             .or_else(|| stderr.lines().rfind(|l| !l.trim().is_empty()))
             .unwrap_or("no output");
-        Error::msg(format!(
+        Error::invalid(format!(
             "{name}: openscad could not export it: {}",
             line.trim()
         ))
@@ -87,7 +91,7 @@ pub fn read_scene_with(
     };
     for w in &mut scene.warnings {
         if is_scad(path) {
-            *w = in_scad(std::mem::replace(w, Error::msg("")), &text, path);
+            *w = in_scad(std::mem::replace(w, Error::invalid("")), &text, path);
         }
         // On stderr, as OpenSCAD gives its warnings; the run goes on.
         eprintln!("{w}");
@@ -181,7 +185,7 @@ fn is_scad(path: &Path) -> bool {
 /// put there. Otherwise no line of the `.scad` is claimed: the message says it is in the CSG
 /// openscad exported, at which line and node.
 pub fn in_scad(e: Error, export: &str, scad: &Path) -> Error {
-    let Some(at) = e.location.clone() else {
+    let Some(at) = e.location().cloned() else {
         return e;
     };
     let file = scad.display().to_string();
@@ -192,14 +196,7 @@ pub fn in_scad(e: Error, export: &str, scad: &Path) -> Error {
     let mut sites = vec![];
     call_sites(scad, &node, &mut sites, 0);
     match sites.as_slice() {
-        [(path, l, c)] => Error {
-            location: Some(csgpix_scene::Location {
-                file: path.clone(),
-                line: *l,
-                col: *c,
-            }),
-            ..e
-        },
+        [(path, l, c)] => e.problem().clone().located(path.clone(), *l, *c),
         _ => unplaced(e, &file, at.line, Some(&node)),
     }
 }
@@ -209,15 +206,10 @@ fn unplaced(e: Error, file: &str, line: usize, node: Option<&str>) -> Error {
         Some(n) => format!("line {line}, `{n}(…)`"),
         None => format!("line {line}"),
     };
-    let message = format!(
-        "{file}: in the CSG openscad exported from it ({what}): {}",
-        e.message
-    );
-    Error {
-        location: None,
-        message,
-        kind: e.kind,
-    }
+    let problem = e.problem().clone();
+    problem
+        .context(format!("in the CSG openscad exported from it ({what})"))
+        .context(file)
 }
 
 /// The node a line of openscad's export opens: its first name after the modifiers.
@@ -391,13 +383,13 @@ mod tests {
         let export = "group() {\n\tsurface(file = \"x.dat\");\n\tcube(size = [1, 1, 1]);\n}\n";
         let e = Error::at("p.scad", 2, 2, "unsupported node `surface`");
         let placed = in_scad(e, export, &scad);
-        let at = placed.location.clone().expect("placed");
+        let at = placed.location().cloned().expect("placed");
         assert_eq!((at.line, at.col), (5, 3), "{placed}");
         assert!(at.file.ends_with("p.scad"));
         // cube is called twice: no line of the .scad is claimed.
         let e = Error::at("p.scad", 3, 2, "bad cube");
         let unplaced = in_scad(e, export, &scad);
-        assert!(unplaced.location.is_none());
+        assert!(unplaced.location().is_none());
         let text = unplaced.to_string();
         assert!(
             text.contains("in the CSG openscad exported from it (line 3, `cube(…)`): bad cube"),

@@ -17,7 +17,7 @@
 
 use glam::{DVec2, DVec3};
 
-use csgpix_scene::Result;
+use csgpix_scene::{Error, Result};
 
 use crate::cap;
 
@@ -381,7 +381,9 @@ pub fn rotate_mesh(
             (a.min(p.x), b.max(p.x))
         });
     if lo < 0.0 && hi > 0.0 {
-        return Err("all points for rotate_extrude() must have the same X coordinate sign".into());
+        return Err(Error::invalid(
+            "all points for rotate_extrude() must have the same X coordinate sign",
+        ));
     }
     let full = angle.abs() >= 360.0;
     let at = |j: usize| {

@@ -1,6 +1,7 @@
 //! `--fallback openscad`: a subtree csgpix does not draw (`surface()`, a 2D import, a node it
 //! does not know) meshed by openscad itself and drawn as a closed mesh primitive.
 
+use csgpix_scene::Error;
 use std::path::Path;
 
 use glam::DVec3;
@@ -11,7 +12,7 @@ use crate::extrude::Region;
 
 /// OpenSCAD's outline of one 2D statement (an SVG or DXF import): the section at z = 0 of
 /// its mesh of `linear_extrude(height = 2, center = true) { statement }`.
-pub(crate) fn outline(statement: &str, dir: Option<&Path>) -> Result<Region, String> {
+pub(crate) fn outline(statement: &str, dir: Option<&Path>) -> csgpix_scene::Result<Region> {
     let wrapped = format!("linear_extrude(height = 2, center = true) {{\n{statement}\n}}\n");
     let tris = mesh(&wrapped, dir)?;
     let tris: Vec<[[f64; 3]; 3]> = tris.iter().map(|t| t.map(|v| v.to_array())).collect();
@@ -22,7 +23,7 @@ pub(crate) fn outline(statement: &str, dir: Option<&Path>) -> Result<Region, Str
 /// statement's own coordinates: `openscad -o sub.stl .csgpix-fallback.XXXX.csg`, the
 /// statement written into `dir` (the scene's directory) so its relative file names are found.
 /// Err is one line: openscad missing, its own error, or a 2D result (which has no mesh).
-pub(crate) fn mesh(statement: &str, dir: Option<&Path>) -> Result<Vec<[DVec3; 3]>, String> {
+pub(crate) fn mesh(statement: &str, dir: Option<&Path>) -> csgpix_scene::Result<Vec<[DVec3; 3]>> {
     // openscad resolves a file name in a .csg relative to that file: the statement is
     // written beside the scene (a hidden file, removed after) where it can be.
     let beside = dir
@@ -33,10 +34,11 @@ pub(crate) fn mesh(statement: &str, dir: Option<&Path>) -> Result<Vec<[DVec3; 3]
         .suffix(".csg")
         .tempfile_in(beside)
         .or_else(|_| tempfile::Builder::new().suffix(".csg").tempfile())
-        .map_err(|e| format!("a temporary file: {e}"))?;
-    let tmp = tempfile::tempdir().map_err(|e| format!("a temporary directory: {e}"))?;
+        .map_err(|e| Error::io("a temporary file", &e))?;
+    let tmp = tempfile::tempdir().map_err(|e| Error::io("a temporary directory", &e))?;
     let (csg, stl) = (hidden.path().to_path_buf(), tmp.path().join("sub.stl"));
-    std::fs::write(&csg, statement).map_err(|e| format!("writing {}: {e}", csg.display()))?;
+    std::fs::write(&csg, statement)
+        .map_err(|e| Error::io(format_args!("writing {}", csg.display()), &e))?;
     let run = std::process::Command::new("openscad")
         .arg("-o")
         .arg(&stl)
@@ -45,9 +47,11 @@ pub(crate) fn mesh(statement: &str, dir: Option<&Path>) -> Result<Vec<[DVec3; 3]
         .output();
     let run = match run {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            return Err("needs openscad on PATH (Debian: apt-get install openscad)".into())
+            return Err(Error::invalid(
+                "needs openscad on PATH (Debian: apt-get install openscad)",
+            ))
         }
-        Err(e) => return Err(format!("running openscad: {e}")),
+        Err(e) => return Err(Error::io("running openscad", &e)),
         Ok(run) => run,
     };
     if !(run.status.success() && stl.is_file()) {
@@ -57,10 +61,13 @@ pub(crate) fn mesh(statement: &str, dir: Option<&Path>) -> Result<Vec<[DVec3; 3]
             .find(|l| l.contains("ERROR") || l.contains("not a 3D object"))
             .or_else(|| stderr.lines().rfind(|l| !l.trim().is_empty()))
             .unwrap_or("no output");
-        return Err(format!("openscad could not mesh it: {}", why.trim()));
+        return Err(Error::invalid(format!(
+            "openscad could not mesh it: {}",
+            why.trim()
+        )));
     }
-    let m = TriMesh::read(&stl).map_err(|e| e.message)?;
-    m.check_closed("openscad's mesh").map_err(|e| e.message)?;
+    let m = TriMesh::read(&stl)?;
+    m.check_closed("openscad's mesh")?;
     Ok(m.triangles
         .iter()
         .map(|t| t.map(|i| m.vertices[i as usize]))

@@ -12,10 +12,7 @@ pub(crate) fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     let at = frame.first_flat.unwrap_or(pos);
     let mut pts = vec![];
     for r in &frame.flats {
-        region_points(r, &mut pts).map_err(|e| Fail {
-            pos,
-            msg: e.message,
-        })?;
+        region_points(r, &mut pts).map_err(|problem| Fail { pos, problem })?;
     }
     let h = crate::hull::hull2(&pts);
     if h.len() < 3 {
@@ -38,10 +35,7 @@ pub(crate) fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     };
     let at = frame.first_flat.unwrap_or(pos);
     let region = region_of(Op::Union, frame.flats);
-    let r = offset(&region, o, &sin_cos_degrees).map_err(|e| Fail {
-        pos,
-        msg: e.message,
-    })?;
+    let r = offset(&region, o, &sin_cos_degrees).map_err(|problem| Fail { pos, problem })?;
     let m = plane_part(frame.placement.as_ref());
     let r = crate::project::map_region(r, &|p| p.transformed(m));
     Ok(Some(Item::Flat(r, at)))

@@ -53,6 +53,7 @@
 //! In 2D the same formulas hold with the boundary edges of a polygon in place of triangles
 //! (the path argument is unchanged); the pieces are joined by a 2D union.
 
+use csgpix_scene::Error;
 use glam::{DVec2, DVec3};
 
 use boolmesh::prelude::{compute_boolean, Manifold, OpType};
@@ -74,7 +75,7 @@ pub(crate) fn mesh_of(
     node: &CsgNode,
     solids: &[ConvexSolid],
     imports: &[Import],
-) -> Result<Vec<[DVec3; 3]>, String> {
+) -> csgpix_scene::Result<Vec<[DVec3; 3]>> {
     // Post-order with an explicit stack: a node is entered (its children pushed), then left
     // (its children's results, on `done`, combined).
     enum Step<'a> {
@@ -90,7 +91,7 @@ pub(crate) fn mesh_of(
                 CsgNode::Empty => done.push(None),
                 CsgNode::Solid(i) => done.push(leaf_manifold(*i, solids, imports)?),
                 CsgNode::Complement(_) => {
-                    return Err("the geometry of a complement is unbounded".into())
+                    return Err(Error::invalid("the geometry of a complement is unbounded"))
                 }
                 CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
                     stack.push(Step::Leave(n));
@@ -112,7 +113,7 @@ pub(crate) fn mesh_of(
 }
 
 /// The children's results combined as `n` says.
-fn combine(n: &CsgNode, parts: Vec<Option<Manifold>>) -> Result<Option<Manifold>, String> {
+fn combine(n: &CsgNode, parts: Vec<Option<Manifold>>) -> csgpix_scene::Result<Option<Manifold>> {
     let mut it = parts.into_iter();
     let mut acc = it.next().flatten();
     for part in it {
@@ -136,13 +137,13 @@ fn combine(n: &CsgNode, parts: Vec<Option<Manifold>>) -> Result<Option<Manifold>
     Ok(acc)
 }
 
-fn boolean(a: &Manifold, b: &Manifold, op: OpType) -> Result<Option<Manifold>, String> {
+fn boolean(a: &Manifold, b: &Manifold, op: OpType) -> csgpix_scene::Result<Option<Manifold>> {
     match compute_boolean(a, b, op) {
         Ok(m) => Ok((m.nf > 0).then_some(m)),
         // boolmesh reports an empty result (disjoint operands of an intersection, a
         // difference removing everything) as an error without vertices.
         Err(e) if e.contains("empty") => Ok(None),
-        Err(e) => Err(format!("mesh boolean failed: {e}")),
+        Err(e) => Err(Error::invalid(format!("mesh boolean failed: {e}"))),
     }
 }
 
@@ -150,7 +151,7 @@ fn leaf_manifold(
     i: usize,
     solids: &[ConvexSolid],
     imports: &[Import],
-) -> Result<Option<Manifold>, String> {
+) -> csgpix_scene::Result<Option<Manifold>> {
     let tris = leaf_mesh(i, solids, imports)?;
     manifold(&tris)
 }
@@ -160,21 +161,21 @@ pub(crate) fn leaf_mesh(
     i: usize,
     solids: &[ConvexSolid],
     imports: &[Import],
-) -> Result<Mesh, String> {
+) -> csgpix_scene::Result<Mesh> {
     if i < IMPORTED {
         let s = solids
             .get(i)
-            .ok_or_else(|| format!("internal: no solid {i}"))?;
+            .ok_or_else(|| Error::invalid(format!("internal: no solid {i}")))?;
         return Ok(solid_triangles(s));
     }
     let import = imports
         .get(i - IMPORTED)
-        .ok_or_else(|| format!("internal: no import {}", i - IMPORTED))?;
+        .ok_or_else(|| Error::invalid(format!("internal: no import {}", i - IMPORTED)))?;
     let Some(mesh) = &import.mesh else {
-        return Err(format!(
+        return Err(Error::invalid(format!(
             "`import(\"{}\")` has no geometry while the scene is read (a dataset or mesh file)",
             import.file
-        ));
+        )));
     };
     let m = import.matrix;
     Ok(mesh
@@ -205,7 +206,7 @@ pub(crate) fn solid_triangles(s: &ConvexSolid) -> Mesh {
 }
 
 /// A triangle soup welded (bit-equal corners) into a boolmesh manifold; `None` when empty.
-fn manifold(tris: &[[DVec3; 3]]) -> Result<Option<Manifold>, String> {
+fn manifold(tris: &[[DVec3; 3]]) -> csgpix_scene::Result<Option<Manifold>> {
     if tris.is_empty() {
         return Ok(None);
     }
@@ -213,7 +214,7 @@ fn manifold(tris: &[[DVec3; 3]]) -> Result<Option<Manifold>, String> {
     let idx: Vec<usize> = (0..tris.len() * 3).collect();
     Manifold::new(&pos, &idx)
         .map(Some)
-        .map_err(|e| format!("not a closed manifold mesh: {e}"))
+        .map_err(|e| Error::invalid(format!("not a closed manifold mesh: {e}")))
 }
 
 fn triangles(m: &Manifold) -> Mesh {
@@ -245,7 +246,7 @@ pub(crate) fn pieces(
     node: &CsgNode,
     solids: &[ConvexSolid],
     imports: &[Import],
-) -> Result<Vec<Piece>, String> {
+) -> csgpix_scene::Result<Vec<Piece>> {
     let mut out = vec![];
     let mut stack = vec![node];
     while let Some(n) = stack.pop() {
@@ -255,7 +256,7 @@ pub(crate) fn pieces(
             CsgNode::Solid(i) if *i < IMPORTED => {
                 let s = solids
                     .get(*i)
-                    .ok_or_else(|| format!("internal: no solid {i}"))?;
+                    .ok_or_else(|| Error::invalid(format!("internal: no solid {i}")))?;
                 out.push(Piece::Convex(
                     s.vertices.iter().map(|&v| DVec3::from(v)).collect(),
                 ));
@@ -298,10 +299,14 @@ pub(crate) fn pieces2(r: &Region) -> Vec<Piece2> {
 
 /// The Minkowski sum of two unions of pieces, as a union of pieces (module documentation).
 /// `budget` is the most vertices the result may have; Err("budget") past it.
-pub(crate) fn minkowski3(a: &[Piece], b: &[Piece], budget: usize) -> Result<Vec<Piece>, String> {
+pub(crate) fn minkowski3(
+    a: &[Piece],
+    b: &[Piece],
+    budget: usize,
+) -> csgpix_scene::Result<Vec<Piece>> {
     let mut out = Vec::new();
     let mut used = 0usize;
-    let mut spend = |n: usize| -> Result<(), String> {
+    let mut spend = |n: usize| -> csgpix_scene::Result<()> {
         used = used.saturating_add(n);
         if used > budget {
             return Err(over_budget());
@@ -347,14 +352,15 @@ pub(crate) fn minkowski3(a: &[Piece], b: &[Piece], budget: usize) -> Result<Vec<
     Ok(out)
 }
 
-fn over_budget() -> String {
-    "the Minkowski sum would pass the scene's vertex limit (the limit follows the memory \
-     limit, e.g. --max-memory)"
-        .to_string()
+fn over_budget() -> Error {
+    Error::invalid(
+        "the Minkowski sum would pass the scene's vertex limit (the limit follows the memory \
+         limit, e.g. --max-memory)",
+    )
 }
 
 /// X ⊕ C = (X + c0) ∪ ⋃ hull(T ⊕ C).
-fn mesh_plus_convex(x: &Mesh, c: &[DVec3], out: &mut Vec<Piece>) -> Result<(), String> {
+fn mesh_plus_convex(x: &Mesh, c: &[DVec3], out: &mut Vec<Piece>) -> csgpix_scene::Result<()> {
     let Some(&c0) = c.first() else {
         return Ok(());
     };
@@ -372,12 +378,12 @@ fn mesh_plus_convex(x: &Mesh, c: &[DVec3], out: &mut Vec<Piece>) -> Result<(), S
 }
 
 /// The hull of the pairwise sums of two convex point sets.
-fn convex_sum(x: &[DVec3], y: &[DVec3]) -> Result<Piece, String> {
+fn convex_sum(x: &[DVec3], y: &[DVec3]) -> csgpix_scene::Result<Piece> {
     hull_piece(&sum_points(x, y))
 }
 
-fn hull_piece(points: &[DVec3]) -> Result<Piece, String> {
-    let (v, _) = hull3(points).map_err(|e| e.message)?;
+fn hull_piece(points: &[DVec3]) -> csgpix_scene::Result<Piece> {
+    let (v, _) = hull3(points)?;
     Ok(Piece::Convex(v))
 }
 
@@ -622,8 +628,8 @@ pub(crate) fn convex_solid(
     v: &[DVec3],
     colour: Option<[f64; 4]>,
     line: usize,
-) -> Result<ConvexSolid, String> {
-    let (vertices, faces) = hull3(v).map_err(|e| e.message)?;
+) -> csgpix_scene::Result<ConvexSolid> {
+    let (vertices, faces) = hull3(v)?;
     Ok(ConvexSolid {
         vertices: vertices.iter().map(|v| v.to_array()).collect(),
         faces,
@@ -643,10 +649,14 @@ pub(crate) enum Piece2 {
 
 /// The 2D Minkowski sum of two unions of pieces, as a union of pieces (module documentation,
 /// edges in place of triangles). `budget` bounds the result's vertices.
-pub(crate) fn minkowski2(a: &[Piece2], b: &[Piece2], budget: usize) -> Result<Vec<Piece2>, String> {
+pub(crate) fn minkowski2(
+    a: &[Piece2],
+    b: &[Piece2],
+    budget: usize,
+) -> csgpix_scene::Result<Vec<Piece2>> {
     let mut out = Vec::new();
     let mut used = 0usize;
-    let mut spend = |n: usize| -> Result<(), String> {
+    let mut spend = |n: usize| -> csgpix_scene::Result<()> {
         used = used.saturating_add(n);
         if used > budget {
             return Err(over_budget());
@@ -848,7 +858,7 @@ mod tests {
         assert!((volume(&m) - 1.5).abs() < 1e-9);
         let without = [imp(None)];
         let e = mesh_of(&n, &s, &without).unwrap_err();
-        assert!(e.contains("part.stl"), "{e}");
+        assert!(e.to_string().contains("part.stl"), "{e}");
     }
 
     #[test]

@@ -12,6 +12,7 @@
 //! triangles are then merged into one polygon face (their outline), so the hull of a cube
 //! has six faces and the display list six planes, and every edge is used once each way.
 
+use csgpix_scene::Error;
 use glam::{DVec2, DVec3};
 
 use csgpix_scene::Result;
@@ -32,10 +33,11 @@ pub fn hull3(points: &[DVec3]) -> Result<(Vec<DVec3>, Vec<Vec<usize>>)> {
         });
     let extent = (hi - lo).max_element();
     if !(extent.is_finite() && extent > 0.0) {
-        return Err("hull() of fewer than two distinct points".into());
+        return Err(Error::invalid("hull() of fewer than two distinct points"));
     }
     let eps = EPS * extent;
-    let tet = initial_tetrahedron(points, eps).ok_or("hull() of points on one plane: no volume")?;
+    let tet = initial_tetrahedron(points, eps)
+        .ok_or_else(|| Error::invalid("hull() of points on one plane: no volume"))?;
     let mut hull = Hull::new(points, eps, tet);
     hull.build();
     Ok(hull.merge_coplanar())
@@ -678,11 +680,11 @@ mod properties {
     }
 
     /// Every property the hull must have, against `points`; Err names the first that fails.
-    fn check(points: &[DVec3]) -> std::result::Result<(), String> {
+    fn check(points: &[DVec3]) -> csgpix_scene::Result<()> {
         let Ok((v, faces)) = hull3(points) else {
             return match initial_tetrahedron(points, EPS * extent(points)) {
                 None => Ok(()),
-                Some(_) => Err("refused points that span a volume".into()),
+                Some(_) => Err(Error::invalid("refused points that span a volume")),
             };
         };
         let size = extent(points);
@@ -694,17 +696,20 @@ mod properties {
             .iter()
             .all(|p| inputs.contains(&p.to_array().map(f64::to_bits)))
         {
-            return Err("a vertex is no input point".into());
+            return Err(Error::invalid("a vertex is no input point"));
         }
         if faces.len() < 4 || faces.iter().any(|f| f.len() < 3) {
-            return Err(format!("{} faces, or a face of fewer than 3", faces.len()));
+            return Err(Error::invalid(format!(
+                "{} faces, or a face of fewer than 3",
+                faces.len()
+            )));
         }
         if !closed(&faces) {
-            return Err("not closed: an edge not used once each way".into());
+            return Err(Error::invalid("not closed: an edge not used once each way"));
         }
         let used: HashSet<usize> = faces.iter().flatten().copied().collect();
         if used.len() != v.len() {
-            return Err("a vertex no face uses".into());
+            return Err(Error::invalid("a vertex no face uses"));
         }
         let tol = 1e-8 * size;
         for f in &faces {
@@ -716,10 +721,10 @@ mod properties {
             let c = f.iter().map(|&i| v[i]).sum::<DVec3>() / f.len() as f64;
             if let Some(q) = points.iter().find(|q| n.dot(**q - c) > tol) {
                 let fv: Vec<DVec3> = f.iter().map(|&i| v[i]).collect();
-                return Err(format!(
+                return Err(Error::invalid(format!(
                     "{q} is {} outside a face {fv:?} n {n}",
                     n.dot(*q - c)
-                ));
+                )));
             }
         }
         let got = volume(&v, &faces);
@@ -729,7 +734,9 @@ mod properties {
             .map(|t| points[t[0]].dot(points[t[1]].cross(points[t[2]])) / 6.0)
             .sum();
         if !(got > 0.0 && (got - want).abs() <= 1e-9 * size.powi(3)) {
-            return Err(format!("volume {got}, the incremental hull's {want}"));
+            return Err(Error::invalid(format!(
+                "volume {got}, the incremental hull's {want}"
+            )));
         }
         Ok(())
     }

@@ -22,13 +22,13 @@ impl fmt::Display for Pos {
 #[derive(Debug)]
 pub(crate) struct Fail {
     pub(crate) pos: Pos,
-    pub(crate) msg: String,
+    pub(crate) problem: csgpix_scene::Error,
 }
 
 pub(crate) fn fail<T>(pos: Pos, msg: impl Into<String>) -> Result<T, Fail> {
     Err(Fail {
         pos,
-        msg: msg.into(),
+        problem: csgpix_scene::Error::invalid(msg),
     })
 }
 

@@ -208,9 +208,9 @@ pub fn parse_csg_with(
 ) -> csgpix_scene::Result<CsgScene> {
     let mut scene = Reader::new(text, options)
         .run()
-        .map_err(|fail| Error::at(file, fail.pos.line, fail.pos.col, fail.msg))?;
+        .map_err(|fail| fail.problem.located(file, fail.pos.line, fail.pos.col))?;
     for w in &mut scene.warnings {
-        *w = std::mem::replace(w, Error::msg("")).in_file(file);
+        *w = std::mem::replace(w, Error::invalid("")).in_file(file);
     }
     Ok(scene)
 }

@@ -1,5 +1,6 @@
 //! `cube`, `sphere`, `cylinder` and `polyhedron`, tessellated as OpenSCAD does.
 
+use csgpix_scene::Error;
 use std::collections::HashMap;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
@@ -325,9 +326,9 @@ pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Polyhedron, F
             "polyhedron refused: no face has 3 distinct points",
         );
     }
-    let refused = |msg: String| Fail {
+    let refused = |e: Error| Fail {
         pos: params.pos,
-        msg: format!("polyhedron refused: {msg}"),
+        problem: e.context("polyhedron refused"),
     };
     check_even_edges(&faces).map_err(refused)?;
     let mut faces = faces;
@@ -370,7 +371,7 @@ fn cross(a: Vec3, b: Vec3) -> Vec3 {
 
 /// Every edge shared by an even number of faces, whatever their winding: the surface is
 /// closed for the parity of crossings.
-fn check_even_edges(faces: &[Vec<usize>]) -> Result<(), String> {
+fn check_even_edges(faces: &[Vec<usize>]) -> csgpix_scene::Result<()> {
     let mut count: HashMap<(usize, usize), (usize, usize)> = HashMap::new();
     for (k, face) in faces.iter().enumerate() {
         for (a, b) in ring_edges(face) {
@@ -381,9 +382,9 @@ fn check_even_edges(faces: &[Vec<usize>]) -> Result<(), String> {
     open.sort();
     match open.first() {
         None => Ok(()),
-        Some(((a, b), (_, k))) => Err(format!(
+        Some(((a, b), (_, k))) => Err(Error::invalid(format!(
             "not closed: the edge between points {a} and {b} of face {k} has no neighbouring face"
-        )),
+        ))),
     }
 }
 
@@ -434,7 +435,10 @@ pub(crate) fn compact(points: Vec<Vec3>, mut faces: Vec<Vec<usize>>) -> Shape {
 /// Checks that faces (counter-clockwise seen from outside) close a convex solid: every
 /// directed edge once and its reverse once, no degenerate face, positive volume, and no used
 /// point outside any face plane by more than [`CONVEXITY_TOLERANCE`].
-pub(crate) fn check_convex_closed(vertices: &[Vec3], faces: &[Vec<usize>]) -> Result<(), String> {
+pub(crate) fn check_convex_closed(
+    vertices: &[Vec3],
+    faces: &[Vec<usize>],
+) -> csgpix_scene::Result<()> {
     check_closed(faces)?;
     let mut used: Vec<usize> = faces.iter().flatten().copied().collect();
     used.sort_unstable();
@@ -444,11 +448,10 @@ pub(crate) fn check_convex_closed(vertices: &[Vec3], faces: &[Vec<usize>]) -> Re
     let volume: f64 = planes.iter().map(|p| dot(p.centre, p.normal) / 6.0).sum();
     let has_volume = volume > 1e-12 * extent * extent * extent;
     if !has_volume {
-        return Err(
+        return Err(Error::invalid(
             "the faces wind the wrong way round (OpenSCAD lists each face clockwise \
-                    seen from outside) or enclose no volume"
-                .to_string(),
-        );
+                    seen from outside) or enclose no volume",
+        ));
     }
     let tolerance = CONVEXITY_TOLERANCE * magnitude;
     for (k, plane) in planes.iter().enumerate() {
@@ -456,9 +459,9 @@ pub(crate) fn check_convex_closed(vertices: &[Vec3], faces: &[Vec<usize>]) -> Re
         for &i in &used {
             let d = dot(unit, sub(vertices[i], plane.centre));
             if d > tolerance {
-                return Err(format!(
+                return Err(Error::invalid(format!(
                     "not convex: point {i} lies {d:.3e} outside the plane of face {k}"
-                ));
+                )));
             }
         }
     }
@@ -475,7 +478,7 @@ pub(crate) fn face_planes(
     vertices: &[Vec3],
     faces: &[Vec<usize>],
     extent: f64,
-) -> Result<Vec<Plane>, String> {
+) -> csgpix_scene::Result<Vec<Plane>> {
     faces
         .iter()
         .enumerate()
@@ -483,7 +486,7 @@ pub(crate) fn face_planes(
             let normal = newell(vertices, face);
             let has_area = norm(normal) > 1e-12 * extent * extent;
             if !has_area {
-                return Err(format!("face {k} has no area"));
+                return Err(Error::invalid(format!("face {k} has no area")));
             }
             let centre = centroid(vertices, face);
             Ok(Plane { normal, centre })
@@ -491,26 +494,26 @@ pub(crate) fn face_planes(
         .collect()
 }
 
-pub(crate) fn check_closed(faces: &[Vec<usize>]) -> Result<(), String> {
+pub(crate) fn check_closed(faces: &[Vec<usize>]) -> csgpix_scene::Result<()> {
     let mut edges: HashMap<(usize, usize), usize> = HashMap::new();
     for (k, face) in faces.iter().enumerate() {
         for edge in ring_edges(face) {
             if let Some(j) = edges.insert(edge, k) {
-                return Err(format!(
+                return Err(Error::invalid(format!(
                     "faces {j} and {k} both run from point {} to point {} (the surface \
                      is not closed and consistently wound)",
                     edge.1, edge.0
-                ));
+                )));
             }
         }
     }
     for (k, face) in faces.iter().enumerate() {
         for (a, b) in ring_edges(face) {
             if !edges.contains_key(&(b, a)) {
-                return Err(format!(
+                return Err(Error::invalid(format!(
                     "not closed: the edge between points {a} and {b} of face {k} has no \
                      neighbouring face"
-                ));
+                )));
             }
         }
     }

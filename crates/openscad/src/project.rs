@@ -20,6 +20,7 @@
 //!   [`crate::geom::mesh_of`] for the mesh of a difference or intersection.
 //! * `resize`: a scale about the origin from the exact bounding box (see [`resize_scale`]).
 
+use csgpix_scene::Error;
 use glam::{DVec2, DVec3};
 
 use crate::cap::key;
@@ -47,11 +48,11 @@ fn leaf<'a>(i: usize, solids: &'a [ConvexSolid], imports: &'a [Import]) -> Leaf<
     }
 }
 
-fn file_refused(what: &str, import: &Import) -> String {
-    format!(
+fn file_refused(what: &str, import: &Import) -> Error {
+    Error::invalid(format!(
         "{what} of `import(\"{}\")` is not supported (csgpix loads imported files only to voxelize)",
         import.file
-    )
+    ))
 }
 
 fn empty() -> Region {
@@ -66,8 +67,8 @@ pub(crate) fn section(
     node: &CsgNode,
     solids: &[ConvexSolid],
     imports: &[Import],
-) -> Result<Region, String> {
-    let parts = |c: &[CsgNode]| -> Result<Vec<Region>, String> {
+) -> csgpix_scene::Result<Region> {
+    let parts = |c: &[CsgNode]| -> csgpix_scene::Result<Vec<Region>> {
         c.iter().map(|c| section(c, solids, imports)).collect()
     };
     Ok(match node {
@@ -75,7 +76,7 @@ pub(crate) fn section(
         CsgNode::Union(c) => Region::Union(parts(c)?),
         CsgNode::Intersection(c) => Region::Intersection(parts(c)?),
         CsgNode::Difference(c) => Region::Difference(parts(c)?),
-        CsgNode::Complement(_) => return Err("internal: a complement in a file".into()),
+        CsgNode::Complement(_) => return Err(Error::invalid("internal: a complement in a file")),
         CsgNode::Solid(i) => match leaf(*i, solids, imports) {
             Leaf::Convex(s) => {
                 convex_section(s).map_or_else(empty, |p| Region::Poly(Poly2 { paths: vec![p] }))
@@ -198,7 +199,7 @@ pub(crate) fn shadow(
     node: &CsgNode,
     solids: &[ConvexSolid],
     imports: &[Import],
-) -> Result<Region, String> {
+) -> csgpix_scene::Result<Region> {
     Ok(match node {
         CsgNode::Empty => empty(),
         CsgNode::Union(c) => Region::Union(
@@ -287,7 +288,7 @@ pub(crate) fn bbox3(
     node: &CsgNode,
     solids: &[ConvexSolid],
     imports: &[Import],
-) -> Result<Option<Box3>, String> {
+) -> csgpix_scene::Result<Option<Box3>> {
     match node {
         CsgNode::Empty => Ok(None),
         CsgNode::Union(c) => c
@@ -447,7 +448,7 @@ impl Reader<'_> {
         } else {
             shadow(&node, &self.solids, &self.imports)
         }
-        .map_err(|msg| Fail { pos, msg })?;
+        .map_err(|problem| Fail { pos, problem })?;
         for i in leaves(&node) {
             if i >= IMPORTED {
                 self.consumed_imports.push(i - IMPORTED);
@@ -485,7 +486,8 @@ impl Reader<'_> {
             return Ok(Some(Item::Flat(region, at)));
         }
         let node = combine(Op::Union, frame.children);
-        let bbox = bbox3(&node, &self.solids, &self.imports).map_err(|msg| Fail { pos, msg })?;
+        let bbox =
+            bbox3(&node, &self.solids, &self.imports).map_err(|problem| Fail { pos, problem })?;
         let s = match bbox {
             Some((lo, hi)) => {
                 resize_scale(newsize, auto, (hi - lo).to_array(), 3).unwrap_or([1.0; 3])
@@ -564,10 +566,10 @@ mod tests {
         flatten(r).paths.iter().map(|p| signed_area(p)).sum()
     }
 
-    type TreeToRegion = fn(&CsgNode, &[ConvexSolid], &[Import]) -> Result<Region, String>;
+    type TreeToRegion = fn(&CsgNode, &[ConvexSolid], &[Import]) -> csgpix_scene::Result<Region>;
 
     /// The region of the file's tree, its imports renumbered from IMPORTED as while reading.
-    fn tree_region(text: &str, f: TreeToRegion) -> Result<Region, String> {
+    fn tree_region(text: &str, f: TreeToRegion) -> csgpix_scene::Result<Region> {
         let s = scene(text);
         let mut root = s.root.clone();
         let first = s.solids.len();
@@ -734,7 +736,7 @@ mod tests {
                 assert!((hi - DVec3::new(5.0, 10.0, 10.0)).abs().max_element() < 1e-9);
             }
             // Until the mesh boolean replaces the stub.
-            Err(e) => assert!(e.contains("needs the mesh boolean"), "{e}"),
+            Err(e) => assert!(e.to_string().contains("needs the mesh boolean"), "{e}"),
         }
         // Through unions, the leaves' boxes.
         let s = scene("cube(1); multmatrix([[1,0,0,3],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) sphere(r = 1, $fn = 4);");

@@ -433,9 +433,9 @@ impl<'a> Reader<'a> {
         }
         let source = &self.text[start..end];
         let tris =
-            crate::fallback::mesh(source, self.options.dir.as_deref()).map_err(|msg| Fail {
+            crate::fallback::mesh(source, self.options.dir.as_deref()).map_err(|e| Fail {
                 pos,
-                msg: format!("`{name}` (--fallback openscad): {msg}"),
+                problem: e.context(format_args!("`{name}` (--fallback openscad)")),
             })?;
         let count = tris.len();
         let budget = self.max_vertices().saturating_sub(self.vertices);
@@ -465,9 +465,9 @@ impl<'a> Reader<'a> {
             return Ok(None);
         }
         let region =
-            crate::fallback::outline(source, self.options.dir.as_deref()).map_err(|msg| Fail {
+            crate::fallback::outline(source, self.options.dir.as_deref()).map_err(|e| Fail {
                 pos: head.pos,
-                msg: format!("`import` (--fallback openscad): {msg}"),
+                problem: e.context("`import` (--fallback openscad)"),
             })?;
         let m = plane_part(ctx.matrix.as_ref());
         let region = crate::project::map_region(region, &|p| p.transformed(m));
@@ -538,9 +538,9 @@ impl<'a> Reader<'a> {
         self.warnings.extend(args.warning.clone());
         let dir = self.options.dir.clone().unwrap_or_default();
         let shapes =
-            crate::svg::read(&dir.join(&args.file), args.dpi, args.center).map_err(|msg| Fail {
+            crate::svg::read(&dir.join(&args.file), args.dpi, args.center).map_err(|e| Fail {
                 pos: head.pos,
-                msg: format!("`import(\"{}\")` (an SVG file): {msg}", args.file),
+                problem: e.context(format_args!("`import(\"{}\")` (an SVG file)", args.file)),
             })?;
         let n: usize = shapes.iter().map(|p| p.points().count()).sum();
         let budget = self.max_vertices().saturating_sub(self.vertices);
@@ -741,7 +741,7 @@ impl<'a> Reader<'a> {
                     // node, but goes on with the rest of the design: so does csgpix.
                     Err(e) => {
                         self.warnings
-                            .push((to.pos, format!("{} (nothing drawn)", e.message)));
+                            .push((to.pos, format!("{} (nothing drawn)", e.problem())));
                         return Ok(CsgNode::Empty);
                     }
                 }
@@ -829,7 +829,7 @@ impl<'a> Reader<'a> {
     /// the scene.
     fn hull3(&mut self, frame: Frame) -> Result<Item, Fail> {
         let pos = frame.pos;
-        let at = |msg: String| Fail { pos, msg };
+        let at = |problem: Error| Fail { pos, problem };
         let mut pts: Vec<DVec3> = vec![];
         let mut stack: Vec<&CsgNode> = frame.children.iter().collect();
         while let Some(n) = stack.pop() {
@@ -838,12 +838,12 @@ impl<'a> Reader<'a> {
                 CsgNode::Union(c) => stack.extend(c.iter()),
                 CsgNode::Solid(leaf) => {
                     let mesh = leaf_mesh(*leaf, &self.solids, &self.imports)
-                        .map_err(|e| at(format!("hull(): {e}")))?;
+                        .map_err(|e| at(e.context("hull()")))?;
                     pts.extend(mesh.iter().flatten());
                 }
                 _ => {
                     let mesh = mesh_of(n, &self.solids, &self.imports)
-                        .map_err(|e| at(format!("hull(): {e}")))?;
+                        .map_err(|e| at(e.context("hull()")))?;
                     pts.extend(mesh.iter().flatten());
                 }
             }
@@ -854,7 +854,7 @@ impl<'a> Reader<'a> {
         if pts.is_empty() {
             return Ok(Item::Solid(CsgNode::Empty));
         }
-        let (vertices, faces) = hull3(&pts).map_err(|e| at(e.message))?;
+        let (vertices, faces) = hull3(&pts).map_err(at)?;
         let solid = ConvexSolid {
             vertices: vertices.iter().map(|v| v.to_array()).collect(),
             faces,
@@ -883,9 +883,9 @@ impl<'a> Reader<'a> {
     /// children's leaves leave the scene. One child is itself.
     fn minkowski3(&mut self, mut frame: Frame) -> Result<Item, Fail> {
         let pos = frame.pos;
-        let at = |msg: String| Fail {
+        let at = |e: Error| Fail {
             pos,
-            msg: format!("minkowski(): {msg}"),
+            problem: e.context("minkowski()"),
         };
         // OpenSCAD leaves empty children out of the sum.
         frame.children.retain(|c| !matches!(c, CsgNode::Empty));
@@ -968,9 +968,9 @@ impl<'a> Reader<'a> {
             acc = Some(match acc {
                 None => p,
                 Some(a) => minkowski2(&a, &p, budget)
-                    .map_err(|msg| Fail {
+                    .map_err(|e| Fail {
                         pos,
-                        msg: format!("minkowski(): {msg}"),
+                        problem: e.context("minkowski()"),
                     })?
                     .into_iter()
                     .map(|q| q.moved(-t))

@@ -19,6 +19,7 @@
 //!   xMidYMid meet); without a viewBox user units are mm. SVG's y axis points down: y is
 //!   flipped about the page height, or the shapes' box is centred with `center = true`.
 
+use csgpix_scene::Error;
 use std::path::Path;
 
 use glam::DVec2;
@@ -52,25 +53,26 @@ fn apply(m: &Affine, p: DVec2) -> DVec2 {
 
 /// The SVG file `path` as OpenSCAD's `import(file, dpi, center)` draws it: one even-odd shape
 /// per SVG element, their union. Err is one line.
-pub(crate) fn read(path: &Path, dpi: f64, center: bool) -> Result<Vec<Poly2>, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read it: {e}"))?;
+pub(crate) fn read(path: &Path, dpi: f64, center: bool) -> csgpix_scene::Result<Vec<Poly2>> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Error::invalid(format!("cannot read it: {e}")))?;
     parse(&text, dpi, center)
 }
 
 /// [`read`] of the file's text.
-pub(crate) fn parse(text: &str, dpi: f64, center: bool) -> Result<Vec<Poly2>, String> {
+pub(crate) fn parse(text: &str, dpi: f64, center: bool) -> csgpix_scene::Result<Vec<Poly2>> {
     let opts = roxmltree::ParsingOptions {
         allow_dtd: true,
         ..Default::default()
     };
     let doc = roxmltree::Document::parse_with_options(text, opts)
-        .map_err(|e| format!("not a valid SVG file: {e}"))?;
+        .map_err(|e| Error::invalid(format!("not a valid SVG file: {e}")))?;
     let root = doc.root_element();
     if root.tag_name().name() != "svg" {
-        return Err(format!(
+        return Err(Error::invalid(format!(
             "not an SVG file: its root element is <{}>, not <svg>",
             root.tag_name().name()
-        ));
+        )));
     }
     let page = Page::read(&root)?;
     let mut shapes = vec![];
@@ -118,12 +120,15 @@ struct Length {
 }
 
 impl Page {
-    fn read(node: &roxmltree::Node) -> Result<Page, String> {
+    fn read(node: &roxmltree::Node) -> csgpix_scene::Result<Page> {
         let attr = |n: &str| node.attribute(n).unwrap_or("");
         let viewbox = parse_viewbox(attr("viewBox"));
         if let Some(v) = viewbox {
             if v[2] == 0.0 || v[3] == 0.0 {
-                return Err(format!("the viewBox \"{}\" is empty", attr("viewBox")));
+                return Err(Error::invalid(format!(
+                    "the viewBox \"{}\" is empty",
+                    attr("viewBox")
+                )));
             }
         }
         let (align, meet) = parse_alignment(attr("preserveAspectRatio"));
@@ -160,7 +165,7 @@ fn place(
     shapes: Vec<Vec<Vec<DVec2>>>,
     dpi: f64,
     center: bool,
-) -> Result<Vec<Poly2>, String> {
+) -> csgpix_scene::Result<Vec<Poly2>> {
     let width_mm = to_mm(page.width, page.viewbox.map(|v| v[2]), dpi);
     let height_mm = to_mm(page.height, page.viewbox.map(|v| v[3]), dpi);
     let mut scale = DVec2::ONE;
@@ -187,7 +192,7 @@ fn place(
     let (mut lo, mut hi) = (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN));
     for p in shapes.iter().flatten().flatten() {
         if !p.is_finite() {
-            return Err("a coordinate is not a finite number".into());
+            return Err(Error::invalid("a coordinate is not a finite number"));
         }
         lo = lo.min(scale * *p);
         hi = hi.max(scale * *p);
@@ -260,7 +265,11 @@ fn clean(paths: &[Vec<[f64; 2]>], fill: Fill) -> Poly2 {
 
 /// The elements under `node` (a child of a container whose transform is `m`), in document
 /// order: each drawing element's outlines, transformed.
-fn walk(node: roxmltree::Node, m: &Affine, out: &mut Vec<Vec<Vec<DVec2>>>) -> Result<(), String> {
+fn walk(
+    node: roxmltree::Node,
+    m: &Affine,
+    out: &mut Vec<Vec<Vec<DVec2>>>,
+) -> csgpix_scene::Result<()> {
     if !node.is_element() {
         return Ok(());
     }
@@ -270,7 +279,7 @@ fn walk(node: roxmltree::Node, m: &Affine, out: &mut Vec<Vec<Vec<DVec2>>>) -> Re
     match name {
         // libsvg skips everything inside <defs>.
         "defs" => return Ok(()),
-        "svg" => return Err("an <svg> inside the <svg> is not supported".into()),
+        "svg" => return Err(Error::invalid("an <svg> inside the <svg> is not supported")),
         _ => {}
     }
     let attr = |n: &str| at(node, n);
@@ -566,7 +575,7 @@ fn ellipse(c: [f64; 2], rx: f64, ry: f64) -> Vec<DVec2> {
 
 /// A `rect`: four corners, or with `rx`/`ry` the path libsvg writes for it (its numbers
 /// printed to 6 significant digits, as boost::format does).
-fn rect(node: roxmltree::Node, style: &Style) -> Result<Vec<Vec<DVec2>>, String> {
+fn rect(node: roxmltree::Node, style: &Style) -> csgpix_scene::Result<Vec<Vec<DVec2>>> {
     let attr = |n: &str| at(node, n);
     let (x, y) = (parse_double(attr("x")), parse_double(attr("y")));
     let (w, h) = (parse_double(attr("width")), parse_double(attr("height")));
@@ -859,7 +868,7 @@ fn open_offset(path: &[DVec2], width: f64, cap: Cap, join: Join) -> Vec<Vec<DVec
 /// libsvg's `path`: its `d` read token by token as libsvg does (boost tokens apart by spaces
 /// and commas, each command letter and `-` a token of its own), each subpath a list of
 /// points; open subpaths become their strokes.
-fn path_outlines(d: &str, style: &Style) -> Result<Vec<Vec<DVec2>>, String> {
+fn path_outlines(d: &str, style: &Style) -> csgpix_scene::Result<Vec<Vec<DVec2>>> {
     const COMMANDS: &str = "-zmlcqahvstZMLCQAHVST";
     let mut toks: Vec<String> = vec![];
     for t in tokens(d, |c| c.is_whitespace() || c == ',', COMMANDS) {
@@ -915,7 +924,7 @@ fn path_outlines(d: &str, style: &Style) -> Result<Vec<Vec<DVec2>>, String> {
                 6 => {
                     let yy = if rel { y + p } else { p };
                     if rx == 0.0 || ry == 0.0 {
-                        return Err("a path has an arc of radius 0".into());
+                        return Err(Error::invalid("a path has an arc of radius 0"));
                     }
                     arc_to(back, [x, y], rx, ry, [xx, yy], angle, large, sweep);
                     (x, y) = (xx, yy);

@@ -28,9 +28,9 @@ fn parse(text: &str) -> CsgScene {
 /// Checks the error's position and that its message contains `part`.
 fn assert_err(text: &str, line: usize, col: usize, part: &str) {
     let e = parse_csg(text, "test.csg").expect_err("should be refused");
-    let at = e.location.as_ref().expect("a located error");
+    let at = e.location().expect("a located error");
     assert_eq!((at.line, at.col), (line, col), "{e}");
-    assert!(e.message.contains(part), "{e}");
+    assert!(e.problem().to_string().contains(part), "{e}");
 }
 
 fn only_solid(text: &str) -> ConvexSolid {
@@ -575,7 +575,7 @@ fn check_outcome(text: &str) {
             scene.solids.iter().for_each(assert_outward);
         }
         Err(e) => {
-            let at = e.location.as_ref().expect("a located error");
+            let at = e.location().expect("a located error");
             assert!(at.line >= 1 && at.col >= 1, "{e}");
             assert!(at.line <= text.lines().count() + 1, "{e}");
         }

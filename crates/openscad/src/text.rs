@@ -37,6 +37,7 @@
 //! `Liberation Sans:style=Regular`. A family or style that is not found is an error: OpenSCAD
 //! would warn and draw fontconfig's closest match instead.
 
+use csgpix_scene::Error;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
@@ -138,7 +139,7 @@ impl Fonts {
 
     /// The face a fontconfig-style name (`"Liberation Sans:style=Bold"`, `"DejaVu Sans:bold"`)
     /// names; `""` is [`DEFAULT_FONT`]. The first face found in lookup order wins.
-    pub fn find(&self, name: &str) -> Result<FaceId, String> {
+    pub fn find(&self, name: &str) -> csgpix_scene::Result<FaceId> {
         let trimmed = name.trim();
         let lookup = if trimmed.is_empty() {
             DEFAULT_FONT
@@ -158,16 +159,16 @@ impl Fonts {
                     weight = Some(match v.trim().to_ascii_lowercase().as_str() {
                         "bold" => 700,
                         "regular" | "normal" | "medium" => 400,
-                        _ => return Err(format!("font `{name}`: unsupported weight `{v}`")),
+                        _ => return Err(Error::invalid(format!("font `{name}`: unsupported weight `{v}`"))),
                     })
                 }
                 None if prop.eq_ignore_ascii_case("bold") => weight = Some(700),
                 None if prop.eq_ignore_ascii_case("italic") => italic = true,
                 None if prop.eq_ignore_ascii_case("regular") => weight = Some(400),
                 _ => {
-                    return Err(format!(
+                    return Err(Error::invalid(format!(
                         "font `{name}`: unsupported property `{prop}` (csgpix reads `Family:style=Style`)"
-                    ))
+                    )))
                 }
             }
         }
@@ -210,9 +211,9 @@ impl Fonts {
                     layer: *layer,
                     id: f.id,
                 }),
-                None => Err(format!(
+                None => Err(Error::invalid(format!(
                     "font `{name}`: family `{family}` has no such style (csgpix does not substitute fonts)"
-                )),
+                ))),
             };
         }
         let scene = if self.then.is_some() {
@@ -220,9 +221,9 @@ impl Fonts {
         } else {
             ""
         };
-        Err(format!(
+        Err(Error::invalid(format!(
             "font `{name}` not found (searched {scene}CSGPIX_FONT_PATH, the bundled fonts and the system fonts)"
-        ))
+        )))
     }
 }
 
@@ -387,26 +388,31 @@ fn units_26_6_positions(face: &ttf_parser::Face) -> f64 {
 
 /// The outline of a `text()` node in its own plane.
 /// At most `max_points` outline points are made (before the union).
-pub fn render(spec: &TextSpec, fonts: &Fonts, max_points: usize) -> Result<Poly2, String> {
+pub fn render(spec: &TextSpec, fonts: &Fonts, max_points: usize) -> csgpix_scene::Result<Poly2> {
     let id = fonts.find(&spec.font)?;
     if !matches!(spec.halign.as_str(), "left" | "right" | "center") {
-        return Err(format!(
+        return Err(Error::invalid(format!(
             "unknown halign `{}` (left, center or right)",
             spec.halign
-        ));
+        )));
     }
     if !matches!(
         spec.valign.as_str(),
         "top" | "center" | "baseline" | "bottom"
     ) {
-        return Err(format!(
+        return Err(Error::invalid(format!(
             "unknown valign `{}` (top, center, baseline or bottom)",
             spec.valign
-        ));
+        )));
     }
     fonts
         .with_face_data(id, |data, index| render_face(spec, data, index, max_points))
-        .unwrap_or_else(|| Err(format!("font `{}` could not be read", spec.font)))
+        .unwrap_or_else(|| {
+            Err(Error::invalid(format!(
+                "font `{}` could not be read",
+                spec.font
+            )))
+        })
 }
 
 fn render_face(
@@ -414,9 +420,9 @@ fn render_face(
     data: &[u8],
     index: u32,
     max_points: usize,
-) -> Result<Poly2, String> {
+) -> csgpix_scene::Result<Poly2> {
     let face = rustybuzz::Face::from_slice(data, index)
-        .ok_or_else(|| format!("font `{}` could not be parsed", spec.font))?;
+        .ok_or_else(|| Error::invalid(format!("font `{}` could not be parsed", spec.font)))?;
     let to26 = units_26_6(&face);
     let mut buffer = rustybuzz::UnicodeBuffer::new();
     buffer.push_str(&spec.text);
@@ -454,9 +460,9 @@ fn render_face(
         face.outline_glyph(id, &mut o);
         points += o.contours.iter().map(Vec::len).sum::<usize>();
         if points > max_points {
-            return Err(format!(
+            return Err(Error::invalid(format!(
                 "the text's outline has more than the {max_points} points csgpix accepts (lower $fn or the size)"
-            ));
+            )));
         }
         let mut pos = *pos;
         if !horizontal {
@@ -593,7 +599,10 @@ pub(crate) fn text_shape(p: &Params, fonts: &Fonts, budget: usize) -> Result<Pol
         valign: string(p, "valign", "baseline")?,
         segments: segments(size, res.fn_, res.fa, res.fs),
     };
-    let poly = render(&spec, fonts, budget).map_err(|msg| Fail { pos: p.pos, msg })?;
+    let poly = render(&spec, fonts, budget).map_err(|problem| Fail {
+        pos: p.pos,
+        problem,
+    })?;
     check_budget(poly.points().count(), budget, p.pos)?;
     Ok(poly)
 }
@@ -648,9 +657,9 @@ mod tests {
         assert_eq!(f.find("liberation sans:bold").unwrap(), bold);
         assert!(f.find("Liberation Serif").is_ok());
         let e = f.find("Nope Sans").unwrap_err();
-        assert!(e.contains("`Nope Sans` not found"), "{e}");
+        assert!(e.to_string().contains("`Nope Sans` not found"), "{e}");
         let e = f.find("Liberation Serif:style=Bold").unwrap_err();
-        assert!(e.contains("no such style"), "{e}");
+        assert!(e.to_string().contains("no such style"), "{e}");
         // A fallback list takes the first family present.
         assert_eq!(
             f.find("Nope Sans,Liberation Sans:style=Bold").unwrap(),
@@ -663,7 +672,7 @@ mod tests {
         let text = "linear_extrude(height = 1)\n  text(text = \"a\", font = \"No Such Font:style=Bold\");\n";
         let e = crate::parse_csg(text, "t.csg").unwrap_err().to_string();
         assert!(e.starts_with("t.csg:2:3: "), "{e}");
-        assert!(e.contains("No Such Font"), "{e}");
+        assert!(e.to_string().contains("No Such Font"), "{e}");
         let text = "linear_extrude(height = 1) text(text = \"a\", halign = \"middle\");";
         let e = crate::parse_csg(text, "t.csg").unwrap_err().to_string();
         assert!(e.starts_with("t.csg:1:28: ") && e.contains("halign"), "{e}");
@@ -741,7 +750,7 @@ mod tests {
         assert_eq!(f.find("Magiera:style=Script").unwrap().layer, 0);
         assert_eq!(f.find("Liberation Sans").unwrap().layer, 1);
         let e = f.find("Magiera:style=Bold").unwrap_err();
-        assert!(e.contains("no such style"), "{e}");
+        assert!(e.to_string().contains("no such style"), "{e}");
     }
 
     #[test]

@@ -135,12 +135,12 @@ fn program(a: &Args, cfg: &ArrayConfig) -> crate::Result<Vec<Op>> {
     let view = super::ViewArg::default().into();
     let scene =
         Scene::load(&a.scene, a.clip.as_deref(), view, cfg).map_err(super::lib_errors::load)?;
-    check_window(&scene, cfg, a.origin).map_err(|(i, e)| Error::Compile(scene.locate(i, &e)))?;
+    check_window(&scene, cfg, a.origin).map_err(|(i, e)| Error::Scene(scene.locate_error(i, &e)))?;
     let mut ops = match &scene.clip {
         None => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
         Some(expr) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
     }
-    .map_err(|(i, e)| Error::Compile(scene.locate(i, &e)))?;
+    .map_err(|(i, e)| Error::Scene(scene.locate_error(i, &e)))?;
     translate(&mut ops, a.origin.0, a.origin.1);
     Ok(ops)
 }

@@ -92,7 +92,7 @@ pub fn compile(
     cfg: &rtl_model::ArrayConfig,
 ) -> crate::Result<(Scene, Vec<Op>)> {
     let scene = Scene::load(scenes, clip, view, cfg).map_err(super::lib_errors::load)?;
-    let locate = |(i, e)| Error::Compile(scene.locate(i, &e));
+    let locate = |(i, e)| Error::Scene(scene.locate_error(i, &e));
     csgpix_draw::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
         .map_err(locate)?;
     let compiled = match (&scene.clip, scene.empty) {

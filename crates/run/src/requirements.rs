@@ -128,7 +128,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         Some((lo, hi)) => a.res.spec().grid(lo, hi),
         None => Grid::of_scene(&scene, [1; 3]).and_then(|g| a.res.spec().grid(g.min, g.max)),
     }
-    .map_err(|e| match e.kind {
+    .map_err(|e| match e.kind() {
         csgpix_scene::Kind::NeedsBounds => at(Error::options(
             "--bounds",
             "the scene has no solids: give --bounds",

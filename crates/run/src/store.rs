@@ -8,8 +8,8 @@ use csgpix_voxel::{Route, Slicer};
 /// The optimized octree of a sliced scene (`tree` its CSG tree), fed slice by slice from the
 /// voxelizer's run route with the Blist (seed 000 §4.3.4: no dense volume of the scene
 /// is made); `budget` bounds the leaves kept while building, in bytes. The store's own
-/// errors come back whole (e.g. [`csgpix_sculpt::Error::OverBudget`]), the voxelizer's as
-/// their message.
+/// errors come back whole (e.g. [`csgpix_sculpt::Error::OverBudget`]), the voxelizer's
+/// wrapped ([`csgpix_sculpt::Error::Voxel`]).
 pub fn octree_from_scene(
     slicer: &Slicer,
     tree: &CsgNode,
@@ -27,7 +27,7 @@ pub fn octree_from_scene(
     );
     match streamed {
         Err(Fed::Store(e)) => return Err(e),
-        Err(Fed::Voxel(e)) => return Err(csgpix_sculpt::Error::Msg(e.to_string())),
+        Err(Fed::Voxel(e)) => return Err(e.into()),
         Ok(_) => {}
     }
     b.finish_store()

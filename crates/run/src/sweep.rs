@@ -388,7 +388,7 @@ pub fn prepare(text: &str, file: &str, sweep: Sweep) -> crate::Result<Prepared> 
 
 /// A grid error as the command line words it: a scene without solids needs `--bounds`.
 fn bounds_hint(e: csgpix_scene::Error) -> Error {
-    match e.kind {
+    match e.kind() {
         csgpix_scene::Kind::NeedsBounds => {
             Error::options("--bounds", "the scene has no solids: give --bounds")
         }

@@ -301,7 +301,7 @@ fn scene_report(
     let set = Equations::Derived.set();
     let counted = count_cycles(&set);
     let simulated = |cfg: &ArrayConfig, ops: &[Op]| {
-        simulate(cfg, &set, ops, a.mem).map_err(|e| csgpix_draw::Error::Msg(e.to_string()))
+        simulate(cfg, &set, ops, a.mem).map_err(|e| csgpix_draw::Error::Counter(e.to_string()))
     };
     let count: &csgpix_draw::panels::Counter = if a.simulate { &simulated } else { &counted };
     let all = vec![true; ps.lists.len()];

@@ -72,10 +72,10 @@ impl Clip {
     pub fn parse(text: &str, names: &[String]) -> Result<Clip> {
         let known = |name: &str| {
             names.iter().position(|n| n == name).ok_or_else(|| {
-                format!(
+                Error::invalid(format!(
                     "unknown object {name:?}; the scene names {}",
                     names.join(", ")
-                )
+                ))
             })
         };
         let tree = expr::parse(text, &GRAMMAR, known)?;
@@ -128,7 +128,7 @@ impl Clip {
             pa.len() + pb.len()
         };
         if n > MAX_PRODUCTS {
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "the expression expands to more than {MAX_PRODUCTS} products"
             )));
         }
@@ -195,7 +195,7 @@ mod tests {
     }
 
     fn col(e: crate::Error) -> usize {
-        e.location.expect("a located error").col
+        e.location().expect("a located error").col
     }
 
     #[test]
@@ -208,7 +208,8 @@ mod tests {
         let deep = format!("{}A{}", "(".repeat(10_000), ")".repeat(10_000));
         assert!(Clip::parse(&deep, &n)
             .unwrap_err()
-            .message
+            .problem()
+            .to_string()
             .contains("deeper"));
         let nots = format!("{}A", "!".repeat(10_000));
         assert!(Clip::parse(&nots, &n).is_err());
@@ -245,7 +246,7 @@ mod fuzz {
             match Clip::parse(&text, &names) {
                 Ok(e) => { e.products().ok(); }
                 Err(err) => {
-                    let col = err.location.expect("a located error").col;
+                    let col = err.location().expect("a located error").col;
                     prop_assert!(col >= 1 && col <= text.chars().count() + 1)
                 }
             }

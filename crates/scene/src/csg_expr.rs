@@ -79,7 +79,7 @@ pub fn parse(text: &str) -> Result<CsgExpr> {
     let mut names: Vec<String> = vec![];
     let intern = |name: &str| {
         let i = names.iter().position(|n| n == name);
-        Ok(i.unwrap_or_else(|| {
+        Ok::<_, crate::Error>(i.unwrap_or_else(|| {
             names.push(name.to_string());
             names.len() - 1
         }))
@@ -169,7 +169,7 @@ mod tests {
 
     #[test]
     fn errors_name_the_column() {
-        let col = |t: &str| parse(t).unwrap_err().location.unwrap().col;
+        let col = |t: &str| parse(t).unwrap_err().location().unwrap().col;
         assert_eq!(col(""), 1);
         assert_eq!(col("A..B"), 3);
         assert_eq!(col("(A.B"), 5);
@@ -180,15 +180,19 @@ mod tests {
         assert_eq!(col("()"), 2);
         assert_eq!(col("A!B"), 2);
         assert_eq!(col("_A"), 1);
-        assert!(parse("(A.B").unwrap_err().message.contains("column 1"));
+        assert!(parse("(A.B")
+            .unwrap_err()
+            .problem()
+            .to_string()
+            .contains("column 1"));
     }
 
     #[test]
     fn deep_nesting_is_refused_without_overflow() {
         let deep = format!("{}A{}", "(".repeat(100_000), ")".repeat(100_000));
         let e = parse(&deep).unwrap_err();
-        assert_eq!(e.location.unwrap().col, MAX_DEPTH + 1);
-        assert!(e.message.contains("deeper"));
+        assert_eq!(e.location().unwrap().col, MAX_DEPTH + 1);
+        assert!(e.problem().to_string().contains("deeper"));
         assert!(parse(&format!("{}A", "!".repeat(100_000))).is_err());
         // At the limit it parses; the tree is dropped without recursion.
         let ok = format!("{}A{}", "(".repeat(MAX_DEPTH), ")".repeat(MAX_DEPTH));
@@ -214,7 +218,7 @@ mod fuzz {
             match parse(&text) {
                 Ok(e) => prop_assert!(!e.names.is_empty()),
                 Err(err) => {
-                    let col = err.location.expect("a located error").col;
+                    let col = err.location().expect("a located error").col;
                     prop_assert!(col >= 1 && col <= text.chars().count() + 1)
                 }
             }

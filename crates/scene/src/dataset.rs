@@ -31,13 +31,16 @@ impl Dataset {
         if count != Some(nrrd.samples.len()) || nrrd.samples.is_empty() {
             let [x, y, z] = nrrd.sizes;
             let n = nrrd.samples.len();
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "dataset: {n} samples for sizes {x}×{y}×{z}"
             )));
         }
         if !invertible(&nrrd.directions) || !nrrd.origin.is_finite() {
             let msg = "dataset: expected a finite origin and 3 independent axis steps";
-            return Err(Error::msg(format!("{msg}, found {:?}", nrrd.directions)));
+            return Err(Error::invalid(format!(
+                "{msg}, found {:?}",
+                nrrd.directions
+            )));
         }
         let inverse = nrrd.directions.inverse();
         Ok(Dataset { nrrd, inverse })

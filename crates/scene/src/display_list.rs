@@ -119,7 +119,7 @@ impl DisplayList {
     /// assert!(list.planes[0].h && !list.planes[1].h);
     ///
     /// let err = DisplayList::parse("10 0 0 5\n1 0 x\n", "bad.dl").unwrap_err();
-    /// assert_eq!(err.location.unwrap().to_string(), "bad.dl:2:5");
+    /// assert_eq!(err.location().unwrap().to_string(), "bad.dl:2:5");
     /// # Ok::<(), csgpix_scene::Error>(())
     /// ```
     pub fn parse(text: &str, file: &str) -> Result<DisplayList> {
@@ -137,7 +137,7 @@ impl DisplayList {
         let file = path.display().to_string();
         let bytes = match std::fs::read(path) {
             Ok(bytes) => bytes,
-            Err(err) => return Err(Spot::new(0, 0, err.to_string()).into_error(&file)),
+            Err(err) => return Err(Error::Io(err.into()).located(&file, 0, 0)),
         };
         if let Some((line, col, msg)) = crate::input::bad_utf8(&bytes) {
             return Err(Spot::new(line, col, msg).into_error(&file));
@@ -442,13 +442,10 @@ mod tests {
     /// contains `needle`.
     fn assert_error(text: &str, line: usize, col: usize, needle: &str) {
         let err = parse(text).expect_err("parse should fail");
-        let at = err.location.as_ref().expect("a located error");
+        let at = err.location().expect("a located error");
         assert_eq!((at.line, at.col), (line, col), "{err}");
-        assert!(
-            err.message.contains(needle),
-            "`{}` lacks `{needle}`",
-            err.message
-        );
+        let problem = err.problem().to_string();
+        assert!(problem.contains(needle), "`{problem}` lacks `{needle}`");
     }
 
     fn plane(z0: f64, dzx: f64, dzy: f64, colour: u32, hyl: [bool; 3]) -> DlPlane {
@@ -670,7 +667,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("missing.dl");
         let err = DisplayList::read(&path).unwrap_err();
-        let at = err.location.expect("a located error");
+        let at = err.location().expect("a located error");
         assert_eq!((at.line, at.col), (0, 0));
         assert!(at.file.ends_with("missing.dl"));
         std::fs::write(&path, CUBE).unwrap();
@@ -751,7 +748,7 @@ mod tests {
                 mutate(&mut bytes, edit);
             }
             if let Err(err) = parse(&String::from_utf8_lossy(&bytes)) {
-                let at = err.location.expect("a located error");
+                let at = err.location().expect("a located error");
                 prop_assert!(at.line >= 1 && at.col >= 1);
             }
         }

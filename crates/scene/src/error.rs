@@ -1,6 +1,7 @@
 //! The error of every scene reader and writer: one line, located in its input where it has a
 //! place there (`FILE:LINE:COL: message`), never naming a command-line flag (the CLI adds
-//! those).
+//! those). The place, the file that could not be read and the context are fields
+//! ([`Error::location`], [`Error::io_kind`]), so a caller need not parse the message.
 
 use std::fmt;
 
@@ -22,15 +23,86 @@ impl fmt::Display for Location {
     }
 }
 
+/// A system error reading or writing a file: its kind, for a caller to tell a missing file
+/// from a forbidden one, and the system's message.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
+pub struct IoError {
+    /// What kind of failure it is.
+    pub kind: std::io::ErrorKind,
+    /// The system's message (`No such file or directory (os error 2)`).
+    pub message: String,
+}
+
+impl From<&std::io::Error> for IoError {
+    fn from(e: &std::io::Error) -> IoError {
+        IoError {
+            kind: e.kind(),
+            message: e.to_string(),
+        }
+    }
+}
+
+impl From<std::io::Error> for IoError {
+    fn from(e: std::io::Error) -> IoError {
+        IoError::from(&e)
+    }
+}
+
 /// A scene error: what went wrong and, for bad input, where.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub struct Error {
-    /// Where in its input, when the problem has a place there.
-    pub location: Option<Location>,
-    /// What went wrong, one line.
-    pub message: String,
-    /// Which case it is, where a caller words or handles one differently.
-    pub kind: Kind,
+#[non_exhaustive]
+pub enum Error {
+    /// Bad input at a place in it (a `.csg`, `.dl` or mesh file, an expression, an NRRD
+    /// header): `at: problem`.
+    #[error("{at}: {problem}")]
+    At {
+        /// Where.
+        at: Location,
+        /// What is wrong there.
+        problem: Box<Error>,
+    },
+    /// A problem about `what` (a path, a primitive, an output's name): `what: source`.
+    #[error("{}: {source}", OneLine(what))]
+    Context {
+        /// What the problem concerns, as the user would name it.
+        what: String,
+        /// The problem.
+        source: Box<Error>,
+    },
+    /// A file or directory could not be read, written or created: the system's error. The
+    /// path is in an enclosing [`Error::Context`] (`path: system message`, see [`Error::io`])
+    /// or [`Error::At`].
+    #[error(transparent)]
+    Io(IoError),
+    /// A grid was asked over a scene with no solids, so it has no bounds of its own: the
+    /// caller has to give a box.
+    #[error("the scene has no solids: give the grid's bounds")]
+    NeedsBounds,
+    /// A grid resolution with a side of 0 voxels.
+    #[error("resolution {dims:?}: every side needs at least one voxel")]
+    EmptyResolution {
+        /// The resolution asked for, X, Y, Z.
+        dims: [usize; 3],
+    },
+    /// A grid (padding included) with more voxels along an axis than csgpix allows.
+    #[error("a grid of {dims:?} voxels: at most {limit} per axis")]
+    GridTooLarge {
+        /// The grid's voxels, X, Y, Z.
+        dims: [usize; 3],
+        /// The most voxels along an axis ([`crate::grid::MAX_GRID_SIDE`]).
+        limit: usize,
+    },
+    /// An output's directory (or a parent of it) is a file.
+    #[error("{} is not a directory", OneLine(path))]
+    NotADirectory {
+        /// The path, as shown.
+        path: String,
+    },
+    /// Input whose content breaks its format's rules or a setting's range: what is wrong,
+    /// one line (the place, when it has one, is in an enclosing [`Error::At`]).
+    #[error("{}", OneLine(.0))]
+    Invalid(String),
 }
 
 /// The cases of [`Error`] a caller may need to tell apart (to name its own option, say).
@@ -40,22 +112,19 @@ pub enum Kind {
     /// Any other problem: the message says it all.
     #[default]
     Other,
-    /// A grid was asked over a scene with no solids, so it has no bounds of its own: the
-    /// caller has to give a box.
+    /// A grid was asked over a scene with no solids ([`Error::NeedsBounds`]).
     NeedsBounds,
 }
 
 /// A scene result.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
-impl fmt::Display for Error {
+/// Text shown on one line: a quoted name or literal may hold line breaks.
+struct OneLine<'a>(&'a str);
+
+impl fmt::Display for OneLine<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        // One line always: a quoted name or literal may hold line breaks.
-        let msg = self.message.replace('\r', "\\r").replace('\n', "\\n");
-        match &self.location {
-            Some(at) => write!(f, "{at}: {msg}"),
-            None => f.write_str(&msg),
-        }
+        f.write_str(&self.0.replace('\r', "\\r").replace('\n', "\\n"))
     }
 }
 
@@ -76,70 +145,118 @@ impl Error {
         message: impl Into<String>,
     ) -> Self {
         let file = file.into();
-        Error {
-            location: Some(Location { file, line, col }),
-            message: message.into(),
-            kind: Kind::Other,
+        Error::At {
+            at: Location { file, line, col },
+            problem: Box::new(Error::invalid(message)),
         }
     }
 
-    /// An error with no place in an input.
-    pub fn msg(message: impl Into<String>) -> Self {
-        Error {
-            location: None,
-            message: message.into(),
-            kind: Kind::Other,
+    /// This error at `file:line:col`.
+    pub fn located(self, file: impl Into<String>, line: usize, col: usize) -> Self {
+        let file = file.into();
+        Error::At {
+            at: Location { file, line, col },
+            problem: Box::new(self),
         }
     }
 
-    /// An error of kind `kind`, with no place in an input.
-    pub fn of_kind(kind: Kind, message: impl Into<String>) -> Self {
-        Error {
-            kind,
-            ..Error::msg(message)
+    /// Invalid input with no place in it.
+    pub fn invalid(message: impl Into<String>) -> Self {
+        Error::Invalid(message.into())
+    }
+
+    /// A failure of the system on `path`: `path: system message`.
+    pub fn io(path: impl fmt::Display, e: &std::io::Error) -> Self {
+        Error::Io(e.into()).context(path)
+    }
+
+    /// Which case it is, for callers that word [`Kind::NeedsBounds`] their own way.
+    pub fn kind(&self) -> Kind {
+        match self {
+            Error::NeedsBounds => Kind::NeedsBounds,
+            Error::Context { source, .. } => source.kind(),
+            _ => Kind::Other,
+        }
+    }
+
+    /// Where in its input the problem is, when it has a place there.
+    ///
+    /// ```
+    /// use csgpix_scene::Error;
+    ///
+    /// let e = Error::at("a.dl", 3, 7, "expected a number").context("plane 2");
+    /// assert_eq!(e.to_string(), "a.dl:3:7: plane 2: expected a number");
+    /// assert_eq!(e.location().map(|l| l.line), Some(3));
+    /// ```
+    pub fn location(&self) -> Option<&Location> {
+        match self {
+            Error::At { at, .. } => Some(at),
+            Error::Context { source, .. } => source.location(),
+            _ => None,
+        }
+    }
+
+    /// The problem without its place: for [`Error::At`] what is wrong there, else the whole
+    /// error.
+    pub fn problem(&self) -> &Error {
+        match self {
+            Error::At { problem, .. } => problem,
+            e => e,
+        }
+    }
+
+    /// The system's kind of failure, when a file could not be read or written.
+    ///
+    /// ```
+    /// use csgpix_scene::Error;
+    /// use std::io::ErrorKind;
+    ///
+    /// let e = csgpix_scene::input::read_text("no/such.csg".as_ref()).unwrap_err();
+    /// assert_eq!(e.io_kind(), Some(ErrorKind::NotFound));
+    /// assert!(e.to_string().starts_with("no/such.csg: "));
+    /// ```
+    pub fn io_kind(&self) -> Option<std::io::ErrorKind> {
+        match self {
+            Error::Io(e) => Some(e.kind),
+            Error::At { problem: e, .. } | Error::Context { source: e, .. } => e.io_kind(),
+            _ => None,
         }
     }
 
     /// The same error located in `file` instead (the caller's name for the input, e.g. the
     /// option an expression came from); unchanged when it has no location.
-    pub fn in_file(mut self, file: impl Into<String>) -> Self {
-        if let Some(at) = &mut self.location {
-            at.file = file.into();
+    pub fn in_file(self, file: impl Into<String>) -> Self {
+        match self {
+            Error::At { mut at, problem } => {
+                at.file = file.into();
+                Error::At { at, problem }
+            }
+            Error::Context { what, source } => Error::Context {
+                what,
+                source: Box::new(source.in_file(file)),
+            },
+            e => e,
         }
-        self
     }
 
-    /// The same error, its message after `what: ` (e.g. the primitive it concerns).
-    pub fn context(mut self, what: impl fmt::Display) -> Self {
-        self.message = format!("{what}: {}", self.message);
-        self
+    /// The same error, its problem after `what: ` (e.g. the primitive it concerns), the
+    /// place, if any, still first.
+    pub fn context(self, what: impl fmt::Display) -> Self {
+        match self {
+            Error::At { at, problem } => Error::At {
+                at,
+                problem: Box::new(problem.context(what)),
+            },
+            e => Error::Context {
+                what: what.to_string(),
+                source: Box::new(e),
+            },
+        }
     }
 }
 
-/// The conversions every csgpix error type has: from a one-line message (`String`, `&str`)
-/// through `$msg`, and to a `String` for callers that still speak in one-line strings (the
-/// command line). `message_conversions!(Error, Error::Msg)` in the crate that defines `Error`.
-#[macro_export]
-macro_rules! message_conversions {
-    ($err:ty, $msg:path) => {
-        impl From<String> for $err {
-            fn from(m: String) -> Self {
-                $msg(m)
-            }
-        }
-
-        impl From<&str> for $err {
-            fn from(m: &str) -> Self {
-                $msg(m.to_string())
-            }
-        }
-
-        impl From<$err> for String {
-            fn from(e: $err) -> String {
-                e.to_string()
-            }
-        }
-    };
+impl From<Error> for String {
+    fn from(e: Error) -> String {
+        e.to_string()
+    }
 }
-
-message_conversions!(Error, Error::msg);

@@ -124,7 +124,7 @@ pub fn found(c: Option<char>) -> String {
 pub fn parse(
     text: &str,
     grammar: &Grammar,
-    name: impl FnMut(&str) -> std::result::Result<usize, String>,
+    name: impl FnMut(&str) -> Result<usize>,
 ) -> Result<Expr> {
     let mut p = Parser {
         chars: text.chars().collect(),
@@ -196,7 +196,7 @@ struct Parser<'g, F> {
     depth: usize,
 }
 
-impl<F: FnMut(&str) -> std::result::Result<usize, String>> Parser<'_, F> {
+impl<F: FnMut(&str) -> Result<usize>> Parser<'_, F> {
     /// The next non-blank character, or None at the end.
     fn peek(&mut self) -> Option<char> {
         while self.chars.get(self.pos).is_some_and(|c| c.is_whitespace()) {
@@ -263,7 +263,7 @@ impl<F: FnMut(&str) -> std::result::Result<usize, String>> Parser<'_, F> {
         let name: String = self.chars[start..self.pos].iter().collect();
         match (self.resolve)(&name) {
             Ok(i) => Ok(self.add(Node::Name(i))),
-            Err(msg) => self.err(start + 1, msg),
+            Err(e) => Err(e.located(INPUT, 1, start + 1)),
         }
     }
 
@@ -444,7 +444,7 @@ mod tests {
         );
         let e = parse("A+Bad", &grammar(), |n| match n {
             "A" => Ok(0),
-            _ => Err(format!("no {n}")),
+            _ => Err(Error::invalid(format!("no {n}"))),
         });
         assert_eq!(e.unwrap_err().to_string(), "<expr>:1:3: no Bad");
     }

@@ -3,7 +3,7 @@
 use glam::DVec3;
 
 use crate::solid::CsgScene;
-use crate::{Error, Kind, Result};
+use crate::{Error, Result};
 
 /// The voxel grid: `dims` voxels spanning the box `min`..`max` in scene units.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -18,15 +18,14 @@ pub struct Grid {
 
 impl Grid {
     /// A grid over the scene's bounds (every solid's vertices, so subtracted solids count).
-    /// A scene without solids has none: the error is then of kind [`Kind::NeedsBounds`].
+    /// A scene without solids has none: the error is then [`Error::NeedsBounds`].
     pub fn of_scene(scene: &CsgScene, dims: [usize; 3]) -> Result<Grid> {
         let pts = scene.solids.iter().flat_map(|s| s.vertices.iter());
         let (min, max) = pts.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), p| {
             (a.min(DVec3::from(*p)), b.max(DVec3::from(*p)))
         });
         if !min.is_finite() {
-            let msg = "the scene has no solids: give the grid's bounds";
-            return Err(Error::of_kind(Kind::NeedsBounds, msg));
+            return Err(Error::NeedsBounds);
         }
         Grid::new(dims, min, max)
     }
@@ -34,12 +33,10 @@ impl Grid {
     /// A grid over an explicit box.
     pub fn new(dims: [usize; 3], min: DVec3, max: DVec3) -> Result<Grid> {
         if dims.contains(&0) {
-            return Err(Error::msg(format!(
-                "resolution {dims:?}: every side needs at least one voxel"
-            )));
+            return Err(Error::EmptyResolution { dims });
         }
         if !(min.is_finite() && max.is_finite()) || (max - min).min_element() <= 0.0 {
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "bounds {min} .. {max} must be finite with every side positive"
             )));
         }
@@ -94,15 +91,20 @@ impl GridSpec {
             (Some(dims), None, None) => Grid::new(dims, lo, hi)?,
             (None, Some(size), None) => Self::cubic(size, lo, hi)?,
             (None, None, Some(n)) => Self::longest(n, lo, hi)?,
-            _ => return Err("give the grid as a resolution or a voxel size, not both".into()),
+            _ => {
+                return Err(Error::invalid(
+                    "give the grid as a resolution or a voxel size, not both",
+                ))
+            }
         };
         let v = inner.voxel();
         let pad = self.pad.min(MAX_GRID_SIDE);
         let dims = inner.dims.map(|d| d.saturating_add(2 * pad));
         if dims.iter().any(|&d| d > MAX_GRID_SIDE) {
-            return Err(Error::msg(format!(
-                "a grid of {dims:?} voxels: at most {MAX_GRID_SIDE} per axis"
-            )));
+            return Err(Error::GridTooLarge {
+                dims,
+                limit: MAX_GRID_SIDE,
+            });
         }
         let margin = v * pad as f64;
         Grid::new(dims, inner.min - margin, inner.max + margin)
@@ -124,7 +126,7 @@ impl GridSpec {
     /// Cubic voxels of side `size`: as many as cover each side of the box, centred on it.
     fn cubic(size: f64, lo: DVec3, hi: DVec3) -> Result<Grid> {
         if !(size.is_finite() && size > 0.0) {
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "voxel size {size}: must be a positive number"
             )));
         }
@@ -134,7 +136,7 @@ impl GridSpec {
             // A side that is a whole number of voxels (to rounding) gets exactly that many.
             let n = (e / size * (1.0 - 1e-12)).ceil().max(1.0);
             if n.is_nan() || n > MAX_GRID_SIDE as f64 {
-                return Err(Error::msg(format!(
+                return Err(Error::invalid(format!(
                     "voxel size {size} over an extent of {e}: more than {MAX_GRID_SIDE} voxels per axis"
                 )));
             }

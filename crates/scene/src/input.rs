@@ -7,7 +7,7 @@ use crate::{Error, Result};
 /// The text of `path`; its name in errors is `path` as given.
 pub fn read_text(path: &Path) -> Result<String> {
     let name = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| Error::msg(format!("{name}: {e}")))?;
+    let bytes = std::fs::read(path).map_err(|e| Error::io(&name, &e))?;
     text(bytes, &name)
 }
 

@@ -28,4 +28,4 @@ pub mod output;
 pub mod solid;
 pub mod trimesh;
 
-pub use error::{Error, Kind, Location, Result};
+pub use error::{Error, IoError, Kind, Location, Result};

@@ -156,28 +156,28 @@ pub fn read(bytes: &[u8]) -> Result<([usize; 3], Vec<u8>)> {
     let split = bytes
         .windows(2)
         .position(|w| w == b"\n\n")
-        .ok_or("no blank line after the NRRD header")?;
-    let head = std::str::from_utf8(&bytes[..split]).map_err(|e| e.to_string())?;
+        .ok_or_else(|| Error::invalid("no blank line after the NRRD header"))?;
+    let head = std::str::from_utf8(&bytes[..split]).map_err(|e| Error::invalid(e.to_string()))?;
     if !head.starts_with("NRRD000") {
-        return Err("not a NRRD file".into());
+        return Err(Error::invalid("not a NRRD file"));
     }
     let sizes = head
         .lines()
         .find_map(|l| l.strip_prefix("sizes: "))
-        .ok_or("no sizes field")?;
+        .ok_or_else(|| Error::invalid("no sizes field"))?;
     let dims: Vec<usize> = sizes
         .split_whitespace()
-        .map(|s| s.parse().map_err(|e| format!("sizes: {e}")))
-        .collect::<Result<_, String>>()?;
+        .map(|s| s.parse().map_err(|e| Error::invalid(format!("sizes: {e}"))))
+        .collect::<Result<_>>()?;
     let [nx, ny, nz] = dims[..] else {
-        return Err(Error::msg(format!(
+        return Err(Error::invalid(format!(
             "sizes: expected 3, found {}",
             dims.len()
         )));
     };
     let data = bytes[split + 2..].to_vec();
     if data.len() != nx * ny * nz {
-        return Err(Error::msg(format!(
+        return Err(Error::invalid(format!(
             "{} data bytes for {nx}x{ny}x{nz}",
             data.len()
         )));
@@ -258,13 +258,13 @@ impl Nrrd {
         let count = sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n));
         if count != Some(samples.len()) || samples.is_empty() {
             let [x, y, z] = sizes;
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "{} samples for sizes {x}×{y}×{z}",
                 samples.len()
             )));
         }
         if let Some(i) = samples.iter().position(|v| !v.is_finite()) {
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "sample {i} is {}: expected finite values",
                 samples[i]
             )));
@@ -459,15 +459,14 @@ pub(crate) fn invertible(d: &DMat3) -> bool {
 pub fn read_nrrd(path: &Path) -> Result<Nrrd> {
     let name = path.display().to_string();
     let len = std::fs::metadata(path)
-        .map_err(|e| format!("{name}: {e}"))?
+        .map_err(|e| Error::io(&name, &e))?
         .len();
     let cap = MAX_SAMPLES as u64 * 8 + (1 << 20);
     if len > cap {
-        return Err(Error::msg(format!(
-            "{name}: {len} bytes: larger than any volume of {MAX_SAMPLES} samples"
-        )));
+        let msg = format!("{len} bytes: larger than any volume of {MAX_SAMPLES} samples");
+        return Err(Error::invalid(msg).context(&name));
     }
-    let bytes = std::fs::read(path).map_err(|e| format!("{name}: {e}"))?;
+    let bytes = std::fs::read(path).map_err(|e| Error::io(&name, &e))?;
     parse_nrrd(&bytes, &name, path.parent())
 }
 
@@ -497,7 +496,7 @@ pub fn parse_nrrd_limited(
         .map(|b| plan.ty.decode(b, plan.big) as f32)
         .collect();
     let mut nrrd = Nrrd::new(plan.sizes, samples, origin, directions, plan.ty)
-        .map_err(|e| Error::msg(format!("{file}: data: {e}")))?;
+        .map_err(|e| e.context("data").context(file))?;
     nrrd.space = h.get("space").map(|f| f.value.trim().to_string());
     Ok(nrrd)
 }
@@ -1000,11 +999,8 @@ fn fetch(h: &Header, plan: &Plan, bytes: &[u8], dir: Option<&Path>) -> Result<Ve
                 false => Err(std::io::Error::other("not a regular file")),
             };
             let file = open(&path).map_err(|e| {
-                h.err(
-                    f,
-                    0,
-                    format!("expected a readable data file {}: {e}", path.display()),
-                )
+                let what = format_args!("expected a readable data file {}", path.display());
+                Error::io(what, &e).located(h.file, f.line, f.col)
             })?;
             read_data(std::io::BufReader::new(file), plan)
         }
@@ -1126,7 +1122,7 @@ fn fault(h: &Header, plan: &Plan, e: Fault) -> Error {
     };
     match place {
         Ok(f) => h.err(f, 0, msg),
-        Err(prefix) => Error::msg(format!("{prefix}: {msg}")),
+        Err(prefix) => Error::invalid(msg).context(prefix),
     }
 }
 
@@ -1136,7 +1132,7 @@ fn fault(h: &Header, plan: &Plan, e: Fault) -> Error {
 /// little-endian, whole or not at all. Gzip output is deterministic (no name, mtime 0).
 pub fn write_nrrd(path: &Path, nrrd: &Nrrd, encoding: Encoding, comment: &str) -> Result<()> {
     let bytes = nrrd_bytes(nrrd, encoding, Endian::Little, comment)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
+        .map_err(|e| e.context(path.display()))?;
     write_atomic(path, |w| w.write_all(&bytes))
 }
 
@@ -1151,10 +1147,10 @@ pub fn nrrd_bytes(
 ) -> Result<Vec<u8>> {
     let d = nrrd.directions;
     if !nrrd.origin.is_finite() || !d.is_finite() {
-        return Err("space origin and directions must be finite".into());
+        return Err(Error::invalid("space origin and directions must be finite"));
     }
     if Some(nrrd.samples.len()) != nrrd.sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n)) {
-        return Err(Error::msg(format!(
+        return Err(Error::invalid(format!(
             "{} samples for sizes {:?}",
             nrrd.samples.len(),
             nrrd.sizes
@@ -1169,7 +1165,7 @@ pub fn nrrd_bytes(
     let head = general_header(nrrd, encoding, endian, comment);
     match encoding {
         Encoding::Raw => Ok([head.into_bytes(), data].concat()),
-        Encoding::Gzip => gzip(head.into_bytes(), &data).map_err(|e| Error::msg(e.to_string())),
+        Encoding::Gzip => gzip(head.into_bytes(), &data).map_err(|e| Error::Io(e.into())),
     }
 }
 

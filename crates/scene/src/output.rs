@@ -64,7 +64,7 @@ fn forget(path: &Path) {
 pub fn install_signal_cleanup() -> Result<()> {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
     let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| Error::Io(e.into()))?;
     std::thread::spawn(move || {
         if let Some(sig) = signals.forever().next() {
             // Held to the end: a commit in progress finishes first, and none starts after.
@@ -134,11 +134,11 @@ impl Staged {
         let file = self.file.take().expect("staged file present");
         let tmp = file.path().to_path_buf();
         let r = set_mode(file.as_file(), mode)
-            .map_err(|e| Error::msg(format!("{}: {e}", target.display())))
+            .map_err(|e| Error::io(target.display(), &e))
             .and_then(|()| {
                 file.persist(target)
                     .map(drop)
-                    .map_err(|e| Error::msg(format!("{}: {}", target.display(), e.error)))
+                    .map_err(|e| Error::io(target.display(), &e.error))
             });
         forget(&tmp);
         r
@@ -261,24 +261,26 @@ impl Outputs {
     /// aside, the new one renamed in, the old one removed.
     pub fn tree(&mut self, flag: &str, path: &Path, exts: &[&str], marker: &str) -> Result<Out> {
         let shown = path.display().to_string();
-        check_extension(path, exts).map_err(|e| format!("{flag} {shown}: {e}"))?;
+        check_extension(path, exts).map_err(|e| e.context(format!("{flag} {shown}")))?;
         self.dir_slot(flag, path, Some(marker))
     }
 
     fn dir_slot(&mut self, flag: &str, path: &Path, whole: Option<&str>) -> Result<Out> {
         let shown = path.display().to_string();
-        let err = |msg: String| Error::msg(format!("{flag} {shown}: {msg}"));
+        let err = |e: Error| e.context(format!("{flag} {shown}"));
         if path.as_os_str() == "-" {
-            return Err(err(
-                "a directory of files cannot go to standard output".into()
-            ));
+            return Err(err(Error::invalid(
+                "a directory of files cannot go to standard output",
+            )));
         }
-        let resolved = resolve(path).map_err(|e| err(e.message))?;
+        let resolved = resolve(path).map_err(err)?;
         match std::fs::metadata(&resolved) {
-            Ok(m) if !m.is_dir() => return Err(err("exists and is not a directory".into())),
+            Ok(m) if !m.is_dir() => {
+                return Err(err(Error::invalid("exists and is not a directory")))
+            }
             Ok(_) => {}
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
-            Err(e) => return Err(err(e.to_string())),
+            Err(e) => return Err(err(Error::Io(e.into()))),
         }
         let target = match whole {
             None => Target::Dir(resolved.clone()),
@@ -288,14 +290,19 @@ impl Outputs {
             }
         };
         self.check_unique(&target, &shown)?;
-        let (base, name) = existing_ancestor(&resolved).map_err(|e| err(e.message))?;
+        let (base, name) = existing_ancestor(&resolved).map_err(err)?;
         // Held from before the directory exists: a signal's cleanup cannot miss it.
         let mut staged = pending();
         let dir = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
             .suffix(".csgpix-tmp")
             .tempdir_in(&base)
-            .map_err(|e| err(format!("cannot write in {}: {e}", base.display())))?
+            .map_err(|e| {
+                err(Error::io(
+                    format_args!("cannot write in {}", base.display()),
+                    &e,
+                ))
+            })?
             .keep();
         staged.push(dir.clone());
         drop(staged);
@@ -325,11 +332,11 @@ impl Outputs {
     ) -> Result<()> {
         let slot = &mut self.slots[out.0];
         let shown = &slot.shown;
-        let err = |e: std::io::Error| Error::msg(format!("{shown}: {e}"));
+        let err = |e: std::io::Error| Error::io(shown, &e);
         let file = match &mut slot.stage {
             Stage::Named(s) => s.file(),
             Stage::Unnamed(f) => f,
-            Stage::Dir(..) => return Err(Error::msg(format!("{shown}: is a directory output"))),
+            Stage::Dir(..) => return Err(Error::invalid("is a directory output").context(shown)),
         };
         file.set_len(0).map_err(err)?;
         file.rewind().map_err(err)?;
@@ -346,7 +353,7 @@ impl Outputs {
         fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
     ) -> Result<()> {
         let path = self.stage_path(out, name)?;
-        let err = |e: std::io::Error| Error::msg(format!("{}: {e}", path.display()));
+        let err = |e: std::io::Error| Error::io(path.display(), &e);
         let mut buf = std::io::BufWriter::new(File::create(&path).map_err(err)?);
         fill(&mut buf).map_err(err)?;
         buf.flush().map_err(err)
@@ -358,7 +365,7 @@ impl Outputs {
         let slot = &self.slots[out.0];
         match &slot.stage {
             Stage::Dir(dir, _) => Ok(dir.0.clone()),
-            _ => Err(Error::msg(format!(
+            _ => Err(Error::invalid(format!(
                 "{}: is not a directory output",
                 slot.shown
             ))),
@@ -369,13 +376,13 @@ impl Outputs {
     pub fn stage_path(&mut self, out: Out, name: &str) -> Result<PathBuf> {
         let slot = &mut self.slots[out.0];
         let Stage::Dir(dir, names) = &mut slot.stage else {
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "{}: is not a directory output",
                 slot.shown
             )));
         };
         if name.contains('/') || name.starts_with('.') || name.is_empty() {
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "{}: bad file name {name:?}",
                 slot.shown
             )));
@@ -409,26 +416,29 @@ impl Outputs {
         let shown = path.display().to_string();
         let target = if path.as_os_str() == "-" || names_stdout(path) {
             if !stdout {
-                return Err(Error::msg(format!(
+                return Err(Error::invalid(format!(
                     "{flag} -: this output cannot go to standard output"
                 )));
             }
             Target::Stdout
         } else {
-            classify(path).map_err(|e| format!("{flag} {shown}: {e}"))?
+            classify(path).map_err(|e| e.context(format!("{flag} {shown}")))?
         };
         if let Target::File(..) = target {
-            check_extension(path, exts).map_err(|e| format!("{flag} {shown}: {e}"))?;
+            check_extension(path, exts).map_err(|e| e.context(format!("{flag} {shown}")))?;
         }
         self.check_unique(&target, &shown)?;
         let stage = match &target {
             Target::File(p, _) => {
                 let (dir, name) = split(p);
                 Stage::Named(Staged::new_in(&dir, &name).map_err(|e| {
-                    format!("{flag} {shown}: cannot write in {}: {e}", dir.display())
+                    Error::io(format_args!("cannot write in {}", dir.display()), &e)
+                        .context(format!("{flag} {shown}"))
                 })?)
             }
-            _ => Stage::Unnamed(tempfile::tempfile().map_err(|e| format!("{flag} {shown}: {e}"))?),
+            _ => Stage::Unnamed(
+                tempfile::tempfile().map_err(|e| Error::io(format_args!("{flag} {shown}"), &e))?,
+            ),
         };
         self.slots.push(Slot {
             shown,
@@ -440,11 +450,11 @@ impl Outputs {
 
     fn check_unique(&self, target: &Target, shown: &str) -> Result<()> {
         match self.slots.iter().find(|s| same_target(&s.target, target)) {
-            Some(s) if *target == Target::Stdout => Err(Error::msg(format!(
+            Some(s) if *target == Target::Stdout => Err(Error::invalid(format!(
                 "only one output can be - (standard output): {} and {shown}",
                 s.shown
             ))),
-            Some(s) => Err(Error::msg(format!(
+            Some(s) => Err(Error::invalid(format!(
                 "{} and {shown} name the same file",
                 s.shown
             ))),
@@ -466,7 +476,7 @@ fn same_target(a: &Target, b: &Target) -> bool {
 }
 
 fn commit_slot(slot: Slot) -> Result<()> {
-    let err = |e: std::io::Error| Error::msg(format!("{}: {e}", slot.shown));
+    let err = |e: std::io::Error| Error::io(&slot.shown, &e);
     match (slot.target, slot.stage) {
         (Target::File(p, mode), Stage::Named(s)) => s.persist(&p, mode),
         (Target::Through(p), Stage::Unnamed(mut f)) => {
@@ -509,18 +519,18 @@ fn commit_dir(target: &Path, dir: &Path, names: &[String]) -> std::io::Result<()
 
 /// Whether an existing directory at `p` may be replaced whole: it is empty or holds `marker`
 /// (nothing there is fine too).
-fn replaceable(p: &Path, marker: &str) -> std::result::Result<(), String> {
+fn replaceable(p: &Path, marker: &str) -> Result<()> {
     match std::fs::read_dir(p) {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(()),
-        Err(e) => Err(e.to_string()),
+        Err(e) => Err(Error::Io(e.into())),
         Ok(mut entries) => {
             if entries.next().is_none() || p.join(marker).is_file() {
                 Ok(())
             } else {
-                Err(format!(
+                Err(Error::invalid(format!(
                     "exists and holds no {marker}: only a directory csgpix could have \
                      written is replaced (remove it first)"
-                ))
+                )))
             }
         }
     }
@@ -579,9 +589,13 @@ fn existing_ancestor(p: &Path) -> Result<(PathBuf, String)> {
         let (dir, name) = split(&cur);
         match std::fs::metadata(&dir) {
             Ok(m) if m.is_dir() => return Ok((dir, name)),
-            Ok(_) => return Err(Error::msg(format!("{} is not a directory", dir.display()))),
+            Ok(_) => {
+                return Err(Error::NotADirectory {
+                    path: dir.display().to_string(),
+                })
+            }
             Err(_) if dir != cur && dir.parent().is_some() => cur = dir,
-            Err(e) => return Err(Error::msg(format!("{}: {e}", dir.display()))),
+            Err(e) => return Err(Error::io(dir.display(), &e)),
         }
     }
 }
@@ -592,7 +606,7 @@ fn resolve(path: &Path) -> Result<PathBuf> {
     for _ in 0..40 {
         match std::fs::symlink_metadata(&p) {
             Ok(m) if m.file_type().is_symlink() => {
-                let link = std::fs::read_link(&p).map_err(|e| e.to_string())?;
+                let link = std::fs::read_link(&p).map_err(|e| Error::Io(e.into()))?;
                 p = match p.parent() {
                     Some(dir) if link.is_relative() => dir.join(link),
                     _ => link,
@@ -601,7 +615,7 @@ fn resolve(path: &Path) -> Result<PathBuf> {
             _ => return Ok(p),
         }
     }
-    Err("too many levels of symbolic links".into())
+    Err(Error::invalid("too many levels of symbolic links"))
 }
 
 /// The names of standard output a shell user writes: the same as `-`.
@@ -628,15 +642,17 @@ fn classify(path: &Path) -> Result<Target> {
             let (dir, _) = split(&p);
             return match std::fs::metadata(&dir) {
                 Ok(m) if m.is_dir() => Ok(Target::File(p, 0o644)),
-                Ok(_) => Err(Error::msg(format!("{} is not a directory", dir.display()))),
-                Err(e) => Err(Error::msg(format!("directory {}: {e}", dir.display()))),
+                Ok(_) => Err(Error::NotADirectory {
+                    path: dir.display().to_string(),
+                }),
+                Err(e) => Err(Error::io(format_args!("directory {}", dir.display()), &e)),
             };
         }
-        Err(e) => return Err(Error::msg(e.to_string())),
+        Err(e) => return Err(Error::Io(e.into())),
     };
     let ft = meta.file_type();
     if ft.is_dir() {
-        return Err("is a directory".into());
+        return Err(Error::invalid("is a directory"));
     }
     if ft.is_file() {
         // A shell's redirection seen through /dev/stdout or /proc/self/fd: write through.
@@ -666,18 +682,19 @@ fn special(p: &Path, meta: &std::fs::Metadata) -> Result<Target> {
     if ft.is_fifo() || ft.is_char_device() {
         Ok(Target::Through(p.to_path_buf()))
     } else if ft.is_block_device() {
-        Err("is a block device: csgpix writes files, FIFOs and character devices".into())
+        Err(Error::invalid(
+            "is a block device: csgpix writes files, FIFOs and character devices",
+        ))
     } else {
-        Err(
-            "is a socket or other special file: csgpix writes files, FIFOs and character devices"
-                .into(),
-        )
+        Err(Error::invalid(
+            "is a socket or other special file: csgpix writes files, FIFOs and character devices",
+        ))
     }
 }
 
 #[cfg(not(unix))]
 fn special(_: &Path, _: &std::fs::Metadata) -> Result<Target> {
-    Err("is not a regular file".into())
+    Err(Error::invalid("is not a regular file"))
 }
 
 /// The name must end in one of `exts` (case-insensitive), so that `x.jpg` is not PNG bytes.
@@ -698,7 +715,7 @@ fn check_extension(path: &Path, exts: &[&str]) -> Result<()> {
         [] => last.clone(),
         _ => format!("{} or {last}", rest.join(", ")),
     };
-    Err(Error::msg(format!(
+    Err(Error::invalid(format!(
         "the name must end in {names}: the extension names the format written"
     )))
 }

@@ -51,7 +51,7 @@ impl Welder {
             return Ok(i);
         }
         let i = u32::try_from(self.mesh.vertices.len())
-            .map_err(|_| "more than 2^32 distinct vertices".to_string())?;
+            .map_err(|_| Error::invalid("more than 2^32 distinct vertices"))?;
         self.mesh.vertices.push(p);
         self.at.insert(key, i);
         Ok(i)
@@ -74,12 +74,11 @@ impl TriMesh {
             Some("obj") => true,
             Some("stl") => false,
             _ => {
-                return Err(Error::msg(format!(
-                    "{file}: a mesh is read from .stl or .obj (the extension names the format)"
-                )))
+                let msg = "a mesh is read from .stl or .obj (the extension names the format)";
+                return Err(Error::invalid(msg).context(file));
             }
         };
-        let bytes = std::fs::read(path).map_err(|e| format!("{file}: cannot read: {e}"))?;
+        let bytes = std::fs::read(path).map_err(|e| Error::io("cannot read", &e).context(&file))?;
         TriMesh::parse(&bytes, &file, obj)
     }
 
@@ -184,7 +183,7 @@ impl TriMesh {
         } else {
             (String::new(), first(|n| n > 2 && n % 2 == 1))
         };
-        Err(Error::msg(format!(
+        Err(Error::invalid(format!(
             "{file}: mesh is not closed: {open} edges belong to one triangle{first_open}, \
              {many} to another odd number{first_many}; close the holes and remove the fins \
              (e.g. with MeshLab's or Blender's mesh repair) so that every edge is shared by \
@@ -202,7 +201,7 @@ impl TriMesh {
             .enumerate()
             .find_map(|(k, t)| t.iter().find(|&&i| i as usize >= n).map(|&i| (k, i)))
         {
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "{file}: triangle {k} refers to vertex {i}, but the mesh has {n} vertices"
             )));
         }
@@ -213,7 +212,7 @@ impl TriMesh {
             .copied()
             .collect();
         if tris.is_empty() {
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "{file}: mesh has no triangles (after dropping {} degenerate ones); a solid \
                  needs a closed surface",
                 self.triangles.len()
@@ -549,11 +548,13 @@ mod stl {
     fn binary(bytes: &[u8], file: &str) -> Result<TriMesh> {
         let len = bytes.len() as u64;
         let n = count(bytes).ok_or_else(|| {
-            format!("{file}: binary STL truncated at byte offset {len}: the header needs 84 bytes")
+            let msg =
+                format!("binary STL truncated at byte offset {len}: the header needs 84 bytes");
+            Error::invalid(msg).context(file)
         })?;
         if len < 84 + 50 * n {
             let k = (len - 84) / 50;
-            return Err(Error::msg(format!(
+            return Err(Error::invalid(format!(
                 "{file}: binary STL truncated at byte offset {len}: the header promises {n} \
                  triangles ({} bytes), triangle {k} starts at byte offset {} and is incomplete",
                 84 + 50 * n,
@@ -565,12 +566,12 @@ mod stl {
             let t = [0, 1, 2].map(|i| vertex(&rec[12 + 12 * i..24 + 12 * i]));
             match t {
                 [Some(a), Some(b), Some(c)] => w.triangle([a, b, c]),
-                _ => Err(Error::msg(format!(
+                _ => Err(Error::invalid(format!(
                     "triangle {k} (byte offset {}) has a coordinate that is not a finite number",
                     84 + 50 * k
                 ))),
             }
-            .map_err(|e| Error::msg(format!("{file}: binary STL: {e}")))?;
+            .map_err(|e| e.context("binary STL").context(file))?;
         }
         Ok(w.mesh)
     }
@@ -693,7 +694,7 @@ mod stl {
             self.keyword("endfacet")?;
             self.welder
                 .triangle([a, b, c])
-                .map_err(|e| Error::at(self.file, facet.line, facet.col, e.message))
+                .map_err(|e| e.located(self.file, facet.line, facet.col))
         }
     }
 }
@@ -713,7 +714,7 @@ mod obj {
         for (i, line) in bytes.split(|&b| b == b'\n').enumerate() {
             let line = line.split(|&b| b == b'#').next().unwrap_or_default();
             let mut words = line_words(line);
-            let at = |col: usize, what: String| Error::at(file, i + 1, col, what);
+            let at = |col: usize, e: Error| e.located(file, i + 1, col);
             match words.next() {
                 Some((_, b"v")) => {
                     vs.push(vertex(&mut words, line.len() + 1).map_err(|(c, e)| at(c, e))?)
@@ -727,7 +728,7 @@ mod obj {
         Ok(w.mesh)
     }
 
-    type Located = (usize, String);
+    type Located = (usize, Error);
 
     /// `x y z` (further numbers, such as w or a colour, are ignored).
     fn vertex<'a>(
@@ -736,13 +737,16 @@ mod obj {
     ) -> Result<DVec3, Located> {
         let mut c = [0.0; 3];
         for (k, c) in c.iter_mut().enumerate() {
-            let (col, w) = words
-                .next()
-                .ok_or_else(|| (end, format!("a vertex needs 3 coordinates, found {k}")))?;
+            let (col, w) = words.next().ok_or_else(|| {
+                (
+                    end,
+                    Error::invalid(format!("a vertex needs 3 coordinates, found {k}")),
+                )
+            })?;
             *c = finite(w).ok_or_else(|| {
                 (
                     col,
-                    format!("expected a finite number, found `{}`", show(w)),
+                    Error::invalid(format!("expected a finite number, found `{}`", show(w))),
                 )
             })?;
         }
@@ -762,30 +766,36 @@ mod obj {
         if refs.len() < 3 {
             return Err((
                 col,
-                format!("a face needs at least 3 vertices, found {}", refs.len()),
+                Error::invalid(format!(
+                    "a face needs at least 3 vertices, found {}",
+                    refs.len()
+                )),
             ));
         }
         for k in 1..refs.len() - 1 {
             let t = [refs[0], refs[k], refs[k + 1]].map(|r| vs[r]);
-            w.triangle(t).map_err(|e| (col, e.message))?;
+            w.triangle(t).map_err(|e| (col, e))?;
         }
         Ok(())
     }
 
     /// The 0-based vertex of `a`, `a/t`, `a/t/n` or `a//n`, given `n` vertices so far.
-    pub(super) fn reference(r: &[u8], n: usize) -> Result<usize, String> {
+    pub(super) fn reference(r: &[u8], n: usize) -> Result<usize> {
         let a = r.split(|&b| b == b'/').next().unwrap_or_default();
         let i: i64 = std::str::from_utf8(a)
             .ok()
             .and_then(|s| s.parse().ok())
-            .ok_or_else(|| format!("expected a vertex index, found `{}`", show(r)))?;
+            .ok_or_else(|| {
+                Error::invalid(format!("expected a vertex index, found `{}`", show(r)))
+            })?;
         let k = match i {
             1.. => usize::try_from(i - 1).ok().filter(|&k| k < n),
             ..=-1 => usize::try_from(n as i64 + i).ok(),
             0 => None,
         };
         k.ok_or_else(|| {
-            format!("vertex index {i} is out of range: {n} vertices are defined so far")
+            let msg = format!("vertex index {i} is out of range: {n} vertices are defined so far");
+            Error::invalid(msg)
         })
     }
 }
@@ -903,9 +913,9 @@ mod tests {
 
     #[test]
     fn obj_references() {
-        assert_eq!(obj::reference(b"3/1/2", 5), Ok(2));
-        assert_eq!(obj::reference(b"-1//4", 5), Ok(4));
-        assert_eq!(obj::reference(b"-5", 5), Ok(0));
+        assert_eq!(obj::reference(b"3/1/2", 5).ok(), Some(2));
+        assert_eq!(obj::reference(b"-1//4", 5).ok(), Some(4));
+        assert_eq!(obj::reference(b"-5", 5).ok(), Some(0));
         assert!(obj::reference(b"-6", 5).is_err());
         assert!(obj::reference(b"0", 5).is_err());
         assert!(obj::reference(b"6", 5).is_err());

@@ -30,14 +30,128 @@ pub enum Error {
         /// The description as given.
         spec: String,
         /// What is wrong with it.
-        reason: String,
+        reason: ToolProblem,
     },
+    /// A tool whose radius is out of range ([`ToolProblem::RadiusRange`]).
+    #[error(transparent)]
+    Tool(ToolProblem),
     /// A spring stiffness k (seed 000 §6, F = k·ΔX) that is negative or not finite.
     #[error("the stiffness must be a finite number >= 0")]
     BadStiffness,
-    /// A problem of this crate's own, one line.
-    #[error("{0}")]
-    Msg(String),
+    /// The voxelizer feeding a store failed (with the scene's `FILE:LINE:COL` where it has
+    /// one).
+    #[error(transparent)]
+    Voxel(#[from] Box<csgpix_voxel::Error>),
+    /// A grid side needs more octree levels than a key holds.
+    #[error("a side of {side} voxels needs {depth} octree levels; at most {max} fit a key")]
+    TooDeep {
+        /// The grid's longest side, voxels.
+        side: usize,
+        /// Levels it needs.
+        depth: u32,
+        /// Levels a key holds.
+        max: u32,
+    },
+    /// More octree nodes than a table indexes (2^32 - 1).
+    #[error("more than 2^32 - 1 octree nodes")]
+    TooManyNodes,
+    /// A cell layer pushed past the octree's side or shorter than a layer.
+    #[error("cell layer {layer} of {cells} cells: not a layer of this octree")]
+    BadLayer {
+        /// The layer's index.
+        layer: usize,
+        /// Cells given.
+        cells: usize,
+    },
+    /// A pointer octree finished without a root node.
+    #[error("the pointer octree has no root")]
+    NoRoot,
+    /// A build finished before all its cell layers came.
+    #[error("the octree got {got} of {want} cell layers")]
+    MissingLayers {
+        /// Layers pushed.
+        got: usize,
+        /// Layers the octree has.
+        want: usize,
+    },
+    /// A voxel slice came out of order.
+    #[error("voxel slice {got} arrived, slice {expected} was expected")]
+    SliceOrder {
+        /// The slice that came.
+        got: usize,
+        /// The slice due.
+        expected: usize,
+    },
+    /// A voxel slice past the octree's side.
+    #[error("voxel slice {slice} is past the octree's side {side}")]
+    SlicePastSide {
+        /// The slice.
+        slice: usize,
+        /// The octree's side, voxels.
+        side: usize,
+    },
+    /// A cell the octree does not hold as asked.
+    #[error("cell ({}, {}, {}) {problem}", cell[0], cell[1], cell[2])]
+    Cell {
+        /// The cell, X, Y, Z.
+        cell: [u32; 3],
+        /// What is wrong.
+        problem: CellProblem,
+    },
+    /// A tool path file without a position: `file` as given.
+    #[error("{file}: no tool positions: give one row x,y,z per step")]
+    NoToolPositions {
+        /// The file.
+        file: String,
+    },
+    /// A volume whose voxel steps are not positive and along the axes.
+    #[error("space directions: sculpting needs positive axis-aligned voxel steps")]
+    NotAxisAligned,
+    /// A problem about `what` (e.g. the file it concerns): `what: source`.
+    #[error("{what}: {source}")]
+    Context {
+        /// What the problem concerns.
+        what: String,
+        /// The problem.
+        source: Box<Error>,
+    },
+}
+
+/// What is wrong with a tool description.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ToolProblem {
+    /// It does not start with `sphere:`.
+    #[error("expected sphere:R (R in voxels)")]
+    NotSphere,
+    /// The radius is not a number.
+    #[error("radius: {0}")]
+    Radius(std::num::ParseFloatError),
+    /// The radius is not in (0, [`crate::MAX_RADIUS`]].
+    #[error(
+        "the sphere's radius must be more than 0 and at most {} voxels",
+        crate::MAX_RADIUS
+    )]
+    RadiusRange,
+}
+
+/// What is wrong with a cell of an octree.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+pub enum CellProblem {
+    /// It lies outside the octree.
+    #[error("is outside the octree")]
+    Outside,
+    /// No leaf covers it.
+    #[error("has no leaf")]
+    NoLeaf,
+    /// Its leaf went missing after a split.
+    #[error("vanished")]
+    Vanished,
+}
+
+impl From<csgpix_voxel::Error> for Error {
+    fn from(e: csgpix_voxel::Error) -> Error {
+        Error::Voxel(Box::new(e))
+    }
 }
 
 /// A `csgpix-sculpt` result.
@@ -47,7 +161,9 @@ impl Error {
     /// Where in its input the problem is, when it has a place there.
     pub fn location(&self) -> Option<&Location> {
         match self {
-            Error::Scene(e) => e.location.as_ref(),
+            Error::Scene(e) => e.location(),
+            Error::Voxel(e) => e.location(),
+            Error::Context { source, .. } => source.location(),
             _ => None,
         }
     }
@@ -56,10 +172,16 @@ impl Error {
     pub fn context(self, what: impl std::fmt::Display) -> Self {
         match self {
             Error::Scene(e) => Error::Scene(e.context(what)),
-            Error::Msg(m) => Error::Msg(format!("{what}: {m}")),
-            e => Error::Msg(format!("{what}: {e}")),
+            e => Error::Context {
+                what: what.to_string(),
+                source: Box::new(e),
+            },
         }
     }
 }
 
-csgpix_scene::message_conversions!(Error, Error::Msg);
+impl From<Error> for String {
+    fn from(e: Error) -> String {
+        e.to_string()
+    }
+}

@@ -37,4 +37,4 @@ pub mod sculpt;
 
 pub use sculpt::*;
 
-pub use error::{Error, Result};
+pub use error::{CellProblem, Error, Result, ToolProblem};

@@ -18,7 +18,7 @@ use crate::octree::{mc, OptimizedOctree, SurfaceWalk, VoxelStore};
 use csgpix_scene::mesh::Tri;
 use csgpix_scene::Error as SceneError;
 
-use crate::{Error, Result};
+use crate::{Error, Result, ToolProblem};
 
 /// Largest tool radius, in voxels: a step then touches at most (2·128 + 2)³ cells.
 pub const MAX_RADIUS: f64 = 128.0;
@@ -203,25 +203,23 @@ pub struct Tool {
 
 /// `sphere:R` (R in voxels).
 pub fn parse_tool(s: &str) -> Result<f64> {
-    let bad = |reason: String| Error::BadTool {
+    let bad = |reason: ToolProblem| Error::BadTool {
         spec: s.to_string(),
         reason,
     };
     let r = s
         .strip_prefix("sphere:")
-        .ok_or_else(|| bad("expected sphere:R (R in voxels)".into()))?;
-    let r: f64 = r.trim().parse().map_err(|e| bad(format!("radius: {e}")))?;
+        .ok_or_else(|| bad(ToolProblem::NotSphere))?;
+    let r: f64 = r.trim().parse().map_err(|e| bad(ToolProblem::Radius(e)))?;
     check_radius(r).map_err(bad)
 }
 
 /// The radius if it is in (0, [`MAX_RADIUS`]], else why not.
-fn check_radius(r: f64) -> Result<f64, String> {
+fn check_radius(r: f64) -> Result<f64, ToolProblem> {
     if r.is_finite() && r > 0.0 && r <= MAX_RADIUS {
         Ok(r)
     } else {
-        Err(format!(
-            "the sphere's radius must be more than 0 and at most {MAX_RADIUS} voxels"
-        ))
+        Err(ToolProblem::RadiusRange)
     }
 }
 
@@ -281,7 +279,7 @@ impl Sculptor {
         dims: [usize; 3],
         tool: Tool,
     ) -> Result<Sculptor> {
-        check_radius(tool.radius)?;
+        check_radius(tool.radius).map_err(Error::Tool)?;
         if !(tool.stiffness.is_finite() && tool.stiffness >= 0.0) {
             return Err(Error::BadStiffness);
         }
@@ -498,9 +496,7 @@ pub fn parse_path(text: &str, file: &str) -> Result<Vec<DVec3>> {
         out.push(parse_row(&fields, line.len(), file, n + 1)?);
     }
     if out.is_empty() {
-        return Err(Error::Msg(format!(
-            "{file}: no tool positions: give one row x,y,z per step"
-        )));
+        return Err(Error::NoToolPositions { file: file.into() });
     }
     Ok(out)
 }
@@ -550,7 +546,7 @@ pub fn nrrd_frame(n: &csgpix_scene::nrrd::Nrrd) -> Result<Frame> {
         d.x_axis.y, d.x_axis.z, d.y_axis.x, d.y_axis.z, d.z_axis.x, d.z_axis.y,
     ];
     if off.iter().any(|&v| v != 0.0) || !voxel.is_finite() || voxel.min_element() <= 0.0 {
-        return Err("space directions: sculpting needs positive axis-aligned voxel steps".into());
+        return Err(Error::NotAxisAligned);
     }
     Ok(Frame {
         origin: n.origin,

@@ -19,10 +19,18 @@ pub enum Error {
     /// The scene has no primitive, so no box of its own: a grid over it needs bounds given.
     #[error("the scene has no primitives")]
     NeedsBounds,
-    /// A CSG expression over named primitives (§4.3.2) could not be read: the reader's
-    /// message, one line.
+    /// A CSG expression over named primitives (§4.3.2) could not be read: the column and
+    /// the reader's error.
     #[error("the expression: {0}")]
-    Expr(String),
+    Expr(ExprError),
+    /// A primitive binding `NAME=FILE[,threshold=T]` that does not parse.
+    #[error("{spec:?}: {problem}")]
+    BadBinding {
+        /// The binding as given.
+        spec: String,
+        /// What is wrong with it.
+        problem: BindingSyntax,
+    },
     /// A primitive name of the expression is bound to no file.
     #[error("primitive `{name}` is bound to no file")]
     Unbound {
@@ -55,9 +63,88 @@ pub enum Error {
         /// The grid's slabs (NZ).
         slabs: usize,
     },
-    /// A problem of this crate's own, one line.
-    #[error("{0}")]
-    Msg(String),
+    /// A program the array refuses (a clipping stack too shallow for it, say).
+    #[error(transparent)]
+    Program(#[from] rtl_model::program::ProgramError),
+    /// A plane of solid `solid` (0-based) does not fit the depth word.
+    #[error("solid {}: {message}", solid + 1)]
+    Plane {
+        /// The solid.
+        solid: usize,
+        /// The plane's field at fault (0 Z0, 1 dZx, 2 dZy).
+        field: usize,
+        /// What is wrong, as the compiler words it.
+        message: String,
+    },
+    /// A brick of columns and slabs that is not inside the grid.
+    #[error("brick {columns:?} × slabs {slabs:?} is not inside the grid {}x{}x{}", dims[0], dims[1], dims[2])]
+    BrickRange {
+        /// The columns asked for.
+        columns: crate::footprint::PixelBox,
+        /// The slabs asked for.
+        slabs: std::ops::Range<usize>,
+        /// The grid's voxels, X, Y, Z.
+        dims: [usize; 3],
+    },
+    /// More slices than the depth word can tell apart.
+    #[error(
+        "{slices} slices do not fit the depth word ({frac} fraction and {int} integer bits): \
+         use fewer slices or a wider word (e.g. 10/11/12)"
+    )]
+    TooManySlices {
+        /// Slices asked for.
+        slices: usize,
+        /// The word's fraction bits.
+        frac: u32,
+        /// The word's integer bits.
+        int: u32,
+    },
+    /// A caller's slice sink failed to write: the system's error.
+    #[error(transparent)]
+    Sink(csgpix_scene::IoError),
+    /// A problem about `what` (e.g. the primitive it concerns): `what: source`.
+    #[error("{what}: {source}")]
+    Context {
+        /// What the problem concerns.
+        what: String,
+        /// The problem.
+        source: Box<Error>,
+    },
+}
+
+/// Why a CSG expression over named primitives could not be read: `col: error`.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{col}: {}", .error.problem())]
+pub struct ExprError {
+    /// The column (1-based, in characters) of the problem.
+    pub col: usize,
+    /// The reader's error, located in the expression.
+    pub error: csgpix_scene::Error,
+}
+
+/// What is wrong with the text of a primitive binding.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum BindingSyntax {
+    /// There is no `=`.
+    #[error("expected NAME=FILE[,threshold=T]")]
+    NoEquals,
+    /// The threshold is not a number.
+    #[error("threshold {text:?}: {error}")]
+    Threshold {
+        /// The threshold as given.
+        text: String,
+        /// Why it does not parse.
+        error: std::num::ParseFloatError,
+    },
+    /// The threshold is infinite or NaN.
+    #[error("the threshold must be finite")]
+    NotFinite,
+    /// The name is not letters, digits and `_` starting with a letter.
+    #[error("{name:?} is not a primitive name (letters, digits, _)")]
+    BadName {
+        /// The name given.
+        name: String,
+    },
 }
 
 /// What is wrong with a primitive name's binding to a file.
@@ -99,21 +186,29 @@ impl Error {
     /// Where in its input the problem is, when it has a place there.
     pub fn location(&self) -> Option<&Location> {
         match self {
-            Error::Scene(e) => e.location.as_ref(),
+            Error::Scene(e) => e.location(),
             Error::Draw(e) => e.location(),
+            Error::Context { source, .. } => source.location(),
             _ => None,
         }
     }
 
-    /// The same error, its message after `what: ` (e.g. the primitive it concerns). Typed
-    /// variants other than the wrapped errors become one-line messages.
+    /// The same error, its message after `what: ` (e.g. the primitive it concerns): the
+    /// wrapped errors take it in, the others are wrapped in [`Error::Context`].
     pub fn context(self, what: impl std::fmt::Display) -> Self {
         match self {
             Error::Scene(e) => Error::Scene(e.context(what)),
             Error::Draw(e) => Error::Draw(e.context(what)),
-            e => Error::Msg(format!("{what}: {e}")),
+            e => Error::Context {
+                what: what.to_string(),
+                source: Box::new(e),
+            },
         }
     }
 }
 
-csgpix_scene::message_conversions!(Error, Error::Msg);
+impl From<Error> for String {
+    fn from(e: Error) -> String {
+        e.to_string()
+    }
+}

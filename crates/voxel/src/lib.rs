@@ -115,4 +115,4 @@ pub use ranges::{
 };
 pub use slicer::{voxel_slope, Route, Sampling, Slicer, SlicerOptions, DEFAULT_PANEL};
 
-pub use error::{BindingProblem, Error, Result};
+pub use error::{BindingProblem, BindingSyntax, Error, ExprError, Result};

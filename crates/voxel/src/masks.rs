@@ -53,8 +53,7 @@ pub fn array_mask_in(
         width: bx.width(),
         height: bx.height(),
         // Only the clipping-stack levels the frame uses (its unused levels would hold 0).
-        stack_depth: check_program(&ops, full.stack_depth)
-            .map_err(|e| Error::Msg(e.to_string()))?,
+        stack_depth: check_program(&ops, full.stack_depth)?,
         ..full
     };
     let mut arr: Box<dyn Array> = if cycle {
@@ -62,7 +61,7 @@ pub fn array_mask_in(
     } else {
         Box::new(WordArray::new(cfg, set))
     };
-    arr.run(&ops).map_err(|e| Error::Msg(e.to_string()))?;
+    arr.run(&ops)?;
     let w = slicer.grid.dims[0];
     let mut mask = Mask::new(slicer.grid.slice_len());
     for y in 0..bx.height() {
@@ -82,5 +81,5 @@ pub fn slice_ops(slicer: &Slicer, prim: usize, k: usize) -> Result<Vec<rtl_model
     let expr = Clip::And(Box::new(Clip::Obj(0)), Box::new(Clip::Obj(1)));
     let cfg = slicer.config();
     clip_scene_ops(&lists, &expr, &cfg.fmt, cfg.colour_bits)
-        .map_err(|(_, e)| Error::Msg(format!("solid {}: {e}", prim + 1)))
+        .map_err(|(_, error)| Error::Draw(csgpix_draw::Error::Solid { solid: prim, error }))
 }

@@ -73,7 +73,11 @@ impl WordPlanes {
             .map(|p| {
                 csgpix_draw::compile::coeffs(fmt, p.z0, p.dzx, p.dzy)
                     .map(|c| (c, p.y, p.h))
-                    .map_err(|(_, msg)| format!("solid {}: {msg}", prim + 1))
+                    .map_err(|(field, message)| crate::Error::Plane {
+                        solid: prim,
+                        field,
+                        message,
+                    })
             })
             .collect::<Result<_, _>>()?;
         Ok(WordPlanes(planes))

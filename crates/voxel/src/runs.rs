@@ -572,9 +572,11 @@ pub fn voxelize_brick(
 ) -> Result<(Vec<u8>, usize)> {
     let [nx, ny, nz] = slicer.grid.dims;
     if columns.x1 > nx || columns.y1 > ny || slabs.end > nz || slabs.start > slabs.end {
-        return Err(crate::Error::Msg(format!(
-            "brick {columns:?} × slabs {slabs:?} is not inside the grid {nx}x{ny}x{nz}"
-        )));
+        return Err(crate::Error::BrickRange {
+            columns,
+            slabs,
+            dims: [nx, ny, nz],
+        });
     }
     let runs = Columns::new(slicer, float)?.brick(eval, columns);
     let filled = runs.filled(slabs.clone());

@@ -19,7 +19,7 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat4, DVec3};
 
-use crate::error::{BindingProblem, Error, Result};
+use crate::error::{BindingProblem, BindingSyntax, Error, ExprError, Result};
 use crate::ranges::toggle_run;
 use crate::slice::Mask;
 use csgpix_draw::project::colour_code;
@@ -363,17 +363,21 @@ pub struct Binding {
 
 /// A binding from its text, `NAME=FILE[,threshold=T]`.
 pub fn parse_binding(s: &str) -> Result<Binding> {
+    let bad = |problem| Error::BadBinding {
+        spec: s.to_string(),
+        problem,
+    };
     let (name, rest) = s
         .split_once('=')
-        .ok_or_else(|| format!("{s:?}: expected NAME=FILE[,threshold=T]"))?;
+        .ok_or_else(|| bad(BindingSyntax::NoEquals))?;
     let (file, threshold) = match rest.rsplit_once(",threshold=") {
         Some((f, t)) => {
-            let t: f64 = t
-                .trim()
-                .parse()
-                .map_err(|e| format!("{s:?}: threshold {t:?}: {e}"))?;
+            let t: f64 = t.trim().parse().map_err(|error| {
+                let text = t.to_string();
+                bad(BindingSyntax::Threshold { text, error })
+            })?;
             if !t.is_finite() {
-                return Err(format!("{s:?}: the threshold must be finite").into());
+                return Err(bad(BindingSyntax::NotFinite));
             }
             (f, Some(t))
         }
@@ -383,7 +387,8 @@ pub fn parse_binding(s: &str) -> Result<Binding> {
     let ok = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
         && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
     if !ok {
-        return Err(format!("{s:?}: {name:?} is not a primitive name (letters, digits, _)").into());
+        let name = name.to_string();
+        return Err(bad(BindingSyntax::BadName { name }));
     }
     Ok(Binding {
         name: name.to_string(),
@@ -405,10 +410,10 @@ pub fn parse_binding(s: &str) -> Result<Binding> {
 /// assert!(matches!(scene_from_expr("A +", &[]), Err(Error::Expr(_))));
 /// ```
 pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded> {
-    let e = csgpix_scene::csg_expr::parse(expr).map_err(|e| {
+    let e = csgpix_scene::csg_expr::parse(expr).map_err(|error| {
         // The expression is one line: its column is the place to name.
-        let col = e.location.as_ref().map_or(1, |at| at.col);
-        Error::Expr(format!("{col}: {}", e.message))
+        let col = error.location().map_or(1, |at| at.col);
+        Error::Expr(ExprError { col, error })
     })?;
     if let Some(b) = bindings.iter().find(|b| !e.names.contains(&b.name)) {
         return Err(binding(b, BindingProblem::NotInExpression));

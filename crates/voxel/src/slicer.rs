@@ -300,11 +300,11 @@ fn slab_raw(grid: &Grid, fmt: &WordFormat, sampling: Sampling) -> Result<i64> {
         slab_raw &= !1;
     }
     if slab_raw < 1 {
-        return Err(Error::Msg(format!(
-            "{} slices do not fit the depth word ({} fraction and {} integer bits): \
-             use fewer slices or a wider word (e.g. 10/11/12)",
-            grid.dims[2], fmt.frac, fmt.int
-        )));
+        return Err(Error::TooManySlices {
+            slices: grid.dims[2],
+            frac: fmt.frac,
+            int: fmt.int,
+        });
     }
     Ok(slab_raw)
 }

@@ -51,10 +51,10 @@ pub enum Error {
     /// Reading or writing the store failed (the filesystem, or zarrs).
     #[error("{}: {message}", .path.display())]
     Store {
-        /// The store's directory.
+        /// The store's directory (or the file in it).
         path: PathBuf,
-        /// zarrs's or the system's message.
-        message: String,
+        /// The system's or zarrs's error.
+        message: StoreProblem,
     },
     /// A chunk row index past the volume's rows.
     #[error("chunk row {row}: the volume has rows 0..{rows}")]
@@ -112,12 +112,41 @@ pub enum Error {
     /// written ([`csgpix_scene::output::staged_write`]).
     #[error("interrupted: the run's outputs are being removed")]
     Interrupted,
-    /// A problem of this crate's own, one line.
+    /// A pyramid level past the store's levels.
+    #[error("level {level}: the store has {levels}")]
+    LevelRange {
+        /// The level asked for.
+        level: usize,
+        /// How many levels the store has.
+        levels: usize,
+    },
+    /// Bricks were asked of a slicer the run route does not apply to.
+    #[error("bricks take the run route, which does not apply to grey datasets or blends")]
+    NoRunRoute,
+    /// A writing thread panicked (its panic message went to standard error).
+    #[error("{thread} panicked")]
+    Panicked {
+        /// Which thread: `a chunk writer`, `a sync thread`.
+        thread: &'static str,
+    },
+}
+
+/// Why reading or writing a store failed.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum StoreProblem {
+    /// The system's error, with its kind (a missing directory, a full disk, ...).
+    #[error(transparent)]
+    Io(#[from] csgpix_scene::IoError),
+    /// zarrs's error, as zarrs words it (its errors can be neither cloned nor compared).
     #[error("{0}")]
-    Msg(String),
+    Zarrs(String),
 }
 
 /// A `csgpix-zarr` result.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
-csgpix_scene::message_conversions!(Error, Error::Msg);
+impl From<Error> for String {
+    fn from(e: Error) -> String {
+        e.to_string()
+    }
+}

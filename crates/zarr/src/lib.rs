@@ -108,7 +108,7 @@ use zarrs::array::{Array, ArrayBuilder, ArrayMetadataOptions, CodecOptions};
 use zarrs::filesystem::FilesystemStore;
 use zarrs::group::{Group, GroupBuilder};
 
-pub use error::{Error, Result};
+pub use error::{Error, Result, StoreProblem};
 pub use pyramid::{downsample, label_of};
 
 /// The side of a cubic chunk when none is asked for: a chunk row of a 2048² grid is then
@@ -445,7 +445,15 @@ const _: fn() = || {
 fn store_err(path: &Path) -> impl Fn(&dyn std::fmt::Display) -> Error + '_ {
     move |e| Error::Store {
         path: path.to_path_buf(),
-        message: e.to_string(),
+        message: StoreProblem::Zarrs(e.to_string()),
+    }
+}
+
+/// The system's error on the store at `path`.
+fn io_err(path: &Path) -> impl Fn(std::io::Error) -> Error + '_ {
+    move |e| Error::Store {
+        path: path.to_path_buf(),
+        message: StoreProblem::Io(e.into()),
     }
 }
 
@@ -523,10 +531,10 @@ fn codec_options() -> CodecOptions {
 /// The array of `level`: uint8, fill 0, dimension names z, y, x; gzip at [`GZIP_LEVEL`],
 /// inside the `sharding_indexed` codec when sharded (index at the end, `bytes`
 /// little-endian, no checksum).
-fn array_builder(level: &Level) -> Result<ArrayBuilder, String> {
+fn array_builder(level: &Level) -> ArrayBuilder {
     let [nx, ny, nz] = level.dims.map(|d| d as u64);
     let u64s = |s: [usize; 3]| s.map(|c| c as u64).to_vec();
-    let gzip = Arc::new(GzipCodec::new(GZIP_LEVEL).map_err(|e| e.to_string())?);
+    let gzip = Arc::new(GzipCodec::new(GZIP_LEVEL).expect("GZIP_LEVEL is a gzip level (0 to 9)"));
     let uint8 = zarrs::array::data_type::uint8();
     let mut b = ArrayBuilder::new(
         vec![nz, ny, nx],
@@ -552,7 +560,7 @@ fn array_builder(level: &Level) -> Result<ArrayBuilder, String> {
         }
     }
     b.dimension_names(Some(["z", "y", "x"]));
-    Ok(b)
+    b
 }
 
 impl ZarrVolume {
@@ -578,10 +586,10 @@ impl ZarrVolume {
                 }
             }
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-                std::fs::create_dir_all(path).map_err(|e| err(&e))?
+                std::fs::create_dir_all(path).map_err(io_err(path))?
             }
             Err(_) if path.exists() => return Err(Error::NotEmpty { path: path.into() }),
-            Err(e) => return Err(err(&e)),
+            Err(e) => return Err(io_err(path)(e)),
         }
         let store = Arc::new(FilesystemStore::new(path).map_err(|e| err(&e))?);
         let group = GroupBuilder::new()
@@ -598,7 +606,6 @@ impl ZarrVolume {
         let mut arrays = vec![];
         for (l, level) in levels.into_iter().enumerate() {
             let array = array_builder(&level)
-                .map_err(|e| err(&e))?
                 .build(store.clone(), &format!("/{l}"))
                 .map_err(|e| err(&e))?;
             array
@@ -687,7 +694,6 @@ impl ZarrVolume {
             }
             // Chunks (or shards) and inner chunks as the attribute's layout makes them.
             let want = array_builder(&level)
-                .map_err(&bad)?
                 .build_metadata()
                 .map_err(|e| bad(e.to_string()))?;
             let have = serde_json::to_value(array.metadata()).map_err(|e| bad(e.to_string()))?;
@@ -798,7 +804,10 @@ impl ZarrVolume {
         let a = &self
             .levels
             .get(l)
-            .ok_or_else(|| Error::Msg(format!("level {l}: the store has {}", self.levels.len())))?
+            .ok_or(Error::LevelRange {
+                level: l,
+                levels: self.levels.len(),
+            })?
             .array;
         a.retrieve_array_subset(&a.subset_all())
             .map_err(|e| store_err(&self.path)(&e))
@@ -1022,9 +1031,9 @@ impl ZarrVolume {
                 .collect();
             let mut first = Ok(());
             for w in writers {
-                let r = w
-                    .join()
-                    .unwrap_or_else(|_| Err(Error::Msg("a chunk writer panicked".into())));
+                let r = w.join().unwrap_or(Err(Error::Panicked {
+                    thread: "a chunk writer",
+                }));
                 first = first.and(r);
             }
             first
@@ -1034,15 +1043,17 @@ impl ZarrVolume {
 }
 
 /// The grid the `csgpix` attribute describes.
-fn grid_of(v: &Value) -> Result<Grid, String> {
+fn grid_of(v: &Value) -> csgpix_scene::Result<Grid> {
+    let field = |key: &str, e: serde_json::Error| {
+        csgpix_scene::Error::invalid(e.to_string()).context(format_args!("`{key}`"))
+    };
     let dims: [usize; 3] =
-        serde_json::from_value(v["dims"].clone()).map_err(|e| format!("`dims`: {e}"))?;
-    let corner = |key: &str| -> Result<DVec3, String> {
-        let a: [f64; 3] =
-            serde_json::from_value(v[key].clone()).map_err(|e| format!("`{key}`: {e}"))?;
+        serde_json::from_value(v["dims"].clone()).map_err(|e| field("dims", e))?;
+    let corner = |key: &str| -> csgpix_scene::Result<DVec3> {
+        let a: [f64; 3] = serde_json::from_value(v[key].clone()).map_err(|e| field(key, e))?;
         Ok(DVec3::from_array(a))
     };
-    Grid::new(dims, corner("min")?, corner("max")?).map_err(|e| e.to_string())
+    Grid::new(dims, corner("min")?, corner("max")?)
 }
 
 /// A grid in words, for [`Error::GridMismatch`].
@@ -1106,9 +1117,7 @@ pub fn voxelize_bricks(
 ) -> Result<Work> {
     check_rows(slicer, volume, &rows)?;
     if !csgpix_voxel::runs::applies(slicer) {
-        return Err(Error::Msg(
-            "bricks take the run route, which does not apply to grey datasets or blends".into(),
-        ));
+        return Err(Error::NoRunRoute);
     }
     let all = volume.chunk_rows();
     let columns = csgpix_voxel::runs::Columns::new(slicer, float)?;

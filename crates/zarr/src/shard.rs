@@ -18,7 +18,7 @@ use csgpix_scene::output::staged_write;
 use rayon::prelude::*;
 
 use crate::pyramid::all_equal;
-use crate::{Error, Result, GZIP_LEVEL, WRITERS};
+use crate::{Error, Result, StoreProblem, GZIP_LEVEL, WRITERS};
 
 /// Inner chunks compressed at once per thread of the pool: the batch is held compressed
 /// until it is appended, in order, to the shard files.
@@ -224,7 +224,7 @@ pub(crate) fn write_row(
     let first = [cut.at[0] / per[0], cut.at[1] / per[1]];
     let io = |path: &Path, e: std::io::Error| Error::Store {
         path: path.to_path_buf(),
-        message: e.to_string(),
+        message: StoreProblem::Io(e.into()),
     };
     // Every inner chunk of the row in the grid, shard by shard (row-major), each shard's in
     // its C order: (shard, index in the shard, chunk j, chunk i).
@@ -292,7 +292,7 @@ pub(crate) fn write_row(
 fn finish(o: Open) -> Result<Option<(PathBuf, File)>> {
     let io = |e: std::io::Error| Error::Store {
         path: o.path.clone(),
-        message: e.to_string(),
+        message: StoreProblem::Io(e.into()),
     };
     let Some(mut file) = o.file else {
         return match std::fs::remove_file(&o.path) {
@@ -331,14 +331,15 @@ impl Unsynced {
                     scope.spawn(move || {
                         f.sync_all().map_err(|e| Error::Store {
                             path,
-                            message: e.to_string(),
+                            message: StoreProblem::Io(e.into()),
                         })
                     })
                 })
                 .collect();
             syncs.into_iter().try_for_each(|s| {
-                s.join()
-                    .unwrap_or_else(|_| Err(Error::Msg("a sync thread panicked".into())))
+                s.join().unwrap_or(Err(Error::Panicked {
+                    thread: "a sync thread",
+                }))
             })
         })
     }

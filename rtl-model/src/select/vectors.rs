@@ -242,9 +242,49 @@ fn verdict_outs(
     }
 }
 
+/// Two register pairs of a table give the same flags but different outputs
+/// ([`TruthTable::build`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TableConflict {
+    /// The table.
+    pub table: Table,
+    /// The flags (inputs) both give, bit i = input i.
+    pub flags: u32,
+    /// The outputs first found for them and why.
+    pub first: (Vec<Out>, &'static str),
+    /// The other outputs and why.
+    pub second: (Vec<Out>, &'static str),
+    /// The register values (A, R) of the second.
+    pub pair: (i64, i64),
+}
+
+impl std::fmt::Display for TableConflict {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (a, reg) = self.pair;
+        write!(
+            f,
+            "{}: flags {:#b} give {:?} ({}) and {:?} ({}) (A={a}, R={reg})",
+            self.table.name(),
+            self.flags,
+            self.first.0,
+            self.first.1,
+            self.second.0,
+            self.second.1
+        )
+    }
+}
+
+impl std::error::Error for TableConflict {}
+
+impl From<TableConflict> for String {
+    fn from(e: TableConflict) -> String {
+        e.to_string()
+    }
+}
+
 impl TruthTable {
     /// Build a table from the reachable pairs of one or more formats.
-    pub fn build(t: Table, reach: &[Reachable]) -> Result<TruthTable, String> {
+    pub fn build(t: Table, reach: &[Reachable]) -> Result<TruthTable, TableConflict> {
         let ne = t.externals().len();
         let mut rows: BTreeMap<u32, (Vec<Out>, &'static str)> = BTreeMap::new();
         for r in reach {
@@ -259,14 +299,13 @@ impl TruthTable {
                     let spec = verdict_outs(t, &r.fmt, &ext, a, reg);
                     if let Some(old) = rows.get(&m) {
                         if old.0 != spec.0 {
-                            return Err(format!(
-                                "{}: flags {m:#b} give {:?} ({}) and {:?} ({}) (A={a}, R={reg})",
-                                t.name(),
-                                old.0,
-                                old.1,
-                                spec.0,
-                                spec.1
-                            ));
+                            return Err(TableConflict {
+                                table: t,
+                                flags: m,
+                                first: old.clone(),
+                                second: spec,
+                                pair: (a, reg),
+                            });
                         }
                     } else {
                         rows.insert(m, spec);
@@ -366,7 +405,7 @@ pub fn standard_reach() -> Vec<Reachable> {
 }
 
 /// Every table, built from [`standard_reach`].
-pub fn all_tables() -> Result<Vec<TruthTable>, String> {
+pub fn all_tables() -> Result<Vec<TruthTable>, TableConflict> {
     let reach = standard_reach();
     Table::ALL
         .iter()
@@ -419,7 +458,7 @@ pub enum Ties {
 
 /// The derived equations with the user's ties fixed: the tie rows become care rows with the
 /// chosen action's code and the tables are minimized again.
-pub fn derive_with_ties(ties: Ties) -> Result<EquationSet, String> {
+pub fn derive_with_ties(ties: Ties) -> Result<EquationSet, TableConflict> {
     let mut tables = all_tables()?;
     let code = match ties {
         Ties::Minimal => return Ok(EquationSet::derived()),
@@ -445,7 +484,7 @@ pub fn derive_with_ties(ties: Ties) -> Result<EquationSet, String> {
 }
 
 /// The files `gen-vectors` writes, as (file name, text).
-pub fn generate() -> Result<Vec<(String, String)>, String> {
+pub fn generate() -> Result<Vec<(String, String)>, TableConflict> {
     let tables = all_tables()?;
     let mut files: Vec<(String, String)> = tables
         .iter()

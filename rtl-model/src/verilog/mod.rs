@@ -18,15 +18,38 @@ use crate::select::pla::Pla;
 use crate::select::{Equations, Table, GOLDEN};
 
 /// The golden vectors, parsed.
-pub fn golden() -> Result<Vec<(Table, Pla)>, String> {
+pub fn golden() -> Result<Vec<(Table, Pla)>, GoldenError> {
     GOLDEN
         .iter()
-        .map(|(t, text)| {
+        .map(|&(table, text)| {
             Pla::parse(text)
-                .map(|p| (*t, p))
-                .map_err(|e| format!("vectors/select/{}.pla:{e}", t.name()))
+                .map(|p| (table, p))
+                .map_err(|error| GoldenError { table, error })
         })
         .collect()
+}
+
+/// A golden vector file that does not parse: `vectors/select/TABLE.pla:LINE:COL: message`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct GoldenError {
+    /// The table whose file it is.
+    pub table: Table,
+    /// The parser's error, with its line and column.
+    pub error: crate::select::pla::PlaError,
+}
+
+impl std::fmt::Display for GoldenError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "vectors/select/{}.pla:{}", self.table.name(), self.error)
+    }
+}
+
+impl std::error::Error for GoldenError {}
+
+impl From<GoldenError> for String {
+    fn from(e: GoldenError) -> String {
+        e.to_string()
+    }
 }
 
 /// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE and
@@ -76,7 +99,7 @@ pub fn filelist() -> String {
 }
 
 /// Every generated file, `(name, text)`, in a fixed order.
-pub fn files() -> Result<Vec<(String, String)>, String> {
+pub fn files() -> Result<Vec<(String, String)>, GoldenError> {
     let golden = golden()?;
     let mut out = vec![("select_spec.v".to_string(), check::spec_modules(&golden))];
     for eq in [Equations::Derived, Equations::Printed] {

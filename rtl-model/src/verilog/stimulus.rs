@@ -12,7 +12,7 @@ use std::rc::Rc;
 use super::pixel::{self, state_fields, state_width};
 use crate::array::{check_program, Array};
 use crate::cycle::{Clock, Internal};
-use crate::program::{CReg, Op};
+use crate::program::{CReg, Op, ProgramError};
 use crate::select::{EquationSet, Equations};
 use crate::state::{ArchState, ArrayConfig, Pixel};
 use crate::CycleArray;
@@ -219,8 +219,8 @@ pub fn expected_states(
     cfg: ArrayConfig,
     ops: &[Op],
     set: &EquationSet,
-) -> Result<Expected, String> {
-    check_program(ops, cfg.stack_depth).map_err(|e| e.to_string())?;
+) -> Result<Expected, ProgramError> {
+    check_program(ops, cfg.stack_depth)?;
     let mut arr = CycleArray::new(cfg, set.clone());
     // The comparator's bit counter and the lines so far.
     let out = Rc::new((
@@ -237,7 +237,7 @@ pub fn expected_states(
     }));
     let mut ends = vec![];
     for op in ops {
-        arr.step(op).map_err(|e| e.to_string())?;
+        arr.step(op)?;
         ends.push(arr.cycles());
     }
     arr.finish();

@@ -107,11 +107,10 @@ impl<M: Merge> Pyramid<M> {
         let d = self.depth as usize;
         let n2 = 1usize << (2 * d);
         if self.layers >= 1 << d || cells.len() < n2 {
-            return Err(Error::Msg(format!(
-                "cell layer {} of {} cells: not a layer of this octree",
-                self.layers,
-                cells.len()
-            )));
+            return Err(Error::BadLayer {
+                layer: self.layers,
+                cells: cells.len(),
+            });
         }
         self.layers += 1;
         if d == 0 {
@@ -185,11 +184,10 @@ impl<M: Merge> Pyramid<M> {
     pub fn finish(self) -> Result<(M, M::Node, u64)> {
         match self.root {
             Some(r) => Ok((self.merge, r, self.internal)),
-            None => Err(Error::Msg(format!(
-                "the octree got {} of {} cell layers",
-                self.layers,
-                1usize << self.depth
-            ))),
+            None => Err(Error::MissingLayers {
+                got: self.layers,
+                want: 1usize << self.depth,
+            }),
         }
     }
 }

@@ -190,10 +190,11 @@ pub fn depth_for(dims: [usize; 3]) -> Result<u32> {
     let side = dims.iter().copied().max().unwrap_or(1).max(1);
     let depth = side.next_power_of_two().trailing_zeros();
     if depth > key::MAX_DEPTH {
-        return Err(Error::Msg(format!(
-            "a side of {side} voxels needs {depth} octree levels; at most {} fit a key",
-            key::MAX_DEPTH
-        )));
+        return Err(Error::TooDeep {
+            side,
+            depth,
+            max: key::MAX_DEPTH,
+        });
     }
     Ok(depth)
 }
@@ -296,15 +297,16 @@ impl Slices {
     pub fn push(&mut self, k: usize, slice: &[u8]) -> Result<&[u8]> {
         let next = self.next;
         if k != next {
-            return Err(Error::Msg(format!(
-                "voxel slice {k} arrived, slice {next} was expected"
-            )));
+            return Err(Error::SliceOrder {
+                got: k,
+                expected: next,
+            });
         }
         if k >= 1 << self.depth {
-            return Err(Error::Msg(format!(
-                "voxel slice {k} is past the octree's side {}",
-                1usize << self.depth
-            )));
+            return Err(Error::SlicePastSide {
+                slice: k,
+                side: 1usize << self.depth,
+            });
         }
         self.next += 1;
         Ok(self.cells.next(slice, self.width))

@@ -12,7 +12,7 @@ use super::hashed::{self, Levels};
 use super::key::{self, Key, ROOT};
 use super::table::{Entry, KeyTable};
 use super::{Finish, StoreKind};
-use crate::{Error, Result};
+use crate::{CellProblem, Error, Result};
 
 /// A node that has children, while building.
 pub const MIXED: u16 = 256;
@@ -105,12 +105,14 @@ impl OptimizedOctree {
     /// with its value, the one on the path split further (seed 000 §5.2 scenario 2, split
     /// along the path only). Returns the cell's key.
     pub fn split_to(&mut self, x: u32, y: u32, z: u32) -> Result<Key> {
-        let target = self
-            .cell_key(x, y, z)
-            .ok_or_else(|| Error::Msg(format!("cell ({x}, {y}, {z}) is outside the octree")))?;
-        let (found, v) = self
-            .find(x, y, z)
-            .ok_or_else(|| Error::Msg(format!("cell ({x}, {y}, {z}) has no leaf")))?;
+        let target = self.cell_key(x, y, z).ok_or(Error::Cell {
+            cell: [x, y, z],
+            problem: CellProblem::Outside,
+        })?;
+        let (found, v) = self.find(x, y, z).ok_or(Error::Cell {
+            cell: [x, y, z],
+            problem: CellProblem::NoLeaf,
+        })?;
         if found == target {
             return Ok(target);
         }
@@ -137,7 +139,10 @@ impl OptimizedOctree {
                 *slot = v;
                 Ok(())
             }
-            None => Err(Error::Msg(format!("cell ({x}, {y}, {z}) vanished"))),
+            None => Err(Error::Cell {
+                cell: [x, y, z],
+                problem: CellProblem::Vanished,
+            }),
         }
     }
 

@@ -20,7 +20,7 @@ use super::build::Merge;
 use super::key::{Key, ROOT};
 use super::tree::{self, PointerNode};
 use super::{Budget, Finish, StoreKind, SurfaceWalk, VoxelStore};
-use crate::Result;
+use crate::{Error, Result};
 
 /// A node: its own allocation, a label (0 empty, 255 full, a cell's case byte, or mixed) and
 /// the addresses of its 8 children when mixed.
@@ -104,7 +104,7 @@ impl Finish for Nodes {
     fn finish(self, root: Slot, internal: u64, depth: u32) -> Result<PointerOctree> {
         Ok(PointerOctree {
             depth,
-            root: root.ok_or("the pointer octree has no root")?,
+            root: root.ok_or(Error::NoRoot)?,
             internal: internal as usize,
         })
     }

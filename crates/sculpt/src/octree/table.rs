@@ -7,7 +7,7 @@
 //! (the thesis sizes it "according to the resolution"; it gives no n).
 
 use super::key::Key;
-use crate::Result;
+use crate::{Error, Result};
 
 /// End of a chain.
 const NIL: u32 = u32::MAX;
@@ -70,7 +70,7 @@ impl KeyTable {
     pub fn from_lists(lists: Vec<Vec<Entry>>) -> Result<KeyTable> {
         let n: usize = lists.iter().map(Vec::len).sum();
         if u32::try_from(n).map_or(true, |n| n == NIL) {
-            return Err("more than 2^32 - 1 octree nodes".into());
+            return Err(Error::TooManyNodes);
         }
         let buckets = n.next_power_of_two().max(8);
         let mask = buckets as u64 - 1;
@@ -126,7 +126,7 @@ impl KeyTable {
         let i = u32::try_from(self.entries.len())
             .ok()
             .filter(|&i| i != NIL)
-            .ok_or("more than 2^32 - 1 octree nodes")?;
+            .ok_or(Error::TooManyNodes)?;
         let b = self.bucket(key);
         let tail = match self.tails.get(b) {
             Some(&t) => t,
