@@ -131,7 +131,7 @@ impl ArrayArgs {
         // Colour registers move within a window, so a very short word narrows them too.
         cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
         cfg.stack_depth = self.stack_depth;
-        cfg.check().map_err(Error::Rtl)?;
+        cfg.check()?;
         Ok(cfg)
     }
 
@@ -144,8 +144,8 @@ impl ArrayArgs {
                 "--ties",
                 "--ties applies to the derived equations; the printed ones fix their own ties",
             )),
-            (Equations::Derived, TiesArg::Keep) => derive_with_ties(Ties::Keep).map_err(Error::Rtl),
-            (Equations::Derived, TiesArg::Put) => derive_with_ties(Ties::Put).map_err(Error::Rtl),
+            (Equations::Derived, TiesArg::Keep) => Ok(derive_with_ties(Ties::Keep)?),
+            (Equations::Derived, TiesArg::Put) => Ok(derive_with_ties(Ties::Put)?),
         }
     }
 
@@ -185,7 +185,7 @@ impl ArrayArgs {
             _ => Box::new(CycleArray::new(cfg, set)),
         };
         if let Some(p) = &self.probe {
-            arr.attach_probe(Recorder::new(cfg, p.0.clone()).map_err(Error::Rtl)?);
+            arr.attach_probe(Recorder::new(cfg, p.0.clone())?);
         }
         Ok((arr, cfg.stack_depth))
     }

@@ -29,10 +29,18 @@ pub enum Error {
     /// A program the array cannot run (its stack, its windows).
     #[error(transparent)]
     Program(#[from] rtl_model::program::ProgramError),
-    /// The processor model's refusal (rtl-model's configuration checks, probes, golden
-    /// vectors, stimulus), one line.
-    #[error("{0}")]
-    Rtl(String),
+    /// An array configuration the processor model refuses (`--size`, `--word`, the stack).
+    #[error(transparent)]
+    Config(#[from] rtl_model::state::ConfigError),
+    /// A probe outside the array (`--probe`).
+    #[error(transparent)]
+    Probe(#[from] rtl_model::probe::ProbeOutside),
+    /// Golden vectors that contradict one another (the derived equations' tables).
+    #[error(transparent)]
+    Table(#[from] rtl_model::select::vectors::TableConflict),
+    /// Golden vectors of the Verilog twin that do not parse.
+    #[error(transparent)]
+    Golden(#[from] rtl_model::verilog::GoldenError),
     /// A program that does not compile for the array, located in its scene
     /// (`csgpix_draw::scenes::Scene::locate`), one line.
     #[error("{0}")]
@@ -40,6 +48,14 @@ pub enum Error {
     /// Golden vectors that do not fit the table they are checked against.
     #[error(transparent)]
     Vectors(#[from] rtl_model::select::verify::VectorError),
+    /// A scene that does not read once the study sets its tessellation (`$fn`).
+    #[error("{source} (with $fn = {fragments})")]
+    Tessellation {
+        /// The `$fn` the scene was read with.
+        fragments: u32,
+        /// The reader's error.
+        source: csgpix_scene::Error,
+    },
     /// A run refused before it allocated: over the memory limit.
     #[error(transparent)]
     Memory(#[from] crate::memory::OverMemory),

@@ -63,11 +63,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         return scene(&a);
     }
     let out = a.out.as_deref().unwrap_or(Path::new("rtl-model/verilog"));
-    super::write_generated(
-        &rtl_model::verilog::files().map_err(Error::Rtl)?,
-        out,
-        a.check,
-    )
+    super::write_generated(&rtl_model::verilog::files()?, out, a.check)
 }
 
 fn parse_origin(s: &str) -> crate::error::Parsed<(usize, usize)> {
@@ -88,7 +84,7 @@ fn config(a: &Args) -> crate::Result<ArrayConfig> {
     cfg.fmt = a.word;
     // Colour registers move within a window, so a very short word narrows them too.
     cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
-    cfg.check().map_err(Error::Rtl)?;
+    cfg.check()?;
     Ok(cfg)
 }
 
@@ -106,7 +102,7 @@ fn scene(a: &Args) -> crate::Result<ExitCode> {
     check_program(&ops, cfg.stack_depth)?;
     let cycles = program_cycles(&cfg, &set, &ops);
     bound(a, &cfg, cycles)?;
-    let want = stimulus::expected_states(cfg, &ops, &set).map_err(Error::Rtl)?;
+    let want = stimulus::expected_states(cfg, &ops, &set)?;
     let control = pixel::control_stream(&cfg, &set, &ops);
     let mut files = stimulus::array_files(&cfg);
     files.push(("control.hex".into(), control));
@@ -135,7 +131,8 @@ fn program(a: &Args, cfg: &ArrayConfig) -> crate::Result<Vec<Op>> {
     let view = super::ViewArg::default().into();
     let scene =
         Scene::load(&a.scene, a.clip.as_deref(), view, cfg).map_err(super::lib_errors::load)?;
-    check_window(&scene, cfg, a.origin).map_err(|(i, e)| Error::Scene(scene.locate_error(i, &e)))?;
+    check_window(&scene, cfg, a.origin)
+        .map_err(|(i, e)| Error::Scene(scene.locate_error(i, &e)))?;
     let mut ops = match &scene.clip {
         None => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
         Some(expr) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),

@@ -1,6 +1,5 @@
 //! `csgpix gen-vectors`: regenerate `vectors/select/` from the case tables.
 
-use crate::Error;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -19,6 +18,6 @@ pub struct Args {
 }
 
 pub fn run(a: Args) -> crate::Result<ExitCode> {
-    let files = rtl_model::select::vectors::generate().map_err(Error::Rtl)?;
+    let files = rtl_model::select::vectors::generate()?;
     super::write_generated(&files, &a.out, a.check)
 }

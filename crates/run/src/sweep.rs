@@ -359,10 +359,11 @@ pub fn prepare(text: &str, file: &str, sweep: Sweep) -> crate::Result<Prepared> 
     parse_csg(text, file)?.require_convex(file, "`study`")?;
     let mut scenes = vec![];
     for &f in &sweep.fragments {
-        let scene = parse_csg(&with_fragments(text, f), file).map_err(|mut e| {
-            e.message = format!("{} (with $fn = {f})", e.message);
-            e
-        })?;
+        let scene =
+            parse_csg(&with_fragments(text, f), file).map_err(|source| Error::Tessellation {
+                fragments: f,
+                source,
+            })?;
         scenes.push((f, scene));
     }
     let (mut min, mut max) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
