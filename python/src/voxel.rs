@@ -250,7 +250,7 @@ impl RunOptions {
         let word = word_format(word)?;
         Ok(RunOptions(Voxelization {
             sampling: parsed(sampling)?,
-            model: model.parse().map_err(text)?,
+            model: parsed(model)?,
             route: parsed(route)?,
             eval: parsed(eval)?,
             equations: Equations::Derived,
