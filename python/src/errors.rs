@@ -80,16 +80,6 @@ pub fn text(message: String) -> PyErr {
     error(message, None)
 }
 
-/// A PLA file `file` that does not parse: `FILE:LINE:COL: message`, placed.
-pub fn pla(file: &str, e: rtl_model::select::pla::PlaError) -> PyErr {
-    let at = Place {
-        file: file.to_string(),
-        line: e.line,
-        col: e.col,
-    };
-    error(format!("{file}:{e}"), Some(at))
-}
-
 /// A drawing error, kept whole where it wraps a scene error.
 pub fn draw(e: csgpix_draw::Error) -> PyErr {
     match e {
