@@ -152,7 +152,7 @@ const SMALL: [&str; 10] = [
     "--models",
     "word,float",
     "--res",
-    "12x12x12",
+    "12",
 ];
 
 fn run_study(dir: &Path) -> String {
