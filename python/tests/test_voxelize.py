@@ -135,7 +135,7 @@ def test_a_missing_file_is_file_not_found(tmp):
     "call,words",
     [
         (lambda s: csgpix.voxelize(s), "give res or voxel"),
-        (lambda s: csgpix.voxelize(s, 8, z=(3, 9)), "z=(3, 9): the grid has slabs 0..8"),
+        (lambda s: csgpix.voxelize(s, (8, 8, 8), z=(3, 9)), "z=(3, 9): the grid has slabs 0..8"),
         (lambda s: csgpix.voxelize(s, 8, model="quantum"), "quantum"),
         (lambda s: csgpix.voxelize(s, 8, sampling="corner"), "sampling \"corner\""),
         (lambda s: csgpix.voxelize(s, 8, word="3/3"), "FRACTION/INTEGER/OVERFLOW"),
@@ -190,5 +190,5 @@ def test_to_mesh_is_the_command_lines_mesh(tmp):
     assert want.shape == vertices.shape
     assert np.allclose(np.sort(want, axis=0), np.sort(vertices, axis=0), atol=1e-4)
     # A slab range meshes the slabs it holds, in the same scene units.
-    part = csgpix.voxelize(str(scene), 24, z=(0, 12)).to_mesh()[0]
+    part = csgpix.voxelize(str(scene), 24, z=(0, 6)).to_mesh()[0]
     assert part[:, 2].max() < vertices[:, 2].max() and np.isclose(part[:, 2].min(), vertices[:, 2].min())
