@@ -2,12 +2,12 @@
 //! other, against the reference `direct`, on trees as deep as files can make, and against the
 //! operation counts of §5.5.
 
-use csgpix::scene::solid::CsgNode;
-use csgpix::voxel::blist::BlistEval;
-use csgpix::voxel::evaluate::{
+use csgpix_scene::solid::CsgNode;
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::evaluate::{
     direct, leaf_count, tree_depth, Compile, StackEval, StackUnit, TreeEval,
 };
-use csgpix::voxel::slice::{Labels, Mask, OpCounts, SliceEval};
+use csgpix_voxel::slice::{Labels, Mask, OpCounts, SliceEval};
 use proptest::prelude::*;
 
 use CsgNode::{Complement, Difference, Empty, Intersection, Solid, Union};
