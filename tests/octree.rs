@@ -1,6 +1,9 @@
-//! The voxel stores of seed 000 Ch. 4 (`crates/sculpt/src/octree`): the thesis's worked examples, the node
-//! count invariants, Table 7.1's cube rows, every store against the dense grid and against
-//! the dual cells computed straight from the volume, and closed Marching Cubes meshes.
+//! The voxel stores of seed 000 Ch. 4 (`crates/sculpt/src/octree`) with the rest of csgpix:
+//! the thesis's worked examples, Table 7.1's cube rows, every store against the dense grid
+//! and the dual cells of the example scenes voxelized, stores built while voxelizing, and the
+//! command line. What every store must do on any volume (cells, leaves, node counts, surface
+//! cells, closed meshes) is the shared suite's, run in each store's module
+//! (`voxel_store_suite!`, crates/sculpt/src/octree/suite.rs).
 
 mod common;
 use common::volume;
@@ -14,9 +17,7 @@ use csgpix::sculpt::octree::{from_volume, OptimizedOctree, StoreKind, VoxelStore
 use csgpix::voxel::blist::BlistEval;
 use csgpix::voxel::{voxelize, voxelize_streaming, Grid, Route, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
-use proptest::prelude::*;
 use rtl_model::Equations;
-use std::collections::HashMap;
 
 const BUDGET: u64 = 8 << 30;
 
@@ -73,28 +74,6 @@ fn the_thesis_dual_cell_examples() {
     assert_eq!(cut_edges(64), 1 << 5 | 1 << 6 | 1 << 10);
     assert_eq!(case_of([true; 8]), 255);
     assert_eq!(case_of([false; 8]), 0);
-}
-
-#[test]
-fn every_store_puts_the_thesis_examples_in_cell_1_1_1() {
-    // V1 = voxel (1,0,0), V4 = (0,1,0), V5 = (1,1,0), V7 = (0,1,1) of cell (1,1,1): 178.
-    let on = [[1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 1, 1]];
-    let v = volume([4, 4, 4], |x, y, z| on.contains(&[x, y, z]));
-    // A lone voxel (1,1,1): V6 of cell (1,1,1) = 64, V0 of cell (2,2,2) = 1.
-    let lone = volume([4, 4, 4], |x, y, z| [x, y, z] == [1, 1, 1]);
-    // A full 4³ block inside 8³: cell (3,3,3) has all corners in voxels 2..3: 255.
-    let block = volume([8, 8, 8], |x, y, z| {
-        [x, y, z].iter().all(|c| (1..5).contains(c))
-    });
-    for kind in StoreKind::ALL {
-        assert_eq!(store(kind, &v).cell(1, 1, 1), 178, "{kind:?}");
-        let s = store(kind, &lone);
-        assert_eq!(
-            (s.cell(1, 1, 1), s.cell(2, 2, 2), s.cell(0, 0, 0)),
-            (64, 1, 0)
-        );
-        assert_eq!(store(kind, &block).cell(3, 3, 3), 255, "{kind:?}");
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -239,73 +218,6 @@ fn check_agreement(v: &Volume) {
     }
 }
 
-/// A volume of a few random boxes (so that octants merge) and random single voxels.
-fn random_volume() -> impl Strategy<Value = Volume> {
-    let dims = [1usize..=19, 1usize..=19, 1usize..=19];
-    let boxes = prop::collection::vec(
-        ([0usize..19, 0..19, 0..19], [1usize..12, 1..12, 1..12]),
-        0..4,
-    );
-    let dots = prop::collection::vec([0usize..19, 0..19, 0..19], 0..30);
-    (dims, boxes, dots).prop_map(|(dims, boxes, dots)| {
-        volume(dims, |x, y, z| {
-            let p = [x, y, z];
-            boxes
-                .iter()
-                .any(|(o, s)| (0..3).all(|a| p[a] >= o[a] && p[a] < o[a] + s[a]))
-                || dots.contains(&p)
-        })
-    })
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(96))]
-
-    #[test]
-    fn random_volumes_agree_and_keep_the_invariants(v in random_volume()) {
-        check_agreement(&v);
-        check_invariants(&v);
-    }
-
-    #[test]
-    fn random_meshes_close_up(v in random_volume()) {
-        // Solids touching the grid's far faces too: the cells past them close the mesh.
-        check_closed(&v);
-    }
-}
-
-/// The thesis's pointer octree (a node per cell first, seed 000 §4.2.2) and the block one
-/// hold the same leaves; every store's Marching Cubes gives the same triangles, into a new
-/// vector or into a reused one.
-fn check_same_leaves_and_triangles(v: &Volume) {
-    let stores = all_stores(v);
-    let by = |k: StoreKind| stores.iter().find(|s| s.kind() == k).unwrap();
-    let want = leaves(by(StoreKind::Pointer).as_ref());
-    assert_eq!(leaves(by(StoreKind::PointerBlock).as_ref()), want);
-    assert_eq!(leaves(by(StoreKind::Octree).as_ref()), want);
-    let mesh = sorted_mesh(by(StoreKind::Pointer).as_ref());
-    let mut reused = vec![[[9.0f32; 3]; 3]; 5];
-    for s in &stores {
-        assert_eq!(sorted_mesh(s.as_ref()), mesh, "{:?}", s.kind());
-        s.marching_cubes_into(&mut reused);
-        assert_eq!(
-            reused,
-            marching_cubes(s.as_ref()).triangles,
-            "{:?}",
-            s.kind()
-        );
-    }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
-
-    #[test]
-    fn both_pointer_builds_and_all_meshes_agree(v in random_volume()) {
-        check_same_leaves_and_triangles(&v);
-    }
-}
-
 #[test]
 fn example_scenes_agree_in_every_store_and_mesh_alike() {
     for name in [
@@ -419,56 +331,6 @@ fn sorted_mesh(s: &dyn VoxelStore) -> Vec<[[i32; 3]; 3]> {
         .collect();
     t.sort();
     t
-}
-
-/// Every directed edge of the mesh appears once, and its reverse once: the surface is closed
-/// and consistently oriented. Every store gives the same mesh.
-fn check_closed(v: &Volume) {
-    let stores = all_stores(v);
-    let mesh = sorted_mesh(stores[0].as_ref());
-    for s in &stores[1..] {
-        assert_eq!(sorted_mesh(s.as_ref()), mesh, "{:?}", s.kind());
-    }
-    let mut edges: HashMap<([i32; 3], [i32; 3]), i32> = HashMap::new();
-    for t in &mesh {
-        for i in 0..3 {
-            *edges.entry((t[i], t[(i + 1) % 3])).or_default() += 1;
-        }
-    }
-    for (&(a, b), &n) in &edges {
-        assert_eq!(n, 1, "edge {a:?}->{b:?} used {n} times");
-        assert_eq!(
-            edges.get(&(b, a)),
-            Some(&1),
-            "edge {a:?}->{b:?} has no twin"
-        );
-    }
-    let solid = v.voxels.iter().any(|&c| c != 0);
-    assert_eq!(mesh.is_empty(), !solid);
-}
-
-#[test]
-fn a_lone_voxel_gives_an_octahedron_facing_out() {
-    let v = volume([4, 4, 4], |x, y, z| [x, y, z] == [1, 1, 1]);
-    check_closed(&v);
-    let mesh = marching_cubes(store(StoreKind::Octree, &v).as_ref());
-    assert_eq!(mesh.triangles.len(), 8);
-    for t in &mesh.triangles {
-        let c = [0, 1, 2].map(|a| (t[0][a] + t[1][a] + t[2][a]) / 3.0 - 1.0);
-        let (u, w) = (
-            [0, 1, 2].map(|a| t[1][a] - t[0][a]),
-            [0, 1, 2].map(|a| t[2][a] - t[0][a]),
-        );
-        let n = [
-            u[1] * w[2] - u[2] * w[1],
-            u[2] * w[0] - u[0] * w[2],
-            u[0] * w[1] - u[1] * w[0],
-        ];
-        assert!(
-            n[0] * c[0] + n[1] * c[1] + n[2] * c[2] > 0.0,
-            "triangle {t:?} faces in"
-        );
-    }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -852,7 +852,7 @@ fn a_thousand_and_twenty_four_primitives() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// CSG trees 100,000 deep (tests/blist.rs covers Blist compilation of 100,000-level trees and
+// CSG trees 100,000 deep (crates/voxel/tests/blist.rs covers Blist compilation of 100,000-level trees and
 // tests/cli_blist.rs a 60,000-deep EXPR; crates/openscad/src the reader's limit on a string).
 
 #[test]

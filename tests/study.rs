@@ -83,7 +83,7 @@ fn a_small_sweep_keeps_what_must_hold() {
                     at(&pts, Model::Word, bits, frags, slabs),
                 );
                 let f = at(&pts, Model::Float, bits, frags, slabs);
-                // cycle and word are the same hardware (tests/voxelize.rs, tests/slices.rs).
+                // cycle and word are the same hardware (crates/voxel/tests/voxelize.rs, crates/voxel/tests/slices.rs).
                 assert_eq!(
                     (&c.digest, c.cycles, c.depth_err),
                     (&w.digest, w.cycles, w.depth_err)

@@ -728,8 +728,6 @@ mod tests {
         let all = BlistTable::compile(&Complement(Box::new(Empty)));
         assert_eq!((all.rows.len(), all.in_name, all.label_bits), (0, 0, 0));
         assert!(all.classify(|_| false, None));
-        let e = BlistEval { table: all };
-        assert_eq!(e.eval(&[Mask::new(3)], &mut OpCounts::default()), [1, 1, 1]);
         // A union with an empty operand is the other operand.
         let a = BlistTable::compile(&Union(vec![Empty, Solid(4)]));
         assert_eq!(
@@ -793,4 +791,7 @@ mod tests {
             prop_assert_eq!((counts.pushes, counts.pops), (0, 0));
         }
     }
+
+    // The tests every evaluator passes.
+    crate::slice::suite::slice_eval_suite!(blist, BlistEval::new);
 }

@@ -782,7 +782,7 @@ mod tests {
     }
 
     #[test]
-    fn empty_and_degenerate_nodes() {
+    fn direct_reads_empty_and_degenerate_nodes() {
         let none = |_| true;
         assert!(!direct(&Empty, none));
         assert!(direct(&Complement(Box::new(Empty)), none));
@@ -790,11 +790,6 @@ mod tests {
         assert!(!direct(&Intersection(vec![]), none));
         assert!(!direct(&Difference(vec![]), none));
         assert!(direct(&Difference(vec![Solid(0)]), |i| i == 0));
-        let t = Complement(Box::new(Empty));
-        let m = prims(&[&[false, true, false]]);
-        let mut c = OpCounts::default();
-        assert_eq!(StackEval::new(&t).eval(&m, &mut c), vec![1, 1, 1]);
-        assert_eq!(TreeEval::new(&t).eval(&m, &mut c), vec![1, 1, 1]);
     }
 
     #[test]
@@ -848,4 +843,16 @@ mod tests {
         assert_eq!(tree_depth(&t), 50);
         assert_eq!(leaf_count(&t), 50);
     }
+
+    // The tests every evaluator passes, for each evaluator and each way of compiling it.
+    crate::slice::suite::slice_eval_suite!(tree, TreeEval::new);
+    crate::slice::suite::slice_eval_suite!(tree_short_circuit, TreeEval::short_circuit);
+    crate::slice::suite::slice_eval_suite!(stack, StackEval::new);
+    crate::slice::suite::slice_eval_suite!(stack_deepest_first, |t| StackEval::with(
+        t,
+        Compile {
+            deepest_first: true,
+            ..Compile::default()
+        }
+    ));
 }

@@ -179,6 +179,9 @@ pub trait SliceEval: Sync {
 }
 
 #[cfg(test)]
+pub(crate) mod suite;
+
+#[cfg(test)]
 mod tests {
     use super::Mask;
 

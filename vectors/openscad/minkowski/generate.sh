@@ -2,7 +2,7 @@
 # Regenerate OpenSCAD's own results for minkowski() and hull() of differences: for each case
 # of cases.txt, OpenSCAD writes the CSG export (NAME.csg) and, from that file, its CGAL mesh
 # (NAME.stl, ASCII STL, which csgpix imports). Needs the `openscad` binary (Debian's openscad
-# 2021.01 made the checked-in files); tests/openscad_minkowski.rs only reads them.
+# 2021.01 made the checked-in files); crates/voxel/tests/openscad_minkowski.rs only reads them.
 set -eu
 cd "$(dirname "$0")"
 here=$(pwd)

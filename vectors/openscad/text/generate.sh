@@ -1,7 +1,7 @@
 #!/bin/sh
 # Regenerate OpenSCAD's reference data for text(): for each case of cases.txt, OpenSCAD
 # writes the CSG export of `linear_extrude(height = 2) text(...)` (NAME.csg) and, from that
-# file, its own mesh (NAME.off). tests/openscad_text.rs reads both. Needs the `openscad`
+# file, its own mesh (NAME.off). crates/voxel/tests/openscad_text.rs reads both. Needs the `openscad`
 # binary (Debian's openscad 2021.01 with fonts-liberation2 2.1.5 made the checked-in files,
 # the same font files as vectors/fonts); the tests only read the results.
 set -eu

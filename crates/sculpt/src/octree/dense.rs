@@ -119,3 +119,7 @@ impl SurfaceWalk for DenseGrid {
         }
     }
 }
+
+// The tests every store passes.
+#[cfg(test)]
+super::suite::voxel_store_suite!(tests, super::StoreKind::Dense);

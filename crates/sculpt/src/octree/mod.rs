@@ -26,6 +26,10 @@ pub mod pointer_block;
 pub mod table;
 pub mod tree;
 
+/// The tests every store passes ([`suite::voxel_store_suite!`]), run in each store's module.
+#[cfg(test)]
+pub(crate) mod suite;
+
 use crate::{Error, Result};
 use csgpix_scene::grid::Volume;
 use key::Key;

@@ -171,3 +171,7 @@ pub fn builder(dims: [usize; 3], budget: u64) -> Result<super::TreeBuilder<Leave
         Leaves::new(depth, budget),
     ))
 }
+
+// The tests every store passes.
+#[cfg(test)]
+super::suite::voxel_store_suite!(tests, super::StoreKind::Octree);

@@ -82,3 +82,7 @@ impl PlainHashOctree {
 }
 
 hashed::hashed_store!(PlainHashOctree, StoreKind::Hash);
+
+// The tests every store passes.
+#[cfg(test)]
+super::suite::voxel_store_suite!(tests, super::StoreKind::Hash);

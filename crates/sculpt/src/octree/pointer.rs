@@ -172,3 +172,7 @@ impl SurfaceWalk for PointerOctree {
         tree::surface(&*self.root, 0, [0; 3], self.depth, &mut f);
     }
 }
+
+// The tests every store passes.
+#[cfg(test)]
+super::suite::voxel_store_suite!(tests, super::StoreKind::Pointer);

@@ -6,11 +6,11 @@
 mod common;
 
 use common::{face_planes as planes, random_scene};
-use csgpix::openscad::parse_csg;
-use csgpix::scene::solid::CsgScene;
-use csgpix::voxel::evaluate::direct;
-use csgpix::voxel::slice::SliceEval;
-use csgpix::voxel::{voxelize, Grid, Route, Sampling, Slicer, SlicerOptions, Volume};
+use csgpix_openscad::parse_csg;
+use csgpix_scene::solid::CsgScene;
+use csgpix_voxel::evaluate::direct;
+use csgpix_voxel::slice::SliceEval;
+use csgpix_voxel::{voxelize, Grid, Route, Sampling, Slicer, SlicerOptions, Volume};
 use glam::DVec3;
 use proptest::prelude::*;
 use rtl_model::Equations;
@@ -35,7 +35,7 @@ fn run(scene: &CsgScene, grid: Grid, sampling: Sampling, route: Route) -> (Slice
         },
     )
     .unwrap();
-    let eval = csgpix::voxel::blist::BlistEval::new(&scene.root);
+    let eval = csgpix_voxel::blist::BlistEval::new(&scene.root);
     let eval: &dyn SliceEval = &eval;
     let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), eval, &|| {}).unwrap();
     (slicer, v)

@@ -5,7 +5,7 @@
 //! 2021.01) is a CSG export (`NAME.csg`) and OpenSCAD's CGAL mesh of it (`NAME.stl`). csgpix
 //! reads the `.csg` and voxelizes it at 64³, and the mesh is voxelized on the same grid as a
 //! closed-mesh primitive: IoU ≥ 0.999 on the float route, ≥ 0.99 on the default word route
-//! (intervals). `cargo test --release --test openscad_minkowski -- --nocapture` prints the
+//! (intervals). `cargo test --release -p csgpix-voxel --test openscad_minkowski -- --nocapture` prints the
 //! IoUs (docs/volume-scenes.md).
 //!
 //! The properties: minkowski of random convex polytopes is, voxel for voxel, the hull of the
@@ -18,16 +18,19 @@ use common::iou;
 
 use std::path::{Path, PathBuf};
 
-use csgpix::openscad::parse_csg;
-use csgpix::voxel::blist::BlistEval;
-use csgpix::voxel::sampled::load_imports;
-use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
+use csgpix_openscad::parse_csg;
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::sampled::load_imports;
+use csgpix_voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
 use glam::DVec3;
 use proptest::prelude::*;
 use rtl_model::Equations;
 
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
 fn dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/openscad/minkowski")
+    Path::new(ROOT).join("vectors/openscad/minkowski")
 }
 
 fn voxels(text: &str, base: &Path, grid: &Grid, route: Route) -> Vec<bool> {

@@ -4,7 +4,7 @@
 //! is OpenSCAD's committed mesh of the same file (`NAME.off`, a closed triangle mesh). The
 //! voxels must agree with IoU ≥ 0.99, and the outline areas (each mesh's volume / height) to
 //! within 0.5 %. The figures are printed for docs/volume-scenes.md
-//! (`cargo test --release --test openscad_text -- --nocapture`).
+//! (`cargo test --release -p csgpix-voxel --test openscad_text -- --nocapture`).
 //!
 //! Fonts: the reader looks in `CSGPIX_FONT_PATH`, then the bundled `vectors/fonts` (the same
 //! Liberation 2.1.5 files OpenSCAD used), then the system fonts; set here to `vectors/fonts`
@@ -13,20 +13,23 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use csgpix::openscad::extrude::signed_area;
-use csgpix::openscad::parse_csg;
-use csgpix::openscad::text::{render, segments, Fonts, TextSpec};
-use csgpix::scene::solid::{CsgNode, CsgScene, Import};
-use csgpix::voxel::blist::BlistEval;
-use csgpix::voxel::sampled::load_imports;
-use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
+use csgpix_openscad::extrude::signed_area;
+use csgpix_openscad::parse_csg;
+use csgpix_openscad::text::{render, segments, Fonts, TextSpec};
+use csgpix_scene::solid::{CsgNode, CsgScene, Import};
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::sampled::load_imports;
+use csgpix_voxel::{voxelize, Grid, Route, Slicer, SlicerOptions};
 use glam::DVec3;
 use rtl_model::Equations;
 
 type Tri = [[f64; 3]; 3];
 
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
 fn dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/openscad/text")
+    Path::new(ROOT).join("vectors/openscad/text")
 }
 
 /// OpenSCAD's OFF export: a header, vertices, then faces (triangles, fanned if larger).
@@ -180,10 +183,7 @@ fn cases() -> Vec<String> {
 #[test]
 fn text_agrees_with_openscad() {
     // Before the first text() is read: the font set is loaded once per process.
-    std::env::set_var(
-        "CSGPIX_FONT_PATH",
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/fonts"),
-    );
+    std::env::set_var("CSGPIX_FONT_PATH", Path::new(ROOT).join("vectors/fonts"));
     let mut bad = vec![];
     for name in cases() {
         let (iou, ours, theirs) = compare(&name);
@@ -204,10 +204,7 @@ fn text_agrees_with_openscad() {
 /// ppem: 40 "o"s end where OpenSCAD's do (the rounded scale put the last one 0.02 short).
 #[test]
 fn advances_accumulate_as_openscad() {
-    std::env::set_var(
-        "CSGPIX_FONT_PATH",
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/fonts"),
-    );
+    std::env::set_var("CSGPIX_FONT_PATH", Path::new(ROOT).join("vectors/fonts"));
     let name = "sans-advances-long";
     let csg = std::fs::read_to_string(dir().join(format!("{name}.csg"))).unwrap();
     let theirs = read_off(&dir().join(format!("{name}.off")));

@@ -7,18 +7,21 @@ mod common;
 
 use std::path::PathBuf;
 
-use csgpix::openscad::parse_csg;
-use csgpix::scene::solid::{CsgNode, CsgScene};
-use csgpix::voxel::blist::BlistEval;
-use csgpix::voxel::evaluate::{StackEval, TreeEval};
-use csgpix::voxel::sampled::load_scene;
-use csgpix::voxel::slice::SliceEval;
-use csgpix::voxel::{
+use csgpix_openscad::parse_csg;
+use csgpix_scene::solid::{CsgNode, CsgScene};
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::evaluate::{StackEval, TreeEval};
+use csgpix_voxel::sampled::load_scene;
+use csgpix_voxel::slice::SliceEval;
+use csgpix_voxel::{
     float_ranges, voxelize, voxelize_slabs, word_ranges, Error, Grid, Route, Sampling, Slicer,
     SlicerOptions, Volume, Work,
 };
 use proptest::prelude::*;
 use rtl_model::Equations;
+
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
 
 fn run(slicer: &Slicer, route: Route, eval: &dyn SliceEval) -> (Volume, Work) {
     voxelize(slicer, route, Equations::Derived.set(), eval, &|| {}).unwrap()
@@ -182,9 +185,7 @@ fn check_slices(slicer: &Slicer, float: bool, eval: &dyn SliceEval, cuts: &[usiz
 }
 
 fn scene_path(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("vectors/scenes")
-        .join(name)
+    PathBuf::from(ROOT).join("vectors/scenes").join(name)
 }
 
 /// A loaded scene on `dims` with its imports.
@@ -247,7 +248,7 @@ fn a_dataset_by_cells_by_runs() {
             ..SlicerOptions::default()
         };
         let slicer = Slicer::new(&l.scene, grid, opts).unwrap();
-        let columns = csgpix::voxel::dataset_runs::DatasetColumns::new(&slicer.sampled[0], &grid);
+        let columns = csgpix_voxel::dataset_runs::DatasetColumns::new(&slicer.sampled[0], &grid);
         assert!(columns.unwrap().by_cells(), "{path:?}");
         check_equal(&slicer, &BlistEval::new(&l.scene.root));
     }
@@ -291,7 +292,7 @@ fn grey_datasets_go_by_slab() {
         ..SlicerOptions::default()
     };
     let slicer = Slicer::new(&l.scene, grid, opts).unwrap();
-    assert!(!csgpix::voxel::runs::applies(&slicer));
+    assert!(!csgpix_voxel::runs::applies(&slicer));
     check_equal(&slicer, &BlistEval::new(&l.scene.root));
 }
 
@@ -314,9 +315,9 @@ proptest! {
         let (whole, _) = run(&slicer, Route::Runs { float }, &eval);
         let lo = [0, 1, 2].map(|a| corner[a] % dims[a]);
         let hi = [0, 1, 2].map(|a| (lo[a] + size[a]).min(dims[a]));
-        let b = csgpix::voxel::PixelBox { x0: lo[0], y0: lo[1], x1: hi[0].max(lo[0] + 1), y1: hi[1].max(lo[1] + 1) };
+        let b = csgpix_voxel::PixelBox { x0: lo[0], y0: lo[1], x1: hi[0].max(lo[0] + 1), y1: hi[1].max(lo[1] + 1) };
         let (brick, filled) =
-            csgpix::voxel::runs::voxelize_brick(&slicer, float, &eval, b, lo[2]..hi[2]).unwrap();
+            csgpix_voxel::runs::voxelize_brick(&slicer, float, &eval, b, lo[2]..hi[2]).unwrap();
         let mut want = vec![];
         for k in lo[2]..hi[2] {
             for y in b.y0..b.y1 {
@@ -339,13 +340,13 @@ fn a_brick_outside_the_grid_is_refused() {
     )
     .unwrap();
     let eval = BlistEval::new(&scene.root);
-    let b = csgpix::voxel::PixelBox {
+    let b = csgpix_voxel::PixelBox {
         x0: 0,
         y0: 0,
         x1: 5,
         y1: 4,
     };
-    let err = csgpix::voxel::runs::voxelize_brick(&slicer, false, &eval, b, 0..4).unwrap_err();
+    let err = csgpix_voxel::runs::voxelize_brick(&slicer, false, &eval, b, 0..4).unwrap_err();
     assert!(
         err.to_string().contains("not inside the grid 4x4x4"),
         "{err}"

@@ -3,8 +3,8 @@
 //! against closed forms on aligned solids and against the generalized winding number on
 //! random closed meshes with frequent ties.
 
-use csgpix::scene::mesh::Tri;
-use csgpix::scene::trimesh::TriMesh;
+use csgpix_scene::mesh::Tri;
+use csgpix_scene::trimesh::TriMesh;
 use glam::DVec3;
 use proptest::prelude::*;
 

@@ -1,10 +1,10 @@
 //! Random convex and concave objects and clipping functions in all three models: `cycle` and
-//! `word` identical; `word` against `float` as in tests/three_models.rs.
+//! `word` identical; `word` against `float` as in crates/draw/tests/three_models.rs.
 
-use csgpix::draw::compile::{clip_scene_ops, scene_ops};
-use csgpix::draw::float::{self, agreement, ScreenRule};
-use csgpix::scene::clip_expr::Clip;
-use csgpix::scene::display_list::{DisplayList, DlPlane};
+use csgpix_draw::compile::{clip_scene_ops, scene_ops};
+use csgpix_draw::float::{self, agreement, ScreenRule};
+use csgpix_scene::clip_expr::Clip;
+use csgpix_scene::display_list::{DisplayList, DlPlane};
 
 use proptest::prelude::*;
 use rtl_model::program::CReg;

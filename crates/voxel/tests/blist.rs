@@ -3,10 +3,13 @@
 
 use std::collections::BTreeMap;
 
-use csgpix::scene::csg_expr::parse;
-use csgpix::scene::solid::CsgNode;
-use csgpix::voxel::blist::{BlistRow, BlistTable};
+use csgpix_scene::csg_expr::parse;
+use csgpix_scene::solid::CsgNode;
+use csgpix_voxel::blist::{BlistRow, BlistTable};
 use proptest::prelude::*;
+
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
 
 /// The tree of Figure 4.4 (its text is garbled in the OCR).
 const FIGURE_4_4: &str = "(A+B)-((C+(D-E)).(F+G))";
@@ -16,7 +19,7 @@ const FIGURE_5_6: &str = "(A+B+C)-(D+E)";
 
 /// A printed table: rows of whitespace-separated fields, header and `#` lines skipped.
 fn printed(file: &str) -> Vec<Vec<String>> {
-    let path = format!("{}/vectors/blist/{file}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{ROOT}/vectors/blist/{file}");
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     text.lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with('P'))

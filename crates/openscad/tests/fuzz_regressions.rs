@@ -3,31 +3,34 @@
 
 use std::path::Path;
 
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
 /// The parser's error for `bytes` as fuzz target `target` runs it, if any.
 fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
     match target {
         "csg" => {
-            let text = csgpix::scene::input::text(bytes.to_vec(), "f.csg").ok()?;
-            csgpix::openscad::parse_csg(&text, "f.csg")
+            let text = csgpix_scene::input::text(bytes.to_vec(), "f.csg").ok()?;
+            csgpix_openscad::parse_csg(&text, "f.csg")
                 .err()
                 .map(|e| e.to_string())
         }
-        "display_list" => match csgpix::scene::input::text(bytes.to_vec(), "f.dl") {
-            Ok(text) => csgpix::scene::display_list::DisplayList::parse(&text, "f.dl")
+        "display_list" => match csgpix_scene::input::text(bytes.to_vec(), "f.dl") {
+            Ok(text) => csgpix_scene::display_list::DisplayList::parse(&text, "f.dl")
                 .err()
                 .map(|e| e.to_string()),
             Err(e) => Some(e.to_string()),
         },
         "nrrd" => {
             let dir = Path::new("/nonexistent-csgpix-fuzz");
-            csgpix::scene::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), 1 << 20)
+            csgpix_scene::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), 1 << 20)
                 .err()
                 .map(|e| e.to_string())
         }
-        "stl" => csgpix::scene::trimesh::TriMesh::parse(bytes, "f.stl", false)
+        "stl" => csgpix_scene::trimesh::TriMesh::parse(bytes, "f.stl", false)
             .err()
             .map(|e| e.to_string()),
-        "obj" => csgpix::scene::trimesh::TriMesh::parse(bytes, "f.obj", true)
+        "obj" => csgpix_scene::trimesh::TriMesh::parse(bytes, "f.obj", true)
             .err()
             .map(|e| e.to_string()),
         other => panic!("no checks for fuzz target {other}"),
@@ -36,7 +39,7 @@ fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
 
 #[test]
 fn every_input_the_fuzzers_found_gets_a_one_line_answer() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions");
+    let root = Path::new(ROOT).join("fuzz/regressions");
     let mut seen = 0;
     for target in std::fs::read_dir(&root).unwrap() {
         let target = target.unwrap().path();
@@ -55,7 +58,7 @@ fn every_input_the_fuzzers_found_gets_a_one_line_answer() {
 
 #[test]
 fn a_file_name_with_line_breaks_is_quoted_on_one_line() {
-    let e = csgpix::openscad::parse_csg("import(file = \"a\nb.dxf\");\n", "t.csg").unwrap_err();
+    let e = csgpix_openscad::parse_csg("import(file = \"a\nb.dxf\");\n", "t.csg").unwrap_err();
     let e = e.to_string();
     assert!(!e.contains('\n'), "{e}");
     assert!(e.contains("a\\nb.dxf"), "{e}");

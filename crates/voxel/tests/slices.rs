@@ -4,8 +4,8 @@
 mod common;
 
 use common::random_scene;
-use csgpix::openscad::parse_csg;
-use csgpix::voxel::{array_mask, float_ranges, word_ranges, Grid, Sampling, Slicer, SlicerOptions};
+use csgpix_openscad::parse_csg;
+use csgpix_voxel::{array_mask, float_ranges, word_ranges, Grid, Sampling, Slicer, SlicerOptions};
 use proptest::prelude::*;
 use rtl_model::Equations;
 
@@ -57,7 +57,7 @@ fn compare(
 fn cube_minus_cylinder_slices_match_the_array() {
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/vectors/scenes/cube-minus-cylinder.csg"
+        "/../../vectors/scenes/cube-minus-cylinder.csg"
     ))
     .unwrap();
     for sampling in [Sampling::Centre, Sampling::Slab] {

@@ -1,9 +1,9 @@
 //! §5.3.1: polygons and lines through the array, against the float model and their area.
 
-use csgpix::draw::compile::scene_ops;
-use csgpix::draw::float::{self, rounding_bound, ScreenRule};
-use csgpix::draw::polygon::{line, polygon, Support};
-use csgpix::scene::display_list::DisplayList;
+use csgpix_draw::compile::scene_ops;
+use csgpix_draw::float::{self, rounding_bound, ScreenRule};
+use csgpix_draw::polygon::{line, polygon, Support};
+use csgpix_scene::display_list::DisplayList;
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 

@@ -5,16 +5,19 @@
 mod common;
 
 use common::random_scene;
-use csgpix::openscad::parse_csg;
-use csgpix::scene::solid::CsgScene;
-use csgpix::voxel::blist::BlistEval;
-use csgpix::voxel::footprints;
-use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions, Volume, Work};
+use csgpix_openscad::parse_csg;
+use csgpix_scene::solid::CsgScene;
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::footprints;
+use csgpix_voxel::{voxelize, Grid, Route, Slicer, SlicerOptions, Volume, Work};
 use proptest::prelude::*;
 use rtl_model::Equations;
 
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
 fn scene(name: &str) -> CsgScene {
-    let path = format!("{}/vectors/scenes/{name}.csg", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{ROOT}/vectors/scenes/{name}.csg");
     parse_csg(&std::fs::read_to_string(path).unwrap(), name).unwrap()
 }
 

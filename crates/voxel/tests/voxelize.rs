@@ -2,19 +2,22 @@
 //! threads, `word` differs from `float` only where the rounding bound allows, hidden cavities
 //! survive (§5.9).
 
-use csgpix::draw::float::rounding_bound;
-use csgpix::openscad::parse_csg;
-use csgpix::scene::solid::CsgScene;
-use csgpix::voxel::blist::BlistEval;
-use csgpix::voxel::evaluate::{direct, StackEval, TreeEval};
-use csgpix::voxel::slice::SliceEval;
-use csgpix::voxel::{
+use csgpix_draw::float::rounding_bound;
+use csgpix_openscad::parse_csg;
+use csgpix_scene::solid::CsgScene;
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::evaluate::{direct, StackEval, TreeEval};
+use csgpix_voxel::slice::SliceEval;
+use csgpix_voxel::{
     float_interval, float_ranges, voxelize, word_ranges, Grid, Route, Slicer, SlicerOptions, Volume,
 };
 use rtl_model::Equations;
 
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
 fn scene(name: &str) -> CsgScene {
-    let path = format!("{}/vectors/scenes/{name}.csg", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{ROOT}/vectors/scenes/{name}.csg");
     parse_csg(&std::fs::read_to_string(path).unwrap(), name).unwrap()
 }
 

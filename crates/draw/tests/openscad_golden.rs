@@ -6,10 +6,13 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use csgpix::openscad::parse_csg;
+use csgpix_openscad::parse_csg;
+
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
 
 fn dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/openscad")
+    Path::new(ROOT).join("vectors/openscad")
 }
 
 /// Case names, in the order of `cases.txt`.
@@ -154,12 +157,12 @@ fn far_coverage_mismatches(a: &[Option<f64>], b: &[Option<f64>], w: usize, h: us
 
 #[test]
 fn scenes_match_openscads_own_csg_evaluation() {
-    use csgpix::draw::compile::clip_scene_ops;
-    use csgpix::draw::project::{project, Frame, View};
+    use csgpix_draw::compile::clip_scene_ops;
+    use csgpix_draw::project::{project, Frame, View};
     use rtl_model::program::{CReg, Reg};
     use rtl_model::{Array, ArrayConfig, CycleArray, Equations};
 
-    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/scenes");
+    let scenes = Path::new(ROOT).join("vectors/scenes");
     for name in ["cube-minus-cylinder", "csg-logo"] {
         let text = std::fs::read_to_string(scenes.join(format!("{name}.csg"))).unwrap();
         let scene = parse_csg(&text, name).unwrap();

@@ -2,10 +2,10 @@
 //! way (§5.2.1) by `cycle` and `word` (identical in every register), and compared with exact
 //! ray casting (`float`), where every differing pixel must be explained (docs/rendering.md).
 
-use csgpix::draw::compile::clip_scene_ops;
-use csgpix::draw::float::agreement;
-use csgpix::draw::project::{project, View};
-use csgpix::openscad::parse_csg;
+use csgpix_draw::compile::clip_scene_ops;
+use csgpix_draw::float::agreement;
+use csgpix_draw::project::{project, View};
+use csgpix_openscad::parse_csg;
 mod common;
 
 use common::random_scene;
@@ -13,8 +13,11 @@ use proptest::prelude::*;
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
 fn scene(name: &str) -> String {
-    let path = format!("{}/vectors/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{ROOT}/vectors/scenes/{name}");
     std::fs::read_to_string(path).unwrap()
 }
 

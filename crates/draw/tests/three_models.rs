@@ -4,15 +4,18 @@
 //! one where the thesis's screen rule for back planes applies (docs/select-logic.md) and the
 //! float model with that rule (`ScreenRule::Thesis`) gives what the hardware shows.
 
-use csgpix::draw::compile::{clip_scene_ops, scene_ops};
-use csgpix::draw::float::{self, agreement, ScreenRule};
-use csgpix::scene::clip_expr::Clip;
-use csgpix::scene::display_list::DisplayList;
+use csgpix_draw::compile::{clip_scene_ops, scene_ops};
+use csgpix_draw::float::{self, agreement, ScreenRule};
+use csgpix_scene::clip_expr::Clip;
+use csgpix_scene::display_list::DisplayList;
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
 fn load(name: &str) -> DisplayList {
-    let path = format!("{}/vectors/thesis/{name}.dl", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{ROOT}/vectors/thesis/{name}.dl");
     DisplayList::read(std::path::Path::new(&path)).unwrap()
 }
 

@@ -4,17 +4,20 @@
 mod common;
 
 use common::random_scene;
-use csgpix::draw::compile::clip_scene_ops;
-use csgpix::draw::panels::{render_on_panels, PanelScene};
-use csgpix::draw::project::{project, View};
-use csgpix::openscad::parse_csg;
-use csgpix::scene::solid::CsgScene;
+use csgpix_draw::compile::clip_scene_ops;
+use csgpix_draw::panels::{render_on_panels, PanelScene};
+use csgpix_draw::project::{project, View};
+use csgpix_openscad::parse_csg;
+use csgpix_scene::solid::CsgScene;
 use proptest::prelude::*;
 use rtl_model::program::{CReg, Reg};
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray, WordFormat};
 
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
 fn scene(name: &str) -> CsgScene {
-    let path = format!("{}/vectors/scenes/{name}.csg", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{ROOT}/vectors/scenes/{name}.csg");
     parse_csg(&std::fs::read_to_string(path).unwrap(), name).unwrap()
 }
 

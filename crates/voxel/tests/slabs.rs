@@ -4,15 +4,18 @@
 
 mod common;
 
-use csgpix::openscad::parse_csg;
-use csgpix::voxel::blist::BlistEval;
-use csgpix::voxel::sampled::load_scene;
-use csgpix::voxel::{
+use csgpix_openscad::parse_csg;
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::sampled::load_scene;
+use csgpix_voxel::{
     voxelize, voxelize_slabs, Error, Grid, Route, Slicer, SlicerOptions, Volume, Work,
 };
 use proptest::prelude::*;
 use rtl_model::Equations;
 use std::path::PathBuf;
+
+/// The workspace's root, where `vectors/` and `fuzz/` are: two levels above this crate.
+const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
 
 const ROUTES: [Route; 4] = [
     Route::Intervals,
@@ -88,7 +91,7 @@ proptest! {
 
 #[test]
 fn slab_ranges_of_a_scene_with_a_dataset() {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("vectors/scenes/figure-5.6.csg");
+    let path = PathBuf::from(ROOT).join("vectors/scenes/figure-5.6.csg");
     let l = load_scene(&path).unwrap();
     let grid = Grid::of_scene(&l.scene, [24, 24, 20]).unwrap();
     let opts = SlicerOptions {
