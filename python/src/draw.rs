@@ -12,7 +12,7 @@ use csgpix_draw::float::{self, ScreenRule};
 use csgpix_draw::project::View;
 use csgpix_draw::scenes::Scene;
 use csgpix_draw::Model;
-use rtl_model::program::{CReg, Op};
+use rtl_model::program::{CReg, Op, ProgramError};
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
 
 use crate::errors::text;
@@ -135,7 +135,7 @@ pub fn render<'py>(
     let set = equation_set(equations)?;
     let cfg = program.cfg;
     let (codes, cycles) = py
-        .detach(|| -> Result<(Vec<u8>, u64), String> {
+        .detach(|| -> Result<(Vec<u8>, u64), ProgramError> {
             if model == Model::Float {
                 let s = &program.scene;
                 let f = float::render(
@@ -152,13 +152,13 @@ pub fn render<'py>(
                 Model::Cycle => Box::new(CycleArray::new(cfg, set)),
                 _ => Box::new(WordArray::new(cfg, set)),
             };
-            arr.run(&program.ops).map_err(|e| e.to_string())?;
+            arr.run(&program.ops)?;
             let codes = (0..cfg.pixels())
                 .map(|i| arr.pixel(i % cfg.width, i / cfg.width).creg(CReg::G) as u8)
                 .collect();
             Ok((codes, arr.cycles()))
         })
-        .map_err(text)?;
+        .map_err(|e| text(e.to_string()))?;
     let img = PyArray1::from_vec(py, codes).reshape([cfg.height, cfg.width])?;
     Ok((img.into_any(), cycles))
 }

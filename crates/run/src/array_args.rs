@@ -116,7 +116,7 @@ pub fn parse_probes(s: &str) -> crate::error::Parsed<Probes> {
             let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
             Ok((n(x)?, n(y)?))
         })
-        .collect::<Result<Vec<_>, String>>()?;
+        .collect::<crate::error::Parsed<Vec<_>>>()?;
     if v.is_empty() {
         return Err("expected at least one x,y".into());
     }
