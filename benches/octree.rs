@@ -4,8 +4,8 @@
 //! stronger pointer octree (`pointer-block`) and a dense grid, and global Marching Cubes from
 //! each (§3.1.2, Table 7.2), on a sphere, Table 7.1's cube and `twelve.csg`.
 //!
-//! `cargo bench --bench octree` (256³ and 512³, median of 3) or `cargo bench --bench octree
-//! -- --quick` (128³ and 256³, one run); `--json` prints every figure as one JSON object.
+//! `cargo bench --features bench --bench octree` (256³ and 512³, median of 3) or `cargo bench
+//! --features bench --bench octree -- --quick` (128³ and 256³, one run); `--json` prints every figure as one JSON object.
 //! Each volume is voxelized once (not timed here); every store is then built from its
 //! slices in order of z, as the voxelizer hands them over, one thread. Times are the
 //! thread's own CPU time (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`, kernel time such as page
