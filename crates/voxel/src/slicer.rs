@@ -13,7 +13,7 @@ use csgpix_scene::solid::CsgScene;
 
 use crate::blend::BlendEval;
 use crate::error::{Error, Result};
-use crate::footprint::PixelBox;
+use crate::pixel_box::PixelBox;
 use crate::sampled::Sampled;
 
 /// How slab masks are computed.
