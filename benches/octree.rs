@@ -22,6 +22,7 @@ use std::time::Instant;
 use csgpix::blist::BlistEval;
 use csgpix::octree::build::{Merge, Pyramid};
 use csgpix::octree::cell::CellLayers;
+use csgpix::octree::hashed;
 use csgpix::octree::key::Key;
 use csgpix::octree::mc::marching_cubes;
 use csgpix::octree::{depth_for, from_volume, StoreKind};
@@ -111,20 +112,16 @@ struct Nothing;
 impl Merge for Nothing {
     type Node = u16;
 
-    fn cell(&mut self, v: u8) -> u16 {
-        v.into()
-    }
-
-    fn homogeneous(n: &u16) -> Option<u8> {
-        (*n == 0 || *n == 255).then_some(*n as u8)
-    }
-
     fn leaf(&mut self, v: u8) -> u16 {
         v.into()
     }
 
+    fn leaf_value(n: &u16) -> Option<u8> {
+        hashed::leaf_value(*n)
+    }
+
     fn internal(&mut self, _: Key, _: [u16; 8]) -> csgpix::sculpt::Result<u16> {
-        Ok(256)
+        Ok(hashed::MIXED)
     }
 }
 
