@@ -2,9 +2,11 @@
 
 mod array_args;
 mod blist;
+mod completions;
 mod export_verilog;
 mod gen_vectors;
 mod lib_errors;
+mod man;
 mod memory;
 mod phantom;
 mod render;
@@ -30,7 +32,9 @@ use rtl_model::Equations;
     after_help = "Examples:\n  \
         csgpix render vectors/thesis/cube.dl -o cube.png\n  \
         csgpix verify-select --equations printed\n  \
-        csgpix gen-vectors --check"
+        csgpix gen-vectors --check\n  \
+        csgpix completions bash > ~/.local/share/bash-completion/completions/csgpix\n  \
+        csgpix man | man -l -"
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -61,6 +65,10 @@ pub enum Cmd {
     Study(study::Args),
     /// Write the project's CT-head phantom (Figure 5.6's dataset) as NRRD.
     Phantom(phantom::Args),
+    /// Print the completion script of a shell (bash, zsh, fish, elvish, powershell).
+    Completions(completions::Args),
+    /// Print the manual page (roff).
+    Man(man::Args),
 }
 
 /// `--model`: the names of [`Model`], each with its summary in `--help`.
@@ -102,6 +110,8 @@ pub fn run(cli: Cli) -> Result<ExitCode, String> {
         Cmd::Requirements(a) => requirements::run(a),
         Cmd::Throughput(a) => throughput::run(a),
         Cmd::Study(a) => study::run(a),
+        Cmd::Completions(a) => completions::run(a),
+        Cmd::Man(a) => man::run(a),
     }
 }
 
