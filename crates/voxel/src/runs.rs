@@ -585,7 +585,8 @@ pub fn voxelize_brick(
 }
 
 /// A brick's columns' runs, a band of panel rows each (computed in parallel): what
-/// [`write_brick`] writes slab range after slab range, and the evaluator's counts.
+/// `csgpix_zarr::ZarrVolume::write_brick` writes slab range after slab range, and the
+/// evaluator's counts.
 pub struct BrickRuns {
     /// The brick's columns.
     pub columns: PixelBox,

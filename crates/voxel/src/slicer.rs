@@ -153,7 +153,7 @@ pub struct Slicer {
 }
 
 /// Pixels an outline box is grown by beyond the projected vertices: silhouette planes are
-/// exact to 1.5e-5 pixel ([`solid_lists`]), so one pixel is room enough; two for margin.
+/// exact to 1.5e-5 pixel (`solid_lists`), so one pixel is room enough; two for margin.
 pub const OUTLINE_MARGIN: f64 = 2.0;
 
 impl Slicer {
