@@ -4,8 +4,8 @@
 //! stronger pointer octree (`pointer-block`) and a dense grid, and global Marching Cubes from
 //! each (§3.1.2, Table 7.2), on a sphere, Table 7.1's cube and `twelve.csg`.
 //!
-//! `cargo bench --bench octree` (256³ and 512³, median of 3) or `cargo bench --bench octree
-//! -- --quick` (128³ and 256³, one run); `--json` prints every figure as one JSON object.
+//! `cargo bench --features bench --bench octree` (256³ and 512³, median of 3) or `cargo bench
+//! --features bench --bench octree -- --quick` (128³ and 256³, one run); `--json` prints every figure as one JSON object.
 //! Each volume is voxelized once (not timed here); every store is then built from its
 //! slices in order of z, as the voxelizer hands them over, one thread. Times are the
 //! thread's own CPU time (`clock_gettime(CLOCK_THREAD_CPUTIME_ID)`, kernel time such as page
@@ -22,6 +22,7 @@ use std::time::Instant;
 use csgpix::openscad::parse_csg;
 use csgpix::sculpt::octree::build::{Merge, Pyramid};
 use csgpix::sculpt::octree::cell::CellLayers;
+use csgpix::sculpt::octree::hashed;
 use csgpix::sculpt::octree::key::Key;
 use csgpix::sculpt::octree::mc::marching_cubes;
 use csgpix::sculpt::octree::{depth_for, from_volume, StoreKind};
@@ -111,20 +112,16 @@ struct Nothing;
 impl Merge for Nothing {
     type Node = u16;
 
-    fn cell(&mut self, v: u8) -> u16 {
-        v.into()
-    }
-
-    fn homogeneous(n: &u16) -> Option<u8> {
-        (*n == 0 || *n == 255).then_some(*n as u8)
-    }
-
     fn leaf(&mut self, v: u8) -> u16 {
         v.into()
     }
 
+    fn leaf_value(n: &u16) -> Option<u8> {
+        hashed::leaf_value(*n)
+    }
+
     fn internal(&mut self, _: Key, _: [u16; 8]) -> csgpix::sculpt::Result<u16> {
-        Ok(256)
+        Ok(hashed::MIXED)
     }
 }
 

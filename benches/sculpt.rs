@@ -2,8 +2,8 @@
 //! tool of R = 4 and 8 voxels carving a groove around a ball, a cube and
 //! `vectors/scenes/twelve.csg`, each held in the optimized hash-based octree.
 //!
-//! `cargo bench --bench sculpt` (256³ and 512³, 4000 steps) or `-- --quick` (128³ and 256³,
-//! 1000 steps); `--json` prints every figure as one JSON object instead of the table. One
+//! `cargo bench --features bench --bench sculpt` (256³ and 512³, 4000 steps) or `-- --quick`
+//! (128³ and 256³, 1000 steps); `--json` prints every figure as one JSON object instead of the table. One
 //! thread. A step is what the haptic loop would run per tick: collision (key lookups with
 //! ancestor fallback), removal, the changed cells' bytes (splitting coarse leaves), local
 //! Marching Cubes of those cells and the spring force. Targets: median < 1 ms (1 kHz haptic

@@ -4,8 +4,8 @@
 //! the floor: each route's whole run against allocating, filling and writing the volume, on
 //! three scenes. See `docs/voxelize-bench.md`.
 //!
-//! `cargo bench --bench voxelize` (full: the twelve.csg section at 128³ and 256³, median of 3,
-//! then the floor at 256³, 512³ and 1024³), `-- --quick` (64³ and 128³ for both, one run),
+//! `cargo bench --features bench --bench voxelize` (full: the twelve.csg section at 128³ and
+//! 256³, median of 3, then the floor at 256³, 512³ and 1024³), `-- --quick` (64³ and 128³ for both, one run),
 //! `-- --floor` (the floor section only), `--sizes A,B,…` (the floor's sizes), `--cells A,B,…`
 //! (the pruned peer's cell sides, [`pruned::CELLS`] by default), `--no-dense` (the floor without
 //! the dense peer, about 200 s a run at 1024³); `--json` prints every figure

@@ -897,3 +897,29 @@ fn res_n_is_the_longest_side_in_cubic_voxels() {
     };
     assert_eq!(logo("32"), logo("32x32x32"));
 }
+
+/// `completions` and `man` come from the parser's own definition: every subcommand is in
+/// them, so neither can fall behind a new command.
+#[test]
+fn completions_and_man_page_name_the_subcommands() {
+    for shell in ["bash", "zsh", "fish", "elvish", "powershell"] {
+        let out = csgpix(&["completions", shell]);
+        assert_eq!(out.status.code(), Some(0), "{shell}");
+        let text = String::from_utf8(out.stdout).unwrap();
+        for sub in ["voxelize", "render", "sculpt", "completions", "man"] {
+            assert!(text.contains(sub), "{shell} completion lacks {sub}");
+        }
+    }
+    let bash = String::from_utf8(csgpix(&["completions", "bash"]).stdout).unwrap();
+    assert!(bash.contains("complete -F _csgpix"), "{bash}");
+    let out = csgpix(&["man"]);
+    assert_eq!(out.status.code(), Some(0));
+    let page = String::from_utf8(out.stdout).unwrap();
+    assert!(page.contains(".TH csgpix 1"), "{page}");
+    for sub in ["voxelize", "render", "gen\\-vectors", "completions"] {
+        assert!(page.contains(sub), "man page lacks {sub}");
+    }
+    // A shell that clap_complete does not know is a usage error, exit status 2.
+    let out = csgpix(&["completions", "tcsh"]);
+    assert_eq!(out.status.code(), Some(2));
+}

@@ -2,7 +2,7 @@
 //! in the vertex layout of OpenSCAD 2021.01, as the `.csg` reader hands them to the array.
 //!
 //! The array draws convex solids (§5.2); everything else reaches it as a closed mesh
-//! primitive whose slices are the parity of ray crossings (§3.4.2, [`crate::trimesh`]):
+//! primitive whose slices are the parity of ray crossings (§3.4.2, [`csgpix_scene::trimesh`]):
 //!
 //! * a 2D boolean is never computed as a polygon: an extrusion maps each height (or angle) of
 //!   the plane one to one, so the extrusion of A − B is the extrusion of A minus that of B,
@@ -271,7 +271,7 @@ pub fn convex_prism(outline: &[DVec2], l: &Linear) -> (Vec<[f64; 3]>, Vec<Vec<us
 }
 
 /// `linear_extrude` as a closed mesh, outward: every outline's walls between consecutive
-/// slices, and the shape's caps ([`cap::cap`]) at the bottom and, unless the top is scaled to a
+/// slices, and the shape's caps (`cap::cap`) at the bottom and, unless the top is scaled to a
 /// point, at the top. Outlines run as OpenSCAD's even-odd cleanup leaves them (outer ones
 /// counter-clockwise, holes clockwise). Each twisted wall quad is split along the diagonal
 /// that gives OpenSCAD 2021.01's own meshes (found by comparing voxels with its STL,
@@ -469,7 +469,7 @@ impl Offset {
 
 /// `offset` of a region. A single convex outline by any amount, and a union of them by a
 /// positive amount (a Minkowski sum distributes over union), are offset exactly
-/// ([`offset_convex`]); every other region as OpenSCAD 2021.01 does it ([`clipper_offset`]).
+/// (`offset_convex`); every other region as OpenSCAD 2021.01 does it ([`clipper_offset`]).
 pub fn offset(region: &Region, o: Offset, sincos: &dyn Fn(f64) -> (f64, f64)) -> Result<Region> {
     if let Some(r) = offset_exact(region, o, sincos) {
         return Ok(r);

@@ -24,7 +24,7 @@
 //! * The modifiers `%` (background) and `*` (disable) drop the statement, as OpenSCAD leaves
 //!   such nodes out of the rendered result; `#` (highlight) is ignored; `!` is refused.
 //! * `import(file = "x.stl" | "x.obj" | "x.nrrd", threshold = t)` names a mesh or a dataset
-//!   primitive ([`crate::solid::Import`], loaded by `csgpix_voxel::sampled`); `threshold` (ours, not
+//!   primitive ([`Import`], loaded by `csgpix_voxel::sampled`); `threshold` (ours, not
 //!   OpenSCAD's) is a dataset's iso value.
 //!
 //! * 2D shapes `square`, `circle`, `polygon(points, paths)` (several paths filled even-odd:
@@ -128,6 +128,9 @@ pub use consts_::{
 pub use export::{in_scad, read_scene, read_scene_with, scene_text};
 
 use csgpix_scene::solid::CsgScene;
+// The crate documentation names these nodes.
+#[cfg(doc)]
+use csgpix_scene::solid::{CsgNode, Import};
 use csgpix_scene::Error;
 use reader::Reader;
 

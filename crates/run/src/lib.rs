@@ -30,10 +30,12 @@ macro_rules! from_value_name {
 
 pub mod array_args;
 pub mod blist;
+pub mod completions;
 pub mod error;
 pub mod export_verilog;
 pub mod gen_vectors;
 mod lib_errors;
+pub mod man;
 pub mod memory;
 pub mod phantom;
 pub mod plot;
@@ -67,7 +69,9 @@ from_value_name!(ViewArg: "view", EquationsArg: "equations");
     after_help = "Examples:\n  \
         csgpix render vectors/thesis/cube.dl -o cube.png\n  \
         csgpix verify-select --equations printed\n  \
-        csgpix gen-vectors --check"
+        csgpix gen-vectors --check\n  \
+        csgpix completions bash > ~/.local/share/bash-completion/completions/csgpix\n  \
+        csgpix man | man -l -"
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -98,6 +102,10 @@ pub enum Cmd {
     Study(study::Args),
     /// Write the project's CT-head phantom (Figure 5.6's dataset) as NRRD.
     Phantom(phantom::Args),
+    /// Print the completion script of a shell (bash, zsh, fish, elvish, powershell).
+    Completions(completions::Args),
+    /// Print the manual page (roff).
+    Man(man::Args),
 }
 
 /// `--model`: the names of [`Model`], each with its summary in `--help`.
@@ -140,6 +148,8 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Cmd::Requirements(a) => requirements::run(a),
         Cmd::Throughput(a) => throughput::run(a),
         Cmd::Study(a) => study::run(a),
+        Cmd::Completions(a) => completions::run(a),
+        Cmd::Man(a) => man::run(a),
     }
 }
 

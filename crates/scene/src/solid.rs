@@ -50,7 +50,7 @@ pub struct Import {
     /// The column there (1-based, in characters).
     pub col: usize,
     /// A mesh the scene itself made (an extrusion the array cannot draw as a convex solid,
-    /// [`crate::extrude`]): closed triangles in scene coordinates; `file` then names the node.
+    /// `csgpix_openscad::extrude`): closed triangles in scene coordinates; `file` then names the node.
     pub mesh: Option<std::sync::Arc<Vec<[[f64; 3]; 3]>>>,
 }
 

@@ -10,10 +10,10 @@
 //! interpolation are done once per column ([`Dataset::fill_column`]) and only index z is
 //! computed per voxel, by `index_of` itself. Index z then moves one way along the column, so
 //! the voxels of one lattice z-cell are consecutive: a cell whose two plane values lie clearly
-//! on one side of the threshold ([`side`]) is filled or skipped whole, together with the cells
+//! on one side of the threshold (`side`) is filled or skipped whole, together with the cells
 //! after it on the same side, their end found by a search ([`first_true`]); in the other
 //! cells, which the threshold crosses, a search finds the voxels near the crossing, and only
-//! those are sampled one by one ([`Walk::crossing`]).
+//! those are sampled one by one (`Walk::crossing`).
 
 use std::ops::Range;
 

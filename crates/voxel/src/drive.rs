@@ -7,32 +7,16 @@ use rtl_model::EquationSet;
 use csgpix_scene::grid::{Grid, Volume};
 
 use crate::error::Result;
-use crate::footprint::{footprints, Footprint, PixelBox};
+use crate::footprint::{footprints, Footprint};
 use crate::masks::{array_mask_in, slice_ops};
-use crate::ranges::{float_ranges, mesh_runs, word_ranges, SlabRanges};
-use crate::sampled::{Shape, SlabRuns};
+use crate::pixel_box::PixelBox;
+use crate::ranges::{float_ranges, mesh_runs, word_ranges};
+use crate::sampled::Shape;
+use crate::slabs::{SlabRanges, SlabRuns};
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::slicer::{Route, Slicer};
-
-/// What a run did.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
-pub struct Work {
-    /// Voxels inside the scene.
-    pub filled: usize,
-    /// Array clocks for every P·Vz frame (simulated on the array route, counted from the
-    /// programs on the others: the same number either way).
-    pub cycles: u64,
-    /// P·Vz frames drawn (primitives × slabs).
-    pub frames: u64,
-    /// The evaluator's operations (§5.5): per voxel (the stack: per slice) on the slab
-    /// routes, per segment of a column on [`Route::Runs`].
-    pub ops: OpCounts,
-    /// Pixel-clocks the simulator ran (array route: Σ over simulated frames of pixels ×
-    /// clocks; 0 on the other routes, which simulate no pixel).
-    pub simulated_pixel_clocks: u64,
-    /// Pixel-clocks of every frame on the whole array: what simulating everything costs.
-    pub full_pixel_clocks: u64,
-}
+// Here before crate::work took them: the public paths stay.
+pub use crate::work::{SliceSink, Work, PROCESS_BYTES};
 
 /// Per-slice masks of every primitive: the solids' by route, then the imports'.
 struct Source {
@@ -284,13 +268,6 @@ pub fn memory_estimate_rows(grid: &Grid, prims: usize, threads: usize, held: u64
         .saturating_add(threads.saturating_mul(per_thread))
         .saturating_add(PROCESS_BYTES)
 }
-
-/// The process before any voxel: code, libraries, the scene.
-pub const PROCESS_BYTES: u64 = 16 << 20;
-
-/// Receives slice k's colour codes ([`voxelize_streaming`]); an error (of the sink's own
-/// type `E`) stops the run.
-pub type SliceSink<'a, E = crate::Error> = dyn FnMut(usize, &[u8]) -> Result<(), E> + 'a;
 
 /// [`voxelize`] handing each slice's colour codes to `sink` in order of k (0, 1, …) instead of
 /// assembling a volume, for stores built slice by slice (seed 000 §4.3.4; `src/octree`).

@@ -96,23 +96,26 @@ pub mod error;
 pub mod evaluate;
 pub mod footprint;
 pub mod masks;
+pub mod pixel_box;
 pub mod ranges;
 pub mod requirements;
 pub mod runs;
 pub mod sampled;
+pub mod slabs;
 pub mod slice;
 pub mod slicer;
+pub mod work;
 
 pub use csgpix_scene::grid::{surface_voxels, Grid, GridSpec, Volume, MAX_GRID_SIDE};
 pub use drive::{
     grey_code, memory_estimate, memory_estimate_rows, voxelize, voxelize_slabs, voxelize_streaming,
     SliceSink, Work, GREY_BASE, PROCESS_BYTES,
 };
-pub use footprint::{footprints, touched_panels, Footprint, PixelBox};
+pub use footprint::{footprints, touched_panels, Footprint};
 pub use masks::{array_mask, array_mask_in, slice_ops};
-pub use ranges::{
-    float_interval, float_ranges, mesh_runs, ray_interval, toggle_run, word_ranges, SlabRanges,
-};
+pub use pixel_box::PixelBox;
+pub use ranges::{float_interval, float_ranges, mesh_runs, ray_interval, word_ranges};
+pub use slabs::{toggle_run, SlabRanges};
 pub use slicer::{voxel_slope, Route, Sampling, Slicer, SlicerOptions, DEFAULT_PANEL};
 
 pub use error::{BindingProblem, BindingSyntax, Error, ExprError, Result};

@@ -9,7 +9,7 @@ use csgpix_draw::compile::clip_scene_ops;
 use csgpix_scene::clip_expr::Clip;
 
 use crate::error::{Error, Result};
-use crate::footprint::PixelBox;
+use crate::pixel_box::PixelBox;
 use crate::slice::Mask;
 use crate::slicer::Slicer;
 

@@ -4,35 +4,11 @@
 use csgpix_scene::trimesh::{TriMesh, Window};
 
 use crate::error::Result;
-use crate::footprint::PixelBox;
-use crate::sampled::SlabRuns;
-use crate::slice::Mask;
+use crate::pixel_box::PixelBox;
 use crate::slicer::Slicer;
-
-/// Per pixel, the slabs primitive P meets: `first..=last` (empty when first > last).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SlabRanges(pub Vec<(u32, u32)>);
-
-impl SlabRanges {
-    /// Per slab k, the pixels whose membership differs between slab k − 1 and slab k: those
-    /// whose range starts at k or ended at k − 1 (slab 0: none).
-    pub fn toggles(&self, slabs: usize) -> Vec<Vec<u32>> {
-        let mut t = vec![vec![]; slabs];
-        for (i, &run) in self.0.iter().enumerate() {
-            toggle_run(&mut t, i, run);
-        }
-        t
-    }
-
-    /// The mask of slab k.
-    pub fn mask(&self, k: usize) -> Mask {
-        let k = k as u32;
-        Mask::from_fn(self.0.len(), |i| {
-            let (a, b) = self.0[i];
-            a <= k && k <= b
-        })
-    }
-}
+// Here before crate::slabs took them: the public paths stay.
+use crate::slabs::SlabRuns;
+pub use crate::slabs::{toggle_run, SlabRanges};
 
 /// The slabs whose window ([`Slicer::window`]) a depth interval [lo, hi] (in raw word units)
 /// meets, both ends closed.
@@ -315,21 +291,6 @@ fn raw_depth(slicer: &Slicer, v: f64, up: bool) -> i128 {
         (v * one).floor()
     };
     r.clamp(-1e30, 1e30) as i128
-}
-
-/// Record that pixel i enters slab `first` and leaves after slab `last` (an empty run,
-/// first > last, records nothing): the flips [`SlabRanges::toggles`] and
-/// [`SlabRuns::toggles`] list per slab.
-pub fn toggle_run(t: &mut [Vec<u32>], i: usize, (first, last): (u32, u32)) {
-    if first > last {
-        return;
-    }
-    if first > 0 && (first as usize) < t.len() {
-        t[first as usize].push(i as u32);
-    }
-    if (last as usize) + 1 < t.len() {
-        t[last as usize + 1].push(i as u32);
-    }
 }
 
 /// [`Route::Float`](crate::Route::Float): the same slabs from the exact intervals.

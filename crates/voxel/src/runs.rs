@@ -28,13 +28,14 @@ use csgpix_scene::trimesh::Window;
 use csgpix_scene::dataset::Column;
 
 use crate::dataset_runs::DatasetColumns;
-use crate::drive::Work;
 use crate::error::Result;
-use crate::footprint::PixelBox;
+use crate::pixel_box::PixelBox;
 use crate::ranges::{mesh_runs_in, FloatPlanes, WordPlanes};
-use crate::sampled::{Shape, SlabRuns};
+use crate::sampled::Shape;
+use crate::slabs::SlabRuns;
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::slicer::{Slicer, DEFAULT_PANEL};
+use crate::work::{SliceSink, Work, PROCESS_BYTES};
 
 /// One run of a column: from slab `k` on (to the next run's `k`, or the grid's end), voxels
 /// take `colour` (0: empty).
@@ -586,7 +587,8 @@ pub fn voxelize_brick(
 }
 
 /// A brick's columns' runs, a band of panel rows each (computed in parallel): what
-/// [`write_brick`] writes slab range after slab range, and the evaluator's counts.
+/// `csgpix_zarr::ZarrVolume::write_brick` writes slab range after slab range, and the
+/// evaluator's counts.
 pub struct BrickRuns {
     /// The brick's columns.
     pub columns: PixelBox,
@@ -672,7 +674,7 @@ pub fn sweep_slices<E: From<crate::Error>>(
     eval: &dyn SliceEval,
     tick: &(dyn Fn() + Sync),
     slabs: std::ops::Range<usize>,
-    sink: &mut crate::SliceSink<E>,
+    sink: &mut SliceSink<E>,
     mut work: Work,
 ) -> Result<Work, E> {
     let [nx, ny, _] = slicer.grid.dims;
@@ -855,6 +857,6 @@ impl PanelBytes {
             .sum();
         held.saturating_add(meshes)
             .saturating_add((threads as u64).saturating_mul(self.band))
-            .saturating_add(crate::drive::PROCESS_BYTES)
+            .saturating_add(PROCESS_BYTES)
     }
 }

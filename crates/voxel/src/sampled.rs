@@ -20,7 +20,8 @@ use std::path::{Path, PathBuf};
 use glam::{DMat4, DVec3};
 
 use crate::error::{BindingProblem, BindingSyntax, Error, ExprError, Result};
-use crate::ranges::toggle_run;
+// Here before crate::slabs took it: the public path stays.
+pub use crate::slabs::SlabRuns;
 use crate::slice::Mask;
 use csgpix_draw::project::colour_code;
 use csgpix_scene::dataset::Dataset;
@@ -305,47 +306,6 @@ fn load_import(imp: &Import, index: usize, origin: &Origin, dir: &Path) -> Resul
         colour,
         file: imp.file.clone(),
     })
-}
-
-/// Per pixel, the runs of slabs inside a primitive (disjoint, sorted, not touching:
-/// `first..=last`), for primitives whose ray meets them more than once (meshes).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SlabRuns(pub Vec<Vec<(u32, u32)>>);
-
-impl SlabRuns {
-    /// From runs in any order per pixel: sorted and merged where they meet or touch.
-    pub fn merged(mut runs: Vec<Vec<(u32, u32)>>) -> SlabRuns {
-        for r in &mut runs {
-            r.retain(|(a, b)| a <= b);
-            r.sort_unstable();
-            let mut out: Vec<(u32, u32)> = Vec::with_capacity(r.len());
-            for &(a, b) in r.iter() {
-                match out.last_mut() {
-                    Some(last) if a <= last.1.saturating_add(1) => last.1 = last.1.max(b),
-                    _ => out.push((a, b)),
-                }
-            }
-            *r = out;
-        }
-        SlabRuns(runs)
-    }
-
-    /// Per slab k, the pixels whose membership differs between slab k − 1 and slab k.
-    pub fn toggles(&self, slabs: usize) -> Vec<Vec<u32>> {
-        let mut t = vec![vec![]; slabs];
-        for (i, runs) in self.0.iter().enumerate() {
-            runs.iter().for_each(|&run| toggle_run(&mut t, i, run));
-        }
-        t
-    }
-
-    /// The mask of slab k.
-    pub fn mask(&self, k: usize) -> Mask {
-        let k = k as u32;
-        Mask::from_fn(self.0.len(), |i| {
-            self.0[i].iter().any(|&(a, b)| a <= k && k <= b)
-        })
-    }
 }
 
 /// A primitive name of a CSG expression bound to a file (`NAME=FILE[,threshold=T]`):

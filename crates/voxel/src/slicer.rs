@@ -13,7 +13,7 @@ use csgpix_scene::solid::CsgScene;
 
 use crate::blend::BlendEval;
 use crate::error::{Error, Result};
-use crate::footprint::PixelBox;
+use crate::pixel_box::PixelBox;
 use crate::sampled::Sampled;
 
 /// How slab masks are computed.
@@ -153,7 +153,7 @@ pub struct Slicer {
 }
 
 /// Pixels an outline box is grown by beyond the projected vertices: silhouette planes are
-/// exact to 1.5e-5 pixel ([`solid_lists`]), so one pixel is room enough; two for margin.
+/// exact to 1.5e-5 pixel (`solid_lists`), so one pixel is room enough; two for margin.
 pub const OUTLINE_MARGIN: f64 = 2.0;
 
 impl Slicer {

@@ -117,7 +117,7 @@ pub const DEFAULT_CHUNK: usize = 64;
 
 /// Inner chunks per shard side (Y and X) when none is asked for: with 64³ chunks a shard is
 /// 64 × 4096 × 4096 voxels, and a 16384³ store 6,400 files over 7 levels (docs/zarr.md has
-/// the counts). A shard is never held whole ([`shard`]), so its size costs no memory.
+/// the counts). A shard is never held whole (`shard`), so its size costs no memory.
 pub const DEFAULT_SHARD: usize = 64;
 
 /// The default pyramid stops at the first level whose largest side is at most this.
@@ -350,7 +350,7 @@ fn rows_bytes(levels: &[Level], xy: Option<[usize; 2]>) -> u64 {
 /// Bytes a run over a store of `layout` on `threads` threads holds besides the voxelizer's
 /// own: one chunk row of slices per level, and while a row is written, the larger of
 /// - sharded: per thread a chunk copied out of the row and its deflate state, and a batch
-///   ([`BATCH_PER_THREAD`](shard::BATCH_PER_THREAD) per thread) of compressed chunks, each
+///   (`BATCH_PER_THREAD` per thread) of compressed chunks, each
 ///   at most zlib's bound; with a shard's index;
 /// - unsharded: per writer ([`WRITERS`]) a chunk copied out of the row and its gzip stream
 ///   (at most the chunk and zlib's bound) and deflate state.
@@ -852,7 +852,7 @@ impl ZarrVolume {
     /// or the whole grid) at every level, as [`write_row`](Self::write_row) stores a row:
     /// `slices` are the brick's slices, each `columns`' width × height. `known` says, where
     /// the caller knows it (from the runs), which of the brick's level-0 chunks hold one
-    /// value throughout (row-major over the brick's chunks; see [`RowCut`](shard::RowCut)):
+    /// value throughout (row-major over the brick's chunks; see `RowCut`):
     /// those are written without looking at their voxels. The files depend on the voxels
     /// alone, so bricks written in any order, by any process, make the row's files.
     pub fn write_brick(

@@ -211,7 +211,7 @@ impl std::error::Error for EquationError {}
 pub const PRINTED_TEXT: &str = include_str!("printed.eqn");
 
 /// The equations minimized from the golden vectors by `csgpix gen-vectors`.
-pub const DERIVED_TEXT: &str = include_str!("../../../vectors/select/derived.eqn");
+pub const DERIVED_TEXT: &str = include_str!("../../vectors/select/derived.eqn");
 
 /// Undefined letters in the printed text and what they are read as (docs/select-logic.md).
 pub const PRINTED_ALIASES: &[(char, Var)] = &[('K', Var::N)];
@@ -318,27 +318,17 @@ fn parse_partial(text: &str, alias: &[(char, Var)]) -> Result<[Option<Sop>; 9], 
     Ok(set)
 }
 
-/// The checked-in golden vectors, `vectors/select/*.pla`, as built into the binary.
+/// The checked-in golden vectors, `vectors/select/*.pla`, as built into the binary. The files
+/// live in this crate (`rtl-model/vectors/select`, where `vectors/select` links to), so that
+/// the crate builds from its published package; there is one copy.
 pub const GOLDEN: [(Table, &str); 5] = [
-    (
-        Table::Front,
-        include_str!("../../../vectors/select/front.pla"),
-    ),
-    (
-        Table::Back,
-        include_str!("../../../vectors/select/back.pla"),
-    ),
-    (
-        Table::Close,
-        include_str!("../../../vectors/select/close.pla"),
-    ),
-    (
-        Table::Clip,
-        include_str!("../../../vectors/select/clip.pla"),
-    ),
+    (Table::Front, include_str!("../../vectors/select/front.pla")),
+    (Table::Back, include_str!("../../vectors/select/back.pla")),
+    (Table::Close, include_str!("../../vectors/select/close.pla")),
+    (Table::Clip, include_str!("../../vectors/select/clip.pla")),
     (
         Table::Second,
-        include_str!("../../../vectors/select/second.pla"),
+        include_str!("../../vectors/select/second.pla"),
     ),
 ];
 

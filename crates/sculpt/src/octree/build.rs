@@ -14,6 +14,11 @@ use super::key::{self, Key};
 use crate::{Error, Result};
 
 /// What a store does with the nodes the pyramid decides.
+///
+/// A store says how it makes and reads a leaf ([`Merge::leaf`], [`Merge::leaf_value`]) and
+/// what it keeps of an internal node ([`Merge::internal`]); cells, the homogeneous test and
+/// leaf merging are the same for every store and are the default methods, so that the rule
+/// "homogeneous is a leaf of 0 or 255" is written once ([`homogeneous`]).
 pub trait Merge {
     /// A node being built (a value, or a subtree).
     type Node: Default;
@@ -21,19 +26,32 @@ pub trait Merge {
     /// thesis's pointer octree)? When false, a homogeneous 2×2×2 block of cells goes straight
     /// to a leaf parent without a node per cell.
     const EVERY_CELL: bool = false;
-    /// A deepest-level cell with its case byte.
-    fn cell(&mut self, v: u8) -> Self::Node;
-    /// `Some(v)` when the node is a homogeneous leaf of value v (0 or 255).
-    fn homogeneous(n: &Self::Node) -> Option<u8>;
-    /// A parent whose 8 children are homogeneous leaves of value v: it becomes that leaf.
+    /// A leaf of byte v: a deepest-level cell's case byte, or a homogeneous node's 0 or 255.
     fn leaf(&mut self, v: u8) -> Self::Node;
-    /// The same, given the children to merge (a store may reuse one of them for the leaf).
+    /// The byte of a leaf node (None for an internal one).
+    fn leaf_value(n: &Self::Node) -> Option<u8>;
+    /// A parent with key `key` whose children (location codes 0..8) are nodes of the tree.
+    fn internal(&mut self, key: Key, children: [Self::Node; 8]) -> Result<Self::Node>;
+    /// A deepest-level cell with its case byte: a leaf in every store.
+    fn cell(&mut self, v: u8) -> Self::Node {
+        self.leaf(v)
+    }
+    /// `Some(v)` when the node is a homogeneous leaf of value v (0 or 255).
+    fn homogeneous(n: &Self::Node) -> Option<u8> {
+        Self::leaf_value(n).and_then(homogeneous)
+    }
+    /// A parent whose 8 children are homogeneous leaves of value v becomes that leaf, given
+    /// the children to merge (a store may reuse one of them for the leaf).
     fn merge_leaf(&mut self, v: u8, kids: [Self::Node; 8]) -> Self::Node {
         drop(kids);
         self.leaf(v)
     }
-    /// A parent with key `key` whose children (location codes 0..8) are nodes of the tree.
-    fn internal(&mut self, key: Key, children: [Self::Node; 8]) -> Result<Self::Node>;
+}
+
+/// `Some(v)` when a cell's case byte v is homogeneous: every corner outside (0) or every
+/// corner inside (255); any other byte is a surface cell.
+pub fn homogeneous(v: u8) -> Option<u8> {
+    (v == 0 || v == 255).then_some(v)
 }
 
 /// One level's pending layers.
@@ -253,7 +271,7 @@ fn join_cells<M: Merge>(
                 let kids = v.map(|x| merge.cell(x));
                 let p = [px, py, pz as usize];
                 decide(merge, internal, d - 1, p, kids)?
-            } else if (v[0] == 0 || v[0] == 255) && v.iter().all(|&x| x == v[0]) {
+            } else if homogeneous(v[0]).is_some() && v.iter().all(|&x| x == v[0]) {
                 merge.leaf(v[0])
             } else {
                 *internal += 1;

@@ -4,11 +4,66 @@
 //! in one linear pass over the table. The optimized octree stores leaves only, the plain one
 //! internal nodes as well, which every reading skips.
 
+use super::build::Merge;
 use super::cell;
 use super::key::{self, Key, ROOT};
 use super::table::{Entry, KeyTable};
 use super::Budget;
 use crate::Result;
+
+/// A node that has children, while building; any other node is a leaf of that byte. The
+/// node of both hashed builders ([`super::optimized::Leaves`], [`super::plain::All`]).
+pub const MIXED: u16 = 256;
+
+/// The byte of a hashed builder's leaf node (None for [`MIXED`]).
+pub fn leaf_value(n: u16) -> Option<u8> {
+    (n != MIXED).then_some(n as u8)
+}
+
+/// The builder of both hashed octrees ([`Merge`]): the nodes of each level collected while
+/// building. `ALL`: every node, internal ones too (the plain octree, [`super::plain::All`]),
+/// or the leaves alone (the optimized one, [`super::optimized::Leaves`]); the two differ in
+/// nothing else while building, so the merge is written once.
+pub struct Collect<const ALL: bool>(pub(super) Levels);
+
+impl<const ALL: bool> Collect<ALL> {
+    /// No node yet, for a tree of `depth` levels within `budget` bytes.
+    pub fn new(depth: u32, budget: u64) -> Collect<ALL> {
+        Collect(Levels::new(depth, budget))
+    }
+}
+
+impl<const ALL: bool> Merge for Collect<ALL> {
+    type Node = u16;
+
+    fn leaf(&mut self, v: u8) -> u16 {
+        v.into()
+    }
+
+    fn leaf_value(n: &u16) -> Option<u8> {
+        leaf_value(*n)
+    }
+
+    /// Parent `k`'s children go to the next level's list: all 8 with `ALL` (an internal child
+    /// flagged), else the leaves only, each charged to the budget; the parent itself is
+    /// stored by its own parent, or as the root at the end.
+    fn internal(&mut self, k: Key, kids: [u16; 8]) -> Result<u16> {
+        let list = self.0.level(key::level(k) + 1);
+        let before = list.len();
+        for (c, &n) in kids.iter().enumerate() {
+            if ALL || n != MIXED {
+                list.push(Entry::new(
+                    key::child(k, c as u8),
+                    (n & 255) as u8,
+                    n == MIXED,
+                ));
+            }
+        }
+        let added = list.len() - before;
+        self.0.charge(added as u64)?;
+        Ok(MIXED)
+    }
+}
 
 /// Bytes per node while building: its place in a level list and in the table, and a bucket.
 pub const BUILD_BYTES: u64 = 16 + 16 + 8;

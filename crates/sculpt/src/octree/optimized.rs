@@ -7,15 +7,14 @@
 //! (cells) find them first. A cell is found by its key, or, when it was merged into a coarse
 //! leaf, by stripping three bits at a time until a key is in the table (§5.1, Eq. 5.1).
 
-use super::build::Merge;
-use super::hashed::{self, Levels};
+use super::hashed;
 use super::key::{self, Key, ROOT};
 use super::table::{Entry, KeyTable};
 use super::{Finish, StoreKind};
 use crate::{CellProblem, Error, Result};
 
-/// A node that has children, while building.
-pub const MIXED: u16 = 256;
+// Here before hashed.rs took it (both hashed builders use it): the public path stays.
+pub use super::hashed::MIXED;
 
 /// The optimized hash-based octree.
 #[derive(Clone, Debug)]
@@ -27,43 +26,7 @@ pub struct OptimizedOctree {
 
 /// The leaves of each level, collected while building (seed 000 §4.3.4 step 2: what is known
 /// about homogeneous sub-spaces is kept only until the table is filled).
-pub struct Leaves(Levels);
-
-impl Leaves {
-    /// No leaf yet, for a tree of `depth` levels within `budget` bytes.
-    pub fn new(depth: u32, budget: u64) -> Leaves {
-        Leaves(Levels::new(depth, budget))
-    }
-}
-
-impl Merge for Leaves {
-    type Node = u16;
-
-    fn cell(&mut self, v: u8) -> u16 {
-        v.into()
-    }
-
-    fn homogeneous(n: &u16) -> Option<u8> {
-        (*n == 0 || *n == 255).then_some(*n as u8)
-    }
-
-    fn leaf(&mut self, v: u8) -> u16 {
-        v.into()
-    }
-
-    fn internal(&mut self, k: Key, kids: [u16; 8]) -> Result<u16> {
-        let list = self.0.level(key::level(k) + 1);
-        let before = list.len();
-        for (c, &n) in kids.iter().enumerate() {
-            if n != MIXED {
-                list.push(Entry::new(key::child(k, c as u8), n as u8, false));
-            }
-        }
-        let added = list.len() - before;
-        self.0.charge(added as u64)?;
-        Ok(MIXED)
-    }
-}
+pub type Leaves = hashed::Collect<false>;
 
 impl Finish for Leaves {
     type Store = OptimizedOctree;

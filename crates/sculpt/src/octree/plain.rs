@@ -2,10 +2,8 @@
 //! and leaf, in the hash table under its key. Built like the optimized one (bottom-up, level
 //! by level from the deepest), with the internal nodes as well.
 
-use super::build::Merge;
-use super::hashed::{self, Levels};
-use super::key::{self, Key, ROOT};
-use super::optimized::MIXED;
+use super::hashed::{self, MIXED};
+use super::key::{Key, ROOT};
 use super::table::{Entry, KeyTable};
 use super::{Finish, StoreKind};
 use crate::Result;
@@ -19,43 +17,7 @@ pub struct PlainHashOctree {
 }
 
 /// Every node of each level (key, value, internal?), collected while building.
-pub struct All(Levels);
-
-impl All {
-    /// No node yet, for a tree of `depth` levels within `budget` bytes.
-    pub fn new(depth: u32, budget: u64) -> All {
-        All(Levels::new(depth, budget))
-    }
-}
-
-impl Merge for All {
-    type Node = u16;
-
-    fn cell(&mut self, v: u8) -> u16 {
-        v.into()
-    }
-
-    fn homogeneous(n: &u16) -> Option<u8> {
-        (*n == 0 || *n == 255).then_some(*n as u8)
-    }
-
-    fn leaf(&mut self, v: u8) -> u16 {
-        v.into()
-    }
-
-    fn internal(&mut self, k: Key, kids: [u16; 8]) -> Result<u16> {
-        let list = self.0.level(key::level(k) + 1);
-        for (c, &n) in kids.iter().enumerate() {
-            list.push(Entry::new(
-                key::child(k, c as u8),
-                (n & 255) as u8,
-                n == MIXED,
-            ));
-        }
-        self.0.charge(8)?;
-        Ok(MIXED)
-    }
-}
+pub type All = hashed::Collect<true>;
 
 impl Finish for All {
     type Store = PlainHashOctree;

@@ -66,19 +66,12 @@ impl Merge for Nodes {
     /// §4.2.2: every cell is a leaf node of the tree before anything is merged.
     const EVERY_CELL: bool = true;
 
-    fn cell(&mut self, v: u8) -> Slot {
-        Some(Box::new(Node::Leaf(v)))
-    }
-
-    fn homogeneous(n: &Slot) -> Option<u8> {
-        match n.as_deref() {
-            Some(Node::Leaf(v)) if *v == 0 || *v == 255 => Some(*v),
-            _ => None,
-        }
-    }
-
     fn leaf(&mut self, v: u8) -> Slot {
         Some(Box::new(Node::Leaf(v)))
+    }
+
+    fn leaf_value(n: &Slot) -> Option<u8> {
+        n.as_deref().and_then(PointerNode::leaf)
     }
 
     /// Merging frees 7 children and keeps the first's allocation for the parent leaf (one

@@ -55,19 +55,12 @@ const NODE_BYTES: u64 = std::mem::size_of::<PNode>() as u64;
 impl Merge for Links {
     type Node = PNode;
 
-    fn cell(&mut self, v: u8) -> PNode {
-        PNode::Leaf(v)
-    }
-
-    fn homogeneous(n: &PNode) -> Option<u8> {
-        match n {
-            PNode::Leaf(v) if *v == 0 || *v == 255 => Some(*v),
-            _ => None,
-        }
-    }
-
     fn leaf(&mut self, v: u8) -> PNode {
         PNode::Leaf(v)
+    }
+
+    fn leaf_value(n: &PNode) -> Option<u8> {
+        n.leaf()
     }
 
     fn internal(&mut self, _: Key, kids: [PNode; 8]) -> Result<PNode> {
