@@ -80,7 +80,7 @@ pub enum Error {
     #[error("brick {columns:?} × slabs {slabs:?} is not inside the grid {}x{}x{}", dims[0], dims[1], dims[2])]
     BrickRange {
         /// The columns asked for.
-        columns: crate::footprint::PixelBox,
+        columns: crate::pixel_box::PixelBox,
         /// The slabs asked for.
         slabs: std::ops::Range<usize>,
         /// The grid's voxels, X, Y, Z.
