@@ -4,7 +4,7 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|bytes: &[u8]| {
     let dir = std::path::Path::new("/nonexistent-csgpix-fuzz");
-    if let Err(e) = csgpix::scene::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), 1 << 20)
+    if let Err(e) = csgpix::scene::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), csgpix::scene::nrrd::SampleLimit { samples: 1 << 20, source: "" })
         .map_err(|e| e.to_string())
     {
         assert!(!e.contains('\n'), "two lines: {e}");

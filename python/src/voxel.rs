@@ -10,7 +10,7 @@ use pyo3::prelude::*;
 use csgpix_run::array_args::parse_word;
 use csgpix_run::memory::Limit;
 use csgpix_run::voxelize::{imports_estimate, parse_blend, Resolution, Voxelization};
-use csgpix_voxel::sampled::{load_scene, scene_from_expr, Binding, Loaded};
+use csgpix_voxel::sampled::{load_scene_with, scene_from_expr_with, Binding, Loaded};
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{Grid, GridSpec, Route, Slicer};
 use rtl_model::{Equations, WordFormat};
@@ -92,8 +92,7 @@ impl Scene {
 /// Read a `.csg` scene (or a `.scad` one through OpenSCAD) and the files it imports.
 #[pyfunction]
 pub fn load(path: PathBuf) -> PyResult<Scene> {
-    limit_readers();
-    let loaded = load_scene(&path).map_err(voxel)?;
+    let loaded = load_scene_with(&path, &read_options()).map_err(voxel)?;
     Ok(Scene {
         loaded,
         name: path.display().to_string(),
@@ -110,8 +109,7 @@ pub fn load_expr(expr: &str, prims: Vec<(String, Bound<'_, PyAny>)>) -> PyResult
         .into_iter()
         .map(|(name, v)| binding(name, &v))
         .collect::<PyResult<Vec<_>>>()?;
-    limit_readers();
-    let loaded = scene_from_expr(expr, &bindings).map_err(voxel)?;
+    let loaded = scene_from_expr_with(expr, &bindings, &read_options()).map_err(voxel)?;
     let prims = bindings
         .iter()
         .map(|b| (b.name.clone(), b.file.clone(), b.threshold))
@@ -123,11 +121,15 @@ pub fn load_expr(expr: &str, prims: Vec<(String, Bound<'_, PyAny>)>) -> PyResult
     })
 }
 
-/// NRRD datasets are refused by their header's `sizes` when their samples would not fit in
-/// the memory available now, before their data is read (as the command line's
-/// `--max-memory` does).
-fn limit_readers() {
-    Limit::new(None, "the memory available (MemAvailable)").limit_readers();
+/// The readers' options: NRRD datasets are refused by their header's `sizes` when their
+/// samples would not fit in the memory available now, before their data is read (as the
+/// command line's `--max-memory` does).
+fn read_options() -> csgpix_openscad::ReadOptions {
+    let limit = Limit::new(None, "the memory available (MemAvailable)");
+    csgpix_openscad::ReadOptions {
+        samples: limit.samples(),
+        ..Default::default()
+    }
 }
 
 /// Refuse a run whose estimate `need` (bytes) is over `max_memory` MiB, by default the memory

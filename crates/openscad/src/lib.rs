@@ -177,6 +177,10 @@ pub struct ReadOptions {
     /// The most vertices the scene may have while it is read (`None`:
     /// [`MAX_SCENE_VERTICES`]); [`ReadOptions::max_vertices_for`] turns a memory limit into it.
     pub max_vertices: Option<usize>,
+    /// The most samples an imported dataset may have (`import("x.nrrd", …)`), from the
+    /// caller's memory limit; [`SampleLimit::NONE`](csgpix_scene::nrrd::SampleLimit::NONE)
+    /// by default.
+    pub samples: csgpix_scene::nrrd::SampleLimit,
 }
 
 /// What one vertex of a scene costs while it is read, in bytes, with its share of faces and

@@ -23,9 +23,17 @@ fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
         },
         "nrrd" => {
             let dir = Path::new("/nonexistent-csgpix-fuzz");
-            csgpix_scene::nrrd::parse_nrrd_limited(bytes, "f.nrrd", Some(dir), 1 << 20)
-                .err()
-                .map(|e| e.to_string())
+            csgpix_scene::nrrd::parse_nrrd_limited(
+                bytes,
+                "f.nrrd",
+                Some(dir),
+                csgpix_scene::nrrd::SampleLimit {
+                    samples: 1 << 20,
+                    source: "",
+                },
+            )
+            .err()
+            .map(|e| e.to_string())
         }
         "stl" => csgpix_scene::trimesh::TriMesh::parse(bytes, "f.stl", false)
             .err()

@@ -3,6 +3,7 @@
 //! [`Limit`] for both.
 
 pub use csgpix_scene::memory::{default_mib, MAX_MIB};
+use csgpix_scene::nrrd::SampleLimit;
 
 /// A memory limit, and the name its user gave it in messages.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -56,10 +57,10 @@ impl Limit {
         })
     }
 
-    /// Make the file readers refuse what would not fit: NRRD volumes are refused by their
-    /// header's `sizes`, before their data (gzip or raw) is read.
-    pub fn limit_readers(&self) {
-        csgpix_scene::nrrd::limit_samples_to_memory(self.bytes(), self.name);
+    /// The most samples a dataset may have under this limit, for the file readers: a NRRD
+    /// volume is refused by its header's `sizes`, before its data (gzip or raw) is read.
+    pub fn samples(&self) -> SampleLimit {
+        SampleLimit::of_memory(self.bytes(), self.name)
     }
 }
 
@@ -88,9 +89,9 @@ impl MaxMemory {
         self.limit().bytes()
     }
 
-    /// Make the file readers refuse what would not fit ([`Limit::limit_readers`]).
-    pub fn limit_readers(&self) {
-        self.limit().limit_readers();
+    /// The readers' sample limit ([`Limit::samples`]).
+    pub fn samples(&self) -> SampleLimit {
+        self.limit().samples()
     }
 
     /// Refuse `need` bytes of `what` when over the limit, saying how to lower it (`fix`).

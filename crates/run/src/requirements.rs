@@ -116,7 +116,6 @@ struct Report {
 }
 
 pub fn run(a: Args) -> crate::Result<ExitCode> {
-    a.mem.limit_readers();
     let at = |e: Error| e.context(a.scene.display().to_string());
     let scene = csgpix_openscad::read_scene(&a.scene)?;
     scene.require_convex(&a.scene.display().to_string(), "`requirements`")?;

@@ -103,7 +103,6 @@ struct Report {
 }
 
 pub fn run(a: Args) -> crate::Result<ExitCode> {
-    a.mem.limit_readers();
     let mut outs = Outputs::new();
     let mesh_out = outs.file("-o", &a.out, &mesh::EXTENSIONS)?;
     let format = mesh::Format::of_path(&a.out)?;
@@ -243,7 +242,7 @@ fn load(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
 /// `space directions`), filled where `--threshold` says.
 fn load_nrrd(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
     let p = &a.input;
-    let n = csgpix_scene::nrrd::read_nrrd(p)?;
+    let n = csgpix_scene::nrrd::read_nrrd_limited(p, a.mem.samples())?;
     let frame = sculpt::nrrd_frame(&n)
         .map_err(|e| lib_errors::sculpt(e).context(p.display().to_string()))?;
     let dims = n.sizes;
@@ -258,7 +257,11 @@ fn load_nrrd(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
 /// feeding the optimized octree slice by slice.
 fn load_scene(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
     let name = a.input.display().to_string();
-    let loaded = csgpix_voxel::sampled::load_scene(&a.input)?;
+    let options = csgpix_openscad::ReadOptions {
+        samples: a.mem.samples(),
+        ..Default::default()
+    };
+    let loaded = csgpix_voxel::sampled::load_scene_with(&a.input, &options)?;
     let scene = &loaded.scene;
     let grid = a
         .grid

@@ -75,7 +75,6 @@ struct Report<'a> {
 }
 
 pub fn run(a: Args) -> crate::Result<ExitCode> {
-    a.mem.limit_readers();
     let file = a.scene.display().to_string();
     let text = csgpix_openscad::scene_text(&a.scene)?;
     let sweep = Sweep {

@@ -18,7 +18,9 @@ use csgpix_sculpt::octree::{self, StoreKind};
 use csgpix_voxel::blend::{BlendEval, Union};
 use csgpix_voxel::blist::{BlistEval, BlistTable};
 use csgpix_voxel::evaluate::{StackEval, TreeEval};
-use csgpix_voxel::sampled::{load_scene_with, parse_binding, scene_from_expr, Binding, Loaded};
+use csgpix_voxel::sampled::{
+    load_scene_with, parse_binding, scene_from_expr_with, Binding, Loaded,
+};
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{
     memory_estimate, voxelize, voxelize_slabs, voxelize_streaming, BindingProblem,
@@ -702,11 +704,18 @@ fn load(a: &Args) -> crate::Result<Loaded> {
                 max_vertices: Some(csgpix_openscad::ReadOptions::max_vertices_for(
                     a.mem.bytes(),
                 )),
+                samples: a.mem.samples(),
                 ..Default::default()
             };
             load_scene_with(p, &options).map_err(flag_message)
         }
-        (None, Some(e)) => scene_from_expr(e, &a.prim).map_err(flag_message),
+        (None, Some(e)) => {
+            let options = csgpix_openscad::ReadOptions {
+                samples: a.mem.samples(),
+                ..Default::default()
+            };
+            scene_from_expr_with(e, &a.prim, &options).map_err(flag_message)
+        }
         (None, None) => Err(Error::options("--expr", "give a scene file or --expr")),
     }
 }
@@ -824,7 +833,6 @@ fn name_outputs(a: &Args) -> crate::Result<Named> {
 }
 
 pub fn run(a: Args) -> crate::Result<ExitCode> {
-    a.mem.limit_readers();
     check_format(&a)?;
     let name = input_name(&a);
     let mut named = name_outputs(&a)?;

@@ -189,41 +189,43 @@ pub fn read(bytes: &[u8]) -> Result<([usize; 3], Vec<u8>)> {
 // General 3D scalar volumes (NRRD format spec, <https://teem.sourceforge.net/nrrd/format.html>).
 
 /// The most samples [`parse_nrrd`] accepts (1024³; 4 GiB once held as `f32`). Larger `sizes`
-/// are refused before anything is allocated; [`parse_nrrd_limited`] takes another limit.
+/// are refused before anything is allocated; [`parse_nrrd_limited`] takes a lower limit.
 pub const MAX_SAMPLES: usize = 1 << 30;
 
 /// Bytes a sample may cost a reader and its caller: the data as stored (at most 8), the
 /// `f32` sample (4), and as much again for a dataset built from it.
 pub const BYTES_PER_SAMPLE: u64 = 16;
 
-/// The samples [`parse_nrrd`] accepts now: [`MAX_SAMPLES`], or fewer after
-/// [`limit_samples_to_memory`].
-static SAMPLE_LIMIT: std::sync::atomic::AtomicUsize =
-    std::sync::atomic::AtomicUsize::new(MAX_SAMPLES);
-
-/// What set [`SAMPLE_LIMIT`], named after the limit in messages.
-static SAMPLE_LIMIT_SOURCE: std::sync::Mutex<&str> = std::sync::Mutex::new("a memory limit");
-
-/// Refuse, from now on, volumes whose samples would cost more than `bytes`
-/// ([`BYTES_PER_SAMPLE`] each): a gzip member that inflates past a run's memory limit is
-/// refused by its header's `sizes`, before a byte is decoded. `source` names the limit in
-/// that error (e.g. the option that set it).
-pub fn limit_samples_to_memory(bytes: u64, source: &'static str) {
-    let n = (bytes / BYTES_PER_SAMPLE).min(MAX_SAMPLES as u64) as usize;
-    SAMPLE_LIMIT.store(n, std::sync::atomic::Ordering::Relaxed);
-    *SAMPLE_LIMIT_SOURCE
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner) = source;
+/// The most samples a reader takes of one volume, and what sets that limit (named in the
+/// refusal): given by the caller, from its memory limit, so that a gzip member that would
+/// inflate past it is refused by its header's `sizes`, before a byte is decoded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SampleLimit {
+    /// Samples at most.
+    pub samples: usize,
+    /// What set it (e.g. `--max-memory`); empty for [`SampleLimit::NONE`].
+    pub source: &'static str,
 }
 
-fn sample_limit_source() -> &'static str {
-    *SAMPLE_LIMIT_SOURCE
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner)
+impl SampleLimit {
+    /// No limit but [`MAX_SAMPLES`].
+    pub const NONE: SampleLimit = SampleLimit {
+        samples: MAX_SAMPLES,
+        source: "",
+    };
+
+    /// The samples `bytes` of memory hold ([`BYTES_PER_SAMPLE`] each), at most
+    /// [`MAX_SAMPLES`]; `source` names the limit.
+    pub fn of_memory(bytes: u64, source: &'static str) -> SampleLimit {
+        let samples = (bytes / BYTES_PER_SAMPLE).min(MAX_SAMPLES as u64) as usize;
+        SampleLimit { samples, source }
+    }
 }
 
-fn sample_limit() -> usize {
-    SAMPLE_LIMIT.load(std::sync::atomic::Ordering::Relaxed)
+impl Default for SampleLimit {
+    fn default() -> SampleLimit {
+        SampleLimit::NONE
+    }
 }
 
 /// A 3D scalar volume: samples on the lattice `origin + directions · (i, j, k)`.
@@ -455,8 +457,14 @@ pub(crate) fn invertible(d: &DMat3) -> bool {
 
 // --- Reading -----------------------------------------------------------------------------------
 
-/// Read a NRRD file; a detached `data file:` is found relative to the file's directory.
+/// Read a NRRD file of at most [`MAX_SAMPLES`] samples ([`read_nrrd_limited`]).
 pub fn read_nrrd(path: &Path) -> Result<Nrrd> {
+    read_nrrd_limited(path, SampleLimit::NONE)
+}
+
+/// Read a NRRD file of at most `limit` samples; a detached `data file:` is found relative to
+/// the file's directory.
+pub fn read_nrrd_limited(path: &Path, limit: SampleLimit) -> Result<Nrrd> {
     let name = path.display().to_string();
     let len = std::fs::metadata(path)
         .map_err(|e| Error::io(&name, &e))?
@@ -467,7 +475,7 @@ pub fn read_nrrd(path: &Path) -> Result<Nrrd> {
         return Err(Error::invalid(msg).context(&name));
     }
     let bytes = std::fs::read(path).map_err(|e| Error::io(&name, &e))?;
-    parse_nrrd(&bytes, &name, path.parent())
+    parse_nrrd_limited(&bytes, &name, path.parent(), limit)
 }
 
 /// Parse a NRRD file's bytes (NRRD format spec, magics `NRRD0001` to `NRRD0005`), of at most
@@ -477,7 +485,7 @@ pub fn read_nrrd(path: &Path) -> Result<Nrrd> {
 /// Every error is one line, `FILE:LINE:COL: what was expected`, at the offending header field
 /// or value; problems with the samples themselves read `FILE: data: ...`.
 pub fn parse_nrrd(bytes: &[u8], file: &str, dir: Option<&Path>) -> Result<Nrrd> {
-    parse_nrrd_limited(bytes, file, dir, sample_limit())
+    parse_nrrd_limited(bytes, file, dir, SampleLimit::NONE)
 }
 
 /// [`parse_nrrd`] with another limit on the number of samples.
@@ -485,10 +493,10 @@ pub fn parse_nrrd_limited(
     bytes: &[u8],
     file: &str,
     dir: Option<&Path>,
-    max_samples: usize,
+    limit: SampleLimit,
 ) -> Result<Nrrd> {
     let h = split_header(bytes, file)?;
-    let plan = plan(&h, max_samples)?;
+    let plan = plan(&h, limit)?;
     let (origin, directions) = geometry(&h)?;
     let raw = fetch(&h, &plan, bytes, dir)?;
     let samples = raw
@@ -707,11 +715,11 @@ struct Plan {
     byte_skip: Option<u64>,
 }
 
-fn plan(h: &Header, max_samples: usize) -> Result<Plan> {
+fn plan(h: &Header, limit: SampleLimit) -> Result<Plan> {
     dimension(h)?;
     let ty = sample_type(h)?;
     let sizes = sizes(h)?;
-    let bytes = data_bytes(h, sizes, ty, max_samples)?;
+    let bytes = data_bytes(h, sizes, ty, limit)?;
     let encoding = encoding(h)?;
     let big = big_endian(h, ty)?;
     let (line_skip, byte_skip) = skips(h, encoding)?;
@@ -766,16 +774,17 @@ fn sizes(h: &Header) -> Result<[usize; 3]> {
     Ok(sizes)
 }
 
-/// The data bytes `sizes` need, refused past `max_samples` samples.
-fn data_bytes(h: &Header, sizes: [usize; 3], ty: SampleType, max: usize) -> Result<usize> {
+/// The data bytes `sizes` need, refused past `limit`.
+fn data_bytes(h: &Header, sizes: [usize; 3], ty: SampleType, limit: SampleLimit) -> Result<usize> {
+    let max = limit.samples;
     let count = sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n));
     let bytes = count.and_then(|c| c.checked_mul(ty.size()));
     match (count, bytes) {
         (Some(c), Some(b)) if c <= max => Ok(b),
         _ => {
             let [x, y, z] = sizes;
-            let why = match max < MAX_SAMPLES {
-                true => format!(" ({})", sample_limit_source()),
+            let why = match max < MAX_SAMPLES && !limit.source.is_empty() {
+                true => format!(" ({})", limit.source),
                 false => String::new(),
             };
             let msg = format!("sizes {x}×{y}×{z} exceed the limit of {max} samples{why}");
@@ -1657,7 +1666,15 @@ mod tests {
         let huge =
             "NRRD0004\ntype: double\ndimension: 3\nsizes: 4294967296 4294967296 4294967296\n\n";
         fails(huge, &[], "4:8", "exceed the limit");
-        let small = parse_nrrd_limited(&file(&format!("{U8}\n"), &[0; 8]), F, None, 7);
+        let small = parse_nrrd_limited(
+            &file(&format!("{U8}\n"), &[0; 8]),
+            F,
+            None,
+            SampleLimit {
+                samples: 7,
+                source: "",
+            },
+        );
         assert!(small
             .unwrap_err()
             .to_string()

@@ -26,7 +26,7 @@ use crate::slice::Mask;
 use csgpix_draw::project::colour_code;
 use csgpix_scene::dataset::Dataset;
 use csgpix_scene::grid::Grid;
-use csgpix_scene::nrrd::read_nrrd;
+use csgpix_scene::nrrd::{read_nrrd_limited, SampleLimit};
 use csgpix_scene::solid::{CsgNode, CsgScene, Import, IMPORTED};
 use csgpix_scene::trimesh::TriMesh;
 use csgpix_scene::Location;
@@ -209,13 +209,23 @@ pub fn load_scene_with(path: &Path, options: &csgpix_openscad::ReadOptions) -> R
     let name = path.display().to_string();
     let scene = csgpix_openscad::read_scene_with(path, options)?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let sampled = load_imports(&scene, &name, &dir)?;
+    let sampled = load_imports_limited(&scene, &name, &dir, options.samples)?;
     Ok(Loaded { scene, sampled })
 }
 
 /// Load the scene's imports; `scene_file` names the scene in messages, `dir` is where
 /// relative paths start.
 pub fn load_imports(scene: &CsgScene, scene_file: &str, dir: &Path) -> Result<Vec<Sampled>> {
+    load_imports_limited(scene, scene_file, dir, SampleLimit::NONE)
+}
+
+/// [`load_imports`], datasets of at most `samples` samples.
+pub fn load_imports_limited(
+    scene: &CsgScene,
+    scene_file: &str,
+    dir: &Path,
+    samples: SampleLimit,
+) -> Result<Vec<Sampled>> {
     let first = scene.solids.len();
     scene
         .imports
@@ -227,7 +237,7 @@ pub fn load_imports(scene: &CsgScene, scene_file: &str, dir: &Path) -> Result<Ve
                 line: imp.line,
                 col: imp.col,
             };
-            load_import(imp, first + j, &Origin::Scene(at), dir)
+            load_import(imp, first + j, &Origin::Scene(at), dir, samples)
         })
         .collect()
 }
@@ -260,7 +270,13 @@ impl Origin<'_> {
 }
 
 /// Load one import (primitive `index`); `origin` says where it was named.
-fn load_import(imp: &Import, index: usize, origin: &Origin, dir: &Path) -> Result<Sampled> {
+fn load_import(
+    imp: &Import,
+    index: usize,
+    origin: &Origin,
+    dir: &Path,
+    samples: SampleLimit,
+) -> Result<Sampled> {
     let colour = imp
         .colour
         .map_or(1 + (index % 6) as u32, colour_code)
@@ -288,7 +304,7 @@ fn load_import(imp: &Import, index: usize, origin: &Origin, dir: &Path) -> Resul
     });
     let shape = match imp.threshold {
         Some(threshold) => {
-            let data = Box::new(read_nrrd(&path).and_then(Dataset::new)?);
+            let data = Box::new(read_nrrd_limited(&path, samples).and_then(Dataset::new)?);
             Shape::Dataset {
                 data,
                 threshold,
@@ -370,6 +386,16 @@ pub fn parse_binding(s: &str) -> Result<Binding> {
 /// assert!(matches!(scene_from_expr("A +", &[]), Err(Error::Expr(_))));
 /// ```
 pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded> {
+    scene_from_expr_with(expr, bindings, &csgpix_openscad::ReadOptions::default())
+}
+
+/// [`scene_from_expr`] with the reader's options for the bound files (their datasets'
+/// sample limit, the scenes' fallback).
+pub fn scene_from_expr_with(
+    expr: &str,
+    bindings: &[Binding],
+    options: &csgpix_openscad::ReadOptions,
+) -> Result<Loaded> {
     let e = csgpix_scene::csg_expr::parse(expr).map_err(|error| {
         // The expression is one line: its column is the place to name.
         let col = error.location().map_or(1, |at| at.col);
@@ -394,7 +420,7 @@ pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded> {
             .iter()
             .find(|b| &b.name == name)
             .ok_or_else(|| Error::Unbound { name: name.clone() })?;
-        parts.push(add_part(&mut scene, &mut sampled, b)?);
+        parts.push(add_part(&mut scene, &mut sampled, b, options)?);
     }
     let mut root = e.root.clone();
     // Every name stands for its part's tree.
@@ -410,7 +436,12 @@ pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded> {
 
 /// Add one bound file's primitives to `scene`; its tree, with solids numbered in `scene` and
 /// imports as `IMPORTED + j`.
-fn add_part(scene: &mut CsgScene, sampled: &mut Vec<Sampled>, b: &Binding) -> Result<CsgNode> {
+fn add_part(
+    scene: &mut CsgScene,
+    sampled: &mut Vec<Sampled>,
+    b: &Binding,
+    options: &csgpix_openscad::ReadOptions,
+) -> Result<CsgNode> {
     let is_csg = b
         .file
         .extension()
@@ -419,7 +450,7 @@ fn add_part(scene: &mut CsgScene, sampled: &mut Vec<Sampled>, b: &Binding) -> Re
         if b.threshold.is_some() {
             return Err(binding(b, BindingProblem::ThresholdOnScene));
         }
-        let part = load_scene(&b.file)?;
+        let part = load_scene_with(&b.file, options)?;
         let (so, io) = (scene.solids.len(), scene.imports.len());
         let n = part.scene.solids.len();
         let mut tree = part.scene.root.clone();
@@ -465,6 +496,7 @@ fn add_part(scene: &mut CsgScene, sampled: &mut Vec<Sampled>, b: &Binding) -> Re
         scene.solids.len() + scene.imports.len(),
         &Origin::Binding(&b.name),
         Path::new(""),
+        options.samples,
     )?;
     scene.imports.push(import);
     sampled.push(loaded);
