@@ -21,7 +21,6 @@ pub mod error;
 pub mod expr;
 pub mod grid;
 pub mod input;
-pub mod memory;
 pub mod mesh;
 pub mod nrrd;
 pub mod output;
