@@ -243,8 +243,9 @@ pub struct Nrrd {
     pub sample_type: SampleType,
     /// The least and the greatest sample.
     pub range: (f32, f32),
-    /// The `space` the file declared (e.g. `right-anterior-superior`), if any: coordinates
-    /// are scene units whatever it is; a voxelization of the dataset keeps it.
+    /// The `space` the file declared (e.g. `right-anterior-superior`), if any other than
+    /// [`NEUTRAL_SPACE`] (None, which is written as that): coordinates are scene units
+    /// whatever it is; a voxelization of the dataset keeps it.
     pub space: Option<String>,
 }
 
@@ -505,7 +506,11 @@ pub fn parse_nrrd_limited(
         .collect();
     let mut nrrd = Nrrd::new(plan.sizes, samples, origin, directions, plan.ty)
         .map_err(|e| e.context("data").context(file))?;
-    nrrd.space = h.get("space").map(|f| f.value.trim().to_string());
+    // The neutral frame is no frame of the dataset's own (None writes it back).
+    nrrd.space = h
+        .get("space")
+        .map(|f| f.value.trim().to_string())
+        .filter(|s| s != NEUTRAL_SPACE);
     Ok(nrrd)
 }
 
