@@ -41,8 +41,8 @@ pub enum Error {
     /// Golden vectors of the Verilog twin that do not parse.
     #[error(transparent)]
     Golden(#[from] rtl_model::verilog::GoldenError),
-    /// A program that does not compile for the array, located in its scene
-    /// (`csgpix_draw::scenes::Scene::locate`), one line.
+    /// A program that does not compile for the array, said of the solid it comes from (the
+    /// scene-wide compile errors of `requirements` and the study, which have no file place).
     #[error("{0}")]
     Compile(String),
     /// Golden vectors that do not fit the table they are checked against.

@@ -6,7 +6,7 @@
 //! parsed by clap), its run and its report; beside them what the commands share: the memory
 //! limit ([`memory`]), the study's sweep ([`sweep`]) and charts ([`plot`]), PNG output
 //! ([`png`]) and voxel stores fed from the voxelizer ([`store`]). Each command returns its
-//! exit code, or an error message (exit status 2).
+//! exit code, or an [`Error`] (typed, one line when printed; exit status 2).
 
 /// The flags' value names as [`FromStr`](std::str::FromStr), for the Python binding's keyword
 /// arguments: one spelling of every value, the command line's.
