@@ -125,7 +125,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     }
     let grid = match a.bounds {
         Some((lo, hi)) => a.res.spec().grid(lo, hi),
-        None => Grid::of_scene(&scene, [1; 3]).and_then(|g| a.res.spec().grid(g.min, g.max)),
+        None => Grid::scene_bounds(&scene).and_then(|(lo, hi)| a.res.spec().grid(lo, hi)),
     }
     .map_err(|e| match e.kind() {
         csgpix_scene::Kind::NeedsBounds => at(Error::options(

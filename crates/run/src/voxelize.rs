@@ -485,15 +485,16 @@ impl Resolution {
 pub fn parse_res(s: &str) -> crate::error::Parsed<Resolution> {
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
     let parts: Vec<&str> = s.split(['x', 'X']).collect();
-    let (res, dims) = match parts[..] {
-        [a] => (Resolution::Longest(n(a)?), [n(a)?; 3]),
-        [a, b, c] => {
-            let dims = [n(a)?, n(b)?, n(c)?];
-            (Resolution::Axes(dims), dims)
-        }
+    let res = match parts[..] {
+        [a] => Resolution::Longest(n(a)?),
+        [a, b, c] => Resolution::Axes([n(a)?, n(b)?, n(c)?]),
         _ => return Err("expected N or NXxNYxNZ, e.g. 64 or 64x64x32".into()),
     };
-    if dims.iter().any(|&d| d == 0 || d > 65536) {
+    let sides = match res {
+        Resolution::Longest(n) => vec![n],
+        Resolution::Axes(dims) => dims.to_vec(),
+    };
+    if sides.iter().any(|&d| d == 0 || d > 65536) {
         return Err(crate::error::BadValue(format!(
             "{s}: each side must be 1..=65536"
         )));

@@ -20,6 +20,12 @@ impl Grid {
     /// A grid over the scene's bounds (every solid's vertices, so subtracted solids count).
     /// A scene without solids has none: the error is then [`Error::NeedsBounds`].
     pub fn of_scene(scene: &CsgScene, dims: [usize; 3]) -> Result<Grid> {
+        let (min, max) = Grid::scene_bounds(scene)?;
+        Grid::new(dims, min, max)
+    }
+
+    /// The box around every solid's vertices; [`Error::NeedsBounds`] when there is none.
+    pub fn scene_bounds(scene: &CsgScene) -> Result<(DVec3, DVec3)> {
         let pts = scene.solids.iter().flat_map(|s| s.vertices.iter());
         let (min, max) = pts.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), p| {
             (a.min(DVec3::from(*p)), b.max(DVec3::from(*p)))
@@ -27,7 +33,7 @@ impl Grid {
         if !min.is_finite() {
             return Err(Error::NeedsBounds);
         }
-        Grid::new(dims, min, max)
+        Ok((min, max))
     }
 
     /// A grid over an explicit box.
