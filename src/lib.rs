@@ -10,7 +10,8 @@
 //! | crate | re-exported as | what |
 //! |---|---|---|
 //! | `rtl-model` | [`rtl_model`] | the processor: depth word, DEPGEN, comparator, select logic, clipping stack, the `cycle` and `word` arrays |
-//! | `csgpix-scene` | [`scene`] | display lists, expressions, scenes, meshes, NRRD, grids and volumes, outputs |
+//! | `csgpix-output` | [`output`] | outputs staged and committed whole, removed on a signal |
+//! | `csgpix-scene` | [`scene`] | display lists, expressions, scenes, meshes, NRRD, grids and volumes |
 //! | `csgpix-openscad` | [`openscad`] | the OpenSCAD language: `.csg`, `.scad` through openscad, extrusions, hulls |
 //! | `csgpix-draw` | [`draw`] | scenes → display lists → array operations, the `float` model, panels, throughput |
 //! | `csgpix-voxel` | [`voxel`] | slices from the array, masks, the Blist and baseline evaluators, requirements |
@@ -20,6 +21,7 @@
 
 pub use csgpix_draw as draw;
 pub use csgpix_openscad as openscad;
+pub use csgpix_output as output;
 pub use csgpix_run as run;
 pub use csgpix_scene as scene;
 pub use csgpix_sculpt as sculpt;

@@ -29,8 +29,8 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    // Staged outputs are removed if the run is interrupted (crates/scene/src/output.rs).
-    if let Err(e) = csgpix_scene::output::install_signal_cleanup() {
+    // Staged outputs are removed if the run is interrupted (crates/output).
+    if let Err(e) = csgpix_output::install_signal_cleanup() {
         eprintln!("csgpix: cannot watch for signals: {e}");
         return ExitCode::from(2);
     }

@@ -1,6 +1,6 @@
 //! Output files through the CLI: symlinks, FIFOs and devices written through, `-o -`, output
 //! names checked before the run, all outputs or none, nothing left behind by a signal
-//! (crates/scene/src/output.rs).
+//! (crates/output).
 
 mod common;
 use common::csgpix;

@@ -108,22 +108,18 @@ pub fn voxel(e: csgpix_voxel::Error) -> PyErr {
 }
 
 /// An error of the run layer: the libraries' errors as above; a scene error wrapped in
-/// context keeps its place (and an unreadable file its `OSError`).
+/// context keeps its place, and a file the system refused (an input or an output) raises its
+/// `OSError`.
 pub fn run(e: csgpix_run::Error) -> PyErr {
     use csgpix_run::Error as R;
     match e {
         R::Scene(e) => scene(e),
         R::Voxel(e) => voxel(e),
         R::Draw(e) => draw(e),
-        e => match e.scene() {
-            Some(s) => match s.io_kind() {
-                Some(kind) => os_error(kind, e.to_string()),
-                None => {
-                    let at = place(s.location());
-                    error(e.to_string(), at)
-                }
-            },
-            None => text(e.to_string()),
+        e => match (e.io_kind(), e.scene()) {
+            (Some(kind), _) => os_error(kind, e.to_string()),
+            (None, Some(s)) => error(e.to_string(), place(s.location())),
+            (None, None) => text(e.to_string()),
         },
     }
 }

@@ -5,7 +5,7 @@ use crate::Error;
 use std::path::PathBuf;
 
 use clap::ValueEnum;
-use csgpix_scene::output::{Out, Outputs};
+use csgpix_output::{Out, Outputs};
 use rtl_model::array::check_program;
 use rtl_model::probe::Recorder;
 use rtl_model::select::vectors::{derive_with_ties, Ties};

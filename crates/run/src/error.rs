@@ -20,6 +20,9 @@ pub enum Error {
     /// Loading a scene for drawing.
     #[error(transparent)]
     Load(#[from] csgpix_draw::scenes::LoadError),
+    /// An output that cannot be named, staged or committed.
+    #[error(transparent)]
+    Output(#[from] csgpix_output::Error),
     /// A voxel store's or sculpting's.
     #[error(transparent)]
     Sculpt(#[from] csgpix_sculpt::Error),
@@ -124,6 +127,17 @@ impl Error {
             Error::Load(csgpix_draw::scenes::LoadError::Scene(e)) => Some(e),
             Error::Context { source, .. } => source.scene(),
             _ => None,
+        }
+    }
+
+    /// The system's kind of failure, when a file could not be read or written (an input,
+    /// through the scene's error, or an output), through any context.
+    pub fn io_kind(&self) -> Option<std::io::ErrorKind> {
+        match self {
+            Error::Output(e) => e.io_kind(),
+            Error::Io { source, .. } => Some(source.kind()),
+            Error::Context { source, .. } => source.io_kind(),
+            e => e.scene().and_then(csgpix_scene::Error::io_kind),
         }
     }
 }

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use csgpix_draw::compile::{clip_scene_ops, coeffs, scene_ops, CompileError};
-use csgpix_scene::output::{Out, Outputs};
+use csgpix_output::{Out, Outputs};
 use rtl_model::array::{check_program, program_cycles};
 use rtl_model::program::{translate, Op};
 use rtl_model::verilog::{pixel, stimulus};

@@ -215,7 +215,7 @@ pub fn write_generated(
             ExitCode::from(1)
         });
     }
-    let mut outs = csgpix_scene::output::Outputs::new();
+    let mut outs = csgpix_output::Outputs::new();
     let dir = outs.dir("--out", out)?;
     for (name, text) in files {
         outs.write_in(dir, name, |w| w.write_all(text.as_bytes()))?;

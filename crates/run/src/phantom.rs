@@ -5,9 +5,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::ValueEnum;
+use csgpix_output::Outputs;
 use csgpix_scene::dataset::phantom;
 use csgpix_scene::nrrd::{nrrd_bytes, Encoding, Endian};
-use csgpix_scene::output::Outputs;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \

@@ -1,4 +1,4 @@
-//! Pictures out: PNG bytes for an [`Outputs`](csgpix_scene::output::Outputs) stage.
+//! Pictures out: PNG bytes for an [`Outputs`](csgpix_output::Outputs) stage.
 
 use std::io::Write;
 

@@ -8,7 +8,7 @@ use std::time::Instant;
 
 use csgpix_draw::compile::{clip_scene_ops, scene_ops};
 use csgpix_draw::palette::image_rgb;
-use csgpix_scene::output::{Out, Outputs};
+use csgpix_output::{Out, Outputs};
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::array::check_program;
 use rtl_model::program::{CReg, Op, Reg};

@@ -6,8 +6,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
+use csgpix_output::Outputs;
 use csgpix_scene::mesh;
-use csgpix_scene::output::Outputs;
 use csgpix_sculpt::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix_sculpt::{self as sculpt, Frame, Latency, Sculptor, Step, Tool};
 use csgpix_voxel::{memory_estimate, Slicer, SlicerOptions, Volume};

@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use csgpix_scene::output::{Out, Outputs};
+use csgpix_output::{Out, Outputs};
 use std::time::Instant;
 
 use super::voxelize::SamplingArg;

@@ -5,7 +5,7 @@ use crate::Error;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use csgpix_scene::output::{Out, Outputs};
+use csgpix_output::{Out, Outputs};
 
 use crate::plot::{Chart, Series};
 use csgpix_draw::panels::{

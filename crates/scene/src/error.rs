@@ -23,31 +23,7 @@ impl fmt::Display for Location {
     }
 }
 
-/// A system error reading or writing a file: its kind, for a caller to tell a missing file
-/// from a forbidden one, and the system's message.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{message}")]
-pub struct IoError {
-    /// What kind of failure it is.
-    pub kind: std::io::ErrorKind,
-    /// The system's message (`No such file or directory (os error 2)`).
-    pub message: String,
-}
-
-impl From<&std::io::Error> for IoError {
-    fn from(e: &std::io::Error) -> IoError {
-        IoError {
-            kind: e.kind(),
-            message: e.to_string(),
-        }
-    }
-}
-
-impl From<std::io::Error> for IoError {
-    fn from(e: std::io::Error) -> IoError {
-        IoError::from(&e)
-    }
-}
+pub use csgpix_output::IoError;
 
 /// A scene error: what went wrong and, for bad input, where.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -93,12 +69,9 @@ pub enum Error {
         /// The most voxels along an axis ([`crate::grid::MAX_GRID_SIDE`]).
         limit: usize,
     },
-    /// An output's directory (or a parent of it) is a file.
-    #[error("{} is not a directory", OneLine(path))]
-    NotADirectory {
-        /// The path, as shown.
-        path: String,
-    },
+    /// An output that cannot be written (a writer's path, refused or failed).
+    #[error(transparent)]
+    Output(#[from] csgpix_output::Error),
     /// Input whose content breaks its format's rules or a setting's range: what is wrong,
     /// one line (the place, when it has one, is in an enclosing [`Error::At`]).
     #[error("{}", OneLine(.0))]
@@ -218,6 +191,7 @@ impl Error {
     pub fn io_kind(&self) -> Option<std::io::ErrorKind> {
         match self {
             Error::Io(e) => Some(e.kind),
+            Error::Output(e) => e.io_kind(),
             Error::At { problem: e, .. } | Error::Context { source: e, .. } => e.io_kind(),
             _ => None,
         }

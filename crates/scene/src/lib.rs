@@ -3,7 +3,7 @@
 //! Display lists (§5.2) and clipping functions (§5.2.1) for the array; CSG scenes over convex
 //! solids (read from OpenSCAD by `csgpix-openscad`), CSG expressions over named primitives (§4.3); closed triangle meshes and NRRD volume
 //! datasets as primitives (§3.2-3.3); the voxel grid and volumes (§4.4); mesh and volume
-//! writers, and outputs written whole or not at all. No processor here: `csgpix-draw` turns
+//! writers (written whole or not at all through `csgpix-output`). No processor here: `csgpix-draw` turns
 //! scenes into array operations.
 //!
 //! Clipping functions and CSG expressions share one grammar and parser ([`expr`]). Every
@@ -23,7 +23,6 @@ pub mod grid;
 pub mod input;
 pub mod mesh;
 pub mod nrrd;
-pub mod output;
 pub mod solid;
 pub mod trimesh;
 

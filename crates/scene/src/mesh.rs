@@ -1,13 +1,13 @@
 //! Triangle meshes out: binary STL, OBJ and binary PLY, each written whole or not at all
-//! ([`crate::output::write_atomic`]). OBJ and PLY share vertices (equal coordinates are one
+//! ([`csgpix_output::write_atomic`]). OBJ and PLY share vertices (equal coordinates are one
 //! vertex), so a closed surface stays closed in the file; STL has no vertex sharing.
 
 use std::collections::HashMap;
 use std::io::Write;
 use std::path::Path;
 
-use crate::output::write_atomic;
 use crate::{Error, Result};
+use csgpix_output::write_atomic;
 
 /// A triangle: three vertices, counter-clockwise seen from outside.
 pub type Tri = [[f32; 3]; 3];
@@ -45,7 +45,7 @@ impl Format {
 /// Writes `tris` to `path` in the format of its extension, atomically.
 pub fn write(path: &Path, tris: &[Tri], comment: &str) -> Result<()> {
     let f = Format::of_path(path)?;
-    write_atomic(path, |w| write_format(w, f, tris, comment))
+    Ok(write_atomic(path, |w| write_format(w, f, tris, comment))?)
 }
 
 /// Writes `tris` into `w` in format `f`.

@@ -18,8 +18,8 @@ use std::path::{Path, PathBuf};
 use glam::{DMat3, DVec3};
 
 use crate::grid::Grid;
-use crate::output::write_atomic;
 use crate::{Error, Result};
+use csgpix_output::write_atomic;
 
 /// The `space` of a volume that no dataset placed in an anatomical frame: scene axes,
 /// right-handed, in scene units.
@@ -78,7 +78,9 @@ pub fn header_as(grid: &Grid, comment: &str, format: &VolumeFormat) -> String {
 
 /// Write the volume (X fastest, then Y, then Z) whole or not at all.
 pub fn write(path: &Path, grid: &Grid, voxels: &[u8], comment: &str) -> Result<()> {
-    write_atomic(path, |w| write_volume(w, grid, voxels, comment))
+    Ok(write_atomic(path, |w| {
+        write_volume(w, grid, voxels, comment)
+    })?)
 }
 
 /// The NRRD file of the volume (X fastest, then Y, then Z), into `w`: raw, neutral space.
@@ -1147,7 +1149,7 @@ fn fault(h: &Header, plan: &Plan, e: Fault) -> Error {
 pub fn write_nrrd(path: &Path, nrrd: &Nrrd, encoding: Encoding, comment: &str) -> Result<()> {
     let bytes = nrrd_bytes(nrrd, encoding, Endian::Little, comment)
         .map_err(|e| e.context(path.display()))?;
-    write_atomic(path, |w| w.write_all(&bytes))
+    Ok(write_atomic(path, |w| w.write_all(&bytes))?)
 }
 
 /// The bytes of an attached-header NRRD file for `nrrd`: the header (`space origin`,

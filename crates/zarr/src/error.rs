@@ -109,7 +109,7 @@ pub enum Error {
         found: String,
     },
     /// A signal is stopping the run and removing its staged outputs: nothing more is
-    /// written ([`csgpix_scene::output::staged_write`]).
+    /// written ([`csgpix_output::staged_write`]).
     #[error("interrupted: the run's outputs are being removed")]
     Interrupted,
     /// A pyramid level past the store's levels.

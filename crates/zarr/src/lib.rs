@@ -94,8 +94,8 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::Arc;
 
+use csgpix_output::staged_write;
 use csgpix_scene::grid::Grid;
-use csgpix_scene::output::staged_write;
 use csgpix_voxel::runs::BrickRuns;
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{PixelBox, Route, Slicer, Work};
@@ -996,7 +996,7 @@ impl ZarrVolume {
             let (bj, bi) = (c / across, c % across);
             let at = [row, cut.at[0] + bj, cut.at[1] + bi].map(|c| c as u64);
             // The store makes the chunk's directories as it writes: never after a signal's
-            // cleanup has removed a staged store (crates/scene/src/output.rs).
+            // cleanup has removed a staged store (crates/output).
             let _writing = staged_write().ok_or(Error::Interrupted)?;
             let err = store_err(&self.path);
             let held = cut.held(bj, bi);

@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
-use csgpix_scene::output::staged_write;
+use csgpix_output::staged_write;
 use rayon::prelude::*;
 
 use crate::pyramid::all_equal;
@@ -266,7 +266,7 @@ pub(crate) fn write_row(
             };
             if o.file.is_none() {
                 // Directories are made, and the file created, never after a signal's cleanup
-                // has removed a staged store (crates/scene/src/output.rs); once open, writes
+                // has removed a staged store (crates/output); once open, writes
                 // land in the file whatever becomes of its name.
                 let _writing = staged_write().ok_or(Error::Interrupted)?;
                 if let Some(parent) = o.path.parent() {

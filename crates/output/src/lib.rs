@@ -23,7 +23,9 @@ use std::io::{Seek, Write};
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 
-use crate::{Error, Result};
+mod error;
+
+pub use error::{Error, IoError, Refusal, Result};
 
 /// Staged paths a signal must remove: temporary files and directories not yet committed.
 static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
@@ -269,15 +271,11 @@ impl Outputs {
         let shown = path.display().to_string();
         let err = |e: Error| e.context(format!("{flag} {shown}"));
         if path.as_os_str() == "-" {
-            return Err(err(Error::invalid(
-                "a directory of files cannot go to standard output",
-            )));
+            return Err(err(Refusal::DirectoryToStdout.into()));
         }
         let resolved = resolve(path).map_err(err)?;
         match std::fs::metadata(&resolved) {
-            Ok(m) if !m.is_dir() => {
-                return Err(err(Error::invalid("exists and is not a directory")))
-            }
+            Ok(m) if !m.is_dir() => return Err(err(Refusal::ExistsNotDirectory.into())),
             Ok(_) => {}
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
             Err(e) => return Err(err(Error::Io(e.into()))),
@@ -336,7 +334,7 @@ impl Outputs {
         let file = match &mut slot.stage {
             Stage::Named(s) => s.file(),
             Stage::Unnamed(f) => f,
-            Stage::Dir(..) => return Err(Error::invalid("is a directory output").context(shown)),
+            Stage::Dir(..) => return Err(Error::from(Refusal::DirectoryOutput).context(shown)),
         };
         file.set_len(0).map_err(err)?;
         file.rewind().map_err(err)?;
@@ -365,10 +363,10 @@ impl Outputs {
         let slot = &self.slots[out.0];
         match &slot.stage {
             Stage::Dir(dir, _) => Ok(dir.0.clone()),
-            _ => Err(Error::invalid(format!(
-                "{}: is not a directory output",
-                slot.shown
-            ))),
+            _ => Err(Refusal::NotDirectoryOutput {
+                shown: slot.shown.clone(),
+            }
+            .into()),
         }
     }
 
@@ -376,16 +374,17 @@ impl Outputs {
     pub fn stage_path(&mut self, out: Out, name: &str) -> Result<PathBuf> {
         let slot = &mut self.slots[out.0];
         let Stage::Dir(dir, names) = &mut slot.stage else {
-            return Err(Error::invalid(format!(
-                "{}: is not a directory output",
-                slot.shown
-            )));
+            return Err(Refusal::NotDirectoryOutput {
+                shown: slot.shown.clone(),
+            }
+            .into());
         };
         if name.contains('/') || name.starts_with('.') || name.is_empty() {
-            return Err(Error::invalid(format!(
-                "{}: bad file name {name:?}",
-                slot.shown
-            )));
+            return Err(Refusal::BadFileName {
+                shown: slot.shown.clone(),
+                name: name.to_string(),
+            }
+            .into());
         }
         if !names.iter().any(|n| n == name) {
             names.push(name.to_string());
@@ -416,9 +415,8 @@ impl Outputs {
         let shown = path.display().to_string();
         let target = if path.as_os_str() == "-" || names_stdout(path) {
             if !stdout {
-                return Err(Error::invalid(format!(
-                    "{flag} -: this output cannot go to standard output"
-                )));
+                let flag = flag.to_string();
+                return Err(Refusal::NotToStdout { flag }.into());
             }
             Target::Stdout
         } else {
@@ -450,14 +448,16 @@ impl Outputs {
 
     fn check_unique(&self, target: &Target, shown: &str) -> Result<()> {
         match self.slots.iter().find(|s| same_target(&s.target, target)) {
-            Some(s) if *target == Target::Stdout => Err(Error::invalid(format!(
-                "only one output can be - (standard output): {} and {shown}",
-                s.shown
-            ))),
-            Some(s) => Err(Error::invalid(format!(
-                "{} and {shown} name the same file",
-                s.shown
-            ))),
+            Some(s) if *target == Target::Stdout => Err(Refusal::TwoStdout {
+                first: s.shown.clone(),
+                second: shown.to_string(),
+            }
+            .into()),
+            Some(s) => Err(Refusal::SameFile {
+                first: s.shown.clone(),
+                second: shown.to_string(),
+            }
+            .into()),
             None => Ok(()),
         }
     }
@@ -527,10 +527,8 @@ fn replaceable(p: &Path, marker: &str) -> Result<()> {
             if entries.next().is_none() || p.join(marker).is_file() {
                 Ok(())
             } else {
-                Err(Error::invalid(format!(
-                    "exists and holds no {marker}: only a directory csgpix could have \
-                     written is replaced (remove it first)"
-                )))
+                let marker = marker.to_string();
+                Err(Refusal::NotReplaceable { marker }.into())
             }
         }
     }
@@ -615,7 +613,7 @@ fn resolve(path: &Path) -> Result<PathBuf> {
             _ => return Ok(p),
         }
     }
-    Err(Error::invalid("too many levels of symbolic links"))
+    Err(Refusal::SymlinkLoop.into())
 }
 
 /// The names of standard output a shell user writes: the same as `-`.
@@ -652,7 +650,7 @@ fn classify(path: &Path) -> Result<Target> {
     };
     let ft = meta.file_type();
     if ft.is_dir() {
-        return Err(Error::invalid("is a directory"));
+        return Err(Refusal::IsDirectory.into());
     }
     if ft.is_file() {
         // A shell's redirection seen through /dev/stdout or /proc/self/fd: write through.
@@ -682,19 +680,15 @@ fn special(p: &Path, meta: &std::fs::Metadata) -> Result<Target> {
     if ft.is_fifo() || ft.is_char_device() {
         Ok(Target::Through(p.to_path_buf()))
     } else if ft.is_block_device() {
-        Err(Error::invalid(
-            "is a block device: csgpix writes files, FIFOs and character devices",
-        ))
+        Err(Refusal::BlockDevice.into())
     } else {
-        Err(Error::invalid(
-            "is a socket or other special file: csgpix writes files, FIFOs and character devices",
-        ))
+        Err(Refusal::SpecialFile.into())
     }
 }
 
 #[cfg(not(unix))]
 fn special(_: &Path, _: &std::fs::Metadata) -> Result<Target> {
-    Err(Error::invalid("is not a regular file"))
+    Err(Refusal::NotRegularFile.into())
 }
 
 /// The name must end in one of `exts` (case-insensitive), so that `x.jpg` is not PNG bytes.
@@ -709,15 +703,8 @@ fn check_extension(path: &Path, exts: &[&str]) -> Result<()> {
     if ext.as_deref().is_some_and(|e| exts.contains(&e)) {
         return Ok(());
     }
-    let list: Vec<String> = exts.iter().map(|e| format!(".{e}")).collect();
-    let (last, rest) = list.split_last().expect("exts is not empty");
-    let names = match rest {
-        [] => last.clone(),
-        _ => format!("{} or {last}", rest.join(", ")),
-    };
-    Err(Error::invalid(format!(
-        "the name must end in {names}: the extension names the format written"
-    )))
+    let expected = exts.iter().map(|e| e.to_string()).collect();
+    Err(Refusal::Extension { expected }.into())
 }
 
 #[cfg(test)]
