@@ -7,7 +7,13 @@ use std::process::ExitCode;
 
 use clap::Parser;
 
+/// A failed allocation ends the run with a one-line error and exit status 2, its staged
+/// outputs removed, never an abort (crates/output, docs/memory.md).
+#[global_allocator]
+static ALLOC: csgpix_output::ExitOnOom = csgpix_output::ExitOnOom;
+
 fn main() -> ExitCode {
+    csgpix_output::one_arena_under_address_limit();
     let args = match cli::Cli::try_parse() {
         Ok(args) => args,
         Err(e) if !e.use_stderr() => {

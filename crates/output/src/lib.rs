@@ -24,8 +24,10 @@ use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 
 mod error;
+mod oom;
 
 pub use error::{Error, IoError, Refusal, Result};
+pub use oom::{fallible, one_arena_under_address_limit, try_zeroed, AllocFailed, ExitOnOom};
 
 /// Staged paths a signal must remove: temporary files and directories not yet committed.
 static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
@@ -83,6 +85,17 @@ pub fn install_signal_cleanup() -> Result<()> {
         }
     });
     Ok(())
+}
+
+/// Remove every staged output now, for a process about to end without unwinding (out of
+/// memory, [`ExitOnOom`]). The list is skipped if another thread holds it (it is then
+/// adding to it, and a lock could wait forever on this very thread).
+pub(crate) fn remove_all_staged() {
+    if let Ok(mut staged) = PENDING.try_lock() {
+        for p in staged.drain(..) {
+            remove_staged(&p);
+        }
+    }
 }
 
 /// Remove a staged file, or a staged directory and its files. The run is still going while

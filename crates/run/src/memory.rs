@@ -30,10 +30,14 @@ pub struct OverMemory {
 }
 
 impl Limit {
-    /// `mib` MiB (clamped to 1..=[`MAX_MIB`]), or the default: the memory available now
-    /// capped by the address-space limit ([`default_mib`]).
+    /// `mib` MiB (clamped to 1..=[`MAX_MIB`] and to what the process may hold,
+    /// [`Cap::probe`]), or the default: the memory available now within that cap
+    /// ([`default_mib`]).
     pub fn new(mib: Option<u64>, name: &'static str) -> Limit {
-        let mib = mib.unwrap_or_else(default_mib).clamp(1, MAX_MIB);
+        let cap = Cap::probe().map_or(MAX_MIB, |c| c.mib);
+        let mib = mib
+            .map_or_else(default_mib, |m| m.min(cap))
+            .clamp(1, MAX_MIB);
         Limit { mib, name }
     }
 
@@ -67,10 +71,12 @@ impl Limit {
 #[derive(clap::Args, Debug, Clone, Copy)]
 pub struct MaxMemory {
     /// Refuse a run whose memory estimate is over this many MiB, before allocating. The
-    /// default is the memory available now (MemAvailable), capped by the address-space limit
-    /// (`ulimit -v`) less an eighth for code and stacks; at most 2^43.
+    /// default is the memory available now (MemAvailable), capped by what the process may
+    /// hold: the address-space and data limits (`ulimit -v`, `ulimit -d`) less the process's
+    /// own code, stacks and buffers, and the room left in its cgroup. A larger value is
+    /// lowered to that cap, with a note; at most 2^43.
     #[arg(long = "max-memory", value_name = "MIB", default_value_t = default_mib(),
-          value_parser = clap::value_parser!(u64).range(1..=MAX_MIB))]
+          value_parser = parse_max_memory)]
     pub mib: u64,
 }
 
@@ -99,7 +105,31 @@ impl MaxMemory {
     }
 }
 
-// The memory a run may use by default: what the machine has available now.
+/// `--max-memory MIB`: 1 to [`MAX_MIB`], lowered to what the process may hold ([`Cap`]) with
+/// a one-line note on standard error, so that a limit above the address space cannot let a
+/// run start that the system will not let finish.
+fn parse_max_memory(s: &str) -> Result<u64, crate::error::BadValue> {
+    let mib: u64 = s
+        .parse()
+        .map_err(|_| format!("{s:?} is not a whole number of MiB"))?;
+    if !(1..=MAX_MIB).contains(&mib) {
+        return Err(format!("{mib} is not in 1..={MAX_MIB}").into());
+    }
+    Ok(match Cap::probe() {
+        Some(cap) if mib > cap.mib => {
+            eprintln!(
+                "csgpix: note: --max-memory {mib} is above what this process may hold ({}): \
+                 {} MiB used",
+                cap.why, cap.mib
+            );
+            cap.mib
+        }
+        _ => mib,
+    })
+}
+
+// The memory a run may use by default: what the machine has available now, within what the
+// process may hold.
 
 /// The largest limit accepted, in MiB: 2^43 MiB is 2^63 bytes, so the limit in bytes never
 /// wraps.
@@ -108,12 +138,58 @@ pub const MAX_MIB: u64 = 1 << 43;
 /// Used when the machine's available memory cannot be read.
 const FALLBACK_MIB: u64 = 4096;
 
-/// The default limit in MiB: MemAvailable, capped by the address-space limit (`ulimit -v`)
-/// less an eighth for code and stacks; 1 to [`MAX_MIB`].
+/// Address space the process takes besides a run's estimate, measured (docs/memory.md): the
+/// binary and its libraries, the main stack, the allocator's own (one malloc arena under an
+/// address-space limit, `csgpix_output::one_arena_under_address_limit`), with room to spare.
+const PROCESS_MIB: u64 = 64;
+
+/// Address space each thread adds: its stack (2 MiB) and its buffers, with room to spare.
+const THREAD_MIB: u64 = 8;
+
+/// The default limit in MiB: MemAvailable, within [`Cap::probe`]; 1 to [`MAX_MIB`].
 pub fn default_mib() -> u64 {
     let available = mem_available_mib().unwrap_or(FALLBACK_MIB);
-    let cap = address_space_mib().map_or(u64::MAX, |m| m - m / 8);
+    let cap = Cap::probe().map_or(u64::MAX, |c| c.mib);
     available.min(cap).clamp(1, MAX_MIB)
+}
+
+/// The most a run may hold whatever the machine has free: the tightest of the address-space
+/// limit, the data limit (each less the process's own [`PROCESS_MIB`] and [`THREAD_MIB`] a
+/// thread) and the room left in the process's cgroup; and which one it is.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Cap {
+    /// MiB, at least 1.
+    pub mib: u64,
+    /// What sets it, as a user would look it up (`address space 1024 MiB, ulimit -v`).
+    pub why: String,
+}
+
+impl Cap {
+    /// The cap of this process now, None when nothing limits it.
+    pub fn probe() -> Option<Cap> {
+        let threads = std::thread::available_parallelism().map_or(1, |n| n.get()) as u64;
+        let own = PROCESS_MIB + THREAD_MIB * threads;
+        let limits = proc_limits();
+        let rlimit = |name: &str, shell: &str| {
+            let mib = rlimit_mib(&limits, name)?;
+            let why = format!("{} {mib} MiB, {shell}", name.to_ascii_lowercase());
+            Some(Cap {
+                mib: mib.saturating_sub(own).max(1),
+                why,
+            })
+        };
+        [
+            rlimit("Max address space", "ulimit -v"),
+            rlimit("Max data size", "ulimit -d"),
+            cgroup_room_mib().map(|mib| Cap {
+                mib: mib.max(1),
+                why: format!("{mib} MiB left in the cgroup"),
+            }),
+        ]
+        .into_iter()
+        .flatten()
+        .min_by_key(|c| c.mib)
+    }
 }
 
 /// MemAvailable of /proc/meminfo, in MiB.
@@ -124,15 +200,63 @@ fn mem_available_mib() -> Option<u64> {
     Some(kib >> 10)
 }
 
-/// The soft address-space limit (`ulimit -v`) of /proc/self/limits, in MiB; None if unlimited.
-fn address_space_mib() -> Option<u64> {
-    let text = std::fs::read_to_string("/proc/self/limits").ok()?;
-    let line = text.lines().find(|l| l.starts_with("Max address space"))?;
-    let soft = line
-        .trim_start_matches("Max address space")
-        .split_whitespace()
-        .next()?;
+/// /proc/self/limits, or nothing where there is none.
+fn proc_limits() -> String {
+    std::fs::read_to_string("/proc/self/limits").unwrap_or_default()
+}
+
+/// The soft limit `name` (`Max address space`, `Max data size`) of /proc/self/limits, in
+/// MiB; None if unlimited.
+fn rlimit_mib(limits: &str, name: &str) -> Option<u64> {
+    let line = limits.lines().find(|l| l.starts_with(name))?;
+    let soft = line.trim_start_matches(name).split_whitespace().next()?;
     soft.parse::<u64>().ok().map(|b| b >> 20)
+}
+
+/// The memory the process's cgroup may still take, in MiB (its limit less its usage, the
+/// tightest along its path), cgroup v2 or v1; None without a limit.
+fn cgroup_room_mib() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/self/cgroup").ok()?;
+    cgroup_room(&text, std::path::Path::new("/sys/fs/cgroup"), &|p| {
+        std::fs::read_to_string(p).ok()
+    })
+}
+
+/// [`cgroup_room_mib`] of a `/proc/self/cgroup` text, files read by `read` under `root`.
+fn cgroup_room(
+    text: &str,
+    root: &std::path::Path,
+    read: &dyn Fn(&std::path::Path) -> Option<String>,
+) -> Option<u64> {
+    let num = |p: std::path::PathBuf| read(&p)?.trim().parse::<u64>().ok();
+    let mut rooms = vec![];
+    for line in text.lines() {
+        let mut f = line.splitn(3, ':');
+        let (_, controllers, path) = (f.next()?, f.next()?, f.next()?);
+        let (base, max, used) = match controllers {
+            "" => (root.to_path_buf(), "memory.max", "memory.current"),
+            c if c.split(',').any(|c| c == "memory") => (
+                root.join("memory"),
+                "memory.limit_in_bytes",
+                "memory.usage_in_bytes",
+            ),
+            _ => continue,
+        };
+        // The cgroup and its ancestors: each one's limit holds.
+        let mut dir = base.join(path.trim_start_matches('/'));
+        loop {
+            if let (Some(max), Some(used)) = (num(dir.join(max)), num(dir.join(used))) {
+                // v1 says "no limit" with a number near 2^63.
+                if max < 1 << 60 {
+                    rooms.push(max.saturating_sub(used) >> 20);
+                }
+            }
+            if dir == base || !dir.pop() {
+                break;
+            }
+        }
+    }
+    rooms.into_iter().min()
 }
 
 #[cfg(test)]
@@ -152,6 +276,67 @@ mod probe_tests {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::path::{Path, PathBuf};
+
+    /// `cgroup_room` over a map of files.
+    fn room(text: &str, files: &[(&str, &str)]) -> Option<u64> {
+        let files: Vec<(PathBuf, String)> = files
+            .iter()
+            .map(|(p, t)| (Path::new("/cg").join(p), t.to_string()))
+            .collect();
+        let read = |p: &Path| files.iter().find(|(q, _)| q == p).map(|(_, t)| t.clone());
+        cgroup_room(text, Path::new("/cg"), &read)
+    }
+
+    #[test]
+    fn the_cgroup_room_is_the_tightest_along_the_path() {
+        let v2 = [
+            ("a/memory.max", "max\n"),
+            ("a/memory.current", "0\n"),
+            ("a/b/memory.max", "1073741824\n"),
+            ("a/b/memory.current", "268435456\n"),
+        ];
+        assert_eq!(room("0::/a/b\n", &v2), Some(768));
+        let parent = [
+            ("a/memory.max", "536870912"),
+            ("a/memory.current", "0"),
+            ("a/b/memory.max", "max"),
+            ("a/b/memory.current", "1"),
+        ];
+        assert_eq!(room("0::/a/b", &parent), Some(512));
+        let v1 = [
+            ("memory/x/memory.limit_in_bytes", "2147483648"),
+            ("memory/x/memory.usage_in_bytes", "1073741824"),
+            ("memory/memory.limit_in_bytes", "9223372036854771712"),
+            ("memory/memory.usage_in_bytes", "5"),
+        ];
+        assert_eq!(room("4:memory:/x\n1:cpu:/\n0::/", &v1), Some(1024));
+        let unlimited = [
+            ("memory/x/memory.limit_in_bytes", "9223372036854771712"),
+            ("memory/x/memory.usage_in_bytes", "1"),
+        ];
+        assert_eq!(room("4:memory:/x", &unlimited), None);
+        assert_eq!(room("", &[]), None);
+    }
+
+    #[test]
+    fn rlimits_are_read_in_mib_and_unlimited_is_none() {
+        let limits = "Limit                     Soft Limit           Hard Limit           Units\n\
+                      Max data size             unlimited            unlimited            bytes\n\
+                      Max address space         1073741824           unlimited            bytes\n";
+        assert_eq!(rlimit_mib(limits, "Max address space"), Some(1024));
+        assert_eq!(rlimit_mib(limits, "Max data size"), None);
+    }
+
+    #[test]
+    fn an_explicit_limit_is_parsed_in_range() {
+        assert!(parse_max_memory("0").is_err());
+        assert!(parse_max_memory("x").is_err());
+        assert!(parse_max_memory(&(MAX_MIB + 1).to_string()).is_err());
+        let cap = Cap::probe().map_or(MAX_MIB, |c| c.mib);
+        assert_eq!(parse_max_memory(&MAX_MIB.to_string()).unwrap(), cap);
+        assert_eq!(parse_max_memory("1").unwrap(), 1);
+    }
 
     #[test]
     fn the_limit_in_bytes_cannot_wrap() {

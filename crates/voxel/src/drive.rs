@@ -205,7 +205,7 @@ pub fn voxelize(
     // Chunks of consecutive slabs, a few per thread, so masks can be swept forward; each
     // chunk's slices go straight into their place in the volume (one volume held, not two).
     let chunk = (nz / (4 * rayon::current_num_threads())).max(1);
-    let mut voxels = vec![0u8; nx * ny * nz];
+    let mut voxels = csgpix_output::try_zeroed(nx * ny * nz)?;
     let counted: Vec<(u64, OpCounts)> = voxels
         .par_chunks_mut(chunk * nx * ny)
         .enumerate()

@@ -16,6 +16,10 @@ pub enum Error {
     /// A drawing error.
     #[error(transparent)]
     Draw(#[from] csgpix_draw::Error),
+    /// The volume's bytes could not be allocated: the system had less than the estimate
+    /// said (another process took it, or a limit the estimate could not see).
+    #[error("the volume: {0}")]
+    OutOfMemory(#[from] csgpix_output::AllocFailed),
     /// The scene has no primitive, so no box of its own: a grid over it needs bounds given.
     #[error("the scene has no primitives")]
     NeedsBounds,

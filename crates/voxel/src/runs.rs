@@ -493,7 +493,7 @@ pub fn voxelize_runs(
     let [nx, ny, nz] = slicer.grid.dims;
     let columns = Columns::new(slicer, float)?;
     let bands = bands(slicer);
-    let mut voxels = vec![0u8; nx * ny * nz];
+    let mut voxels = csgpix_output::try_zeroed(nx * ny * nz)?;
     // Every (y, z) row of the volume, grouped by band: band b owns rows y0..y1 of every slab.
     let mut owned: Vec<Vec<&mut [u8]>> = bands.iter().map(|_| vec![]).collect();
     let band_of = |y: usize| y / slicer.panel.unwrap_or(DEFAULT_PANEL)[1].max(1);
