@@ -186,6 +186,30 @@ fn a_difference_of_thousands_of_solids_is_refused_by_render_and_voxelized_in_bli
     assert!(nrrd.exists());
 }
 
+/// A difference nested 900 deep (A − (B − (C − …)): 450 products of up to 900 literals) is
+/// refused by `throughput --scene` from its tree, before 900 solids are projected onto its
+/// screen (which took 12 s to end in the same refusal).
+#[test]
+fn throughput_refuses_a_deep_difference_before_projecting_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("deep.csg");
+    let mut text = String::new();
+    for i in 0..900 {
+        text += &format!(
+            "difference(){{multmatrix([[1,0,0,{}],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) cube(size=[100,100,100]);",
+            i as f64 * 0.01
+        );
+    }
+    text += "cube(size=[1,1,1]);";
+    text += &"}".repeat(900);
+    std::fs::write(&scene, text).unwrap();
+    let t0 = std::time::Instant::now();
+    let out = under_ulimit(1 << 20, &["throughput", "--scene", scene.to_str().unwrap()]);
+    refused(&out, "deep.csg: the clipping program would have at least");
+    let secs = t0.elapsed().as_secs_f64();
+    assert!(secs < 5.0, "{secs} s to refuse");
+}
+
 #[test]
 fn limits_that_would_wrap_and_unbounded_threads_are_refused() {
     let nrrd = std::env::temp_dir().join("csgpix-never-written.nrrd");

@@ -271,7 +271,12 @@ pub const MAX_CLIP_OPS: u64 = 1 << 22;
 /// 2·planes + 2 (so are a volume's, with its AND), and each literal draws its product's
 /// other volumes, applies and composes.
 pub fn clip_ops_bound(lists: &[DisplayList], products: &[Vec<(usize, bool)>]) -> u64 {
-    let per = |o: usize| 2 * lists[o].planes.len() as u64 + 2;
+    clip_ops_bound_by(&|o| lists[o].planes.len(), products)
+}
+
+/// [`clip_ops_bound`] with list `o` of `planes(o)` planes.
+fn clip_ops_bound_by(planes: &dyn Fn(usize) -> usize, products: &[Vec<(usize, bool)>]) -> u64 {
+    let per = |o: usize| 2 * planes(o) as u64 + 2;
     products
         .iter()
         .map(|prod| {
@@ -282,6 +287,37 @@ pub fn clip_ops_bound(lists: &[DisplayList], products: &[Vec<(usize, bool)>]) ->
             (prod.len() as u64).saturating_mul(vol.saturating_add(3))
         })
         .fold(0, u64::saturating_add)
+}
+
+/// Refuse a clipping program whose bound of operations is over [`MAX_CLIP_OPS`]:
+/// `bound` is an upper one (`"up to"`) or, before the lists are built, a lower one
+/// (`"at least"`).
+fn check_clip_bound(bound: u64, which: &str) -> Result<(), CompileError> {
+    if bound <= MAX_CLIP_OPS {
+        return Ok(());
+    }
+    let msg = format!(
+        "the clipping program would have {which} {bound} operations, over {MAX_CLIP_OPS}: \
+         §5.2.1 draws every literal clipped by the rest of its product, so a difference \
+         of n solids costs n² (voxelize evaluates it in Blist, linear in n)"
+    );
+    Err(CompileError {
+        plane: 0,
+        field: WHOLE_PROGRAM,
+        msg,
+    })
+}
+
+/// Refuse `expr` before its lists are built when, even at one plane a list (every list has
+/// one at least), its program would be over [`MAX_CLIP_OPS`]: projecting thousands of solids
+/// onto a large screen costs seconds that a refusal should not wait for. The bound it gives
+/// is that lower one; the compiler checks the full one.
+pub fn check_clip_size(expr: &Clip) -> Result<(), CompileError> {
+    // Products too many to list are refused by the compiler, with their own message.
+    let Ok(products) = expr.products() else {
+        return Ok(());
+    };
+    check_clip_bound(clip_ops_bound_by(&|_| 1, &products), "at least")
 }
 
 /// The thesis evaluation of a clipping function (§5.2.1): for every literal of every product
@@ -321,22 +357,7 @@ pub fn clip_scene_ops(
             },
         )
     })?;
-    let bound = clip_ops_bound(lists, &products);
-    if bound > MAX_CLIP_OPS {
-        let msg = format!(
-            "the clipping program would have up to {bound} operations, over {MAX_CLIP_OPS}: \
-             §5.2.1 draws every literal clipped by the rest of its product, so a difference \
-             of n solids costs n² (voxelize evaluates it in Blist, linear in n)"
-        );
-        return Err((
-            0,
-            CompileError {
-                plane: 0,
-                field: WHOLE_PROGRAM,
-                msg,
-            },
-        ));
-    }
+    check_clip_bound(clip_ops_bound(lists, &products), "up to").map_err(|e| (0, e))?;
     let mut ops = vec![];
     for prod in &products {
         for (k, &(obj, neg)) in prod.iter().enumerate() {
