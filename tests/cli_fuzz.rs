@@ -550,7 +550,7 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
                 &["0", "0.5"],
                 &["-1", "inf"],
             );
-            *rng.pick::<&str>(&["stl", "obj", "ply"])
+            rng.pick::<&str>(&["stl", "obj", "ply"])
         }
         5 => {
             args.push(a("blist"));
