@@ -53,6 +53,21 @@ pub enum Error {
         /// The compiler's error: the plane and field at fault, and what is wrong.
         error: csgpix_draw::compile::CompileError,
     },
+    /// Tiles of a Zarr store's bricks (the Python binding's `tiles=(t0, t1)`) outside the
+    /// store's, or not all of them where the run goes a chunk row at a time: only the run
+    /// route voxelizes some tiles apart (docs/zarr.md).
+    #[error(
+        "tiles ({start}, {end}): the store has tiles 0..{tiles}, and only the run route \
+         voxelizes some of them"
+    )]
+    Tiles {
+        /// The first tile asked for.
+        start: usize,
+        /// One past the last.
+        end: usize,
+        /// The store's tiles.
+        tiles: usize,
+    },
     /// Golden vectors that do not fit the table they are checked against.
     #[error(transparent)]
     Vectors(#[from] rtl_model::select::verify::VectorError),
