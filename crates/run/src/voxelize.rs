@@ -203,18 +203,7 @@ pub struct GridArgs {
 impl GridArgs {
     /// The grid of `res` (or of `--voxel`) over `--bounds` or the scene's.
     pub fn grid(&self, res: Option<Resolution>, scene: &Loaded) -> crate::Result<Grid> {
-        let spec = match (self.voxel, res) {
-            (Some(v), _) => GridSpec {
-                voxel: Some(v),
-                ..GridSpec::default()
-            },
-            (None, Some(r)) => r.spec(),
-            (None, None) => GridSpec::default(),
-        };
-        let spec = GridSpec {
-            pad: self.pad,
-            ..spec
-        };
+        let spec = grid_spec(res, self.voxel, self.pad);
         scene.grid_over(&spec, self.bounds).map_err(flag_message)
     }
 
@@ -222,6 +211,20 @@ impl GridArgs {
     pub fn any(&self) -> bool {
         self.voxel.is_some() || self.pad > 0 || self.bounds.is_some()
     }
+}
+
+/// The grid spec of cubic voxels of side `voxel` if given, else of `res` (`--res`), with
+/// `pad` empty voxels on every side (`--pad`); the Python binding's `res`, `voxel`, `pad`.
+pub fn grid_spec(res: Option<Resolution>, voxel: Option<f64>, pad: usize) -> GridSpec {
+    let spec = match (voxel, res) {
+        (Some(v), _) => GridSpec {
+            voxel: Some(v),
+            ..GridSpec::default()
+        },
+        (None, Some(r)) => r.spec(),
+        (None, None) => GridSpec::default(),
+    };
+    GridSpec { pad, ..spec }
 }
 
 /// `--sampling`, shared with `sculpt`.
