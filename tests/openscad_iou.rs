@@ -35,13 +35,26 @@ fn occupancy(path: &Path) -> Vec<bool> {
     v.iter().map(|&c| c != 0).collect()
 }
 
+/// csgpix's refusal of a scene: its message, as the command printed it on stderr.
+#[derive(Debug)]
+struct Refused {
+    stderr: String,
+}
+
+impl Refused {
+    /// The reason alone: the message's last clause, after the scene's name and place.
+    fn reason(&self) -> &str {
+        self.stderr.rsplit(": ").next().unwrap_or(&self.stderr)
+    }
+}
+
 /// IoU of csgpix's voxels of the scene `csg` against the voxels of OpenSCAD's mesh `stl` on
 /// the same 64³ grid, under `sampling`, and the IoU counting only voxels whose centres lie
 /// farther from every face of the scene's convex solids than 2^-(F+1)·(1 + x + y) pixels
 /// (0.063 voxel at the far corner of 64²): a perpendicular plane's error while its K was in
 /// pixels, a generous margin since K is scaled to the word (docs/depth-word.md). Err when
 /// csgpix refuses the scene.
-fn compare(csg: &Path, stl: &Path, sampling: &str, dir: &Path) -> Result<(f64, f64), String> {
+fn compare(csg: &Path, stl: &Path, sampling: &str, dir: &Path) -> Result<(f64, f64), Refused> {
     compare_model(csg, stl, sampling, "word", dir)
 }
 
@@ -52,7 +65,7 @@ fn compare_model(
     sampling: &str,
     model: &str,
     dir: &Path,
-) -> Result<(f64, f64), String> {
+) -> Result<(f64, f64), Refused> {
     let (a, b) = (dir.join("a.nrrd"), dir.join("b.nrrd"));
     let o = csgpix(&[
         "voxelize",
@@ -68,7 +81,8 @@ fn compare_model(
         a.to_str().unwrap(),
     ]);
     if !o.status.success() {
-        return Err(String::from_utf8_lossy(&o.stderr).trim().to_string());
+        let stderr = String::from_utf8_lossy(&o.stderr).trim().to_string();
+        return Err(Refused { stderr });
     }
     let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let c = |k: &str, i: usize| r[k][i].as_f64().unwrap();
@@ -156,7 +170,7 @@ struct Row {
 }
 
 /// All three comparisons of one scene.
-fn row(name: String, csg: &Path, stl: &Path, dir: &Path) -> Result<Row, String> {
+fn row(name: String, csg: &Path, stl: &Path, dir: &Path) -> Result<Row, Refused> {
     Ok(Row {
         name,
         centre: compare(csg, stl, "centre", dir)?,
@@ -274,7 +288,7 @@ fn openscads_examples_that_csgpix_reads_match_openscads_mesh() {
             continue;
         }
         match row(name.clone(), &csg, &stl, &work) {
-            Err(e) => skipped.push(format!("{name}: {}", e.rsplit(": ").next().unwrap_or(&e))),
+            Err(e) => skipped.push(format!("{name}: {}", e.reason())),
             Ok(r) => rows.push(r),
         }
     }

@@ -8,15 +8,15 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use csgpix_draw::float::{self, ScreenRule};
 use csgpix_draw::project::View;
 use csgpix_draw::scenes::Scene;
 use csgpix_draw::Model;
-use rtl_model::program::{CReg, Op, ProgramError};
-use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};
+use rtl_model::program::Op;
+use rtl_model::{ArrayConfig, Equations};
 
-use crate::errors::text;
+use crate::errors::{run, text};
 use crate::voxel::word_format;
+use csgpix_run::array_args::array_config;
 use csgpix_run::error::BadValue;
 use csgpix_run::{EquationsArg, ViewArg};
 
@@ -109,15 +109,14 @@ pub fn compile(
     view: &str,
     word: &str,
 ) -> PyResult<Program> {
-    let mut cfg = ArrayConfig::new(width, height);
-    cfg.fmt = word_format(word)?;
-    cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
-    cfg.check().map_err(|e| text(e.to_string()))?;
-    let (scene, ops) = csgpix_run::render::compile(&paths(scene)?, clip, self::view(view)?, &cfg)
-        .map_err(crate::errors::run)?;
-    cfg.stack_depth = cfg
-        .stack_depth
-        .max(rtl_model::array::check_program(&ops, usize::MAX).map_err(|e| text(e.to_string()))?);
+    // The model's default stack, deepened below to the levels the program reaches.
+    let stack = ArrayConfig::new(width, height).stack_depth;
+    let mut cfg = array_config((width, height), word_format(word)?, stack).map_err(run)?;
+    let (scene, ops) =
+        csgpix_run::render::compile(&paths(scene)?, clip, self::view(view)?, &cfg).map_err(run)?;
+    let levels =
+        rtl_model::array::check_program(&ops, usize::MAX).map_err(|e| text(e.to_string()))?;
+    cfg.stack_depth = cfg.stack_depth.max(levels);
     Ok(Program { ops, cfg, scene })
 }
 
@@ -133,32 +132,12 @@ pub fn render<'py>(
 ) -> PyResult<(Bound<'py, PyAny>, u64)> {
     let model = model.parse::<Model>().map_err(|e| text(e.to_string()))?;
     let set = equation_set(equations)?;
-    let cfg = program.cfg;
-    let (codes, cycles) = py
-        .detach(|| -> Result<(Vec<u8>, u64), ProgramError> {
-            if model == Model::Float {
-                let s = &program.scene;
-                let f = float::render(
-                    &s.lists,
-                    s.clip.as_ref(),
-                    cfg.width,
-                    cfg.height,
-                    &cfg.fmt,
-                    ScreenRule::Exact,
-                );
-                return Ok((f.colour.iter().map(|&c| c as u8).collect(), 0));
-            }
-            let mut arr: Box<dyn Array> = match model {
-                Model::Cycle => Box::new(CycleArray::new(cfg, set)),
-                _ => Box::new(WordArray::new(cfg, set)),
-            };
-            arr.run(&program.ops)?;
-            let codes = (0..cfg.pixels())
-                .map(|i| arr.pixel(i % cfg.width, i / cfg.width).creg(CReg::G) as u8)
-                .collect();
-            Ok((codes, arr.cycles()))
-        })
-        .map_err(|e| text(e.to_string()))?;
+    let (p, cfg) = (program, program.cfg);
+    let drawn = py
+        .detach(|| csgpix_run::render::draw(&p.scene, &p.ops, &cfg, model, set))
+        .map_err(run)?;
+    let codes = drawn.colour.iter().map(|&c| c as u8).collect();
+    let cycles = drawn.cycles;
     let img = PyArray1::from_vec(py, codes).reshape([cfg.height, cfg.width])?;
     Ok((img.into_any(), cycles))
 }
@@ -182,8 +161,8 @@ pub fn verify_select<'py>(
     equations: &str,
     vectors: Option<PathBuf>,
 ) -> PyResult<Vec<Bound<'py, PyDict>>> {
-    let reports = csgpix_run::verify_select::verify(equations_arg(equations)?, &vectors)
-        .map_err(crate::errors::run)?;
+    let reports =
+        csgpix_run::verify_select::verify(equations_arg(equations)?, &vectors).map_err(run)?;
     let mut out = vec![];
     {
         for r in reports {

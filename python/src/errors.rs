@@ -107,6 +107,14 @@ pub fn voxel(e: csgpix_voxel::Error) -> PyErr {
     }
 }
 
+/// A Zarr store's error, kept whole where it wraps a voxelizer's.
+pub fn zarr(e: csgpix_zarr::Error) -> PyErr {
+    match e {
+        csgpix_zarr::Error::Voxel(e) => voxel(e),
+        e => text(e.to_string()),
+    }
+}
+
 /// An error of the run layer: the libraries' errors as above; a scene error wrapped in
 /// context keeps its place, and a file the system refused (an input or an output) raises its
 /// `OSError`.
@@ -116,6 +124,7 @@ pub fn run(e: csgpix_run::Error) -> PyErr {
         R::Scene(e) => scene(e),
         R::Voxel(e) => voxel(e),
         R::Draw(e) => draw(e),
+        R::Zarr(e) => zarr(e),
         e => match (e.io_kind(), e.scene()) {
             (Some(kind), _) => os_error(kind, e.to_string()),
             (None, Some(s)) => error(e.to_string(), place(s.location())),

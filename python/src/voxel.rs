@@ -9,10 +9,10 @@ use pyo3::prelude::*;
 
 use csgpix_run::array_args::parse_word;
 use csgpix_run::memory::Limit;
-use csgpix_run::voxelize::{imports_estimate, parse_blend, Resolution, Voxelization};
+use csgpix_run::voxelize::{grid_spec, imports_estimate, parse_blend, Resolution, Voxelization};
 use csgpix_voxel::sampled::{load_scene_with, scene_from_expr_with, Binding, Loaded};
 use csgpix_voxel::slice::SliceEval;
-use csgpix_voxel::{Grid, GridSpec, Route, Slicer};
+use csgpix_voxel::{Grid, Route, Slicer};
 use rtl_model::{Equations, WordFormat};
 
 use crate::errors::{text, voxel};
@@ -189,18 +189,10 @@ impl GridOptions {
         })
     }
 
+    /// The grid of these options over `bounds` or the scene's, as `--res`, `--voxel`,
+    /// `--pad` and `--bounds` make it.
     pub fn grid(&self, scene: &Scene) -> PyResult<Grid> {
-        let spec = match (self.res, self.voxel) {
-            (Some(r), _) => r.spec(),
-            (None, voxel) => GridSpec {
-                voxel,
-                ..GridSpec::default()
-            },
-        };
-        let spec = GridSpec {
-            pad: self.pad,
-            ..spec
-        };
+        let spec = grid_spec(self.res, self.voxel, self.pad);
         let bounds = self
             .bounds
             .map(|(a, b)| (DVec3::from_array(a), DVec3::from_array(b)));

@@ -8,48 +8,46 @@ use std::path::PathBuf;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use csgpix_voxel::Route;
-use csgpix_zarr::{
-    voxelize_bricks, voxelize_rows, Layout, VolumeAttrs, ZarrVolume, DEFAULT_CHUNK, DEFAULT_SHARD,
-};
+use csgpix_run::voxelize::{parse_chunk, parse_shard, thread_pool};
+use csgpix_run::zarr::{by_bricks, create_store, estimate, write_bricks};
+use csgpix_zarr::{Layout, ZarrVolume, DEFAULT_CHUNK, DEFAULT_SHARD};
 use rtl_model::Equations;
 
-use crate::errors::{text, voxel};
+use crate::errors::{run, text, zarr};
 use crate::voxel::{check_memory, GridOptions, RunOptions, Scene};
-use csgpix_run::voxelize::zarr_rows_estimate;
 
-/// A Zarr store's error, kept whole where it wraps a scene error.
-fn zarr(e: csgpix_zarr::Error) -> PyErr {
-    match e {
-        csgpix_zarr::Error::Voxel(e) => voxel(e),
-        e => text(e.to_string()),
-    }
-}
-
-/// `chunk` as N or (X, Y, Z), as `res` is; held (Z, Y, X), the array's order.
+/// `chunk` as N or (X, Y, Z), as `res` is, read as `--chunk` reads `N` or `XxYxZ`; held
+/// (Z, Y, X), the array's order.
 fn chunk_shape(chunk: Option<&Bound<'_, PyAny>>) -> PyResult<[usize; 3]> {
     let Some(c) = chunk else {
         return Ok([DEFAULT_CHUNK; 3]);
     };
-    if let Ok(n) = c.extract::<usize>() {
-        return Ok([n; 3]);
-    }
-    let [x, y, z] = c
-        .extract::<[usize; 3]>()
-        .map_err(|_| text("chunk: an int N or a tuple (X, Y, Z)".into()))?;
-    Ok([z, y, x])
+    let flag = match c.extract::<usize>() {
+        Ok(n) => n.to_string(),
+        Err(_) => match c.extract::<[usize; 3]>() {
+            Ok([x, y, z]) => format!("{x}x{y}x{z}"),
+            Err(_) => return Err(text("chunk: an int N or a tuple (X, Y, Z)".into())),
+        },
+    };
+    parse_chunk(&flag).map_err(|e| text(format!("chunk: {e}")))
 }
 
-/// `shard` as N chunks a side, "none" for no shards (1), or the default when not given.
+/// `shard` as N chunks a side, "none" for no shards (1), or the default when not given;
+/// read as `--shard` reads it.
 fn shard_side(shard: Option<&Bound<'_, PyAny>>) -> PyResult<usize> {
     let Some(s) = shard else {
         return Ok(DEFAULT_SHARD);
     };
-    if s.extract::<String>().is_ok_and(|t| t == "none") {
-        return Ok(1);
-    }
-    s.extract::<usize>()
-        .map_err(|_| text("shard: an int N (chunks a shard side) or \"none\"".into()))
+    let flag = match (s.extract::<usize>(), s.extract::<String>()) {
+        (Ok(n), _) => n.to_string(),
+        (_, Ok(t)) if t == "none" => t,
+        _ => {
+            return Err(text(
+                "shard: an int N (chunks a shard side) or \"none\"".into(),
+            ))
+        }
+    };
+    parse_shard(&flag).map_err(|e| text(format!("shard: {e}")))
 }
 
 /// Write the metadata of the volume of `scene` on its grid at `path` (a new or empty
@@ -85,17 +83,14 @@ pub fn zarr_create<'py>(
     let grid = GridOptions::new(res, voxel, pad, bounds)?.grid(scene)?;
     // Checked here so that a bad option fails before any file is written.
     let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
-    let slicer = opts.slicer(scene, grid)?;
-    let bricks = matches!(opts.route(&slicer), Route::Runs { .. });
-    drop(slicer);
-    let values = csgpix_zarr::values_text(grey, blend.is_some());
-    let attrs = VolumeAttrs::new(format!("csgpix voxelize {}", scene.name), values);
+    let bricks = by_bricks(opts.route(&opts.slicer(scene, grid)?));
     let layout = Layout {
         chunk: chunk_shape(chunk)?,
         shard: shard_side(shard)?,
         levels,
     };
-    let store = ZarrVolume::create(&path, &grid, &layout, &attrs).map_err(zarr)?;
+    let blend = blend.is_some();
+    let store = create_store(&path, &grid, &layout, &scene.name, grey, blend).map_err(zarr)?;
     let d = PyDict::new(py);
     d.set_item("dims", store.dims())?;
     d.set_item("chunk", store.chunk())?;
@@ -136,54 +131,26 @@ pub fn zarr_write_rows<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
     let store = ZarrVolume::open(&path).map_err(zarr)?;
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads.unwrap_or(0))
-        .build()
-        .map_err(|e| text(e.to_string()))?;
+    let pool = thread_pool(threads).map_err(run)?;
     // Checked before anything is allocated: the store's grid and chunks are what its
     // zarr.json says, whoever wrote it.
-    let grid = *store.grid();
-    let slicer = opts.slicer(scene, grid)?;
+    let slicer = opts.slicer(scene, *store.grid())?;
     let eval = opts.evaluator(scene);
-    let all = store.tiles();
     let route = opts.route(&slicer);
-    let float = match route {
-        Route::Runs { float } => Some(float),
-        _ => None,
-    };
-    let (t0, t1) = tiles.unwrap_or((0, all.len()));
-    if t0 > t1 || t1 > all.len() || (float.is_none() && (t0, t1) != (0, all.len())) {
-        return Err(text(format!(
-            "tiles ({t0}, {t1}): the store has tiles 0..{}, and only the run route voxelizes \
-             some of them",
-            all.len()
-        )));
-    }
     let threads = pool.current_num_threads();
-    let need = zarr_rows_estimate(&slicer, route, eval.as_ref(), threads, &store).map_err(zarr)?;
+    let layout = store.layout();
+    let need = estimate(&slicer, route, eval.as_ref(), threads, &layout).map_err(zarr)?;
     check_memory(need, max_memory)?;
     let set = Equations::Derived.set();
-    let rows = rows.0..rows.1;
+    let (rows, tiles) = (rows.0..rows.1, tiles.map(|(t0, t1)| t0..t1));
     let work = py
         .detach(|| {
-            pool.install(|| match float {
-                Some(float) => {
-                    let tiles = &all[t0..t1];
-                    voxelize_bricks(
-                        &slicer,
-                        float,
-                        set,
-                        eval.as_ref(),
-                        &|| {},
-                        &store,
-                        rows,
-                        tiles,
-                    )
-                }
-                None => voxelize_rows(&slicer, route, set, eval.as_ref(), &|| {}, &store, rows),
+            pool.install(|| {
+                let (e, tick) = (eval.as_ref(), &|| {});
+                write_bricks(&slicer, route, set, e, tick, &store, rows, tiles)
             })
         })
-        .map_err(zarr)?;
+        .map_err(run)?;
     let d = PyDict::new(py);
     d.set_item("filled", work.filled)?;
     d.set_item("frames", work.frames)?;

@@ -147,3 +147,20 @@ def test_a_task_over_the_memory_limit_fails_and_leaves_nothing(tmp_path):
     with pytest.raises(csgpix.CsgpixError, match="over max_memory 8"):
         cd.voxelize_zarr(str(SCENES / "figure-5.2.csg"), out, 512, chunk=64, max_memory=8)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_tiles_outside_the_store_or_off_the_run_route_are_refused(tmp_path):
+    from csgpix import _native
+
+    scene = csgpix.load(SCENES / "csg-logo.csg")
+    path = tmp_path / "t.zarr"
+    meta = _native.zarr_create(scene, path, 32, chunk=8, shard=2)
+    n = meta["tiles"]
+    assert meta["bricks"] and n > 1, meta
+    with pytest.raises(csgpix.CsgpixError, match=rf"^tiles \(0, {n + 1}\): the store has tiles 0\.\.{n}, "):
+        _native.zarr_write_rows(scene, path, (0, 1), tiles=(0, n + 1))
+    # The slab routes write whole chunk rows: every tile or none.
+    with pytest.raises(csgpix.CsgpixError, match="only the run route voxelizes some of them"):
+        _native.zarr_write_rows(scene, path, (0, 1), tiles=(0, 1), route="intervals")
+    whole = _native.zarr_write_rows(scene, path, (0, meta["rows"]), tiles=(0, n), route="intervals")
+    assert whole["filled"] > 0

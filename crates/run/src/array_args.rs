@@ -123,16 +123,37 @@ pub fn parse_probes(s: &str) -> crate::error::Parsed<Probes> {
     Ok(Probes(v))
 }
 
+/// The configuration of a `width`×`height` array with depth words `word` (§2.3.1) and
+/// `stack_depth` clipping-stack levels, checked (`--size`, `--word`, `--stack-depth`; the
+/// Python binding's `compile`).
+pub fn array_config(
+    (width, height): (usize, usize),
+    word: WordFormat,
+    stack_depth: usize,
+) -> crate::Result<ArrayConfig> {
+    let mut cfg = ArrayConfig::new(width, height);
+    cfg.fmt = word;
+    // Colour registers move within a window, so a very short word narrows them too.
+    cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
+    cfg.stack_depth = stack_depth;
+    cfg.check()?;
+    Ok(cfg)
+}
+
+/// A fresh array of `cfg` on `model` running `set`: the word model's for
+/// [`Model::Word`], else the cycle model's (the float model has no array: callers take it
+/// apart first).
+pub fn new_array(model: Model, cfg: ArrayConfig, set: EquationSet) -> Box<dyn Array> {
+    match model {
+        Model::Word => Box::new(WordArray::new(cfg, set)),
+        _ => Box::new(CycleArray::new(cfg, set)),
+    }
+}
+
 impl ArrayArgs {
-    /// The array's configuration, checked.
+    /// The array's configuration, checked ([`array_config`]).
     pub fn config(&self) -> crate::Result<ArrayConfig> {
-        let mut cfg = ArrayConfig::new(self.size.0, self.size.1);
-        cfg.fmt = self.word;
-        // Colour registers move within a window, so a very short word narrows them too.
-        cfg.colour_bits = cfg.colour_bits.min(cfg.fmt.bits());
-        cfg.stack_depth = self.stack_depth;
-        cfg.check()?;
-        Ok(cfg)
+        array_config(self.size, self.word, self.stack_depth)
     }
 
     /// The equation set SGENE is built from.
@@ -180,10 +201,7 @@ impl ArrayArgs {
         let what = format!("a {}x{} {} array", cfg.width, cfg.height, self.model.name());
         self.mem.check(need, &what, "lower --size")?;
         let set = self.equations()?;
-        let mut arr: Box<dyn Array> = match self.model {
-            Model::Word => Box::new(WordArray::new(cfg, set)),
-            _ => Box::new(CycleArray::new(cfg, set)),
-        };
+        let mut arr = new_array(self.model, cfg, set);
         if let Some(p) = &self.probe {
             arr.attach_probe(Recorder::new(cfg, p.0.clone())?);
         }

@@ -44,10 +44,33 @@ pub enum Error {
     /// Golden vectors of the Verilog twin that do not parse.
     #[error(transparent)]
     Golden(#[from] rtl_model::verilog::GoldenError),
-    /// A program that does not compile for the array, said of the solid it comes from (the
-    /// scene-wide compile errors of `requirements` and the study, which have no file place).
-    #[error("{0}")]
-    Compile(String),
+    /// A program that does not compile for the array (the scene-wide compile errors of
+    /// `requirements` and the study, which have no file place): the draw compiler's error,
+    /// said of the solid it comes from; printed as `solid N: MESSAGE`, or the message alone
+    /// where it is the whole program's.
+    #[error("{}{}", solid_prefix(.solid), .error.msg)]
+    Compile {
+        /// The solid (0-based) whose plane the array cannot take; None for the whole
+        /// program's (its clipping stack, a concave clipping volume).
+        solid: Option<usize>,
+        /// The compiler's error: the plane and field at fault, and what is wrong.
+        error: csgpix_draw::compile::CompileError,
+    },
+    /// Tiles of a Zarr store's bricks (the Python binding's `tiles=(t0, t1)`) outside the
+    /// store's, or not all of them where the run goes a chunk row at a time: only the run
+    /// route voxelizes some tiles apart (docs/zarr.md).
+    #[error(
+        "tiles ({start}, {end}): the store has tiles 0..{tiles}, and only the run route \
+         voxelizes some of them"
+    )]
+    Tiles {
+        /// The first tile asked for.
+        start: usize,
+        /// One past the last.
+        end: usize,
+        /// The store's tiles.
+        tiles: usize,
+    },
     /// Golden vectors that do not fit the table they are checked against.
     #[error(transparent)]
     Vectors(#[from] rtl_model::select::verify::VectorError),
@@ -96,6 +119,11 @@ pub enum Error {
     /// A report that could not be written as JSON.
     #[error(transparent)]
     Json(#[from] serde_json::Error),
+}
+
+/// `solid N: ` of a compile error said of solid N − 1, else nothing.
+fn solid_prefix(solid: &Option<usize>) -> String {
+    solid.map_or_else(String::new, |i| format!("solid {}: ", i + 1))
 }
 
 /// A run's result.
@@ -162,3 +190,30 @@ impl From<String> for BadValue {
 
 /// `Result` of a flag's value parser.
 pub type Parsed<T> = std::result::Result<T, BadValue>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use csgpix_draw::compile::{CompileError, WHOLE_PROGRAM};
+
+    /// A compile error prints as it did as text: `solid N: ` and the compiler's message (not
+    /// its `plane N: ` form), or the message alone for the whole program's.
+    #[test]
+    fn a_compile_error_prints_its_solid_and_the_compilers_message() {
+        let error = |field| CompileError {
+            plane: 4,
+            field,
+            msg: "dZx: out of range".into(),
+        };
+        let of_solid = Error::Compile {
+            solid: Some(2),
+            error: error(1),
+        };
+        assert_eq!(of_solid.to_string(), "solid 3: dZx: out of range");
+        let whole = Error::Compile {
+            solid: None,
+            error: error(WHOLE_PROGRAM),
+        };
+        assert_eq!(whole.to_string(), "dZx: out of range");
+    }
+}

@@ -5,7 +5,8 @@
 //! One module per command ([`voxelize`], [`render`], [`sculpt`], …): its flags (`Args`,
 //! parsed by clap), its run and its report; beside them what the commands share: the memory
 //! limit ([`memory`]), the study's sweep ([`sweep`]) and charts ([`plot`]), PNG output
-//! ([`png`]) and voxel stores fed from the voxelizer ([`store`]). Each command returns its
+//! ([`png`]), voxel stores fed from the voxelizer ([`store`]) and OME-Zarr stores written by
+//! chunk rows or bricks ([`zarr`]). Each command returns its
 //! exit code, or an [`Error`] (typed, one line when printed; exit status 2).
 
 /// The flags' value names as [`FromStr`](std::str::FromStr), for the Python binding's keyword
@@ -49,6 +50,7 @@ pub mod sweep;
 pub mod throughput;
 pub mod verify_select;
 pub mod voxelize;
+pub mod zarr;
 
 use std::process::ExitCode;
 

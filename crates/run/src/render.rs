@@ -12,11 +12,11 @@ use csgpix_output::{Out, Outputs};
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::array::check_program;
 use rtl_model::program::{CReg, Op, Reg};
-use rtl_model::Array;
+use rtl_model::{Array, ArrayConfig, EquationSet};
 
 use serde::Serialize;
 
-use super::array_args::{ArrayArgs, Model};
+use super::array_args::{new_array, ArrayArgs, Model};
 use super::ViewArg;
 use csgpix_draw::float::{self, ScreenRule};
 use csgpix_draw::scenes::Scene;
@@ -122,20 +122,12 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     let t0 = Instant::now();
     let mut stack_levels = 0;
     let mut simulated = None;
-    let (codes, depths, cycles) = if a.array.model == Model::Float {
+    let drawn = if a.array.model == Model::Float {
         if a.array.probe.is_some() {
             let message = "--probe needs an array model (cycle or word)";
             return Err(Error::options("--probe", message));
         }
-        let f = float::render(
-            &scene.lists,
-            scene.clip.as_ref(),
-            cfg.width,
-            cfg.height,
-            &cfg.fmt,
-            ScreenRule::Exact,
-        );
-        (f.colour, f.depth, 0)
+        float_image(&scene, &cfg)
     } else if let Some([pw, ph]) = a.panel.and_then(|p| p.0) {
         let img = on_panels(&a, &scene, &cfg, (pw, ph))?;
         simulated = Some(img.simulated_pixel_clocks);
@@ -145,20 +137,20 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
             .map(|&c| Some(cfg.fmt.to_real(c)))
             .collect();
         let cycles = rtl_model::array::program_cycles(&cfg, &a.array.equations()?, &ops);
-        (img.colour, depth, cycles)
+        Drawn {
+            colour: img.colour,
+            depth,
+            cycles,
+        }
     } else {
         let (mut arr, levels) = a.array.build(&ops)?;
         stack_levels = levels;
-        run_with_progress(arr.as_mut(), &ops)?;
+        let drawn = draw_on(arr.as_mut(), &ops)?;
         a.array.write_waves(arr.as_mut(), &mut outs, waves)?;
-        // G and C pixel by pixel: a copy of every register would be 64 bytes a pixel.
-        let (colour, depth): (Vec<u32>, Vec<Option<f64>>) = (0..cfg.pixels())
-            .map(|i| arr.pixel(i % cfg.width, i / cfg.width))
-            .map(|p| (p.creg(CReg::G), Some(cfg.fmt.to_real(p.reg(Reg::C)))))
-            .unzip();
-        (colour, depth, arr.cycles())
+        drawn
     };
-    let image = image_rgb(&codes, a.shade.then_some(&depths[..]));
+    let cycles = drawn.cycles;
+    let image = image_rgb(&drawn.colour, a.shade.then_some(&drawn.depth[..]));
     let wall = t0.elapsed().as_secs_f64();
     write_png(&mut outs, png, cfg.width, cfg.height, &image)?;
     let to_stdout = outs.uses_stdout();
@@ -195,6 +187,64 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         super::report_line(&line, to_stdout);
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// A scene as a model drew it: every pixel's colour code (G) and depth (C, in scene depth
+/// units; None where the float reference drew nothing), row-major, and the clocks taken
+/// (0 for the float reference, which has none).
+pub struct Drawn {
+    /// G, pixel by pixel: the palette's colour codes.
+    pub colour: Vec<u32>,
+    /// C, pixel by pixel.
+    pub depth: Vec<Option<f64>>,
+    /// The array's clocks, DEPGEN's fill and the flush window included.
+    pub cycles: u64,
+}
+
+/// The float reference's picture of `scene` on the array `cfg`: exact depth intervals, the
+/// screen's edge as the array's (§5.2); no clock.
+pub fn float_image(scene: &Scene, cfg: &ArrayConfig) -> Drawn {
+    let (lists, clip) = (&scene.lists, scene.clip.as_ref());
+    let (w, h) = (cfg.width, cfg.height);
+    let f = float::render(lists, clip, w, h, &cfg.fmt, ScreenRule::Exact);
+    Drawn {
+        colour: f.colour,
+        depth: f.depth,
+        cycles: 0,
+    }
+}
+
+/// Run `ops` on `arr` ([`run_with_progress`]) and read every pixel's G and C out.
+pub fn draw_on(arr: &mut dyn Array, ops: &[Op]) -> crate::Result<Drawn> {
+    run_with_progress(arr, ops)?;
+    let cfg = *arr.config();
+    // G and C pixel by pixel: a copy of every register would be 64 bytes a pixel.
+    let (colour, depth) = (0..cfg.pixels())
+        .map(|i| arr.pixel(i % cfg.width, i / cfg.width))
+        .map(|p| (p.creg(CReg::G), Some(cfg.fmt.to_real(p.reg(Reg::C)))))
+        .unzip();
+    Ok(Drawn {
+        colour,
+        depth,
+        cycles: arr.cycles(),
+    })
+}
+
+/// `scene`, compiled to `ops` for the array `cfg` ([`compile`]), drawn by `model`: the
+/// float reference's picture ([`float_image`]), or a fresh array's of `cfg` running `set`
+/// (§2.3.3) after the whole program ([`draw_on`]): the Python binding's `render`, from the
+/// pieces the command line's `render` runs without panels.
+pub fn draw(
+    scene: &Scene,
+    ops: &[Op],
+    cfg: &ArrayConfig,
+    model: Model,
+    set: EquationSet,
+) -> crate::Result<Drawn> {
+    if model == Model::Float {
+        return Ok(float_image(scene, cfg));
+    }
+    draw_on(new_array(model, *cfg, set).as_mut(), ops)
 }
 
 /// Bytes a render holds per pixel besides the array (docs/memory.md): G and C read out

@@ -254,11 +254,12 @@ fn render_program(a: &Args, scene: &CsgScene) -> crate::Result<(usize, u64)> {
     let Some(clip) = clip else {
         return Ok((0, 0));
     };
-    let ops = clip_scene_ops(&lists, &clip, &cfg.fmt, cfg.colour_bits).map_err(|(i, e)| match e
-        .field
-    {
-        csgpix_draw::compile::WHOLE_PROGRAM => Error::Compile(e.msg),
-        _ => Error::Compile(format!("solid {}: {}", i + 1, e.msg)),
+    let ops = clip_scene_ops(&lists, &clip, &cfg.fmt, cfg.colour_bits).map_err(|(i, e)| {
+        let whole = e.field == csgpix_draw::compile::WHOLE_PROGRAM;
+        Error::Compile {
+            solid: (!whole).then_some(i),
+            error: e,
+        }
     })?;
     let levels = check_program(&ops, 64)?;
     Ok((

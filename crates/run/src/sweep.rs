@@ -38,6 +38,7 @@ use rtl_model::{Equations, WordFormat};
 use serde::Serialize;
 
 use crate::plot::{Chart, Series};
+use csgpix_draw::compile::CompileError;
 use csgpix_draw::float::rounding_bound;
 use csgpix_openscad::parse_csg;
 use csgpix_scene::solid::CsgScene;
@@ -565,10 +566,14 @@ fn plane_words(slicer: &Slicer, prim: usize) -> crate::Result<Vec<PlaneWord>> {
     slicer.lists[prim]
         .planes
         .iter()
-        .map(|p| {
+        .enumerate()
+        .map(|(plane, p)| {
             csgpix_draw::compile::coeffs(&slicer.fmt, p.z0, p.dzx, p.dzy)
                 .map(|c| PlaneWord { c, y: p.y, h: p.h })
-                .map_err(|(_, msg)| Error::Compile(format!("solid {}: {msg}", prim + 1)))
+                .map_err(|(field, msg)| Error::Compile {
+                    solid: Some(prim),
+                    error: CompileError { plane, field, msg },
+                })
         })
         .collect()
 }

@@ -26,7 +26,6 @@ use csgpix_voxel::{
     memory_estimate, voxelize, voxelize_slabs, voxelize_streaming, BindingProblem,
     Error as VoxelError, Grid, GridSpec, Route, Sampling, Slicer, SlicerOptions, Volume, Work,
 };
-use csgpix_zarr::{voxelize_bricks, voxelize_rows, VolumeAttrs, ZarrVolume};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::{Equations, WordFormat};
@@ -204,18 +203,7 @@ pub struct GridArgs {
 impl GridArgs {
     /// The grid of `res` (or of `--voxel`) over `--bounds` or the scene's.
     pub fn grid(&self, res: Option<Resolution>, scene: &Loaded) -> crate::Result<Grid> {
-        let spec = match (self.voxel, res) {
-            (Some(v), _) => GridSpec {
-                voxel: Some(v),
-                ..GridSpec::default()
-            },
-            (None, Some(r)) => r.spec(),
-            (None, None) => GridSpec::default(),
-        };
-        let spec = GridSpec {
-            pad: self.pad,
-            ..spec
-        };
+        let spec = grid_spec(res, self.voxel, self.pad);
         scene.grid_over(&spec, self.bounds).map_err(flag_message)
     }
 
@@ -223,6 +211,20 @@ impl GridArgs {
     pub fn any(&self) -> bool {
         self.voxel.is_some() || self.pad > 0 || self.bounds.is_some()
     }
+}
+
+/// The grid spec of cubic voxels of side `voxel` if given, else of `res` (`--res`), with
+/// `pad` empty voxels on every side (`--pad`); the Python binding's `res`, `voxel`, `pad`.
+pub fn grid_spec(res: Option<Resolution>, voxel: Option<f64>, pad: usize) -> GridSpec {
+    let spec = match (voxel, res) {
+        (Some(v), _) => GridSpec {
+            voxel: Some(v),
+            ..GridSpec::default()
+        },
+        (None, Some(r)) => r.spec(),
+        (None, None) => GridSpec::default(),
+    };
+    GridSpec { pad, ..spec }
 }
 
 /// `--sampling`, shared with `sculpt`.
@@ -326,25 +328,10 @@ impl Voxelization {
     }
 }
 
-/// The memory of voxelizing chunk rows of `store` (bricks of its tiles on the run route,
-/// whole rows else) with `threads` threads: the route's and the writer's (docs/memory.md).
-pub fn zarr_rows_estimate(
-    slicer: &Slicer,
-    route: Route,
-    eval: &dyn SliceEval,
-    threads: usize,
-    store: &ZarrVolume,
-) -> Result<u64, csgpix_zarr::Error> {
-    let grid = &slicer.grid;
-    let layout = store.layout();
-    if matches!(route, Route::Runs { .. }) {
-        let writer = csgpix_zarr::writer_bytes_bricks(grid.dims, &layout, threads)?;
-        let runs = csgpix_voxel::runs::memory_estimate_bricks(slicer, eval, threads, store.tile());
-        return Ok(runs.saturating_add(writer));
-    }
-    let prims = slicer.primitive_count();
-    let rows = csgpix_zarr::memory_estimate(grid, &layout, prims, threads)?;
-    Ok(rows.saturating_add(imports_estimate(slicer)))
+/// The voxelizer's worker threads: `threads` of them, or by default one per core (rayon's).
+pub fn thread_pool(threads: Option<usize>) -> crate::Result<rayon::ThreadPool> {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads.unwrap_or(0));
+    Ok(pool.build()?)
 }
 
 /// Bytes the slab routes hold for the imports of `slicer` (datasets' samples, meshes' runs).
@@ -503,7 +490,7 @@ pub fn parse_res(s: &str) -> crate::error::Parsed<Resolution> {
 }
 
 /// `--chunk`: N (a cube) or XxYxZ, each side 1..=65536; held Z, Y, X.
-fn parse_chunk(s: &str) -> crate::error::Parsed<[usize; 3]> {
+pub fn parse_chunk(s: &str) -> crate::error::Parsed<[usize; 3]> {
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
     let parts: Vec<&str> = s.split(['x', 'X']).collect();
     let chunk = match parts[..] {
@@ -521,7 +508,7 @@ fn parse_chunk(s: &str) -> crate::error::Parsed<[usize; 3]> {
 }
 
 /// `--shard`: N chunks a side (1..=65536), or `none` for 1.
-fn parse_shard(s: &str) -> crate::error::Parsed<usize> {
+pub fn parse_shard(s: &str) -> crate::error::Parsed<usize> {
     if s == "none" {
         return Ok(1);
     }
@@ -876,40 +863,28 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     let set = vox.equations.set();
     let t0 = Instant::now();
     let bar = progress(&slicer, route);
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()?;
+    let pool = thread_pool(Some(threads))?;
     let tick = || bar.inc(1);
     if a.format() == FormatArg::Zarr {
         let root = named.outs.stage_root(named.nrrd)?;
-        let attrs = VolumeAttrs::new(
-            format!("csgpix voxelize {name}"),
-            csgpix_zarr::values_text(a.grey, a.blend.is_some()),
-        );
-        let store =
-            ZarrVolume::create(&root, &grid, &layout, &attrs).map_err(|e| zarr_message(e, &a))?;
+        let (grey, blend) = (a.grey, a.blend.is_some());
+        let store = crate::zarr::create_store(&root, &grid, &layout, &name, grey, blend)
+            .map_err(|e| zarr_message(e, &a))?;
         let rows = store.chunk_rows().len();
-        let tiles = store.tiles();
-        let bricks = matches!(route, Route::Runs { .. }).then_some(rows * tiles.len());
+        let bricks = crate::zarr::by_bricks(route).then_some(rows * store.tiles().len());
         if let Some(n) = bricks {
             bar.set_length(n as u64);
             bar.set_message("bricks");
         }
         let work = pool
-            .install(|| match route {
-                Route::Runs { float } => voxelize_bricks(
-                    &slicer,
-                    float,
-                    set,
-                    eval.as_ref(),
-                    &tick,
-                    &store,
-                    0..rows,
-                    &tiles,
-                ),
-                _ => voxelize_rows(&slicer, route, set, eval.as_ref(), &tick, &store, 0..rows),
+            .install(|| {
+                let e = eval.as_ref();
+                crate::zarr::write_bricks(&slicer, route, set, e, &tick, &store, 0..rows, None)
             })
-            .map_err(|e| zarr_message(e, &a))?;
+            .map_err(|e| match e {
+                Error::Zarr(e) => zarr_message(e, &a),
+                e => e,
+            })?;
         bar.finish_and_clear();
         let wall = t0.elapsed().as_secs_f64();
         named.outs.commit()?;
@@ -1082,26 +1057,20 @@ fn estimate(
     layout: &csgpix_zarr::Layout,
     (stream, runs_nrrd): (bool, Option<[u64; 2]>),
 ) -> crate::Result<u64> {
+    if a.format() == FormatArg::Zarr {
+        // Nothing else is held: check_format refuses --store beside a Zarr store.
+        let need = crate::zarr::estimate(slicer, route, eval, threads, layout);
+        return need.map_err(|e| zarr_message(e, a));
+    }
     let grid = &slicer.grid;
-    let prims = slicer.primitive_count();
     let runs = matches!(route, Route::Runs { .. });
     // Streamed, the NRRD output holds the runs and a slice, as a Zarr row sweep does.
-    let whole_volume = a.format() == FormatArg::Nrrd && a.store.is_none() && !stream;
-    let mut need = match (runs, a.format()) {
-        (true, FormatArg::Nrrd) => runs_nrrd
+    let whole_volume = a.store.is_none() && !stream;
+    let mut need = match runs {
+        true => runs_nrrd
             .unwrap_or_else(|| csgpix_voxel::runs::memory_estimates(slicer, eval, threads))
             [usize::from(whole_volume)],
-        (true, FormatArg::Zarr) => {
-            let levels = csgpix_zarr::plan(grid.dims, layout).map_err(|e| zarr_message(e, a))?;
-            let tile = csgpix_zarr::tile(grid.dims, &levels);
-            let writer = csgpix_zarr::writer_bytes_bricks(grid.dims, layout, threads)
-                .map_err(|e| zarr_message(e, a))?;
-            csgpix_voxel::runs::memory_estimate_bricks(slicer, eval, threads, tile)
-                .saturating_add(writer)
-        }
-        (false, FormatArg::Nrrd) => memory_estimate(grid, prims, threads),
-        (false, FormatArg::Zarr) => csgpix_zarr::memory_estimate(grid, layout, prims, threads)
-            .map_err(|e| zarr_message(e, a))?,
+        false => memory_estimate(grid, slicer.primitive_count(), threads),
     };
     if !runs {
         need = need.saturating_add(imports_estimate(slicer));
