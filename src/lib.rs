@@ -16,7 +16,7 @@
 //! | `csgpix-draw` | [`draw`] | scenes → display lists → array operations, the `float` model, panels, throughput |
 //! | `csgpix-voxel` | [`voxel`] | slices from the array, masks, the Blist and baseline evaluators, requirements |
 //! | `csgpix-sculpt` | [`sculpt`] | the hashed octree of seed 000, its baselines, Marching Cubes, sculpting |
-//! | `csgpix-zarr` | [`zarr`] | volumes as OME-Zarr 0.5 stores, written a chunk row at a time |
+//! | `csgpix-zarr` | `zarr` (feature `zarr`, default) | volumes as OME-Zarr 0.5 stores, written a chunk row at a time |
 //! | `csgpix-run` | [`run`] | every command's flags, run and report; the study, charts, PNG output, stores fed from the voxelizer |
 
 pub use csgpix_draw as draw;
@@ -26,6 +26,7 @@ pub use csgpix_run as run;
 pub use csgpix_scene as scene;
 pub use csgpix_sculpt as sculpt;
 pub use csgpix_voxel as voxel;
+#[cfg(feature = "zarr")]
 pub use csgpix_zarr as zarr;
 pub use glam;
 pub use rtl_model;

@@ -28,6 +28,7 @@ pub enum Error {
     Sculpt(#[from] csgpix_sculpt::Error),
     /// A Zarr store's.
     #[error(transparent)]
+    #[cfg(feature = "zarr")]
     Zarr(#[from] csgpix_zarr::Error),
     /// A program the array cannot run (its stack, its windows).
     #[error(transparent)]

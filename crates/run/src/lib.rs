@@ -50,6 +50,7 @@ pub mod sweep;
 pub mod throughput;
 pub mod verify_select;
 pub mod voxelize;
+#[cfg(feature = "zarr")]
 pub mod zarr;
 
 use std::process::ExitCode;

@@ -591,7 +591,12 @@ struct Report {
     warnings: Vec<String>,
 }
 
+/// Without Zarr stores (the `zarr` feature off) the report's `zarr` is always null.
+#[cfg(not(feature = "zarr"))]
+type ZarrReport = ();
+
 /// The `--format zarr` figures of the JSON report.
+#[cfg(feature = "zarr")]
 #[derive(Serialize, Clone, Debug)]
 struct ZarrReport {
     /// Level 0's chunk shape (a shard's inner chunk), Z, Y, X.
@@ -734,6 +739,12 @@ pub fn flag_message(e: VoxelError) -> Error {
 /// `--format zarr` with what it cannot do, refused in one line before anything is named:
 /// the options that need the whole volume in memory, and standard output.
 fn check_format(a: &Args) -> crate::Result<()> {
+    #[cfg(not(feature = "zarr"))]
+    if a.format() == FormatArg::Zarr {
+        let message = "-o: this csgpix is built without Zarr stores (the `zarr` feature): \
+                       write a .nrrd file";
+        return Err(Error::options("-o", message));
+    }
     if a.format() == FormatArg::Nrrd {
         let zarr_only = [
             ("--chunk", a.chunk.is_some()),
@@ -830,11 +841,6 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     let threads = a
         .threads
         .map_or_else(rayon::current_num_threads, usize::from);
-    let layout = csgpix_zarr::Layout {
-        chunk: a.chunk.unwrap_or([csgpix_zarr::DEFAULT_CHUNK; 3]),
-        shard: a.shard.unwrap_or(csgpix_zarr::DEFAULT_SHARD),
-        levels: a.levels.map(usize::from),
-    };
     let vox = a.voxelization();
     let slicer = vox
         .slicer(&loaded, grid)
@@ -852,7 +858,6 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         route,
         eval.as_ref(),
         threads,
-        &layout,
         (stream, runs_nrrd),
     )?;
     let fix = match a.format() {
@@ -865,7 +870,10 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     let bar = progress(&slicer, route);
     let pool = thread_pool(Some(threads))?;
     let tick = || bar.inc(1);
+    // Refused by check_format when built without Zarr stores.
+    #[cfg(feature = "zarr")]
     if a.format() == FormatArg::Zarr {
+        let layout = zarr_layout(&a);
         let root = named.outs.stage_root(named.nrrd)?;
         let (grey, blend) = (a.grey, a.blend.is_some());
         let store = crate::zarr::create_store(&root, &grid, &layout, &name, grey, blend)
@@ -1054,12 +1062,12 @@ fn estimate(
     route: Route,
     eval: &dyn SliceEval,
     threads: usize,
-    layout: &csgpix_zarr::Layout,
     (stream, runs_nrrd): (bool, Option<[u64; 2]>),
 ) -> crate::Result<u64> {
+    #[cfg(feature = "zarr")]
     if a.format() == FormatArg::Zarr {
         // Nothing else is held: check_format refuses --store beside a Zarr store.
-        let need = crate::zarr::estimate(slicer, route, eval, threads, layout);
+        let need = crate::zarr::estimate(slicer, route, eval, threads, &zarr_layout(a));
         return need.map_err(|e| zarr_message(e, a));
     }
     let grid = &slicer.grid;
@@ -1085,7 +1093,18 @@ fn estimate(
     Ok(need)
 }
 
+/// The store's layout from --chunk, --shard and --levels.
+#[cfg(feature = "zarr")]
+fn zarr_layout(a: &Args) -> csgpix_zarr::Layout {
+    csgpix_zarr::Layout {
+        chunk: a.chunk.unwrap_or([csgpix_zarr::DEFAULT_CHUNK; 3]),
+        shard: a.shard.unwrap_or(csgpix_zarr::DEFAULT_SHARD),
+        levels: a.levels.map(usize::from),
+    }
+}
+
 /// A Zarr store's error, naming `-o` where the library names the staging directory.
+#[cfg(feature = "zarr")]
 fn zarr_message(e: csgpix_zarr::Error, a: &Args) -> Error {
     use csgpix_zarr::Error as Z;
     match e {
