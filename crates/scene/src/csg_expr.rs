@@ -15,6 +15,8 @@
 //! (open parentheses plus pending `!`) deeper than [`MAX_DEPTH`] is refused with the column
 //! where it happens, and no input overflows the stack.
 
+use std::collections::HashMap;
+
 use crate::expr::{self, BinOp, Grammar, Node};
 use crate::solid::CsgNode;
 use crate::Result;
@@ -77,12 +79,15 @@ const GRAMMAR: Grammar = Grammar {
 /// ```
 pub fn parse(text: &str) -> Result<CsgExpr> {
     let mut names: Vec<String> = vec![];
+    // Each name's index, found by hashing: a search of `names` for every name read made a
+    // long expression of distinct names quadratic in its length.
+    let mut index: HashMap<String, usize> = HashMap::new();
     let intern = |name: &str| {
-        let i = names.iter().position(|n| n == name);
-        Ok::<_, crate::Error>(i.unwrap_or_else(|| {
+        let i = *index.entry(name.to_string()).or_insert_with(|| {
             names.push(name.to_string());
             names.len() - 1
-        }))
+        });
+        Ok::<_, crate::Error>(i)
     };
     let tree = expr::parse(text, &GRAMMAR, intern)?;
     let root = tree.lower(|node, kids| match node {

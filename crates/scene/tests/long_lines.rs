@@ -116,6 +116,20 @@ fn long_expressions_are_refused_in_linear_time() {
     assert_linear("CSG expression", expr, |b| {
         assert!(csg_expr::parse(std::str::from_utf8(b).unwrap()).is_err());
     });
+    // `A0+A1+…+`: as many distinct names as fit, each looked up once.
+    let distinct = |n: usize| {
+        let mut t = String::new();
+        for i in 0.. {
+            if t.len() >= n {
+                break;
+            }
+            t += &format!("A{i}+");
+        }
+        t.into_bytes()
+    };
+    assert_linear("CSG expression of distinct names", distinct, |b| {
+        assert!(csg_expr::parse(std::str::from_utf8(b).unwrap()).is_err());
+    });
     let names = ["A".to_string()];
     assert_linear("clipping function", expr, |b| {
         assert!(Clip::parse(std::str::from_utf8(b).unwrap(), &names).is_err());
