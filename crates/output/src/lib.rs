@@ -25,7 +25,7 @@ use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 
 mod error;
 
-pub use error::{Error, IoError, Refusal, Result};
+pub use error::{Error, IoError, OneLine, Refusal, Result};
 
 /// Staged paths a signal must remove: temporary files and directories not yet committed.
 static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());

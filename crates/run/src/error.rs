@@ -5,6 +5,8 @@
 
 use std::path::PathBuf;
 
+use csgpix_output::OneLine;
+
 /// A command's error.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
@@ -46,7 +48,7 @@ pub enum Error {
     Golden(#[from] rtl_model::verilog::GoldenError),
     /// A program that does not compile for the array, said of the solid it comes from (the
     /// scene-wide compile errors of `requirements` and the study, which have no file place).
-    #[error("{0}")]
+    #[error("{}", OneLine(.0))]
     Compile(String),
     /// Golden vectors that do not fit the table they are checked against.
     #[error(transparent)]
@@ -64,7 +66,7 @@ pub enum Error {
     Memory(#[from] crate::memory::OverMemory),
     /// Options the command cannot take together, or one it needs and was not given: `flag`
     /// names the option at fault, `message` says what to change (naming it).
-    #[error("{message}")]
+    #[error("{}", OneLine(message))]
     Options {
         /// The option at fault, as the command line spells it (`--json`, `--probe`, `-o`).
         flag: &'static str,
@@ -72,7 +74,7 @@ pub enum Error {
         message: String,
     },
     /// A file that could not be read or written.
-    #[error("{}: {source}", path.display())]
+    #[error("{}: {source}", OneLine(path.display()))]
     Io {
         /// The file.
         path: PathBuf,
@@ -80,7 +82,7 @@ pub enum Error {
         source: std::io::Error,
     },
     /// An error and what it happened to: an input's name, a flag (`what: source`).
-    #[error("{what}: {source}")]
+    #[error("{}: {source}", OneLine(what))]
     Context {
         /// The input or option it concerns.
         what: String,

@@ -34,7 +34,10 @@ fn assert_linear(what: &str, make: impl Fn(usize) -> Vec<u8>, read: impl Fn(&[u8
     let t1 = best_of_three(|| read(&small)).max(Duration::from_millis(5));
     let t8 = best_of_three(|| read(&large));
     let ratio = t8.as_secs_f64() / t1.as_secs_f64();
-    assert!(ratio < 30.0, "{what}: {t1:?} for {N} bytes, {t8:?} for 8 times as many");
+    assert!(
+        ratio < 30.0,
+        "{what}: {t1:?} for {N} bytes, {t8:?} for 8 times as many"
+    );
 }
 
 /// `0 0 0 1` then `n` more bytes of ` 0` fields: refused at column 9, the fifth field.

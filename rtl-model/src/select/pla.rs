@@ -395,7 +395,10 @@ impl Parser {
                 Some(names) => names.names.iter().map(|n| (names.line, n.0)).collect(),
                 None => vec![(ni.line, ni.col); ni.value],
             },
-            outputs: self.ob.as_ref().map_or((no.line, no.col), |n| (n.line, n.col)),
+            outputs: self
+                .ob
+                .as_ref()
+                .map_or((no.line, no.col), |n| (n.line, n.col)),
         };
         self.dims = Some((ni.value, no.value));
         Ok((ni.value, no.value))

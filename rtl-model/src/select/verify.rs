@@ -158,10 +158,14 @@ pub fn verify_table(
         .collect::<Result<_, _>>()?;
     let mut reports = Vec::new();
     for s in table.signals() {
-        let j = pla.outputs.iter().position(|o| o == s.short()).ok_or_else(|| {
-            let signal = s.short();
-            file.error(file.places.outputs, VectorProblem::NoOutput { signal })
-        })?;
+        let j = pla
+            .outputs
+            .iter()
+            .position(|o| o == s.short())
+            .ok_or_else(|| {
+                let signal = s.short();
+                file.error(file.places.outputs, VectorProblem::NoOutput { signal })
+            })?;
         reports.push(verify_signal(set, *s, &vars, pla, j));
     }
     Ok(reports)
