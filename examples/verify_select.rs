@@ -3,8 +3,7 @@
 //!
 //! `cargo run --release --example verify_select`
 
-use rtl_model::select::pla::Pla;
-use rtl_model::select::verify::verify_table;
+use rtl_model::select::verify::{verify_table, VectorFile};
 use rtl_model::select::GOLDEN;
 use rtl_model::Equations;
 
@@ -13,8 +12,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let set = eq.set();
         let (mut rows, mut bad) = (0, 0);
         for (table, text) in GOLDEN {
-            let pla = Pla::parse(text)?;
-            for report in verify_table(&set, table, &pla)? {
+            let file = VectorFile::parse(format!("vectors/select/{}.pla", table.name()), text)?;
+            for report in verify_table(&set, table, &file)? {
                 rows += report.rows;
                 bad += report.mismatches.len();
             }

@@ -6,6 +6,7 @@ use csgpix_run as cli;
 use std::process::ExitCode;
 
 use clap::Parser;
+use csgpix_output::OneLine;
 
 /// A failed allocation ends the run with a one-line error and exit status 2, its staged
 /// outputs removed, never an abort (crates/output, docs/memory.md).
@@ -21,6 +22,14 @@ fn main() -> ExitCode {
             let _ = e.print();
             return ExitCode::SUCCESS;
         }
+        Err(e) if e.kind() == clap::error::ErrorKind::InvalidUtf8 => {
+            // clap does not say which argument: name it.
+            let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+            let msg = cli::args_utf8::message(&args)
+                .unwrap_or_else(|| "an argument is not UTF-8".to_string());
+            eprintln!("csgpix: {} (see --help)", OneLine(msg));
+            return ExitCode::from(2);
+        }
         Err(e) => {
             // One line: clap's message up to its usage hint, lines joined.
             let text = e.render().to_string();
@@ -31,7 +40,8 @@ fn main() -> ExitCode {
                 .filter(|l| !l.is_empty())
                 .collect();
             let msg = msg.join(" ");
-            eprintln!("csgpix: {} (see --help)", msg.trim_start_matches("error: "));
+            let msg = msg.trim_start_matches("error: ");
+            eprintln!("csgpix: {} (see --help)", OneLine(msg));
             return ExitCode::from(2);
         }
     };
@@ -43,7 +53,8 @@ fn main() -> ExitCode {
     match cli::run(args) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("csgpix: {e}");
+            // The libraries escape what they echo; this is the last resort for the rest.
+            eprintln!("csgpix: {}", OneLine(e));
             ExitCode::from(2)
         }
     }

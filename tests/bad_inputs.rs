@@ -322,3 +322,221 @@ fn whole_scene_clipping_errors_name_the_scene_or_clip_not_a_face() {
     );
     assert!(!png.exists());
 }
+
+/// A run of the binary with arguments as the system gives them (some not UTF-8): its one-line
+/// refusal (exit 2), without the `csgpix: ` prefix.
+#[cfg(unix)]
+fn refused_os(args: &[&std::ffi::OsStr]) -> String {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run csgpix");
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    err.trim_end().trim_start_matches("csgpix: ").to_string()
+}
+
+#[test]
+fn one_line_inputs_of_megabytes_are_refused_in_seconds() {
+    // Issue 26: a 0.96 MB display-list line took 10.9 s to be refused at column 9 (columns
+    // were recounted from the line's start for every field). 4 MB of each reader here.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let big = 4 << 20;
+    let timed = |args: &[&str], want: &str| {
+        let start = std::time::Instant::now();
+        let e = refused(args);
+        let took = start.elapsed();
+        assert!(e.contains(want), "{e}");
+        assert!(
+            took < std::time::Duration::from_secs(5),
+            "{args:?}: {took:?}"
+        );
+    };
+    let dl = d.join("long.dl");
+    std::fs::write(
+        &dl,
+        format!("0 0 0 1{}\n1 0 0\n0 0 0 1234\n", " 0".repeat(big / 2)),
+    )
+    .unwrap();
+    let png = d.join("o.png");
+    timed(
+        &["render", s(&dl), "-o", s(&png)],
+        "long.dl:1:9: expected end of line",
+    );
+    assert!(!png.exists());
+    let csv = d.join("long.csv");
+    std::fs::write(&csv, format!("0,0,0{}\n", ",0".repeat(big / 2))).unwrap();
+    let stl = d.join("o.stl");
+    let sculpt = ["sculpt", "vectors/scenes/twelve.csg", "--res", "8x8x8"];
+    let tool = ["--tool", "sphere:1", "--path", s(&csv), "-o", s(&stl)];
+    timed(
+        &[&sculpt[..], &tool].concat(),
+        "long.csv:1:7: expected 3 fields",
+    );
+    let vectors = d.join("vectors");
+    std::fs::create_dir(&vectors).unwrap();
+    for t in ["front", "back", "close", "clip", "second"] {
+        let text = std::fs::read_to_string(format!("vectors/select/{t}.pla")).unwrap();
+        let long = format!(".ilb P N J T M{}", " q".repeat(big / 2));
+        let text = text.replace(".ilb P N J T M", &long);
+        std::fs::write(vectors.join(format!("{t}.pla")), text).unwrap();
+    }
+    timed(
+        &["verify-select", "--vectors", s(&vectors)],
+        "second.pla:7:16: ",
+    );
+}
+
+#[test]
+fn expression_errors_give_line_and_column_in_every_command() {
+    let dir = tempfile::tempdir().unwrap();
+    let (nrrd, png) = (dir.path().join("o.nrrd"), dir.path().join("o.png"));
+    let prim = "A=vectors/scenes/hollow-cube.csg";
+    let voxelize = |expr: &str| {
+        let args = ["voxelize", "--expr", expr, "--prim", prim, "--res", "8x8x8"];
+        refused(&[&args[..], &["-o", s(&nrrd)]].concat())
+    };
+    let found_end = "expected a primitive name, '!' or '(', found the end";
+    assert_eq!(voxelize("A + ("), format!("--expr:1:6: {found_end}"));
+    // Columns count characters.
+    assert!(voxelize("é + A").starts_with("--expr:1:1: "));
+    assert!(voxelize("A + (é").starts_with("--expr:1:6: "));
+    // A name bound to no file: where the expression first names it.
+    assert_eq!(
+        voxelize("A -  B + B"),
+        "--expr:1:6: primitive `B` needs a file: --prim B=FILE"
+    );
+    assert!(!nrrd.exists());
+    assert_eq!(
+        refused(&["blist", "A + ("]),
+        format!("EXPR:1:6: {found_end}")
+    );
+    let clip = [
+        "render",
+        "vectors/thesis/cube.dl",
+        "--clip",
+        "A + (",
+        "-o",
+        s(&png),
+    ];
+    assert!(refused(&clip).starts_with("--clip:1:6: "));
+}
+
+#[cfg(unix)]
+#[test]
+fn arguments_that_are_not_utf8_are_named() {
+    use std::ffi::OsStr;
+    use std::os::unix::ffi::OsStrExt;
+    let bad = OsStr::from_bytes(b"A\xff");
+    let res = OsStr::from_bytes(b"--res=8\xff");
+    fn os(v: &[&'static str]) -> Vec<&'static OsStr> {
+        v.iter().map(|a| OsStr::new(*a)).collect()
+    }
+    let scene = os(&[
+        "voxelize",
+        "vectors/scenes/twelve.csg",
+        "-o",
+        "/nonexistent/o.nrrd",
+    ]);
+    let expr = os(&[
+        "voxelize",
+        "--prim",
+        "A=vectors/scenes/twelve.csg",
+        "--expr",
+    ]);
+    let cases = [
+        ([&os(&["blist"])[..], &[bad]].concat(), "EXPR", "A\\xFF"),
+        ([&expr[..], &[bad]].concat(), "--expr", "A\\xFF"),
+        ([&scene[..], &[res]].concat(), "--res", "8\\xFF"),
+        (
+            [&scene[..], &os(&["--res"]), &[bad]].concat(),
+            "--res",
+            "A\\xFF",
+        ),
+    ];
+    for (args, flag, value) in cases {
+        let e = refused_os(&args);
+        let want = format!("{flag}: the value \"{value}\" is not UTF-8: csgpix reads it as text");
+        assert!(e.starts_with(&want), "{e}");
+    }
+    // Paths are taken as they are: the file is looked for.
+    let dl = OsStr::from_bytes(b"no-such-\xff.dl");
+    let e = refused_os(&[
+        OsStr::new("render"),
+        dl,
+        OsStr::new("-o"),
+        OsStr::new("o.png"),
+    ]);
+    assert!(e.contains("No such file"), "{e}");
+}
+
+#[test]
+fn control_characters_are_escaped_where_input_is_echoed() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let png = d.join("o.png");
+    let render = |dl: &Path| refused(&["render", s(dl), "-o", s(&png)]);
+    // A field holding NUL, VT, FF, NEL and a line separator.
+    let dl = d.join("c.dl");
+    std::fs::write(
+        &dl,
+        "0 0 0 1\n1 0 x\0\x0b\x0c\u{85}\u{2028}\u{1b}\n0 0 0 1234\n",
+    )
+    .unwrap();
+    let e = render(&dl);
+    let want = r"c.dl:2:5: expected 0 or 1 for L, found `x\0\x0b\x0c\u{85}\u{2028}\x1b`";
+    assert!(e.ends_with(want), "{e}");
+    // A file's name.
+    let name = d.join("a\nb\u{85}\u{2029}\x0b.dl");
+    let e = render(&name);
+    assert!(e.contains(r"a\nb\u{85}\u{2029}\x0b.dl: "), "{e}");
+    // A name in a scene, echoed by the mesh reader's caller.
+    let csg = d.join("i.csg");
+    std::fs::write(&csg, "import(\"x\x0b\u{2028}.stl\");\n").unwrap();
+    let nrrd = d.join("o.nrrd");
+    let e = refused(&["voxelize", s(&csg), "--res", "8x8x8", "-o", s(&nrrd)]);
+    let name = r"x\x0b\u{2028}.stl";
+    assert!(
+        e.contains(&format!("`import(\"{name}\")`")) && e.ends_with(name),
+        "{e:?}"
+    );
+    assert!(!png.exists() && !nrrd.exists());
+}
+
+#[test]
+fn degenerate_extents_are_refused_where_they_are_read() {
+    // A cube 1e-307 across has voxels no f64 inverts: its planes came out NaN, refused as
+    // `coefficient NaN does not fit the depth word` with no place.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let csg = d.join("tiny.csg");
+    std::fs::write(
+        &csg,
+        "// too small for any grid\n  cube(size = [1e-307, 1, 1]);\n",
+    )
+    .unwrap();
+    let (nrrd, png) = (d.join("o.nrrd"), d.join("o.png"));
+    let want = format!(
+        "{}:2:3: degenerate extent: the solid is 1e-307 across in x, under 1e-12",
+        s(&csg)
+    );
+    let e = refused(&["voxelize", s(&csg), "--res", "8x8x8", "-o", s(&nrrd)]);
+    assert!(e.starts_with(&want), "{e}");
+    let e = refused(&["render", s(&csg), "-o", s(&png)]);
+    assert!(e.starts_with(&want), "{e}");
+    // Bounds given on the command line.
+    let args = [
+        "voxelize",
+        "vectors/scenes/twelve.csg",
+        "--bounds=0,0,0,1,1e-300,1",
+    ];
+    let e = refused(&[&args[..], &["--res", "8x8x8", "-o", s(&nrrd)]].concat());
+    assert!(
+        e.contains("--bounds") && e.contains("degenerate extent"),
+        "{e}"
+    );
+    assert!(!nrrd.exists() && !png.exists());
+}

@@ -71,6 +71,47 @@ fn verify_select_reports_a_broken_vector_file_with_line_and_column() {
     assert!(err.contains("back.pla:") && err.contains(":2:"), "{err}");
 }
 
+/// A copy of the golden vectors in a temporary directory, `second.pla` edited by `edit`.
+fn vectors_with_second(edit: impl Fn(String) -> String) -> tempfile::TempDir {
+    let d = tmp();
+    for t in ["front", "back", "close", "clip", "second"] {
+        let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("vectors/select/{t}.pla"));
+        std::fs::copy(src, d.path().join(format!("{t}.pla"))).unwrap();
+    }
+    let p = d.path().join("second.pla");
+    std::fs::write(&p, edit(std::fs::read_to_string(&p).unwrap())).unwrap();
+    d
+}
+
+#[test]
+fn verify_select_locates_names_the_select_logic_does_not_know() {
+    let cases: [(&dyn Fn(String) -> String, &str); 3] = [
+        // An input that is no variable: at its name in `.ilb`.
+        (
+            &|t| t.replace(".ilb P N J T M", ".ilb P N J  x0 M"),
+            "second.pla:7:13: unknown input \"x0\"",
+        ),
+        // No `.ilb`: the default names, at the `.i` count.
+        (
+            &|t| t.replace(".ilb P N J T M\n", ""),
+            "second.pla:5:4: unknown input \"x0\"",
+        ),
+        // An output of the table missing: at `.ob`.
+        (
+            &|t| t.replace(".ob S3 S4", ".ob S3 Q"),
+            "second.pla:8:1: no output S4",
+        ),
+    ];
+    for (edit, want) in cases {
+        let d = vectors_with_second(edit);
+        let out = csgpix(&["verify-select", "--vectors", s(d.path())]);
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        let want = format!("csgpix: {}\n", d.path().join(want).display());
+        assert_eq!(err, want);
+    }
+}
+
 #[test]
 fn render_cube_in_both_models_gives_the_same_image_and_cycles() {
     let d = tmp();

@@ -11,7 +11,8 @@
 //! the `--slices` PNGs when they became indexed PNGs whose pixel indices are the label codes,
 //! and the voxelize cases' NRRD files when volumes came to say `space: 3D-right-handed` (8
 //! bytes shorter; the voxels unchanged; the cases give `--res` per axis since `--res N` came
-//! to mean the longest side).
+//! to mean the longest side), and `bad-prim`'s message when `--expr` errors came to give the
+//! line and column (`--expr:1:3: primitive …`).
 //! A refactoring that changes no behaviour leaves every line equal. Timings (`*seconds*`, `*_s` JSON fields, `time` lines) are removed from
 //! standard output before digesting: they are the only bytes that differ from run to run.
 //!

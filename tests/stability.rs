@@ -581,11 +581,18 @@ fn tiny_coefficients_round_to_the_word_without_panics() {
         let e = rounding_bound(&fmt, i % 8, i / 8);
         assert!((c[i] - d.unwrap()).abs() <= e, "pixel {i}");
     }
-    // Tiny and huge solids in a .csg scene: the reader refuses coordinates beyond 1e12 with a
-    // position; a 1e-300 cube projects without panicking; a cube of 1e11 renders.
+    // Tiny and huge solids in a .csg scene: the reader refuses coordinates beyond 1e12 and
+    // solids under 1e-12 across (a 1e-307 cube's planes came out NaN) with a position; a cube
+    // of 1e11 renders, and one of 1e-12.
     let e = parse_csg("cube(1e13);", "huge.csg").unwrap_err();
     assert!(e.to_string().starts_with("huge.csg:1:1: "), "{e}");
-    for text in ["cube(1e-300);", "cube(1e11);", "cube(1e11); cube(1e-3);"] {
+    let e = parse_csg("cube(1e-300);", "tiny.csg").unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("tiny.csg:1:1: degenerate extent: "),
+        "{e}"
+    );
+    for text in ["cube(1e-12);", "cube(1e11);", "cube(1e11); cube(1e-3);"] {
         let scene = parse_csg(&format!("union() {{ {text} }}"), "t.csg").unwrap();
         let p = project::project(&scene, View::Iso, 16, 16, &fmt).unwrap();
         for dl in &p.lists {

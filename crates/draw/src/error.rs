@@ -4,7 +4,7 @@
 //! setting, the error carries what to set ([`Error::DeeperThanMaxdepth`]) and the command
 //! line words it.
 
-use csgpix_scene::Location;
+use csgpix_scene::{Location, OneLine};
 use rtl_model::WordFormat;
 
 use crate::compile::CompileError;
@@ -80,7 +80,7 @@ pub enum Error {
     #[error("{0}")]
     Counter(String),
     /// A problem about `what` (e.g. the primitive it concerns): `what: source`.
-    #[error("{what}: {source}")]
+    #[error("{}: {source}", OneLine(what))]
     Context {
         /// What the problem concerns.
         what: String,

@@ -26,7 +26,7 @@ pub enum LoadError {
     Scene(#[from] csgpix_scene::Error),
     /// Projecting the `.csg` scene at `path` failed (a caller may word
     /// [`crate::Error::DeeperThanMaxdepth`] in terms of its own options).
-    #[error("{path}: {error}")]
+    #[error("{}: {error}", csgpix_scene::OneLine(path))]
     Draw {
         /// The scene file.
         path: String,

@@ -21,6 +21,11 @@ pub const MAX_POLYHEDRON_POINTS: usize = 10_000;
 /// Largest absolute coordinate of a placed solid, so that areas and volumes stay finite.
 pub const MAX_COORDINATE: f64 = 1e12;
 
+/// Smallest positive side of a placed solid's bounding box (a side of 0, a flat shape, is
+/// another matter): the smallest side of a grid ([`csgpix_scene::grid::MIN_EXTENT`]), the
+/// counterpart of [`MAX_COORDINATE`].
+pub const MIN_EXTENT: f64 = csgpix_scene::grid::MIN_EXTENT;
+
 /// OpenSCAD's `GRID_FINE` (`src/geometry/Grid.h`): below this radius a circle has 3 fragments.
 pub(crate) const GRID_FINE: f64 = 0.000_000_953_674_316_406_25;
 

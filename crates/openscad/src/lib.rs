@@ -123,7 +123,7 @@ mod value;
 
 pub use consts_::{
     MAX_COORDINATE, MAX_FRAGMENTS, MAX_NESTING, MAX_POLYHEDRON_POINTS, MAX_SCENE_VERTICES,
-    MAX_VECTOR_NESTING,
+    MAX_VECTOR_NESTING, MIN_EXTENT,
 };
 pub use export::{in_scad, read_scene, read_scene_with, scene_text};
 

@@ -35,12 +35,37 @@ pub(crate) fn place(shape: Shape, ctx: &Ctx, pos: Pos) -> Result<ConvexSolid, Fa
         let msg = format!("a coordinate exceeds {MAX_COORDINATE:e} in size");
         return fail(pos, msg);
     }
+    if let Some(msg) = degenerate_extent(vertices.iter().copied()) {
+        return fail(pos, msg);
+    }
     Ok(ConvexSolid {
         vertices,
         faces,
         colour: ctx.colour,
         line: pos.line,
     })
+}
+
+/// `degenerate extent: …` when the box around `points` has a side that is positive but below
+/// [`MIN_EXTENT`].
+pub(crate) fn degenerate_extent(points: impl Iterator<Item = [f64; 3]>) -> Option<String> {
+    let (lo, hi) = points.fold(
+        ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
+        |(lo, hi), p| {
+            (
+                std::array::from_fn(|i| lo[i].min(p[i])),
+                std::array::from_fn(|i| hi[i].max(p[i])),
+            )
+        },
+    );
+    let (axis, side) = ["x", "y", "z"]
+        .into_iter()
+        .zip((0..3).map(|i| hi[i] - lo[i]))
+        .find(|&(_, side)| side > 0.0 && side < MIN_EXTENT)?;
+    Some(format!(
+        "degenerate extent: the solid is {side:e} across in {axis}, under {MIN_EXTENT:e} \
+         (csgpix's smallest, as {MAX_COORDINATE:e} is its largest coordinate)"
+    ))
 }
 
 /// Beyond [`MAX_COORDINATE`], or not a number at all.

@@ -766,6 +766,9 @@ impl<'a> Reader<'a> {
             let msg = format!("a coordinate exceeds {MAX_COORDINATE:e} in size");
             return fail(to.pos, msg);
         }
+        if let Some(msg) = degenerate_extent(tris.iter().flatten().copied()) {
+            return fail(to.pos, msg);
+        }
         self.imports.push(Import {
             file: format!("{} at {}", to.name, to.pos),
             threshold: None,

@@ -538,6 +538,28 @@ fn size_limits() {
 }
 
 #[test]
+fn degenerate_extents_are_refused_at_the_primitive() {
+    // A cube 1e-307 across made voxels no f64 inverts: NaN plane coefficients.
+    assert_err(
+        "cube(1e-307);",
+        1,
+        1,
+        "degenerate extent: the solid is 1e-307 across in x",
+    );
+    let thin = "\n  cube(size = [1, 1e-300, 1]);";
+    assert_err(
+        thin,
+        2,
+        3,
+        "degenerate extent: the solid is 1e-300 across in y",
+    );
+    // Tiny coordinates of a solid of ordinary size are fine.
+    let near = "multmatrix([[1, 0, 0, 1e-300], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(1);";
+    assert_eq!(parse(near).solids.len(), 1);
+    assert_eq!(parse("cube(1e-12);").solids.len(), 1);
+}
+
+#[test]
 fn all_nodes_seed_parses() {
     let scene = parse(ALL_NODES);
     assert_eq!(scene.solids.len(), 6); // the `%cube` is left out

@@ -149,12 +149,48 @@ pub enum Refusal {
 /// A result of this crate.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
-/// Text shown on one line: a quoted name or literal may hold line breaks.
-pub(crate) struct OneLine<'a>(pub(crate) &'a str);
+/// Text shown on one line, as a terminal shows it: a name or an input's fragment echoed in an
+/// error may hold line breaks or other control characters (NUL, VT, FF, NEL, U+2028), which
+/// would break the one line, move the cursor or vanish. Each is written escaped, Rust style:
+/// `\0`, `\t`, `\n`, `\r`, `\x0b` for the other C0 controls and DEL, `\u{85}` for the C1
+/// controls and the Unicode line and paragraph separators. Everything else, backslashes
+/// included, is written as it is, so escaping twice changes nothing.
+///
+/// ```
+/// use csgpix_output::OneLine;
+///
+/// assert_eq!(OneLine("a\nb\0c\x0bd\u{85}e\u{2028}").to_string(), r"a\nb\0c\x0bd\u{85}e\u{2028}");
+/// assert_eq!(OneLine(r"C:\dir\n").to_string(), r"C:\dir\n");
+/// ```
+pub struct OneLine<T>(pub T);
 
-impl fmt::Display for OneLine<'_> {
+impl<T: fmt::Display> fmt::Display for OneLine<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0.replace('\r', "\\r").replace('\n', "\\n"))
+        let text = self.0.to_string();
+        let mut rest = text.as_str();
+        while let Some(at) = rest.find(needs_escape) {
+            let c = rest[at..].chars().next().expect("found at a character");
+            f.write_str(&rest[..at])?;
+            write_escaped(f, c)?;
+            rest = &rest[at + c.len_utf8()..];
+        }
+        f.write_str(rest)
+    }
+}
+
+/// Control characters (C0, DEL, C1) and the Unicode line and paragraph separators.
+fn needs_escape(c: char) -> bool {
+    c.is_control() || matches!(c, '\u{2028}' | '\u{2029}')
+}
+
+fn write_escaped(f: &mut fmt::Formatter<'_>, c: char) -> fmt::Result {
+    match c {
+        '\0' => f.write_str("\\0"),
+        '\t' => f.write_str("\\t"),
+        '\n' => f.write_str("\\n"),
+        '\r' => f.write_str("\\r"),
+        c if c.is_ascii() => write!(f, "\\x{:02x}", u32::from(c)),
+        c => write!(f, "\\u{{{:x}}}", u32::from(c)),
     }
 }
 

@@ -26,7 +26,7 @@ use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 mod error;
 mod oom;
 
-pub use error::{Error, IoError, Refusal, Result};
+pub use error::{Error, IoError, OneLine, Refusal, Result};
 pub use oom::{fallible, one_arena_under_address_limit, try_zeroed, AllocFailed, ExitOnOom};
 
 /// Staged paths a signal must remove: temporary files and directories not yet committed.

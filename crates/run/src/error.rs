@@ -5,6 +5,8 @@
 
 use std::path::PathBuf;
 
+use csgpix_output::OneLine;
+
 /// A command's error.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
@@ -49,7 +51,7 @@ pub enum Error {
     /// `requirements` and the study, which have no file place): the draw compiler's error,
     /// said of the solid it comes from; printed as `solid N: MESSAGE`, or the message alone
     /// where it is the whole program's.
-    #[error("{}{}", solid_prefix(.solid), .error.msg)]
+    #[error("{}{}", solid_prefix(.solid), OneLine(&.error.msg))]
     Compile {
         /// The solid (0-based) whose plane the array cannot take; None for the whole
         /// program's (its clipping stack, a concave clipping volume).
@@ -88,7 +90,7 @@ pub enum Error {
     Memory(#[from] crate::memory::OverMemory),
     /// Options the command cannot take together, or one it needs and was not given: `flag`
     /// names the option at fault, `message` says what to change (naming it).
-    #[error("{message}")]
+    #[error("{}", OneLine(message))]
     Options {
         /// The option at fault, as the command line spells it (`--json`, `--probe`, `-o`).
         flag: &'static str,
@@ -96,7 +98,7 @@ pub enum Error {
         message: String,
     },
     /// A file that could not be read or written.
-    #[error("{}: {source}", path.display())]
+    #[error("{}: {source}", OneLine(path.display()))]
     Io {
         /// The file.
         path: PathBuf,
@@ -104,7 +106,7 @@ pub enum Error {
         source: std::io::Error,
     },
     /// An error and what it happened to: an input's name, a flag (`what: source`).
-    #[error("{what}: {source}")]
+    #[error("{}: {source}", OneLine(what))]
     Context {
         /// The input or option it concerns.
         what: String,

@@ -29,6 +29,7 @@ macro_rules! from_value_name {
     )*};
 }
 
+pub mod args_utf8;
 pub mod array_args;
 pub mod blist;
 pub mod completions;

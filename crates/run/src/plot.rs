@@ -75,7 +75,7 @@ pub enum PlotError {
         title: String,
     },
     /// The backend could not draw or write the file.
-    #[error("{}: {message}", path.display())]
+    #[error("{}: {message}", csgpix_output::OneLine(path.display()))]
     Draw {
         /// The PNG file.
         path: std::path::PathBuf,

@@ -3,8 +3,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use rtl_model::select::pla::Pla;
-use rtl_model::select::verify::{verify_table, SignalReport};
+use rtl_model::select::verify::{verify_table, SignalReport, VectorFile};
 use rtl_model::select::{Table, GOLDEN};
 use rtl_model::Equations;
 
@@ -27,7 +26,7 @@ pub struct Args {
     json: bool,
 }
 
-fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> crate::Result<Pla> {
+fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> crate::Result<VectorFile> {
     let (name, text) = match dir {
         Some(d) => {
             let p = d.join(format!("{}.pla", t.name()));
@@ -39,7 +38,8 @@ fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> crate::Result<Pla> {
             builtin.to_string(),
         ),
     };
-    Pla::parse(&text).map_err(|e| csgpix_scene::Error::at(name, e.line, e.col, e.msg).into())
+    let file = VectorFile::parse(name.as_str(), &text);
+    file.map_err(|e| csgpix_scene::Error::at(name, e.line, e.col, e.msg).into())
 }
 
 /// Every signal of `eq` checked on every care row of the golden vectors (§2.3.3): the
@@ -48,8 +48,8 @@ pub fn verify(eq: Equations, vectors: &Option<PathBuf>) -> crate::Result<Vec<Sig
     let set = eq.set();
     let mut reports: Vec<SignalReport> = vec![];
     for (t, text) in GOLDEN {
-        let pla = load(vectors, t, text)?;
-        reports.extend(verify_table(&set, t, &pla)?);
+        let file = load(vectors, t, text)?;
+        reports.extend(verify_table(&set, t, &file)?);
     }
     Ok(reports)
 }

@@ -544,6 +544,10 @@ pub fn parse_bounds(s: &str) -> crate::error::Parsed<(DVec3, DVec3)> {
     if extent.min_element() <= 0.0 {
         return Err("each X1, Y1, Z1 must be greater than its X0, Y0, Z0".into());
     }
+    let (side, min) = (extent.min_element(), csgpix_scene::grid::MIN_EXTENT);
+    if side < min {
+        return Err(format!("degenerate extent: a side is {side:e}, under {min:e}").into());
+    }
     Ok((lo, hi))
 }
 
@@ -717,10 +721,10 @@ fn load(a: &Args) -> crate::Result<Loaded> {
 pub fn flag_message(e: VoxelError) -> Error {
     match e {
         VoxelError::NeedsBounds => Error::options("--bounds", format!("{e}: give --bounds")),
-        VoxelError::Expr(m) => Error::options("--expr", format!("--expr: {m}")),
-        VoxelError::Unbound { name } => Error::options(
+        VoxelError::Expr(m) => Error::options("--expr", format!("--expr:{m}")),
+        VoxelError::Unbound { name, col } => Error::options(
             "--expr",
-            format!("--expr: primitive `{name}` needs a file: --prim {name}=FILE"),
+            format!("--expr:1:{col}: primitive `{name}` needs a file: --prim {name}=FILE"),
         ),
         VoxelError::Binding {
             name,

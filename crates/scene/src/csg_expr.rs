@@ -15,6 +15,8 @@
 //! (open parentheses plus pending `!`) deeper than [`MAX_DEPTH`] is refused with the column
 //! where it happens, and no input overflows the stack.
 
+use std::collections::HashMap;
+
 use crate::expr::{self, BinOp, Grammar, Node};
 use crate::solid::CsgNode;
 use crate::Result;
@@ -29,6 +31,9 @@ pub struct CsgExpr {
     pub root: CsgNode,
     /// The primitive names in order of first appearance.
     pub names: Vec<String>,
+    /// Where each name first appears: `columns[i]` is the column (1-based, in characters) of
+    /// `names[i]`'s first occurrence, for errors about a name found after parsing.
+    pub columns: Vec<usize>,
 }
 
 /// CSG expressions: every operator, messages naming primitives.
@@ -77,14 +82,18 @@ const GRAMMAR: Grammar = Grammar {
 /// ```
 pub fn parse(text: &str) -> Result<CsgExpr> {
     let mut names: Vec<String> = vec![];
+    // Each name's index, found by hashing: a search of `names` for every name read made a
+    // long expression of distinct names quadratic in its length.
+    let mut index: HashMap<String, usize> = HashMap::new();
     let intern = |name: &str| {
-        let i = names.iter().position(|n| n == name);
-        Ok::<_, crate::Error>(i.unwrap_or_else(|| {
+        let i = *index.entry(name.to_string()).or_insert_with(|| {
             names.push(name.to_string());
             names.len() - 1
-        }))
+        });
+        Ok::<_, crate::Error>(i)
     };
     let tree = expr::parse(text, &GRAMMAR, intern)?;
+    let columns = first_columns(text, &index, names.len());
     let root = tree.lower(|node, kids| match node {
         Node::Name(i) => CsgNode::Solid(*i),
         Node::Not(_) => {
@@ -94,7 +103,32 @@ pub fn parse(text: &str) -> Result<CsgExpr> {
         Node::Chain(BinOp::Intersection, _) => CsgNode::Intersection(kids),
         Node::Chain(BinOp::Difference, _) => CsgNode::Difference(kids),
     });
-    Ok(CsgExpr { root, names })
+    Ok(CsgExpr {
+        root,
+        names,
+        columns,
+    })
+}
+
+/// The column of the first occurrence of each of `count` names (`index` gives a name's
+/// number) in a text that parsed: every word of it is a name.
+fn first_columns(text: &str, index: &HashMap<String, usize>, count: usize) -> Vec<usize> {
+    let mut columns = vec![0; count];
+    let mut word = String::new();
+    // One pass, the column counted along; a space after the text ends the last word.
+    for (col, c) in text.chars().chain([' ']).enumerate() {
+        if c.is_ascii_alphanumeric() || c == '_' {
+            word.push(c);
+            continue;
+        }
+        if let Some(&i) = index.get(&word) {
+            if columns[i] == 0 {
+                columns[i] = col + 1 - word.len();
+            }
+        }
+        word.clear();
+    }
+    columns
 }
 
 #[cfg(test)]
@@ -165,6 +199,15 @@ mod tests {
         let e = parse("cube1+cube2-cube1").unwrap();
         assert_eq!(e.names, ["cube1", "cube2"]);
         assert_eq!(e.root, Difference(vec![Union(vec![s(0), s(1)]), s(0)]));
+    }
+
+    #[test]
+    fn names_keep_the_column_of_their_first_occurrence() {
+        let e = parse("  é_free+(B1.A)").unwrap_err();
+        assert_eq!(e.location().unwrap().col, 3);
+        let e = parse("  A+(B1.A)+\tc_2").unwrap();
+        assert_eq!(e.names, ["A", "B1", "c_2"]);
+        assert_eq!(e.columns, [3, 6, 13]);
     }
 
     #[test]

@@ -19,11 +19,11 @@ pub struct Location {
 
 impl fmt::Display for Location {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}:{}", self.file, self.line, self.col)
+        write!(f, "{}:{}:{}", OneLine(&self.file), self.line, self.col)
     }
 }
 
-pub use csgpix_output::IoError;
+pub use csgpix_output::{IoError, OneLine};
 
 /// A scene error: what went wrong and, for bad input, where.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -91,15 +91,6 @@ pub enum Kind {
 
 /// A scene result.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
-
-/// Text shown on one line: a quoted name or literal may hold line breaks.
-struct OneLine<'a>(&'a str);
-
-impl fmt::Display for OneLine<'_> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0.replace('\r', "\\r").replace('\n', "\\n"))
-    }
-}
 
 impl Error {
     /// An error at `file:line:col`.

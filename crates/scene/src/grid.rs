@@ -36,7 +36,7 @@ impl Grid {
         Ok((min, max))
     }
 
-    /// A grid over an explicit box.
+    /// A grid over an explicit box, every side at least [`MIN_EXTENT`].
     pub fn new(dims: [usize; 3], min: DVec3, max: DVec3) -> Result<Grid> {
         if dims.contains(&0) {
             return Err(Error::EmptyResolution { dims });
@@ -44,6 +44,12 @@ impl Grid {
         if !(min.is_finite() && max.is_finite()) || (max - min).min_element() <= 0.0 {
             return Err(Error::invalid(format!(
                 "bounds {min} .. {max} must be finite with every side positive"
+            )));
+        }
+        let side = (max - min).min_element();
+        if side < MIN_EXTENT {
+            return Err(Error::invalid(format!(
+                "degenerate extent: the bounds are {side:e} across, under {MIN_EXTENT:e}"
             )));
         }
         Ok(Grid { dims, min, max })
@@ -69,6 +75,11 @@ impl Grid {
         self.dims[0] * self.dims[1]
     }
 }
+
+/// Smallest side of a grid's box (and of a solid the `.csg` reader places). A grid's voxels
+/// are its sides over at most [`MAX_GRID_SIDE`] voxels each: a box a few 1e-308 across has
+/// voxels no f64 can invert, and the planes drawn on it came out NaN.
+pub const MIN_EXTENT: f64 = 1e-12;
 
 /// Most voxels a grid may have along one axis (a `--voxel` size far below the scene's extent
 /// is refused here rather than by the memory estimate's arithmetic).
@@ -268,5 +279,9 @@ mod grid_tests {
         assert!(spec(None, Some(1e-9), 0).grid(lo, hi).is_err());
         assert!(spec(None, None, 0).grid(lo, hi).is_err());
         assert!(spec(Some([4; 3]), None, usize::MAX).grid(lo, hi).is_err());
+        // A box 1e-307 across made voxels no f64 inverts (NaN planes).
+        let e = Grid::new([8; 3], lo, DVec3::splat(1e-307)).unwrap_err();
+        assert!(e.to_string().starts_with("degenerate extent: "), "{e}");
+        assert!(Grid::new([8; 3], lo, DVec3::splat(MIN_EXTENT)).is_ok());
     }
 }

@@ -26,4 +26,4 @@ pub mod nrrd;
 pub mod solid;
 pub mod trimesh;
 
-pub use error::{Error, IoError, Kind, Location, Result};
+pub use error::{Error, IoError, Kind, Location, OneLine, Result};

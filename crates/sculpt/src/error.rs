@@ -4,7 +4,7 @@
 //! setting ([`Error::OverBudget`], [`Error::BadTool`]) the error carries the figures and the
 //! command line words it.
 
-use csgpix_scene::Location;
+use csgpix_scene::{Location, OneLine};
 
 /// An error of `csgpix-sculpt`.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -99,7 +99,7 @@ pub enum Error {
         problem: CellProblem,
     },
     /// A tool path file without a position: `file` as given.
-    #[error("{file}: no tool positions: give one row x,y,z per step")]
+    #[error("{}: no tool positions: give one row x,y,z per step", OneLine(file))]
     NoToolPositions {
         /// The file.
         file: String,
@@ -108,7 +108,7 @@ pub enum Error {
     #[error("space directions: sculpting needs positive axis-aligned voxel steps")]
     NotAxisAligned,
     /// A problem about `what` (e.g. the file it concerns): `what: source`.
-    #[error("{what}: {source}")]
+    #[error("{}: {source}", OneLine(what))]
     Context {
         /// What the problem concerns.
         what: String,

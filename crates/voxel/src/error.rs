@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use csgpix_scene::Location;
+use csgpix_scene::{Location, OneLine};
 
 /// An error of `csgpix-voxel`.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -23,8 +23,8 @@ pub enum Error {
     /// The scene has no primitive, so no box of its own: a grid over it needs bounds given.
     #[error("the scene has no primitives")]
     NeedsBounds,
-    /// A CSG expression over named primitives (§4.3.2) could not be read: the column and
-    /// the reader's error.
+    /// A CSG expression over named primitives (§4.3.2) could not be read: its line (always
+    /// 1) and column, and the reader's error.
     #[error("the expression: {0}")]
     Expr(ExprError),
     /// A primitive binding `NAME=FILE[,threshold=T]` that does not parse.
@@ -40,6 +40,8 @@ pub enum Error {
     Unbound {
         /// The name.
         name: String,
+        /// Where the expression first names it: the column (1-based, in characters) of line 1.
+        col: usize,
     },
     /// A primitive name's binding to a file ([`crate::sampled::Binding`]) is wrong.
     #[error("primitive `{name}`: {problem}")]
@@ -107,7 +109,7 @@ pub enum Error {
     #[error(transparent)]
     Sink(csgpix_scene::IoError),
     /// A problem about `what` (e.g. the primitive it concerns): `what: source`.
-    #[error("{what}: {source}")]
+    #[error("{}: {source}", OneLine(what))]
     Context {
         /// What the problem concerns.
         what: String,
@@ -116,9 +118,10 @@ pub enum Error {
     },
 }
 
-/// Why a CSG expression over named primitives could not be read: `col: error`.
+/// Why a CSG expression over named primitives could not be read: `1:col: error` (the
+/// expression is one line; the line is said all the same, as every located error says it).
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{col}: {}", .error.problem())]
+#[error("1:{col}: {}", .error.problem())]
 pub struct ExprError {
     /// The column (1-based, in characters) of the problem.
     pub col: usize,
@@ -170,11 +173,11 @@ pub enum BindingProblem {
     #[error(
         "{}: csgpix reads .csg scenes, .stl and .obj meshes and .nrrd datasets \
          (PLY, OFF and others: convert to STL or OBJ)",
-        .0.display()
+        OneLine(.0.display())
     )]
     UnknownFormat(PathBuf),
     /// The file does not exist: `file` as given, `path` where it was looked for.
-    #[error("`import(\"{file}\")`: no such file {}", .path.display())]
+    #[error("`import(\"{}\")`: no such file {}", OneLine(file), OneLine(.path.display()))]
     NoSuchFile {
         /// The file as given.
         file: String,

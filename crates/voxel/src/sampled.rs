@@ -382,7 +382,7 @@ pub fn parse_binding(s: &str) -> Result<Binding> {
 /// use csgpix_voxel::Error;
 ///
 /// let unbound = scene_from_expr("A + B", &[]).err();
-/// assert_eq!(unbound, Some(Error::Unbound { name: "A".into() }));
+/// assert_eq!(unbound, Some(Error::Unbound { name: "A".into(), col: 1 }));
 /// assert!(matches!(scene_from_expr("A +", &[]), Err(Error::Expr(_))));
 /// ```
 pub fn scene_from_expr(expr: &str, bindings: &[Binding]) -> Result<Loaded> {
@@ -405,21 +405,21 @@ pub fn scene_from_expr_with(
         return Err(binding(b, BindingProblem::NotInExpression));
     }
     // Every name bound before any file is read.
-    if let Some(name) = e
-        .names
-        .iter()
-        .find(|n| !bindings.iter().any(|b| &b.name == *n))
-    {
-        return Err(Error::Unbound { name: name.clone() });
+    let unbound = |i: usize| Error::Unbound {
+        name: e.names[i].clone(),
+        col: e.columns[i],
+    };
+    if let Some(i) = (0..e.names.len()).find(|&i| !bindings.iter().any(|b| b.name == e.names[i])) {
+        return Err(unbound(i));
     }
     let mut scene = CsgScene::convex(vec![], CsgNode::Empty);
     let mut sampled = vec![];
     let mut parts = vec![];
-    for name in &e.names {
+    for (i, name) in e.names.iter().enumerate() {
         let b = bindings
             .iter()
             .find(|b| &b.name == name)
-            .ok_or_else(|| Error::Unbound { name: name.clone() })?;
+            .ok_or_else(|| unbound(i))?;
         parts.push(add_part(&mut scene, &mut sampled, b, options)?);
     }
     let mut root = e.root.clone();

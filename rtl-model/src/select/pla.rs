@@ -62,6 +62,18 @@ pub struct Pla {
     pub trailer: Vec<String>,
 }
 
+/// Where a parsed file names its inputs and outputs, as 1-based line and column (in
+/// characters): for errors about the names found after parsing (a name the select logic does
+/// not know, an output it needs and the file does not list).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Places {
+    /// Each input's name in `.ilb`, or the `.i` count for every input when there is no `.ilb`
+    /// (the default names `x0`, `x1`, …).
+    pub inputs: Vec<(usize, usize)>,
+    /// The `.ob` directive, or the `.o` count when there is none.
+    pub outputs: (usize, usize),
+}
+
 /// Why a text is not a PLA file: the message and where, as 1-based line and column.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct PlaError {
@@ -181,6 +193,15 @@ impl Pla {
     /// `.o`, a bad character or length in a row, a `.p` not matching the rows, or anything
     /// but comments after `.e`.
     pub fn parse(text: &str) -> Result<Pla, PlaError> {
+        Pla::parse_with_places(text).map(|(pla, _)| pla)
+    }
+
+    /// [`Pla::parse`], and where the file names its inputs and outputs.
+    ///
+    /// # Errors
+    ///
+    /// As [`Pla::parse`].
+    pub fn parse_with_places(text: &str) -> Result<(Pla, Places), PlaError> {
         let mut parser = Parser::default();
         let mut lines = 0;
         for (i, line) in text.lines().enumerate() {
@@ -247,6 +268,8 @@ fn end_col(line: &str) -> usize {
 /// An `.ilb` or `.ob` line, checked against `.i`/`.o` when the rows begin.
 struct Names {
     line: usize,
+    /// Column of the directive.
+    col: usize,
     end_col: usize,
     names: Vec<(usize, String)>,
 }
@@ -277,6 +300,8 @@ struct Parser {
     dims: Option<(usize, usize)>,
     /// Line of the `.e` or `.end`.
     end: Option<usize>,
+    /// Where the names stand, once the first row (or the end) settled them.
+    places: Places,
 }
 
 impl Parser {
@@ -365,11 +390,21 @@ impl Parser {
         };
         self.pla.inputs = settle(self.ilb.as_ref(), ni, ".ilb", ".i", 'x')?;
         self.pla.outputs = settle(self.ob.as_ref(), no, ".ob", ".o", 'y')?;
+        self.places = Places {
+            inputs: match &self.ilb {
+                Some(names) => names.names.iter().map(|n| (names.line, n.0)).collect(),
+                None => vec![(ni.line, ni.col); ni.value],
+            },
+            outputs: self
+                .ob
+                .as_ref()
+                .map_or((no.line, no.col), |n| (n.line, n.col)),
+        };
         self.dims = Some((ni.value, no.value));
         Ok((ni.value, no.value))
     }
 
-    fn finish(mut self, eof_line: usize) -> Result<Pla, PlaError> {
+    fn finish(mut self, eof_line: usize) -> Result<(Pla, Places), PlaError> {
         if self.dims.is_none() {
             self.begin_rows(self.end.unwrap_or(eof_line), 1, "the end")?;
         }
@@ -381,7 +416,7 @@ impl Parser {
             }
         }
         self.pla.trailer = self.pending;
-        Ok(self.pla)
+        Ok((self.pla, self.places))
     }
 }
 
@@ -475,6 +510,7 @@ impl<'a> Directive<'a> {
         self.once(seen.map(|n| n.line))?;
         Ok(Names {
             line: self.line,
+            col: self.col,
             end_col: self.end_col,
             names: self.args.iter().map(|&(c, w)| (c, w.to_string())).collect(),
         })
@@ -683,6 +719,18 @@ mod tests {
         // After the end.
         assert_eq!(err(&format!("{head}.e\n# fine\n\n 100 10\n")), (6, 2));
         assert_eq!(err(&format!("{head}.e now\n")), (3, 4));
+    }
+
+    #[test]
+    fn places_say_where_the_names_stand() {
+        let text = ".i 2\n.o 1\n.ilb a  b\n.ob f\n10 1\n";
+        let (_, places) = Pla::parse_with_places(text).unwrap();
+        assert_eq!(places.inputs, [(3, 6), (3, 9)]);
+        assert_eq!(places.outputs, (4, 1));
+        // The default names stand at the counts.
+        let (_, places) = Pla::parse_with_places(" .i 2\n.o 1\n").unwrap();
+        assert_eq!(places.inputs, [(1, 5), (1, 5)]);
+        assert_eq!(places.outputs, (2, 4));
     }
 
     #[test]
