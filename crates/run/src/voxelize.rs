@@ -806,7 +806,7 @@ fn name_outputs(a: &Args) -> crate::Result<Named> {
     let slices = a
         .slices
         .as_ref()
-        .map(|d| outs.dir("--slices", d))
+        .map(|d| outs.series("--slices", d, "slice-", ".png"))
         .transpose()?;
     let preview = a.preview.as_ref();
     let preview = preview.map(|p| outs.file_or_stdout("--preview", p, &["png"]));
