@@ -949,6 +949,32 @@ mod tests {
     }
 
     #[test]
+    fn a_series_takes_only_its_names_and_replaces_only_a_series() {
+        let dir = tempfile::tempdir().unwrap();
+        let s = dir.path().join("s");
+        std::fs::create_dir(&s).unwrap();
+        for k in 0..3 {
+            std::fs::write(s.join(format!("z{k}.png")), b"old").unwrap();
+        }
+        let mut outs = Outputs::new();
+        let o = outs.series("--slices", &s, "z", ".png").unwrap();
+        outs.write_in(o, "z7.png", |w| w.write_all(b"new")).unwrap();
+        for bad in ["z.png", "zz1.png", "z1.png.bak", "a1.png"] {
+            let e = outs.write_in(o, bad, |_| Ok(())).unwrap_err().to_string();
+            assert!(e.contains("bad file name"), "{e}");
+        }
+        outs.commit().unwrap();
+        assert_eq!(names(&s), ["z7.png"]);
+        assert_eq!(names(dir.path()), ["s"]);
+        let mut outs = Outputs::new();
+        for path in [".", "..", "s/.."] {
+            let e = outs.series("--slices", Path::new(path), "z", ".png");
+            let e = e.unwrap_err().to_string();
+            assert!(e.contains("names no directory"), "{path}: {e}");
+        }
+    }
+
+    #[test]
     fn extensions_directories_and_missing_parents_are_refused_when_named() {
         let dir = tempfile::tempdir().unwrap();
         let mut outs = Outputs::new();
