@@ -1,6 +1,6 @@
 //! Output files through the CLI: symlinks, FIFOs and devices written through, `-o -`, output
 //! names checked before the run, all outputs or none, nothing left behind by a signal
-//! (crates/output).
+//! (crates/output), and what SIGKILL leaves cleared by the next run.
 
 mod common;
 use common::csgpix;
@@ -440,4 +440,236 @@ fn side_outputs_of_render_and_sculpt_go_with_the_output_or_not_at_all() {
     assert!(render(&p("w.vcd"), &p("r.png")).status.success());
     assert!(sculpt(&p("f.csv"), &p("c.stl")).status.success());
     assert_eq!(names(d), ["c.stl", "f.csv", "r.png", "w.svg", "w.vcd"]);
+}
+
+/// `--slices` is written whole: a run at a lower resolution into the directory of an
+/// earlier one leaves only its own slices, none of the earlier run's higher-numbered ones.
+#[test]
+fn slices_of_an_earlier_run_are_replaced_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let run = |res: &str| {
+        let slices = d.join("slices");
+        let args = ["voxelize", TWELVE, "--res", res, "--slices", s(&slices)];
+        let out = csgpix(&[&args[..], &["-o", s(&d.join("o.nrrd"))]].concat());
+        assert!(out.status.success(), "{out:?}");
+        names(&slices)
+    };
+    assert_eq!(run("16x16x16").len(), 16);
+    let slices = run("8x8x8");
+    let want: Vec<String> = (0..8).map(|k| format!("slice-{k:04}.png")).collect();
+    assert_eq!(slices, want);
+    assert_eq!(names(d), ["o.nrrd", "slices"]);
+}
+
+/// A `--slices` directory holding anything csgpix does not write there (another file, a
+/// subdirectory, a symlink) is refused before the run, named, and kept as it is; an empty
+/// one is used.
+#[test]
+fn a_slices_directory_of_other_files_is_refused_and_kept() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let slices = d.join("slices");
+    std::fs::create_dir(&slices).unwrap();
+    let run = || {
+        let args = ["voxelize", TWELVE, "--res", "8x8x8", "--slices", s(&slices)];
+        csgpix(&[&args[..], &["-o", s(&d.join("o.nrrd"))]].concat())
+    };
+    std::fs::write(slices.join("slice-0000.png"), b"old").unwrap();
+    for (other, make) in [
+        ("notes.txt", 0),
+        ("slice-0001.png.bak", 0),
+        ("slice-x.png", 0),
+        ("slice-0002.png", 1),
+    ] {
+        let p = slices.join(other);
+        match make {
+            0 => std::fs::write(&p, b"mine").unwrap(),
+            _ => std::fs::create_dir(&p).unwrap(),
+        }
+        let e = one_line_error(&run());
+        assert!(e.contains(&format!("holds {other}")), "{e}");
+        assert!(e.contains("slice-N.png"), "{e}");
+        assert_eq!(names(d), ["slices"], "nothing written");
+        assert!(names(&slices).contains(&other.to_string()));
+        match make {
+            0 => std::fs::remove_file(&p).unwrap(),
+            _ => std::fs::remove_dir(&p).unwrap(),
+        }
+    }
+    #[cfg(unix)]
+    {
+        let link = slices.join("slice-0003.png");
+        std::os::unix::fs::symlink(d.join("elsewhere.png"), &link).unwrap();
+        let e = one_line_error(&run());
+        assert!(e.contains("holds slice-0003.png"), "{e}");
+        std::fs::remove_file(&link).unwrap();
+    }
+    std::fs::remove_file(slices.join("slice-0000.png")).unwrap();
+    assert!(run().status.success());
+    assert_eq!(names(&slices).len(), 8);
+}
+
+/// What SIGKILL leaves beside an output (a staging file, a staging directory being
+/// removed) is removed by the next run naming that output, one line each on stderr; names
+/// of other outputs, and names that are not exactly csgpix's, are kept.
+#[test]
+fn leftovers_of_an_interrupted_run_are_removed_by_the_next() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let ours = [
+        ".o.nrrd.AbC123.csgpix-tmp",
+        ".slices.XyZ789.csgpix-rm",
+        ".slices.000000.csgpix-tmp",
+    ];
+    let kept = [
+        ".o.nrrd.AbC12.csgpix-tmp",
+        ".o.nrrd.AbC123.csgpix-tmp.bak",
+        ".o.nrrd.notes",
+        ".other.nrrd.AbC123.csgpix-tmp",
+        "o.nrrd.AbC123.csgpix-tmp",
+    ];
+    for n in ours.iter().chain(&kept) {
+        if n.ends_with("-rm") {
+            std::fs::create_dir_all(d.join(n).join("0/c")).unwrap();
+            std::fs::write(d.join(n).join("0/c/0"), b"x").unwrap();
+        } else {
+            std::fs::write(d.join(n), b"x").unwrap();
+        }
+    }
+    let args = ["voxelize", TWELVE, "--res", "8x8x8"];
+    let (slices, nrrd) = (d.join("slices"), d.join("o.nrrd"));
+    let outs = ["--slices", s(&slices), "-o", s(&nrrd)];
+    let out = csgpix(&[&args[..], &outs[..]].concat());
+    assert!(out.status.success(), "{out:?}");
+    let mut lines: Vec<String> = String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .map(String::from)
+        .collect();
+    lines.sort();
+    let mut want: Vec<String> = ours
+        .iter()
+        .map(|n| format!("csgpix: removed leftover {n} of an interrupted run"))
+        .collect();
+    want.sort();
+    assert_eq!(lines, want);
+    let mut left: Vec<String> = kept.iter().map(|n| n.to_string()).collect();
+    left.extend(["o.nrrd".into(), "slices".into()]);
+    left.sort();
+    assert_eq!(names(d), left);
+}
+
+/// SIGKILL between a commit's two renames leaves the replaced store renamed aside and the
+/// new one staged, and no store: the next run naming it puts the old one back (here a run
+/// that then fails, so the store stays as it was) and removes the staged one.
+#[test]
+fn a_store_renamed_aside_by_an_interrupted_commit_is_restored() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let old = d.join(".v.zarr.AbC123.csgpix-old");
+    std::fs::create_dir_all(old.join("0")).unwrap();
+    std::fs::write(old.join("zarr.json"), b"the old store").unwrap();
+    let new = d.join(".v.zarr.XyZ789.csgpix-tmp");
+    std::fs::create_dir_all(&new).unwrap();
+    std::fs::write(new.join("zarr.json"), b"the new store").unwrap();
+    let missing = d.join("missing.csg");
+    let store = d.join("v.zarr");
+    let out = csgpix(&["voxelize", s(&missing), "--res", "8", "-o", s(&store)]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    let restored = format!(
+        "csgpix: restored {} from .v.zarr.AbC123.csgpix-old of an interrupted run",
+        store.display()
+    );
+    assert_eq!(lines[0], restored, "{err}");
+    assert_eq!(
+        lines[1],
+        "csgpix: removed leftover .v.zarr.XyZ789.csgpix-tmp of an interrupted run"
+    );
+    assert!(lines[2].contains("missing.csg"), "{err}");
+    assert_eq!(names(d), ["v.zarr"]);
+    assert_eq!(
+        std::fs::read(store.join("zarr.json")).unwrap(),
+        b"the old store"
+    );
+}
+
+/// A staging file another run is still writing (locked, as every live run's is) is not a
+/// leftover: a second run naming the same output leaves it alone.
+#[cfg(unix)]
+#[test]
+fn a_live_runs_staging_file_is_left_alone() {
+    use std::os::fd::AsRawFd;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let live = d.join(".o.nrrd.AbC123.csgpix-tmp");
+    let f = std::fs::File::create(&live).unwrap();
+    // SAFETY: flock(2) on a descriptor this test owns.
+    assert_eq!(unsafe { libc::flock(f.as_raw_fd(), libc::LOCK_EX) }, 0);
+    let out = csgpix(&[
+        "voxelize",
+        TWELVE,
+        "--res",
+        "8x8x8",
+        "-o",
+        s(&d.join("o.nrrd")),
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    assert!(out.stderr.is_empty(), "{out:?}");
+    assert_eq!(names(d), [".o.nrrd.AbC123.csgpix-tmp", "o.nrrd"]);
+    drop(f);
+    let out = csgpix(&[
+        "voxelize",
+        TWELVE,
+        "--res",
+        "8x8x8",
+        "-o",
+        s(&d.join("o.nrrd")),
+    ]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("removed leftover"));
+    assert_eq!(names(d), ["o.nrrd"]);
+}
+
+/// A run killed by SIGKILL while it writes a store that replaces an earlier one: the
+/// earlier store is still there, whole, beside the killed run's staging directory, which
+/// the next run removes, reporting it, before it writes its own.
+#[cfg(unix)]
+#[test]
+fn sigkill_leaves_the_old_store_and_a_leftover_the_next_run_removes() {
+    use std::os::unix::process::ExitStatusExt;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let store = d.join("v.zarr");
+    let small = ["voxelize", TWELVE, "--res", "8x8x8", "-o", s(&store)];
+    assert!(csgpix(&small).status.success());
+    let before = std::fs::read(store.join("zarr.json")).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["voxelize", TWELVE, "--res", "48x48x4000", "--chunk", "4"])
+        .args(["--shard", "none", "-o", s(&store)])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let staged = || names(d).into_iter().find(|n| n.ends_with(".csgpix-tmp"));
+    let t0 = std::time::Instant::now();
+    while staged().is_none_or(|n| names(&d.join(n)).is_empty()) {
+        assert!(t0.elapsed().as_secs() < 60, "never staged");
+        assert!(child.try_wait().unwrap().is_none(), "finished first");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    // SAFETY: kill(2) on our own child's pid.
+    assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGKILL) }, 0);
+    let status = child.wait().unwrap();
+    assert_eq!(status.signal(), Some(libc::SIGKILL), "{status:?}");
+    let leftover = staged().expect("SIGKILL leaves the staging directory");
+    assert_eq!(std::fs::read(store.join("zarr.json")).unwrap(), before);
+    let out = csgpix(&small);
+    assert!(out.status.success(), "{out:?}");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let want = format!("csgpix: removed leftover {leftover} of an interrupted run\n");
+    assert_eq!(err, want);
+    assert_eq!(names(d), ["v.zarr"]);
 }

@@ -25,7 +25,7 @@ class Scene:
     @property
     def bounds(self) -> Tuple[_Vec3, _Vec3]: ...
 
-def load(path: _Path) -> Scene: ...
+def load(path: _Path, openscad_timeout: Optional[float] = 300.0) -> Scene: ...
 def load_expr(
     expr: str, prims: Sequence[Tuple[str, Union[_Path, Tuple[_Path, float]]]]
 ) -> Scene: ...
@@ -73,6 +73,7 @@ def compile(
     clip: Optional[str] = None,
     view: str = "iso",
     word: str = "10/10/11",
+    openscad_timeout: Optional[float] = 300.0,
 ) -> Program: ...
 def render(
     program: Program, model: str = "cycle", equations: str = "derived"

@@ -98,9 +98,12 @@ fn paths(scene: &Bound<'_, PyAny>) -> PyResult<Vec<PathBuf>> {
 }
 
 /// Compile display lists (`.dl`, composed, or clipped by `clip` over objects A, B, … in
-/// order) or one `.csg`/`.scad` scene (projected along `view`) for a `width`×`height` array.
+/// order) or one `.csg`/`.scad` scene (projected along `view`) for a `width`×`height` array;
+/// each openscad run a `.scad` needs killed after `openscad_timeout` seconds (None or 0: no
+/// limit).
 #[pyfunction]
-#[pyo3(signature = (scene, width=250, height=250, *, clip=None, view="iso", word="10/10/11"))]
+#[pyo3(signature = (scene, width=250, height=250, *, clip=None, view="iso", word="10/10/11",
+                    openscad_timeout=crate::voxel::DEFAULT_TIMEOUT))]
 pub fn compile(
     scene: &Bound<'_, PyAny>,
     width: usize,
@@ -108,12 +111,18 @@ pub fn compile(
     clip: Option<&str>,
     view: &str,
     word: &str,
+    openscad_timeout: Option<f64>,
 ) -> PyResult<Program> {
+    let options = csgpix_openscad::ReadOptions {
+        openscad_timeout: crate::voxel::timeout(openscad_timeout)?,
+        ..Default::default()
+    };
     // The model's default stack, deepened below to the levels the program reaches.
     let stack = ArrayConfig::new(width, height).stack_depth;
     let mut cfg = array_config((width, height), word_format(word)?, stack).map_err(run)?;
     let (scene, ops) =
-        csgpix_run::render::compile(&paths(scene)?, clip, self::view(view)?, &cfg).map_err(run)?;
+        csgpix_run::render::compile_with(&paths(scene)?, clip, self::view(view)?, &cfg, &options)
+            .map_err(run)?;
     let levels =
         rtl_model::array::check_program(&ops, usize::MAX).map_err(|e| text(e.to_string()))?;
     cfg.stack_depth = cfg.stack_depth.max(levels);

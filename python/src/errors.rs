@@ -71,7 +71,16 @@ fn place(at: Option<&csgpix_scene::Location>) -> Option<Place> {
 pub fn scene(e: csgpix_scene::Error) -> PyErr {
     match e.io_kind() {
         Some(kind) => os_error(kind, e.to_string()),
-        None => error(e.to_string(), place(e.location())),
+        None => error(message(&e, e.to_string()), place(e.location())),
+    }
+}
+
+/// The line of an error that is or wraps `scene`: openscad stopped at its time limit names
+/// the keyword that sets it, as the command line names its option.
+fn message(scene: &csgpix_scene::Error, line: String) -> String {
+    match scene.kind() {
+        csgpix_scene::Kind::TimedOut => format!("{line} (openscad_timeout=)"),
+        _ => line,
     }
 }
 
@@ -127,7 +136,7 @@ pub fn run(e: csgpix_run::Error) -> PyErr {
         R::Zarr(e) => zarr(e),
         e => match (e.io_kind(), e.scene()) {
             (Some(kind), _) => os_error(kind, e.to_string()),
-            (None, Some(s)) => error(e.to_string(), place(s.location())),
+            (None, Some(s)) => error(message(s, e.to_string()), place(s.location())),
             (None, None) => text(e.to_string()),
         },
     }

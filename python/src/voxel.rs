@@ -33,7 +33,8 @@ pub struct Scene {
 /// A scene's source.
 #[derive(Clone)]
 enum Source {
-    File(PathBuf),
+    /// The file and openscad's time limit in seconds, as `load` was given them.
+    File(PathBuf, Option<f64>),
     Expr(String, Vec<(String, PathBuf, Option<f64>)>),
 }
 
@@ -57,9 +58,9 @@ impl Scene {
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
         let m = py.import("csgpix._native")?;
         Ok(match &self.source {
-            Source::File(p) => (
+            Source::File(p, t) => (
                 m.getattr("load")?,
-                (p.clone(),).into_pyobject(py)?.into_any(),
+                (p.clone(), *t).into_pyobject(py)?.into_any(),
             ),
             Source::Expr(e, prims) => {
                 let prims: Vec<(String, Bound<'py, PyAny>)> = prims
@@ -89,15 +90,41 @@ impl Scene {
     }
 }
 
-/// Read a `.csg` scene (or a `.scad` one through OpenSCAD) and the files it imports.
+/// Read a `.csg` scene (or a `.scad` one through OpenSCAD, each openscad run killed after
+/// `openscad_timeout` seconds; None or 0: no limit) and the files it imports.
 #[pyfunction]
-pub fn load(path: PathBuf) -> PyResult<Scene> {
-    let loaded = load_scene_with(&path, &read_options()).map_err(voxel)?;
+#[pyo3(signature = (path, openscad_timeout = DEFAULT_TIMEOUT))]
+pub fn load(path: PathBuf, openscad_timeout: Option<f64>) -> PyResult<Scene> {
+    let options = csgpix_openscad::ReadOptions {
+        openscad_timeout: timeout(openscad_timeout)?,
+        ..read_options()
+    };
+    let loaded = load_scene_with(&path, &options).map_err(voxel)?;
     Ok(Scene {
         loaded,
         name: path.display().to_string(),
-        source: Source::File(path),
+        source: Source::File(path, openscad_timeout),
     })
+}
+
+/// `openscad_timeout`'s default: the command line's (`--openscad-timeout`).
+pub const DEFAULT_TIMEOUT: Option<f64> =
+    Some(csgpix_openscad::DEFAULT_OPENSCAD_TIMEOUT.as_secs() as f64);
+
+/// `openscad_timeout` seconds as a limit: None for None or 0; refused when negative or not
+/// a number.
+pub fn timeout(seconds: Option<f64>) -> PyResult<Option<std::time::Duration>> {
+    match seconds {
+        None => Ok(None),
+        Some(0.0) => Ok(None),
+        Some(s) => std::time::Duration::try_from_secs_f64(s)
+            .map(Some)
+            .map_err(|_| {
+                text(format!(
+                    "openscad_timeout={s}: seconds, a number >= 0 (0 or None: no limit)"
+                ))
+            }),
+    }
 }
 
 /// A scene from a CSG expression (`+` union, `.` intersection, `-` difference, `!`

@@ -104,6 +104,25 @@ def test_a_scad_file_goes_through_openscad(tmp):
     assert np.array_equal(vol.data, want) and (vol.data > 0).any()
 
 
+def test_openscad_is_stopped_at_openscad_timeout(tmp, monkeypatch):
+    """A fake openscad first on PATH that sleeps: load and compile stop it at the limit
+    (the command line's default unless given), in a one-line error naming the keyword."""
+    fake = tmp / "bin" / "openscad"
+    fake.parent.mkdir()
+    fake.write_text("#!/bin/sh\nexec sleep 600\n")
+    fake.chmod(0o755)
+    monkeypatch.setenv("PATH", f"{fake.parent}:{os.environ['PATH']}")
+    scad = tmp / "slow.scad"
+    scad.write_text("cube(1);\n")
+    for call in (lambda: csgpix.load(scad, openscad_timeout=0.5),
+                 lambda: csgpix.compile(str(scad), openscad_timeout=0.5)):
+        with pytest.raises(csgpix.CsgpixError) as e:
+            call()
+        assert str(e.value) == f"{scad}: openscad did not finish within 0.5 s (openscad_timeout=)"
+    with pytest.raises(csgpix.CsgpixError, match="openscad_timeout=-1"):
+        csgpix.load(scad, openscad_timeout=-1)
+
+
 def test_errors_carry_file_line_and_column(tmp):
     bad = ROOT / "tests" / "data" / "identity" / "bad.csg"
     with pytest.raises(csgpix.CsgpixError) as e:

@@ -65,6 +65,18 @@ impl Scene {
         view: View,
         cfg: &ArrayConfig,
     ) -> Result<Scene, LoadError> {
+        let options = csgpix_openscad::ReadOptions::default();
+        Self::load_with(paths, clip, view, cfg, &options)
+    }
+
+    /// [`Scene::load`] with the `.csg`/`.scad` reader's options (openscad's time limit).
+    pub fn load_with(
+        paths: &[PathBuf],
+        clip: Option<&str>,
+        view: View,
+        cfg: &ArrayConfig,
+        options: &csgpix_openscad::ReadOptions,
+    ) -> Result<Scene, LoadError> {
         let is_csg = |p: &PathBuf| {
             p.extension()
                 .is_some_and(|e| e.eq_ignore_ascii_case("csg") || e.eq_ignore_ascii_case("scad"))
@@ -73,7 +85,7 @@ impl Scene {
             None => Self::load_lists(paths, clip),
             Some(_) if paths.len() > 1 => Err(LoadError::CsgNotAlone),
             Some(_) if clip.is_some() => Err(LoadError::ClipWithCsg),
-            Some(_) => Self::load_csg(&paths[0], view, cfg),
+            Some(_) => Self::load_csg(&paths[0], view, cfg, options),
         }
     }
 
@@ -104,8 +116,13 @@ impl Scene {
         })
     }
 
-    fn load_csg(path: &Path, view: View, cfg: &ArrayConfig) -> Result<Scene, LoadError> {
-        let scene = csgpix_openscad::read_scene(path)?;
+    fn load_csg(
+        path: &Path,
+        view: View,
+        cfg: &ArrayConfig,
+        options: &csgpix_openscad::ReadOptions,
+    ) -> Result<Scene, LoadError> {
+        let scene = csgpix_openscad::read_scene_with(path, options)?;
         scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);
         let Projected { lists, clip } =

@@ -5,10 +5,22 @@ use std::path::{Path, PathBuf};
 use csgpix_scene::solid::CsgScene;
 use csgpix_scene::Error;
 
+use crate::subprocess::Ran;
+
 /// The `.csg` text of a scene file: a `.csg` file as it is; a `.scad` file exported to CSG by
 /// OpenSCAD (`openscad -o scene.csg FILE.scad` into a temporary directory, removed after),
-/// when `openscad` is on PATH. Errors are one line naming the file.
+/// when `openscad` is on PATH, within [`crate::DEFAULT_OPENSCAD_TIMEOUT`]. Errors are one
+/// line naming the file.
 pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
+    scene_text_with(path, Some(crate::DEFAULT_OPENSCAD_TIMEOUT))
+}
+
+/// [`scene_text`] with openscad's time limit (None: none): past it openscad is killed and
+/// the error is [`Error::TimedOut`].
+pub fn scene_text_with(
+    path: &std::path::Path,
+    timeout: Option<std::time::Duration>,
+) -> csgpix_scene::Result<String> {
     let name = path.display();
     let scad = path
         .extension()
@@ -28,14 +40,13 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
     let out = dir.path().join("scene.csg");
     // `$preview = false`: the tree OpenSCAD renders (F6, STL export), not its preview (a CSG
     // export evaluates `$preview` as true): the voxels are the parts a design prints.
-    let run = std::process::Command::new("openscad")
-        .args(["-D", "$preview=false"])
+    let mut cmd = std::process::Command::new("openscad");
+    cmd.args(["-D", "$preview=false"])
         .arg("-o")
         .arg(&out)
-        .arg(path)
-        .stdin(std::process::Stdio::null())
-        .output();
-    let run = match run {
+        .arg(path);
+    let run = crate::subprocess::run(&mut cmd, timeout);
+    let (status, stderr) = match run {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
             return Err(Error::invalid(format!(
                 "{name}: reading .scad needs openscad on PATH (Debian: apt-get install openscad); \
@@ -43,13 +54,13 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
             )))
         }
         Err(e) => return Err(Error::io("running openscad", &e).context(path.display())),
-        Ok(run) => run,
+        Ok(Ran::TimedOut) => return Err(timed_out(timeout).context(path.display())),
+        Ok(Ran::Done { status, stderr }) => (status, stderr),
     };
     let text = std::fs::read_to_string(&out)
         .ok()
-        .filter(|_| run.status.success());
+        .filter(|_| status.success());
     text.ok_or_else(|| {
-        let stderr = String::from_utf8_lossy(&run.stderr);
         let line = stderr
             .lines()
             .find(|l| l.contains("ERROR"))
@@ -60,6 +71,14 @@ pub fn scene_text(path: &std::path::Path) -> csgpix_scene::Result<String> {
             line.trim()
         ))
     })
+}
+
+/// openscad killed at its time limit.
+pub(crate) fn timed_out(limit: Option<std::time::Duration>) -> Error {
+    Error::TimedOut {
+        program: "openscad".into(),
+        limit: limit.unwrap_or_default(),
+    }
 }
 
 /// A scene file read whole: a `.csg` file parsed as it is; a `.scad` file exported by
@@ -74,7 +93,7 @@ pub fn read_scene_with(
     path: &Path,
     options: &crate::ReadOptions,
 ) -> csgpix_scene::Result<CsgScene> {
-    let text = scene_text(path)?;
+    let text = scene_text_with(path, options.openscad_timeout)?;
     let name = path.display().to_string();
     let mut options = options.clone();
     if options.dir.is_none() {

@@ -56,7 +56,8 @@
 //!
 //! Anything else (`surface`, 2D imports, …) is refused with an error naming the node, its
 //! line and column, or with [`Fallback::Openscad`] meshed by openscad. [`scene_text`] turns a `.scad` file into
-//! this CSG text by running `openscad`.
+//! this CSG text by running `openscad`. Every openscad run is killed when it takes longer
+//! than [`ReadOptions::openscad_timeout`] ([`DEFAULT_OPENSCAD_TIMEOUT`] by default).
 //!
 //! The tree is simplified without changing the solid it describes: a union or group with one
 //! child is that child, unions inside unions (and intersections inside intersections) are
@@ -113,6 +114,7 @@ mod node;
 mod primitives;
 mod project;
 mod reader;
+mod subprocess;
 mod svg;
 #[cfg(test)]
 mod tests;
@@ -125,7 +127,8 @@ pub use consts_::{
     MAX_COORDINATE, MAX_FRAGMENTS, MAX_NESTING, MAX_POLYHEDRON_POINTS, MAX_SCENE_VERTICES,
     MAX_VECTOR_NESTING, MIN_EXTENT,
 };
-pub use export::{in_scad, read_scene, read_scene_with, scene_text};
+pub use export::{in_scad, read_scene, read_scene_with, scene_text, scene_text_with};
+pub use subprocess::DEFAULT_OPENSCAD_TIMEOUT;
 
 use csgpix_scene::solid::CsgScene;
 // The crate documentation names these nodes.
@@ -161,7 +164,7 @@ pub fn parse_csg(text: &str, file: &str) -> csgpix_scene::Result<CsgScene> {
 }
 
 /// How a scene is read beyond the language itself.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ReadOptions {
     /// What becomes of a node csgpix does not draw.
     pub fallback: Fallback,
@@ -181,6 +184,23 @@ pub struct ReadOptions {
     /// caller's memory limit; [`SampleLimit::NONE`](csgpix_scene::nrrd::SampleLimit::NONE)
     /// by default.
     pub samples: csgpix_scene::nrrd::SampleLimit,
+    /// How long each openscad run (a `.scad` export, a `--fallback openscad` mesh) may take
+    /// before it is killed and the read fails with [`Error::TimedOut`]; None: no limit.
+    /// [`DEFAULT_OPENSCAD_TIMEOUT`] by default.
+    pub openscad_timeout: Option<std::time::Duration>,
+}
+
+impl Default for ReadOptions {
+    fn default() -> ReadOptions {
+        ReadOptions {
+            fallback: Fallback::default(),
+            dir: None,
+            fonts: vec![],
+            max_vertices: None,
+            samples: Default::default(),
+            openscad_timeout: Some(DEFAULT_OPENSCAD_TIMEOUT),
+        }
+    }
 }
 
 /// What one vertex of a scene costs while it is read, in bytes, with its share of faces and

@@ -432,11 +432,10 @@ impl<'a> Reader<'a> {
             return Ok(None);
         }
         let source = &self.text[start..end];
-        let tris =
-            crate::fallback::mesh(source, self.options.dir.as_deref()).map_err(|e| Fail {
-                pos,
-                problem: e.context(format_args!("`{name}` (--fallback openscad)")),
-            })?;
+        let tris = crate::fallback::mesh(source, self.options).map_err(|e| Fail {
+            pos,
+            problem: e.context(format_args!("`{name}` (--fallback openscad)")),
+        })?;
         let count = tris.len();
         let budget = self.max_vertices().saturating_sub(self.vertices);
         check_budget(count * 3, budget, pos)?;
@@ -464,11 +463,10 @@ impl<'a> Reader<'a> {
         if ctx.skip {
             return Ok(None);
         }
-        let region =
-            crate::fallback::outline(source, self.options.dir.as_deref()).map_err(|e| Fail {
-                pos: head.pos,
-                problem: e.context("`import` (--fallback openscad)"),
-            })?;
+        let region = crate::fallback::outline(source, self.options).map_err(|e| Fail {
+            pos: head.pos,
+            problem: e.context("`import` (--fallback openscad)"),
+        })?;
         let m = plane_part(ctx.matrix.as_ref());
         let region = crate::project::map_region(region, &|p| p.transformed(m));
         let msg = "`import` of a 2D file outlined by openscad (--fallback openscad)".to_string();

@@ -120,6 +120,23 @@ pub enum Refusal {
         /// The file that marks a directory of the format (`zarr.json`).
         marker: String,
     },
+    /// A series of files written whole (`--slices`) that would replace a directory holding
+    /// something else.
+    #[error(
+        "exists and holds {}, which is not one of csgpix's {} files: only a directory csgpix \
+         could have written is replaced (remove it first)",
+        OneLine(entry),
+        OneLine(series)
+    )]
+    NotSeries {
+        /// The first entry found that is not a file of the series.
+        entry: String,
+        /// The series' names, the digits shown as `N` (`slice-N.png`).
+        series: String,
+    },
+    /// A directory written whole named by `.`, `..` or `/`, which cannot be renamed.
+    #[error("names no directory that can be replaced whole: give its name (not . or ..)")]
+    NoName,
     /// More than 40 symbolic links in a row.
     #[error("too many levels of symbolic links")]
     SymlinkLoop,

@@ -14,9 +14,20 @@
 //! - `-`: standard output, where the format allows it.
 //! - a directory, a block device or a socket: refused.
 //!
+//! A directory output is either a directory of files ([`Outputs::dir`]: its files renamed
+//! in one by one, other files there kept) or written whole ([`Outputs::tree`] for a store
+//! such as Zarr's, [`Outputs::series`] for numbered files such as `--slices`): staged as a
+//! new directory that replaces the old one at the commit, so that no file of an earlier run
+//! stays among the new ones. A directory is replaced only when csgpix could have written
+//! it (empty, holding the format's marker file, or holding only the series' files); any
+//! other is refused when it is named, before anything is computed. A tree is synced to the
+//! disk before it replaces anything ([`sync_tree`]).
+//!
 //! SIGINT, SIGTERM and SIGHUP remove every staged file and directory before the process dies
 //! of the signal ([`install_signal_cleanup`]); they wait for a commit's renames, never for
-//! an output written through.
+//! an output written through. SIGKILL cannot be caught: what it leaves beside an output is
+//! cleared (or, for a replaced directory, restored) by the next run that names that output
+//! (`leftover`).
 
 use std::fs::File;
 use std::io::{Seek, Write};
@@ -24,6 +35,7 @@ use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 
 mod error;
+mod leftover;
 mod oom;
 
 pub use error::{Error, IoError, OneLine, Refusal, Result};
@@ -131,8 +143,11 @@ impl Staged {
         let mut staged = pending();
         let file = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
+            .rand_bytes(leftover::RANDOM)
             .suffix(".csgpix-tmp")
             .tempfile_in(dir)?;
+        // Marks it as this live run's: another run naming the output leaves it alone.
+        leftover::lock(file.as_file());
         staged.push(file.path().to_path_buf());
         Ok(Staged { file: Some(file) })
     }
@@ -205,8 +220,31 @@ enum Target {
     /// A directory of files, new or existing (symlinks resolved).
     Dir(PathBuf),
     /// A directory written whole (symlinks resolved), replacing an existing one that is
-    /// empty or holds the marker file named here.
-    Tree(PathBuf, String),
+    /// empty or shows it is csgpix's as said here.
+    Tree(PathBuf, Owned),
+}
+
+/// What shows that an existing directory is csgpix's to replace whole.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Owned {
+    /// It holds this file, which names the format (`zarr.json`).
+    Marker(String),
+    /// It holds regular files named `prefix`, decimal digits, `suffix` (`slice-0012.png`)
+    /// and nothing else: the files csgpix writes there, and no other.
+    Series { prefix: String, suffix: String },
+}
+
+impl Owned {
+    /// Whether `name` is one of the series' files.
+    fn in_series(&self, name: &str) -> bool {
+        let Owned::Series { prefix, suffix } = self else {
+            return true;
+        };
+        let digits = name
+            .strip_prefix(prefix.as_str())
+            .and_then(|n| n.strip_suffix(suffix.as_str()));
+        digits.is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+    }
 }
 
 enum Stage {
@@ -218,13 +256,38 @@ enum Stage {
     Dir(StagedDir, Vec<String>),
 }
 
-/// A staging directory, removed on drop or on a signal.
-struct StagedDir(PathBuf);
+/// A staging directory, removed on drop or on a signal; and the directory opened, locked
+/// as a live run's for as long as it is held (`leftover`).
+struct StagedDir {
+    path: PathBuf,
+    _held: Option<File>,
+}
+
+impl StagedDir {
+    /// A new staging directory `.NAME.XXXXXX.csgpix-tmp` in `base`, locked.
+    fn new_in(base: &Path, name: &str) -> std::io::Result<StagedDir> {
+        // Held from before the directory exists: a signal's cleanup cannot miss it.
+        let mut staged = pending();
+        let dir = tempfile::Builder::new()
+            .prefix(&format!(".{name}."))
+            .rand_bytes(leftover::RANDOM)
+            .suffix(".csgpix-tmp")
+            .tempdir_in(base)?
+            .keep();
+        staged.push(dir.clone());
+        drop(staged);
+        let held = File::open(&dir).ok().filter(leftover::lock);
+        Ok(StagedDir {
+            path: dir,
+            _held: held,
+        })
+    }
+}
 
 impl Drop for StagedDir {
     fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-        forget(&self.0);
+        let _ = std::fs::remove_dir_all(&self.path);
+        forget(&self.path);
     }
 }
 
@@ -277,16 +340,36 @@ impl Outputs {
     pub fn tree(&mut self, flag: &str, path: &Path, exts: &[&str], marker: &str) -> Result<Out> {
         let shown = path.display().to_string();
         check_extension(path, exts).map_err(|e| e.context(format!("{flag} {shown}")))?;
-        self.dir_slot(flag, path, Some(marker))
+        self.dir_slot(flag, path, Some(Owned::Marker(marker.to_string())))
     }
 
-    fn dir_slot(&mut self, flag: &str, path: &Path, whole: Option<&str>) -> Result<Out> {
+    /// Name a directory output of option `flag` that holds a numbered series of files and
+    /// nothing else: `prefix`, decimal digits, `suffix` (`--slices`: `slice-0000.png`, …).
+    /// Written whole as [`Outputs::tree`] is, so that a run writing fewer files than an
+    /// earlier one leaves none of the earlier ones; a directory already at the path is
+    /// replaced only when it is empty or holds nothing but such files (no subdirectory, no
+    /// other name, no symlink), so a mistyped path never removes a directory of other
+    /// files: any other is refused here, before anything is computed. Only names of the
+    /// series may be written into it ([`Outputs::write_in`]).
+    pub fn series(&mut self, flag: &str, path: &Path, prefix: &str, suffix: &str) -> Result<Out> {
+        let owned = Owned::Series {
+            prefix: prefix.to_string(),
+            suffix: suffix.to_string(),
+        };
+        self.dir_slot(flag, path, Some(owned))
+    }
+
+    fn dir_slot(&mut self, flag: &str, path: &Path, whole: Option<Owned>) -> Result<Out> {
         let shown = path.display().to_string();
         let err = |e: Error| e.context(format!("{flag} {shown}"));
         if path.as_os_str() == "-" {
             return Err(err(Refusal::DirectoryToStdout.into()));
         }
         let resolved = resolve(path).map_err(err)?;
+        let (base, name) = existing_ancestor(&resolved).map_err(err)?;
+        // Before anything is looked at: a directory an interrupted commit renamed aside is
+        // back in place first.
+        leftover::clear(&base, &name);
         match std::fs::metadata(&resolved) {
             Ok(m) if !m.is_dir() => return Err(err(Refusal::ExistsNotDirectory.into())),
             Ok(_) => {}
@@ -295,32 +378,23 @@ impl Outputs {
         }
         let target = match whole {
             None => Target::Dir(resolved.clone()),
-            Some(marker) => {
-                replaceable(&resolved, marker).map_err(err)?;
-                Target::Tree(resolved.clone(), marker.to_string())
+            Some(owned) => {
+                let named = replaced_name(&resolved).map_err(err)?;
+                replaceable(&named, &owned).map_err(err)?;
+                Target::Tree(named, owned)
             }
         };
         self.check_unique(&target, &shown)?;
-        let (base, name) = existing_ancestor(&resolved).map_err(err)?;
-        // Held from before the directory exists: a signal's cleanup cannot miss it.
-        let mut staged = pending();
-        let dir = tempfile::Builder::new()
-            .prefix(&format!(".{name}."))
-            .suffix(".csgpix-tmp")
-            .tempdir_in(&base)
-            .map_err(|e| {
-                err(Error::io(
-                    format_args!("cannot write in {}", base.display()),
-                    &e,
-                ))
-            })?
-            .keep();
-        staged.push(dir.clone());
-        drop(staged);
+        let staged = StagedDir::new_in(&base, &name).map_err(|e| {
+            err(Error::io(
+                format_args!("cannot write in {}", base.display()),
+                &e,
+            ))
+        })?;
         self.slots.push(Slot {
             shown,
             target,
-            stage: Stage::Dir(StagedDir(dir), Vec::new()),
+            stage: Stage::Dir(staged, Vec::new()),
         });
         Ok(Out(self.slots.len() - 1))
     }
@@ -375,7 +449,7 @@ impl Outputs {
     pub fn stage_root(&self, out: Out) -> Result<PathBuf> {
         let slot = &self.slots[out.0];
         match &slot.stage {
-            Stage::Dir(dir, _) => Ok(dir.0.clone()),
+            Stage::Dir(dir, _) => Ok(dir.path.clone()),
             _ => Err(Refusal::NotDirectoryOutput {
                 shown: slot.shown.clone(),
             }
@@ -392,7 +466,8 @@ impl Outputs {
             }
             .into());
         };
-        if name.contains('/') || name.starts_with('.') || name.is_empty() {
+        let foreign = matches!(&slot.target, Target::Tree(_, owned) if !owned.in_series(name));
+        if name.contains('/') || name.starts_with('.') || name.is_empty() || foreign {
             return Err(Refusal::BadFileName {
                 shown: slot.shown.clone(),
                 name: name.to_string(),
@@ -402,7 +477,7 @@ impl Outputs {
         if !names.iter().any(|n| n == name) {
             names.push(name.to_string());
         }
-        Ok(dir.0.join(name))
+        Ok(dir.path.join(name))
     }
 
     /// Put every staged output in place: renames first, then the outputs written through.
@@ -442,6 +517,7 @@ impl Outputs {
         let stage = match &target {
             Target::File(p, _) => {
                 let (dir, name) = split(p);
+                leftover::clear(&dir, &name);
                 Stage::Named(Staged::new_in(&dir, &name).map_err(|e| {
                     Error::io(format_args!("cannot write in {}", dir.display()), &e)
                         .context(format!("{flag} {shown}"))
@@ -507,9 +583,9 @@ fn commit_slot(slot: Slot) -> Result<()> {
             std::io::copy(&mut f, &mut out).map_err(err)?;
             out.flush().map_err(err)
         }
-        (Target::Dir(p), Stage::Dir(dir, names)) => commit_dir(&p, &dir.0, &names).map_err(err),
-        (Target::Tree(p, marker), Stage::Dir(dir, _)) => {
-            commit_tree(&p, &dir.0, &marker).map_err(err)
+        (Target::Dir(p), Stage::Dir(dir, names)) => commit_dir(&p, &dir.path, &names).map_err(err),
+        (Target::Tree(p, owned), Stage::Dir(dir, _)) => {
+            commit_tree(&p, &dir.path, &owned).map_err(err)
         }
         _ => unreachable!("stage made for its target"),
     }
@@ -530,37 +606,72 @@ fn commit_dir(target: &Path, dir: &Path, names: &[String]) -> std::io::Result<()
     Ok(())
 }
 
-/// Whether an existing directory at `p` may be replaced whole: it is empty or holds `marker`
-/// (nothing there is fine too).
-fn replaceable(p: &Path, marker: &str) -> Result<()> {
-    match std::fs::read_dir(p) {
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(()),
-        Err(e) => Err(Error::Io(e.into())),
-        Ok(mut entries) => {
-            if entries.next().is_none() || p.join(marker).is_file() {
-                Ok(())
-            } else {
-                let marker = marker.to_string();
-                Err(Refusal::NotReplaceable { marker }.into())
+/// The path of a directory written whole, without `.` components: it must end in a name
+/// (not `.`, `..` or `/`), which the commit renames.
+fn replaced_name(p: &Path) -> Result<PathBuf> {
+    let clean: PathBuf = p.components().collect();
+    match clean.components().next_back() {
+        Some(std::path::Component::Normal(_)) => Ok(clean),
+        _ => Err(Refusal::NoName.into()),
+    }
+}
+
+/// Whether an existing directory at `p` may be replaced whole: it is empty or shows it is
+/// csgpix's as `owned` says (nothing there is fine too).
+fn replaceable(p: &Path, owned: &Owned) -> Result<()> {
+    let mut entries = match std::fs::read_dir(p) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
+        Err(e) => return Err(Error::Io(e.into())),
+        Ok(entries) => entries.peekable(),
+    };
+    if entries.peek().is_none() {
+        return Ok(());
+    }
+    match owned {
+        Owned::Marker(marker) if p.join(marker).is_file() => Ok(()),
+        Owned::Marker(marker) => Err(Refusal::NotReplaceable {
+            marker: marker.clone(),
+        }
+        .into()),
+        Owned::Series { prefix, suffix } => {
+            for e in entries {
+                let e = e.map_err(|e| Error::Io(e.into()))?;
+                let name = e.file_name().to_string_lossy().into_owned();
+                let file = e.file_type().is_ok_and(|t| t.is_file());
+                if !(file && owned.in_series(&name)) {
+                    let series = format!("{prefix}N{suffix}");
+                    return Err(Refusal::NotSeries {
+                        entry: name,
+                        series,
+                    }
+                    .into());
+                }
             }
+            Ok(())
         }
     }
 }
 
 /// Rename the staging directory into place, replacing a directory there whole (renamed
-/// aside, beside the staging directory, then removed once the new one is in).
-fn commit_tree(target: &Path, dir: &Path, marker: &str) -> std::io::Result<()> {
+/// aside, beside the staging directory, then removed once the new one is in). The new tree
+/// is on the disk first ([`sync_tree`]), so that a power cut after the old one is removed
+/// cannot lose both; a kill between the two renames leaves the old one renamed aside, which
+/// the next run naming the output puts back (`leftover`).
+fn commit_tree(target: &Path, dir: &Path, owned: &Owned) -> std::io::Result<()> {
     if let Some(parent) = target.parent().filter(|p| !p.as_os_str().is_empty()) {
         std::fs::create_dir_all(parent)?;
     }
     set_dir_mode(dir)?;
+    sync_tree(dir)?;
     match std::fs::symlink_metadata(target) {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return std::fs::rename(dir, target),
         Err(e) => return Err(e),
         Ok(_) => {}
     }
     // Checked again: the run may have been long, and the directory changed meanwhile.
-    replaceable(target, marker).map_err(std::io::Error::other)?;
+    replaceable(target, owned).map_err(std::io::Error::other)?;
+    // Locked as this live run's while it is aside (`leftover`).
+    let _held = File::open(target).ok().filter(leftover::lock);
     let old = dir.with_extension("csgpix-old");
     std::fs::rename(target, &old)?;
     if let Err(e) = std::fs::rename(dir, target) {
@@ -568,6 +679,46 @@ fn commit_tree(target: &Path, dir: &Path, marker: &str) -> std::io::Result<()> {
         return Err(e);
     }
     std::fs::remove_dir_all(&old)
+}
+
+/// Put the files and directories under `dir` on the disk, once for the whole tree rather
+/// than once per file (a Zarr store of 1³ chunks has tens of thousands of files, and one
+/// `fsync` each took most of a run's time). On Linux one `syncfs(2)` of the filesystem
+/// `dir` is on; elsewhere every file and directory under it synced in turn.
+pub fn sync_tree(dir: &Path) -> std::io::Result<()> {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::fd::AsRawFd;
+        let d = File::open(dir)?;
+        // SAFETY: syncfs(2) on a descriptor this File owns.
+        match unsafe { libc::syncfs(d.as_raw_fd()) } {
+            0 => Ok(()),
+            _ => Err(std::io::Error::last_os_error()),
+        }
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        sync_each(dir)
+    }
+}
+
+/// Every file and directory under `dir` synced, the directory last.
+#[cfg(not(target_os = "linux"))]
+fn sync_each(dir: &Path) -> std::io::Result<()> {
+    for e in std::fs::read_dir(dir)? {
+        let e = e?;
+        match e.file_type()? {
+            t if t.is_dir() => sync_each(&e.path())?,
+            t if t.is_file() => File::open(e.path())?.sync_all()?,
+            _ => {}
+        }
+    }
+    // Windows cannot open a directory as a file: its entries are written with the files.
+    match File::open(dir) {
+        Ok(d) => d.sync_all(),
+        Err(_) if cfg!(windows) => Ok(()),
+        Err(e) => Err(e),
+    }
 }
 
 #[cfg(unix)]
@@ -808,6 +959,32 @@ mod tests {
         drop(outs);
         assert_eq!(names(dir.path()), ["photos.zarr", "v.zarr"]);
         assert_eq!(names(&other), ["a.jpg"]);
+    }
+
+    #[test]
+    fn a_series_takes_only_its_names_and_replaces_only_a_series() {
+        let dir = tempfile::tempdir().unwrap();
+        let s = dir.path().join("s");
+        std::fs::create_dir(&s).unwrap();
+        for k in 0..3 {
+            std::fs::write(s.join(format!("z{k}.png")), b"old").unwrap();
+        }
+        let mut outs = Outputs::new();
+        let o = outs.series("--slices", &s, "z", ".png").unwrap();
+        outs.write_in(o, "z7.png", |w| w.write_all(b"new")).unwrap();
+        for bad in ["z.png", "zz1.png", "z1.png.bak", "a1.png"] {
+            let e = outs.write_in(o, bad, |_| Ok(())).unwrap_err().to_string();
+            assert!(e.contains("bad file name"), "{e}");
+        }
+        outs.commit().unwrap();
+        assert_eq!(names(&s), ["z7.png"]);
+        assert_eq!(names(dir.path()), ["s"]);
+        let mut outs = Outputs::new();
+        for path in [".", "..", "s/.."] {
+            let e = outs.series("--slices", Path::new(path), "z", ".png");
+            let e = e.unwrap_err().to_string();
+            assert!(e.contains("names no directory"), "{path}: {e}");
+        }
     }
 
     #[test]

@@ -156,6 +156,7 @@ impl Error {
             Error::Scene(e) => Some(e),
             Error::Voxel(csgpix_voxel::Error::Scene(e)) => Some(e),
             Error::Load(csgpix_draw::scenes::LoadError::Scene(e)) => Some(e),
+            Error::Tessellation { source, .. } => Some(source),
             Error::Context { source, .. } => source.scene(),
             _ => None,
         }

@@ -39,6 +39,7 @@ pub mod gen_vectors;
 mod lib_errors;
 pub mod man;
 pub mod memory;
+pub mod openscad_timeout;
 pub mod phantom;
 pub mod plot;
 pub mod png;
@@ -140,7 +141,7 @@ impl From<EquationsArg> for Equations {
 
 /// Run the command `cli` names: its exit code, or the error that stopped it.
 pub fn run(cli: Cli) -> Result<ExitCode> {
-    match cli.cmd {
+    let result = match cli.cmd {
         Cmd::GenVectors(a) => gen_vectors::run(a),
         Cmd::Phantom(a) => phantom::run(a),
         Cmd::VerifySelect(a) => verify_select::run(a),
@@ -154,7 +155,8 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Cmd::Study(a) => study::run(a),
         Cmd::Completions(a) => completions::run(a),
         Cmd::Man(a) => man::run(a),
-    }
+    };
+    result.map_err(lib_errors::openscad_timeout)
 }
 
 /// A view of a `.csg` scene on the array (`render`, `throughput`, `requirements`).

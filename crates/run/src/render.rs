@@ -57,6 +57,8 @@ pub struct Args {
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
+    #[command(flatten)]
+    openscad: super::openscad_timeout::OpenscadTimeout,
 }
 
 #[derive(Serialize)]
@@ -91,7 +93,19 @@ pub fn compile(
     view: csgpix_draw::project::View,
     cfg: &rtl_model::ArrayConfig,
 ) -> crate::Result<(Scene, Vec<Op>)> {
-    let scene = Scene::load(scenes, clip, view, cfg).map_err(super::lib_errors::load)?;
+    compile_with(scenes, clip, view, cfg, &Default::default())
+}
+
+/// [`compile`] with the `.csg`/`.scad` reader's options (openscad's time limit).
+pub fn compile_with(
+    scenes: &[PathBuf],
+    clip: Option<&str>,
+    view: csgpix_draw::project::View,
+    cfg: &rtl_model::ArrayConfig,
+    options: &csgpix_openscad::ReadOptions,
+) -> crate::Result<(Scene, Vec<Op>)> {
+    let scene =
+        Scene::load_with(scenes, clip, view, cfg, options).map_err(super::lib_errors::load)?;
     let locate = |(i, e)| Error::Scene(scene.locate_error(i, &e));
     csgpix_draw::compile::check_window(&scene.lists, &cfg.fmt, cfg.width, cfg.height)
         .map_err(locate)?;
@@ -118,7 +132,8 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     a.array
         .mem
         .check(memory_estimate(&a, &cfg), "this render", "lower --size")?;
-    let (scene, ops) = compile(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg)?;
+    let options = a.openscad.read_options();
+    let (scene, ops) = compile_with(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg, &options)?;
     let t0 = Instant::now();
     let mut stack_levels = 0;
     let mut simulated = None;

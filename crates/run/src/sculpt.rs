@@ -65,6 +65,8 @@ pub struct Args {
     forces: Option<PathBuf>,
     #[command(flatten)]
     mem: super::memory::MaxMemory,
+    #[command(flatten)]
+    openscad: super::openscad_timeout::OpenscadTimeout,
 }
 
 /// What a run did.
@@ -259,7 +261,7 @@ fn load_scene(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
     let name = a.input.display().to_string();
     let options = csgpix_openscad::ReadOptions {
         samples: a.mem.samples(),
-        ..Default::default()
+        ..a.openscad.read_options()
     };
     let loaded = csgpix_voxel::sampled::load_scene_with(&a.input, &options)?;
     let scene = &loaded.scene;

@@ -59,6 +59,8 @@ pub struct Args {
     sampling: SamplingArg,
     #[command(flatten)]
     mem: super::memory::MaxMemory,
+    #[command(flatten)]
+    openscad: super::openscad_timeout::OpenscadTimeout,
     /// Print every point as JSON.
     #[arg(long)]
     json: bool,
@@ -76,7 +78,7 @@ struct Report<'a> {
 
 pub fn run(a: Args) -> crate::Result<ExitCode> {
     let file = a.scene.display().to_string();
-    let text = csgpix_openscad::scene_text(&a.scene)?;
+    let text = csgpix_openscad::scene_text_with(&a.scene, a.openscad.limit())?;
     let sweep = Sweep {
         bits: a.bits.clone(),
         fragments: a.fragments.clone(),

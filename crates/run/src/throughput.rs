@@ -22,6 +22,7 @@ use rtl_model::{Array, ArrayConfig, CycleArray, Equations, Op, WordFormat};
 use serde::Serialize;
 
 use super::array_args::{parse_size, parse_word};
+use super::openscad_timeout::OpenscadTimeout;
 use super::ViewArg;
 
 #[derive(clap::Args, Debug)]
@@ -80,6 +81,8 @@ pub struct Args {
     json: bool,
     #[command(flatten)]
     mem: super::memory::MaxMemory,
+    #[command(flatten)]
+    openscad: super::openscad_timeout::OpenscadTimeout,
 }
 
 /// A positive number, or a fraction A/B.
@@ -253,8 +256,8 @@ fn print_area(r: &AreaReport) {
     }
 }
 
-fn read_scene(path: &Path) -> crate::Result<CsgScene> {
-    let scene = csgpix_openscad::read_scene(path)?;
+fn read_scene(path: &Path, openscad: OpenscadTimeout) -> crate::Result<CsgScene> {
+    let scene = csgpix_openscad::read_scene_with(path, &openscad.read_options())?;
     scene.require_convex(&path.display().to_string(), "`throughput`")?;
     Ok(scene)
 }
@@ -294,7 +297,7 @@ fn scene_report(
     hw: &Hardware,
     panels: &[(usize, usize)],
 ) -> crate::Result<SceneReport> {
-    let scene = read_scene(path)?;
+    let scene = read_scene(path, a.openscad)?;
     let fmt = scene_word(a, &scene)?;
     let ps = PanelScene::new(&scene, a.view.into(), a.screen, fmt)
         .map_err(|e| super::lib_errors::draw(e).context(path.display().to_string()))?;

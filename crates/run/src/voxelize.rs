@@ -40,6 +40,7 @@ use super::EquationsArg;
     csgpix voxelize vectors/scenes/figure-5.2.csg --res 64 --preview fig52.png -o fig52.nrrd\n  \
     csgpix voxelize vectors/scenes/csg-logo.csg --res 128 --eval tree --json -o logo.nrrd\n  \
     csgpix voxelize vectors/scenes/hollow-cube.csg --res 32 --model cycle --slices slices/ -o hollow.nrrd\n  \
+    csgpix voxelize vectors/scenes/extrusions.scad --voxel 0.5 --openscad-timeout 600 -o part.nrrd\n  \
     csgpix voxelize scene.csg --res 64x64x32 --bounds -10,-10,-10,10,10,10 -o part.nrrd\n  \
     csgpix voxelize vectors/scenes/cube-minus-cylinder.csg --voxel 0.5 --pad 1 --mesh part.stl -o part.nrrd\n  \
     csgpix voxelize vectors/scenes/hollow-cube.csg --res 32 --sampling slab -o thesis-slabs.nrrd\n  \
@@ -147,6 +148,8 @@ pub struct Args {
     threads: Option<u16>,
     #[command(flatten)]
     mem: super::memory::MaxMemory,
+    #[command(flatten)]
+    openscad: super::openscad_timeout::OpenscadTimeout,
     /// Also build a voxel store of the volume's dual cells, slice by slice while voxelizing
     /// (seed 000 Ch. 4; docs/octree.md), and report its nodes, bytes and build time.
     #[arg(long, value_enum)]
@@ -702,14 +705,14 @@ fn load(a: &Args) -> crate::Result<Loaded> {
                     a.mem.bytes(),
                 )),
                 samples: a.mem.samples(),
-                ..Default::default()
+                ..a.openscad.read_options()
             };
             load_scene_with(p, &options).map_err(flag_message)
         }
         (None, Some(e)) => {
             let options = csgpix_openscad::ReadOptions {
                 samples: a.mem.samples(),
-                ..Default::default()
+                ..a.openscad.read_options()
             };
             scene_from_expr_with(e, &a.prim, &options).map_err(flag_message)
         }
@@ -808,7 +811,7 @@ fn name_outputs(a: &Args) -> crate::Result<Named> {
     let slices = a
         .slices
         .as_ref()
-        .map(|d| outs.dir("--slices", d))
+        .map(|d| outs.series("--slices", d, "slice-", ".png"))
         .transpose()?;
     let preview = a.preview.as_ref();
     let preview = preview.map(|p| outs.file_or_stdout("--preview", p, &["png"]));

@@ -72,6 +72,15 @@ pub enum Error {
     /// An output that cannot be written (a writer's path, refused or failed).
     #[error(transparent)]
     Output(#[from] csgpix_output::Error),
+    /// A program csgpix runs (openscad) did not finish within its time limit: it was
+    /// killed. The caller names the setting that raises the limit.
+    #[error("{program} did not finish within {} s", Seconds(*limit))]
+    TimedOut {
+        /// The program.
+        program: String,
+        /// The limit it was given.
+        limit: std::time::Duration,
+    },
     /// Input whose content breaks its format's rules or a setting's range: what is wrong,
     /// one line (the place, when it has one, is in an enclosing [`Error::At`]).
     #[error("{}", OneLine(.0))]
@@ -87,10 +96,24 @@ pub enum Kind {
     Other,
     /// A grid was asked over a scene with no solids ([`Error::NeedsBounds`]).
     NeedsBounds,
+    /// A program did not finish within its time limit ([`Error::TimedOut`]).
+    TimedOut,
 }
 
 /// A scene result.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// A time limit in seconds: `300`, or `0.5` when not whole.
+struct Seconds(std::time::Duration);
+
+impl fmt::Display for Seconds {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0.subsec_nanos() {
+            0 => write!(f, "{}", self.0.as_secs()),
+            _ => write!(f, "{}", self.0.as_secs_f64()),
+        }
+    }
+}
 
 impl Error {
     /// An error at `file:line:col`.
@@ -134,11 +157,13 @@ impl Error {
         Error::Io(e.into()).context(path)
     }
 
-    /// Which case it is, for callers that word [`Kind::NeedsBounds`] their own way.
+    /// Which case it is, for callers that word [`Kind::NeedsBounds`] or [`Kind::TimedOut`]
+    /// their own way.
     pub fn kind(&self) -> Kind {
         match self {
             Error::NeedsBounds => Kind::NeedsBounds,
-            Error::Context { source, .. } => source.kind(),
+            Error::TimedOut { .. } => Kind::TimedOut,
+            Error::Context { source: e, .. } | Error::At { problem: e, .. } => e.kind(),
             _ => Kind::Other,
         }
     }

@@ -104,7 +104,7 @@ use rayon::prelude::*;
 use rtl_model::EquationSet;
 use serde_json::{json, Value};
 use zarrs::array::codec::{BytesCodec, GzipCodec, ShardingCodecBuilder};
-use zarrs::array::{Array, ArrayBuilder, ArrayMetadataOptions, CodecOptions};
+use zarrs::array::{Array, ArrayBuilder, ArrayMetadataOptions};
 use zarrs::filesystem::FilesystemStore;
 use zarrs::group::{Group, GroupBuilder};
 
@@ -128,12 +128,10 @@ pub const PYRAMID_SIDE: usize = 256;
 /// compressing, is what a run waits on (docs/zarr.md has the figures).
 pub const GZIP_LEVEL: u32 = 6;
 
-/// Unsharded arrays (`shard` 1): chunks of a row written at once, each on its own thread.
-/// zarrs's filesystem store syncs every chunk file to the disk before it returns
-/// (`File::sync_all`), so a writer spends most of its time waiting on the disk, not
-/// compressing: with 2 writers a 1024³ run spent 6.5 s of its 21 s there (docs/zarr.md).
-/// Threads apart from rayon's, so that they wait without holding the voxelizer's workers;
-/// each holds a chunk and its gzip stream.
+/// Unsharded arrays (`shard` 1): chunks of a row written at once, each on its own thread,
+/// apart from rayon's so that they wait on the filesystem without holding the voxelizer's
+/// workers; each holds a chunk and its gzip stream. (They once waited on the disk too, when
+/// every chunk file was synced as it was written: docs/zarr.md.)
 pub const WRITERS: usize = 8;
 
 /// Bytes of a deflate stream's own state (window, hash chains, pending output) per thread
@@ -523,11 +521,6 @@ fn metadata_options() -> ArrayMetadataOptions {
     ArrayMetadataOptions::default().with_include_zarrs_metadata(false)
 }
 
-/// Chunks equal to the fill value are skipped, whatever the process's zarrs configuration.
-fn codec_options() -> CodecOptions {
-    CodecOptions::default().with_store_empty_chunks(false)
-}
-
 /// The array of `level`: uint8, fill 0, dimension names z, y, x; gzip at [`GZIP_LEVEL`],
 /// inside the `sharding_indexed` codec when sharded (index at the end, `bytes`
 /// little-endian, no checksum).
@@ -818,7 +811,8 @@ impl ZarrVolume {
     /// row is [`downsample`]d from the level below's. Each shard (or chunk) with a non-zero
     /// voxel is written; one all 0 is not, and a file left for it by an earlier write is
     /// removed. On an error the first one is returned, and files of the row may be written
-    /// or not.
+    /// or not. The files are not synced to the disk: [`sync`](Self::sync) does it once for
+    /// the store ([`voxelize_rows`] and [`voxelize_bricks`] do at their end).
     pub fn write_row(&self, row: usize, slices: &[u8]) -> Result<()> {
         let [nx, ny, _] = self.grid.dims;
         self.write_brick(row, PixelBox::new(0, 0, nx, ny), slices, None)
@@ -863,9 +857,8 @@ impl ZarrVolume {
         known: Option<&[Option<u8>]>,
     ) -> Result<()> {
         let slabs = self.brick_slabs(row, columns, slices.len())?;
-        let mut unsynced = shard::Unsynced::default();
         let [w, h] = [columns.width(), columns.height()];
-        self.write_level_brick(0, row, columns, [w, h, slabs], slices, known, &mut unsynced)?;
+        self.write_level_brick(0, row, columns, [w, h, slabs], slices, known)?;
         let mut below: Option<Vec<u8>> = None;
         let mut size = [w, h, slabs];
         for l in 1..self.levels.len() {
@@ -878,10 +871,18 @@ impl ZarrVolume {
                 (columns.y0 >> l) + size[1],
             );
             let known = known.map(|k| self.coarsen(k, columns, l));
-            self.write_level_brick(l, row, b, size, &next, known.as_deref(), &mut unsynced)?;
+            self.write_level_brick(l, row, b, size, &next, known.as_deref())?;
             below = Some(next);
         }
-        unsynced.flush()
+        Ok(())
+    }
+
+    /// Put every file of the store on the disk: once when the rows are written, not once
+    /// per file (a store of small chunks is tens of thousands of files, and a `fsync` each
+    /// took most of the run: docs/zarr.md). A store written in several calls by several
+    /// processes is durable once each has synced after its last write.
+    pub fn sync(&self) -> Result<()> {
+        csgpix_output::sync_tree(&self.path).map_err(io_err(&self.path))
     }
 
     /// The slabs of row `row`, checking that `columns` is a brick and `len` its bytes.
@@ -956,7 +957,6 @@ impl ZarrVolume {
         size: [usize; 3],
         slices: &[u8],
         known: Option<&[Option<u8>]>,
-        unsynced: &mut shard::Unsynced,
     ) -> Result<()> {
         let v = &self.levels[l];
         let [_, cy, cx] = v.level.chunk;
@@ -973,48 +973,37 @@ impl ZarrVolume {
             Some([_, sy, sx]) => {
                 let per = [sy / cy, sx / cx];
                 let dir = self.path.join(l.to_string());
-                shard::write_row(&dir, row, &cut, per, &self.uniform, unsynced)?
+                shard::write_row(&dir, row, &cut, per, &self.uniform)?
             }
-            None => self.write_chunks(&v.array, row, &cut)?,
+            None => self.write_chunks(l, row, &cut)?,
         };
         v.written.fetch_add(written, Ordering::Relaxed);
         Ok(())
     }
 
-    /// An unsharded level's row, one chunk file each through zarrs, [`WRITERS`] at a time.
-    fn write_chunks(
-        &self,
-        array: &Array<FilesystemStore>,
-        row: usize,
-        cut: &shard::RowCut,
-    ) -> Result<u64> {
+    /// Level `l`'s row when unsharded, one chunk file each, [`WRITERS`] at a time: gzipped
+    /// as zarrs's gzip codec does (one value's chunks compressed once a run), at zarrs's key
+    /// `L/c/K/J/I`. Written here, not by zarrs's store, which syncs every file it writes.
+    fn write_chunks(&self, l: usize, row: usize, cut: &shard::RowCut) -> Result<u64> {
         let (down, across) = cut.grid();
         let chunks = down * across;
-        let options = codec_options();
         let written = AtomicU64::new(0);
+        let dir = self.path.join(l.to_string());
         let write = |c: usize| -> Result<()> {
             let (bj, bi) = (c / across, c % across);
-            let at = [row, cut.at[0] + bj, cut.at[1] + bi].map(|c| c as u64);
-            // The store makes the chunk's directories as it writes: never after a signal's
-            // cleanup has removed a staged store (crates/output).
-            let _writing = staged_write().ok_or(Error::Interrupted)?;
-            let err = store_err(&self.path);
-            let held = cut.held(bj, bi);
-            self.uniform.count(held);
-            match (held != shard::Held::Empty)
-                .then(|| cut.chunk_bytes(bj, bi))
-                .flatten()
-            {
-                Some(chunk) => {
+            let (j, i) = (cut.at[0] + bj, cut.at[1] + bi);
+            let path = dir.join(format!("c/{row}/{j}/{i}"));
+            let packed = self.uniform.pack(cut, bj, bi).map_err(io_err(&path))?;
+            match packed {
+                Some(bytes) => {
                     written.fetch_add(1, Ordering::Relaxed);
-                    array
-                        .store_chunk_opt(&at, chunk, &options)
-                        .map_err(|e| err(&e))
+                    shard::write_file(&path, &bytes)
                 }
-                None => array.erase_chunk(&at).map_err(|e| err(&e)),
+                None => shard::remove_stale(&path),
             }
         };
-        // WRITERS threads take the row's chunks in turn; the first error stops them all.
+        // WRITERS threads take the row's chunks in turn, this one among them (a brick of a
+        // few chunks spawns no thread); the first error stops them all.
         let (next, failed) = (AtomicUsize::new(0), AtomicBool::new(false));
         let writer = || -> Result<()> {
             loop {
@@ -1026,10 +1015,10 @@ impl ZarrVolume {
             }
         };
         std::thread::scope(|scope| {
-            let writers: Vec<_> = (0..WRITERS.min(chunks))
+            let writers: Vec<_> = (1..WRITERS.min(chunks))
                 .map(|_| scope.spawn(writer))
                 .collect();
-            let mut first = Ok(());
+            let mut first = writer();
             for w in writers {
                 let r = w.join().unwrap_or(Err(Error::Panicked {
                     thread: "a chunk writer",
@@ -1094,6 +1083,7 @@ pub fn voxelize_rows(
         }
         Ok::<(), Error>(())
     })
+    .and_then(|work| volume.sync().map(|()| work))
 }
 
 /// Voxelize the bricks of chunk rows `rows` × `tiles` (each one of [`ZarrVolume::tiles`]) of
@@ -1144,6 +1134,7 @@ pub fn voxelize_bricks(
             tick();
         }
     }
+    volume.sync()?;
     Ok(work)
 }
 
@@ -1465,6 +1456,55 @@ mod tests {
             assert!(!path.join(kept).exists(), "{layout:?}");
             assert!(v.read_level(0).unwrap().iter().all(|&x| x == 0));
         }
+    }
+
+    /// Unsharded chunks, written here rather than by zarrs's store (which syncs each file),
+    /// are the bytes zarrs's own chunk writer gives for the same chunks.
+    #[test]
+    fn unsharded_chunks_are_the_bytes_zarrs_writes() {
+        let dir = tempfile::tempdir().unwrap();
+        let layout = unsharded([2, 3, 2]);
+        let (ours, theirs) = (dir.path().join("ours"), dir.path().join("theirs"));
+        let v = ZarrVolume::create(&ours, &grid([5, 4, 2]), &layout, &attrs()).unwrap();
+        let z = ZarrVolume::create(&theirs, &grid([5, 4, 2]), &layout, &attrs()).unwrap();
+        // A mixed chunk, a chunk of one value, chunks cut by the grid's edges, empty ones.
+        let row: Vec<u8> = (0..40u8)
+            .map(|i| [0, 7, i % 3, 7][(i / 10) as usize])
+            .collect();
+        v.write_row(0, &row).unwrap();
+        let cut = shard::RowCut {
+            slices: &row,
+            nx: 5,
+            ny: 4,
+            slabs: 2,
+            chunk: [2, 3, 2],
+            at: [0, 0],
+            known: None,
+        };
+        let (down, across) = cut.grid();
+        let mut files = 0;
+        for (j, i) in (0..down).flat_map(|j| (0..across).map(move |i| (j, i))) {
+            let key = format!("0/c/0/{j}/{i}");
+            if cut.held(j, i) == shard::Held::Empty {
+                assert!(!ours.join(&key).exists(), "{key}");
+                continue;
+            }
+            let chunk = cut.copy(j, i);
+            let options = zarrs::array::CodecOptions::default();
+            let at = [0, j as u64, i as u64];
+            z.levels[0]
+                .array
+                .store_chunk_opt(&at, chunk, &options)
+                .unwrap();
+            let (a, b) = (ours.join(&key), theirs.join(&key));
+            assert_eq!(
+                std::fs::read(a).unwrap(),
+                std::fs::read(b).unwrap(),
+                "{key}"
+            );
+            files += 1;
+        }
+        assert!(files >= 3, "{files}");
     }
 
     /// Each level read back is the downsample of the one below, and is placed at the centre

@@ -18,7 +18,7 @@ use csgpix_output::staged_write;
 use rayon::prelude::*;
 
 use crate::pyramid::all_equal;
-use crate::{Error, Result, StoreProblem, GZIP_LEVEL, WRITERS};
+use crate::{Error, Result, StoreProblem, GZIP_LEVEL};
 
 /// Inner chunks compressed at once per thread of the pool: the batch is held compressed
 /// until it is appended, in order, to the shard files.
@@ -117,17 +117,8 @@ impl RowCut<'_> {
         }
     }
 
-    /// Inner chunk (bj, bi) of the cut in C order, padded with 0 past the grid's edges; None
-    /// when all its voxels are 0 (nothing is copied then).
-    pub fn chunk_bytes(&self, bj: usize, bi: usize) -> Option<Vec<u8>> {
-        if self.held(bj, bi) == Held::Empty {
-            return None;
-        }
-        Some(self.copy(bj, bi))
-    }
-
     /// Chunk (bj, bi) copied out, padded with 0.
-    fn copy(&self, bj: usize, bi: usize) -> Vec<u8> {
+    pub(crate) fn copy(&self, bj: usize, bi: usize) -> Vec<u8> {
         let [cz, cy, cx] = self.chunk;
         let (h, w, line) = self.extent(bj, bi);
         let mut chunk = vec![0u8; cz * cy * cx];
@@ -207,15 +198,15 @@ struct Open {
 /// Write one level's chunk row `row` as shard files `dir/c/ROW/SJ/SI` of `per` (Y, X) inner
 /// chunks each: every shard with a non-zero voxel, and no file (an existing one removed) for
 /// the others. Inner chunks are compressed a batch at a time on rayon's pool and appended in
-/// C order, so the bytes do not depend on the threads. Finished files are left to
-/// `unsynced` to sync. Returns the shard files written.
+/// C order, so the bytes do not depend on the threads. The files are not synced: the store
+/// is, once, when it is whole ([`crate::ZarrVolume::sync`]). Returns the shard files
+/// written.
 pub(crate) fn write_row(
     dir: &Path,
     row: usize,
     cut: &RowCut,
     per: [usize; 2],
     uniform: &UniformChunks,
-    unsynced: &mut Unsynced,
 ) -> Result<u64> {
     let (gy, gx) = cut.grid();
     let (shy, shx) = (gy.div_ceil(per[0]), gx.div_ceil(per[1]));
@@ -251,7 +242,7 @@ pub(crate) fn write_row(
         for (&(at, q, _, _), bytes) in todo.iter().zip(packed) {
             if open.as_ref().is_none_or(|o| o.at != at) {
                 if let Some(o) = open.take() {
-                    unsynced.push(finish(o)?)?;
+                    finish(o)?;
                 }
                 open = Some(Open {
                     at,
@@ -283,64 +274,46 @@ pub(crate) fn write_row(
         }
     }
     if let Some(o) = open.take() {
-        unsynced.push(finish(o)?)?;
+        finish(o)?;
     }
     Ok(written)
 }
 
 /// The shard's index appended, or its stale file removed when it has no inner chunk.
-fn finish(o: Open) -> Result<Option<(PathBuf, File)>> {
+fn finish(o: Open) -> Result<()> {
     let io = |e: std::io::Error| Error::Store {
         path: o.path.clone(),
         message: StoreProblem::Io(e.into()),
     };
     let Some(mut file) = o.file else {
-        return match std::fs::remove_file(&o.path) {
-            Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(io(e)),
-            _ => Ok(None),
-        };
+        return remove_stale(&o.path);
     };
     let index: Vec<u8> = o.index.iter().flat_map(|v| v.to_le_bytes()).collect();
-    file.write_all(&index).map_err(io)?;
-    Ok(Some((o.path, file)))
+    file.write_all(&index).map_err(io)
 }
 
-/// Shard files written and not yet synced to the disk: synced [`WRITERS`] at once, each on
-/// a thread of its own (`sync_all` waits on the disk, as zarrs's store does for each chunk
-/// it writes, and one at a time a row's shards of every level would wait in turn), when
-/// that many are pending and when a row is done ([`Unsynced::flush`]).
-#[derive(Default)]
-pub(crate) struct Unsynced(Vec<(PathBuf, File)>);
-
-impl Unsynced {
-    fn push(&mut self, file: Option<(PathBuf, File)>) -> Result<()> {
-        self.0.extend(file);
-        match self.0.len() >= WRITERS {
-            true => self.flush(),
-            false => Ok(()),
-        }
+/// Remove the file an earlier write left at `path` for a chunk or shard now all 0.
+pub(crate) fn remove_stale(path: &Path) -> Result<()> {
+    match std::fs::remove_file(path) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(Error::Store {
+            path: path.to_path_buf(),
+            message: StoreProblem::Io(e.into()),
+        }),
+        _ => Ok(()),
     }
+}
 
-    /// Every pending file synced; the first error returned.
-    pub fn flush(&mut self) -> Result<()> {
-        let files = std::mem::take(&mut self.0);
-        std::thread::scope(|scope| {
-            let syncs: Vec<_> = files
-                .into_iter()
-                .map(|(path, f)| {
-                    scope.spawn(move || {
-                        f.sync_all().map_err(|e| Error::Store {
-                            path,
-                            message: StoreProblem::Io(e.into()),
-                        })
-                    })
-                })
-                .collect();
-            syncs.into_iter().try_for_each(|s| {
-                s.join().unwrap_or(Err(Error::Panicked {
-                    thread: "a sync thread",
-                }))
-            })
-        })
+/// Write a chunk file whole at `path` (not synced: the store is, once, when it is whole),
+/// its directories made first, never after a signal's cleanup has removed a staged store
+/// (crates/output).
+pub(crate) fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
+    let io = |p: &Path, e: std::io::Error| Error::Store {
+        path: p.to_path_buf(),
+        message: StoreProblem::Io(e.into()),
+    };
+    let _writing = staged_write().ok_or(Error::Interrupted)?;
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).map_err(|e| io(parent, e))?;
     }
+    std::fs::write(path, bytes).map_err(|e| io(path, e))
 }
