@@ -8,8 +8,9 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 
 use csgpix_run::array_args::parse_word;
+use csgpix_run::memory::imports_estimate;
 use csgpix_run::memory::Limit;
-use csgpix_run::voxelize::{grid_spec, imports_estimate, parse_blend, Resolution, Voxelization};
+use csgpix_run::voxelize::{grid_spec, parse_blend, Resolution, Voxelization};
 use csgpix_voxel::sampled::{load_scene_with, scene_from_expr_with, Binding, Loaded};
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{Grid, Route, Slicer};

@@ -174,26 +174,7 @@ impl Error {
     }
 }
 
-/// A flag's value that does not parse (clap's value parsers): the reason, one line, which
-/// clap prints after the flag and the value.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{0}")]
-pub struct BadValue(pub String);
-
-impl From<&str> for BadValue {
-    fn from(s: &str) -> BadValue {
-        BadValue(s.into())
-    }
-}
-
-impl From<String> for BadValue {
-    fn from(s: String) -> BadValue {
-        BadValue(s)
-    }
-}
-
-/// `Result` of a flag's value parser.
-pub type Parsed<T> = std::result::Result<T, BadValue>;
+pub use crate::value::{BadValue, Parsed};
 
 #[cfg(test)]
 mod tests {

@@ -108,7 +108,7 @@ impl MaxMemory {
 /// `--max-memory MIB`: 1 to [`MAX_MIB`], lowered to what the process may hold ([`Cap`]) with
 /// a one-line note on standard error, so that a limit above the address space cannot let a
 /// run start that the system will not let finish.
-fn parse_max_memory(s: &str) -> Result<u64, crate::error::BadValue> {
+fn parse_max_memory(s: &str) -> crate::value::Parsed<u64> {
     let mib: u64 = s
         .parse()
         .map_err(|_| format!("{s:?} is not a whole number of MiB"))?;
@@ -190,6 +190,15 @@ impl Cap {
         .flatten()
         .min_by_key(|c| c.mib)
     }
+}
+
+/// Bytes the slab routes hold for the imports of `slicer` (datasets' samples, meshes' runs).
+pub fn imports_estimate(slicer: &csgpix_voxel::Slicer) -> u64 {
+    let each = slicer
+        .sampled
+        .iter()
+        .map(|s| s.memory_estimate(&slicer.grid));
+    each.fold(0, u64::saturating_add)
 }
 
 /// MemAvailable of /proc/meminfo, in MiB.

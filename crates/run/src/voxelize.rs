@@ -337,15 +337,6 @@ pub fn thread_pool(threads: Option<usize>) -> crate::Result<rayon::ThreadPool> {
     Ok(pool.build()?)
 }
 
-/// Bytes the slab routes hold for the imports of `slicer` (datasets' samples, meshes' runs).
-pub fn imports_estimate(slicer: &Slicer) -> u64 {
-    let each = slicer
-        .sampled
-        .iter()
-        .map(|s| s.memory_estimate(&slicer.grid));
-    each.fold(0, u64::saturating_add)
-}
-
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
 enum StoreArg {
     /// Optimized hash-based octree: leaves only (seed 000 §4.3.4).
@@ -1088,7 +1079,7 @@ fn estimate(
         false => memory_estimate(grid, slicer.primitive_count(), threads),
     };
     if !runs {
-        need = need.saturating_add(imports_estimate(slicer));
+        need = need.saturating_add(crate::memory::imports_estimate(slicer));
     }
     if let Some(st) = a.store {
         need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);

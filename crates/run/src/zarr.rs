@@ -11,7 +11,7 @@ use csgpix_voxel::{Grid, Route, Slicer, Work};
 use csgpix_zarr::{voxelize_bricks, voxelize_rows, Layout, VolumeAttrs, ZarrVolume};
 use rtl_model::EquationSet;
 
-use crate::voxelize::imports_estimate;
+use crate::memory::imports_estimate;
 use crate::Error;
 
 /// Write the metadata of the volume of the scene `name` (as messages name it: a path, or
