@@ -76,11 +76,16 @@ impl PanelScene {
                 dl
             })
             .collect();
-        let footprints = scene
-            .solids
-            .iter()
-            .map(|s| footprint(&frame, &s.vertices, screen))
-            .collect();
+        // A tree that simplifies to nothing (a difference from an empty solid) draws no
+        // solid: no panel lists any.
+        let footprints = match lists.is_empty() {
+            true => vec![],
+            false => scene
+                .solids
+                .iter()
+                .map(|s| footprint(&frame, &s.vertices, screen))
+                .collect(),
+        };
         Ok(PanelScene {
             screen,
             fmt,

@@ -215,7 +215,9 @@ pub fn voxelize(
                 slab_chunk(slicer, &source, eval, tick, a, (a + chunk).min(nz))?;
             let mut ops = OpCounts::default();
             for ((colours, counts), into) in slices.into_iter().zip(place.chunks_mut(nx * ny)) {
-                into.copy_from_slice(&colours);
+                // A slice is as long as its longest mask: shorter (empty, with no primitive
+                // at all) it is outside past its end, as the volume already is.
+                into[..colours.len()].copy_from_slice(&colours);
                 ops += counts;
             }
             Ok((simulated, ops))
