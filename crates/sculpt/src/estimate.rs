@@ -21,7 +21,7 @@ const TRI_BYTES: u64 = std::mem::size_of::<mc::Tri>() as u64;
 /// Bytes of an entry of [`crate::CellMesh`]'s map (a key and its run).
 const CELL_ENTRY_BYTES: u64 = std::mem::size_of::<(u64, (u32, u8))>() as u64;
 
-/// The Marching Cubes case of a cell whose corner k ([`corner_code`]'s order) is filled
+/// The Marching Cubes case of a cell whose corner k ([`corner_code`](csgpix_voxel::cells::corner_code)'s order) is filled
 /// when bit k of `filled` is set.
 fn case_of(filled: u8) -> u8 {
     let mut case = 0u8;
@@ -32,7 +32,7 @@ fn case_of(filled: u8) -> u8 {
     case
 }
 
-/// The most triangles a cell with the corners `code` ([`corner_code`]) has: the most of any
+/// The most triangles a cell with the corners `code` ([`corner_code`](csgpix_voxel::cells::corner_code)) has: the most of any
 /// filling of its unknown corners.
 pub fn cell_triangles(code: usize) -> u64 {
     let t = mc::table();
