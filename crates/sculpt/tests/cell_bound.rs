@@ -34,12 +34,23 @@ fn check(
         sampled,
         ..SlicerOptions::default()
     };
+    check_with(scene, opts, Route::Runs { float: false }, grid, what)
+}
+
+/// [`check`] with the slicer's options and the route given.
+fn check_with(
+    scene: &CsgScene,
+    opts: SlicerOptions,
+    route: Route,
+    grid: Grid,
+    what: &str,
+) -> Option<[(u64, u64); 2]> {
     let slicer = Slicer::new(scene, grid, opts).ok()?;
     let depth = depth_for(grid.dims).unwrap();
     let bound = cell_counts(scene, &slicer, depth);
     let eval = BlistEval::new(&scene.root);
     let set = rtl_model::Equations::Derived.set();
-    let (v, _) = voxelize(&slicer, Route::Runs { float: false }, set, &eval, &|| {}).ok()?;
+    let (v, _) = voxelize(&slicer, route, set, &eval, &|| {}).ok()?;
     let actual = volume_counts(&v).unwrap();
     for l in 0..=depth as usize {
         assert!(
@@ -205,6 +216,36 @@ fn turned_datasets() {
             Sampling::Centre,
             &text,
         );
+    }
+}
+
+/// Blended datasets (`--blend`): a voxel's value is a blend of grey values, so a difference
+/// of two datasets is empty where the first's value is not above the second's, inside both.
+#[test]
+fn blended_datasets() {
+    use csgpix_voxel::blend::{BlendEval, Union};
+    let dir =
+        std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../vectors/scenes"));
+    // Inside both, the first's grey value is above the second's here and not there.
+    let text = "difference() { union() { import(file = \"phantom.nrrd\", threshold = 100); \
+        cube(size = [4, 4, 30], center = true); } \
+        multmatrix([[1, 0, 0, 0.7], [0, 1, 0, 0.4], [0, 0, 1, 0], [0, 0, 0, 1]]) \
+        import(file = \"phantom.nrrd\", threshold = 100); }";
+    let scene = csgpix_openscad::parse_csg(text, "b.csg").unwrap();
+    for union in [Union::Max, Union::Sum { ks: 0.5, kd: 0.3 }] {
+        let sampled = csgpix_voxel::sampled::load_imports(&scene, "b.csg", &dir).unwrap();
+        let loaded = csgpix_voxel::sampled::Loaded {
+            scene: scene.clone(),
+            sampled,
+        };
+        let (lo, hi) = loaded.bounds().unwrap();
+        let grid = Grid::new([40, 44, 48], lo, hi).unwrap();
+        let opts = SlicerOptions {
+            sampled: loaded.sampled.clone(),
+            blend: Some(BlendEval::new(&scene.root, union)),
+            ..SlicerOptions::default()
+        };
+        check_with(&scene, opts, Route::Intervals, grid, text).expect("voxelized");
     }
 }
 

@@ -283,7 +283,8 @@ fn postfix(n: &CsgNode, out: &mut Vec<Op>) {
 }
 
 /// Trees with more leaves than this are not evaluated per node: a node is taken as mixed when
-/// any primitive is (the union of their boundaries), which costs nothing per node.
+/// any primitive is (the union of their boundaries), which costs nothing per node; so are
+/// blended scenes, whose values are not the tree's Boolean.
 const TREE_LEAVES: usize = 64;
 
 /// A primitive in voxel coordinates (voxel (i, j, k)'s centre at (i, j, k)).
@@ -311,6 +312,9 @@ struct Lattice<'a> {
     data: &'a Dataset,
     threshold: f64,
     eps: f64,
+    /// Under `--blend` a voxel inside takes the dataset's grey value, which varies: only
+    /// outside is known.
+    graded: bool,
     /// Least and greatest sample of blocks of 4^… cells: `mip[m]` has blocks of 2^(m + 2)
     /// cells a side, `dims[m]` of them.
     mip: Vec<Blocks>,
@@ -324,7 +328,7 @@ const PIECES: usize = 27;
 const SAMPLES: usize = 512;
 
 impl<'a> Lattice<'a> {
-    fn new(a: DMat3, b: DVec3, data: &'a Dataset, threshold: f64) -> Lattice<'a> {
+    fn new(a: DMat3, b: DVec3, data: &'a Dataset, threshold: f64, graded: bool) -> Lattice<'a> {
         let abs_a = DMat3::from_cols(a.x_axis.abs(), a.y_axis.abs(), a.z_axis.abs());
         let (lo, hi) = data.nrrd.range;
         let scale = 1.0 + f64::from(lo).abs().max(f64::from(hi).abs()) + threshold.abs();
@@ -335,6 +339,7 @@ impl<'a> Lattice<'a> {
             data,
             threshold,
             eps: 1e-9 * scale,
+            graded,
             mip: vec![],
         };
         l.build_mip();
@@ -506,6 +511,14 @@ impl<'a> Lattice<'a> {
     }
 
     fn classify(&self, c: DVec3, h: DVec3) -> Class {
+        match self.membership(c, h) {
+            Class::In if self.graded => Class::Mixed,
+            c => c,
+        }
+    }
+
+    /// Whether the voxel centres of the box (centre c, half sizes h) are inside.
+    fn membership(&self, c: DVec3, h: DVec3) -> Class {
         // A node of up to 3 voxels a side: its voxel centres one by one.
         if h.max_element() <= 1.0 {
             let n = [h.x, h.y, h.z].map(|x| x.round() as i64);
@@ -1095,7 +1108,8 @@ pub fn cell_counts(scene: &CsgScene, slicer: &Slicer, depth: u32) -> CellCounts 
                     index(DVec3::Y) - b,
                     index(DVec3::Z) - b,
                 );
-                prims.push(Prim::Lattice(Lattice::new(a, b, data, *threshold)));
+                let graded = slicer.blend.is_some();
+                prims.push(Prim::Lattice(Lattice::new(a, b, data, *threshold, graded)));
                 grow.push(DVec3::splat(1e-9));
             }
         }
@@ -1118,7 +1132,10 @@ pub fn cell_counts(scene: &CsgScene, slicer: &Slicer, depth: u32) -> CellCounts 
     let known = ops
         .iter()
         .all(|o| !matches!(o, Op::Leaf(p) if *p as usize >= grid_prim as usize));
-    let ops = (leaves <= TREE_LEAVES && known).then_some(ops);
+    // Blending (`--blend`) combines grey values, not memberships: only that the volume is a
+    // function of what each primitive holds is used then.
+    let boolean = slicer.blend.is_none();
+    let ops = (leaves <= TREE_LEAVES && known && boolean).then_some(ops);
     walk(&prims, &grow, ops.as_deref(), grid_prim, depth)
 }
 
