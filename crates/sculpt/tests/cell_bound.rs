@@ -219,6 +219,40 @@ fn turned_datasets() {
     }
 }
 
+/// CSG expressions with a complement (`!`, everything outside: the grid bounds it) over
+/// scenes and a dataset, bound to names.
+#[test]
+fn expressions_with_a_complement() {
+    use csgpix_voxel::sampled::{parse_binding, scene_from_expr};
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../vectors/scenes/");
+    let bind = |s: &str| parse_binding(&s.replace('@', dir)).unwrap();
+    let all = [
+        bind("A=@csg-logo.csg"),
+        bind("B=@cube-minus-cylinder.csg"),
+        bind("H=@phantom.nrrd,threshold=300"),
+    ];
+    for expr in ["!A", "A.!B", "!(A+H)", "H-!B"] {
+        let bindings: Vec<_> = all
+            .iter()
+            .filter(|b| expr.contains(b.name.as_str()))
+            .cloned()
+            .collect();
+        let loaded = scene_from_expr(expr, &bindings).unwrap();
+        let (lo, hi) = loaded.bounds().unwrap();
+        for n in [24, 61] {
+            let grid = Grid::new([n, n + 2, n - 3], lo, hi).unwrap();
+            check(
+                &loaded.scene,
+                loaded.sampled.clone(),
+                grid,
+                Sampling::Centre,
+                expr,
+            )
+            .expect(expr);
+        }
+    }
+}
+
 /// Blended datasets (`--blend`): a voxel's value is a blend of grey values, so a difference
 /// of two datasets is empty where the first's value is not above the second's, inside both.
 #[test]
