@@ -339,15 +339,58 @@ fn no_run_aborts_under_an_address_space_limit() {
 }
 
 /// Every estimate is above the peak it stands for (docs/memory.md's tables, at sizes a test
-/// can afford). Before, render counted the array alone (20 MiB at 1024², peak 109 MiB) and
-/// voxelize one volume where two were held (159 MiB at 512³, peak 232 MiB).
+/// can afford). Before, render counted the array alone (20 MiB at 1024², peak 109 MiB),
+/// voxelize one volume where two were held (159 MiB at 512³, peak 232 MiB), and the octree
+/// stores none of their nodes (sculpt at 256: 35 MiB, peak 97 MiB).
 #[cfg(target_os = "linux")]
 #[test]
 fn estimates_are_above_the_measured_peaks() {
     let dir = tempfile::tempdir().unwrap();
     let o = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
     let (png, nrrd, phantom, zarr) = (o("r.png"), o("v.nrrd"), o("p.nrrd"), o("v.zarr"));
+    let (stl, verilog) = (o("s.stl"), o("verilog"));
+    let sculpt = |res| {
+        vec![
+            "sculpt",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            res,
+            "--tool",
+            "sphere:4",
+            "--path",
+            "vectors/paths/carve.csv",
+            "-o",
+            &stl,
+        ]
+    };
+    let store = |kind| {
+        vec![
+            "voxelize",
+            "vectors/scenes/twelve.csg",
+            "--res",
+            "256",
+            "--store",
+            kind,
+            "-o",
+            &nrrd,
+        ]
+    };
     let runs: Vec<Vec<&str>> = vec![
+        // The octree's nodes, the sculptor's mesh and the path's splits, bounded from the
+        // scene (docs/memory.md, "Octree nodes"): 20 MiB for a peak of 31, 35 for 97 before.
+        sculpt("128"),
+        sculpt("256"),
+        store("pointer"),
+        store("octree"),
+        vec![
+            "export-verilog",
+            "--scene",
+            "vectors/thesis/cube.dl",
+            "--origin",
+            "56,90",
+            "-o",
+            &verilog,
+        ],
         vec![
             "render",
             "vectors/thesis/cube.dl",

@@ -10,7 +10,7 @@ use csgpix_output::Outputs;
 use csgpix_scene::mesh;
 use csgpix_sculpt::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix_sculpt::{self as sculpt, Frame, Latency, Sculptor, Step, Tool};
-use csgpix_voxel::{memory_estimate, Slicer, SlicerOptions, Volume};
+use csgpix_voxel::{Slicer, SlicerOptions, Volume, PROCESS_BYTES};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
@@ -98,6 +98,8 @@ struct Report {
     median_under_1ms: bool,
     /// 99th percentile under 16.7 ms (60 Hz graphics).
     p99_under_16_7ms: bool,
+    /// The run's memory estimate, bytes, checked before the store was built (docs/memory.md).
+    memory_estimate: u64,
     load_seconds: f64,
     initial_mesh_seconds: f64,
     sculpt_seconds: f64,
@@ -124,7 +126,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     let text = csgpix_scene::input::read_text(&a.path)?;
     let path = sculpt::parse_path(&text, &a.path.display().to_string())?;
     let t0 = Instant::now();
-    let (store, frame, dims) = load(&a)?;
+    let (store, frame, dims, memory_estimate) = load(&a, &path)?;
     let load_seconds = t0.elapsed().as_secs_f64();
     let nodes_before = store.node_count();
     let tool = Tool {
@@ -172,6 +174,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         latency,
         median_under_1ms: latency.median_us < 1000.0,
         p99_under_16_7ms: latency.p99_us < 16_700.0,
+        memory_estimate,
         load_seconds,
         initial_mesh_seconds,
         sculpt_seconds,
@@ -216,16 +219,20 @@ fn finite(s: &str) -> crate::error::Parsed<f64> {
     }
 }
 
-/// The store, its frame and the volume's dims, from a `.csg` scene or a `.nrrd` volume.
-fn load(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
+/// What [`load`] gives: the store, its frame, the volume's dims and the run's memory estimate.
+type Loaded = (OptimizedOctree, Frame, [usize; 3], u64);
+
+/// The store, its frame and the volume's dims, from a `.csg` scene or a `.nrrd` volume; the
+/// run along `path` (scene units) estimated first (docs/memory.md).
+fn load(a: &Args, path: &[DVec3]) -> crate::Result<Loaded> {
     let ext = a.input.extension().and_then(|e| e.to_str()).unwrap_or("");
     match ext.to_ascii_lowercase().as_str() {
         "csg" | "scad" if a.threshold.is_some() => {
             let message = "--threshold applies to .nrrd volumes only";
             Err(Error::options("--threshold", message))
         }
-        "csg" | "scad" => load_scene(a),
-        "nrrd" if a.res.is_none() && !a.grid.any() => load_nrrd(a),
+        "csg" | "scad" => load_scene(a, path),
+        "nrrd" if a.res.is_none() && !a.grid.any() => load_nrrd(a, path),
         "nrrd" => Err(Error::options(
             "--res",
             "--res, --voxel, --pad and --bounds apply to .csg scenes only",
@@ -242,7 +249,7 @@ fn load(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
 
 /// A NRRD volume through the general reader (raw or gzip, any sample type, `spacings` or
 /// `space directions`), filled where `--threshold` says.
-fn load_nrrd(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
+fn load_nrrd(a: &Args, path: &[DVec3]) -> crate::Result<Loaded> {
     let p = &a.input;
     let n = csgpix_scene::nrrd::read_nrrd_limited(p, a.mem.samples())?;
     let frame = sculpt::nrrd_frame(&n)
@@ -250,14 +257,52 @@ fn load_nrrd(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
     let dims = n.sizes;
     let voxels = sculpt::nrrd_voxels(&n, a.threshold);
     drop(n);
-    let store = OptimizedOctree::from_volume(&Volume { dims, voxels }, a.mem.bytes())
-        .map_err(lib_errors::sculpt)?;
-    Ok((store, frame, dims))
+    let volume = Volume { dims, voxels };
+    // The volume's own node counts, before the store is built; the read as the reader
+    // counts it (16 bytes a sample), already checked by it.
+    let counts = octree::estimate::volume_counts(&volume).map_err(lib_errors::sculpt)?;
+    let held = volume.voxels.len() as u64 + PROCESS_BYTES;
+    let read = (volume.voxels.len() as u64)
+        .saturating_mul(16)
+        .saturating_add(PROCESS_BYTES);
+    let (_, need) = check(a, &counts, frame, dims, path, (held, read))?;
+    let store = OptimizedOctree::from_volume(&volume, a.mem.bytes()).map_err(lib_errors::sculpt)?;
+    Ok((store, frame, dims, need))
+}
+
+/// Checks the run against `--max-memory`: the store's build beside `held` bytes (the
+/// voxelizer's, or the volume's), the sculpting after it, or what came before (`earlier`:
+/// the volume's read), whichever is largest. Returns what the build holds besides its nodes
+/// (its budget is the limit less that) and the estimate.
+fn check(
+    a: &Args,
+    counts: &octree::estimate::CellCounts,
+    frame: Frame,
+    dims: [usize; 3],
+    path: &[DVec3],
+    (held, earlier): (u64, u64),
+) -> crate::Result<(u64, u64)> {
+    let store = octree::estimate::store_bytes(StoreKind::Octree, dims, counts)?;
+    let centres: Vec<DVec3> = path.iter().map(|&p| frame.to_voxel(p)).collect();
+    let plan = sculpt::estimate::Plan {
+        dims,
+        counts,
+        path: &centres,
+        radius: a.tool,
+    };
+    let after = sculpt::estimate::memory_estimate(&plan).map_err(lib_errors::sculpt)?;
+    let before = held.saturating_add(store.fixed);
+    let need = before
+        .saturating_add(store.nodes)
+        .max(after.saturating_add(PROCESS_BYTES))
+        .max(earlier);
+    a.mem.check(need, "this run", "lower --res")?;
+    Ok((before, need))
 }
 
 /// Voxelizes the scene as `voxelize` does (word model, run route, Blist evaluator),
 /// feeding the optimized octree slice by slice.
-fn load_scene(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
+fn load_scene(a: &Args, path: &[DVec3]) -> crate::Result<Loaded> {
     let name = a.input.display().to_string();
     let options = csgpix_openscad::ReadOptions {
         samples: a.mem.samples(),
@@ -270,19 +315,48 @@ fn load_scene(a: &Args) -> crate::Result<(OptimizedOctree, Frame, [usize; 3])> {
         .grid(Some(a.res.unwrap_or(Resolution::Longest(128))), &loaded)
         .map_err(|e| e.context(&name))?;
     let threads = rayon::current_num_threads();
-    let need = memory_estimate(&grid, scene.primitive_count(), threads)
-        .saturating_add(octree::memory_estimate(StoreKind::Octree, grid.dims)?);
-    let budget = a.mem.bytes();
-    a.mem.check(need, "this run", "lower --res")?;
     let opts = SlicerOptions {
         sampling: a.grid.sampling.sampling(),
         sampled: loaded.sampled,
         ..SlicerOptions::default()
     };
     let slicer = Slicer::new(scene, grid, opts).map_err(|e| Error::from(e).context(name))?;
-    let store = crate::store::octree_from_scene(&slicer, &scene.root, budget - need)
+    // The run route's voxelizer, streaming its slices (`store::octree_from_scene`), the
+    // scene's imports, and the store's nodes bounded from the scene (docs/memory.md).
+    let eval = csgpix_voxel::blist::BlistEval::new(&scene.root);
+    let voxelizer = csgpix_voxel::runs::memory_estimates(&slicer, &eval, threads)[0];
+    let depth = octree::depth_for(grid.dims).map_err(lib_errors::sculpt)?;
+    let counts = csgpix_voxel::cells::cell_counts(scene, &slicer, depth);
+    let held = voxelizer.saturating_add(imports_bytes(&slicer));
+    let (before, need) = check(
+        a,
+        &counts,
+        Frame::of_grid(&grid),
+        grid.dims,
+        path,
+        (held, 0),
+    )?;
+    let budget = a.mem.bytes().saturating_sub(before);
+    let store = crate::store::octree_from_scene(&slicer, &scene.root, budget)
         .map_err(lib_errors::sculpt)?;
-    Ok((store, Frame::of_grid(&grid), grid.dims))
+    Ok((store, Frame::of_grid(&grid), grid.dims, need))
+}
+
+/// Bytes of the scene's imports while they are voxelized: a dataset's samples, a mesh's
+/// vertices and triangles.
+fn imports_bytes(slicer: &Slicer) -> u64 {
+    slicer
+        .sampled
+        .iter()
+        .map(|s| match &s.shape {
+            csgpix_voxel::sampled::Shape::Dataset { data, .. } => {
+                data.nrrd.samples.len() as u64 * 4
+            }
+            csgpix_voxel::sampled::Shape::Mesh(m) => {
+                m.vertices.len() as u64 * 24 + m.triangles.len() as u64 * 12
+            }
+        })
+        .sum()
 }
 
 /// One row per step: position, contact, voxels and cells changed, ΔX, F, microseconds.

@@ -850,6 +850,19 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     let runs_nrrd = (matches!(route, Route::Runs { .. }) && a.format() == FormatArg::Nrrd)
         .then(|| csgpix_voxel::runs::memory_estimates(&slicer, eval.as_ref(), threads));
     let stream = streams(&a, route, runs_nrrd);
+    // `--store`: its nodes bounded from the scene (docs/memory.md).
+    let store_bytes = match a.store {
+        Some(st) => {
+            let depth = octree::depth_for(grid.dims).map_err(lib_errors::sculpt)?;
+            let counts = csgpix_voxel::cells::cell_counts(scene, &slicer, depth);
+            Some(octree::estimate::store_bytes(
+                st.kind(),
+                grid.dims,
+                &counts,
+            )?)
+        }
+        None => None,
+    };
     let need = estimate(
         &a,
         &slicer,
@@ -857,7 +870,8 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         eval.as_ref(),
         threads,
         (stream, runs_nrrd),
-    )?;
+    )?
+    .saturating_add(store_bytes.map_or(0, |b| b.nodes));
     let fix = match a.format() {
         FormatArg::Nrrd => "lower --res",
         FormatArg::Zarr => "lower --res or --chunk",
@@ -951,8 +965,13 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         None => pool
             .install(|| voxelize(&slicer, route, set, eval.as_ref(), &tick))
             .map(|(v, w)| (v, w, None))?,
-        Some(st) => pool
-            .install(|| with_store(&slicer, route, set, eval.as_ref(), &tick, st.kind(), budget))?,
+        Some(st) => {
+            // The nodes are charged against what the estimate kept for them.
+            let budget = budget.saturating_add(store_bytes.map_or(0, |b| b.nodes));
+            pool.install(|| {
+                with_store(&slicer, route, set, eval.as_ref(), &tick, st.kind(), budget)
+            })?
+        }
     };
     bar.finish_and_clear();
     let wall = t0.elapsed().as_secs_f64();

@@ -32,6 +32,7 @@
 //! ```
 
 pub mod error;
+pub mod estimate;
 pub mod octree;
 pub mod sculpt;
 

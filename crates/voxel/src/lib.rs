@@ -90,6 +90,7 @@
 
 pub mod blend;
 pub mod blist;
+pub mod cells;
 pub mod dataset_runs;
 pub mod drive;
 pub mod error;

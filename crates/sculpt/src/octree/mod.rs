@@ -15,6 +15,7 @@
 pub mod build;
 pub mod cell;
 pub mod dense;
+pub mod estimate;
 pub mod hashed;
 pub mod key;
 pub mod mc;
@@ -205,7 +206,7 @@ pub fn depth_for(dims: [usize; 3]) -> Result<u32> {
 
 /// Bytes a build needs before its nodes: the slice and cell layers, the pyramid, and for
 /// the dense grid its cells. The octrees' nodes are counted as they are made, against the
-/// budget given to [`builder`].
+/// budget given to [`builder`]; [`estimate::store_bytes`] bounds them before the build.
 pub fn memory_estimate(kind: StoreKind, dims: [usize; 3]) -> Result<u64> {
     let depth = depth_for(dims)?;
     let side = 1u64 << depth;
