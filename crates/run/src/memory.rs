@@ -154,7 +154,7 @@ pub fn default_mib() -> u64 {
 }
 
 /// The most a run may hold whatever the machine has free: the tightest of the address-space
-/// limit, the data limit (each less the process's own [`PROCESS_MIB`] and [`THREAD_MIB`] a
+/// limit, the data limit (each less the process's own `PROCESS_MIB` and `THREAD_MIB` a
 /// thread) and the room left in the process's cgroup; and which one it is.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Cap {
