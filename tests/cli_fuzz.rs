@@ -570,13 +570,7 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
                 &["2", "x"],
             );
             flag(&mut args, rng, 20, "--json");
-            return Case {
-                args,
-                inputs,
-                target: Target::New,
-                out_ext: "none".into(),
-                signal: None,
-            };
+            return no_output(args, inputs);
         }
         6 => {
             args.push(a("requirements"));
@@ -587,13 +581,7 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
             opt(&mut args, rng, 20, "--word", WORD, BAD_WORD);
             opt(&mut args, rng, 20, "--view", &["top", "iso"], &["q"]);
             flag(&mut args, rng, 20, "--json");
-            return Case {
-                args,
-                inputs,
-                target: Target::New,
-                out_ext: "none".into(),
-                signal: None,
-            };
+            return no_output(args, inputs);
         }
         7 => {
             args.push(a("throughput"));
@@ -628,13 +616,7 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
                 &["0", "999999"],
             );
             flag(&mut args, rng, 20, "--json");
-            return Case {
-                args,
-                inputs,
-                target: Target::New,
-                out_ext: "none".into(),
-                signal: None,
-            };
+            return no_output(args, inputs);
         }
         _ => {
             args.push(a("verify-select"));
@@ -650,16 +632,21 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
                 &["q"],
             );
             flag(&mut args, rng, 20, "--json");
-            return Case {
-                args,
-                inputs,
-                target: Target::New,
-                out_ext: "none".into(),
-                signal: None,
-            };
+            return no_output(args, inputs);
         }
     };
     finish(rng, args, inputs, out_ext.to_string())
+}
+
+/// A case of a command that writes no file (its report goes to standard output).
+fn no_output(args: Vec<Vec<u8>>, inputs: Vec<Input>) -> Case {
+    Case {
+        args,
+        inputs,
+        target: Target::New,
+        out_ext: "none".into(),
+        signal: None,
+    }
 }
 
 /// The output and its target, a mutated argument now and then, a signal now and then.
