@@ -15,7 +15,7 @@ use std::collections::HashMap;
 
 use glam::{DVec2, DVec3};
 
-use crate::extrude::{signed_area, Tri3};
+use crate::linalg::{signed_area, Tri3};
 
 /// One outline of a shape: its points and how many other outlines it lies inside (even: an
 /// outer outline, odd: a hole).

@@ -20,6 +20,7 @@ use glam::{DVec2, DVec3};
 use csgpix_scene::{Error, Result};
 
 use crate::cap;
+pub use crate::linalg::{signed_area, Tri3};
 
 /// A 2D shape: closed outlines, filled by the even-odd rule (OpenSCAD's `polygon` with
 /// `paths`: an outline inside another is a hole).
@@ -41,9 +42,6 @@ pub enum Region {
     /// The first minus the others.
     Difference(Vec<Region>),
 }
-
-/// A triangle in scene units.
-pub type Tri3 = [DVec3; 3];
 
 impl Poly2 {
     /// `square(size, center)`: counter-clockwise from the corner nearest −∞.
@@ -130,14 +128,6 @@ impl Poly2 {
     pub fn points(&self) -> impl Iterator<Item = DVec2> + '_ {
         self.paths.iter().flatten().copied()
     }
-}
-
-/// The signed area of an outline (positive counter-clockwise).
-pub fn signed_area(p: &[DVec2]) -> f64 {
-    (0..p.len())
-        .map(|i| p[i].perp_dot(p[(i + 1) % p.len()]))
-        .sum::<f64>()
-        / 2.0
 }
 
 /// `linear_extrude`'s parameters.
@@ -796,6 +786,20 @@ pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// Every shape of a 2D tree through `f`.
+pub(crate) fn map_region(r: Region, f: &dyn Fn(Poly2) -> Poly2) -> Region {
+    match r {
+        Region::Poly(p) => Region::Poly(f(p)),
+        Region::Union(c) => Region::Union(c.into_iter().map(|c| map_region(c, f)).collect()),
+        Region::Intersection(c) => {
+            Region::Intersection(c.into_iter().map(|c| map_region(c, f)).collect())
+        }
+        Region::Difference(c) => {
+            Region::Difference(c.into_iter().map(|c| map_region(c, f)).collect())
+        }
+    }
 }
 
 #[cfg(test)]

@@ -3,8 +3,10 @@
 
 use glam::DVec2;
 
-use crate::extrude::{default_slices, offset, region_points, Linear, Offset, Poly2, Region};
-use crate::{consts_::*, lex::*, node::*, primitives::*, reader::*, transform::*};
+use crate::extrude::{
+    default_slices, map_region, offset, region_points, Linear, Offset, Poly2, Region,
+};
+use crate::{consts_::*, frame::*, lex::*, linalg::*, node::*, primitives::*};
 
 /// A finished `hull()` of 2D shapes: the convex hull of their vertices.
 pub(crate) fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {
@@ -37,7 +39,7 @@ pub(crate) fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     let region = region_of(Op::Union, frame.flats);
     let r = offset(&region, o, &sin_cos_degrees).map_err(|problem| Fail { pos, problem })?;
     let m = plane_part(frame.placement.as_ref());
-    let r = crate::project::map_region(r, &|p| p.transformed(m));
+    let r = map_region(r, &|p| p.transformed(m));
     Ok(Some(Item::Flat(r, at)))
 }
 
@@ -77,17 +79,6 @@ pub(crate) fn linear_slices(a: LinearArgs, pts: &[DVec2]) -> Linear {
         }
     };
     l
-}
-
-/// The plane part (x, y) of a transform, for 2D shapes.
-pub(crate) fn plane_part(m: Option<&Mat4>) -> [[f64; 3]; 2] {
-    let m = m.unwrap_or(&IDENTITY);
-    [[m[0][0], m[0][1], m[0][3]], [m[1][0], m[1][1], m[1][3]]]
-}
-
-/// `sin_degrees` and `cos_degrees` of an angle.
-pub(crate) fn sin_cos_degrees(a: f64) -> (f64, f64) {
-    (sin_degrees(a), cos_degrees(a))
 }
 
 /// The parameters of an extrusion or offset, read when the statement opens.
@@ -135,7 +126,7 @@ pub(crate) fn flat_spec(head: &Head) -> Result<Spec, Fail> {
             cut: p.boolean("cut")?,
         },
         NodeKind::Resize => {
-            let (newsize, auto) = crate::project::resize_args(p)?;
+            let (newsize, auto) = resize_args(p)?;
             Spec::Resize { newsize, auto }
         }
         _ => Spec::None,
@@ -273,4 +264,49 @@ pub(crate) fn polygon(p: &Params, budget: usize) -> Result<Poly2, Fail> {
     Ok(Poly2 {
         paths: paths.into_iter().filter(|p| p.len() >= 3).collect(),
     })
+}
+
+/// `resize(newsize, auto)`'s arguments: up to three sizes (missing ones 0), `auto` a boolean or
+/// a vector of them (numbers count as booleans, as the CSG export writes `[0, 1, 0]`).
+pub(crate) fn resize_args(p: &Params) -> Result<([f64; 3], [bool; 3]), Fail> {
+    let mut newsize = [0.0; 3];
+    if let Some(v) = p.get("newsize") {
+        let items = v.list("`newsize`")?;
+        if items.len() > 3 {
+            return fail(v.pos, "`newsize` must be [x, y, z]");
+        }
+        for (slot, item) in newsize.iter_mut().zip(items) {
+            let s = finite(
+                item.number("an entry of `newsize`")?,
+                item.pos,
+                "an entry of `newsize`",
+            )?;
+            if s < 0.0 {
+                return fail(
+                    item.pos,
+                    "a negative size: OpenSCAD 2021.01 mirrors a rendered CSG result but ignores the entry for a primitive or a 2D shape, so csgpix refuses it",
+                );
+            }
+            *slot = s;
+        }
+    }
+    let truth = |v: &crate::value::Value| -> Result<bool, Fail> {
+        match &v.kind {
+            crate::value::Kind::Bool(b) => Ok(*b),
+            crate::value::Kind::Undef => Ok(false),
+            _ => Ok(v.number("an entry of `auto`")? != 0.0),
+        }
+    };
+    let mut auto = [false; 3];
+    if let Some(v) = p.get("auto") {
+        match &v.kind {
+            crate::value::Kind::List(items) => {
+                for (slot, item) in auto.iter_mut().zip(items) {
+                    *slot = truth(item)?;
+                }
+            }
+            _ => auto = [truth(v)?; 3],
+        }
+    }
+    Ok((newsize, auto))
 }

@@ -1,6 +1,6 @@
 //! `import()` of meshes and datasets.
 
-use crate::{lex::*, node::*, reader::*, value::*};
+use crate::{frame::*, lex::*, node::*, value::*};
 use csgpix_scene::solid::Import;
 
 /// have one. `scale` other than 1 is refused (OpenSCAD applies it to 2D files only).

@@ -2,9 +2,9 @@
 
 use csgpix_scene::Error;
 use std::collections::HashMap;
-use std::f64::consts::{FRAC_1_SQRT_2, PI};
+use std::f64::consts::PI;
 
-use crate::{consts_::*, lex::*, node::*, reader::*, transform::*, tree::*, value::*};
+use crate::{consts_::*, frame::*, lex::*, linalg::*, node::*, value::*};
 use csgpix_scene::solid::ConvexSolid;
 
 // ---------------------------------------------------------------------------------------------
@@ -386,14 +386,6 @@ fn enclosed_volume(points: &[Vec3], faces: &[Vec<usize>]) -> f64 {
     v
 }
 
-fn cross(a: Vec3, b: Vec3) -> Vec3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
 /// Every edge shared by an even number of faces, whatever their winding: the surface is
 /// closed for the parity of crossings.
 fn check_even_edges(faces: &[Vec<usize>]) -> csgpix_scene::Result<()> {
@@ -590,90 +582,5 @@ pub(crate) fn centroid(vertices: &[Vec3], face: &[usize]) -> Vec3 {
     c.map(|v| v / face.len() as f64)
 }
 
-pub(crate) fn sub(a: Vec3, b: Vec3) -> Vec3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-pub(crate) fn dot(a: Vec3, b: Vec3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-pub(crate) fn norm(a: Vec3) -> f64 {
-    dot(a, a).sqrt()
-}
-
 // ---------------------------------------------------------------------------------------------
 // Trigonometry in degrees, as OpenSCAD's `src/utils/degree_trig.cc`
-
-/// `sqrt(3) / 2`, OpenSCAD's `M_SQRT3_4`.
-pub(crate) const SQRT3_4: f64 = 0.866_025_403_784_438_6;
-
-/// Reduces to `[0, 360)`.
-pub(crate) fn reduce_degrees(x: f64) -> f64 {
-    if (0.0..360.0).contains(&x) {
-        x
-    } else {
-        x - 360.0 * (x / 360.0).floor()
-    }
-}
-
-/// `sin_degrees`: exact at multiples of 30° and 45°.
-pub(crate) fn sin_degrees(x: f64) -> f64 {
-    let mut x = reduce_degrees(x);
-    let oppose = x >= 180.0;
-    if oppose {
-        x -= 180.0;
-    }
-    if x > 90.0 {
-        x = 180.0 - x;
-    }
-    let s = if x < 45.0 {
-        if x == 30.0 {
-            0.5
-        } else {
-            x.to_radians().sin()
-        }
-    } else if x == 45.0 {
-        FRAC_1_SQRT_2
-    } else if x == 60.0 {
-        SQRT3_4
-    } else {
-        (90.0 - x).to_radians().cos()
-    };
-    if oppose {
-        -s
-    } else {
-        s
-    }
-}
-
-/// `cos_degrees`: exact at multiples of 30° and 45°.
-pub(crate) fn cos_degrees(x: f64) -> f64 {
-    let mut x = reduce_degrees(x);
-    let mut oppose = x >= 180.0;
-    if oppose {
-        x -= 180.0;
-    }
-    if x > 90.0 {
-        x = 180.0 - x;
-        oppose = !oppose;
-    }
-    let c = if x > 45.0 {
-        if x == 60.0 {
-            0.5
-        } else {
-            (90.0 - x).to_radians().sin()
-        }
-    } else if x == 45.0 {
-        FRAC_1_SQRT_2
-    } else if x == 30.0 {
-        SQRT3_4
-    } else {
-        x.to_radians().cos()
-    };
-    if oppose {
-        -c
-    } else {
-        c
-    }
-}

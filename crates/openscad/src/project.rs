@@ -24,10 +24,10 @@ use csgpix_scene::Error;
 use glam::{DVec2, DVec3};
 
 use crate::cap::key;
-use crate::extrude::{flatten, Poly2, Region};
+use crate::extrude::{flatten, map_region, Poly2, Region};
 use crate::geom::mesh_of;
 use crate::hull::hull2;
-use crate::{flat::*, lex::*, node::*, primitives::*, reader::*, transform::*, tree::*};
+use crate::{frame::*, lex::*, linalg::*, node::*, primitives::*, tree::*};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, Import, IMPORTED};
 
 /// A leaf of the tree being read.
@@ -354,65 +354,6 @@ pub fn resize_scale(
     Some(scale)
 }
 
-/// `resize(newsize, auto)`'s arguments: up to three sizes (missing ones 0), `auto` a boolean or
-/// a vector of them (numbers count as booleans, as the CSG export writes `[0, 1, 0]`).
-pub(crate) fn resize_args(p: &Params) -> Result<([f64; 3], [bool; 3]), Fail> {
-    let mut newsize = [0.0; 3];
-    if let Some(v) = p.get("newsize") {
-        let items = v.list("`newsize`")?;
-        if items.len() > 3 {
-            return fail(v.pos, "`newsize` must be [x, y, z]");
-        }
-        for (slot, item) in newsize.iter_mut().zip(items) {
-            let s = finite(
-                item.number("an entry of `newsize`")?,
-                item.pos,
-                "an entry of `newsize`",
-            )?;
-            if s < 0.0 {
-                return fail(
-                    item.pos,
-                    "a negative size: OpenSCAD 2021.01 mirrors a rendered CSG result but ignores the entry for a primitive or a 2D shape, so csgpix refuses it",
-                );
-            }
-            *slot = s;
-        }
-    }
-    let truth = |v: &crate::value::Value| -> Result<bool, Fail> {
-        match &v.kind {
-            crate::value::Kind::Bool(b) => Ok(*b),
-            crate::value::Kind::Undef => Ok(false),
-            _ => Ok(v.number("an entry of `auto`")? != 0.0),
-        }
-    };
-    let mut auto = [false; 3];
-    if let Some(v) = p.get("auto") {
-        match &v.kind {
-            crate::value::Kind::List(items) => {
-                for (slot, item) in auto.iter_mut().zip(items) {
-                    *slot = truth(item)?;
-                }
-            }
-            _ => auto = [truth(v)?; 3],
-        }
-    }
-    Ok((newsize, auto))
-}
-
-/// Every shape of a 2D tree through `f`.
-pub(crate) fn map_region(r: Region, f: &dyn Fn(Poly2) -> Poly2) -> Region {
-    match r {
-        Region::Poly(p) => Region::Poly(f(p)),
-        Region::Union(c) => Region::Union(c.into_iter().map(|c| map_region(c, f)).collect()),
-        Region::Intersection(c) => {
-            Region::Intersection(c.into_iter().map(|c| map_region(c, f)).collect())
-        }
-        Region::Difference(c) => {
-            Region::Difference(c.into_iter().map(|c| map_region(c, f)).collect())
-        }
-    }
-}
-
 /// The leaves of a tree.
 pub(crate) fn leaves(n: &CsgNode) -> Vec<usize> {
     let mut out = vec![];
@@ -430,124 +371,121 @@ pub(crate) fn leaves(n: &CsgNode) -> Vec<usize> {
     out
 }
 
-impl Reader<'_> {
-    /// A finished `projection(cut)`: the section or shadow of its children, whose leaves
-    /// leave the scene, placed by the transform above it.
-    pub(crate) fn projection(&mut self, frame: Frame) -> Result<Option<Item>, Fail> {
-        let pos = frame.pos;
-        if !frame.flats.is_empty() {
-            return fail(pos, "`projection` takes 3D children, found a 2D shape");
-        }
-        let cut = match frame.spec {
-            Spec::Projection { cut } => cut,
-            _ => return fail(pos, "internal: a projection without its parameters"),
-        };
-        let node = combine(Op::Union, frame.children);
-        let region = if cut {
-            section(&node, &self.solids, &self.imports)
-        } else {
-            shadow(&node, &self.solids, &self.imports)
-        }
-        .map_err(|problem| Fail { pos, problem })?;
-        for i in leaves(&node) {
-            if i >= IMPORTED {
-                self.consumed_imports.push(i - IMPORTED);
-            } else {
-                self.consumed_solids.push(i);
-            }
-        }
-        let m = plane_part(frame.placement.as_ref());
-        let region = map_region(region, &|p| p.transformed(m));
-        Ok(Some(Item::Flat(region, pos)))
+/// A finished `projection(cut)`: the section or shadow of its children, placed by the
+/// transform above it; and the children's tree, whose leaves leave the scene.
+pub(crate) fn projection(
+    frame: Frame,
+    solids: &[ConvexSolid],
+    imports: &[Import],
+) -> Result<(Item, CsgNode), Fail> {
+    let pos = frame.pos;
+    if !frame.flats.is_empty() {
+        return fail(pos, "`projection` takes 3D children, found a 2D shape");
     }
+    let cut = match frame.spec {
+        Spec::Projection { cut } => cut,
+        _ => return fail(pos, "internal: a projection without its parameters"),
+    };
+    let node = combine(Op::Union, frame.children);
+    let region = if cut {
+        section(&node, solids, imports)
+    } else {
+        shadow(&node, solids, imports)
+    }
+    .map_err(|problem| Fail { pos, problem })?;
+    let m = plane_part(frame.placement.as_ref());
+    let region = map_region(region, &|p| p.transformed(m));
+    Ok((Item::Flat(region, pos), node))
+}
 
-    /// A finished `resize(newsize, auto)`: its children scaled about the origin from their
-    /// exact bounding box, then placed by the transform above it.
-    pub(crate) fn resize(&mut self, frame: Frame) -> Result<Option<Item>, Fail> {
-        let pos = frame.pos;
-        let Spec::Resize { newsize, auto } = frame.spec else {
-            return fail(pos, "internal: a resize without its parameters");
-        };
-        if !frame.flats.is_empty() {
-            let at = frame.first_flat.unwrap_or(pos);
-            let region = crate::flat::region_of(Op::Union, frame.flats);
-            let s = match bbox2(&region) {
-                Some((lo, hi)) => {
-                    let size = hi - lo;
-                    resize_scale(newsize, auto, [size.x, size.y, 0.0], 2).unwrap_or([1.0; 3])
-                }
-                None => [1.0; 3],
-            };
-            let m = plane_part(frame.placement.as_ref());
-            let region = map_region(region, &|p| {
-                p.transformed([[s[0], 0.0, 0.0], [0.0, s[1], 0.0]])
-                    .transformed(m)
-            });
-            return Ok(Some(Item::Flat(region, at)));
-        }
-        let node = combine(Op::Union, frame.children);
-        let bbox =
-            bbox3(&node, &self.solids, &self.imports).map_err(|problem| Fail { pos, problem })?;
-        let s = match bbox {
+/// A finished `resize(newsize, auto)`: its children scaled about the origin from their
+/// exact bounding box, then placed by the transform above it. The solids and imports below
+/// it are moved in place.
+pub(crate) fn resize(
+    frame: Frame,
+    solids: &mut [ConvexSolid],
+    imports: &mut [Import],
+) -> Result<Item, Fail> {
+    let pos = frame.pos;
+    let Spec::Resize { newsize, auto } = frame.spec else {
+        return fail(pos, "internal: a resize without its parameters");
+    };
+    if !frame.flats.is_empty() {
+        let at = frame.first_flat.unwrap_or(pos);
+        let region = crate::flat::region_of(Op::Union, frame.flats);
+        let s = match bbox2(&region) {
             Some((lo, hi)) => {
-                resize_scale(newsize, auto, (hi - lo).to_array(), 3).unwrap_or([1.0; 3])
+                let size = hi - lo;
+                resize_scale(newsize, auto, [size.x, size.y, 0.0], 2).unwrap_or([1.0; 3])
             }
             None => [1.0; 3],
         };
-        let mut m = [
-            [s[0], 0.0, 0.0, 0.0],
-            [0.0, s[1], 0.0, 0.0],
-            [0.0, 0.0, s[2], 0.0],
-            [0.0, 0.0, 0.0, 1.0],
-        ];
-        if let Some(outer) = &frame.placement {
-            m = mat_mul(outer, &m);
+        let m = plane_part(frame.placement.as_ref());
+        let region = map_region(region, &|p| {
+            p.transformed([[s[0], 0.0, 0.0], [0.0, s[1], 0.0]])
+                .transformed(m)
+        });
+        return Ok(Item::Flat(region, at));
+    }
+    let node = combine(Op::Union, frame.children);
+    let bbox = bbox3(&node, solids, imports).map_err(|problem| Fail { pos, problem })?;
+    let s = match bbox {
+        Some((lo, hi)) => resize_scale(newsize, auto, (hi - lo).to_array(), 3).unwrap_or([1.0; 3]),
+        None => [1.0; 3],
+    };
+    let mut m = [
+        [s[0], 0.0, 0.0, 0.0],
+        [0.0, s[1], 0.0, 0.0],
+        [0.0, 0.0, s[2], 0.0],
+        [0.0, 0.0, 0.0, 1.0],
+    ];
+    if let Some(outer) = &frame.placement {
+        m = mat_mul(outer, &m);
+    }
+    let flip = det3(&m) < 0.0;
+    for i in leaves(&node) {
+        if i < IMPORTED {
+            let solid = &mut solids[i];
+            for v in &mut solid.vertices {
+                *v = transform_point(&m, *v);
+            }
+            if flip {
+                solid.faces.iter_mut().for_each(|f| f.reverse());
+            }
+            if solid.vertices.iter().flatten().any(|&c| too_large(c)) {
+                return fail(
+                    pos,
+                    "a coordinate exceeds the coordinate limit after resize",
+                );
+            }
+            continue;
         }
-        let flip = det3(&m) < 0.0;
-        for i in leaves(&node) {
-            if i < IMPORTED {
-                let solid = &mut self.solids[i];
-                for v in &mut solid.vertices {
-                    *v = transform_point(&m, *v);
+        let import = &mut imports[i - IMPORTED];
+        match &mut import.mesh {
+            Some(mesh) => {
+                let tris = std::sync::Arc::make_mut(mesh);
+                for t in tris.iter_mut() {
+                    *t = t.map(|v| transform_point(&m, v));
+                    if flip {
+                        t.swap(1, 2);
+                    }
                 }
-                if flip {
-                    solid.faces.iter_mut().for_each(|f| f.reverse());
-                }
-                if solid.vertices.iter().flatten().any(|&c| too_large(c)) {
+                if tris.iter().flatten().flatten().any(|&c| too_large(c)) {
                     return fail(
                         pos,
                         "a coordinate exceeds the coordinate limit after resize",
                     );
                 }
-                continue;
             }
-            let import = &mut self.imports[i - IMPORTED];
-            match &mut import.mesh {
-                Some(mesh) => {
-                    let tris = std::sync::Arc::make_mut(mesh);
-                    for t in tris.iter_mut() {
-                        *t = t.map(|v| transform_point(&m, v));
-                        if flip {
-                            t.swap(1, 2);
-                        }
-                    }
-                    if tris.iter().flatten().flatten().any(|&c| too_large(c)) {
-                        return fail(
-                            pos,
-                            "a coordinate exceeds the coordinate limit after resize",
-                        );
-                    }
-                }
-                None => {
-                    import.matrix = Some(match &import.matrix {
-                        Some(inner) => mat_mul(&m, inner),
-                        None => m,
-                    })
-                }
+            None => {
+                import.matrix = Some(match &import.matrix {
+                    Some(inner) => mat_mul(&m, inner),
+                    None => m,
+                })
             }
         }
-        Ok(Some(Item::Solid(node)))
     }
+    Ok(Item::Solid(node))
 }
 
 #[cfg(test)]

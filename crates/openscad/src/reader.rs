@@ -3,58 +3,29 @@
 use glam::DVec3;
 
 use crate::extrude::{
-    convex_prism, flatten, linear_mesh, rotate_mesh, Linear, Offset, Poly2, Region,
+    convex_prism, flatten, linear_mesh, map_region, rotate_mesh, Linear, Poly2, Region,
 };
 use crate::geom::{
     convex_solid, leaf_mesh, mesh_of, minkowski2, minkowski3, pieces, pieces2, Piece, Piece2,
 };
 use crate::hull::hull3;
 use crate::{
-    consts_::*, flat::*, import::*, lex::*, node::*, primitives::*, transform::*, tree::*, value::*,
+    consts_::*,
+    flat::*,
+    frame::*,
+    import::*,
+    lex::*,
+    linalg::*,
+    node::*,
+    primitives::*,
+    project::{projection, resize},
+    transform::*,
+    tree::*,
+    value::*,
 };
 use crate::{Fallback, ReadOptions};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
 use csgpix_scene::Error;
-
-/// What the solids below a node inherit.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct Ctx {
-    /// `None` is the identity.
-    pub(crate) matrix: Option<Mat4>,
-    pub(crate) colour: Option<[f64; 4]>,
-    pub(crate) skip: bool,
-}
-
-/// How an open operation's children end.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Closer {
-    /// `{ … }`, opened at this position.
-    Brace(Pos),
-    /// A single child statement: `multmatrix(…) cube(…);`
-    Single,
-}
-
-/// An operation whose children are being read.
-pub(crate) struct Frame {
-    pub(crate) kind: NodeKind,
-    pub(crate) closer: Closer,
-    pub(crate) ctx: Ctx,
-    pub(crate) children: Vec<CsgNode>,
-    /// 2D children (shapes in the plane of the nearest extrusion), and where the first
-    /// 2D shape among them stands.
-    pub(crate) flats: Vec<Region>,
-    pub(crate) first_flat: Option<Pos>,
-    /// 2D or 3D: as OpenSCAD's `applyToChildren`, the dimension of the first child that is
-    /// not empty (extrusions and offsets are 2D from the start); children of the other
-    /// dimension are ignored with OpenSCAD's warning.
-    pub(crate) dim: Option<Dim>,
-    /// Where the node stands, for messages.
-    pub(crate) pos: Pos,
-    /// An extrusion's or offset's parameters, read when it opened.
-    pub(crate) spec: Spec,
-    /// The transform above an extrusion (its children start from the identity).
-    pub(crate) placement: Option<Mat4>,
-}
 
 /// An `import` of a 2D file csgpix does not read itself (`.dxf`; `.svg` is read natively,
 /// module [`crate::svg`]).
@@ -64,40 +35,6 @@ fn flat_import(head: &Head) -> bool {
             Kind::Str(f) => f.to_ascii_lowercase().ends_with(".dxf"),
             _ => false,
         })
-}
-
-/// The dimension of an operation's children.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Dim {
-    /// Shapes in the plane.
-    Flat,
-    /// Solids.
-    Solid,
-}
-
-/// What a finished statement gives its parent: a solid's tree or a 2D region.
-pub(crate) enum Item {
-    Solid(CsgNode),
-    Flat(Region, Pos),
-}
-
-/// The parameters of the nodes that act on 2D children.
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Spec {
-    None,
-    Linear(LinearArgs),
-    Rotate { angle: f64, res: (f64, f64, f64) },
-    Offset(Offset),
-    Projection { cut: bool },
-    Resize { newsize: [f64; 3], auto: [bool; 3] },
-}
-
-/// `linear_extrude` as read: the slices may be left to OpenSCAD's rule.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct LinearArgs {
-    pub(crate) linear: Linear,
-    pub(crate) slices: Option<usize>,
-    pub(crate) res: (f64, f64, f64),
 }
 
 /// What comes next at a statement position.
@@ -400,8 +337,12 @@ impl<'a> Reader<'a> {
             NodeKind::Minkowski if frame.flats.is_empty() => self.minkowski3(frame).map(Some),
             NodeKind::Minkowski => self.minkowski2(frame),
             NodeKind::Offset => offset_flat(frame),
-            NodeKind::Projection => self.projection(frame),
-            NodeKind::Resize => self.resize(frame),
+            NodeKind::Projection => {
+                let (item, below) = projection(frame, &self.solids, &self.imports)?;
+                self.consume(&below);
+                Ok(Some(item))
+            }
+            NodeKind::Resize => resize(frame, &mut self.solids, &mut self.imports).map(Some),
             _ if frame.dim == Some(Dim::Flat) => {
                 Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), flat_at)))
             }
@@ -468,7 +409,7 @@ impl<'a> Reader<'a> {
             problem: e.context("`import` (--fallback openscad)"),
         })?;
         let m = plane_part(ctx.matrix.as_ref());
-        let region = crate::project::map_region(region, &|p| p.transformed(m));
+        let region = map_region(region, &|p| p.transformed(m));
         let msg = "`import` of a 2D file outlined by openscad (--fallback openscad)".to_string();
         self.warnings.push((head.pos, msg));
         Ok(Some(Item::Flat(region, head.pos)))

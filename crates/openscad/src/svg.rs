@@ -25,7 +25,7 @@ use std::path::Path;
 use glam::DVec2;
 
 use crate::extrude::Poly2;
-use crate::primitives::{cos_degrees, sin_degrees};
+use crate::linalg::{cos_degrees, sin_degrees};
 
 /// An affine map `[a, b, c, d, e, f]`: x' = a·x + c·y + e, y' = b·x + d·y + f.
 type Affine = [f64; 6];

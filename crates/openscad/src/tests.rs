@@ -1,7 +1,7 @@
 //! Unit tests of the reader.
 
 use crate::*;
-use crate::{consts_::*, primitives::*, tree::*};
+use crate::{consts_::*, linalg::*, primitives::*};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene};
 use proptest::prelude::*;
 

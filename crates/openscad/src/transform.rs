@@ -1,15 +1,6 @@
 //! `multmatrix` and `color`: transforms and colours the solids below a node inherit.
 
-use crate::{lex::*, node::*, tree::*, value::*};
-
-pub(crate) type Mat4 = [[f64; 4]; 4];
-
-pub(crate) const IDENTITY: Mat4 = [
-    [1.0, 0.0, 0.0, 0.0],
-    [0.0, 1.0, 0.0, 0.0],
-    [0.0, 0.0, 1.0, 0.0],
-    [0.0, 0.0, 0.0, 1.0],
-];
+use crate::{lex::*, linalg::*, node::*, value::*};
 
 /// `multmatrix(m)`: 3 or 4 rows of 4 numbers, the last row `[0, 0, 0, w]` with the matrix
 /// divided by `w` as OpenSCAD does; a singular linear part is refused.
@@ -65,27 +56,6 @@ pub(crate) fn normalise(mut m: Mat4, pos: Pos) -> Result<Mat4, Fail> {
         );
     }
     Ok(m)
-}
-
-pub(crate) fn mat_mul(a: &Mat4, b: &Mat4) -> Mat4 {
-    let mut out = [[0.0; 4]; 4];
-    for (i, row) in out.iter_mut().enumerate() {
-        for (j, cell) in row.iter_mut().enumerate() {
-            *cell = (0..4).map(|k| a[i][k] * b[k][j]).sum();
-        }
-    }
-    out
-}
-
-pub(crate) fn det3(m: &Mat4) -> f64 {
-    m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
-}
-
-pub(crate) fn transform_point(m: &Mat4, p: Vec3) -> Vec3 {
-    let row = |r: &[f64; 4]| r[0] * p[0] + r[1] * p[1] + r[2] * p[2] + r[3];
-    [row(&m[0]), row(&m[1]), row(&m[2])]
 }
 
 /// `color(c, alpha)`: `c` is `[r, g, b]` or `[r, g, b, a]` (alpha 1 if missing, as in

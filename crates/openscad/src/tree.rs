@@ -63,5 +63,3 @@ pub(crate) fn one_or(mut parts: Vec<CsgNode>, many: fn(Vec<CsgNode>) -> CsgNode)
 
 // ---------------------------------------------------------------------------------------------
 // Transforms and colours
-
-pub(crate) type Vec3 = [f64; 3];

@@ -2,7 +2,7 @@
 
 use std::collections::VecDeque;
 
-use crate::{consts_::*, lex::*, tree::*};
+use crate::{consts_::*, lex::*, linalg::*};
 
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum Kind {
