@@ -8,7 +8,6 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 
 use csgpix_run::array_args::parse_word;
-use csgpix_run::memory::imports_estimate;
 use csgpix_run::memory::Limit;
 use csgpix_run::voxelize::{grid_spec, parse_blend, Resolution, Voxelization};
 use csgpix_voxel::sampled::{load_scene_with, scene_from_expr_with, Binding, Loaded};
@@ -296,19 +295,6 @@ impl RunOptions {
     pub fn slicer(&self, scene: &Scene, grid: Grid) -> PyResult<Slicer> {
         self.0.slicer(&scene.loaded, grid).map_err(voxel)
     }
-
-    /// Slabs `z` of the scene: the slices' bytes, x fastest, then y, then k.
-    pub fn run(
-        &self,
-        py: Python<'_>,
-        scene: &Scene,
-        slicer: &Slicer,
-        z: std::ops::Range<usize>,
-    ) -> PyResult<Vec<u8>> {
-        let eval = self.evaluator(scene);
-        py.detach(|| self.0.slabs(slicer, eval.as_ref(), z))
-            .map_err(voxel)
-    }
 }
 
 /// A depth word `FRACTION/INTEGER/OVERFLOW`, e.g. `10/10/11` (§2.3.1), as `--word`.
@@ -352,18 +338,19 @@ pub fn voxelize<'py>(
     let grid = GridOptions::new(res, voxel, pad, bounds)?.grid(scene)?;
     let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
     let slabs = slab_range(z, grid.dims[2])?;
-    // The estimate of a run over these slabs: the volume it returns is theirs alone.
-    let mut held = grid;
-    held.dims[2] = slabs.len().max(1);
-    let threads = rayon::current_num_threads();
-    let prims = scene.loaded.scene.primitive_count();
     let slicer = opts.slicer(scene, grid)?;
-    let need = csgpix_voxel::memory_estimate(&held, prims, threads)
-        .saturating_add(imports_estimate(&slicer));
-    check_memory(need, max_memory)?;
+    let eval = opts.evaluator(scene);
+    let threads = rayon::current_num_threads();
+    check_memory(
+        opts.0
+            .slabs_estimate(&slicer, eval.as_ref(), &slabs, threads),
+        max_memory,
+    )?;
     let [nx, ny, _] = grid.dims;
     let n = slabs.len();
-    let bytes = opts.run(py, scene, &slicer, slabs)?;
+    let bytes = py
+        .detach(|| opts.0.slabs(&slicer, eval.as_ref(), slabs))
+        .map_err(crate::errors::voxel)?;
     let arr = PyArray1::from_vec(py, bytes).reshape([n, ny, nx])?;
     Ok((
         arr.into_any(),

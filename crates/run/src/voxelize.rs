@@ -313,6 +313,28 @@ impl Voxelization {
         route_of(self.model, self.route, slicer)
     }
 
+    /// An upper bound of the memory of [`Voxelization::slabs`] over `z` (docs/memory.md):
+    /// the slabs it returns beside the route's working memory. On the run route that is the
+    /// runs of the whole grid, swept along z; on a slab route the slab ranges and per-thread
+    /// state of a volume only `z` deep, and the imported primitives.
+    pub fn slabs_estimate(
+        &self,
+        slicer: &Slicer,
+        eval: &dyn SliceEval,
+        z: &std::ops::Range<usize>,
+        threads: usize,
+    ) -> u64 {
+        let out = (z.len() as u64).saturating_mul(slicer.grid.slice_len() as u64);
+        if matches!(self.route(slicer), Route::Runs { .. }) {
+            let swept = csgpix_voxel::runs::memory_estimates(slicer, eval, threads)[0];
+            return swept.saturating_add(out);
+        }
+        let mut held = slicer.grid;
+        held.dims[2] = z.len().max(1);
+        memory_estimate(&held, slicer.primitive_count(), threads)
+            .saturating_add(crate::memory::imports_estimate(slicer))
+    }
+
     /// Slabs `z` of the volume: the slices' bytes, x fastest, then y, then k.
     pub fn slabs(
         &self,
