@@ -673,3 +673,58 @@ fn sigkill_leaves_the_old_store_and_a_leftover_the_next_run_removes() {
     assert_eq!(err, want);
     assert_eq!(names(d), ["v.zarr"]);
 }
+
+/// Whether this file system leaves a block never written unallocated (ext4, xfs, tmpfs do).
+#[cfg(unix)]
+fn keeps_holes(dir: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    let probe = dir.join("probe");
+    let f = std::fs::File::create(&probe).unwrap();
+    f.set_len(1 << 20).unwrap();
+    let blocks = std::fs::metadata(&probe).unwrap().blocks();
+    std::fs::remove_file(&probe).unwrap();
+    blocks * 512 < 1 << 20
+}
+
+/// A voxel file's blocks of zeros are holes (crates/output `Sparse`): it reads back as the
+/// same voxels as the gzip file of the same run, whether the volume is streamed or held
+/// (`--preview` holds it), and takes fewer bytes on disk than its length (62% of it here).
+#[cfg(unix)]
+#[test]
+fn a_volume_file_leaves_its_empty_blocks_as_holes() {
+    use std::io::Read;
+    use std::os::unix::fs::MetadataExt;
+    let dir = tempfile::tempdir().unwrap();
+    let p = |n: &str| dir.path().join(n);
+    let run = |extra: &[&str]| {
+        let mut args = vec!["voxelize", TWELVE, "--res", "160"];
+        args.extend_from_slice(extra);
+        let out = csgpix(&args);
+        assert!(out.status.success(), "{out:?}");
+    };
+    run(&["-o", s(&p("streamed.nrrd"))]);
+    run(&["-o", s(&p("held.nrrd")), "--preview", s(&p("v.png"))]);
+    run(&["-o", s(&p("gz.nrrd")), "--compress"]);
+    let gz = std::fs::read(p("gz.nrrd")).unwrap();
+    let split = gz.windows(2).position(|w| w == b"\n\n").unwrap() + 2;
+    let mut voxels = Vec::new();
+    flate2::read::GzDecoder::new(&gz[split..])
+        .read_to_end(&mut voxels)
+        .unwrap();
+    assert!(voxels.iter().any(|&v| v != 0) && voxels.iter().any(|&v| v == 0));
+    for name in ["streamed.nrrd", "held.nrrd"] {
+        let bytes = std::fs::read(p(name)).unwrap();
+        let (_, data) = csgpix::scene::nrrd::read(&bytes).unwrap();
+        assert!(
+            data == voxels,
+            "{name}: the voxels differ from the gzip file's"
+        );
+        if keeps_holes(dir.path()) {
+            let on_disk = std::fs::metadata(p(name)).unwrap().blocks() * 512;
+            assert!(
+                on_disk < bytes.len() as u64,
+                "{name}: {on_disk} bytes on disk"
+            );
+        }
+    }
+}

@@ -37,9 +37,11 @@ use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 mod error;
 mod leftover;
 mod oom;
+mod sparse;
 
 pub use error::{Error, IoError, OneLine, Refusal, Result};
 pub use oom::{fallible, one_arena_under_address_limit, try_zeroed, AllocFailed, ExitOnOom};
+pub use sparse::{Sparse, BLOCK};
 
 /// Staged paths a signal must remove: temporary files and directories not yet committed.
 static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
@@ -409,14 +411,10 @@ impl Outputs {
         &self.slots[out.0].shown
     }
 
-    /// Stage the whole content of a file output.
-    pub fn write(
-        &mut self,
-        out: Out,
-        fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
-    ) -> Result<()> {
+    /// A file output's staged file, emptied and rewound, and its path for messages.
+    fn emptied(&mut self, out: Out) -> Result<(&mut File, &str)> {
         let slot = &mut self.slots[out.0];
-        let shown = &slot.shown;
+        let shown = slot.shown.as_str();
         let err = |e: std::io::Error| Error::io(shown, &e);
         let file = match &mut slot.stage {
             Stage::Named(s) => s.file(),
@@ -425,9 +423,35 @@ impl Outputs {
         };
         file.set_len(0).map_err(err)?;
         file.rewind().map_err(err)?;
+        Ok((file, shown))
+    }
+
+    /// Stage the whole content of a file output.
+    pub fn write(
+        &mut self,
+        out: Out,
+        fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+    ) -> Result<()> {
+        let (file, shown) = self.emptied(out)?;
+        let err = |e: std::io::Error| Error::io(shown, &e);
         let mut buf = std::io::BufWriter::new(file);
         fill(&mut buf).map_err(err)?;
         buf.flush().map_err(err)
+    }
+
+    /// Stage the whole content of a file output, its [`BLOCK`]s of zeros left as holes
+    /// ([`Sparse`]): the same bytes read back, fewer written. For volumes, which are mostly
+    /// empty space. Returns the bytes written and skipped.
+    pub fn write_sparse(
+        &mut self,
+        out: Out,
+        fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+    ) -> Result<(u64, u64)> {
+        let (file, shown) = self.emptied(out)?;
+        let err = |e: std::io::Error| Error::io(shown, &e);
+        let mut sparse = Sparse::new(file).map_err(err)?;
+        fill(&mut sparse).map_err(err)?;
+        sparse.finish().map_err(err)
     }
 
     /// Stage file `name` of a directory output with the bytes `fill` produces.

@@ -1015,7 +1015,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         None => None,
     };
     let voxels = &volume.voxels;
-    outs.write(named.nrrd, |w| {
+    outs.write_sparse(named.nrrd, |w| {
         csgpix_scene::nrrd::write_volume_as(w, &grid, voxels, &comment, &nrrd_format)
     })?;
     let to_stdout = outs.uses_stdout();
@@ -1053,7 +1053,7 @@ fn stream_nrrd(
 ) -> crate::Result<Work> {
     let nz = slicer.grid.dims[2];
     let mut done: Option<Result<Work, Stop>> = None;
-    let written = outs.write(out, |w| {
+    let written = outs.write_sparse(out, |w| {
         let head = csgpix_scene::nrrd::header_as(&slicer.grid, comment, format);
         w.write_all(head.as_bytes())?;
         let mut data = csgpix_scene::nrrd::data_writer(w, format.encoding);
@@ -1075,9 +1075,9 @@ fn stream_nrrd(
         // The voxelizer's error, as the whole-volume path reports it.
         (Some(Err(Stop::Voxel(e))), _) => Err(e.into()),
         (_, Err(e)) => Err(e.into()),
-        (Some(Ok(work)), Ok(())) => Ok(work),
+        (Some(Ok(work)), Ok(_)) => Ok(work),
         // The fill returns an I/O error as the file's and sets `done` whenever it succeeds.
-        (Some(Err(Stop::Io(_))) | None, Ok(())) => unreachable!("a fill that succeeded"),
+        (Some(Err(Stop::Io(_))) | None, Ok(_)) => unreachable!("a fill that succeeded"),
     }
 }
 
