@@ -3,14 +3,15 @@
 //!
 //! * floor: allocate N³ bytes and write every one (`vec![0u8; n]`, then each Z-slice filled
 //!   with its index, slices over rayon's pool as `voxelize` writes its volume), plus writing
-//!   them as the NRRD file `csgpix voxelize` writes (`nrrd::write_volume` into a
-//!   `BufWriter<File>`, in a temporary directory; no fsync, as the command does none).
+//!   them as an NRRD file, every byte (`nrrd::write_volume` into a `BufWriter<File>`, in a
+//!   temporary directory; no fsync, as the command does none).
 //! * each route of [`floor_routes`](super::floor_routes): `Slicer::new` + `voxelize` with
 //!   the Blist evaluator (the command's default options: centre sampling, the scene's
-//!   imports loaded) + the same NRRD write.
-//! * the peers (fidget), dense and pruned, built from the parsed scene and written the same
-//!   way (their membership, 1 inside): for scenes without imports only, as the peer's
-//!   expression has no datasets or meshes.
+//!   imports loaded) + the NRRD file as `csgpix voxelize` writes it: its 4 KiB blocks of
+//!   zeros left as holes (`csgpix_output::Sparse`), the same bytes read back.
+//! * the peers (fidget), dense and pruned, built from the parsed scene and written as the
+//!   routes are (their membership, 1 inside): for scenes without imports only, as the
+//!   peer's expression has no datasets or meshes.
 //!
 //! Every figure is the median of [`runs_at`] runs, each component (allocation, voxelizing,
 //! writing) its own median and the total the median of the runs' totals. Volumes are dropped
@@ -127,10 +128,10 @@ fn size_figures(
     let runs = runs_at(n, a.quick);
     let grid = loaded.grid([n; 3]).expect("grid");
     let comment = format!("csgpix voxelize vectors/scenes/{name}");
-    let write = |v: &[u8]| write_nrrd(out, &grid, v, &comment);
+    let write = |v: &[u8]| write_nrrd(out, &grid, v, &comment, Blocks::Sparse);
     let ([fill, written, floor], ()) = medians(runs, || {
         let (t_fill, v) = timed(|| filled(&grid));
-        let t_write = write(&v);
+        let t_write = write_nrrd(out, &grid, &v, &comment, Blocks::Every);
         ([t_fill, t_write, t_fill + t_write], ())
     });
     let say = |s: String| (a.say)(format!("floor {name} {n}^3: {s}"));
@@ -164,6 +165,7 @@ fn size_figures(
             json!({
                 "voxelize_s": vox,
                 "write_s": wr,
+                "write": "blocks of zeros as holes",
                 "total_s": total,
                 "over_floor": total / floor,
                 "over_pruned_peer": vs_peer,
@@ -173,7 +175,7 @@ fn size_figures(
     json!({
         "runs": runs,
         "voxels": n * n * n,
-        "floor": {"alloc_fill_s": fill, "write_s": written, "total_s": floor},
+        "floor": {"alloc_fill_s": fill, "write_s": written, "total_s": floor, "write": "every byte"},
         "routes": routes,
         "peer": peers,
     })
@@ -260,14 +262,34 @@ fn route_volume(loaded: &Loaded, grid: &Grid, route: Route) -> (f64, Vec<u8>) {
     (t0.elapsed().as_secs_f64(), v.voxels)
 }
 
-/// Seconds to write `voxels` as the command's NRRD file at `path`, which is then removed
-/// (so its dirty pages do not pile up across runs).
-fn write_nrrd(path: &Path, grid: &Grid, voxels: &[u8], comment: &str) -> f64 {
+/// How an NRRD file's blocks are written.
+#[derive(Clone, Copy)]
+enum Blocks {
+    /// Every byte: the floor.
+    Every,
+    /// Blocks of zeros left as holes, as `csgpix voxelize` writes its file.
+    Sparse,
+}
+
+/// Seconds to write `voxels` as an NRRD file at `path`, which is then removed (so its dirty
+/// pages do not pile up across runs).
+fn write_nrrd(path: &Path, grid: &Grid, voxels: &[u8], comment: &str, blocks: Blocks) -> f64 {
     let t0 = Instant::now();
-    let mut w = BufWriter::new(File::create(path).expect("create the NRRD file"));
-    csgpix::scene::nrrd::write_volume(&mut w, grid, voxels, comment).expect("write the NRRD file");
-    w.flush().expect("flush the NRRD file");
-    drop(w);
+    let mut file = File::create(path).expect("create the NRRD file");
+    let write = |w: &mut dyn Write| csgpix::scene::nrrd::write_volume(w, grid, voxels, comment);
+    match blocks {
+        Blocks::Every => {
+            let mut w = BufWriter::new(&mut file);
+            write(&mut w).expect("write the NRRD file");
+            w.flush().expect("flush the NRRD file");
+        }
+        Blocks::Sparse => {
+            let mut w = csgpix::output::Sparse::new(&mut file).expect("the NRRD file");
+            write(&mut w).expect("write the NRRD file");
+            w.finish().expect("finish the NRRD file");
+        }
+    }
+    drop(file);
     let t = t0.elapsed().as_secs_f64();
     std::fs::remove_file(path).expect("remove the NRRD file");
     t
