@@ -91,7 +91,7 @@ impl Write for Sparse<'_> {
             let take = (to_boundary as usize).min(data.len());
             self.head.extend_from_slice(&data[..take]);
             data = &data[take..];
-            if (self.at + self.head.len() as u64) % BLOCK != 0 {
+            if !(self.at + self.head.len() as u64).is_multiple_of(BLOCK) {
                 return Ok(len);
             }
             let head = std::mem::take(&mut self.head);
