@@ -170,8 +170,7 @@ impl<'a> DatasetColumns<'a> {
         }
         let walk = Walk {
             columns: self,
-            x,
-            y,
+            index: ColumnIndex::new(self, x, y),
             column,
             dir: map.dir,
             n: self.data.nrrd.sizes[2],
@@ -182,11 +181,55 @@ impl<'a> DatasetColumns<'a> {
     }
 }
 
+/// Index z along one pixel column: [`DatasetColumns::index`]'s operations, in its order on
+/// the same values, so the same bits, with what does not move along the column (c.x, c.y
+/// and their terms, the voxel's size) done once. By [`ColumnMap::of`]'s listing:
+/// c.z = min.z + (k + ½)·v.z; f = W + (Z·c.z + (Y·c.y + X·c.x)); d = f − o;
+/// q_z = (I_0z·d_x + I_1z·d_y) + I_2z·d_z (glam 0.30's `transform_point3` adds each axis's
+/// term to the sum so far, `mul_vec3` the sum so far to each axis's term; IEEE addition
+/// commutes exactly).
+struct ColumnIndex {
+    /// Y·c.y + X·c.x.
+    xy: DVec3,
+    /// `to_file`'s Z and W columns.
+    z: DVec3,
+    w: DVec3,
+    /// The lattice's origin.
+    origin: DVec3,
+    /// I_0z, I_1z, I_2z.
+    row: DVec3,
+    /// The grid's min.z and voxel size v.z.
+    min_z: f64,
+    step_z: f64,
+}
+
+impl ColumnIndex {
+    fn new(columns: &DatasetColumns, x: usize, y: usize) -> ColumnIndex {
+        let (m, i) = (columns.to_file, columns.data.inverse());
+        let c = columns.grid.centre(x, y, 0);
+        ColumnIndex {
+            xy: m.y_axis.truncate() * c.y + m.x_axis.truncate() * c.x,
+            z: m.z_axis.truncate(),
+            w: m.w_axis.truncate(),
+            origin: columns.data.nrrd.origin,
+            row: DVec3::new(i.x_axis.z, i.y_axis.z, i.z_axis.z),
+            min_z: columns.grid.min.z,
+            step_z: columns.grid.voxel().z,
+        }
+    }
+
+    /// Voxel k's index z.
+    fn at(&self, k: usize) -> f64 {
+        let cz = self.min_z + (k as f64 + 0.5) * self.step_z;
+        let d = (self.w + (self.z * cz + self.xy)) - self.origin;
+        (self.row.x * d.x + self.row.y * d.y) + self.row.z * d.z
+    }
+}
+
 /// One column walked a lattice cell at a time.
 struct Walk<'c, 'a> {
     columns: &'c DatasetColumns<'a>,
-    x: usize,
-    y: usize,
+    index: ColumnIndex,
     column: &'c Column,
     /// [`ColumnMap`]'s direction.
     dir: i64,
@@ -201,7 +244,7 @@ impl Walk<'_, '_> {
     /// Voxel k's z-cell ([`cell`], exactly as [`Dataset::sample`] finds it) and its place
     /// along the lattice: the cell's first plane, −1 before plane 0, n past the last.
     fn position(&self, k: usize) -> (i64, Option<Cell>) {
-        let qz = self.columns.index(self.x, self.y, k).z;
+        let qz = self.index.at(k);
         match cell(qz, self.n) {
             Some(c) => (c.0 as i64, Some(c)),
             // Index z is finite along the column: outside is below or above.
@@ -490,6 +533,71 @@ fn push_run(out: &mut Vec<(u32, u32)>, start: usize, first: usize, last: usize) 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`ColumnIndex::at`] gives [`DatasetColumns::index`]'s index z bit for bit, on
+    /// placements with scales, swaps and translations of every kind and grids of any origin.
+    #[test]
+    fn column_index_is_the_voxels_index_to_the_bit() {
+        use csgpix_scene::nrrd::{Nrrd, SampleType};
+        use glam::DVec4;
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let mut compared = 0;
+        for _ in 0..200 {
+            // Index z may lean on file x and y (I_0z, I_1z), never index x or y on file z.
+            let inverse = DMat3::from_cols(
+                DVec3::new(next(), 0.0, next()),
+                DVec3::new(0.0, next(), next()),
+                DVec3::new(0.0, 0.0, next()),
+            ) * 3.0;
+            let origin = DVec3::new(next(), next(), next()) * 10.0;
+            let steps = inverse.inverse();
+            let nrrd = Nrrd::new([3, 4, 5], vec![0.0; 60], origin, steps, SampleType::Uint8);
+            let Ok(data) = Dataset::new(nrrd.unwrap()) else {
+                continue;
+            };
+            // Scene x and y reach every file axis; scene z file z alone.
+            let mut r = [0.0; 10];
+            r.iter_mut().for_each(|v| *v = next() * 2.0);
+            let to_file = DMat4::from_cols(
+                DVec4::new(r[0], r[1], r[2], 0.0),
+                DVec4::new(r[3], r[4], r[5], 0.0),
+                DVec4::new(0.0, 0.0, r[6], 0.0),
+                DVec4::new(r[7], r[8], r[9], 1.0) * DVec4::new(4.0, 4.0, 4.0, 1.0),
+            );
+            let s = Sampled {
+                shape: Shape::Dataset {
+                    data: Box::new(data),
+                    threshold: 0.5,
+                    to_file,
+                },
+                colour: 1,
+                file: "t.nrrd".into(),
+            };
+            let lo = DVec3::new(next(), next(), next()) * 9.0;
+            let hi = lo + DVec3::new(next().abs(), next().abs(), next().abs()) * 20.0 + 0.1;
+            let grid = Grid::new([7, 5, 33], lo, hi).unwrap();
+            let columns = DatasetColumns::new(&s, &grid).unwrap();
+            for (x, y) in [(0, 0), (3, 2), (6, 4)] {
+                let index = ColumnIndex::new(&columns, x, y);
+                for k in 0..33 {
+                    let want = columns.index(x, y, k).z;
+                    assert_eq!(
+                        index.at(k).to_bits(),
+                        want.to_bits(),
+                        "voxel ({x}, {y}, {k})"
+                    );
+                    compared += 1;
+                }
+            }
+        }
+        assert!(compared > 10_000, "{compared} voxels compared");
+    }
 
     #[test]
     fn first_true_finds_every_boundary_from_every_guess() {
