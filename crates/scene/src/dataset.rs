@@ -160,7 +160,9 @@ pub fn cell(q: f64, n: usize) -> Option<Cell> {
         return None;
     }
     let q = q.clamp(0.0, top);
-    let i0 = (q.floor() as usize).min(n.saturating_sub(2));
+    // q ≥ 0 (or −0): truncation is its floor, without a call to libm's `floor` where the
+    // target has no rounding instruction (x86-64 before SSE4.1).
+    let i0 = (q as usize).min(n.saturating_sub(2));
     let i1 = (i0 + 1).min(n - 1);
     Some((i0, i1, q - i0 as f64))
 }
