@@ -91,7 +91,16 @@ impl Dataset {
             return false;
         };
         c.planes.clear();
-        c.planes.extend((0..nz).map(|k| self.plane(xc, yc, k)));
+        // `plane` at every k, its four samples found by offsets from plane 0 (the same
+        // samples, the same operations).
+        let [sx, sy, _] = self.nrrd.sizes;
+        let ((x0, x1, tx), (y0, y1, ty)) = (xc, yc);
+        let corners = [x0 + sx * y0, x1 + sx * y0, x0 + sx * y1, x1 + sx * y1];
+        let planes = self.nrrd.samples.chunks_exact(sx * sy).take(nz);
+        c.planes.extend(planes.map(|p| {
+            let v = corners.map(|i| f64::from(p[i]));
+            lerp(lerp(v[0], v[1], tx), lerp(v[2], v[3], tx), ty)
+        }));
         true
     }
 
