@@ -105,6 +105,7 @@ fn scene(a: &Args) -> crate::Result<ExitCode> {
     let want = stimulus::expected_states(cfg, &ops, &set)?;
     let control = pixel::control_stream(&cfg, &set, &ops);
     let mut files = stimulus::array_files(&cfg);
+    files.extend(stimulus::machine_files(&cfg, &ops).map_err(|e| Error::options("--scene", e))?);
     files.push(("control.hex".into(), control));
     files.push(("run.sh".into(), stimulus::run_script(&want.summary())));
     for (name, text) in &files {
@@ -273,6 +274,9 @@ fn report(dir: &Path, cfg: &ArrayConfig, files: &[(String, String)], want: &stim
     println!("  icarus:    cd {d} && {}", stimulus::ICARUS);
     println!("  verilator: cd {d} && {}", stimulus::VERILATOR);
     println!("  or:        sh {d}/run.sh [icarus|verilator]   (exit 0 only on that line)");
+    println!("run tb_machine (the controller reads program.hex; every word and register checked):");
+    println!("  icarus:    cd {d} && {}", stimulus::MACHINE_ICARUS);
+    println!("  verilator: cd {d} && {}", stimulus::MACHINE_VERILATOR);
 }
 
 /// `s` as one shell word: as it is when it needs no quoting, else in single quotes.
