@@ -247,8 +247,9 @@ fn synthesizable_modules_are_lint_clean() {
         return;
     }
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("rtl-model/verilog");
-    let tops: [&[&str]; 5] = [
+    let tops: [&[&str]; 6] = [
         &["--top-module", "pixel_array", "-f", "pixel_array.f"],
+        &["--top-module", "panel", "-f", "machine.f", "panel.v"],
         &["sgene_derived.v"],
         &["sgene_printed.v"],
         &["comparator.v"],
@@ -1075,5 +1076,169 @@ fn speed_of_the_cycle_model_against_verilator() {
             rust / verilator
         );
         assert!(rust > 0.0 && verilator > 0.0);
+    }
+}
+
+/// What `tb_machine` printed: clocks before `go` (the controller's delay line), control
+/// words run and how many differed from the control stream, operations ended and registers
+/// that differed from the cycle model, and the `WORD` lines.
+#[derive(Debug)]
+struct Machine {
+    preroll: u64,
+    words: u64,
+    word_bad: u64,
+    clocks: u64,
+    ops: u64,
+    reg_bad: u64,
+    lines: String,
+}
+
+/// The numbers after `prefix` on the line that starts with it.
+fn numbers(text: &str, prefix: &str) -> Vec<u64> {
+    let line = text
+        .lines()
+        .find_map(|l| l.strip_prefix(prefix))
+        .unwrap_or_else(|| panic!("no {prefix} line:\n{text}"));
+    line.split_whitespace()
+        .filter_map(|x| x.parse().ok())
+        .collect()
+}
+
+/// Run the machine (the Verilog controller reading program.hex, and the array) on `ops`:
+/// program.hex from `controller::program_hex` (or `program`, standing in for it), the
+/// control stream and the expected states from the Rust models, the checked-in Verilog at
+/// 16×16 (another size generated into the directory by the same functions).
+fn machine_cosim(cfg: ArrayConfig, ops: &[Op], verilator: bool, program: Option<&str>) -> Machine {
+    use rtl_model::verilog::{controller, pixel, stimulus};
+    let set = Equations::Derived.set();
+    let want = expected_states(cfg, ops, &set).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let put = |n: &str, t: &str| std::fs::write(tmp.path().join(n), t).unwrap();
+    put("control.hex", &pixel::control_stream(&cfg, &set, ops));
+    put("expected.hex", &want.text);
+    let hex = controller::program_hex(&cfg, ops).unwrap();
+    put("program.hex", program.unwrap_or(&hex));
+    let files = ["sgene_derived.v", "comparator.v", "depgen.v", "pixel.v"];
+    let mut srcs: Vec<String> = files
+        .iter()
+        .map(|f| vdir().join(f).to_str().unwrap().to_string())
+        .collect();
+    let sized = ["pixel_array.v", "controller.v", "machine.v", "tb_machine.v"];
+    if (cfg.width, cfg.height) == (16, 16) {
+        srcs.extend(sized.iter().map(|f| vdir().join(f).to_str().unwrap().to_string()));
+    } else {
+        let mut gen = stimulus::array_files(&cfg);
+        gen.extend(stimulus::machine_files(&cfg, ops).unwrap());
+        for f in sized {
+            let (_, text) = gen.iter().find(|(n, _)| n == f).unwrap();
+            put(f, text);
+            srcs.push(f.to_string());
+        }
+    }
+    let srcs: Vec<&str> = srcs.iter().map(String::as_str).collect();
+    let text = if verilator {
+        verilate(&srcs, "tb_machine", tmp.path());
+        ok(&run("obj_dir/Vtb_machine", &[], tmp.path()), "Vtb_machine")
+    } else {
+        let args = [&["-g2005", "-o", "tb"][..], &srcs[..]].concat();
+        ok(&run("iverilog", &args, tmp.path()), "iverilog");
+        ok(&run("vvp", &["-n", "tb"], tmp.path()), "vvp")
+    };
+    let (p, w, c) = (
+        numbers(&text, "PREROLL "),
+        numbers(&text, "WORDS "),
+        numbers(&text, "CLOCKS "),
+    );
+    assert!(!text.contains("CHECK off"), "{text}");
+    let lines = text
+        .lines()
+        .filter(|l| l.starts_with("WORD ") || l.starts_with("MISMATCH "))
+        .collect::<Vec<_>>()
+        .join("\n");
+    Machine {
+        preroll: p[0],
+        words: w[0],
+        word_bad: w[1],
+        clocks: c[0],
+        ops: c[1],
+        reg_bad: c[2],
+        lines,
+    }
+}
+
+/// The machine equals the models: every control word the Verilog controller produces from
+/// program.hex equals `control_stream`'s, and every register of every pixel after every
+/// clock equals the cycle model's; the stream's clocks and operations are the program's; the
+/// controller's delay line fills in DEPGEN's latency. On the four thesis windows (cube; the
+/// clipped boxes with the stack's push, NOT, AND and apply).
+#[test]
+fn icarus_machine_equals_the_control_stream_and_the_cycle_model() {
+    if !rtl_tools() {
+        return;
+    }
+    let cfg = ArrayConfig::new(16, 16);
+    for (names, clip, x0, y0, _) in WINDOWS {
+        let ops = thesis_program(names, clip, x0, y0);
+        let m = machine_cosim(cfg, &ops, false, None);
+        let want = expected_states(cfg, &ops, &Equations::Derived.set()).unwrap();
+        assert_eq!((m.word_bad, m.reg_bad), (0, 0), "{names:?}: {}", m.lines);
+        assert_eq!(m.words, want.cycles + 1, "{names:?}");
+        assert_eq!(m.clocks, want.cycles + 1, "{names:?}");
+        assert_eq!(m.ops, ops.len() as u64 + 1, "{names:?}: the flush window");
+        assert_eq!(m.preroll, cfg.depgen_latency(), "{names:?}");
+    }
+}
+
+/// The same under Verilator: the checked-in 16×16 machine on the clipped boxes, and a 4×4
+/// machine (2-level trees, a 3-clock delay line) generated by the same functions, on the
+/// boxes' corner where the three faces meet.
+#[test]
+fn verilator_machine_equals_the_control_stream_and_the_cycle_model() {
+    if !rtl_tools() {
+        return;
+    }
+    let (names, clip, x0, y0, _) = WINDOWS[2];
+    let ops = thesis_program(names, clip, x0, y0);
+    let m = machine_cosim(ArrayConfig::new(16, 16), &ops, true, None);
+    assert_eq!((m.word_bad, m.reg_bad), (0, 0), "{}", m.lines);
+    assert_eq!(m.ops, ops.len() as u64 + 1);
+    let cfg = ArrayConfig::new(4, 4);
+    let ops = thesis_program(&["box1", "box2"], Some("A.!B"), 204, 150);
+    let m = machine_cosim(cfg, &ops, true, None);
+    assert_eq!((m.word_bad, m.reg_bad), (0, 0), "{}", m.lines);
+    assert_eq!(m.preroll, 3);
+}
+
+/// The check is not vacuous: a program.hex with one record changed (a bit of the first
+/// plane's c0, the front plane's colour, the Close's L, the Compose's P) makes the
+/// controller's words differ from the stream and the named clock is in that record's
+/// operation (`WORD t expected … got …`).
+#[test]
+fn machine_cosimulation_catches_a_corrupted_program_record() {
+    if !rtl_tools() {
+        return;
+    }
+    use rtl_model::verilog::controller::{program_hex, record_bits};
+    let cfg = ArrayConfig::new(16, 16);
+    let ops = thesis_program(&["cube"], None, 56, 90);
+    let hex = program_hex(&cfg, &ops).unwrap();
+    let first_plane = ops
+        .iter()
+        .position(|o| matches!(o, Op::Plane { .. }))
+        .unwrap();
+    let close = ops.iter().position(|o| matches!(o, Op::Close { .. })).unwrap();
+    // (record, bit): c0 bit 3, colour bit 0, L (externals bit 0, record bit 4).
+    for (rec, bit) in [(first_plane, 26 + 3), (first_plane, 10), (close, 4)] {
+        let mut lines: Vec<String> = hex.lines().map(String::from).collect();
+        let digits = record_bits(&cfg).div_ceil(4);
+        let d = digits - 1 - bit / 4;
+        let v = lines[rec].as_bytes()[d] as char;
+        let v = v.to_digit(16).unwrap() ^ 1 << (bit % 4);
+        lines[rec].replace_range(d..d + 1, &format!("{v:x}"));
+        let bad = lines.join("\n") + "\n";
+        let m = machine_cosim(cfg, &ops, false, Some(&bad));
+        assert!(m.word_bad > 0, "record {rec} bit {bit}: no word differs");
+        assert!(m.lines.contains("WORD "), "{}", m.lines);
+        eprintln!("record {rec} bit {bit}: {}", m.lines.lines().next().unwrap());
     }
 }

@@ -18,6 +18,10 @@ module controller #(parameter F = 10, I = 10, O = 11, CB = 8, LAT = 5, AW = 8,
     localparam W = F + I + O + 1;
     localparam RW = 10 + 2 * CB + 3 * W;
     localparam KW = $clog2(W > LAT ? W : LAT);
+    // The last bit of a window and of DEPGEN's fill, as wide as k.
+    /* verilator lint_off WIDTH */
+    localparam [KW-1:0] KL = W - 1, KF = LAT - 1;
+    /* verilator lint_on WIDTH */
     // The program memory: read synchronously at the next pc (a block RAM).
     reg [RW-1:0] rom [0:(1 << AW) - 1];
     initial $readmemh(PROG, rom);
@@ -62,16 +66,18 @@ module controller #(parameter F = 10, I = 10, O = 11, CB = 8, LAT = 5, AW = 8,
 
     // The step's word (pixel.rs FIELDS): run is a window clock of an operation, wk any
     // window clock (the flush's too), bit k of the word.
-    wire lastk = k == W - 1;
+    wire lastk = k == KL;
     wire run = window & ~fill;
     wire wk = run | flush;
     wire tr = wk & pv;
     wire decide = run & lastk;
     wire adv = decide | stk;
+    // Bit k of the colours and coefficients: bit 0 of each shift (the rest is not read).
+    /* verilator lint_off UNUSEDSIGNAL */
     wire [CB-1:0] col_k = colour >> k, int_k = p_int >> k;
     wire [W-1:0] c0_k = c0 >> k, dx_k = dx >> k, dy_k = dy >> k;
-    wire [47:0] word;
-    assign word[47] = 1'b0;
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [46:0] word;
     assign word[0] = last_w;  // last
     assign word[1] = lastk & (run | flush) | stk;  // op_end
     assign word[2] = wk;  // win
@@ -117,8 +123,8 @@ module controller #(parameter F = 10, I = 10, O = 11, CB = 8, LAT = 5, AW = 8,
         end else begin
             pc <= pc_next;
             if (fill) begin
-                k <= k == LAT - 1 ? {KW{1'b0}} : k + 1'b1;
-                if (k == LAT - 1) streamed <= 1'b1;
+                k <= k == KF ? {KW{1'b0}} : k + 1'b1;
+                if (k == KF) streamed <= 1'b1;
             end else if (window | flush) begin
                 k <= lastk ? {KW{1'b0}} : k + 1'b1;
                 if (lastk) begin
@@ -137,9 +143,9 @@ module controller #(parameter F = 10, I = 10, O = 11, CB = 8, LAT = 5, AW = 8,
     // The delay line: the word but DEPGEN's bits, and a mark that the sequencer ran.
     localparam PW = 44;
     reg [PW*LAT-1:0] pipe;
-    /* verilator lint_off WIDTHTRUNC */
+    /* verilator lint_off WIDTH */
     always @(posedge clk) pipe <= rst ? {PW*LAT{1'b0}} : {pipe, 1'b1, word[42:0]};
-    /* verilator lint_on WIDTHTRUNC */
+    /* verilator lint_on WIDTH */
     wire [PW-1:0] out = pipe[PW*(LAT-1) +: PW];
     assign go = out[43];
     assign cw = {1'b0, word[46:43], out[42:0]};

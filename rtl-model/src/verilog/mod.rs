@@ -135,6 +135,7 @@ pub fn files() -> Result<Vec<(String, String)>, GoldenError> {
     ));
     out.push(("tb_machine.v".to_string(), controller::testbench(&cfg)));
     out.push(("machine.f".to_string(), controller::filelist()));
+    out.push(("panel.v".to_string(), controller::panel_module(&cfg)));
     out.push(("cost.ys".to_string(), cost_script()));
     Ok(out)
 }
