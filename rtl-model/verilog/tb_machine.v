@@ -9,7 +9,7 @@ module tb_machine;
     reg [CW-1:0] c = {CW{1'b0}};
     reg [8*256-1:0] file;
     reg done = 0;
-    integer t = 0, ops = 0, wbad = 0, pre = 0;
+    integer t = 0, ops = 0, wbad = 0, pre = 0, r;
     wire [CW-1:0] cw;
     wire go, fin;
     wire [NX*NY*8-1:0] image;
@@ -354,6 +354,9 @@ module tb_machine;
         $display("PREROLL %0d DONE %0d", pre, fin);
         $display("WORDS %0d MISMATCHES %0d", t, wbad);
         $display("CLOCKS %0d OPS %0d MISMATCHES %0d", t, ops, bad);
+        // The image, G of every pixel (pixel (0, 0) in the low byte), a row a line, top first.
+        for (r = NY - 1; r >= 0; r = r - 1)
+            $display("IMAGE %h", image[r * 128 +: 128]);
         $finish;
     end
 endmodule

@@ -208,7 +208,8 @@ const DECODE: &str = "    // Window::of: the operation's window and the transfer
 
 /// The bookkeeping of the sequencer: bit counter, fill, pc, stack pointer, pending transfer,
 /// and the delay line that puts the word LAT clocks behind DEPGEN's root bits.
-const SEQUENCE: &str = "    // pc moves on at the end of an operation; the memory reads the next record.
+const SEQUENCE: &str =
+    "    // pc moves on at the end of an operation; the memory reads the next record.
     wire [AW-1:0] pc_next = rst ? {AW{1'b0}} : adv ? pc + 1'b1 : pc;
     always @(posedge clk) rec <= rom[pc_next];
     always @(posedge clk) begin
@@ -354,8 +355,9 @@ endmodule
 /// `tb_machine`: resets the machine, waits for `go`, then each clock compares the controller's
 /// word with the control stream `+ctl=FILE` (default `control.hex`) and prints `WORD t
 /// expected E got G` for a difference, and after each clock checks every pixel's state
-/// against `+exp=FILE` (default `expected.hex`) as `tb_array` does. Ends with `PREROLL p`,
-/// `WORDS n MISMATCHES w` and `CLOCKS n OPS m MISMATCHES b`.
+/// against `+exp=FILE` (default `expected.hex`; none there: `CHECK off`) as `tb_array` does.
+/// Ends with `PREROLL p DONE d`, `WORDS n MISMATCHES w`, `CLOCKS n OPS m MISMATCHES b` and
+/// the image (`IMAGE` rows, top first, pixel (0, 0) in the low byte).
 pub fn testbench(cfg: &ArrayConfig) -> String {
     format!(
         "// Runs the machine (controller + pixel_array) on program.hex; compares the controller's
@@ -369,7 +371,7 @@ module tb_machine;
     reg [CW-1:0] c = {{CW{{1'b0}}}};
     reg [8*256-1:0] file;
     reg done = 0;
-    integer t = 0, ops = 0, wbad = 0, pre = 0;
+    integer t = 0, ops = 0, wbad = 0, pre = 0, r;
     wire [CW-1:0] cw;
     wire go, fin;
     wire [NX*NY*{cb}-1:0] image;
@@ -402,6 +404,9 @@ module tb_machine;
         $display(\"PREROLL %0d DONE %0d\", pre, fin);
         $display(\"WORDS %0d MISMATCHES %0d\", t, wbad);
         $display(\"CLOCKS %0d OPS %0d MISMATCHES %0d\", t, ops, bad);
+        // The image, G of every pixel (pixel (0, 0) in the low byte), a row a line, top first.
+        for (r = NY - 1; r >= 0; r = r - 1)
+            $display(\"IMAGE %h\", image[r * {row} +: {row}]);
         $finish;
     end
 endmodule
@@ -411,6 +416,7 @@ endmodule
         cb = cfg.colour_bits,
         sw = state_width(cfg),
         tasks = check_tasks(cfg, "dut.arr"),
+        row = cfg.width * cfg.colour_bits as usize,
     )
 }
 
@@ -492,8 +498,14 @@ mod tests {
         let v = u128::from_str_radix(lines[i], 16).unwrap();
         let nd = cfg.fmt.bits();
         assert_eq!(v & 15, 1, "opcode Plane");
-        assert_eq!((v >> 26) as u64 & cfg.fmt.mask(), c.c0 as u64 & cfg.fmt.mask());
-        assert_eq!((v >> (26 + nd)) as u64 & cfg.fmt.mask(), c.dx as u64 & cfg.fmt.mask());
+        assert_eq!(
+            (v >> 26) as u64 & cfg.fmt.mask(),
+            c.c0 as u64 & cfg.fmt.mask()
+        );
+        assert_eq!(
+            (v >> (26 + nd)) as u64 & cfg.fmt.mask(),
+            c.dx as u64 & cfg.fmt.mask()
+        );
     }
 
     /// A colour code wider than the colour registers is refused, not truncated.
