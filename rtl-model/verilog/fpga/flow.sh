@@ -2,7 +2,7 @@
 # Place and route one panel of the machine (controller + NX×NY pixels, panel.v) on an iCE40:
 #   sh flow.sh hx8k|up5k NX NY [FREQ_MHZ]    (run from any directory; default 20 MHz)
 # yosys synth_ice40 -> nextpnr-ice40 (--pcf, --pre-pack clocks.py, --freq) -> icepack, in
-# build/DEVICE-NXxNY/, and one JSON line on stdout: the device, the panel, logic cells,
+# build/DEVICE-NXxNY/ (under $FPGA_BUILD when set), and one JSON line on stdout: the device, the panel, logic cells,
 # block RAMs, the max clock nextpnr reports, whether it meets FREQ_MHZ, the critical path's
 # ends and its logic/routing delay. Exit 1 if it does not fit or route.
 # program.hex is the thesis cube's 16x16 window at (56, 90) (csgpix export-verilog --scene);
@@ -16,7 +16,7 @@ case $dev in
     up5k) pnr="--up5k --package sg48" ;;
     *) echo "usage: sh flow.sh hx8k|up5k NX NY [FREQ_MHZ]" >&2; exit 2 ;;
 esac
-out=$here/build/$dev-${nx}x$ny
+out=${FPGA_BUILD:-$here/build}/$dev-${nx}x$ny
 mkdir -p "$out"
 cp "$here/program.hex" "$out/program.hex"
 cd "$out"
