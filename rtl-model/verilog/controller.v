@@ -11,6 +11,11 @@
 module controller #(parameter F = 10, I = 10, O = 11, CB = 8, LAT = 5, AW = 8,
         PROG = "program.hex") (
     input wire clk, rst,
+    // The memory's write port (a panel loads its program through it; tie we to 0 to run
+    // the image PROG).
+    input wire we,
+    input wire [AW-1:0] wa,
+    input wire [10+2*CB+3*(F+I+O+1)-1:0] wd,
     output wire [47:0] cw,
     output wire go,
     output reg done
@@ -112,6 +117,7 @@ module controller #(parameter F = 10, I = 10, O = 11, CB = 8, LAT = 5, AW = 8,
     // pc moves on at the end of an operation; the memory reads the next record.
     wire [AW-1:0] pc_next = rst ? {AW{1'b0}} : adv ? pc + 1'b1 : pc;
     always @(posedge clk) rec <= rom[pc_next];
+    always @(posedge clk) if (we) rom[wa] <= wd;
     always @(posedge clk) begin
         if (rst) begin
             pc <= {AW{1'b0}};

@@ -13,8 +13,8 @@ module tb_machine;
     wire [CW-1:0] cw;
     wire go, fin;
     wire [NX*NY*8-1:0] image;
-    machine #(.NX(NX), .NY(NY)) dut(.clk(clk), .rst(rst), .cw(cw), .go(go), .done(fin),
-        .image(image));
+    machine #(.NX(NX), .NY(NY)) dut(.clk(clk), .rst(rst), .we(1'b0), .wa({8{1'b0}}),
+        .wd({122{1'b0}}), .cw(cw), .go(go), .done(fin), .image(image));
     reg [8*256-1:0] efile;
     reg [SW-1:0] s, e;
     reg [SW-1:0] st [0:NX*NY-1];
