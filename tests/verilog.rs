@@ -1384,3 +1384,76 @@ fn ice40_places_and_routes_a_small_panel_that_meets_the_reported_clock() {
     let m = machine_cosim(cfg, &ops, false, None, true);
     assert_eq!((m.word_bad, m.reg_bad), (0, 0), "{}", m.lines);
 }
+
+/// `throughput --fpga` takes the clock and the panel from a place-and-route report: Table 2.1
+/// at that clock (eq. 2.5, Table 2.1 reading: S_n·S_m/(n·m) · t / (N_D · T_C)), the devices a
+/// 1024×1024 screen needs (one panel each) and the screen's surfaces per frame at that clock
+/// and at the thesis's 10 MHz, computed here from the report's own numbers. A file that is not
+/// such a report is one line and exit 2.
+#[test]
+fn throughput_fpga_recomputes_table_2_1_at_the_reported_clock() {
+    let path = vdir().join("fpga/report-hx8k.json");
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let out = csgpix(&["throughput", "--fpga", path.to_str().unwrap(), "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let clock = report["clock_mhz"].as_f64().unwrap() * 1e6;
+    let (nx, ny) = (
+        report["largest_panel"]["nx"].as_u64().unwrap(),
+        report["largest_panel"]["ny"].as_u64().unwrap(),
+    );
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs();
+    assert!(close(r["hardware"]["clock_hz"].as_f64().unwrap(), clock));
+    let row = r["panels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["panel"][0] == 16)
+        .unwrap();
+    assert!(close(
+        row["table"].as_f64().unwrap(),
+        4096.0 * 0.02 * clock / 32.0
+    ));
+    let f = &r["fpga"];
+    assert_eq!(
+        (f["panel"][0].as_u64(), f["panel"][1].as_u64()),
+        (Some(nx), Some(ny))
+    );
+    assert_eq!(
+        f["devices_for_screen"],
+        1024u64.div_ceil(nx) * 1024u64.div_ceil(ny)
+    );
+    let ratio = (1024.0 * 1024.0) / (nx * ny) as f64;
+    let at = |hz: f64| ratio * 0.02 * hz / 32.0;
+    assert!(close(
+        f["screen_surfaces_per_frame"].as_f64().unwrap(),
+        at(clock)
+    ));
+    assert!(close(
+        f["screen_surfaces_per_frame_thesis"].as_f64().unwrap(),
+        at(10e6)
+    ));
+    let tmp = tempfile::tempdir().unwrap();
+    let bad = tmp.path().join("bad.json");
+    for (text, said) in [
+        ("{\"device\": \"x\"}", "no /largest_panel/nx"),
+        ("not json", "expected ident"),
+        (
+            "{\"device\":\"x\",\"largest_panel\":{\"nx\":2,\"ny\":2,\"critical_path\":\"\"},\
+             \"clock_mhz\":-1,\"lc_per_pixel\":1}",
+            "/clock_mhz is not a positive number",
+        ),
+    ] {
+        std::fs::write(&bad, text).unwrap();
+        let out = csgpix(&["throughput", "--fpga", bad.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(said), "{said}: {err}");
+    }
+}

@@ -38,9 +38,23 @@ pub struct FpgaReport {
     pub clock_ratio: f64,
 }
 
-/// Read `--fpga`: the device, the largest panel, its clock and critical path, LCs per pixel.
-/// A file that is not such a report is one line naming the field.
-pub fn read(path: &Path) -> crate::Result<(String, (usize, usize), f64, String, f64)> {
+/// What a place-and-route report states: the device, the largest panel that routed, its
+/// clock (Hz) and critical path, logic cells per pixel.
+pub struct Measured {
+    /// `device`.
+    pub device: String,
+    /// `largest_panel`'s `nx`, `ny`.
+    pub panel: (usize, usize),
+    /// `clock_mhz`, in Hz.
+    pub clock_hz: f64,
+    /// `largest_panel`'s `critical_path`.
+    pub critical_path: String,
+    /// `lc_per_pixel`.
+    pub lc_per_pixel: f64,
+}
+
+/// Read `--fpga`. A file that is not such a report is one line naming the field.
+pub fn read(path: &Path) -> crate::Result<Measured> {
     let bad = |m: String| Error::options("--fpga", format!("{}: {m}", path.display()));
     let text = std::fs::read_to_string(path).map_err(|e| bad(e.to_string()))?;
     let v: serde_json::Value = serde_json::from_str(&text).map_err(|e| bad(e.to_string()))?;
@@ -69,18 +83,24 @@ pub fn read(path: &Path) -> crate::Result<(String, (usize, usize), f64, String, 
             .map(String::from)
             .ok_or_else(|| bad(format!("{p} is not text")))
     };
-    Ok((
-        text_of("/device")?,
-        (size("/largest_panel/nx")?, size("/largest_panel/ny")?),
-        num("/clock_mhz")? * 1e6,
-        text_of("/largest_panel/critical_path")?,
-        num("/lc_per_pixel")?,
-    ))
+    Ok(Measured {
+        device: text_of("/device")?,
+        panel: (size("/largest_panel/nx")?, size("/largest_panel/ny")?),
+        clock_hz: num("/clock_mhz")? * 1e6,
+        critical_path: text_of("/largest_panel/critical_path")?,
+        lc_per_pixel: num("/lc_per_pixel")?,
+    })
 }
 
 /// The §2.5 figures of the report's panel on `screen`, at its clock and at 10 MHz.
 pub fn report(path: &Path, hw: &Hardware, screen: (usize, usize)) -> crate::Result<FpgaReport> {
-    let (device, panel, clock_hz, critical_path, lc_per_pixel) = read(path)?;
+    let Measured {
+        device,
+        panel,
+        clock_hz,
+        critical_path,
+        lc_per_pixel,
+    } = read(path)?;
     let at = |clock_hz| Hardware { clock_hz, ..*hw };
     let screen_frame = |clock| panel_surfaces_per_frame(&at(clock), screen, panel, Reading::Table);
     Ok(FpgaReport {

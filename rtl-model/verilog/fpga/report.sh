@@ -1,8 +1,8 @@
 #!/bin/sh
 # The iCE40 report: place and route panels of several sizes (flow.sh) and write
 # report-DEVICE.json beside this script:
-#   sh report.sh hx8k 2x2 4x4 5x6 6x6     (the sizes docs/verilog.md lists)
-#   sh report.sh up5k 2x2 4x4 4x5 5x5
+#   sh report.sh hx8k 2x2 4x4 4x5 4x6 5x5     (the sizes docs/verilog.md lists)
+#   sh report.sh up5k 2x2 3x4 4x4 4x5
 # Logic cells per pixel are the slope between the smallest and the largest panel that
 # routed, the controller's (and pads') share the intercept; the largest panel is the one
 # with the most pixels that routed. Each run's JSON line is kept under "runs".
