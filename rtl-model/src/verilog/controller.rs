@@ -15,6 +15,7 @@
 //!   stream every clock and every pixel's state with the `cycle` model's after every clock.
 //!
 //! [`Sequencer`]: crate::array::Sequencer
+//! [`Window::of`]: crate::program::Window::of
 
 use super::pixel::{array_inputs, check_tasks, field, state_width, CW};
 use crate::program::Op;
