@@ -854,7 +854,22 @@ fn export_verilog_scene_writes_the_cosimulation_files() {
             "{f}"
         );
     }
-    for f in ["tb_array.v", "pixel_array.f"] {
+    // The controller's memory image is the program's records, and the one the iCE40 flow
+    // builds into its block RAMs.
+    let hex = rtl_model::verilog::controller::program_hex(&cfg, &ops).unwrap();
+    assert_eq!(read("program.hex"), hex);
+    assert_eq!(
+        std::fs::read_to_string(vdir().join("fpga/program.hex")).unwrap(),
+        hex
+    );
+    for f in [
+        "tb_array.v",
+        "pixel_array.f",
+        "controller.v",
+        "machine.v",
+        "tb_machine.v",
+        "machine.f",
+    ] {
         assert_eq!(
             read(f),
             std::fs::read_to_string(vdir().join(f)).unwrap(),
