@@ -369,8 +369,9 @@ endmodule
 /// expected E got G` for a difference, and after each clock checks every pixel's state
 /// against `+exp=FILE` (default `expected.hex`; none there: `CHECK off`) as `tb_array` does.
 /// Ends with `PREROLL p DONE d`, `WORDS n MISMATCHES w`, `CLOCKS n OPS m MISMATCHES b` and
-/// the image (`IMAGE` rows, top first, pixel (0, 0) in the low byte).
-pub fn testbench(cfg: &ArrayConfig) -> String {
+/// the image (`IMAGE` rows, top first, pixel (0, 0) in the low byte). `aw`: the machine's
+/// address bits (its write port is tied to 0).
+pub fn testbench(cfg: &ArrayConfig, aw: u32) -> String {
     format!(
         "// Runs the machine (controller + pixel_array) on program.hex; compares the controller's
 // word with the control stream and every pixel's state with the expected one after every
@@ -429,7 +430,6 @@ endmodule
         sw = state_width(cfg),
         tasks = check_tasks(cfg, "dut.arr"),
         row = cfg.width * cfg.colour_bits as usize,
-        aw = ADDR_BITS,
         rw = record_bits(cfg),
     )
 }

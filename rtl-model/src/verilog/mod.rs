@@ -133,7 +133,10 @@ pub fn files() -> Result<Vec<(String, String)>, GoldenError> {
         "machine.v".to_string(),
         controller::machine_module(&cfg, controller::ADDR_BITS),
     ));
-    out.push(("tb_machine.v".to_string(), controller::testbench(&cfg)));
+    out.push((
+        "tb_machine.v".to_string(),
+        controller::testbench(&cfg, controller::ADDR_BITS),
+    ));
     out.push(("machine.f".to_string(), controller::filelist()));
     out.push(("panel.v".to_string(), controller::panel_module(&cfg)));
     out.push(("cost.ys".to_string(), cost_script()));

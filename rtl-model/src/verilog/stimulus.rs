@@ -62,7 +62,7 @@ pub fn machine_files(cfg: &ArrayConfig, ops: &[Op]) -> Result<Vec<(String, Strin
     Ok([
         ("controller.v", c::module(cfg)),
         ("machine.v", c::machine_module(cfg, aw)),
-        ("tb_machine.v", c::testbench(cfg)),
+        ("tb_machine.v", c::testbench(cfg, aw)),
         ("machine.f", c::filelist()),
         ("program.hex", c::program_hex(cfg, ops)?),
     ]
