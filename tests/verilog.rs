@@ -247,8 +247,9 @@ fn synthesizable_modules_are_lint_clean() {
         return;
     }
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("rtl-model/verilog");
-    let tops: [&[&str]; 5] = [
+    let tops: [&[&str]; 6] = [
         &["--top-module", "pixel_array", "-f", "pixel_array.f"],
+        &["--top-module", "panel", "-f", "machine.f", "panel.v"],
         &["sgene_derived.v"],
         &["sgene_printed.v"],
         &["comparator.v"],
@@ -853,7 +854,22 @@ fn export_verilog_scene_writes_the_cosimulation_files() {
             "{f}"
         );
     }
-    for f in ["tb_array.v", "pixel_array.f"] {
+    // The controller's memory image is the program's records, and the one the iCE40 flow
+    // builds into its block RAMs.
+    let hex = rtl_model::verilog::controller::program_hex(&cfg, &ops).unwrap();
+    assert_eq!(read("program.hex"), hex);
+    assert_eq!(
+        std::fs::read_to_string(vdir().join("fpga/program.hex")).unwrap(),
+        hex
+    );
+    for f in [
+        "tb_array.v",
+        "pixel_array.f",
+        "controller.v",
+        "machine.v",
+        "tb_machine.v",
+        "machine.f",
+    ] {
         assert_eq!(
             read(f),
             std::fs::read_to_string(vdir().join(f)).unwrap(),
@@ -1075,5 +1091,384 @@ fn speed_of_the_cycle_model_against_verilator() {
             rust / verilator
         );
         assert!(rust > 0.0 && verilator > 0.0);
+    }
+}
+
+/// What `tb_machine` printed: clocks before `go` (the controller's delay line), control
+/// words run and how many differed from the control stream, operations ended and registers
+/// that differed from the cycle model, and the `WORD` lines.
+#[derive(Debug)]
+struct Machine {
+    preroll: u64,
+    words: u64,
+    word_bad: u64,
+    clocks: u64,
+    ops: u64,
+    reg_bad: u64,
+    lines: String,
+}
+
+/// The numbers after `prefix` on the line that starts with it.
+fn numbers(text: &str, prefix: &str) -> Vec<u64> {
+    let line = text
+        .lines()
+        .find_map(|l| l.strip_prefix(prefix))
+        .unwrap_or_else(|| panic!("no {prefix} line:\n{text}"));
+    line.split_whitespace()
+        .filter_map(|x| x.parse().ok())
+        .collect()
+}
+
+/// Run the machine (the Verilog controller reading program.hex, and the array) on `ops`:
+/// program.hex from `controller::program_hex` (or `program`, standing in for it), the
+/// control stream and (with `states`) the expected states from the Rust models, the
+/// checked-in Verilog at 16×16 with a 256-record memory (otherwise generated into the
+/// directory by the same functions). The image the machine ends with must be the cycle
+/// model's.
+fn machine_cosim(
+    cfg: ArrayConfig,
+    ops: &[Op],
+    verilator: bool,
+    program: Option<&str>,
+    states: bool,
+) -> Machine {
+    use rtl_model::verilog::{controller, pixel, stimulus};
+    let set = Equations::Derived.set();
+    let tmp = tempfile::tempdir().unwrap();
+    let put = |n: &str, t: &str| std::fs::write(tmp.path().join(n), t).unwrap();
+    put("control.hex", &pixel::control_stream(&cfg, &set, ops));
+    if states {
+        put(
+            "expected.hex",
+            &expected_states(cfg, ops, &set).unwrap().text,
+        );
+    }
+    let hex = controller::program_hex(&cfg, ops).unwrap();
+    put("program.hex", program.unwrap_or(&hex));
+    let files = ["sgene_derived.v", "comparator.v", "depgen.v", "pixel.v"];
+    let mut srcs: Vec<String> = files
+        .iter()
+        .map(|f| vdir().join(f).to_str().unwrap().to_string())
+        .collect();
+    let sized = ["pixel_array.v", "controller.v", "machine.v", "tb_machine.v"];
+    let aw = controller::addr_bits(ops.len());
+    if (cfg.width, cfg.height, aw) == (16, 16, controller::ADDR_BITS) {
+        srcs.extend(
+            sized
+                .iter()
+                .map(|f| vdir().join(f).to_str().unwrap().to_string()),
+        );
+    } else {
+        let mut gen = stimulus::array_files(&cfg);
+        gen.extend(stimulus::machine_files(&cfg, ops).unwrap());
+        for f in sized {
+            let (_, text) = gen.iter().find(|(n, _)| n == f).unwrap();
+            put(f, text);
+            srcs.push(f.to_string());
+        }
+    }
+    let srcs: Vec<&str> = srcs.iter().map(String::as_str).collect();
+    let text = if verilator {
+        verilate(&srcs, "tb_machine", tmp.path());
+        ok(&run("obj_dir/Vtb_machine", &[], tmp.path()), "Vtb_machine")
+    } else {
+        let args = [&["-g2005", "-o", "tb"][..], &srcs[..]].concat();
+        ok(&run("iverilog", &args, tmp.path()), "iverilog");
+        ok(&run("vvp", &["-n", "tb"], tmp.path()), "vvp")
+    };
+    let (p, w, c) = (
+        numbers(&text, "PREROLL "),
+        numbers(&text, "WORDS "),
+        numbers(&text, "CLOCKS "),
+    );
+    assert_eq!(text.contains("CHECK off"), !states, "{text}");
+    let rows: Vec<&str> = text
+        .lines()
+        .filter_map(|l| l.strip_prefix("IMAGE "))
+        .collect();
+    let (last, _) = cycle_final(cfg, ops);
+    let digits = cfg.colour_bits.div_ceil(4) as usize;
+    for (i, row) in rows.iter().rev().enumerate() {
+        let n = row.len();
+        for x in 0..cfg.width {
+            let g = u32::from_str_radix(&row[n - (x + 1) * digits..n - x * digits], 16);
+            let want = last.pixels[i * cfg.width + x].creg(CReg::G);
+            if program.is_none() {
+                assert_eq!(g, Ok(want), "image pixel ({x}, {i})");
+            }
+        }
+    }
+    assert_eq!(rows.len(), cfg.height);
+    let lines = text
+        .lines()
+        .filter(|l| l.starts_with("WORD ") || l.starts_with("MISMATCH "))
+        .collect::<Vec<_>>()
+        .join("\n");
+    Machine {
+        preroll: p[0],
+        words: w[0],
+        word_bad: w[1],
+        clocks: c[0],
+        ops: c[1],
+        reg_bad: c[2],
+        lines,
+    }
+}
+
+/// The machine equals the models: every control word the Verilog controller produces from
+/// program.hex equals `control_stream`'s, and every register of every pixel after every
+/// clock equals the cycle model's; the stream's clocks and operations are the program's; the
+/// controller's delay line fills in DEPGEN's latency. On the four thesis windows (cube; the
+/// clipped boxes with the stack's push, NOT, AND and apply).
+#[test]
+fn icarus_machine_equals_the_control_stream_and_the_cycle_model() {
+    if !rtl_tools() {
+        return;
+    }
+    let cfg = ArrayConfig::new(16, 16);
+    for (names, clip, x0, y0, _) in WINDOWS {
+        let ops = thesis_program(names, clip, x0, y0);
+        let m = machine_cosim(cfg, &ops, false, None, true);
+        let want = expected_states(cfg, &ops, &Equations::Derived.set()).unwrap();
+        assert_eq!((m.word_bad, m.reg_bad), (0, 0), "{names:?}: {}", m.lines);
+        assert_eq!(m.words, want.cycles + 1, "{names:?}");
+        assert_eq!(m.clocks, want.cycles + 1, "{names:?}");
+        assert_eq!(m.ops, ops.len() as u64 + 1, "{names:?}: the flush window");
+        assert_eq!(m.preroll, cfg.depgen_latency(), "{names:?}");
+    }
+}
+
+/// The same under Verilator: the checked-in 16×16 machine on the clipped boxes, and a 4×4
+/// machine (2-level trees, a 3-clock delay line) generated by the same functions, on the
+/// boxes' corner where the three faces meet.
+#[test]
+fn verilator_machine_equals_the_control_stream_and_the_cycle_model() {
+    if !rtl_tools() {
+        return;
+    }
+    let (names, clip, x0, y0, _) = WINDOWS[2];
+    let ops = thesis_program(names, clip, x0, y0);
+    let m = machine_cosim(ArrayConfig::new(16, 16), &ops, true, None, true);
+    assert_eq!((m.word_bad, m.reg_bad), (0, 0), "{}", m.lines);
+    assert_eq!(m.ops, ops.len() as u64 + 1);
+    let cfg = ArrayConfig::new(4, 4);
+    let ops = thesis_program(&["box1", "box2"], Some("A.!B"), 204, 150);
+    let m = machine_cosim(cfg, &ops, true, None, true);
+    assert_eq!((m.word_bad, m.reg_bad), (0, 0), "{}", m.lines);
+    assert_eq!(m.preroll, 3);
+}
+
+/// The check is not vacuous: a program.hex with one record changed (a bit of the first
+/// plane's c0, the front plane's colour, the Close's L, the Compose's P) makes the
+/// controller's words differ from the stream and the named clock is in that record's
+/// operation (`WORD t expected … got …`).
+#[test]
+fn machine_cosimulation_catches_a_corrupted_program_record() {
+    if !rtl_tools() {
+        return;
+    }
+    use rtl_model::verilog::controller::{program_hex, record_bits};
+    let cfg = ArrayConfig::new(16, 16);
+    let ops = thesis_program(&["cube"], None, 56, 90);
+    let hex = program_hex(&cfg, &ops).unwrap();
+    let first_plane = ops
+        .iter()
+        .position(|o| matches!(o, Op::Plane { .. }))
+        .unwrap();
+    let close = ops
+        .iter()
+        .position(|o| matches!(o, Op::Close { .. }))
+        .unwrap();
+    // (record, bit): c0 bit 3, colour bit 0, L (externals bit 0, record bit 4).
+    for (rec, bit) in [(first_plane, 26 + 3), (first_plane, 10), (close, 4)] {
+        let mut lines: Vec<String> = hex.lines().map(String::from).collect();
+        let digits = record_bits(&cfg).div_ceil(4);
+        let d = digits - 1 - bit / 4;
+        let v = lines[rec].as_bytes()[d] as char;
+        let v = v.to_digit(16).unwrap() ^ 1 << (bit % 4);
+        lines[rec].replace_range(d..d + 1, &format!("{v:x}"));
+        let bad = lines.join("\n") + "\n";
+        let m = machine_cosim(cfg, &ops, false, Some(&bad), true);
+        assert!(m.word_bad > 0, "record {rec} bit {bit}: no word differs");
+        assert!(m.lines.contains("WORD "), "{}", m.lines);
+        eprintln!(
+            "record {rec} bit {bit}: {}",
+            m.lines.lines().next().unwrap()
+        );
+    }
+}
+
+/// An OpenSCAD scene on the machine: `vectors/scenes/csg-logo.csg` projected onto a 16×16
+/// array (iso view, its tree the clipping function, as `render --size 16x16` draws it):
+/// 6271 operations, so the program memory is generated with 13 address bits. Under
+/// Verilator every control word equals `control_stream`'s and the final image equals the
+/// cycle model's (the per-clock state file would be 1.2 GiB, so registers are compared at
+/// the end only, through the image).
+#[test]
+fn verilator_machine_draws_the_csg_logo() {
+    if !rtl_tools() {
+        return;
+    }
+    use csgpix::draw::scenes::Scene;
+    let cfg = ArrayConfig::new(16, 16);
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/scenes/csg-logo.csg");
+    let view = csgpix::draw::project::View::Iso;
+    let scene = Scene::load(&[path], None, view, &cfg).unwrap();
+    assert!(!scene.empty);
+    let expr = scene.clip.as_ref().expect("the tree clips");
+    let ops = clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits).unwrap();
+    assert_eq!(rtl_model::verilog::controller::addr_bits(ops.len()), 13);
+    let m = machine_cosim(cfg, &ops, true, None, false);
+    let (last, cycles) = cycle_final(cfg, &ops);
+    assert_eq!(m.word_bad, 0, "{}", m.lines);
+    assert_eq!(m.words, cycles + 1);
+    let colours: BTreeSet<u32> = last.pixels.iter().map(|p| p.creg(CReg::G)).collect();
+    assert!(colours.len() >= 3, "{colours:?}");
+    eprintln!(
+        "csg-logo: {} operations, {} clocks, {} colours",
+        ops.len(),
+        cycles,
+        colours.len()
+    );
+}
+
+/// Whether nextpnr-ice40 and icepack are installed (as `rtl_tools`: required under
+/// `CSGPIX_RTL_TOOLS=require`, which .ci/run sets after installing them).
+fn ice40_tools() -> bool {
+    let have = ["nextpnr-ice40", "icepack"]
+        .iter()
+        .all(|t| Command::new(t).arg("--help").output().is_ok());
+    let required = std::env::var("CSGPIX_RTL_TOOLS").is_ok_and(|v| v == "require");
+    assert!(
+        have || !required,
+        "CSGPIX_RTL_TOOLS=require but nextpnr-ice40 or icepack is missing \
+         (apt-get install nextpnr-ice40 fpga-icestorm)"
+    );
+    if !have {
+        eprintln!("skipped: nextpnr-ice40 or icepack not installed (apt-get install nextpnr-ice40 fpga-icestorm)");
+    }
+    have
+}
+
+/// The iCE40 flow on a small panel: `fpga/flow.sh hx8k 2 2` (the controller and 2×2 pixels)
+/// synthesizes without a latch, places, routes and packs a bitstream in a bounded time, meets
+/// the clock the checked-in report targets, and uses the logic cells and block RAMs the
+/// report states for that panel (Yosys and nextpnr with a fixed seed are deterministic).
+/// The same 2×2 machine, generated by the same functions, co-simulates with no mismatch.
+#[test]
+fn ice40_places_and_routes_a_small_panel_that_meets_the_reported_clock() {
+    if !rtl_tools() || !ice40_tools() {
+        return;
+    }
+    let fpga = vdir().join("fpga");
+    let tmp = tempfile::tempdir().unwrap();
+    let t0 = std::time::Instant::now();
+    let out = Command::new("sh")
+        .args(["flow.sh", "hx8k", "2", "2"])
+        .env("FPGA_BUILD", tmp.path())
+        .current_dir(&fpga)
+        .output()
+        .expect("sh flow.sh");
+    let secs = t0.elapsed().as_secs();
+    let text = ok(&out, "flow.sh hx8k 2 2");
+    let run: serde_json::Value = serde_json::from_str(text.trim()).unwrap();
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(fpga.join("report-hx8k.json")).unwrap())
+            .unwrap();
+    let stated = report["runs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["nx"] == 2 && r["ny"] == 2)
+        .expect("the report has the 2x2 panel");
+    assert_eq!(run["routed"], true, "{text}");
+    assert_eq!(run["meets"], true, "{text}");
+    assert_eq!(run["latches"], 0, "{text}");
+    assert!(run["fmax_mhz"].as_f64().unwrap() >= report["target_mhz"].as_f64().unwrap());
+    assert_eq!(run["target_mhz"], report["target_mhz"]);
+    assert_eq!(
+        (&run["lc"], &run["ram"]),
+        (&stated["lc"], &stated["ram"]),
+        "{text}"
+    );
+    assert!(tmp.path().join("hx8k-2x2/panel.bin").exists());
+    assert!(secs < 180, "place and route took {secs} s");
+    eprintln!("hx8k 2x2: {text} in {secs} s");
+    let cfg = ArrayConfig::new(2, 2);
+    let ops = thesis_program(&["cube"], None, 60, 100);
+    let m = machine_cosim(cfg, &ops, false, None, true);
+    assert_eq!((m.word_bad, m.reg_bad), (0, 0), "{}", m.lines);
+}
+
+/// `throughput --fpga` takes the clock and the panel from a place-and-route report: Table 2.1
+/// at that clock (eq. 2.5, Table 2.1 reading: S_n·S_m/(n·m) · t / (N_D · T_C)), the devices a
+/// 1024×1024 screen needs (one panel each) and the screen's surfaces per frame at that clock
+/// and at the thesis's 10 MHz, computed here from the report's own numbers. A file that is not
+/// such a report is one line and exit 2.
+#[test]
+fn throughput_fpga_recomputes_table_2_1_at_the_reported_clock() {
+    let path = vdir().join("fpga/report-hx8k.json");
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let out = csgpix(&["throughput", "--fpga", path.to_str().unwrap(), "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let clock = report["clock_mhz"].as_f64().unwrap() * 1e6;
+    let (nx, ny) = (
+        report["largest_panel"]["nx"].as_u64().unwrap(),
+        report["largest_panel"]["ny"].as_u64().unwrap(),
+    );
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs();
+    assert!(close(r["hardware"]["clock_hz"].as_f64().unwrap(), clock));
+    let row = r["panels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["panel"][0] == 16)
+        .unwrap();
+    assert!(close(
+        row["table"].as_f64().unwrap(),
+        4096.0 * 0.02 * clock / 32.0
+    ));
+    let f = &r["fpga"];
+    assert_eq!(
+        (f["panel"][0].as_u64(), f["panel"][1].as_u64()),
+        (Some(nx), Some(ny))
+    );
+    assert_eq!(
+        f["devices_for_screen"],
+        1024u64.div_ceil(nx) * 1024u64.div_ceil(ny)
+    );
+    let ratio = (1024.0 * 1024.0) / (nx * ny) as f64;
+    let at = |hz: f64| ratio * 0.02 * hz / 32.0;
+    assert!(close(
+        f["screen_surfaces_per_frame"].as_f64().unwrap(),
+        at(clock)
+    ));
+    assert!(close(
+        f["screen_surfaces_per_frame_thesis"].as_f64().unwrap(),
+        at(10e6)
+    ));
+    let tmp = tempfile::tempdir().unwrap();
+    let bad = tmp.path().join("bad.json");
+    for (text, said) in [
+        ("{\"device\": \"x\"}", "no /largest_panel/nx"),
+        ("not json", "expected ident"),
+        (
+            "{\"device\":\"x\",\"largest_panel\":{\"nx\":2,\"ny\":2,\"critical_path\":\"\"},\
+             \"clock_mhz\":-1,\"lc_per_pixel\":1}",
+            "/clock_mhz is not a positive number",
+        ),
+    ] {
+        std::fs::write(&bad, text).unwrap();
+        let out = csgpix(&["throughput", "--fpga", bad.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(said), "{said}: {err}");
     }
 }

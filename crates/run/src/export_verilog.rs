@@ -37,7 +37,8 @@ pub struct Args {
     /// Only compare with the files in the directory; exit 1 on any difference.
     #[arg(long, conflicts_with = "scene")]
     check: bool,
-    /// A display list (thesis §5.2) to run on the array; repeat for more objects (A, B, …).
+    /// A display list (thesis §5.2) to run on the array; repeat for more objects (A, B, …);
+    /// or one OpenSCAD .csg/.scad scene, projected onto the --size array.
     /// Writes tb_array's stimulus (control.hex), the state it must see after every clock
     /// (expected.hex), the image (expected.png), the Verilog it is built from and run.sh.
     #[arg(long, value_name = "FILE.dl")]
@@ -105,6 +106,7 @@ fn scene(a: &Args) -> crate::Result<ExitCode> {
     let want = stimulus::expected_states(cfg, &ops, &set)?;
     let control = pixel::control_stream(&cfg, &set, &ops);
     let mut files = stimulus::array_files(&cfg);
+    files.extend(stimulus::machine_files(&cfg, &ops).map_err(|e| Error::options("--scene", e))?);
     files.push(("control.hex".into(), control));
     files.push(("run.sh".into(), stimulus::run_script(&want.summary())));
     for (name, text) in &files {
@@ -120,31 +122,22 @@ fn scene(a: &Args) -> crate::Result<ExitCode> {
 
 /// The scene's program for the window at `--origin`: display lists compiled as `render`
 /// compiles them, then moved so the array's pixel (0, 0) is the screen's (x0, y0).
+/// A `.csg` or `.scad` scene is projected onto the `--size` array, as `render --size` does
+/// (its tree is the clipping function); a tree that evaluates to nothing draws no plane.
 fn program(a: &Args, cfg: &ArrayConfig) -> crate::Result<Vec<Op>> {
-    if let Some(p) = a.scene.iter().find(|p| !is_display_list(p)) {
-        let message = format!(
-            "--scene {}: export-verilog takes display lists (.dl)",
-            p.display()
-        );
-        return Err(Error::options("--scene", message));
-    }
     let view = super::ViewArg::default().into();
     let scene =
         Scene::load(&a.scene, a.clip.as_deref(), view, cfg).map_err(super::lib_errors::load)?;
     check_window(&scene, cfg, a.origin)
         .map_err(|(i, e)| Error::Scene(scene.locate_error(i, &e)))?;
-    let mut ops = match &scene.clip {
-        None => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
-        Some(expr) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
+    let mut ops = match (&scene.clip, scene.empty) {
+        (_, true) => Ok(vec![]),
+        (None, false) => scene_ops(&scene.lists, &cfg.fmt, cfg.colour_bits),
+        (Some(expr), false) => clip_scene_ops(&scene.lists, expr, &cfg.fmt, cfg.colour_bits),
     }
     .map_err(|(i, e)| Error::Scene(scene.locate_error(i, &e)))?;
     translate(&mut ops, a.origin.0, a.origin.1);
     Ok(ops)
-}
-
-fn is_display_list(p: &Path) -> bool {
-    !p.extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("csg") || e.eq_ignore_ascii_case("scad"))
 }
 
 /// Refuse a plane whose value leaves the depth word somewhere on the window the array shows
@@ -273,6 +266,9 @@ fn report(dir: &Path, cfg: &ArrayConfig, files: &[(String, String)], want: &stim
     println!("  icarus:    cd {d} && {}", stimulus::ICARUS);
     println!("  verilator: cd {d} && {}", stimulus::VERILATOR);
     println!("  or:        sh {d}/run.sh [icarus|verilator]   (exit 0 only on that line)");
+    println!("run tb_machine (the controller reads program.hex; every word and register checked):");
+    println!("  icarus:    cd {d} && {}", stimulus::MACHINE_ICARUS);
+    println!("  verilator: cd {d} && {}", stimulus::MACHINE_VERILATOR);
 }
 
 /// `s` as one shell word: as it is when it needs no quoting, else in single quotes.

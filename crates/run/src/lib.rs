@@ -50,6 +50,7 @@ pub mod store;
 pub mod study;
 pub mod sweep;
 pub mod throughput;
+pub mod throughput_fpga;
 pub mod value;
 pub mod verify_select;
 pub mod voxelize;

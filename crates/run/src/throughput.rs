@@ -33,7 +33,8 @@ use super::ViewArg;
     csgpix throughput --scene vectors/scenes/csg-logo.csg --panel 128x128\n  \
     csgpix throughput --scene vectors/scenes/twelve.csg --view top --simulate --screen 256x256\n  \
     csgpix throughput --plots docs/img --scene vectors/scenes/csg-logo.csg\n  \
-    csgpix throughput --area 100000 --lut 6            # which panels fit 100,000 LUT6")]
+    csgpix throughput --area 100000 --lut 6            # which panels fit 100,000 LUT6\n  \
+    csgpix throughput --fpga rtl-model/verilog/fpga/report-hx8k.json  # at the measured clock")]
 pub struct Args {
     /// Screen S_n x S_m in pixels.
     #[arg(long, default_value = "1024x1024", value_parser = parse_size)]
@@ -73,6 +74,11 @@ pub struct Args {
     /// docs/verilog.md; DEPGEN and the controller are not counted).
     #[arg(long, value_name = "LUTS")]
     area: Option<u64>,
+    /// A place-and-route report (rtl-model/verilog/fpga/report-DEVICE.json): every figure at
+    /// the clock its largest panel met, and that panel (one device) costed for --screen
+    /// beside the thesis's 10 MHz.
+    #[arg(long, value_name = "REPORT.json", conflicts_with = "clock")]
+    fpga: Option<PathBuf>,
     /// LUT size for --area: 4 or 6 inputs.
     #[arg(long, default_value = "6", value_parser = lut_inputs)]
     lut: u8,
@@ -118,6 +124,8 @@ struct Report {
     scene: Option<SceneReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
     area: Option<AreaReport>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fpga: Option<super::throughput_fpga::FpgaReport>,
 }
 
 #[derive(Serialize)]
@@ -148,11 +156,19 @@ struct SceneReport {
 }
 
 pub fn run(a: Args) -> crate::Result<ExitCode> {
-    let hw = Hardware {
+    let mut hw = Hardware {
         bits: a.bits,
         clock_hz: a.clock,
         frame_s: a.frame,
     };
+    let fpga = a
+        .fpga
+        .as_ref()
+        .map(|p| super::throughput_fpga::report(p, &hw, a.screen))
+        .transpose()?;
+    if let Some(f) = &fpga {
+        hw.clock_hz = f.clock_hz;
+    }
     let panels = match a.panel {
         Some(p) => vec![p],
         None => table_panels(a.screen),
@@ -191,6 +207,7 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         slices_per_second_one_array: slices_per_second(surfaces_per_second(&hw), ns),
         scene,
         area: a.area.map(|budget| area_report(budget, a.lut, &panels)),
+        fpga,
     };
     if let Some(dir) = plots {
         write_plots(&mut outs, dir, &hw, a.screen, report.scene.as_ref())?;
@@ -391,6 +408,9 @@ fn print_text(r: &Report) {
     }
     if let Some(a) = &r.area {
         print_area(a);
+    }
+    if let Some(f) = &r.fpga {
+        super::throughput_fpga::print(f, r.screen);
     }
 }
 

@@ -9,6 +9,7 @@
 
 pub mod check;
 pub mod comparator;
+pub mod controller;
 pub mod depgen;
 pub mod pixel;
 pub mod sgene;
@@ -127,6 +128,17 @@ pub fn files() -> Result<Vec<(String, String)>, GoldenError> {
     out.push(("pixel_array.v".to_string(), pixel::array_module(&cfg)));
     out.push(("tb_array.v".to_string(), pixel::testbench(&cfg)));
     out.push(("pixel_array.f".to_string(), filelist()));
+    out.push(("controller.v".to_string(), controller::module(&cfg)));
+    out.push((
+        "machine.v".to_string(),
+        controller::machine_module(&cfg, controller::ADDR_BITS),
+    ));
+    out.push((
+        "tb_machine.v".to_string(),
+        controller::testbench(&cfg, controller::ADDR_BITS),
+    ));
+    out.push(("machine.f".to_string(), controller::filelist()));
+    out.push(("panel.v".to_string(), controller::panel_module(&cfg)));
     out.push(("cost.ys".to_string(), cost_script()));
     Ok(out)
 }

@@ -68,7 +68,7 @@ pub const CW: usize = 48;
 /// before they are written.
 pub const MAX_CLOCKS_LOG2: u32 = 20;
 
-fn field(name: &str) -> (usize, usize) {
+pub(crate) fn field(name: &str) -> (usize, usize) {
     let f = FIELDS.iter().find(|f| f.0 == name).expect("field");
     (f.1, f.2)
 }
@@ -404,6 +404,39 @@ fn tb_common(cfg: &ArrayConfig, name: &str) -> String {
 /// 20th), then `CLOCKS n OPS m MISMATCHES b`. Without the expected file it only runs (`CHECK
 /// off`).
 pub fn testbench(cfg: &ArrayConfig) -> String {
+    format!(
+        "// Runs a control stream through pixel_array and compares every register of every pixel
+// with the expected state after every clock; generated, do not edit. Control word fields:
+// pixel.rs FIELDS; state fields: pixel.rs state_fields.
+{common}{tasks}    initial begin
+        if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
+        if (!$value$plusargs(\"exp=%s\", efile)) efile = \"expected.hex\";
+        $readmemh(file, mem);
+        fd = $fopen(efile, \"r\");
+        if (fd == 0) $display(\"CHECK off\");
+        #1 clk = 1; #1 clk = 0; rst = 0;
+        while (!done && bad < 20) begin
+            c = mem[t];
+            #1 clk = 1; #1 clk = 0;
+            if (fd != 0) check_all;
+            if (c[1]) ops = ops + 1;
+            done = c[0];
+            t = t + 1;
+        end
+        $display(\"CLOCKS %0d OPS %0d MISMATCHES %0d\", t, ops, bad);
+        $finish;
+    end
+endmodule
+",
+        common = tb_common(cfg, "tb_array"),
+        tasks = check_tasks(cfg, "dut"),
+    )
+}
+
+/// The expected-state check of a testbench (`tb_array`, `tb_machine`): the tasks `field`,
+/// `check` and `check_all`, which read one line per pixel of `+exp` and compare it with the
+/// pixel's `state` (reached as `{array}.gy[y].gx[x].p.state`), counting in `bad`.
+pub(crate) fn check_tasks(cfg: &ArrayConfig, array: &str) -> String {
     let mut fields = String::new();
     let mut lo = 0;
     for (name, w) in state_fields(cfg) {
@@ -414,16 +447,13 @@ pub fn testbench(cfg: &ArrayConfig) -> String {
     for y in 0..cfg.height {
         for x in 0..cfg.width {
             all += &format!(
-                "            st[{}] = dut.gy[{y}].gx[{x}].p.state;\n",
+                "            st[{}] = {array}.gy[{y}].gx[{x}].p.state;\n",
                 y * cfg.width + x
             );
         }
     }
     format!(
-        "// Runs a control stream through pixel_array and compares every register of every pixel
-// with the expected state after every clock; generated, do not edit. Control word fields:
-// pixel.rs FIELDS; state fields: pixel.rs state_fields.
-{common}    reg [8*256-1:0] efile;
+        "    reg [8*256-1:0] efile;
     reg [SW-1:0] s, e;
     reg [SW-1:0] st [0:NX*NY-1];
     integer fd, n, p, bad = 0;
@@ -459,27 +489,7 @@ pub fn testbench(cfg: &ArrayConfig) -> String {
             end
         end
     endtask
-    initial begin
-        if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
-        if (!$value$plusargs(\"exp=%s\", efile)) efile = \"expected.hex\";
-        $readmemh(file, mem);
-        fd = $fopen(efile, \"r\");
-        if (fd == 0) $display(\"CHECK off\");
-        #1 clk = 1; #1 clk = 0; rst = 0;
-        while (!done && bad < 20) begin
-            c = mem[t];
-            #1 clk = 1; #1 clk = 0;
-            if (fd != 0) check_all;
-            if (c[1]) ops = ops + 1;
-            done = c[0];
-            t = t + 1;
-        end
-        $display(\"CLOCKS %0d OPS %0d MISMATCHES %0d\", t, ops, bad);
-        $finish;
-    end
-endmodule
-",
-        common = tb_common(cfg, "tb_array"),
+"
     )
 }
 

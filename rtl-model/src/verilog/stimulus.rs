@@ -45,6 +45,32 @@ pub fn array_files(cfg: &ArrayConfig) -> Vec<(String, String)> {
     .collect()
 }
 
+/// Build and run `tb_machine` (the controller reading `program.hex`) under Icarus Verilog.
+pub const MACHINE_ICARUS: &str =
+    "iverilog -g2005 -o tb_machine.vvp -f machine.f tb_machine.v && vvp -n tb_machine.vvp";
+
+/// Build and run `tb_machine` under Verilator.
+pub const MACHINE_VERILATOR: &str = "verilator --binary --timing -j 2 -Wno-WIDTH \
+    --top-module tb_machine -f machine.f tb_machine.v && obj_dir/Vtb_machine";
+
+/// What `tb_machine` needs beside [`array_files`] for `ops` on `cfg`: the controller, the
+/// machine (its program memory as large as the program needs), the testbench, the filelist
+/// and the memory image `program.hex`.
+pub fn machine_files(cfg: &ArrayConfig, ops: &[Op]) -> Result<Vec<(String, String)>, String> {
+    use super::controller as c;
+    let aw = c::addr_bits(ops.len());
+    Ok([
+        ("controller.v", c::module(cfg)),
+        ("machine.v", c::machine_module(cfg, aw)),
+        ("tb_machine.v", c::testbench(cfg, aw)),
+        ("machine.f", c::filelist()),
+        ("program.hex", c::program_hex(cfg, ops)?),
+    ]
+    .into_iter()
+    .map(|(n, t)| (n.to_string(), t))
+    .collect())
+}
+
 /// The most clocks a control stream may have: `tb_array` holds 2^20 words, the idle clock
 /// that carries `last` included.
 pub const MAX_CYCLES: u64 = (1 << pixel::MAX_CLOCKS_LOG2) - 1;
@@ -189,7 +215,7 @@ fn rotate(v: u64, w: usize, moved: usize) -> u64 {
 }
 
 /// Bits, LSB first, as hex digits, most significant first.
-fn hex(bits: &[bool]) -> String {
+pub(crate) fn hex(bits: &[bool]) -> String {
     (0..bits.len().div_ceil(4))
         .rev()
         .map(|d| {
