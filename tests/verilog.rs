@@ -1333,6 +1333,68 @@ fn verilator_machine_draws_the_csg_logo() {
 }
 
 /// Whether nextpnr-ice40 and icepack are installed (as `rtl_tools`: required under
+/// The panel's serial loader (`panel.v`, `tb_panel.v`): the memory starts blank (END
+/// records: the first run draws nothing, `fold` 0); a program shifted in a bit a clock
+/// under `ld_hold`, each record written with `ld_we`, then runs when the hold ends, and the
+/// panel's `fold` (the XOR of every pixel's G) is the cycle model's. On a 2×2 window of the
+/// cube whose fold is not 0, so a loader that wrote nothing would show.
+#[test]
+fn icarus_panel_loads_a_program_serially_and_runs_it() {
+    use rtl_model::verilog::{controller, stimulus};
+    if !rtl_tools() {
+        return;
+    }
+    let cfg = ArrayConfig::new(2, 2);
+    let fold = |ops: &[Op]| {
+        let (last, _) = cycle_final(cfg, ops);
+        let g = last.pixels.iter().map(|p| p.creg(CReg::G));
+        g.fold(0, |a, b| a ^ b)
+    };
+    let origins = [(60, 100), (56, 90), (64, 96), (70, 110), (58, 104)];
+    let (ops, want) = origins
+        .iter()
+        .map(|&(x, y)| thesis_program(&["cube"], None, x, y))
+        .map(|ops| {
+            let f = fold(&ops);
+            (ops, f)
+        })
+        .find(|(_, f)| *f != 0)
+        .expect("a window whose fold is not 0");
+    let tmp = tempfile::tempdir().unwrap();
+    let put = |n: &str, t: &str| std::fs::write(tmp.path().join(n), t).unwrap();
+    let mut gen = stimulus::array_files(&cfg);
+    gen.extend(stimulus::machine_files(&cfg, &ops).unwrap());
+    for f in ["pixel_array.v", "controller.v", "machine.v", "program.hex"] {
+        put(f, &gen.iter().find(|(n, _)| n == f).unwrap().1);
+    }
+    put("blank.hex", &"0\n".repeat(1 << controller::ADDR_BITS));
+    let mut srcs: Vec<String> = ["sgene_derived.v", "comparator.v", "depgen.v", "pixel.v"]
+        .iter()
+        .chain(&["panel.v", "tb_panel.v"])
+        .map(|f| vdir().join(f).to_str().unwrap().to_string())
+        .collect();
+    srcs.extend(["pixel_array.v", "controller.v", "machine.v"].map(String::from));
+    let args: Vec<&str> = ["-g2005", "-o", "tb"]
+        .into_iter()
+        .chain(srcs.iter().map(String::as_str))
+        .collect();
+    ok(&run("iverilog", &args, tmp.path()), "iverilog");
+    let n = format!("+n={}", ops.len() + 1);
+    let text = ok(&run("vvp", &["-n", "tb", &n], tmp.path()), "vvp");
+    let field = |label: &str, i: usize| {
+        let line = text
+            .lines()
+            .find_map(|l| l.strip_prefix(label))
+            .unwrap_or("");
+        line.split_whitespace().nth(i).map(str::to_string)
+    };
+    let hex = |s: Option<String>| s.and_then(|s| u32::from_str_radix(&s, 16).ok());
+    assert_eq!(hex(field("BEFORE ", 0)), Some(0), "{text}");
+    assert_eq!(field("BEFORE ", 1).as_deref(), Some("1"), "{text}");
+    assert_eq!(hex(field("AFTER ", 0)), Some(want), "{text}");
+    assert_eq!(field("AFTER ", 1).as_deref(), Some("1"), "{text}");
+}
+
 /// `CSGPIX_RTL_TOOLS=require`, which .ci/run sets after installing them).
 fn ice40_tools() -> bool {
     let have = ["nextpnr-ice40", "icepack"]

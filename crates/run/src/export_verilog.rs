@@ -106,7 +106,8 @@ fn scene(a: &Args) -> crate::Result<ExitCode> {
     let want = stimulus::expected_states(cfg, &ops, &set)?;
     let control = pixel::control_stream(&cfg, &set, &ops);
     let mut files = stimulus::array_files(&cfg);
-    files.extend(stimulus::machine_files(&cfg, &ops).map_err(|e| Error::options("--scene", e))?);
+    let machine = stimulus::machine_files(&cfg, &ops);
+    files.extend(machine.map_err(|e| Error::options("--scene", e.to_string()))?);
     files.push(("control.hex".into(), control));
     files.push(("run.sh".into(), stimulus::run_script(&want.summary())));
     for (name, text) in &files {

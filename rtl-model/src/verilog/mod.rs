@@ -139,6 +139,7 @@ pub fn files() -> Result<Vec<(String, String)>, GoldenError> {
     ));
     out.push(("machine.f".to_string(), controller::filelist()));
     out.push(("panel.v".to_string(), controller::panel_module(&cfg)));
+    out.push(("tb_panel.v".to_string(), controller::panel_testbench(&cfg)));
     out.push(("cost.ys".to_string(), cost_script()));
     Ok(out)
 }

@@ -56,7 +56,10 @@ pub const MACHINE_VERILATOR: &str = "verilator --binary --timing -j 2 -Wno-WIDTH
 /// What `tb_machine` needs beside [`array_files`] for `ops` on `cfg`: the controller, the
 /// machine (its program memory as large as the program needs), the testbench, the filelist
 /// and the memory image `program.hex`.
-pub fn machine_files(cfg: &ArrayConfig, ops: &[Op]) -> Result<Vec<(String, String)>, String> {
+pub fn machine_files(
+    cfg: &ArrayConfig,
+    ops: &[Op],
+) -> Result<Vec<(String, String)>, super::controller::RecordError> {
     use super::controller as c;
     let aw = c::addr_bits(ops.len());
     Ok([
