@@ -425,13 +425,7 @@ module tb_machine;
     machine #(.NX(NX), .NY(NY)) dut(.clk(clk), .rst(rst), .we(1'b0), .wa({{{aw}{{1'b0}}}}),
         .wd({{{rw}{{1'b0}}}}), .cw(cw), .go(go), .done(fin), .image(image));
 {tasks}    initial begin
-        if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
-        if (!$value$plusargs(\"exp=%s\", efile)) efile = \"expected.hex\";
-        $readmemh(file, mem);
-        fd = $fopen(efile, \"r\");
-        if (fd == 0) $display(\"CHECK off\");
-        #1 clk = 1; #1 clk = 0; rst = 0;
-        while (!go && pre < 64) begin
+{open}        while (!go && pre < 64) begin
             #1 clk = 1; #1 clk = 0;
             pre = pre + 1;
         end
@@ -463,6 +457,7 @@ endmodule
         cb = cfg.colour_bits,
         sw = state_width(cfg),
         tasks = check_tasks(cfg, "dut.arr"),
+        open = super::pixel::OPEN_STREAMS,
         row = cfg.width * cfg.colour_bits as usize,
         rw = record_bits(cfg),
     )

@@ -396,6 +396,17 @@ fn tb_common(cfg: &ArrayConfig, name: &str) -> String {
     )
 }
 
+/// A testbench's start: the control stream (`+ctl`, `control.hex` by default) into `mem`,
+/// the expected states (`+exp`, `expected.hex`) opened or `CHECK off`, one clock in reset.
+pub(crate) const OPEN_STREAMS: &str =
+    "        if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
+        if (!$value$plusargs(\"exp=%s\", efile)) efile = \"expected.hex\";
+        $readmemh(file, mem);
+        fd = $fopen(efile, \"r\");
+        if (fd == 0) $display(\"CHECK off\");
+        #1 clk = 1; #1 clk = 0; rst = 0;
+";
+
 /// `tb_array`: reads the control stream `+ctl=FILE` (default `control.hex`, one word per
 /// clock until the word with `last`) and the expected states `+exp=FILE` (default
 /// `expected.hex`): after every clock, one line per pixel (row-major), the pixel's `state` in
@@ -409,13 +420,7 @@ pub fn testbench(cfg: &ArrayConfig) -> String {
 // with the expected state after every clock; generated, do not edit. Control word fields:
 // pixel.rs FIELDS; state fields: pixel.rs state_fields.
 {common}{tasks}    initial begin
-        if (!$value$plusargs(\"ctl=%s\", file)) file = \"control.hex\";
-        if (!$value$plusargs(\"exp=%s\", efile)) efile = \"expected.hex\";
-        $readmemh(file, mem);
-        fd = $fopen(efile, \"r\");
-        if (fd == 0) $display(\"CHECK off\");
-        #1 clk = 1; #1 clk = 0; rst = 0;
-        while (!done && bad < 20) begin
+{open}        while (!done && bad < 20) begin
             c = mem[t];
             #1 clk = 1; #1 clk = 0;
             if (fd != 0) check_all;
@@ -430,6 +435,7 @@ endmodule
 ",
         common = tb_common(cfg, "tb_array"),
         tasks = check_tasks(cfg, "dut"),
+        open = OPEN_STREAMS,
     )
 }
 
