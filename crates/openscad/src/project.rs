@@ -361,11 +361,7 @@ pub(crate) fn leaves(n: &CsgNode) -> Vec<usize> {
     while let Some(n) = stack.pop() {
         match n {
             CsgNode::Solid(i) => out.push(*i),
-            CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
-                stack.extend(c.iter())
-            }
-            CsgNode::Complement(c) => stack.push(c),
-            CsgNode::Empty => {}
+            _ => stack.extend(n.children()),
         }
     }
     out

@@ -810,12 +810,10 @@ impl<'a> Reader<'a> {
 
     /// Every leaf of `n` leaves the scene at the end ([`Self::drop_consumed`]).
     fn consume(&mut self, n: &CsgNode) {
-        let mut stack = vec![n];
-        while let Some(n) = stack.pop() {
-            match n {
-                CsgNode::Solid(i) if *i >= IMPORTED => self.consumed_imports.push(*i - IMPORTED),
-                CsgNode::Solid(i) => self.consumed_solids.push(*i),
-                _ => stack.extend(n.children()),
+        for i in crate::project::leaves(n) {
+            match i.checked_sub(IMPORTED) {
+                Some(j) => self.consumed_imports.push(j),
+                None => self.consumed_solids.push(i),
             }
         }
     }
