@@ -9,7 +9,8 @@
 
 mod common;
 
-use common::{have_openscad, iou, scene_occupancy};
+use common::{have_openscad, scene_occupancy};
+use csgpix_testkit::iou;
 
 use std::io::Read;
 use std::path::{Path, PathBuf};

@@ -10,7 +10,8 @@
 
 mod common;
 
-use common::{have_openscad, iou};
+use common::have_openscad;
+use csgpix_testkit::iou;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -138,7 +139,11 @@ fn off_faces(csg: &Path, lo: [f64; 3], hi: [f64; 3]) -> Vec<bool> {
     // 2^-(F+1)·(1 + x + y) pixels at the far corner (thesis word): K's error in pixels.
     let v = grid.voxel();
     let tol = (1.0 + 2.0 * n as f64) / 2048.0 * v.x.max(v.y);
-    let planes: Vec<_> = scene.solids.iter().map(common::face_planes).collect();
+    let planes: Vec<_> = scene
+        .solids
+        .iter()
+        .map(csgpix_testkit::face_planes)
+        .collect();
     (0..n * n * n)
         .map(|idx| {
             let p = grid.centre(idx % n, idx / n % n, idx / (n * n));

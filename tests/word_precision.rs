@@ -8,13 +8,13 @@
 
 mod common;
 
-use common::primitive;
 use csgpix::draw::float::rounding_bound;
 use csgpix::draw::project::perpendicular_scale;
 use csgpix::openscad::parse_csg;
 use csgpix::scene::solid::CsgScene;
 use csgpix::voxel::slice::SliceEval;
 use csgpix::voxel::{voxelize, Grid, Route, Slicer, SlicerOptions, Volume};
+use csgpix_testkit::primitive;
 use proptest::prelude::*;
 use rtl_model::{Equations, WordFormat};
 

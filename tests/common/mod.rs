@@ -1,43 +1,9 @@
-//! Helpers shared by the integration tests: random scenes, and running the binary.
+//! Helpers shared by the integration tests: running the binary, its memory, OpenSCAD's
+//! meshes; the random scenes are csgpix-testkit's.
 // Each test crate uses only some of these.
 #![allow(dead_code)]
 
-use proptest::prelude::*;
-use std::f64::consts::PI;
-
-/// A primitive of the `.csg` subset, placed by a random rotation and shift.
-pub fn primitive() -> impl Strategy<Value = String> {
-    let shape = prop_oneof![
-        (2.0..12.0f64, 2.0..12.0f64, 2.0..12.0f64)
-            .prop_map(|(a, b, c)| format!("cube(size = [{a:.3}, {b:.3}, {c:.3}], center = true);")),
-        (3usize..14, 1.0..6.0f64).prop_map(|(n, r)| format!("sphere($fn = {n}, r = {r:.3});")),
-        (3usize..14, 2.0..10.0f64, 0.0..5.0f64, 1.0..5.0f64).prop_map(|(n, h, r1, r2)| format!(
-            "cylinder($fn = {n}, h = {h:.3}, r1 = {r1:.3}, r2 = {r2:.3}, center = true);"
-        )),
-    ];
-    (shape, -PI..PI, -PI..PI, prop::array::uniform3(-4.0..4.0f64)).prop_map(|(shape, a, b, t)| {
-        // Rotation about z by a, then about x by b.
-        let (ca, sa, cb, sb) = (a.cos(), a.sin(), b.cos(), b.sin());
-        let m = [
-            [ca, -sa, 0.0, t[0]],
-            [sa * cb, ca * cb, -sb, t[1]],
-            [sa * sb, ca * sb, cb, t[2]],
-        ];
-        let row = |r: [f64; 4]| format!("[{:.6}, {:.6}, {:.6}, {:.6}]", r[0], r[1], r[2], r[3]);
-        format!(
-            "multmatrix([{}, {}, {}, [0, 0, 0, 1]]) {{ {shape} }}",
-            row(m[0]),
-            row(m[1]),
-            row(m[2])
-        )
-    })
-}
-
-pub fn random_scene() -> impl Strategy<Value = String> {
-    let op = prop_oneof![Just("union"), Just("difference"), Just("intersection")];
-    (op, prop::collection::vec(primitive(), 1..4))
-        .prop_map(|(op, kids)| format!("{op}() {{\n{}\n}}\n", kids.join("\n")))
-}
+use csgpix_testkit::iou;
 
 /// Run the `csgpix` binary from the crate's root.
 pub fn csgpix(args: &[&str]) -> std::process::Output {
@@ -46,22 +12,6 @@ pub fn csgpix(args: &[&str]) -> std::process::Output {
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()
         .expect("run csgpix")
-}
-
-/// Outward face planes (unit normal, offset) of a convex solid, by Newell's method: the
-/// geometry direct evaluation checks the slices against.
-pub fn face_planes(s: &csgpix::scene::solid::ConvexSolid) -> Vec<(glam::DVec3, f64)> {
-    use glam::DVec3;
-    s.faces
-        .iter()
-        .map(|f| {
-            let v = |i: usize| DVec3::from(s.vertices[f[i % f.len()]]);
-            let n: DVec3 = (0..f.len()).map(|i| v(i).cross(v(i + 1))).sum();
-            let n = n.normalize();
-            let c: DVec3 = (0..f.len()).map(v).sum::<DVec3>() / f.len() as f64;
-            (n, n.dot(c))
-        })
-        .collect()
 }
 
 /// A volume from a voxel predicate (1 inside, 0 outside; X fastest).
@@ -182,17 +132,6 @@ pub fn off_triangles(text: &str) -> Option<Vec<[[f64; 3]; 3]>> {
 pub fn read_off(path: &std::path::Path) -> Vec<[[f64; 3]; 3]> {
     let text = std::fs::read_to_string(path).unwrap();
     off_triangles(&text).unwrap_or_else(|| panic!("{}: not an OFF mesh", path.display()))
-}
-
-/// Intersection over union of two occupancies (1 when both are empty).
-pub fn iou(a: &[bool], b: &[bool]) -> f64 {
-    let both = a.iter().zip(b).filter(|(x, y)| **x && **y).count();
-    let either = a.iter().zip(b).filter(|(x, y)| **x || **y).count();
-    if either == 0 {
-        1.0
-    } else {
-        both as f64 / either as f64
-    }
 }
 
 /// The occupancy of a scene on `grid` by `route` (Blist, derived equations), its imports

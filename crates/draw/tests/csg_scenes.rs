@@ -6,9 +6,7 @@ use csgpix_draw::compile::clip_scene_ops;
 use csgpix_draw::float::agreement;
 use csgpix_draw::project::{project, View};
 use csgpix_openscad::parse_csg;
-mod common;
-
-use common::random_scene;
+use csgpix_testkit::random_scene;
 use proptest::prelude::*;
 use rtl_model::program::CReg;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray};

@@ -1,14 +1,12 @@
 //! Rendering on panels (§2.5) gives the whole screen's image: every panel runs only the solids
 //! binned to it, moved to its origin, and panels no solid touches are not simulated at all.
 
-mod common;
-
-use common::random_scene;
 use csgpix_draw::compile::clip_scene_ops;
 use csgpix_draw::panels::{render_on_panels, PanelScene};
 use csgpix_draw::project::{project, View};
 use csgpix_openscad::parse_csg;
 use csgpix_scene::solid::CsgScene;
+use csgpix_testkit::random_scene;
 use proptest::prelude::*;
 use rtl_model::program::{CReg, Reg};
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, WordArray, WordFormat};

@@ -9,6 +9,7 @@ use csgpix_scene::solid::CsgScene;
 use csgpix_sculpt::estimate::triangles;
 use csgpix_sculpt::octree::depth_for;
 use csgpix_sculpt::octree::estimate::volume_counts;
+use csgpix_testkit::{primitive_or_unturned as primitive, scene_of};
 use csgpix_voxel::blist::BlistEval;
 use csgpix_voxel::cells::cell_counts;
 use csgpix_voxel::sampled::Sampled;
@@ -67,38 +68,10 @@ fn check_with(
     Some([(bound.internal(), actual.internal()), (tb, ta)])
 }
 
-/// A box, sphere, cylinder or cone, rotated (or not: faces along the axes) and shifted.
-fn primitive() -> impl Strategy<Value = String> {
-    let shape = prop_oneof![
-        (2.0..12.0f64, 2.0..12.0f64, 2.0..12.0f64)
-            .prop_map(|(a, b, c)| format!("cube(size = [{a:.3}, {b:.3}, {c:.3}], center = true);")),
-        (3usize..14, 1.0..6.0f64).prop_map(|(n, r)| format!("sphere($fn = {n}, r = {r:.3});")),
-        (3usize..14, 2.0..10.0f64, 0.0..5.0f64, 1.0..5.0f64).prop_map(|(n, h, r1, r2)| format!(
-            "cylinder($fn = {n}, h = {h:.3}, r1 = {r1:.3}, r2 = {r2:.3}, center = true);"
-        )),
-    ];
-    let turn = prop_oneof![Just((0.0, 0.0)), (-PI..PI, -PI..PI)];
-    (shape, turn, prop::array::uniform3(-4.0..4.0f64)).prop_map(|(shape, (a, b), t)| {
-        let (ca, sa, cb, sb) = (f64::cos(a), f64::sin(a), f64::cos(b), f64::sin(b));
-        let m = [
-            [ca, -sa, 0.0, t[0]],
-            [sa * cb, ca * cb, -sb, t[1]],
-            [sa * sb, ca * sb, cb, t[2]],
-        ];
-        let row = |r: [f64; 4]| format!("[{:.6}, {:.6}, {:.6}, {:.6}]", r[0], r[1], r[2], r[3]);
-        format!(
-            "multmatrix([{}, {}, {}, [0, 0, 0, 1]]) {{ {shape} }}",
-            row(m[0]),
-            row(m[1]),
-            row(m[2])
-        )
-    })
-}
-
+/// One operation over one to three boxes, spheres, cylinders or cones, each rotated (or not:
+/// faces along the axes) and shifted.
 fn scene() -> impl Strategy<Value = String> {
-    let op = prop_oneof![Just("union"), Just("difference"), Just("intersection")];
-    (op, prop::collection::vec(primitive(), 1..4))
-        .prop_map(|(op, kids)| format!("{op}() {{\n{}\n}}\n", kids.join("\n")))
+    scene_of(primitive())
 }
 
 proptest! {

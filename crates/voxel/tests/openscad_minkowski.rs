@@ -12,9 +12,7 @@
 //! pairwise sums; a random difference of two boxes ⊕ a random box is, voxel for voxel, the set
 //! of centres p for which the box p − C meets X (decided exactly, box against boxes).
 
-mod common;
-
-use common::iou;
+use csgpix_testkit::iou;
 
 use std::path::{Path, PathBuf};
 

@@ -2,11 +2,9 @@
 //! panels and slabs each primitive touches gives the volume of simulating the whole array for
 //! every frame, bit for bit, on every example scene and on random ones, for both models.
 
-mod common;
-
-use common::random_scene;
 use csgpix_openscad::parse_csg;
 use csgpix_scene::solid::CsgScene;
+use csgpix_testkit::random_scene;
 use csgpix_voxel::blist::BlistEval;
 use csgpix_voxel::footprints;
 use csgpix_voxel::{voxelize, Grid, Route, Slicer, SlicerOptions, Volume, Work};

@@ -3,8 +3,6 @@
 //! every evaluator, any panel size, convex solids, meshes and datasets; the same slices when
 //! handed on slab by slab; and every primitive's footprint inside the outline it is visited on.
 
-mod common;
-
 use std::path::PathBuf;
 
 use csgpix_openscad::parse_csg;
@@ -89,7 +87,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
     #[test]
     fn runs_are_the_slab_routes_voxels(
-        text in common::random_scene(),
+        text in csgpix_testkit::random_scene(),
         dims in prop::array::uniform3(1usize..19),
         slab in any::<bool>(),
         e in 0usize..3,
@@ -109,7 +107,7 @@ proptest! {
 
     #[test]
     fn footprints_lie_inside_the_outlines(
-        text in common::random_scene(),
+        text in csgpix_testkit::random_scene(),
         dims in prop::array::uniform3(1usize..40),
         slab in any::<bool>(),
     ) {
@@ -124,7 +122,7 @@ proptest! {
 
     #[test]
     fn run_slices_are_the_whole_runs(
-        text in common::random_scene(),
+        text in csgpix_testkit::random_scene(),
         cuts in prop::collection::vec(0usize..20, 0..3),
         float in any::<bool>(),
     ) {
@@ -301,7 +299,7 @@ proptest! {
     /// A brick (any box of columns × any slab range) is that part of the whole volume.
     #[test]
     fn bricks_are_parts_of_the_whole_volume(
-        text in common::random_scene(),
+        text in csgpix_testkit::random_scene(),
         corner in prop::array::uniform3(0usize..17),
         size in prop::array::uniform3(0usize..17),
         float in any::<bool>(),

@@ -3,11 +3,9 @@
 //! display list, no depth word, no slab), apart from centres within one depth unit of a face;
 //! and the thesis's slab sampling is not (it dilates subtracted solids).
 
-mod common;
-
-use common::{face_planes as planes, random_scene};
 use csgpix_openscad::parse_csg;
 use csgpix_scene::solid::CsgScene;
+use csgpix_testkit::{face_planes as planes, random_scene};
 use csgpix_voxel::evaluate::direct;
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{voxelize, Grid, Route, Sampling, Slicer, SlicerOptions, Volume};

@@ -2,8 +2,6 @@
 //! the whole run's, whatever the route, the scene or where the ranges cut, and the ranges'
 //! work adds up to the whole run's.
 
-mod common;
-
 use csgpix_openscad::parse_csg;
 use csgpix_voxel::blist::BlistEval;
 use csgpix_voxel::sampled::load_scene;
@@ -74,7 +72,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(24))]
     #[test]
     fn slab_ranges_are_the_whole_runs_slices(
-        text in common::random_scene(),
+        text in csgpix_testkit::random_scene(),
         cuts in prop::collection::vec(0usize..40, 0..4),
         route in 0usize..4,
     ) {

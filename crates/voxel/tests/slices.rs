@@ -1,10 +1,8 @@
 //! Slices of primitives (§4.4): the processor's P·Vz images (`cycle` and `word`) against the
 //! interval route that shortcuts them, voxel for voxel, and against exact f64 intervals.
 
-mod common;
-
-use common::random_scene;
 use csgpix_openscad::parse_csg;
+use csgpix_testkit::random_scene;
 use csgpix_voxel::{array_mask, float_ranges, word_ranges, Grid, Sampling, Slicer, SlicerOptions};
 use proptest::prelude::*;
 use rtl_model::Equations;
