@@ -192,6 +192,18 @@ impl Cap {
     }
 }
 
+/// An upper bound of a slab route's memory over `grid` (the slicer's, or fewer slabs of it):
+/// every primitive's per-pixel slab ranges and the threads' state
+/// ([`csgpix_voxel::memory_estimate`]), and the imports' samples.
+pub fn slab_route_estimate(
+    slicer: &csgpix_voxel::Slicer,
+    grid: &csgpix_voxel::Grid,
+    threads: usize,
+) -> u64 {
+    csgpix_voxel::memory_estimate(grid, slicer.primitive_count(), threads)
+        .saturating_add(imports_estimate(slicer))
+}
+
 /// Bytes the slab routes hold for the imports of `slicer` (datasets' samples, meshes' runs).
 pub fn imports_estimate(slicer: &csgpix_voxel::Slicer) -> u64 {
     let each = slicer

@@ -23,8 +23,8 @@ use csgpix_voxel::sampled::{
 };
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{
-    memory_estimate, voxelize, voxelize_slabs, voxelize_streaming, BindingProblem,
-    Error as VoxelError, Grid, GridSpec, Route, Sampling, Slicer, SlicerOptions, Volume, Work,
+    voxelize, voxelize_slabs, voxelize_streaming, BindingProblem, Error as VoxelError, Grid,
+    GridSpec, Route, Sampling, Slicer, SlicerOptions, Volume, Work,
 };
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -331,8 +331,7 @@ impl Voxelization {
         }
         let mut held = slicer.grid;
         held.dims[2] = z.len().max(1);
-        memory_estimate(&held, slicer.primitive_count(), threads)
-            .saturating_add(crate::memory::imports_estimate(slicer))
+        crate::memory::slab_route_estimate(slicer, &held, threads)
     }
 
     /// Slabs `z` of the volume: the slices' bytes, x fastest, then y, then k.
@@ -1117,11 +1116,8 @@ fn estimate(
         true => runs_nrrd
             .unwrap_or_else(|| csgpix_voxel::runs::memory_estimates(slicer, eval, threads))
             [usize::from(whole_volume)],
-        false => memory_estimate(grid, slicer.primitive_count(), threads),
+        false => crate::memory::slab_route_estimate(slicer, grid, threads),
     };
-    if !runs {
-        need = need.saturating_add(crate::memory::imports_estimate(slicer));
-    }
     if let Some(st) = a.store {
         need = need.saturating_add(octree::memory_estimate(st.kind(), grid.dims)?);
         if runs {
