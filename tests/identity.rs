@@ -12,7 +12,9 @@
 //! and the voxelize cases' NRRD files when volumes came to say `space: 3D-right-handed` (8
 //! bytes shorter; the voxels unchanged; the cases give `--res` per axis since `--res N` came
 //! to mean the longest side), and `bad-prim`'s message when `--expr` errors came to give the
-//! line and column (`--expr:1:3: primitive …`).
+//! line and column (`--expr:1:3: primitive …`), and `voxelize-expr`'s `--json` report when a
+//! dataset's runs came to be counted (its memory estimate, 18,197,312 → 17,368,484; the volume
+//! unchanged).
 //! A refactoring that changes no behaviour leaves every line equal. Timings (`*seconds*`, `*_s` JSON fields, `time` lines) are removed from
 //! standard output before digesting: they are the only bytes that differ from run to run.
 //!

@@ -720,23 +720,102 @@ pub fn sweep_slices<E: From<crate::Error>>(
     Ok(work)
 }
 
-/// Runs a column of a panel can have: one, plus two per run of each of its `prims`
-/// primitives (a convex solid has one run, a mesh about one per two crossings: taken as
-/// [`MESH_RUNS`], as [`crate::sampled::Sampled::memory_estimate`] takes two crossings), never
-/// more than the slabs.
-fn segments_bound(slicer: &Slicer, prims: &[u32], nz: u64) -> u64 {
+/// Segments the columns of a panel can have: per column one, plus two per run of each of its
+/// `prims` primitives (a convex solid has one run, a mesh about one per two crossings: taken
+/// as [`MESH_RUNS`], as [`crate::sampled::Sampled::memory_estimate`] takes two crossings, a
+/// dataset as many as the slabs unless `counts` counted its runs, then those), never more
+/// than the slabs.
+fn segments_bound(slicer: &Slicer, prims: &[u32], counts: &DatasetCounts, i: usize) -> u64 {
+    let [pw, ph] = counts.panel.map(|p| p as u64);
+    let (columns, nz) = (pw.saturating_mul(ph), slicer.grid.dims[2] as u64);
     let solids = slicer.lists.len();
     let runs: u64 = prims
         .iter()
-        .map(
-            |&p| match slicer.sampled.get((p as usize).wrapping_sub(solids)) {
+        .map(|&p| {
+            let j = (p as usize).wrapping_sub(solids);
+            match slicer.sampled.get(j) {
                 None => 1,
+                Some(_) if counts.counted[j] => 0,
                 Some(s) if s.is_dataset() => nz,
                 Some(_) => MESH_RUNS,
-            },
-        )
+            }
+        })
         .sum();
-    runs.saturating_mul(2).saturating_add(1).min(nz.max(1))
+    let each = runs.saturating_mul(2).saturating_add(1);
+    let counted = counts.per_panel[i].saturating_mul(2);
+    columns
+        .saturating_mul(each)
+        .saturating_add(counted)
+        .min(columns.saturating_mul(nz.max(1)))
+}
+
+/// The runs of the datasets that go a lattice cell at a time ([`DatasetColumns::by_cells`]),
+/// counted panel by panel by walking their columns (nothing is kept): a dataset's runs
+/// follow its surface, which no bound from the scene sees, and counting costs a fraction of
+/// the voxelization (the per-voxel datasets keep the slabs as their bound).
+struct DatasetCounts {
+    panel: [usize; 2],
+    /// Per import, whether its runs are counted.
+    counted: Vec<bool>,
+    /// Per panel (row-major), the counted runs on its columns.
+    per_panel: Vec<u64>,
+}
+
+impl DatasetCounts {
+    fn of(slicer: &Slicer, panel: [usize; 2], lists: &[Vec<u32>]) -> DatasetCounts {
+        let datasets: Vec<Option<DatasetColumns>> = (slicer.sampled.iter())
+            .map(|s| DatasetColumns::new(s, &slicer.grid).filter(DatasetColumns::by_cells))
+            .collect();
+        let counted: Vec<bool> = datasets.iter().map(Option::is_some).collect();
+        let per_panel = match counted.contains(&true) {
+            false => vec![0; lists.len()],
+            true => (lists.par_iter().enumerate())
+                .map(|(i, l)| count_panel(slicer, panel, i, l, &datasets))
+                .collect(),
+        };
+        DatasetCounts {
+            panel,
+            counted,
+            per_panel,
+        }
+    }
+}
+
+/// The runs `datasets` give on the columns of panel `i`, whose primitives are `prims`, as
+/// [`Columns::panel_runs`] takes them.
+fn count_panel(
+    slicer: &Slicer,
+    [pw, ph]: [usize; 2],
+    i: usize,
+    prims: &[u32],
+    datasets: &[Option<DatasetColumns>],
+) -> u64 {
+    let [nx, ny, _] = slicer.grid.dims;
+    let (px, py) = (i % nx.div_ceil(pw), i / nx.div_ceil(pw));
+    let b = PixelBox {
+        x0: px * pw,
+        y0: py * ph,
+        x1: ((px + 1) * pw).min(nx),
+        y1: ((py + 1) * ph).min(ny),
+    };
+    let (mut column, mut span, mut n) = (Column::default(), vec![], 0u64);
+    for &p in prims {
+        let j = (p as usize).wrapping_sub(slicer.lists.len());
+        let Some(Some(d)) = datasets.get(j) else {
+            continue;
+        };
+        let Some(o) = slicer.outlines[p as usize].and_then(|o| o.intersect(b)) else {
+            continue;
+        };
+        for y in o.y0..o.y1 {
+            for x in o.x0..o.x1 {
+                span.clear();
+                d.runs(x, y, &mut column, &mut span);
+                n += span.iter().filter(|(a, b)| a <= b).count() as u64;
+            }
+        }
+    }
+    n
 }
 
 /// Runs assumed per column for a mesh primitive in the memory estimate.
@@ -810,9 +889,10 @@ struct PanelBytes {
 
 impl PanelBytes {
     fn of(slicer: &Slicer, eval: &dyn SliceEval) -> PanelBytes {
-        let [nx, _, nz] = slicer.grid.dims.map(|d| d as u64);
+        let nx = slicer.grid.dims[0] as u64;
         let panel = slicer.panel.unwrap_or(DEFAULT_PANEL).map(|p| p.max(1));
         let lists = panel_lists(slicer, panel);
+        let counts = DatasetCounts::of(slicer, panel, &lists);
         let [pw, ph] = panel.map(|p| p as u64);
         let across = nx.div_ceil(pw) as usize;
         let prims = slicer.primitive_count() as u64;
@@ -820,7 +900,7 @@ impl PanelBytes {
         let mut kept_all = Vec::with_capacity(lists.len());
         for (i, l) in lists.iter().enumerate() {
             let columns = pw.saturating_mul(ph);
-            let segs = columns.saturating_mul(segments_bound(slicer, l, nz));
+            let segs = segments_bound(slicer, l, &counts, i);
             // Segments (4 bytes), their labels (4) and runs (8), the runs' handles (24 a
             // column), the primitive runs held (16 each), the masks (32 a primitive, a bit a
             // segment for the panel's own) and the evaluator's state.
