@@ -139,10 +139,16 @@ pub fn zarr_write_rows<'py>(
     let route = opts.route(&slicer);
     let threads = pool.current_num_threads();
     let layout = store.layout();
-    let need = estimate(&slicer, route, eval.as_ref(), threads, &layout).map_err(zarr)?;
-    check_memory(need, max_memory)?;
-    let set = Equations::Derived.set();
     let (rows, tiles) = (rows.0..rows.1, tiles.map(|(t0, t1)| t0..t1));
+    let need = estimate(
+        &slicer,
+        route,
+        eval.as_ref(),
+        threads,
+        (&layout, tiles.clone()),
+    );
+    check_memory(need.map_err(zarr)?, max_memory)?;
+    let set = Equations::Derived.set();
     let work = py
         .detach(|| {
             pool.install(|| {

@@ -1105,7 +1105,8 @@ fn estimate(
     #[cfg(feature = "zarr")]
     if a.format() == FormatArg::Zarr {
         // Nothing else is held: check_format refuses --store beside a Zarr store.
-        let need = crate::zarr::estimate(slicer, route, eval, threads, &zarr_layout(a));
+        let layout = zarr_layout(a);
+        let need = crate::zarr::estimate(slicer, route, eval, threads, (&layout, None));
         return need.map_err(|e| zarr_message(e, a));
     }
     let grid = &slicer.grid;

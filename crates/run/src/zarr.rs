@@ -7,7 +7,7 @@ use std::ops::Range;
 use std::path::Path;
 
 use csgpix_voxel::slice::SliceEval;
-use csgpix_voxel::{Grid, Route, Slicer, Work};
+use csgpix_voxel::{Grid, PixelBox, Route, Slicer, Work};
 use csgpix_zarr::{voxelize_bricks, voxelize_rows, Layout, VolumeAttrs, ZarrVolume};
 use rtl_model::EquationSet;
 
@@ -38,21 +38,28 @@ pub fn by_bricks(route: Route) -> bool {
 }
 
 /// The memory of voxelizing chunk rows of a store cut by `layout` on the slicer's grid with
-/// `threads` threads (docs/memory.md): on the run route a tile's runs and the writer's
-/// bricks, else the rows' slabs, the writer's and the imports' samples.
+/// `threads` threads (docs/memory.md): on the run route a tile's runs (of `tiles`, a task's
+/// share of [`ZarrVolume::tiles`], or of any tile) and the writer's bricks, else the rows'
+/// slabs, the writer's and the imports' samples.
 pub fn estimate(
     slicer: &Slicer,
     route: Route,
     eval: &dyn SliceEval,
     threads: usize,
-    layout: &Layout,
+    (layout, tiles): (&Layout, Option<Range<usize>>),
 ) -> Result<u64, csgpix_zarr::Error> {
     let grid = &slicer.grid;
     if by_bricks(route) {
         let levels = csgpix_zarr::plan(grid.dims, layout)?;
         let tile = csgpix_zarr::tile(grid.dims, &levels);
         let writer = csgpix_zarr::writer_bytes_bricks(grid.dims, layout, threads)?;
-        let runs = csgpix_voxel::runs::memory_estimate_bricks(slicer, eval, threads, tile);
+        // A task's tiles: only their panels' datasets are walked to count their runs.
+        let boxes = csgpix_zarr::tile_boxes(grid.dims, tile);
+        let within = tiles.and_then(|t| boxes.get(t)).map(|b| {
+            let all = b.iter().copied().reduce(PixelBox::union);
+            all.unwrap_or(PixelBox::new(0, 0, 0, 0))
+        });
+        let runs = csgpix_voxel::runs::memory_estimate_bricks(slicer, eval, threads, tile, within);
         return Ok(runs.saturating_add(writer));
     }
     let prims = slicer.primitive_count();

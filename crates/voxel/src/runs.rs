@@ -362,6 +362,18 @@ fn window(b: PixelBox) -> Window {
     }
 }
 
+/// Panel `i`'s columns (row-major over the array), cut by the grid's edges.
+fn panel_box(slicer: &Slicer, [pw, ph]: [usize; 2], i: usize) -> PixelBox {
+    let [nx, ny, _] = slicer.grid.dims;
+    let (px, py) = (i % nx.div_ceil(pw), i / nx.div_ceil(pw));
+    PixelBox {
+        x0: px * pw,
+        y0: py * ph,
+        x1: ((px + 1) * pw).min(nx),
+        y1: ((py + 1) * ph).min(ny),
+    }
+}
+
 /// Per panel, the primitives whose outline meets it, in index order.
 fn panel_lists(slicer: &Slicer, [pw, ph]: [usize; 2]) -> Vec<Vec<u32>> {
     let [w, h, _] = slicer.grid.dims;
@@ -790,14 +802,7 @@ fn count_panel(
     prims: &[u32],
     datasets: &[Option<DatasetColumns>],
 ) -> u64 {
-    let [nx, ny, _] = slicer.grid.dims;
-    let (px, py) = (i % nx.div_ceil(pw), i / nx.div_ceil(pw));
-    let b = PixelBox {
-        x0: px * pw,
-        y0: py * ph,
-        x1: ((px + 1) * pw).min(nx),
-        y1: ((py + 1) * ph).min(ny),
-    };
+    let b = panel_box(slicer, [pw, ph], i);
     let (mut column, mut span, mut n) = (Column::default(), vec![], 0u64);
     for &p in prims {
         let j = (p as usize).wrapping_sub(slicer.lists.len());
@@ -834,7 +839,7 @@ pub fn memory_estimate(slicer: &Slicer, eval: &dyn SliceEval, threads: usize, vo
 /// runs swept slice by slice) and with it.
 pub fn memory_estimates(slicer: &Slicer, eval: &dyn SliceEval, threads: usize) -> [u64; 2] {
     let [nx, ny, nz] = slicer.grid.dims.map(|d| d as u64);
-    let panels = PanelBytes::of(slicer, eval);
+    let panels = PanelBytes::of(slicer, eval, None);
     let volume = nx
         .saturating_mul(ny)
         .saturating_mul(nz)
@@ -850,15 +855,17 @@ pub fn memory_estimates(slicer: &Slicer, eval: &dyn SliceEval, threads: usize) -
 
 /// [`memory_estimate`] of a run by bricks of `tile` columns (X, Y; tiles start at its
 /// multiples), one brick at a time: the largest tile's runs instead of the grid's (the
-/// brick's voxels are the writer's to count).
+/// brick's voxels are the writer's to count). `within`: the columns of the tiles the run
+/// computes (a task's), if not all: only their panels are counted.
 pub fn memory_estimate_bricks(
     slicer: &Slicer,
     eval: &dyn SliceEval,
     threads: usize,
     tile: [usize; 2],
+    within: Option<PixelBox>,
 ) -> u64 {
     let [nx, ny, _] = slicer.grid.dims;
-    let panels = PanelBytes::of(slicer, eval);
+    let panels = PanelBytes::of(slicer, eval, within);
     let [pw, ph] = panels.panel;
     let across = nx.div_ceil(pw);
     let [tx, ty] = tile.map(|t| t.max(1));
@@ -878,7 +885,8 @@ pub fn memory_estimate_bricks(
 }
 
 /// What each panel of a run-route run holds: its runs, kept while its band's slices are
-/// written, and the largest band's transient state.
+/// written, and the largest band's transient state; where `within` is given, the panels
+/// that do not meet it are taken as empty (their datasets' runs not counted).
 struct PanelBytes {
     panel: [usize; 2],
     /// Per panel (row-major), its columns' runs and their handles.
@@ -888,10 +896,17 @@ struct PanelBytes {
 }
 
 impl PanelBytes {
-    fn of(slicer: &Slicer, eval: &dyn SliceEval) -> PanelBytes {
+    fn of(slicer: &Slicer, eval: &dyn SliceEval, within: Option<PixelBox>) -> PanelBytes {
         let nx = slicer.grid.dims[0] as u64;
         let panel = slicer.panel.unwrap_or(DEFAULT_PANEL).map(|p| p.max(1));
-        let lists = panel_lists(slicer, panel);
+        let mut lists = panel_lists(slicer, panel);
+        if let Some(w) = within {
+            for (i, l) in lists.iter_mut().enumerate() {
+                if panel_box(slicer, panel, i).intersect(w).is_none() {
+                    *l = vec![];
+                }
+            }
+        }
         let counts = DatasetCounts::of(slicer, panel, &lists);
         let [pw, ph] = panel.map(|p| p as u64);
         let across = nx.div_ceil(pw) as usize;

@@ -252,6 +252,40 @@ fn a_dataset_by_cells_by_runs() {
     }
 }
 
+/// A dataset's runs are counted for the estimate, and a task that computes some tiles counts
+/// only theirs: each tile's estimate holds the runs its brick keeps (were its dataset left
+/// uncounted, a panel would be taken as one run a column, under them), no tile's is above
+/// the whole grid's, and the tiles away from the head cost less than the whole.
+#[test]
+fn a_tiles_estimate_counts_its_datasets_runs() {
+    use csgpix_voxel::runs::{memory_estimate_bricks, Columns, Run};
+    use csgpix_voxel::PixelBox;
+    let (scene, slicer) = loaded_slicer("figure-5.6.csg", [96, 96, 96], Some([16, 16]));
+    let eval = BlistEval::new(&scene.root);
+    let tile = [32, 32];
+    let whole = memory_estimate_bricks(&slicer, &eval, 1, tile, None);
+    let grid = PixelBox::new(0, 0, 96, 96);
+    assert_eq!(
+        memory_estimate_bricks(&slicer, &eval, 1, tile, Some(grid)),
+        whole
+    );
+    let columns = Columns::new(&slicer, false).unwrap();
+    let mut least = u64::MAX;
+    for (x, y) in (0..3).flat_map(|j| (0..3).map(move |i| (i * 32, j * 32))) {
+        let t = PixelBox::new(x, y, x + 32, y + 32);
+        let est = memory_estimate_bricks(&slicer, &eval, 1, tile, Some(t));
+        let brick = columns.brick(&eval, t);
+        let runs: usize = brick.bands.iter().map(|b| b.runs.len()).sum();
+        let kept = (runs * std::mem::size_of::<Run>() + t.pixels() * 8) as u64;
+        assert!(
+            kept <= est && est <= whole,
+            "{t:?}: {kept} kept, {est}, {whole}"
+        );
+        least = least.min(est);
+    }
+    assert!(least < whole, "{least} and {whole}");
+}
+
 /// Concave extrusions and a rotate_extrude become closed mesh primitives: their runs come
 /// from crossings kept over their outline only.
 #[test]

@@ -316,6 +316,25 @@ pub fn tile(dims: [usize; 3], levels: &[Level]) -> [usize; 2] {
     [side(2, dims[0]), side(1, dims[1])]
 }
 
+/// The tiles of a grid of `dims` cut every `tile` columns (X, Y), row-major: the columns of
+/// each brick.
+pub fn tile_boxes(dims: [usize; 3], [tx, ty]: [usize; 2]) -> Vec<PixelBox> {
+    let [nx, ny, _] = dims;
+    let (tx, ty) = (tx.max(1), ty.max(1));
+    (0..ny.div_ceil(ty))
+        .flat_map(|j| {
+            (0..nx.div_ceil(tx)).map(move |i| {
+                PixelBox::new(
+                    i * tx,
+                    j * ty,
+                    ((i + 1) * tx).min(nx),
+                    ((j + 1) * ty).min(ny),
+                )
+            })
+        })
+        .collect()
+}
+
 fn lcm(a: usize, b: usize) -> usize {
     let gcd = |mut a: usize, mut b: usize| {
         while b != 0 {
@@ -824,22 +843,9 @@ impl ZarrVolume {
         tile(self.grid.dims, &levels)
     }
 
-    /// The tiles of the grid, row-major: the columns of each brick.
+    /// The tiles of the grid, row-major: the columns of each brick ([`tile_boxes`]).
     pub fn tiles(&self) -> Vec<PixelBox> {
-        let [nx, ny, _] = self.grid.dims;
-        let [tx, ty] = self.tile();
-        (0..ny.div_ceil(ty))
-            .flat_map(|j| {
-                (0..nx.div_ceil(tx)).map(move |i| {
-                    PixelBox::new(
-                        i * tx,
-                        j * ty,
-                        ((i + 1) * tx).min(nx),
-                        ((j + 1) * ty).min(ny),
-                    )
-                })
-            })
-            .collect()
+        tile_boxes(self.grid.dims, self.tile())
     }
 
     /// Store the brick of chunk row `row` and the tile `columns` (one of [`tiles`](Self::tiles),
