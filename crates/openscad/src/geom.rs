@@ -305,14 +305,7 @@ pub(crate) fn minkowski3(
     budget: usize,
 ) -> csgpix_scene::Result<Vec<Piece>> {
     let mut out = Vec::new();
-    let mut used = 0usize;
-    let mut spend = |n: usize| -> csgpix_scene::Result<()> {
-        used = used.saturating_add(n);
-        if used > budget {
-            return Err(over_budget());
-        }
-        Ok(())
-    };
+    let mut spend = spender(budget);
     for p in a {
         for q in b {
             match (p, q) {
@@ -350,6 +343,19 @@ pub(crate) fn minkowski3(
         }
     }
     Ok(out)
+}
+
+/// What spends at most `budget` of the result's vertices: each call adds its count, an error
+/// once they pass the budget.
+fn spender(budget: usize) -> impl FnMut(usize) -> csgpix_scene::Result<()> {
+    let mut used = 0usize;
+    move |n| {
+        used = used.saturating_add(n);
+        match used > budget {
+            true => Err(over_budget()),
+            false => Ok(()),
+        }
+    }
 }
 
 fn over_budget() -> Error {
@@ -655,14 +661,7 @@ pub(crate) fn minkowski2(
     budget: usize,
 ) -> csgpix_scene::Result<Vec<Piece2>> {
     let mut out = Vec::new();
-    let mut used = 0usize;
-    let mut spend = |n: usize| -> csgpix_scene::Result<()> {
-        used = used.saturating_add(n);
-        if used > budget {
-            return Err(over_budget());
-        }
-        Ok(())
-    };
+    let mut spend = spender(budget);
     let sum = |x: &[DVec2], y: &[DVec2]| -> Option<Piece2> {
         let pts: Vec<DVec2> = x
             .iter()
