@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
-"""Fails when a crate's top-level modules import each other in a cycle.
+"""Fails when a crate's top-level modules, or the modules of one folder, import each other in
+a cycle.
 
 Each top-level module of a crate (`src/NAME.rs` with the files of `src/NAME/`) is a node; a
 path `crate::OTHER…`, `super::OTHER` or a name the crate root re-exports from OTHER, outside
-test code, is an edge. Test code is left out: everything from the first `#[cfg(test)] mod`
-of a file on, and the files such a declaration brings in. Prints every strongly connected
-group of more than one module and exits 1 if there is one.
+test code, is an edge. The same within each module folder (`src/P/`, module path P): its
+child modules are the nodes, and `super::OTHER` from a child's file, `crate::P::OTHER` or a
+name `P`'s `mod.rs` re-exports from OTHER are the edges. Test code is left out: everything
+from the first `#[cfg(test)] mod` of a file on, and the files such a declaration brings in.
+Prints every strongly connected group of more than one module and exits 1 if there is one.
 
 Usage: module_cycles.py CRATE_SRC_DIR...
 """
@@ -66,6 +69,42 @@ def edges_of(root):
     return mods, edges
 
 
+def folder_edges(root, folder):
+    """The child modules of module folder `folder` (under crate source `root`) and their
+    imports of each other."""
+    path = "::".join(os.path.relpath(folder, root).split(os.sep))
+    mods = sorted(
+        {f[:-3] for f in os.listdir(folder) if f.endswith(".rs") and f != "mod.rs"}
+        | {d for d in os.listdir(folder) if os.path.isdir(os.path.join(folder, d))}
+    )
+    head = os.path.join(folder, "mod.rs")
+    if not os.path.exists(head):
+        head = folder + ".rs"
+    reexports = []
+    if os.path.exists(head):
+        for mod, names in re.findall(r"pub(?:\([\w:]+\))? use (?:self::)?(\w+)::\{?([^;}]*)\}?;", body(head)):
+            reexports += [(mod, n) for n in re.findall(r"\w+", names)]
+    group = r"(?:\{((?:[^{}]|\{[^{}]*\})*)\}|(\w+))"
+    edges = collections.defaultdict(set)
+    for m in mods:
+        for file in files_of(folder, m):
+            text = body(file)
+            names = set()
+            found = re.findall(r"crate::" + path + r"::" + group, text)
+            if os.path.dirname(file) == folder:
+                found += re.findall(r"super::" + group, text)
+            for many, one in found:
+                names |= set(re.findall(r"\w+", many)) if many else {one}
+            names |= {mod for mod, n in reexports if n in names}
+            edges[m] |= {n for n in names if n in mods and n != m}
+    return mods, edges
+
+
+def folders(root):
+    """The module folders under crate source `root`."""
+    return sorted(d for d, _, _ in os.walk(root) if d != root)
+
+
 def cycles(mods, edges):
     """Tarjan's strongly connected groups of more than one module."""
     index, low, stack, on, out, counter = {}, {}, [], set(), [], [0]
@@ -100,12 +139,15 @@ def cycles(mods, edges):
 
 def main(roots):
     bad = 0
+    n_folders = 0
     for root in roots:
-        found = cycles(*edges_of(root))
-        for group in found:
-            print(f"{root}: modules import each other: {' ↔ '.join(group)}")
-        bad += len(found)
-    print(f"module cycles: {bad} in {len(roots)} crates")
+        for where in [root] + folders(root):
+            found = cycles(*(edges_of(root) if where == root else folder_edges(root, where)))
+            for group in found:
+                print(f"{where}: modules import each other: {' ↔ '.join(group)}")
+            bad += len(found)
+        n_folders += len(folders(root))
+    print(f"module cycles: {bad} in {len(roots)} crates and {n_folders} module folders")
     return 1 if bad else 0
 
 

@@ -140,7 +140,7 @@ pub fn program_hex(cfg: &ArrayConfig, ops: &[Op]) -> Result<String, RecordError>
     let mut text = String::new();
     let end = vec![false; record_bits(cfg)];
     for bits in ops.iter().map(|op| record(cfg, op)).chain([Ok(end)]) {
-        text += &super::stimulus::hex(&bits?);
+        text += &super::hex(&bits?);
         text.push('\n');
     }
     Ok(text)

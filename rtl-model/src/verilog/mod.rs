@@ -86,6 +86,19 @@ fn cost_script() -> String {
     v
 }
 
+/// Bits, LSB first, as hex digits, most significant first.
+pub(crate) fn hex(bits: &[bool]) -> String {
+    (0..bits.len().div_ceil(4))
+        .rev()
+        .map(|d| {
+            let v = (0..4)
+                .filter(|b| bits.get(d * 4 + b) == Some(&true))
+                .fold(0, |a, b| a | 1 << b);
+            char::from_digit(v, 16).unwrap()
+        })
+        .collect()
+}
+
 /// The synthesizable sources of `pixel_array`, leaves first, one a line: a filelist for
 /// `verilator -f`, `iverilog -c` and synthesis scripts.
 pub fn filelist() -> String {

@@ -9,6 +9,7 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
+use super::hex;
 use super::pixel::{self, state_fields, state_width};
 use crate::array::{check_program, Array};
 use crate::cycle::{Clock, Internal};
@@ -215,19 +216,6 @@ fn rotate(v: u64, w: usize, moved: usize) -> u64 {
     } else {
         (v >> r | v << (w - r)) & mask
     }
-}
-
-/// Bits, LSB first, as hex digits, most significant first.
-pub(crate) fn hex(bits: &[bool]) -> String {
-    (0..bits.len().div_ceil(4))
-        .rev()
-        .map(|d| {
-            let v = (0..4)
-                .filter(|b| bits.get(d * 4 + b) == Some(&true))
-                .fold(0, |a, b| a | 1 << b);
-            char::from_digit(v, 16).unwrap()
-        })
-        .collect()
 }
 
 /// Every pixel's `state` line, row-major.
