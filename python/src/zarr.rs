@@ -140,13 +140,11 @@ pub fn zarr_write_rows<'py>(
     let threads = pool.current_num_threads();
     let layout = store.layout();
     let (rows, tiles) = (rows.0..rows.1, tiles.map(|(t0, t1)| t0..t1));
-    let need = estimate(
-        &slicer,
-        route,
-        eval.as_ref(),
-        threads,
-        (&layout, tiles.clone()),
-    );
+    // The estimate walks a dataset's columns to count its runs: on the task's threads.
+    let need = py.detach(|| {
+        let within = (&layout, tiles.clone());
+        pool.install(|| estimate(&slicer, route, eval.as_ref(), threads, within))
+    });
     check_memory(need.map_err(zarr)?, max_memory)?;
     let set = Equations::Derived.set();
     let work = py

@@ -868,8 +868,12 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     let route = vox.route(&slicer);
     // The run route's NRRD estimates, with and without the volume: they decide whether the
     // file is streamed, and the one that applies is the run's.
-    let runs_nrrd = (matches!(route, Route::Runs { .. }) && a.format() == FormatArg::Nrrd)
-        .then(|| csgpix_voxel::runs::memory_estimates(&slicer, eval.as_ref(), threads));
+    // The estimates walk a dataset's columns to count its runs: on the run's own threads.
+    let pool = thread_pool(Some(threads))?;
+    let runs_nrrd =
+        (matches!(route, Route::Runs { .. }) && a.format() == FormatArg::Nrrd).then(|| {
+            pool.install(|| csgpix_voxel::runs::memory_estimates(&slicer, eval.as_ref(), threads))
+        });
     let stream = streams(&a, route, runs_nrrd);
     // `--store`: its nodes bounded from the scene (docs/memory.md).
     let store_bytes = match a.store {
@@ -884,15 +888,9 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         }
         None => None,
     };
-    let need = estimate(
-        &a,
-        &slicer,
-        route,
-        eval.as_ref(),
-        threads,
-        (stream, runs_nrrd),
-    )?
-    .saturating_add(store_bytes.map_or(0, |b| b.nodes));
+    let e = eval.as_ref();
+    let need = pool.install(|| estimate(&a, &slicer, route, e, threads, (stream, runs_nrrd)))?;
+    let need = need.saturating_add(store_bytes.map_or(0, |b| b.nodes));
     let fix = match a.format() {
         FormatArg::Nrrd => "lower --res",
         FormatArg::Zarr => "lower --res or --chunk",
@@ -901,7 +899,6 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
     let set = vox.equations.set();
     let t0 = Instant::now();
     let bar = progress(&slicer, route);
-    let pool = thread_pool(Some(threads))?;
     let tick = || bar.inc(1);
     // Refused by check_format when built without Zarr stores.
     #[cfg(feature = "zarr")]
