@@ -45,54 +45,31 @@ def body(path):
     return "\n".join(l for l in text.split("\n") if not l.strip().startswith("//"))
 
 
-def edges_of(root):
-    roots = [f for f in ("lib.rs", "main.rs") if os.path.exists(os.path.join(root, f))]
+def edges_of(root, folder):
+    """The child modules of module folder `folder` (the crate source `root` itself, or a
+    folder under it) and their imports of each other."""
+    top = folder == root
+    heads = ["lib.rs", "main.rs"] if top else ["mod.rs"]
+    heads = [os.path.join(folder, h) for h in heads] + ([] if top else [folder + ".rs"])
+    heads = [h for h in heads if os.path.exists(h)]
     mods = sorted(
-        {f[:-3] for f in os.listdir(root) if f.endswith(".rs") and f not in roots}
-        | {d for d in os.listdir(root) if os.path.isdir(os.path.join(root, d))}
-    )
-    reexports = []
-    for r in roots:
-        for mod, names in re.findall(r"pub use (\w+)::\{?([^;}]*)\}?;", open(os.path.join(root, r)).read()):
-            reexports += [(mod, n) for n in re.findall(r"\w+", names)]
-    edges = collections.defaultdict(set)
-    for m in mods:
-        for path in files_of(root, m):
-            text = body(path)
-            names = set()
-            for group, one in re.findall(r"crate::(?:\{((?:[^{}]|\{[^{}]*\})*)\}|(\w+))", text):
-                names |= set(re.findall(r"\w+", group)) if group else {one}
-            if os.path.dirname(path) == root:
-                names |= set(re.findall(r"super::(\w+)", text))
-            names |= {mod for mod, n in reexports if re.search(r"crate::" + n + r"\b", text)}
-            edges[m] |= {n for n in names if n in mods and n != m}
-    return mods, edges
-
-
-def folder_edges(root, folder):
-    """The child modules of module folder `folder` (under crate source `root`) and their
-    imports of each other."""
-    path = "::".join(os.path.relpath(folder, root).split(os.sep))
-    mods = sorted(
-        {f[:-3] for f in os.listdir(folder) if f.endswith(".rs") and f != "mod.rs"}
+        {f[:-3] for f in os.listdir(folder) if f.endswith(".rs")} - {os.path.basename(h)[:-3] for h in heads if os.path.dirname(h) == folder}
         | {d for d in os.listdir(folder) if os.path.isdir(os.path.join(folder, d))}
     )
-    head = os.path.join(folder, "mod.rs")
-    if not os.path.exists(head):
-        head = folder + ".rs"
     reexports = []
-    if os.path.exists(head):
-        for mod, names in re.findall(r"pub(?:\([\w:]+\))? use (?:self::)?(\w+)::\{?([^;}]*)\}?;", body(head)):
+    for h in heads:
+        for mod, names in re.findall(r"pub(?:\([\w:]+\))? use (?:self::)?(\w+)::\{?([^;}]*)\}?;", body(h)):
             reexports += [(mod, n) for n in re.findall(r"\w+", names)]
+    path = "" if top else "::".join(os.path.relpath(folder, root).split(os.sep)) + "::"
     group = r"(?:\{((?:[^{}]|\{[^{}]*\})*)\}|(\w+))"
     edges = collections.defaultdict(set)
     for m in mods:
         for file in files_of(folder, m):
             text = body(file)
-            names = set()
-            found = re.findall(r"crate::" + path + r"::" + group, text)
+            found = re.findall(r"crate::" + path + group, text)
             if os.path.dirname(file) == folder:
                 found += re.findall(r"super::" + group, text)
+            names = set()
             for many, one in found:
                 names |= set(re.findall(r"\w+", many)) if many else {one}
             names |= {mod for mod, n in reexports if n in names}
@@ -142,7 +119,7 @@ def main(roots):
     n_folders = 0
     for root in roots:
         for where in [root] + folders(root):
-            found = cycles(*(edges_of(root) if where == root else folder_edges(root, where)))
+            found = cycles(*edges_of(root, where))
             for group in found:
                 print(f"{where}: modules import each other: {' ↔ '.join(group)}")
             bad += len(found)
