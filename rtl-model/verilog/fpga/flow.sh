@@ -10,21 +10,13 @@
 set -eu
 dev=$1 nx=$2 ny=$3 freq=${4:-20}
 here=$(cd "$(dirname "$0")" && pwd)
-v=$here/..
-case $dev in
-    hx8k) pnr="--hx8k --package ct256" ;;
-    up5k) pnr="--up5k --package sg48" ;;
-    *) echo "usage: sh flow.sh hx8k|up5k NX NY [FREQ_MHZ]" >&2; exit 2 ;;
-esac
+. "$here/common.sh"
 out=${FPGA_BUILD:-$here/build}/$dev-${nx}x$ny
 mkdir -p "$out"
 cp "$here/program.hex" "$out/program.hex"
 cd "$out"
-srcs="$v/sgene_derived.v $v/comparator.v $v/depgen.v $v/pixel.v $v/pixel_array.v \
-$v/controller.v $v/machine.v $v/panel.v"
 t0=$(date +%s)
-yosys -q -l yosys.log -p "read_verilog $srcs; chparam -set NX $nx -set NY $ny panel; \
-synth_ice40 -top panel -json panel.json; stat" >/dev/null
+synth "$nx" "$ny"
 t1=$(date +%s)
 ok=1
 FREQ_MHZ=$freq nextpnr-ice40 $pnr --pcf "$here/$dev.pcf" --pre-pack "$here/clocks.py" \

@@ -10,20 +10,12 @@ here=$(cd "$(dirname "$0")" && pwd)
 dev=$1 size=$2
 shift 2
 nx=${size%x*} ny=${size#*x}
-v=$here/..
-case $dev in
-    hx8k) pnr="--hx8k --package ct256" ;;
-    up5k) pnr="--up5k --package sg48" ;;
-    *) echo "usage: sh seeds.sh hx8k|up5k NXxNY SEED..." >&2; exit 2 ;;
-esac
+. "$here/common.sh"
 out=${FPGA_BUILD:-$here/build}/seeds-$dev-$size
 mkdir -p "$out"
 cp "$here/program.hex" "$out/program.hex"
 cd "$out"
-srcs="$v/sgene_derived.v $v/comparator.v $v/depgen.v $v/pixel.v $v/pixel_array.v \
-$v/controller.v $v/machine.v $v/panel.v"
-yosys -q -l yosys.log -p "read_verilog $srcs; chparam -set NX $nx -set NY $ny panel; \
-synth_ice40 -top panel -json panel.json; stat" >/dev/null
+synth "$nx" "$ny"
 lines=$(mktemp)
 for seed in "$@"; do
     ok=true
