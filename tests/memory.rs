@@ -22,6 +22,14 @@ fn under_ulimit(kib: u64, args: &[&str]) -> std::process::Output {
         .expect("run sh")
 }
 
+/// The memory estimate (bytes) a run reports in `--json`: where `--max-memory 1` is refused by
+/// a limit that follows it (a dataset's samples, the reader's vertices) before the run's own.
+fn json_estimate(args: &[&str]) -> u64 {
+    let out = common::csgpix(&[args, &["--json"]].concat());
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    report["memory_estimate"].as_u64().unwrap()
+}
+
 fn refused(out: &std::process::Output, needle: &str) {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
@@ -481,9 +489,7 @@ fn estimates_are_above_the_measured_peaks() {
     for res in ["512x512x512", "1024x1024x1024"] {
         let args = ["voxelize", "vectors/scenes/figure-5.6.csg", "--res", res];
         let args = [&args[..], &["-o", &nrrd]].concat();
-        let out = common::csgpix(&[&args[..], &["--json"]].concat());
-        let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-        let estimate = report["memory_estimate"].as_u64().unwrap() >> 20;
+        let estimate = json_estimate(&args) >> 20;
         let peak = peak_mib(&args);
         eprintln!("figure-5.6 at {res}: estimate {estimate} MiB, peak {peak} MiB");
         assert!(
@@ -523,12 +529,7 @@ fn ten_thousand_primitives_fit_by_their_footprints() {
     ];
     // The estimate from --json: under `--max-memory 1` the reader's vertex limit, which follows
     // the memory limit, refuses the scene before the run's estimate is reached.
-    let out = common::csgpix(&[&args[..], &["--json"]].concat());
-    let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let estimate = report["memory_estimate"]
-        .as_u64()
-        .unwrap()
-        .div_ceil(1 << 20);
+    let estimate = json_estimate(&args).div_ceil(1 << 20);
     let peak = peak_mib(&args);
     eprintln!("10,001 primitives at 256³: estimate {estimate} MiB, peak {peak} MiB");
     assert!(estimate >= peak, "estimate {estimate} MiB, peak {peak} MiB");
