@@ -239,7 +239,7 @@ fn unsupported_uses_are_refused_with_line_and_column() {
     assert_eq!(s.root, CsgNode::Empty);
     let w = s.warnings[0].to_string();
     assert!(
-        w.starts_with("t.csg:1:1: warning: all points for rotate_extrude()"),
+        w.starts_with("t.csg:1:1: all points for rotate_extrude()"),
         "{w}"
     );
     let e = err("linear_extrude(height = 1, scale = -1) square(size = 1);");

@@ -100,7 +100,7 @@ fn empty_primitives_and_other_dimensions_warn_and_go_on() {
     let (code, out, e) = run(dir.path(), scad, &["--json"]);
     assert_eq!(code, Some(0), "{e}");
     assert!(
-        e.contains("p.scad:2:1: warning: `cylinder` has a zero or negative size"),
+        e.contains("csgpix: warning: p.scad:2:1: `cylinder` has a zero or negative size"),
         "{e}"
     );
     assert!(
@@ -140,7 +140,7 @@ fn fallback_meshes_what_csgpix_does_not_draw() {
     let (code, _, e) = run(dir.path(), scad, &args);
     assert_eq!(code, Some(0), "{e}");
     assert!(
-        e.contains("p.scad:2:25: warning: `surface` meshed by openscad"),
+        e.contains("csgpix: warning: p.scad:2:25: `surface` meshed by openscad"),
         "{e}"
     );
     let ours = occupancy(&dir.path().join("p.nrrd"));

@@ -33,8 +33,8 @@ pub struct Scene {
 /// A scene's source.
 #[derive(Clone)]
 enum Source {
-    /// The file and openscad's time limit in seconds, as `load` was given them.
-    File(PathBuf, Option<f64>),
+    /// The file, openscad's time limit in seconds and `strict`, as `load` was given them.
+    File(PathBuf, Option<f64>, bool),
     Expr(String, Vec<(String, PathBuf, Option<f64>)>),
 }
 
@@ -53,14 +53,27 @@ impl Scene {
         Ok((lo.to_array(), hi.to_array()))
     }
 
+    /// What the reader warned of, as OpenSCAD warns and goes on (a colour out of range, a
+    /// child of the other dimension, a substituted font, …): `FILE:LINE:COL: message` each,
+    /// also raised as `warnings.warn` by `load`.
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.loaded
+            .scene
+            .warnings
+            .iter()
+            .map(|w| w.to_string())
+            .collect()
+    }
+
     /// Pickled as its source: unpickling loads the files again (they must be readable where
     /// it is unpickled, as on the workers of a distributed run sharing a file system).
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
         let m = py.import("csgpix._native")?;
         Ok(match &self.source {
-            Source::File(p, t) => (
+            Source::File(p, t, strict) => (
                 m.getattr("load")?,
-                (p.clone(), *t).into_pyobject(py)?.into_any(),
+                (p.clone(), *t, *strict).into_pyobject(py)?.into_any(),
             ),
             Source::Expr(e, prims) => {
                 let prims: Vec<(String, Bound<'py, PyAny>)> = prims
@@ -91,20 +104,41 @@ impl Scene {
 }
 
 /// Read a `.csg` scene (or a `.scad` one through OpenSCAD, each openscad run killed after
-/// `openscad_timeout` seconds; None or 0: no limit) and the files it imports.
+/// `openscad_timeout` seconds; None or 0: no limit) and the files it imports. Each warning
+/// (where OpenSCAD warns and goes on, so does csgpix) is raised with `warnings.warn`;
+/// `strict=True` refuses the scene at its first warning instead (the command line's
+/// `--strict`).
 #[pyfunction]
-#[pyo3(signature = (path, openscad_timeout = DEFAULT_TIMEOUT))]
-pub fn load(path: PathBuf, openscad_timeout: Option<f64>) -> PyResult<Scene> {
+#[pyo3(signature = (path, openscad_timeout = DEFAULT_TIMEOUT, strict = false))]
+pub fn load(
+    py: Python<'_>,
+    path: PathBuf,
+    openscad_timeout: Option<f64>,
+    strict: bool,
+) -> PyResult<Scene> {
     let options = csgpix_openscad::ReadOptions {
         openscad_timeout: timeout(openscad_timeout)?,
+        strict,
         ..read_options()
     };
     let loaded = load_scene_with(&path, &options).map_err(voxel)?;
+    warn_all(py, &loaded.scene.warnings)?;
     Ok(Scene {
         loaded,
         name: path.display().to_string(),
-        source: Source::File(path, openscad_timeout),
+        source: Source::File(path, openscad_timeout, strict),
     })
+}
+
+/// Each of a scene's warnings as a Python `UserWarning` (`warnings.warn`), so that
+/// `warnings.simplefilter("error")` turns them into exceptions as `strict=True` does.
+fn warn_all(py: Python<'_>, warnings: &[csgpix_scene::Error]) -> PyResult<()> {
+    let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+    for w in warnings {
+        let msg = std::ffi::CString::new(w.to_string().replace('\0', " "))?;
+        PyErr::warn(py, &category, &msg, 1)?;
+    }
+    Ok(())
 }
 
 /// `openscad_timeout`'s default: the command line's (`--openscad-timeout`).

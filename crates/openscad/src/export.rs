@@ -108,12 +108,10 @@ pub fn read_scene_with(
         false => parsed?,
         true => parsed.map_err(|e| in_scad(e, &text, path))?,
     };
-    for w in &mut scene.warnings {
-        if is_scad(path) {
+    if is_scad(path) {
+        for w in &mut scene.warnings {
             *w = in_scad(std::mem::replace(w, Error::invalid("")), &text, path);
         }
-        // On stderr, as OpenSCAD gives its warnings; the run goes on.
-        eprintln!("{w}");
     }
     Ok(scene)
 }

@@ -190,6 +190,10 @@ pub struct ReadOptions {
     /// before it is killed and the read fails with [`Error::TimedOut`]; None: no limit.
     /// [`DEFAULT_OPENSCAD_TIMEOUT`] by default.
     pub openscad_timeout: Option<std::time::Duration>,
+    /// `--strict`: the first warning ([`CsgScene::warnings`]) is a refusal instead, as csgpix
+    /// read scenes before it followed OpenSCAD's leniency. False by default: where OpenSCAD
+    /// warns and goes on, so does the reader.
+    pub strict: bool,
 }
 
 impl Default for ReadOptions {
@@ -201,6 +205,7 @@ impl Default for ReadOptions {
             max_vertices: None,
             samples: Default::default(),
             openscad_timeout: Some(DEFAULT_OPENSCAD_TIMEOUT),
+            strict: false,
         }
     }
 }
@@ -241,5 +246,8 @@ pub fn parse_csg_with(
     for w in &mut scene.warnings {
         *w = std::mem::replace(w, Error::invalid("")).in_file(file);
     }
-    Ok(scene)
+    match scene.warnings.first() {
+        Some(first) if options.strict => Err(first.clone()),
+        _ => Ok(scene),
+    }
 }

@@ -140,7 +140,7 @@ impl<'a> Reader<'a> {
                 let warnings = self
                     .warnings
                     .iter()
-                    .map(|(at, msg)| Error::at("", at.line, at.col, format!("warning: {msg}")))
+                    .map(|(at, msg)| Error::at("", at.line, at.col, msg.as_str()))
                     .collect();
                 Ok(CsgScene {
                     solids,

@@ -650,7 +650,7 @@ fn empty_primitives_are_empty_with_a_warning() {
         assert!(s.solids.is_empty() && s.imports.is_empty(), "{text}");
         assert_eq!(s.warnings.len(), 1, "{text}");
         let w = s.warnings[0].to_string();
-        assert!(w.starts_with(&format!("test.csg:1:{col}: warning:")), "{w}");
+        assert!(w.starts_with(&format!("test.csg:1:{col}: `")), "{w}");
     }
     // An empty first operand empties a difference; an empty subtracted one is dropped.
     let s = parse("difference() { cylinder(h = 1, r1 = 0, r2 = 0); cube(1); }");

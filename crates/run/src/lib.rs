@@ -39,10 +39,11 @@ pub mod gen_vectors;
 mod lib_errors;
 pub mod man;
 pub mod memory;
-pub mod openscad_timeout;
+
 pub mod phantom;
 pub mod plot;
 pub mod png;
+pub mod read_args;
 pub mod render;
 pub mod requirements;
 pub mod sculpt;

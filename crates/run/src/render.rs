@@ -58,7 +58,7 @@ pub struct Args {
     #[arg(long)]
     json: bool,
     #[command(flatten)]
-    openscad: super::openscad_timeout::OpenscadTimeout,
+    openscad: super::read_args::ReadArgs,
 }
 
 #[derive(Serialize)]
@@ -134,6 +134,9 @@ pub fn run(a: Args) -> crate::Result<ExitCode> {
         .check(memory_estimate(&a, &cfg), "this render", "lower --size")?;
     let options = a.openscad.read_options();
     let (scene, ops) = compile_with(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg, &options)?;
+    if let Some(csg) = &scene.csg {
+        crate::read_args::print_warnings(&csg.warnings);
+    }
     let t0 = Instant::now();
     let mut stack_levels = 0;
     let mut simulated = None;

@@ -59,7 +59,7 @@ pub struct Args {
     #[command(flatten)]
     mem: super::memory::MaxMemory,
     #[command(flatten)]
-    openscad: super::openscad_timeout::OpenscadTimeout,
+    openscad: super::read_args::ReadArgs,
 }
 
 /// Bytes per pixel of a slice the analysis holds (footprints and the slicer's per-pixel
@@ -120,6 +120,7 @@ struct Report {
 pub fn run(a: Args) -> crate::Result<ExitCode> {
     let at = |e: Error| e.context(a.scene.display().to_string());
     let scene = csgpix_openscad::read_scene_with(&a.scene, &a.openscad.read_options())?;
+    crate::read_args::print_warnings(&scene.warnings);
     scene.require_convex(&a.scene.display().to_string(), "`requirements`")?;
     if !(a.precision > 0.0 && a.precision.is_finite()) {
         let message = format!("--precision {}: must be a positive number", a.precision);

@@ -66,7 +66,7 @@ pub struct Args {
     #[command(flatten)]
     mem: super::memory::MaxMemory,
     #[command(flatten)]
-    openscad: super::openscad_timeout::OpenscadTimeout,
+    openscad: super::read_args::ReadArgs,
 }
 
 /// What a run did.
@@ -309,6 +309,7 @@ fn load_scene(a: &Args, path: &[DVec3]) -> crate::Result<Loaded> {
         ..a.openscad.read_options()
     };
     let loaded = csgpix_voxel::sampled::load_scene_with(&a.input, &options)?;
+    crate::read_args::print_warnings(&loaded.scene.warnings);
     let scene = &loaded.scene;
     let grid = a
         .grid

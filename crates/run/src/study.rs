@@ -60,7 +60,7 @@ pub struct Args {
     #[command(flatten)]
     mem: super::memory::MaxMemory,
     #[command(flatten)]
-    openscad: super::openscad_timeout::OpenscadTimeout,
+    openscad: super::read_args::ReadArgs,
     /// Print every point as JSON.
     #[arg(long)]
     json: bool,

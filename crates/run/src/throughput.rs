@@ -22,7 +22,7 @@ use rtl_model::{Array, ArrayConfig, CycleArray, Equations, Op, WordFormat};
 use serde::Serialize;
 
 use super::array_args::{parse_size, parse_word};
-use super::openscad_timeout::OpenscadTimeout;
+use super::read_args::ReadArgs;
 use super::ViewArg;
 
 #[derive(clap::Args, Debug)]
@@ -88,7 +88,7 @@ pub struct Args {
     #[command(flatten)]
     mem: super::memory::MaxMemory,
     #[command(flatten)]
-    openscad: super::openscad_timeout::OpenscadTimeout,
+    openscad: super::read_args::ReadArgs,
 }
 
 /// A positive number, or a fraction A/B.
@@ -273,8 +273,9 @@ fn print_area(r: &AreaReport) {
     }
 }
 
-fn read_scene(path: &Path, openscad: OpenscadTimeout) -> crate::Result<CsgScene> {
+fn read_scene(path: &Path, openscad: ReadArgs) -> crate::Result<CsgScene> {
     let scene = csgpix_openscad::read_scene_with(path, &openscad.read_options())?;
+    crate::read_args::print_warnings(&scene.warnings);
     scene.require_convex(&path.display().to_string(), "`throughput`")?;
     Ok(scene)
 }

@@ -149,15 +149,16 @@ pub struct Args {
     #[command(flatten)]
     mem: super::memory::MaxMemory,
     #[command(flatten)]
-    openscad: super::openscad_timeout::OpenscadTimeout,
+    openscad: super::read_args::ReadArgs,
     /// Also build a voxel store of the volume's dual cells, slice by slice while voxelizing
     /// (seed 000 Ch. 4; docs/octree.md), and report its nodes, bytes and build time.
     #[arg(long, value_enum)]
     store: Option<StoreArg>,
     /// What becomes of a node csgpix does not draw (`surface()`, a 2D import, a node it
     /// does not know): refused (`none`), or meshed by openscad, that subtree alone, and
-    /// drawn as a closed mesh primitive, reported on stderr and in --json's `warnings`.
-    #[arg(long, value_enum, default_value_t)]
+    /// drawn as a closed mesh primitive, reported on stderr and in --json's `warnings`
+    /// (a choice, so not with `--strict`, which refuses every warning).
+    #[arg(long, value_enum, default_value_t, conflicts_with = "strict")]
     fallback: FallbackArg,
     /// Print figures as JSON.
     #[arg(long)]
@@ -719,7 +720,9 @@ fn load(a: &Args) -> crate::Result<Loaded> {
                 samples: a.mem.samples(),
                 ..a.openscad.read_options()
             };
-            load_scene_with(p, &options).map_err(flag_message)
+            let loaded = load_scene_with(p, &options).map_err(flag_message)?;
+            crate::read_args::print_warnings(&loaded.scene.warnings);
+            Ok(loaded)
         }
         (None, Some(e)) => {
             let options = csgpix_openscad::ReadOptions {

@@ -70,7 +70,9 @@ pub struct CsgScene {
     /// The tree over both.
     pub root: CsgNode,
     /// What the reader noticed but drew anyway, as OpenSCAD warns (an empty primitive, a 2D
-    /// child beside solids): one located line each, for stderr.
+    /// child beside solids, a colour out of range): one located line each,
+    /// `FILE:LINE:COL: message`, the refusal `--strict` makes of it. The command line prints
+    /// each as `csgpix: warning: …`, `--json` lists them, Python raises `warnings.warn`.
     pub warnings: Vec<crate::Error>,
 }
 
