@@ -196,7 +196,7 @@ pub(crate) fn flat_shape<'f>(
                 None => [1.0, 1.0],
                 Some(v) => {
                     let s = v.pair("`size`")?;
-                    if s.iter().any(|c| *c <= 0.0) {
+                    if s.iter().any(|c| !(*c > 0.0 && c.is_finite())) {
                         return Ok(None);
                     }
                     if s.iter().any(|c| c.is_nan() || *c > MAX_COORDINATE) {
@@ -209,7 +209,7 @@ pub(crate) fn flat_shape<'f>(
         }
         NodeKind::Circle => {
             let r = match radius(p, "d", "r")? {
-                Some((r, _)) if r <= 0.0 => return Ok(None),
+                Some((r, _)) if !(r > 0.0 && r.is_finite()) => return Ok(None),
                 Some((r, _)) => r,
                 None => 1.0,
             };
@@ -281,12 +281,6 @@ pub(crate) fn resize_args(p: &Params) -> Result<([f64; 3], [bool; 3]), Fail> {
                 item.pos,
                 "an entry of `newsize`",
             )?;
-            if s < 0.0 {
-                return fail(
-                    item.pos,
-                    "a negative size: OpenSCAD 2021.01 mirrors a rendered CSG result but ignores the entry for a primitive or a 2D shape, so csgpix refuses it",
-                );
-            }
             *slot = s;
         }
     }

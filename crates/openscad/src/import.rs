@@ -109,3 +109,45 @@ pub(crate) fn svg_args(head: &Head) -> Result<SvgArgs, Fail> {
         warning,
     })
 }
+
+/// The formats `import()` reads, by extension: 3D meshes and datasets, then 2D drawings.
+const MESHES: [&str; 7] = ["stl", "obj", "off", "amf", "3mf", "nrrd", "nhdr"];
+const DRAWINGS: [&str; 2] = ["svg", "dxf"];
+
+/// An `import()` OpenSCAD gives no geometry for, going on with the rest of the scene
+/// (`ImportNode::createGeometry` in src/import.cc): an empty name or an unknown format
+/// ("Unsupported file format", logged as an error that does not stop the render), or a file
+/// that cannot be opened ("Can't open import file"). The message, and whether the import
+/// was of a 2D drawing. `dir` is where a relative name starts; without one (a scene read
+/// from text, not from a file) files are not looked for here but when they are loaded.
+pub(crate) fn unreadable(head: &Head, dir: Option<&std::path::Path>) -> Option<(String, bool)> {
+    let Some(Kind::Str(name)) = head.params.get("file").map(|v| &v.kind) else {
+        return None; // `file` missing or not a string: import() says so.
+    };
+    let ext = std::path::Path::new(name)
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .unwrap_or_default();
+    let flat = DRAWINGS.contains(&ext.as_str());
+    if name.is_empty() || !(flat || MESHES.contains(&ext.as_str())) {
+        let msg = format!(
+            "Unsupported file format while trying to import file '{name}': nothing imported"
+        );
+        return Some((msg, false));
+    }
+    let path = dir?.join(name);
+    if path.is_file() {
+        return None;
+    }
+    let what = match std::fs::metadata(&path) {
+        Ok(m) if m.is_dir() => "it is a directory",
+        Ok(_) => "it is not a regular file",
+        Err(_) => "no such file",
+    };
+    let msg = format!(
+        "Can't open import file '{}' ({what}): nothing imported",
+        path.display()
+    );
+    Some((msg, flat))
+}

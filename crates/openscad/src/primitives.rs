@@ -97,7 +97,7 @@ pub(crate) fn cube(params: &Params) -> Result<Option<Shape>, Fail> {
                 Kind::Num(s) => [s; 3],
                 _ => v.vec3("`size`")?,
             };
-            if size.iter().any(|&s| s <= 0.0) {
+            if size.iter().any(|&s| !(s > 0.0 && s.is_finite())) {
                 return Ok(None);
             }
             size
@@ -197,7 +197,7 @@ pub(crate) fn radius(params: &Params, d: &str, r: &str) -> Result<Option<(f64, P
 /// quads.
 pub(crate) fn sphere(params: &Params, budget: usize) -> Result<Option<Shape>, Fail> {
     let r = match radius(params, "d", "r")? {
-        Some((r, _)) if r <= 0.0 => return Ok(None),
+        Some((r, _)) if !(r > 0.0 && r.is_finite()) => return Ok(None),
         Some((r, _)) => r,
         None => 1.0,
     };
@@ -231,7 +231,7 @@ pub(crate) fn sphere(params: &Params, budget: usize) -> Result<Option<Shape>, Fa
 /// radii. A zero radius makes that end a single apex vertex.
 pub(crate) fn cylinder(params: &Params, budget: usize) -> Result<Option<Shape>, Fail> {
     let h = match params.number("h")? {
-        Some((h, _)) if h <= 0.0 => return Ok(None),
+        Some((h, _)) if !(h > 0.0 && h.is_finite()) => return Ok(None),
         Some((h, _)) => h,
         None => 1.0,
     };
@@ -246,7 +246,7 @@ pub(crate) fn cylinder(params: &Params, budget: usize) -> Result<Option<Shape>, 
         r2 = r;
     }
     let (r1, r2) = (r1.0, r2.0);
-    if r1 < 0.0 || r2 < 0.0 || (r1 == 0.0 && r2 == 0.0) {
+    if !(r1 >= 0.0 && r2 >= 0.0 && r1.is_finite() && r2.is_finite()) || (r1 == 0.0 && r2 == 0.0) {
         return Ok(None);
     }
     let fragments = Resolution::read(params)?.fragments(r1.max(r2), params.pos)?;
@@ -322,13 +322,19 @@ pub(crate) enum Polyhedron {
 /// from outside (`PolyhedronNode::createGeometry` reverses them) or all the other way round
 /// (OpenSCAD renders those too: csgpix turns them over); convex ones become convex solids,
 /// the others closed mesh primitives. The surface must be closed.
-pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Polyhedron, Fail> {
-    let points = params.require("points", "points = [[x, y, z], …]")?;
-    let points = points
-        .list("`points`")?
-        .iter()
-        .map(|p| p.vec3("a point"))
-        .collect::<Result<Vec<_>, _>>()?;
+///
+/// Where `PolyhedronNode::createGeometry` (src/primitives.cc) logs a problem and goes on, so
+/// does this, with the warning in `warnings`: `points` that are not a list of finite
+/// `[x, y, z]` make the polyhedron empty (`Ok(None)`), an index out of range is left out of
+/// its face, and a polyhedron with no face of 3 distinct points is empty.
+pub(crate) fn polyhedron(
+    params: &Params,
+    budget: usize,
+    warnings: &mut Vec<(Pos, String)>,
+) -> Result<Option<Polyhedron>, Fail> {
+    let Some(points) = points_of(params, warnings)? else {
+        return Ok(None);
+    };
     check_budget(points.len(), budget, params.pos)?;
     if let Some(p) = points.iter().flatten().find(|&&c| too_large(c)) {
         let msg = format!("coordinate {p} exceeds {MAX_COORDINATE:e} in size");
@@ -341,15 +347,14 @@ pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Polyhedron, F
     let faces = faces
         .list("`faces`")?
         .iter()
-        .map(|f| face_indices(f, points.len()))
+        .map(|f| face_indices(f, points.len(), warnings))
         .collect::<Result<Vec<_>, _>>()?;
     // A face of fewer than 3 distinct corners encloses nothing: OpenSCAD drops it too.
     let faces: Vec<Vec<usize>> = faces.into_iter().filter(|f| f.len() >= 3).collect();
     if faces.is_empty() {
-        return fail(
-            params.pos,
-            "polyhedron refused: no face has 3 distinct points",
-        );
+        let msg = "polyhedron: no face has 3 distinct points: it is empty";
+        warnings.push((params.pos, msg.to_string()));
+        return Ok(None);
     }
     let refused = |e: Error| Fail {
         pos: params.pos,
@@ -362,7 +367,7 @@ pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Polyhedron, F
     }
     let small = points.len() <= MAX_POLYHEDRON_POINTS;
     if small && check_convex_closed(&points, &faces).is_ok() {
-        return Ok(Polyhedron::Convex(compact(points, faces)));
+        return Ok(Some(Polyhedron::Convex(compact(points, faces))));
     }
     let mut tris = Vec::new();
     for f in &faces {
@@ -370,7 +375,42 @@ pub(crate) fn polyhedron(params: &Params, budget: usize) -> Result<Polyhedron, F
             tris.push([points[f[0]], points[f[i]], points[f[i + 1]]]);
         }
     }
-    Ok(Polyhedron::Mesh(tris))
+    Ok(Some(Polyhedron::Mesh(tris)))
+}
+
+/// `points` as finite `[x, y, z]`s, or `None` (with OpenSCAD's words) where
+/// `PolyhedronNode::createGeometry` gives an empty polyhedron: `points` not a list ("Unable to
+/// convert points = … to a vector of coordinates"), or one point not three finite numbers.
+fn points_of(
+    params: &Params,
+    warnings: &mut Vec<(Pos, String)>,
+) -> Result<Option<Vec<Vec3>>, Fail> {
+    let msg = "Unable to convert points to a vector of coordinates: the polyhedron is empty";
+    let items = match params.get("points") {
+        Some(Value {
+            kind: Kind::List(items),
+            ..
+        }) => items,
+        other => {
+            let at = other.map_or(params.pos, |v| v.pos);
+            warnings.push((at, msg.to_string()));
+            return Ok(None);
+        }
+    };
+    let mut points = Vec::with_capacity(items.len());
+    for (i, p) in items.iter().enumerate() {
+        match p.vec3("a point") {
+            Ok(v) if v.iter().all(|c| c.is_finite()) => points.push(v),
+            _ => {
+                let msg = format!(
+                    "Unable to convert points[{i}] to a vec3 of numbers: the polyhedron is empty"
+                );
+                warnings.push((p.pos, msg));
+                return Ok(None);
+            }
+        }
+    }
+    Ok(Some(points))
 }
 
 /// The signed volume the faces enclose (positive when they run counter-clockwise seen from
@@ -406,17 +446,21 @@ fn check_even_edges(faces: &[Vec<usize>]) -> csgpix_scene::Result<()> {
 }
 
 /// One face's point indices, reversed to counter-clockwise.
-pub(crate) fn face_indices(face: &Value, points: usize) -> Result<Vec<usize>, Fail> {
+/// An index out of range is left out, with OpenSCAD's warning ("Point index … is out of
+/// bounds"); a face left with fewer than 3 points is dropped by the caller.
+pub(crate) fn face_indices(
+    face: &Value,
+    points: usize,
+    warnings: &mut Vec<(Pos, String)>,
+) -> Result<Vec<usize>, Fail> {
     let items = face.list("a face")?;
-    if items.len() < 3 {
-        return fail(face.pos, "a face needs 3 points at least");
-    }
     let mut indices = Vec::with_capacity(items.len());
     for item in items.iter().rev() {
         let v = item.number("a point index")?;
         if v.fract() != 0.0 || v < 0.0 || v >= points as f64 {
-            let msg = format!("point index {v} is not one of the {points} points");
-            return fail(item.pos, msg);
+            let msg = format!("Point index {v} is out of bounds (of {points} points): left out");
+            warnings.push((item.pos, msg));
+            continue;
         }
         let i = v as usize;
         // A point repeated at once is one corner (OpenSCAD takes such faces too).

@@ -354,6 +354,41 @@ pub fn resize_scale(
     Some(scale)
 }
 
+/// `CGAL_Nef_polyhedron::resize` (OpenSCAD 2021.01), the rule for a boolean's result: as
+/// [`resize_scale`] but every nonzero entry scales its axis, a negative one too (a mirror
+/// about the origin's plane, as OpenSCAD renders it); `None` where an axis to scale has no
+/// extent (OpenSCAD leaves the object unchanged).
+pub fn nef_resize_scale(
+    newsize: [f64; 3],
+    auto: [bool; 3],
+    size: [f64; 3],
+    dims: usize,
+) -> Option<[f64; 3]> {
+    let mut scale = [1.0; 3];
+    let mut max = 0;
+    for i in 0..dims {
+        if newsize[i] != 0.0 {
+            if size[i] == 0.0 {
+                return None;
+            }
+            scale[i] = newsize[i] / size[i];
+            if newsize[i] > newsize[max] {
+                max = i;
+            }
+        }
+    }
+    let autoscale = match newsize[max] {
+        0.0 => 1.0,
+        n => n / size[max],
+    };
+    for i in 0..dims {
+        if auto[i] && newsize[i] == 0.0 {
+            scale[i] = autoscale;
+        }
+    }
+    Some(scale)
+}
+
 /// The leaves of a tree.
 pub(crate) fn leaves(n: &CsgNode) -> Vec<usize> {
     let mut out = vec![];
@@ -425,8 +460,14 @@ pub(crate) fn resize(
     }
     let node = combine(Op::Union, frame.children);
     let bbox = bbox3(&node, solids, imports).map_err(|problem| Fail { pos, problem })?;
+    // OpenSCAD resizes one primitive's mesh (a PolySet) and a boolean's result (a Nef
+    // polyhedron) by different rules, which differ only for a negative entry.
+    let rule = match node {
+        CsgNode::Solid(_) => resize_scale,
+        _ => nef_resize_scale,
+    };
     let s = match bbox {
-        Some((lo, hi)) => resize_scale(newsize, auto, (hi - lo).to_array(), 3).unwrap_or([1.0; 3]),
+        Some((lo, hi)) => rule(newsize, auto, (hi - lo).to_array(), 3).unwrap_or([1.0; 3]),
         None => [1.0; 3],
     };
     let mut m = [
@@ -488,7 +529,15 @@ pub(crate) fn resize(
 mod tests {
     use super::*;
     use crate::extrude::signed_area;
-    use crate::parse_csg;
+    use crate::{parse_csg, parse_csg_with, ReadOptions};
+    use csgpix_scene::solid::CsgScene;
+
+    fn strict() -> ReadOptions {
+        ReadOptions {
+            strict: true,
+            ..Default::default()
+        }
+    }
 
     fn scene(text: &str) -> csgpix_scene::solid::CsgScene {
         parse_csg(text, "t.csg").unwrap_or_else(|e| panic!("{e}"))
@@ -646,8 +695,25 @@ mod tests {
             .iter()
             .fold(f64::MIN, |m, v| m.max(v[2]));
         assert_eq!((lo, hz), (1.0, 4.0));
-        let e = parse_csg("resize([-1, 0, 0]) cube(1);", "t.csg").unwrap_err();
-        assert!(e.to_string().contains("negative"), "{e}");
+        // A negative entry, with OpenSCAD 2021.01's boxes (its CGAL meshes of the same
+        // scenes): ignored for one primitive, a mirror for a boolean's result.
+        let bounds = |s: &CsgScene| {
+            let mut b = [[f64::MAX, f64::MIN]; 3];
+            for v in s.solids.iter().flat_map(|s| &s.vertices) {
+                for i in 0..3 {
+                    b[i] = [b[i][0].min(v[i]), b[i][1].max(v[i])];
+                }
+            }
+            b
+        };
+        let s = parse_csg("resize([-2, 2, 2]) cube(1);", "t.csg").unwrap();
+        assert_eq!(bounds(&s), [[0.0, 1.0], [0.0, 2.0], [0.0, 2.0]]);
+        assert!(s.warnings[0].to_string().contains("negative size"));
+        let text = "resize([-3, 2, 0]) union() { cube(1); \
+                    multmatrix([[1,0,0,0.5],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) cube(1); }";
+        let s = parse_csg(text, "t.csg").unwrap();
+        assert_eq!(bounds(&s), [[-3.0, 0.0], [0.0, 2.0], [0.0, 1.0]]);
+        assert!(parse_csg_with(text, "t.csg", &strict()).is_err());
         // 2D: a circle of radius 2 (8 fragments, 4 across) to 8 across, auto: 8 high too.
         let s = scene("linear_extrude(height = 1) resize(newsize = [8, 0, 0], auto = true) circle(r = 2, $fn = 8);");
         let ys = s.solids[0]

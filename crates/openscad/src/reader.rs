@@ -60,6 +60,9 @@ pub(crate) struct Reader<'a> {
     pub(crate) consumed_imports: Vec<usize>,
     /// 2D shapes at the top level (ignored beside solids), the first one's position.
     pub(crate) top_flat: Option<Pos>,
+    /// The top level's dimension: its first object's that is not empty, as OpenSCAD's root
+    /// takes it (`GeometryEvaluator::applyToChildren`).
+    pub(crate) top_dim: Option<Dim>,
     /// Warnings as OpenSCAD gives them, with where they arose.
     pub(crate) warnings: Vec<(Pos, String)>,
     /// The scene's own fonts ([`ReadOptions::fonts`]) before the standard ones, loaded at the
@@ -86,6 +89,7 @@ impl<'a> Reader<'a> {
             consumed_solids: Vec::new(),
             consumed_imports: Vec::new(),
             top_flat: None,
+            top_dim: None,
             warnings: Vec::new(),
             scene_fonts: std::cell::OnceCell::new(),
         }
@@ -127,6 +131,11 @@ impl<'a> Reader<'a> {
             None => {
                 let mut root = combine(Op::Union, std::mem::take(&mut self.top));
                 if let Some(at) = self.top_flat {
+                    if self.top_dim == Some(Dim::Flat) && root != CsgNode::Empty {
+                        let msg = "the top level is 2D (its first object is a 2D shape): \
+                                   OpenSCAD renders a 2D drawing, csgpix voxelizes solids";
+                        return fail(at, msg);
+                    }
                     if root == CsgNode::Empty {
                         let msg = "a 2D shape outside linear_extrude or rotate_extrude: \
                                    csgpix voxelizes solids";
@@ -191,7 +200,7 @@ impl<'a> Reader<'a> {
         let start = self.parser.peek()?.span.0;
         let head = self.head()?;
         let parent = self.open.last().map(|f| f.ctx.clone()).unwrap_or_default();
-        let ctx = child_ctx(&parent, &head)?;
+        let ctx = child_ctx(&parent, &head, &mut self.warnings)?;
         if head.kind.is_leaf() {
             let context = format!("after `{}(…)` (it takes no children)", head.kind.name());
             self.parser.expect_sym(b';', &context)?;
@@ -281,8 +290,14 @@ impl<'a> Reader<'a> {
                 match node {
                     Some(Item::Flat(_, pos)) => {
                         self.top_flat.get_or_insert(pos);
+                        self.top_dim.get_or_insert(Dim::Flat);
                     }
-                    Some(Item::Solid(n)) => self.top.push(n),
+                    Some(Item::Solid(n)) => {
+                        if n != CsgNode::Empty {
+                            self.top_dim.get_or_insert(Dim::Solid);
+                        }
+                        self.top.push(n)
+                    }
                     None => {}
                 }
                 return Ok(());
@@ -291,6 +306,11 @@ impl<'a> Reader<'a> {
             match (node, frame.dim) {
                 (Some(Item::Solid(CsgNode::Empty)), Some(Dim::Flat)) => {}
                 (Some(Item::Solid(n)), Some(Dim::Flat)) => {
+                    // OpenSCAD's collectChildren2D puts an empty geometry in its place, which
+                    // empties an intersection.
+                    if frame.kind == NodeKind::Intersection {
+                        frame.flats.push(Region::Union(vec![]));
+                    }
                     self.ignore(pos, "Ignoring 3D child object for 2D operation", &n);
                 }
                 (Some(Item::Solid(n)), _) => {
@@ -300,6 +320,10 @@ impl<'a> Reader<'a> {
                     frame.children.push(n);
                 }
                 (Some(Item::Flat(_, _)), Some(Dim::Solid)) => {
+                    // collectChildren3D: an empty geometry in its place.
+                    if frame.kind == NodeKind::Intersection {
+                        frame.children.push(CsgNode::Empty);
+                    }
                     let msg = "Ignoring 2D child object for 3D operation".to_string();
                     self.warnings.push((pos, msg));
                 }
@@ -342,7 +366,17 @@ impl<'a> Reader<'a> {
                 self.consume(&below);
                 Ok(Some(item))
             }
-            NodeKind::Resize => resize(frame, &mut self.solids, &mut self.imports).map(Some),
+            NodeKind::Resize => {
+                if let Spec::Resize { newsize, .. } = frame.spec {
+                    if newsize.iter().any(|&s| s < 0.0) {
+                        let msg = "resize() with a negative size: ignored for a primitive or a \
+                                   2D shape, a mirror for a boolean's result, as OpenSCAD 2021.01 \
+                                   renders them";
+                        self.warnings.push((pos, msg.to_string()));
+                    }
+                }
+                resize(frame, &mut self.solids, &mut self.imports).map(Some)
+            }
             _ if frame.dim == Some(Dim::Flat) => {
                 Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), flat_at)))
             }
@@ -456,11 +490,22 @@ impl<'a> Reader<'a> {
         }
     }
 
-    /// A primitive of zero or negative size: OpenSCAD draws nothing; csgpix says so.
+    /// An object OpenSCAD removes with a warning (`why`; nothing when `None`): the warning
+    /// unless the object is skipped anyway, and what it gives its parent: nothing for a 2D
+    /// object, an empty solid for a 3D one (which empties an intersection, as OpenSCAD's
+    /// empty geometry does).
+    fn removed(&mut self, why: Option<&str>, pos: Pos, skip: bool, flat: bool) -> Option<Item> {
+        if let (Some(msg), false) = (why, skip) {
+            self.warnings.push((pos, msg.to_string()));
+        }
+        (!skip && !flat).then_some(Item::Solid(CsgNode::Empty))
+    }
+
+    /// A primitive of zero, negative or non-finite size: OpenSCAD draws nothing; csgpix says so.
     fn empty_primitive(&mut self, head: &Head, ctx: &Ctx) {
         if !ctx.skip {
             let msg = format!(
-                "`{}` has a zero or negative size: it is empty",
+                "`{}` has a zero, negative or non-finite size: it is empty",
                 head.kind.name()
             );
             self.warnings.push((head.pos, msg));
@@ -484,6 +529,9 @@ impl<'a> Reader<'a> {
         let n: usize = shapes.iter().map(|p| p.points().count()).sum();
         let budget = self.max_vertices().saturating_sub(self.vertices);
         check_budget(n, budget, head.pos)?;
+        if let Some(msg) = removal_2d(ctx.matrix.as_ref()) {
+            return Ok(self.removed(Some(msg), head.pos, false, true));
+        }
         self.vertices += n;
         let m = plane_part(ctx.matrix.as_ref());
         let mut parts: Vec<Region> = shapes
@@ -503,6 +551,12 @@ impl<'a> Reader<'a> {
     }
 
     fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<Item>, Fail> {
+        if head.kind == NodeKind::Import {
+            let dir = self.options.dir.as_deref();
+            if let Some((msg, flat)) = crate::import::unreadable(head, dir) {
+                return Ok(self.removed(Some(&msg), head.pos, ctx.skip, flat));
+            }
+        }
         if crate::import::is_svg(head) {
             return self.svg(head, ctx);
         }
@@ -510,6 +564,9 @@ impl<'a> Reader<'a> {
             let import = import(head, ctx)?;
             if ctx.skip {
                 return Ok(None);
+            }
+            if let Some(msg) = removal_3d(ctx.matrix.as_ref()) {
+                return Ok(self.removed(Some(msg), head.pos, false, false));
             }
             self.imports.push(import);
             return Ok(Some(Item::Solid(CsgNode::Solid(
@@ -527,6 +584,9 @@ impl<'a> Reader<'a> {
             if ctx.skip {
                 return Ok(None);
             }
+            if let Some(msg) = removal_2d(ctx.matrix.as_ref()) {
+                return Ok(self.removed(Some(msg), head.pos, false, true));
+            }
             self.vertices += n;
             let poly = poly.transformed(plane_part(ctx.matrix.as_ref()));
             return Ok(Some(Item::Flat(Region::Poly(poly), head.pos)));
@@ -535,9 +595,10 @@ impl<'a> Reader<'a> {
             NodeKind::Cube => cube(&head.params)?,
             NodeKind::Sphere => sphere(&head.params, budget)?,
             NodeKind::Cylinder => cylinder(&head.params, budget)?,
-            _ => match polyhedron(&head.params, budget)? {
-                Polyhedron::Convex(shape) => Some(shape),
-                Polyhedron::Mesh(tris) => {
+            _ => match polyhedron(&head.params, budget, &mut self.warnings)? {
+                None => return Ok(self.removed(None, head.pos, ctx.skip, false)),
+                Some(Polyhedron::Convex(shape)) => Some(shape),
+                Some(Polyhedron::Mesh(tris)) => {
                     check_budget(tris.len() * 3, budget, head.pos)?;
                     if ctx.skip {
                         return Ok(None);
@@ -562,6 +623,9 @@ impl<'a> Reader<'a> {
         if ctx.skip {
             return Ok(None);
         }
+        if let Some(msg) = removal_3d(ctx.matrix.as_ref()) {
+            return Ok(self.removed(Some(msg), head.pos, false, false));
+        }
         let solid = place(shape, ctx, head.pos)?;
         self.vertices += solid.vertices.len();
         self.solids.push(solid);
@@ -573,6 +637,10 @@ impl<'a> Reader<'a> {
     fn extrude(&mut self, frame: Frame) -> Result<Item, Fail> {
         let pos = frame.pos;
         if frame.flats.is_empty() {
+            return Ok(Item::Solid(CsgNode::Empty));
+        }
+        if let Some(msg) = removal_3d(frame.placement.as_ref()) {
+            self.warnings.push((pos, msg.to_string()));
             return Ok(Item::Solid(CsgNode::Empty));
         }
         let mut region = region_of(Op::Union, frame.flats);
@@ -696,6 +764,10 @@ impl<'a> Reader<'a> {
     /// A closed mesh made by the scene (in the coordinates below `to.matrix`) as an import
     /// leaf: placed, checked against the coordinate limit, named by its node and position.
     fn push_mesh(&mut self, tris: Vec<[DVec3; 3]>, to: &Placement) -> Result<CsgNode, Fail> {
+        if let Some(msg) = removal_3d(to.matrix.as_ref()) {
+            self.warnings.push((to.pos, msg.to_string()));
+            return Ok(CsgNode::Empty);
+        }
         let m = to.matrix.unwrap_or(IDENTITY);
         let tris: Vec<[Vec3; 3]> = tris
             .iter()
@@ -977,7 +1049,7 @@ fn unclosed(frame: &Frame, found: &str) -> String {
 }
 
 /// The context of the children of `head` (or of `head` itself, for a leaf).
-fn child_ctx(parent: &Ctx, head: &Head) -> Result<Ctx, Fail> {
+fn child_ctx(parent: &Ctx, head: &Head, warnings: &mut Vec<(Pos, String)>) -> Result<Ctx, Fail> {
     let mut ctx = parent.clone();
     ctx.skip |= head.skip;
     match head.kind {
@@ -989,7 +1061,8 @@ fn child_ctx(parent: &Ctx, head: &Head) -> Result<Ctx, Fail> {
                 });
             }
         }
-        NodeKind::Color => ctx.colour = Some(colour(&head.params)?),
+        NodeKind::Color if !ctx.skip => ctx.colour = Some(colour(&head.params, warnings)?),
+        NodeKind::Color => ctx.colour = Some(colour(&head.params, &mut vec![])?),
         _ => {}
     }
     Ok(ctx)

@@ -222,8 +222,6 @@ fn polyhedron_refusals() {
     let open = "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
                 faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3]]);";
     assert_err(open, 1, 1, "not closed");
-    let bad_index = TETRAHEDRON.replace("[1, 3, 2]]", "[1, 3, 4]]");
-    assert_err(&bad_index, 1, 116, "point index 4");
 }
 
 #[test]
@@ -312,12 +310,6 @@ fn nested_multmatrix_composes() {
 #[test]
 fn multmatrix_refusals() {
     assert_err(
-        "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) cube(1);",
-        1,
-        12,
-        "singular",
-    );
-    assert_err(
         "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [1, 0, 0, 1]]) cube(1);",
         1,
         12,
@@ -350,7 +342,6 @@ fn colours_innermost_wins() {
         7,
         "colour \"red\" is not supported",
     );
-    assert_err("color([2, 0, 0]) cube(1);", 1, 8, "between 0 and 1");
 }
 
 // --- tree shapes ---
@@ -459,7 +450,6 @@ fn errors_name_line_and_column() {
     assert_err("cube(size = 1.2.3);", 1, 13, "malformed number `1.2.3`");
     assert_err("cube(size = 1e);", 1, 13, "malformed number `1e`");
     assert_err("cube(size = 1e999);", 1, 13, "out of range");
-    assert_err("cube(size = inf);", 1, 13, "finite");
     assert_err("cube(size = 1;\n", 1, 14, "expected ',' or ')'");
     assert_err(
         "group() {\n\tcube(1);\n",
@@ -683,10 +673,146 @@ fn children_of_the_other_dimension_are_ignored() {
     let s = parse("cube(1); linear_extrude(height = 1) group() { square(2); sphere(3); }");
     assert_eq!(s.solids.len(), 2, "the cube and the extruded square");
     assert_eq!(s.warnings.len(), 1);
-    // A 2D shape at the top level beside solids is ignored; alone it is refused.
-    let s = parse("square(2); cube(1);");
+    // A 2D shape at the top level after solids is ignored; first, it makes the top level 2D
+    // (OpenSCAD's "Top level object is a 2D object"), which csgpix refuses, as alone.
+    let s = parse("cube(1); square(2);");
     assert_eq!((s.solids.len(), s.warnings.len()), (1, 1));
+    assert_err("square(2); cube(1);", 1, 1, "the top level is 2D");
     assert_err("square(2);", 1, 1, "outside linear_extrude");
+}
+
+/// The scenes below are each checked against OpenSCAD 2021.01's CGAL render of the same
+/// `.scad` (the geometry it kept and the warnings it printed), and refused under `--strict`.
+fn lenient(text: &str) -> CsgScene {
+    lenient_with(text, ReadOptions::default())
+}
+
+/// [`lenient`], read with `options`.
+fn lenient_with(text: &str, options: ReadOptions) -> CsgScene {
+    let s = parse_csg_with(text, "test.csg", &options).unwrap_or_else(|e| panic!("{e}"));
+    assert!(!s.warnings.is_empty(), "{text}: no warning");
+    let strict = ReadOptions {
+        strict: true,
+        ..options
+    };
+    let e = parse_csg_with(text, "test.csg", &strict).unwrap_err();
+    assert_eq!(e.to_string(), s.warnings[0].to_string(), "{text}");
+    s
+}
+
+/// `applyToChildren`: a child of the other dimension is an empty geometry in its place, so an
+/// intersection with one is empty and a difference keeps its first child.
+#[test]
+fn mixed_dimensions_follow_openscad() {
+    let s = lenient("intersection() { cube(5); circle(2); }");
+    assert_eq!(s.root, CsgNode::Empty);
+    assert!(s.warnings[0]
+        .to_string()
+        .contains("Ignoring 2D child object for 3D operation"));
+    let s = lenient("difference() { cube(5); circle(2); }");
+    assert_eq!(s.root, CsgNode::Solid(0));
+    let s = lenient("linear_extrude(height = 1) intersection() { circle(2); cube(5); }");
+    assert_eq!(s.root, CsgNode::Empty);
+    let s = lenient("group() { cube(1); square(3); sphere(1); }");
+    assert_eq!(s.solids.len(), 2);
+}
+
+/// `ColorModule`: a component out of 0..1 is a warning; the geometry is unchanged and the
+/// colour code takes the component clamped.
+#[test]
+fn colours_out_of_range_are_clamped_with_a_warning() {
+    let s = lenient("color([2, -1, 0.5, 3]) cube(1);");
+    assert_eq!(s.solids[0].colour, Some([1.0, 0.0, 0.5, 1.0]));
+    assert_eq!(s.warnings.len(), 3);
+    assert!(s.warnings[0]
+        .to_string()
+        .starts_with("test.csg:1:8: color() expects"));
+    let s = lenient("color(c = [0, 0, 1], alpha = 7) cube(1);");
+    assert_eq!(s.solids[0].colour, Some([0.0, 0.0, 1.0, 1.0]));
+}
+
+/// `PolyhedronNode::createGeometry`: points that are not coordinates make it empty; an index
+/// out of range is left out of its face.
+#[test]
+fn malformed_polyhedra_are_empty_or_mended_with_a_warning() {
+    let s = lenient("polyhedron(points = undef, faces = [[0, 1, 2]], convexity = 1); cube(1);");
+    assert_eq!((s.solids.len(), s.imports.len()), (1, 0));
+    let s =
+        lenient("polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, inf]], faces = [[0, 1, 2]]);");
+    assert_eq!(s.root, CsgNode::Empty);
+    // A tetrahedron whose last face names a fifth point: that corner is left out.
+    let tetra = "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], \
+                 faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2, 9]]);";
+    let s = lenient(tetra);
+    assert_eq!(s.solids.len(), 1);
+    assert!(s.warnings[0]
+        .to_string()
+        .contains("Point index 9 is out of bounds"));
+}
+
+/// A transform that flattens its objects (a scale by 0) or holds an infinity removes them
+/// (`CGAL_Nef_polyhedron::transform`, `Polygon2d::transform`,
+/// `GeometryEvaluator::visit(TransformNode)`); the 2D part of a matrix decides for 2D shapes.
+#[test]
+fn singular_and_infinite_transforms_remove_their_objects() {
+    let flat3 = "multmatrix([[0, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])";
+    let s = lenient(&format!("{flat3} cube(1); cube(2);"));
+    assert_eq!(s.solids.len(), 1);
+    assert!(s.warnings[0]
+        .to_string()
+        .contains("Scaling a 3D object with 0"));
+    let s = lenient(&format!("intersection() {{ cube(2); {flat3} cube(1); }}"));
+    assert_eq!(s.root, CsgNode::Empty);
+    let s = lenient(&format!("linear_extrude(height = 1) {flat3} square(1);"));
+    assert_eq!(s.root, CsgNode::Empty);
+    // Flat in z only: a 2D shape keeps its area.
+    let z0 = "multmatrix([[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]])";
+    let s = parse(&format!("linear_extrude(height = 1) {z0} square(1);"));
+    assert_eq!((s.solids.len(), s.warnings.len()), (1, 0));
+    let inf = "multmatrix([[1, 0, 0, inf], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])";
+    let s = lenient(&format!("{inf} cube(1); cube(2);"));
+    assert_eq!(s.solids.len(), 1);
+    assert!(s.warnings[0]
+        .to_string()
+        .contains("Not-a-Number and/or Infinity"));
+}
+
+/// `inf` and `nan` as the CSG export writes them: a primitive of such a size is empty, as
+/// OpenSCAD's range checks make it.
+#[test]
+fn infinite_sizes_make_empty_primitives() {
+    for text in [
+        "cube(size = [inf, 1, 1], center = false);",
+        "sphere(r = nan);",
+        "cylinder(h = 1, r1 = -inf, r2 = 1);",
+        "linear_extrude(height = 1) circle(r = inf);",
+    ] {
+        let s = lenient(text);
+        assert_eq!(s.root, CsgNode::Empty, "{text}");
+    }
+}
+
+/// `ImportNode::createGeometry`: an import of a file that cannot be opened, of an empty
+/// name or of an unknown format gives nothing, with a warning, and the scene goes on.
+#[test]
+fn unreadable_imports_are_empty_with_a_warning() {
+    let dir = tempfile::tempdir().unwrap();
+    let here = ReadOptions {
+        dir: Some(dir.path().to_path_buf()),
+        ..Default::default()
+    };
+    let lenient = |text: &str| lenient_with(text, here.clone());
+    let s = lenient("import(file = \"missing.stl\"); cube(1);");
+    assert_eq!((s.solids.len(), s.imports.len()), (1, 0));
+    assert!(s.warnings[0].to_string().contains("Can't open import file"));
+    let s = lenient("import(file = \"\", layer = \"\"); cube(1);");
+    assert!(s.warnings[0]
+        .to_string()
+        .contains("Unsupported file format"));
+    let s = lenient("intersection() { cube(2); import(file = \"missing.stl\"); }");
+    assert_eq!(s.root, CsgNode::Empty);
+    let s = lenient("linear_extrude(height = 1) import(file = \"missing.svg\"); cube(1);");
+    assert_eq!(s.solids.len(), 1);
 }
 
 #[test]
@@ -734,7 +860,7 @@ fn rotate_extrude_across_the_axis_draws_nothing_and_goes_on() {
     assert_eq!(s.root, CsgNode::Solid(0));
     let w = s.warnings[0].to_string();
     assert!(
-        w.starts_with("test.csg:2:1: warning:") && w.contains("X coordinate sign"),
+        w.starts_with("test.csg:2:1: ") && w.contains("X coordinate sign"),
         "{w}"
     );
 }

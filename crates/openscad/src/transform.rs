@@ -28,7 +28,9 @@ pub(crate) fn matrix(params: &Params) -> Result<Option<Mat4>, Fail> {
     normalise(m, value.pos).map(Some)
 }
 
-/// Divides by `m[3][3]` and checks the matrix is affine and invertible.
+/// Divides by `m[3][3]` and checks the matrix is affine. A singular matrix, or one holding an
+/// infinity or NaN (`w = 0` gives those), is read: the objects it places are removed where
+/// they are placed ([`removal_3d`], [`removal_2d`]), as OpenSCAD removes them.
 pub(crate) fn normalise(mut m: Mat4, pos: Pos) -> Result<Mat4, Fail> {
     if m[3][..3].iter().any(|&v| v != 0.0) {
         return fail(
@@ -37,30 +39,55 @@ pub(crate) fn normalise(mut m: Mat4, pos: Pos) -> Result<Mat4, Fail> {
         );
     }
     let w = m[3][3];
-    if w == 0.0 {
-        return fail(pos, "the last entry of `m` must not be 0");
-    }
     if w != 1.0 {
         m = m.map(|row| row.map(|v| v / w));
-    }
-    let size = m[..3]
-        .iter()
-        .flat_map(|row| &row[..3])
-        .fold(0.0_f64, |a, v| a.max(v.abs()));
-    let det = det3(&m);
-    let invertible = det.abs() > 1e-12 * size * size * size;
-    if !invertible {
-        return fail(
-            pos,
-            format!("singular matrix (determinant {det:e}): it flattens the solids"),
-        );
     }
     Ok(m)
 }
 
+/// Why OpenSCAD removes a 3D object placed by `m`, if it does: a matrix holding NaN or an
+/// infinity (`GeometryEvaluator::visit(TransformNode)`), or a singular one, which flattens
+/// the object (`CGAL_Nef_polyhedron::transform`). The messages are OpenSCAD's.
+pub(crate) fn removal_3d(m: Option<&Mat4>) -> Option<&'static str> {
+    let m = m?;
+    if m.iter().flatten().any(|v| !v.is_finite()) {
+        return Some(NOT_FINITE);
+    }
+    let rows = [0, 1, 2].map(|r| [m[r][0], m[r][1], m[r][2]]);
+    singular(&rows).then_some("Scaling a 3D object with 0 - removing object")
+}
+
+/// [`removal_3d`] for a 2D object, placed by the plane part of `m` (`Polygon2d::transform`).
+pub(crate) fn removal_2d(m: Option<&Mat4>) -> Option<&'static str> {
+    let m = m?;
+    let [[a, b, tx], [c, d, ty]] = plane_part(Some(m));
+    if [a, b, tx, c, d, ty].iter().any(|v| !v.is_finite()) {
+        return Some(NOT_FINITE);
+    }
+    let rows = [[a, b, 0.0], [c, d, 0.0], [0.0, 0.0, 1.0]];
+    singular(&rows).then_some("Scaling a 2D object with 0 - removing object")
+}
+
+const NOT_FINITE: &str =
+    "Transformation matrix contains Not-a-Number and/or Infinity - removing object.";
+
+/// A determinant that is zero within rounding, relative to the matrix's largest entry.
+fn singular(rows: &[[f64; 3]; 3]) -> bool {
+    let size = rows.iter().flatten().fold(0.0_f64, |a, v| a.max(v.abs()));
+    let m = [
+        [rows[0][0], rows[0][1], rows[0][2], 0.0],
+        [rows[1][0], rows[1][1], rows[1][2], 0.0],
+        [rows[2][0], rows[2][1], rows[2][2], 0.0],
+        [0.0, 0.0, 0.0, 1.0],
+    ];
+    det3(&m).abs() <= 1e-12 * size * size * size
+}
+
 /// `color(c, alpha)`: `c` is `[r, g, b]` or `[r, g, b, a]` (alpha 1 if missing, as in
-/// OpenSCAD's `builtin_color`), components in 0..1; `alpha` overrides the fourth.
-pub(crate) fn colour(params: &Params) -> Result<[f64; 4], Fail> {
+/// OpenSCAD's `builtin_color`), components in 0..1; `alpha` overrides the fourth. A component
+/// out of range is OpenSCAD's warning (`ColorModule::instantiate`) and is clamped to 0..1 for
+/// the colour code; the geometry does not change.
+pub(crate) fn colour(params: &Params, warnings: &mut Vec<(Pos, String)>) -> Result<[f64; 4], Fail> {
     let c = params.require("c", "a colour [r, g, b, a]")?;
     let items = match &c.kind {
         Kind::Str(name) => {
@@ -75,21 +102,27 @@ pub(crate) fn colour(params: &Params) -> Result<[f64; 4], Fail> {
     };
     let mut rgba = [1.0; 4];
     for (slot, item) in rgba.iter_mut().zip(items) {
-        *slot = unit(item.number("a colour component")?, item.pos)?;
+        *slot = unit(item.number("a colour component")?, item.pos, warnings);
     }
     if let Some((alpha, pos)) = params.number("alpha")? {
-        rgba[3] = unit(alpha, pos)?;
+        rgba[3] = unit(alpha, pos, warnings);
     }
     Ok(rgba)
 }
 
-pub(crate) fn unit(v: f64, pos: Pos) -> Result<f64, Fail> {
+/// A colour component clamped to 0..1, with OpenSCAD's warning when it was not in range.
+pub(crate) fn unit(v: f64, pos: Pos, warnings: &mut Vec<(Pos, String)>) -> f64 {
     if (0.0..=1.0).contains(&v) {
-        Ok(v)
+        return v;
+    }
+    let msg = format!(
+        "color() expects numbers between 0.0 and 1.0. Value of {v:?} is out of range (taken as {})",
+        if v > 1.0 { 1 } else { 0 }
+    );
+    warnings.push((pos, msg));
+    if v > 1.0 {
+        1.0
     } else {
-        fail(
-            pos,
-            format!("colour components must be between 0 and 1, found {v}"),
-        )
+        0.0
     }
 }

@@ -227,9 +227,14 @@ impl<'a> Parser<'a> {
             }
             Tok::Sym(sign @ (b'-' | b'+')) => {
                 let token = self.next()?;
+                let v = match &token.tok {
+                    Tok::Num(v) => Some(*v),
+                    Tok::Ident(name) => non_finite(name),
+                    _ => None,
+                };
                 match token.tok {
-                    Tok::Num(v) if sign == b'-' => Kind::Num(-v),
-                    Tok::Num(v) => Kind::Num(v),
+                    _ if v.is_some() && sign == b'-' => Kind::Num(-v.unwrap_or_default()),
+                    _ if v.is_some() => Kind::Num(v.unwrap_or_default()),
                     other => {
                         let msg = format!(
                             "expected a number after '{}', found {}",
@@ -244,9 +249,7 @@ impl<'a> Parser<'a> {
                 "true" => Kind::Bool(true),
                 "false" => Kind::Bool(false),
                 "undef" => Kind::Undef,
-                "inf" | "nan" => {
-                    return fail(pos, format!("numbers must be finite, found `{name}`"))
-                }
+                "inf" | "nan" => Kind::Num(non_finite(name.as_str()).unwrap_or(f64::NAN)),
                 _ => {
                     let msg = format!(
                         "expected a value, found `{name}` (csgpix reads numbers, true, false, \
@@ -262,3 +265,14 @@ impl<'a> Parser<'a> {
 }
 
 // ---------------------------------------------------------------------------------------------
+
+/// `inf` and `nan` as OpenSCAD's CSG export writes an infinite or undefined number (its
+/// `Value::toString` of a double): the nodes that take them decide, as OpenSCAD does, what
+/// such a number makes (mostly an empty object with a warning).
+fn non_finite(name: &str) -> Option<f64> {
+    match name {
+        "inf" => Some(f64::INFINITY),
+        "nan" => Some(f64::NAN),
+        _ => None,
+    }
+}
