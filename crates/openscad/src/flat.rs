@@ -189,6 +189,7 @@ pub(crate) fn flat_shape<'f>(
     p: &Params,
     fonts: impl FnOnce() -> &'f crate::text::Fonts,
     budget: usize,
+    notes: &mut Vec<String>,
 ) -> Result<Option<Poly2>, Fail> {
     match p.node {
         NodeKind::Square => {
@@ -217,7 +218,7 @@ pub(crate) fn flat_shape<'f>(
             check_budget(n, budget, p.pos)?;
             Ok(Some(Poly2::circle(r, n, sin_cos_degrees)))
         }
-        NodeKind::Text => crate::text::text_shape(p, fonts(), budget).map(Some),
+        NodeKind::Text => crate::text::text_shape(p, fonts(), budget, notes).map(Some),
         _ => polygon(p, budget).map(Some),
     }
 }

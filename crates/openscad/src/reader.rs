@@ -575,7 +575,13 @@ impl<'a> Reader<'a> {
         }
         let budget = self.max_vertices().saturating_sub(self.vertices);
         if head.kind.is_flat() {
-            let Some(poly) = flat_shape(&head.params, || self.fonts(), budget)? else {
+            let mut notes = vec![];
+            let shape = flat_shape(&head.params, || self.fonts(), budget, &mut notes)?;
+            if !ctx.skip {
+                self.warnings
+                    .extend(notes.into_iter().map(|n| (head.pos, n)));
+            }
+            let Some(poly) = shape else {
                 self.empty_primitive(head, ctx);
                 return Ok(None);
             };

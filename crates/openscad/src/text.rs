@@ -34,8 +34,11 @@
 //! `use <x.ttf>`, or those beside a `.csg` file), the directories of `CSGPIX_FONT_PATH`
 //! (colon-separated), the bundled `vectors/fonts` (when it exists beside the sources this
 //! crate was built from), then the system fonts. `font = ""` is OpenSCAD's default,
-//! `Liberation Sans:style=Regular`. A family or style that is not found is an error: OpenSCAD
-//! would warn and draw fontconfig's closest match instead.
+//! `Liberation Sans:style=Regular`. A family or style not found there is asked of fontconfig
+//! itself (`fc-match`, which answers as OpenSCAD's `FontCache::find_face_fontconfig` does:
+//! the name parsed as a fontconfig pattern, the configuration's substitutions and defaults,
+//! the best match), and its answer is drawn with a warning naming the font substituted
+//! (`--strict` refuses instead); without fontconfig the font is refused.
 
 use csgpix_scene::Error;
 use std::path::{Path, PathBuf};
@@ -212,7 +215,7 @@ impl Fonts {
                     id: f.id,
                 }),
                 None => Err(Error::invalid(format!(
-                    "font `{name}`: family `{family}` has no such style (csgpix does not substitute fonts)"
+                    "font `{name}`: family `{family}` has no such style"
                 ))),
             };
         }
@@ -225,6 +228,94 @@ impl Fonts {
             "font `{name}` not found (searched {scene}CSGPIX_FONT_PATH, the bundled fonts and the system fonts)"
         )))
     }
+}
+
+impl Fonts {
+    /// [`Fonts::find`], or where it finds nothing, the face fontconfig matches for the name
+    /// (as OpenSCAD draws it), with a note saying so.
+    pub fn find_or_substitute(&self, name: &str) -> csgpix_scene::Result<(FaceId, Option<String>)> {
+        let missing = match self.find(name) {
+            Ok(id) => return Ok((id, None)),
+            Err(e) => e,
+        };
+        let lookup = if name.trim().is_empty() { DEFAULT_FONT } else { name.trim() };
+        let Some(m) = fontconfig_match(lookup) else {
+            return Err(missing);
+        };
+        let layers = self.layers();
+        let face = layers.iter().enumerate().find_map(|(layer, fonts)| {
+            fonts
+                .db
+                .faces()
+                .find(|f| f.index == m.index && source_path(&f.source).is_some_and(|p| m.is(p)))
+                .map(|f| FaceId { layer, id: f.id })
+        });
+        let Some(face) = face else {
+            return Err(missing);
+        };
+        let note = format!(
+            "{missing}: drawn in `{}:style={}` ({}), fontconfig's match, as OpenSCAD draws it",
+            m.family,
+            m.style,
+            m.file.display()
+        );
+        Ok((face, Some(note)))
+    }
+}
+
+/// Where a face's data comes from, when it is a file.
+fn source_path(s: &fontdb::Source) -> Option<&Path> {
+    match s {
+        fontdb::Source::File(p) => Some(p),
+        fontdb::Source::SharedFile(p, _) => Some(p),
+        _ => None,
+    }
+}
+
+/// Fontconfig's answer for a pattern.
+struct Match {
+    file: PathBuf,
+    index: u32,
+    family: String,
+    style: String,
+}
+
+impl Match {
+    /// Whether `path` is the matched file (the same name, or the same file through links).
+    fn is(&self, path: &Path) -> bool {
+        path == self.file
+            || (path.file_name() == self.file.file_name()
+                && std::fs::canonicalize(path).ok() == std::fs::canonicalize(&self.file).ok())
+    }
+}
+
+/// Asks fontconfig (`fc-match`) for the font it matches to `pattern`; None without fontconfig
+/// or an answer. OpenSCAD's own configuration also registers its font path
+/// (`OPENSCAD_FONT_PATH`), which `FONTCONFIG_PATH`/`FONTCONFIG_FILE` can give fc-match.
+fn fontconfig_match(pattern: &str) -> Option<Match> {
+    let out = std::process::Command::new("fc-match")
+        .arg("--format=%{file}\\t%{index}\\t%{family[0]}\\t%{style[0]}")
+        .arg("--")
+        .arg(pattern)
+        .stdin(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .output()
+        .ok()?;
+    if !out.status.success() {
+        return None;
+    }
+    let text = String::from_utf8(out.stdout).ok()?;
+    let mut parts = text.trim_end_matches('\n').split('\t');
+    let file = PathBuf::from(parts.next()?);
+    let index = parts.next()?.trim().parse().ok()?;
+    let family = parts.next().unwrap_or("").to_string();
+    let style = parts.next().unwrap_or("").to_string();
+    file.is_file().then_some(Match {
+        file,
+        index,
+        family,
+        style,
+    })
 }
 
 /// A face's style names (typographic subfamily and subfamily, every language).
@@ -389,7 +480,18 @@ fn units_26_6_positions(face: &ttf_parser::Face) -> f64 {
 /// The outline of a `text()` node in its own plane.
 /// At most `max_points` outline points are made (before the union).
 pub fn render(spec: &TextSpec, fonts: &Fonts, max_points: usize) -> csgpix_scene::Result<Poly2> {
-    let id = fonts.find(&spec.font)?;
+    render_noting(spec, fonts, max_points, &mut vec![])
+}
+
+/// [`render`], a font fontconfig substituted ([`Fonts::find_or_substitute`]) noted in `notes`.
+pub fn render_noting(
+    spec: &TextSpec,
+    fonts: &Fonts,
+    max_points: usize,
+    notes: &mut Vec<String>,
+) -> csgpix_scene::Result<Poly2> {
+    let (id, note) = fonts.find_or_substitute(&spec.font)?;
+    notes.extend(note);
     if !matches!(spec.halign.as_str(), "left" | "right" | "center") {
         return Err(Error::invalid(format!(
             "unknown halign `{}` (left, center or right)",
@@ -571,7 +673,12 @@ fn string(p: &Params, name: &str, default: &str) -> Result<String, Fail> {
 
 /// `text(text, size, font, direction, language, script, halign, valign, spacing, $fn, $fa,
 /// $fs)` as a shape in its own plane.
-pub(crate) fn text_shape(p: &Params, fonts: &Fonts, budget: usize) -> Result<Poly2, Fail> {
+pub(crate) fn text_shape(
+    p: &Params,
+    fonts: &Fonts,
+    budget: usize,
+    notes: &mut Vec<String>,
+) -> Result<Poly2, Fail> {
     let size = match p.number("size")? {
         None => 10.0,
         Some((s, at)) if !(s > 0.0 && s <= MAX_COORDINATE) => {
@@ -599,7 +706,7 @@ pub(crate) fn text_shape(p: &Params, fonts: &Fonts, budget: usize) -> Result<Pol
         valign: string(p, "valign", "baseline")?,
         segments: segments(size, res.fn_, res.fa, res.fs),
     };
-    let poly = render(&spec, fonts, budget).map_err(|problem| Fail {
+    let poly = render_noting(&spec, fonts, budget, notes).map_err(|problem| Fail {
         pos: p.pos,
         problem,
     })?;
@@ -614,6 +721,38 @@ mod tests {
 
     fn fonts() -> Fonts {
         Fonts::new(&[bundled_font_dir().expect("vectors/fonts")], false)
+    }
+
+    fn strict() -> crate::ReadOptions {
+        crate::ReadOptions {
+            strict: true,
+            ..Default::default()
+        }
+    }
+
+    /// A font no font file has: fontconfig's match, the one OpenSCAD draws (DejaVu Sans on
+    /// Debian, fontconfig's default), with a warning; refused under `strict`.
+    #[test]
+    fn a_missing_font_is_fontconfigs_match_with_a_warning() {
+        let Some(m) = fontconfig_match("Arial Black") else {
+            eprintln!("fc-match is not on PATH: skipped");
+            return;
+        };
+        let text = "linear_extrude(height = 1)\n  text(text = \"csg\", font = \"Arial Black\");\n";
+        let s = crate::parse_csg(text, "t.csg").unwrap();
+        assert_eq!(s.warnings.len(), 1);
+        let w = s.warnings[0].to_string();
+        assert!(w.starts_with("t.csg:2:3: font `Arial Black` not found"), "{w}");
+        assert!(w.contains("fontconfig's match"), "{w}");
+        // The same outline as the matched face named directly.
+        let named = format!(
+            "linear_extrude(height = 1)\n  text(text = \"csg\", font = \"{}:style={}\");\n",
+            m.family, m.style
+        );
+        let direct = crate::parse_csg(&named, "t.csg").unwrap();
+        assert!(direct.warnings.is_empty(), "{:?}", direct.warnings);
+        assert_eq!(s.imports, direct.imports);
+        assert_eq!(s.solids, direct.solids);
     }
 
     fn draw(spec: &TextSpec) -> Poly2 {
@@ -670,7 +809,7 @@ mod tests {
     #[test]
     fn a_missing_font_is_an_error_at_the_node() {
         let text = "linear_extrude(height = 1)\n  text(text = \"a\", font = \"No Such Font:style=Bold\");\n";
-        let e = crate::parse_csg(text, "t.csg").unwrap_err().to_string();
+        let e = crate::parse_csg_with(text, "t.csg", &strict()).unwrap_err().to_string();
         assert!(e.starts_with("t.csg:2:3: "), "{e}");
         assert!(e.to_string().contains("No Such Font"), "{e}");
         let text = "linear_extrude(height = 1) text(text = \"a\", halign = \"middle\");";
@@ -722,7 +861,7 @@ mod tests {
         let without = tempfile::tempdir().unwrap();
         let csg = without.path().join("t.csg");
         std::fs::write(&csg, MAGIERA).unwrap();
-        let e = crate::read_scene(&csg).unwrap_err().to_string();
+        let e = crate::read_scene_with(&csg, &strict()).unwrap_err().to_string();
         let at = format!(
             "{}:2:3: font `Magiera:style=Script` not found",
             csg.display()
@@ -737,7 +876,7 @@ mod tests {
             without.path().join("LiberationSerif-Regular.ttf"),
         )
         .unwrap();
-        let e = crate::read_scene(&csg).unwrap_err().to_string();
+        let e = crate::read_scene_with(&csg, &strict()).unwrap_err().to_string();
         assert!(e.starts_with(&at), "{e}");
         assert!(
             e.contains("(searched the scene's font files, CSGPIX_FONT_PATH"),
@@ -776,10 +915,11 @@ mod tests {
         let inc = root.join("inc.scad");
         std::fs::write(&inc, format!("include <lib/fonts.scad>\n{MAGIERA}")).unwrap();
         crate::read_scene(&inc).unwrap();
-        // Not used: OpenSCAD substitutes a font, csgpix refuses, at the text() call.
+        // Not used: OpenSCAD substitutes a font, csgpix too with a warning (or without
+        // fontconfig refuses), at the text() call; `strict` refuses.
         let bare = root.join("bare.scad");
         std::fs::write(&bare, MAGIERA).unwrap();
-        let e = crate::read_scene(&bare).unwrap_err().to_string();
+        let e = crate::read_scene_with(&bare, &strict()).unwrap_err().to_string();
         let at = format!(
             "{}:2:3: font `Magiera:style=Script` not found",
             bare.display()
