@@ -14,10 +14,12 @@
 //!   (the first child minus the others).
 //! * `multmatrix(m = 4×4)` transforms the solids below it (nested transforms compose). As in
 //!   OpenSCAD's `multmatrix` module (`src/core/TransformNode.cc`) a matrix whose `m[3][3]` is
-//!   not 1 is divided by it; a projective or singular matrix is refused. A matrix with a
+//!   not 1 is divided by it; a projective matrix is refused; a singular one, or one holding
+//!   `inf` or `nan`, removes the objects it places with OpenSCAD's warning. A matrix with a
 //!   negative determinant (a mirror) reverses the winding of every face so faces stay outward.
 //! * `color([r, g, b, a])` / `color(c = [r, g, b], alpha = a)` colours the solids below it,
-//!   the innermost colour winning. Named and hex colours (`color("red")`) are refused: the CSG
+//!   the innermost colour winning; a component out of 0..1 is OpenSCAD's warning and is
+//!   clamped. Named and hex colours (`color("red")`) are refused: the CSG
 //!   export always writes the vector form.
 //! * `cube`, `sphere`, `cylinder` are tessellated exactly as OpenSCAD does (see below), and
 //!   `polyhedron` is accepted when it is closed and convex.
@@ -47,12 +49,18 @@
 //!   with `cut = true` the section at z = 0, every leaf sectioned and the CSG tree kept as a 2D
 //!   tree; otherwise the shadow on z = 0 (see `project.rs`). The solids below leave the scene.
 //! * `resize(newsize, auto)` of solids or 2D shapes: a scale about the origin from the exact
-//!   bounding box, with OpenSCAD 2021.01's rules for zero entries and `auto`; negative sizes
-//!   are refused. The shadow of a difference or intersection, and its box, need the mesh of
+//!   bounding box, with OpenSCAD 2021.01's rules for zero entries and `auto`; a negative size
+//!   (with a warning) is ignored for one primitive and mirrors a boolean's result, as
+//!   OpenSCAD's `PolySet::resize` and `CGAL_Nef_polyhedron::resize` do. The shadow of a difference or intersection, and its box, need the mesh of
 //!   `geom::mesh_of`.
 //! * `text(text, size, font, halign, valign, spacing, direction, language, script)`: a 2D
 //!   shape, the glyph outlines shaped and flattened as OpenSCAD 2021.01 does
-//!   ([`crate::text`]); a font that is not found is an error, not a substitution.
+//!   ([`crate::text`]); a font that is not found is fontconfig's match, with a warning.
+//!
+//! Where OpenSCAD warns and goes on (a colour out of range, a malformed polyhedron, an import
+//! of a missing file, a child of the other dimension, …: docs/volume-scenes.md lists them),
+//! so does the reader, into [`CsgScene::warnings`]; [`ReadOptions::strict`] refuses the
+//! first instead.
 //!
 //! Anything else (`surface`, 2D imports, …) is refused with an error naming the node, its
 //! line and column, or with [`Fallback::Openscad`] meshed by openscad. [`scene_text`] turns a `.scad` file into
