@@ -211,3 +211,22 @@ def test_to_mesh_is_the_command_lines_mesh(tmp):
     # A slab range meshes the slabs it holds, in the same scene units.
     part = csgpix.voxelize(str(scene), 24, z=(0, 6)).to_mesh()[0]
     assert part[:, 2].max() < vertices[:, 2].max() and np.isclose(part[:, 2].min(), vertices[:, 2].min())
+
+
+def test_warnings_are_python_warnings_and_strict_refuses(tmp_path):
+    # A colour out of range: OpenSCAD warns and renders; so does csgpix (docs/volume-scenes.md).
+    scene = ROOT / "vectors" / "openscad" / "lenient" / "colour.csg"
+    with pytest.warns(UserWarning, match=r"colour\.csg:1:8: color\(\) expects") as caught:
+        s = csgpix.load(str(scene))
+    assert len(caught) == 4
+    assert s.warnings == [str(w.message) for w in caught]
+    # The same voxels as the command line, which prints the same lines.
+    out = tmp_path / "c.nrrd"
+    proc = run_cli("voxelize", str(scene), "--res", "16", "-o", str(out))
+    assert proc.returncode == 0
+    lines = proc.stderr.decode().splitlines()
+    assert [l.removeprefix("csgpix: warning: ") for l in lines] == s.warnings
+    vol = csgpix.voxelize(s, 16)
+    np.testing.assert_array_equal(vol.data, read_nrrd(out))
+    with pytest.raises(csgpix.CsgpixError, match=r"colour\.csg:1:8: color\(\) expects"):
+        csgpix.load(str(scene), strict=True)
