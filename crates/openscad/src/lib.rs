@@ -102,6 +102,7 @@
 
 mod cap;
 mod consts_;
+mod dxf;
 mod export;
 pub mod extrude;
 mod fallback;
