@@ -18,7 +18,7 @@ pub(crate) fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
     if !(dataset || lower.ends_with(".stl") || lower.ends_with(".obj")) {
         return fail(
             file.pos,
-            format!("`import(\"{name}\")`: csgpix imports .stl and .obj meshes, .nrrd datasets and .svg drawings (not .dxf files)"),
+            format!("`import(\"{name}\")`: csgpix imports .stl and .obj meshes, .nrrd datasets and .svg and .dxf drawings"),
         );
     }
     match (dataset, threshold) {
@@ -150,4 +150,71 @@ pub(crate) fn unreadable(head: &Head, dir: Option<&std::path::Path>) -> Option<(
         path.display()
     );
     Some((msg, flat))
+}
+
+/// An `import` of a DXF file (a 2D drawing, module [`crate::dxf`]).
+pub(crate) fn is_dxf(head: &Head) -> bool {
+    head.kind == NodeKind::Import
+        && matches!(&head.params.get("file").map(|v| &v.kind),
+            Some(Kind::Str(f)) if f.to_ascii_lowercase().ends_with(".dxf"))
+}
+
+/// `import(file = "x.dxf", layer, origin, scale, $fn, $fa, $fs)` as
+/// `ImportModule::instantiate` (`src/import.cc`, 2021.01) reads it: `layer` a string (empty:
+/// all layers), `origin` `[x, y]` (anything else is `[0, 0]` with OpenSCAD's warning),
+/// `scale` a number, 1 when not positive; `convexity`, `center` and `dpi` play no part.
+pub(crate) struct DxfArgs {
+    pub(crate) file: String,
+    pub(crate) settings: crate::dxf::Settings,
+    pub(crate) warning: Option<(Pos, String)>,
+}
+
+pub(crate) fn dxf_args(head: &Head) -> Result<DxfArgs, Fail> {
+    let p = &head.params;
+    let file = p.require("file", "a file name")?;
+    let Kind::Str(name) = &file.kind else {
+        return fail(file.pos, "`file` must be a string");
+    };
+    let layer = match p.get("layer").map(|v| (&v.kind, v.pos)) {
+        None => String::new(),
+        Some((Kind::Str(l), _)) => l.clone(),
+        Some((_, at)) => return fail(at, "`layer` must be a string (a DXF layer's name)"),
+    };
+    let mut origin = [0.0, 0.0];
+    let mut warning = None;
+    if let Some(v) = p.get("origin") {
+        match &v.kind {
+            Kind::List(xy) => match xy.as_slice() {
+                [Value { kind: Kind::Num(x), .. }, Value { kind: Kind::Num(y), .. }] => {
+                    if !(x.is_finite() && y.is_finite()) {
+                        return fail(v.pos, "`origin` must be finite");
+                    }
+                    origin = [*x, *y];
+                }
+                _ => warning = Some(v.pos),
+            },
+            _ => warning = Some(v.pos),
+        }
+    }
+    let warning = warning.map(|at| {
+        // OpenSCAD's words, which name the wrong module.
+        let msg = "linear_extrude(..., origin=...) could not be converted".to_string();
+        (at, msg)
+    });
+    let scale = match p.get("scale").map(|v| (&v.kind, v.pos)) {
+        Some((Kind::Num(s), at)) if !s.is_finite() => return fail(at, "`scale` must be finite"),
+        Some((Kind::Num(s), _)) if *s > 0.0 => *s,
+        _ => 1.0,
+    };
+    let res = crate::primitives::Resolution::read(p)?;
+    Ok(DxfArgs {
+        file: name.clone(),
+        settings: crate::dxf::Settings {
+            layer,
+            origin,
+            scale,
+            res,
+        },
+        warning,
+    })
 }

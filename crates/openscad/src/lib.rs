@@ -110,6 +110,7 @@
 
 mod cap;
 mod consts_;
+mod dxf;
 mod export;
 pub mod extrude;
 mod fallback;

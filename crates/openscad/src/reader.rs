@@ -27,8 +27,8 @@ use crate::{Fallback, ReadOptions};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
 use csgpix_scene::Error;
 
-/// An `import` of a 2D file csgpix does not read itself (`.dxf`; `.svg` is read natively,
-/// module [`crate::svg`]).
+/// An `import` of a DXF file, which `--fallback openscad` outlines when csgpix refuses it
+/// (`.svg` and `.dxf` are read natively, modules [`crate::svg`] and [`crate::dxf`]).
 fn flat_import(head: &Head) -> bool {
     head.kind == NodeKind::Import
         && head.params.get("file").is_some_and(|v| match &v.kind {
@@ -206,7 +206,7 @@ impl<'a> Reader<'a> {
             self.parser.expect_sym(b';', &context)?;
             if self.options.fallback == Fallback::Openscad && flat_import(&head) {
                 let source = &self.text[start..self.parser.last_end];
-                let node = self.fallback_flat(source, &head, &ctx)?;
+                let node = self.dxf(&head, &ctx, Some(source))?;
                 return self.deliver(node);
             }
             let node = self.leaf(&head, &ctx)?;
@@ -550,6 +550,55 @@ impl<'a> Reader<'a> {
         Ok(Some(Item::Flat(region, head.pos)))
     }
 
+    /// `import("x.dxf")`: the file's drawing (module [`crate::dxf`]), placed by the
+    /// transforms above. A file csgpix refuses is outlined by openscad when `fallback` holds
+    /// the statement's text (`--fallback openscad`).
+    fn dxf(
+        &mut self,
+        head: &Head,
+        ctx: &Ctx,
+        fallback: Option<&str>,
+    ) -> Result<Option<Item>, Fail> {
+        let args = crate::import::dxf_args(head)?;
+        if ctx.skip {
+            return Ok(None);
+        }
+        self.warnings.extend(args.warning.clone());
+        let dir = self.options.dir.clone().unwrap_or_default();
+        let budget = self.max_vertices().saturating_sub(self.vertices);
+        let what = format!("`import(\"{}\")` (a DXF file)", args.file);
+        let read = crate::dxf::read(&dir.join(&args.file), &args.file, &args.settings, budget);
+        let drawing = match (read, fallback) {
+            (Ok(d), _) => d,
+            (Err(e), Some(source)) => {
+                self.warnings.push((head.pos, format!("{what}: {e}")));
+                return self.fallback_flat(source, head, ctx);
+            }
+            (Err(e), None) => {
+                return Err(Fail {
+                    pos: head.pos,
+                    problem: e.context(what),
+                })
+            }
+        };
+        let at = |w: String| (head.pos, w);
+        self.warnings.extend(drawing.warnings.into_iter().map(at));
+        let n = drawing.shape.points().count();
+        check_budget(n, budget, head.pos)?;
+        self.vertices += n;
+        if drawing.shape.paths.is_empty() {
+            let msg = format!("{what}: the DXF file draws nothing");
+            self.warnings.push((head.pos, msg));
+            return Ok(None);
+        }
+        if let Some(msg) = removal_2d(ctx.matrix.as_ref()) {
+            return Ok(self.removed(Some(msg), head.pos, false, true));
+        }
+        let m = plane_part(ctx.matrix.as_ref());
+        let region = Region::Poly(drawing.shape.transformed(m));
+        Ok(Some(Item::Flat(region, head.pos)))
+    }
+
     fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<Item>, Fail> {
         if head.kind == NodeKind::Import {
             let dir = self.options.dir.as_deref();
@@ -559,6 +608,9 @@ impl<'a> Reader<'a> {
         }
         if crate::import::is_svg(head) {
             return self.svg(head, ctx);
+        }
+        if crate::import::is_dxf(head) {
+            return self.dxf(head, ctx, None);
         }
         if head.kind == NodeKind::Import {
             let import = import(head, ctx)?;
