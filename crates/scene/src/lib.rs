@@ -22,6 +22,12 @@ pub mod expr;
 pub mod grid;
 pub mod input;
 pub mod mesh;
+// The OFF, AMF and 3MF readers behind `trimesh::TriMesh::read`.
+mod amf;
+mod meshfile;
+mod off;
+mod threemf;
+mod zipped;
 pub mod nrrd;
 pub mod solid;
 pub mod trimesh;
