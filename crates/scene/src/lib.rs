@@ -25,11 +25,11 @@ pub mod mesh;
 // The OFF, AMF and 3MF readers behind `trimesh::TriMesh::read`.
 mod amf;
 mod meshfile;
-mod off;
-mod threemf;
-mod zipped;
 pub mod nrrd;
+mod off;
 pub mod solid;
+mod threemf;
 pub mod trimesh;
+mod zipped;
 
 pub use error::{Error, IoError, Kind, Location, OneLine, Result};

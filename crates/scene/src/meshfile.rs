@@ -49,7 +49,14 @@ pub(crate) fn unite(parts: Vec<Soup>, file: &str) -> Result<TriMesh> {
     };
     let mut acc: Option<Manifold> = None;
     for p in &parts {
-        let pos: Vec<f64> = p.iter().flatten().flatten().copied().collect();
+        // Outward, as CGAL's Nef polyhedron takes a closed surface whichever way it faces;
+        // boolmesh reads an inward surface as a hole and its union goes wrong.
+        let inward = signed_volume(p) < 0.0;
+        let pos: Vec<f64> = p
+            .iter()
+            .flat_map(|&[a, b, c]| if inward { [a, c, b] } else { [a, b, c] })
+            .flatten()
+            .collect();
         let idx: Vec<usize> = (0..p.len() * 3).collect();
         let m = Manifold::new(&pos, &idx).map_err(fail)?;
         acc = Some(match acc {
@@ -71,6 +78,17 @@ pub(crate) fn unite(parts: Vec<Soup>, file: &str) -> Result<TriMesh> {
     Ok(TriMesh::from_f64(&tris))
 }
 
+/// The volume a closed surface bounds, negative when its triangles face inward (the
+/// divergence theorem over the triangles' cones from the origin).
+fn signed_volume(p: &Soup) -> f64 {
+    p.iter()
+        .map(|t| {
+            let [a, b, c] = t.map(DVec3::from);
+            a.dot(b.cross(c)) / 6.0
+        })
+        .sum()
+}
+
 fn bounds(p: &Soup) -> (DVec3, DVec3) {
     p.iter()
         .flatten()
@@ -86,12 +104,23 @@ pub(crate) struct Xml<'a> {
 }
 
 impl<'a> Xml<'a> {
-    /// Parses `text`; a syntax error, or more than [`MAX_XML_NODES`] nodes, is one line at its
-    /// place. roxmltree builds the tree without recursion, so deep nesting costs memory only
-    /// (bounded by the node limit), never the stack.
+    /// Parses `text`; a syntax error, more than [`MAX_XML_NODES`] nodes or elements nested
+    /// deeper than [`MAX_XML_DEPTH`] is one line at its place. roxmltree's tokenizer recurses
+    /// once per nested element, so the depth is measured first ([`nesting`]); a DTD is
+    /// refused, since its entities could hold nesting that scan does not see (mesh files
+    /// have none).
     pub(crate) fn parse(text: &'a str, file: &'a str) -> Result<Xml<'a>> {
+        if let Some(at) = nesting(text.as_bytes(), MAX_XML_DEPTH) {
+            let good = &text.as_bytes()[..at];
+            let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
+            let last = good.rsplit(|&b| b == b'\n').next().unwrap_or_default();
+            let col = String::from_utf8_lossy(last).chars().count() + 1;
+            let msg =
+                format!("elements nested more than {MAX_XML_DEPTH} deep: csgpix refuses them");
+            return Err(Error::at(file, line, col, msg));
+        }
         let opts = roxmltree::ParsingOptions {
-            allow_dtd: true,
+            allow_dtd: false,
             nodes_limit: MAX_XML_NODES,
         };
         let doc = roxmltree::Document::parse_with_options(text, opts).map_err(|e| {
@@ -112,6 +141,59 @@ impl<'a> Xml<'a> {
         let p = self.doc.text_pos_at(node.range().start);
         Error::at(self.file, p.row as usize, p.col as usize, msg)
     }
+}
+
+/// How deep XML elements may nest (an AMF mesh needs 7).
+pub(crate) const MAX_XML_DEPTH: usize = 256;
+
+/// The byte offset of the first start tag nested deeper than `max`, if any. Comments, CDATA,
+/// processing instructions and quoted attribute values are skipped as XML reads them, so on a
+/// well-formed prefix the depth is the parser's.
+fn nesting(b: &[u8], max: usize) -> Option<usize> {
+    let find = |from: usize, pat: &[u8]| {
+        b[from..]
+            .windows(pat.len())
+            .position(|w| w == pat)
+            .map_or(b.len(), |i| from + i + pat.len())
+    };
+    let (mut i, mut depth) = (0, 0usize);
+    while i < b.len() {
+        if b[i] != b'<' {
+            i += 1;
+            continue;
+        }
+        let rest = &b[i..];
+        if rest.starts_with(b"<!--") {
+            i = find(i + 4, b"-->");
+        } else if rest.starts_with(b"<![CDATA[") {
+            i = find(i + 9, b"]]>");
+        } else if rest.starts_with(b"<?") {
+            i = find(i + 2, b"?>");
+        } else if rest.starts_with(b"</") {
+            depth = depth.saturating_sub(1);
+            i = find(i + 2, b">");
+        } else {
+            let start = i;
+            let mut quote = None;
+            i += 1;
+            while i < b.len() && !(quote.is_none() && b[i] == b'>') {
+                match (quote, b[i]) {
+                    (None, q @ (b'"' | b'\'')) => quote = Some(q),
+                    (Some(q), c) if c == q => quote = None,
+                    _ => {}
+                }
+                i += 1;
+            }
+            if b.get(i.wrapping_sub(1)) != Some(&b'/') {
+                depth += 1;
+                if depth > max {
+                    return Some(start);
+                }
+            }
+            i += 1;
+        }
+    }
+    None
 }
 
 /// `bytes` as UTF-8 text (a byte-order mark dropped; OFF files are ASCII, XML ones UTF-8); an invalid byte is one line at its

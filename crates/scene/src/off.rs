@@ -49,7 +49,9 @@ impl<'a> Words<'a> {
             let mut rest = line;
             while let Some(start) = rest.find(|c: char| !c.is_ascii_whitespace()) {
                 let tail = &rest[start..];
-                let len = tail.find(|c: char| c.is_ascii_whitespace()).unwrap_or(tail.len());
+                let len = tail
+                    .find(|c: char| c.is_ascii_whitespace())
+                    .unwrap_or(tail.len());
                 let col = line.len() - rest.len() + start + 1;
                 words.push(Word {
                     text: &tail[..len],
@@ -70,7 +72,12 @@ impl<'a> Words<'a> {
     fn next(&mut self, what: &str) -> Result<Word<'a>> {
         self.words.next().ok_or_else(|| {
             let (l, c) = self.end;
-            Error::at(self.file, l, c, format!("expected {what}, found the end of the file"))
+            Error::at(
+                self.file,
+                l,
+                c,
+                format!("expected {what}, found the end of the file"),
+            )
         })
     }
 
@@ -89,7 +96,10 @@ impl<'a> Words<'a> {
     fn count(&mut self, what: &str) -> Result<(usize, Word<'a>)> {
         let w = self.next(what)?;
         let n = w.text.parse::<usize>().map_err(|_| {
-            self.error(w, format!("expected {what} (a whole number), found `{}`", w.text))
+            self.error(
+                w,
+                format!("expected {what} (a whole number), found `{}`", w.text),
+            )
         })?;
         Ok((n, w))
     }
@@ -109,7 +119,10 @@ struct Header {
 /// Reads the keyword, if any, as CGAL's `operator>>(istream, File_header_OFF)` does.
 fn header(w: &mut Words) -> Result<Header> {
     let first = *w.words.peek().ok_or_else(|| {
-        Error::invalid(format!("{}: empty file: an OFF file starts with `OFF`", w.file))
+        Error::invalid(format!(
+            "{}: empty file: an OFF file starts with `OFF`",
+            w.file
+        ))
     })?;
     let t = first.text.as_bytes();
     // CGAL: a keyword unless the word starts with a digit other than '4' or has a digit second.
@@ -133,18 +146,27 @@ fn header(w: &mut Words) -> Result<Header> {
         "OFF" => {}
         "SKEL" => return Err(w.error(first, "a SKEL file has no surface: csgpix reads OFF")),
         _ => {
-            let msg = format!("expected an OFF header (`OFF`, `COFF`, `NOFF`, `4OFF`, …), found `{}`", first.text);
+            let msg = format!(
+                "expected an OFF header (`OFF`, `COFF`, `NOFF`, `4OFF`, …), found `{}`",
+                first.text
+            );
             return Err(w.error(first, msg));
         }
     }
     if w.words.peek().is_some_and(|n| n.text == "BINARY") {
         let b = w.next("")?;
-        return Err(w.error(b, "binary OFF is not read: write the mesh as text OFF, STL or OBJ"));
+        return Err(w.error(
+            b,
+            "binary OFF is not read: write the mesh as text OFF, STL or OBJ",
+        ));
     }
     if dimension {
         let (d, at) = w.count("the dimension of an nOFF file")?;
         if d != 3 {
-            return Err(w.error(at, format!("an OFF file of dimension {d}: csgpix reads 3D meshes")));
+            return Err(w.error(
+                at,
+                format!("an OFF file of dimension {d}: csgpix reads 3D meshes"),
+            ));
         }
     }
     Ok(Header {
@@ -191,8 +213,13 @@ fn vertex(w: &mut Words, homogeneous: bool) -> Result<[f64; 3]> {
     }
     if homogeneous {
         let at = w.next("the homogeneous coordinate w")?;
-        let h = at.text.parse::<f64>().ok().filter(|h| h.is_finite() && *h != 0.0);
-        let h = h.ok_or_else(|| w.error(at, format!("expected a nonzero w, found `{}`", at.text)))?;
+        let h = at
+            .text
+            .parse::<f64>()
+            .ok()
+            .filter(|h| h.is_finite() && *h != 0.0);
+        let h =
+            h.ok_or_else(|| w.error(at, format!("expected a nonzero w, found `{}`", at.text)))?;
         p = p.map(|c| c / h);
         if p.iter().any(|c| !c.is_finite()) {
             return Err(w.error(at, "this w makes the vertex infinite"));
@@ -207,14 +234,20 @@ fn vertex(w: &mut Words, homogeneous: bool) -> Result<[f64; 3]> {
 fn facet(w: &mut Words, k: usize, vs: &[[f64; 3]], soup: &mut Soup) -> Result<()> {
     let (n, at) = w.count("the number of vertices of a facet")?;
     if n < 3 {
-        return Err(w.error(at, format!("facet {k} has {n} vertices: a facet needs at least 3")));
+        return Err(w.error(
+            at,
+            format!("facet {k} has {n} vertices: a facet needs at least 3"),
+        ));
     }
     let mut idx = Vec::with_capacity(n.min(vs.len()));
     let mut line = at.line;
     for _ in 0..n {
         let (i, iw) = w.count("a vertex index")?;
         if i >= vs.len() {
-            let msg = format!("facet {k} refers to vertex {i}, but the file has {} vertices (numbered from 0)", vs.len());
+            let msg = format!(
+                "facet {k} refers to vertex {i}, but the file has {} vertices (numbered from 0)",
+                vs.len()
+            );
             return Err(w.error(iw, msg));
         }
         idx.push(i);
@@ -244,7 +277,8 @@ mod tests {
         e
     }
 
-    const TETRA: &str = "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    const TETRA: &str =
+        "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
 
     #[test]
     fn header_variants_and_comments() {
@@ -255,7 +289,10 @@ mod tests {
         let coff = "# a comment\nCOFF # here too\n4 4 0\n0 0 0 255 0 0 255\n1 0 0 1 2 3 4\n\
                     0 1 0 0 0 0 0\n0 0 1 0 0 0 0\n3 0 2 1 0.5 0.5 0.5\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
         assert_eq!(mesh(coff.as_bytes()).unwrap(), m);
-        let bare = TETRA.strip_prefix("OFF\n").unwrap().replacen("4 4 6", "4 4", 1);
+        let bare = TETRA
+            .strip_prefix("OFF\n")
+            .unwrap()
+            .replacen("4 4 6", "4 4", 1);
         assert_eq!(mesh(bare.as_bytes()).unwrap(), m);
         let homog = "4OFF\n4 4 0\n0 0 0 2\n2 0 0 2\n0 3 0 3\n0 0 0.5 0.5\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
         assert_eq!(mesh(homog.as_bytes()).unwrap(), m);
@@ -284,13 +321,22 @@ mod tests {
         assert!(err("OFF\n-4 4 0\n").starts_with("t.off:2:1:"));
         assert!(err("OFF\n0 0 0\n").contains("no vertices"));
         let e = err("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 nan\n");
-        assert!(e.starts_with("t.off:6:5: expected a vertex coordinate"), "{e}");
+        assert!(
+            e.starts_with("t.off:6:5: expected a vertex coordinate"),
+            "{e}"
+        );
         let e = err(&TETRA.replacen("3 1 2 3", "3 1 2 4", 1));
-        assert!(e.starts_with("t.off:10:7: facet 3 refers to vertex 4"), "{e}");
+        assert!(
+            e.starts_with("t.off:10:7: facet 3 refers to vertex 4"),
+            "{e}"
+        );
         let e = err(&TETRA.replacen("3 1 2 3", "2 1 2", 1));
         assert!(e.starts_with("t.off:10:1: facet 3 has 2 vertices"), "{e}");
         let e = err(&TETRA[..TETRA.len() - 4]);
-        assert!(e.starts_with("t.off:10:5: expected a vertex index, found the end"), "{e}");
+        assert!(
+            e.starts_with("t.off:10:5: expected a vertex index, found the end"),
+            "{e}"
+        );
         assert!(err("4OFF\n1 0 0\n0 0 0 0\n").contains("nonzero w"));
         let e = mesh(b"OFF\n1 0 0\n0 0 \xff").unwrap_err().to_string();
         assert!(e.starts_with("t.off:3:5: not UTF-8"), "{e}");
@@ -299,6 +345,9 @@ mod tests {
     #[test]
     fn huge_counts_do_not_reserve_memory() {
         let e = err("OFF\n4000000000000 4000000000000 0\n0 0 0\n");
-        assert!(e.starts_with("t.off:4:1: expected a vertex coordinate, found the end"), "{e}");
+        assert!(
+            e.starts_with("t.off:4:1: expected a vertex coordinate, found the end"),
+            "{e}"
+        );
     }
 }

@@ -112,7 +112,8 @@ fn build(
     for item in children(root, "build").flat_map(|b| children(b, "item")) {
         let id = item.attribute("objectid").unwrap_or_default();
         if !ids.contains(id) {
-            let msg = format!("the build item names object \"{id}\", which the resources do not define");
+            let msg =
+                format!("the build item names object \"{id}\", which the resources do not define");
             return Err(x.error(item, msg));
         }
         let identity = "1 0 0 0 1 0 0 0 1 0 0 0";
@@ -141,15 +142,18 @@ fn mesh_soup(x: &Xml, mesh: roxmltree::Node) -> Result<Soup> {
     for v in children(mesh, "vertices").flat_map(|n| children(n, "vertex")) {
         let mut p = [0.0; 3];
         for (c, name) in p.iter_mut().zip(["x", "y", "z"]) {
-            let text = v.attribute(name).ok_or_else(|| {
-                x.error(v, format!("a <vertex> needs its attribute {name}"))
-            })?;
+            let text = v
+                .attribute(name)
+                .ok_or_else(|| x.error(v, format!("a <vertex> needs its attribute {name}")))?;
             // lib3mf's vertices are 32-bit floats.
             *c = finite(text)
                 .map(|f| f64::from(f as f32))
                 .filter(|f| f.is_finite())
                 .ok_or_else(|| {
-                    x.error(v, format!("{name}=\"{text}\" is not a finite 32-bit number"))
+                    x.error(
+                        v,
+                        format!("{name}=\"{text}\" is not a finite 32-bit number"),
+                    )
                 })?;
         }
         vs.push(p);
@@ -162,10 +166,130 @@ fn mesh_soup(x: &Xml, mesh: roxmltree::Node) -> Result<Soup> {
             let i = text.trim().parse::<usize>().ok().filter(|&i| i < vs.len());
             *c = vs[i.ok_or_else(|| {
                 let n = vs.len();
-                x.error(t, format!("{name}=\"{text}\" must index the mesh's {n} vertices (from 0)"))
+                x.error(
+                    t,
+                    format!("{name}=\"{text}\" must index the mesh's {n} vertices (from 0)"),
+                )
             })?];
         }
         soup.push(tri);
     }
     Ok(soup)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::meshfile::unite;
+    use crate::zipped::testing::archive;
+
+    const RELS: &str = "<Relationships xmlns=\"http://schemas.openxmlformats.org/package/2006/relationships\">\
+        <Relationship Target=\"/3D/m.model\" Id=\"r\" Type=\"http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel\"/>\
+        </Relationships>";
+
+    fn model(extra: &str, build: &str) -> String {
+        format!(
+            "<?xml version=\"1.0\"?>\n<model unit=\"millimeter\" xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\">\n\
+             <resources>\n<object id=\"1\" type=\"model\"><mesh><vertices>\n\
+             <vertex x=\"0\" y=\"0\" z=\"0\"/><vertex x=\"0.1\" y=\"0\" z=\"0\"/>\n\
+             <vertex x=\"0\" y=\"1\" z=\"0\"/><vertex x=\"0\" y=\"0\" z=\"1\"/>\n\
+             </vertices><triangles>\n\
+             <triangle v1=\"0\" v2=\"2\" v3=\"1\"/><triangle v1=\"0\" v2=\"1\" v3=\"3\"/>\n\
+             <triangle v1=\"0\" v2=\"3\" v3=\"2\"/><triangle v1=\"1\" v2=\"2\" v3=\"3\"/>\n\
+             </triangles></mesh></object>{extra}\n</resources>\n<build>{build}</build>\n</model>\n"
+        )
+    }
+
+    fn err(text: &str) -> String {
+        let e = parse_model(text.as_bytes(), "t.3mf[m]")
+            .err()
+            .expect("accepted")
+            .to_string();
+        assert_eq!(e.lines().count(), 1, "{e}");
+        e
+    }
+
+    #[test]
+    fn a_package_reads_its_model_part() {
+        let m = model("", "<item objectid=\"1\"/>");
+        let z = archive(&[
+            ("_rels/.rels", RELS.as_bytes()),
+            ("3D/m.model", m.as_bytes()),
+        ]);
+        let o = parse(&z, "t.3mf").unwrap();
+        assert!(o.warnings.is_empty());
+        let mesh = unite(o.parts, "t.3mf").unwrap();
+        mesh.check_closed("t.3mf").unwrap();
+        // lib3mf's 32-bit floats.
+        assert!(mesh.vertices.iter().any(|v| v.x == f64::from(0.1f32)));
+        // Without .rels, the usual part; without either, one line.
+        let z = archive(&[("3D/3dmodel.model", m.as_bytes())]);
+        assert_eq!(unite(parse(&z, "t.3mf").unwrap().parts, "").unwrap(), mesh);
+        let z = archive(&[("_rels/.rels", RELS.as_bytes())]);
+        let e = parse(&z, "t.3mf").err().unwrap().to_string();
+        assert_eq!(e, "t.3mf: the 3MF package has no model part `3D/m.model`");
+        let z = archive(&[("_rels/.rels", b"<Relationships/>")]);
+        let e = parse(&z, "t.3mf").err().unwrap().to_string();
+        assert!(
+            e.starts_with("t.3mf[_rels/.rels]:1:1: no relationship"),
+            "{e}"
+        );
+        let e = parse(b"solid x", "t.3mf").err().unwrap().to_string();
+        assert!(e.starts_with("t.3mf: not a readable zip archive"), "{e}");
+    }
+
+    #[test]
+    fn what_openscad_leaves_out_is_a_warning() {
+        let comp = "<object id=\"2\"><components><component objectid=\"1\"/></components></object>";
+        let m = model(
+            comp,
+            "<item objectid=\"1\" transform=\"1 0 0 0 1 0 0 0 1 5 0 0\"/><item objectid=\"2\"/>",
+        );
+        let o = parse_model(m.replacen("millimeter", "inch", 1).as_bytes(), "t.3mf[m]").unwrap();
+        let w: Vec<String> = o.warnings.iter().map(|w| w.to_string()).collect();
+        assert!(
+            w[0].starts_with("t.3mf[m]:2:1: unit \"inch\" is ignored"),
+            "{w:?}"
+        );
+        assert!(
+            w[1].starts_with("t.3mf[m]:10:44: components are not applied"),
+            "{w:?}"
+        );
+        assert!(
+            w[2].starts_with("t.3mf[m]:12:8: the build item's transform"),
+            "{w:?}"
+        );
+        assert_eq!(o.parts.len(), 1);
+        // An identity transform, written out, is no warning.
+        let m = model(
+            "",
+            "<item objectid=\"1\" transform=\"1 0 0 0 1 0 0 0 1 0 0 0\"/>",
+        );
+        assert!(parse_model(m.as_bytes(), "t").unwrap().warnings.is_empty());
+    }
+
+    #[test]
+    fn malformed_models_are_one_line_at_their_place() {
+        let good = model("", "<item objectid=\"1\"/>");
+        assert!(err("<model>").starts_with("t.3mf[m]:1:1: not well-formed XML"));
+        assert!(err("<amf/>").starts_with("t.3mf[m]:1:1: not a 3MF model"));
+        let e = err(&good.replacen("v3=\"3\"", "v3=\"4\"", 1));
+        assert!(
+            e.starts_with("t.3mf[m]:8:33: ")
+                && e.contains("v3=\"4\" must index the mesh's 4 vertices"),
+            "{e}"
+        );
+        let e = err(&good.replacen("x=\"0.1\"", "x=\"1e39\"", 1));
+        assert!(
+            e.starts_with("t.3mf[m]:5:") && e.contains("not a finite 32-bit number"),
+            "{e}"
+        );
+        let e = err(&good.replacen(" z=\"1\"", "", 1));
+        assert!(e.contains("needs its attribute z"), "{e}");
+        let e = err(&good.replacen("objectid=\"1\"", "objectid=\"7\"", 1));
+        assert!(
+            e.starts_with("t.3mf[m]:12:8: the build item names object \"7\""),
+            "{e}"
+        );
+    }
 }

@@ -90,13 +90,24 @@ impl TriMesh {
             return Err(Error::invalid(msg).context(file));
         }
         let bytes = std::fs::read(path).map_err(|e| Error::io("cannot read", &e).context(&file))?;
-        let objects = match ext.as_str() {
-            "off" => crate::off::parse(&bytes, &file)?,
-            "amf" => crate::amf::parse(&bytes, &file)?,
-            "3mf" => crate::threemf::parse(&bytes, &file)?,
-            _ => return Ok((TriMesh::parse(&bytes, &file, ext == "obj")?, vec![])),
+        TriMesh::parse_format(&bytes, &file, &ext)
+    }
+
+    /// Parses the bytes of a mesh file of format `ext` (one of [`READ_EXTENSIONS`]; `file`
+    /// names it in errors and warnings, and its last component names the entry of a zipped
+    /// AMF), as [`TriMesh::read_with_warnings`] does.
+    pub fn parse_format(bytes: &[u8], file: &str, ext: &str) -> Result<(TriMesh, Vec<Error>)> {
+        let objects = match ext {
+            "off" => crate::off::parse(bytes, file)?,
+            "amf" => crate::amf::parse(bytes, file)?,
+            "3mf" => crate::threemf::parse(bytes, file)?,
+            "stl" | "obj" => return Ok((TriMesh::parse(bytes, file, ext == "obj")?, vec![])),
+            _ => {
+                let msg = format!("no mesh format `{ext}`: one of {READ_EXTENSIONS:?}");
+                return Err(Error::invalid(msg).context(file));
+            }
         };
-        let mesh = crate::meshfile::unite(objects.parts, &file)?;
+        let mesh = crate::meshfile::unite(objects.parts, file)?;
         Ok((mesh, objects.warnings))
     }
 

@@ -14,7 +14,8 @@ CUBE_V = [(x, y, z) for z in (0, 10) for y in (0, 10) for x in (0, 10)]
 CUBE_F = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
 
 # An L-shaped prism: the outline (10,4) first, so that a fan from the first vertex crosses
-# the notch (a polygon that has to be triangulated, not fanned naively).
+# the notch (a polygon that has to be triangulated, not fanned naively). Its triangles (AMF,
+# 3MF) face inward: OpenSCAD's CGAL union takes a closed surface either way, and so must csgpix.
 L_OUT = [(10, 4), (4, 4), (4, 10), (0, 10), (0, 0), (10, 0)]
 
 
