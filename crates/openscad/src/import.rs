@@ -3,9 +3,10 @@
 use crate::{frame::*, lex::*, node::*, value::*};
 use csgpix_scene::solid::Import;
 
-/// have one. `scale` other than 1 is refused (OpenSCAD applies it to 2D files only).
-/// `import(file = "x.stl" | "x.obj" | "x.nrrd", threshold = t)`: a mesh or a dataset named by
-/// the scene, loaded later (`csgpix_voxel::sampled`). A dataset needs `threshold`; a mesh must not
+/// `import(file = "x.stl" | "x.obj" | "x.off" | "x.amf" | "x.3mf" | "x.nrrd", threshold = t)`:
+/// a mesh or a dataset named by the scene, loaded later (`csgpix_voxel::sampled`, through
+/// `csgpix_scene::trimesh::TriMesh::read` for meshes). A dataset needs `threshold`; a mesh must
+/// not have one. `scale` other than 1 is refused (OpenSCAD applies it to 2D files only).
 pub(crate) fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
     let p = &head.params;
     let file = p.require("file", "a file name, e.g. import(\"part.stl\")")?;
@@ -15,10 +16,13 @@ pub(crate) fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
     let threshold = p.number("threshold")?;
     let lower = name.to_ascii_lowercase();
     let dataset = lower.ends_with(".nrrd") || lower.ends_with(".nhdr");
-    if !(dataset || lower.ends_with(".stl") || lower.ends_with(".obj")) {
+    let mesh = csgpix_scene::trimesh::READ_EXTENSIONS
+        .iter()
+        .any(|e| lower.rsplit_once('.').is_some_and(|(_, x)| x == *e));
+    if !(dataset || mesh) {
         return fail(
             file.pos,
-            format!("`import(\"{name}\")`: csgpix imports .stl and .obj meshes, .nrrd datasets and .svg and .dxf drawings"),
+            format!("`import(\"{name}\")`: csgpix imports .stl, .obj, .off, .amf and .3mf meshes, .nrrd datasets and .svg and .dxf drawings"),
         );
     }
     match (dataset, threshold) {

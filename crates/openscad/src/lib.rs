@@ -25,9 +25,11 @@
 //!   `polyhedron` is accepted when it is closed and convex.
 //! * The modifiers `%` (background) and `*` (disable) drop the statement, as OpenSCAD leaves
 //!   such nodes out of the rendered result; `#` (highlight) is ignored; `!` is refused.
-//! * `import(file = "x.stl" | "x.obj" | "x.nrrd", threshold = t)` names a mesh or a dataset
-//!   primitive ([`Import`], loaded by `csgpix_voxel::sampled`); `threshold` (ours, not
-//!   OpenSCAD's) is a dataset's iso value.
+//! * `import(file = "x.stl" | "x.obj" | "x.off" | "x.amf" | "x.3mf" | "x.nrrd", threshold = t)`
+//!   names a mesh or a dataset primitive ([`Import`], loaded by `csgpix_voxel::sampled`;
+//!   OFF, AMF and 3MF read as OpenSCAD 2021.01 imports them: 3MF build transforms, components
+//!   and units not applied, several objects united; `csgpix_scene::trimesh::TriMesh::read`);
+//!   `threshold` (ours, not OpenSCAD's) is a dataset's iso value.
 //!
 //! * 2D shapes `square`, `circle`, `polygon(points, paths)` (several paths filled even-odd:
 //!   holes) under 2D `multmatrix`/`color`/`group`/`union`/`difference`/`intersection`, inside

@@ -22,8 +22,14 @@ pub mod expr;
 pub mod grid;
 pub mod input;
 pub mod mesh;
+// The OFF, AMF and 3MF readers behind `trimesh::TriMesh::read`.
+mod amf;
+mod meshfile;
 pub mod nrrd;
+mod off;
 pub mod solid;
+mod threemf;
 pub mod trimesh;
+mod zipped;
 
 pub use error::{Error, IoError, Kind, Location, OneLine, Result};

@@ -171,8 +171,8 @@ pub enum BindingProblem {
     NeedsThreshold,
     /// The file is of no format read here.
     #[error(
-        "{}: csgpix reads .csg scenes, .stl and .obj meshes and .nrrd datasets \
-         (PLY, OFF and others: convert to STL or OBJ)",
+        "{}: csgpix reads .csg scenes, .stl, .obj, .off, .amf and .3mf meshes and .nrrd \
+         datasets (PLY and others: convert to STL or OBJ)",
         OneLine(.0.display())
     )]
     UnknownFormat(PathBuf),

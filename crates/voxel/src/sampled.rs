@@ -207,9 +207,10 @@ pub fn load_scene(path: &Path) -> Result<Loaded> {
 /// [`load_scene`] with the reader's options (`--fallback openscad`).
 pub fn load_scene_with(path: &Path, options: &csgpix_openscad::ReadOptions) -> Result<Loaded> {
     let name = path.display().to_string();
-    let scene = csgpix_openscad::read_scene_with(path, options)?;
+    let mut scene = csgpix_openscad::read_scene_with(path, options)?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let sampled = load_imports_limited(&scene, &name, &dir, options.samples)?;
+    let (sampled, warnings) = load_imports_warned(&scene, &name, &dir, options.samples)?;
+    scene.warnings.extend(warnings);
     Ok(Loaded { scene, sampled })
 }
 
@@ -226,8 +227,20 @@ pub fn load_imports_limited(
     dir: &Path,
     samples: SampleLimit,
 ) -> Result<Vec<Sampled>> {
+    load_imports_warned(scene, scene_file, dir, samples).map(|(s, _)| s)
+}
+
+/// [`load_imports_limited`] and the warnings of reading the mesh files (a 3MF build
+/// transform OpenSCAD 2021.01 does not apply, say: `csgpix_scene::trimesh::TriMesh::read_with_warnings`).
+pub fn load_imports_warned(
+    scene: &CsgScene,
+    scene_file: &str,
+    dir: &Path,
+    samples: SampleLimit,
+) -> Result<(Vec<Sampled>, Vec<csgpix_scene::Error>)> {
     let first = scene.solids.len();
-    scene
+    let mut warnings = vec![];
+    let sampled = scene
         .imports
         .iter()
         .enumerate()
@@ -237,9 +250,17 @@ pub fn load_imports_limited(
                 line: imp.line,
                 col: imp.col,
             };
-            load_import(imp, first + j, &Origin::Scene(at), dir, samples)
+            load_import(
+                imp,
+                first + j,
+                &Origin::Scene(at),
+                dir,
+                samples,
+                &mut warnings,
+            )
         })
-        .collect()
+        .collect::<Result<_>>()?;
+    Ok((sampled, warnings))
 }
 
 /// Where an import was named, for messages.
@@ -276,6 +297,7 @@ fn load_import(
     origin: &Origin,
     dir: &Path,
     samples: SampleLimit,
+    warnings: &mut Vec<csgpix_scene::Error>,
 ) -> Result<Sampled> {
     let colour = imp
         .colour
@@ -312,7 +334,8 @@ fn load_import(
             }
         }
         None => {
-            let mesh = TriMesh::read(&path)?;
+            let (mesh, found) = TriMesh::read_with_warnings(&path)?;
+            warnings.extend(found);
             mesh.check_closed(&path.display().to_string())?;
             Shape::Mesh(mesh.transformed(to_scene))
         }
@@ -326,7 +349,7 @@ fn load_import(
 
 /// A primitive name of a CSG expression bound to a file (`NAME=FILE[,threshold=T]`):
 /// a `.csg` scene (its whole tree stands for the name), a dataset (`.nrrd`, with its
-/// threshold) or a mesh (`.stl`, `.obj`).
+/// threshold) or a mesh (`.stl`, `.obj`, `.off`, `.amf`, `.3mf`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Binding {
     /// The primitive name (letters, digits, `_`; a letter first).
@@ -470,7 +493,8 @@ fn add_part(
     }
     let ext = b.file.extension().map(|x| x.to_ascii_lowercase());
     let ext = ext.as_ref().and_then(|x| x.to_str()).unwrap_or("");
-    if !["nrrd", "nhdr", "stl", "obj"].contains(&ext) {
+    let mesh = csgpix_scene::trimesh::READ_EXTENSIONS.contains(&ext);
+    if !(mesh || ext == "nrrd" || ext == "nhdr") {
         return Err(binding(b, BindingProblem::UnknownFormat(b.file.clone())));
     }
     let dataset = ext == "nrrd" || ext == "nhdr";
@@ -497,6 +521,7 @@ fn add_part(
         &Origin::Binding(&b.name),
         Path::new(""),
         options.samples,
+        &mut scene.warnings,
     )?;
     scene.imports.push(import);
     sampled.push(loaded);
