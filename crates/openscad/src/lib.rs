@@ -117,6 +117,7 @@ mod primitives;
 mod project;
 mod reader;
 mod subprocess;
+pub mod surface;
 mod svg;
 #[cfg(test)]
 mod tests;
