@@ -218,8 +218,7 @@ impl ReadOptions {
     }
 }
 
-/// What becomes of a node csgpix does not draw (`surface()`, a 2D import, a node it does
-/// not know).
+/// What becomes of a node csgpix does not draw (a 2D import, a node it does not know).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Fallback {
     /// Refused, with its line and column (the default: csgpix draws what it reads itself).
