@@ -45,8 +45,14 @@ fn openscads_warnings_are_kept_at_the_node() {
     let scene = read(&text, &dir()).unwrap();
     let w: Vec<String> = scene.warnings.iter().map(|w| w.to_string()).collect();
     assert_eq!(w.len(), 1, "{w:?}");
-    assert!(w[0].starts_with("t.csg:1:1: warning: Illegal value in '"), "{w:?}");
-    assert!(w[0].ends_with("illegal.dat:3:5: `x` is not a number; the rest of the file is ignored"), "{w:?}");
+    assert!(
+        w[0].starts_with("t.csg:1:1: warning: Illegal value in '"),
+        "{w:?}"
+    );
+    assert!(
+        w[0].ends_with("illegal.dat:3:5: `x` is not a number; the rest of the file is ignored"),
+        "{w:?}"
+    );
     assert_eq!(scene.imports.len(), 1);
 
     let tmp = tempfile::tempdir().unwrap();
@@ -79,7 +85,10 @@ fn refusals_are_one_line_at_the_node() {
         .unwrap_err()
         .to_string();
     assert!(e.starts_with("t.csg:2:3: "), "{e}");
-    assert!(e.contains("inf.dat:2:3: `surface(\"inf.dat\")`: a height of `-inf`"), "{e}");
+    assert!(
+        e.contains("inf.dat:2:3: `surface(\"inf.dat\")`: a height of `-inf`"),
+        "{e}"
+    );
     assert_eq!(e.lines().count(), 1);
     let options = csgpix::openscad::ReadOptions {
         dir: Some(tmp.path().to_path_buf()),
@@ -91,6 +100,8 @@ fn refusals_are_one_line_at_the_node() {
         .to_string();
     assert!(e.starts_with("t.csg:1:1: "), "{e}");
     assert!(e.contains("would pass the scene's vertex limit"), "{e}");
-    let e = read("surface(file = 5);", tmp.path()).unwrap_err().to_string();
+    let e = read("surface(file = 5);", tmp.path())
+        .unwrap_err()
+        .to_string();
     assert!(e.starts_with("t.csg:1:16: `file` must be a string"), "{e}");
 }

@@ -54,7 +54,10 @@
 //!   shape, the glyph outlines shaped and flattened as OpenSCAD 2021.01 does
 //!   ([`crate::text`]); a font that is not found is an error, not a substitution.
 //!
-//! Anything else (`surface`, 2D imports, …) is refused with an error naming the node, its
+//! * `surface(file, center, invert)`: the heights of a `.dat` grid or a PNG image closed into
+//!   a solid as OpenSCAD 2021.01 does it ([`surface`]), a closed mesh primitive.
+//!
+//! Anything else (DXF imports, nodes of later releases, …) is refused with an error naming the node, its
 //! line and column, or with [`Fallback::Openscad`] meshed by openscad. [`scene_text`] turns a `.scad` file into
 //! this CSG text by running `openscad`. Every openscad run is killed when it takes longer
 //! than [`ReadOptions::openscad_timeout`] ([`DEFAULT_OPENSCAD_TIMEOUT`] by default).

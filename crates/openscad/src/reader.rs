@@ -511,7 +511,12 @@ impl<'a> Reader<'a> {
         if ctx.skip {
             return Ok(None);
         }
-        let path = self.options.dir.clone().unwrap_or_default().join(&args.file);
+        let path = self
+            .options
+            .dir
+            .clone()
+            .unwrap_or_default()
+            .join(&args.file);
         let budget = self.max_vertices().saturating_sub(self.vertices);
         let read = crate::surface::read(&path, args.invert, budget).map_err(|e| Fail {
             pos: head.pos,

@@ -60,7 +60,10 @@ impl Heights {
     /// The floor's height: the lowest given height less 1, and at most 0 (`min_val` of
     /// `createGeometry`).
     pub fn floor(&self) -> f64 {
-        self.rows.iter().flatten().fold(0.0, |m, &v| f64::min(v - 1.0, m))
+        self.rows
+            .iter()
+            .flatten()
+            .fold(0.0, |m, &v| f64::min(v - 1.0, m))
     }
 }
 
@@ -152,8 +155,14 @@ fn is_space(b: u8) -> bool {
 
 /// `line` without the white space at either end, and where it starts in `line`.
 fn trim(line: &[u8]) -> (usize, &[u8]) {
-    let start = line.iter().position(|&b| !is_space(b)).unwrap_or(line.len());
-    let end = line.iter().rposition(|&b| !is_space(b)).map_or(start, |e| e + 1);
+    let start = line
+        .iter()
+        .position(|&b| !is_space(b))
+        .unwrap_or(line.len());
+    let end = line
+        .iter()
+        .rposition(|&b| !is_space(b))
+        .map_or(start, |e| e + 1);
     (start, &line[start..end])
 }
 
@@ -261,7 +270,8 @@ pub fn read_dat<R: BufRead>(mut r: R, name: &str, budget: usize) -> csgpix_scene
         }
         if let Some((col, token)) = illegal {
             if !eof {
-                let tok = String::from_utf8_lossy(token);
+                // A token may hold a CR or a form feed: shown escaped, the warning one line.
+                let tok = String::from_utf8_lossy(token).escape_debug().to_string();
                 let col = column(&buf, col);
                 out.warnings.push(format!(
                     "Illegal value in '{name}': {name}:{number}:{col}: `{tok}` is not a \
@@ -350,7 +360,11 @@ fn grey_heights(pixels: &[u8], frame: &png::OutputInfo, invert: bool) -> Heights
         // `EXPAND` turns a palette into RGB(A).
         Indexed => 1,
     };
-    let bytes = if frame.bit_depth == png::BitDepth::Sixteen { 2 } else { 1 };
+    let bytes = if frame.bit_depth == png::BitDepth::Sixteen {
+        2
+    } else {
+        1
+    };
     let (w, h) = (frame.width as usize, frame.height as usize);
     let mut rows = vec![Vec::new(); h];
     for (y, line) in pixels.chunks(frame.line_size).take(h).enumerate() {
@@ -383,8 +397,16 @@ pub fn mesh(h: &Heights, center: bool) -> Vec<[DVec3; 3]> {
     }
     let floor = h.floor();
     // OpenSCAD writes `ox + j-1`: (ox + j) - 1, kept in that order.
-    let ox = if center { -((columns - 1) as f64) / 2.0 } else { 0.0 };
-    let oy = if center { -((lines - 1) as f64) / 2.0 } else { 0.0 };
+    let ox = if center {
+        -((columns - 1) as f64) / 2.0
+    } else {
+        0.0
+    };
+    let oy = if center {
+        -((lines - 1) as f64) / 2.0
+    } else {
+        0.0
+    };
     let p = |c: usize, r: usize, z: f64| DVec3::new(ox + c as f64, oy + r as f64, z);
     let mut tris = Vec::with_capacity(mesh_vertices(lines, columns) / 3);
     for i in 1..lines {
@@ -402,15 +424,35 @@ pub fn mesh(h: &Heights, center: bool) -> Vec<[DVec3; 3]> {
     let (last_c, last_r) = (columns - 1, lines - 1);
     for i in 1..lines {
         let (lo, hi) = (i - 1, i);
-        quad([p(0, lo, floor), p(0, lo, h.at(lo, 0)), p(0, hi, h.at(hi, 0)), p(0, hi, floor)]);
+        quad([
+            p(0, lo, floor),
+            p(0, lo, h.at(lo, 0)),
+            p(0, hi, h.at(hi, 0)),
+            p(0, hi, floor),
+        ]);
         let (zl, zh) = (h.at(lo, last_c), h.at(hi, last_c));
-        quad([p(last_c, hi, floor), p(last_c, hi, zh), p(last_c, lo, zl), p(last_c, lo, floor)]);
+        quad([
+            p(last_c, hi, floor),
+            p(last_c, hi, zh),
+            p(last_c, lo, zl),
+            p(last_c, lo, floor),
+        ]);
     }
     for i in 1..columns {
         let (lo, hi) = (i - 1, i);
-        quad([p(hi, 0, floor), p(hi, 0, h.at(0, hi)), p(lo, 0, h.at(0, lo)), p(lo, 0, floor)]);
+        quad([
+            p(hi, 0, floor),
+            p(hi, 0, h.at(0, hi)),
+            p(lo, 0, h.at(0, lo)),
+            p(lo, 0, floor),
+        ]);
         let (zl, zh) = (h.at(last_r, lo), h.at(last_r, hi));
-        quad([p(lo, last_r, floor), p(lo, last_r, zl), p(hi, last_r, zh), p(hi, last_r, floor)]);
+        quad([
+            p(lo, last_r, floor),
+            p(lo, last_r, zl),
+            p(hi, last_r, zh),
+            p(hi, last_r, floor),
+        ]);
     }
     floor_fan(&mut tris, &p, columns, lines, floor);
     tris.retain(|t| (t[1] - t[0]).cross(t[2] - t[0]) != DVec3::ZERO);
@@ -500,7 +542,10 @@ mod tests {
         }
         // Values as boost::lexical_cast reads them; 1e-400 is 0.
         let s = dat("+1 .5 1. 1e1 1E+1 00012 -3 1e-400\n");
-        assert_eq!(s.heights.rows, [[1.0, 0.5, 1.0, 10.0, 10.0, 12.0, -3.0, 0.0]]);
+        assert_eq!(
+            s.heights.rows,
+            [[1.0, 0.5, 1.0, 10.0, 10.0, 12.0, -3.0, 0.0]]
+        );
         assert_eq!(s.heights.floor(), -4.0);
         // Ragged rows: the longest row sets the columns; a missing entry is 0 in the mesh.
         let s = dat("1 2 3\n4 5\n7 8 9 10\n");
@@ -525,10 +570,16 @@ mod tests {
             let s = dat(text);
             assert_eq!(s.heights.rows, rows, "{text:?}");
             assert_eq!(s.warnings.len(), 1, "{text:?}");
-            assert!(s.warnings[0].starts_with("Illegal value in 'h.dat': h.dat:2:"), "{s:?}");
+            assert!(
+                s.warnings[0].starts_with("Illegal value in 'h.dat': h.dat:2:"),
+                "{s:?}"
+            );
         }
         let s = dat("1 2\n\u{e9}\u{e9} x\n");
-        assert!(s.warnings[0].contains("h.dat:2:1: `éé` is not a number"), "{s:?}");
+        assert!(
+            s.warnings[0].contains("h.dat:2:1: `éé` is not a number"),
+            "{s:?}"
+        );
         let s = dat("1 2\n 3 x\n");
         assert!(s.warnings[0].contains("h.dat:2:4: `x`"), "{s:?}");
         // On a last line without a newline OpenSCAD's stream is at its end: no warning.
@@ -561,7 +612,10 @@ mod tests {
         let e = read_from(Cursor::new(text), "h.dat", false, 119)
             .unwrap_err()
             .to_string();
-        assert!(e.starts_with("h.dat:3:1: a grid of 3 × 3 heights would pass"), "{e}");
+        assert!(
+            e.starts_with("h.dat:3:1: a grid of 3 × 3 heights would pass"),
+            "{e}"
+        );
         // One line of a million values past a small budget: refused at the value that passes.
         let line = "1 ".repeat(1_000_000);
         let e = read_from(Cursor::new(format!("1\n{line}")), "h.dat", false, 1000)
@@ -602,34 +656,65 @@ mod tests {
         let scale = 100.0 / 255.0;
         let grey = |r: f64, g: f64, b: f64| scale * (0.2126 * r + 0.7152 * g + 0.0722 * b);
         // 2 × 2 grey: the image's top row is the grid's last.
-        let s = png_heights(&png_bytes(2, 2, Grayscale, Eight, None, &[0, 51, 102, 255]), false);
+        let s = png_heights(
+            &png_bytes(2, 2, Grayscale, Eight, None, &[0, 51, 102, 255]),
+            false,
+        );
         let g = |v: f64| grey(v, v, v);
         assert_eq!(s.heights.rows, [[g(102.0), g(255.0)], [0.0, g(51.0)]]);
         // RGB: 0.2126 r + 0.7152 g + 0.0722 b.
         let rgb = [255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30];
         let s = png_heights(&png_bytes(2, 2, Rgb, Eight, None, &rgb), false);
-        assert_eq!(s.heights.rows[1], [grey(255.0, 0.0, 0.0), grey(0.0, 255.0, 0.0)]);
-        assert_eq!(s.heights.rows[0], [grey(0.0, 0.0, 255.0), grey(10.0, 20.0, 30.0)]);
+        assert_eq!(
+            s.heights.rows[1],
+            [grey(255.0, 0.0, 0.0), grey(0.0, 255.0, 0.0)]
+        );
+        assert_eq!(
+            s.heights.rows[0],
+            [grey(0.0, 0.0, 255.0), grey(10.0, 20.0, 30.0)]
+        );
         // invert: OpenSCAD 2021.01 takes 1 - grey (not 255 - grey).
         let s = png_heights(&png_bytes(1, 2, Grayscale, Eight, None, &[0, 255]), true);
         let lum = |v: f64| 0.2126 * v + 0.7152 * v + 0.0722 * v;
-        assert_eq!(s.heights.rows, [[scale * (1.0 - lum(255.0))], [scale * 1.0]]);
+        assert_eq!(
+            s.heights.rows,
+            [[scale * (1.0 - lum(255.0))], [scale * 1.0]]
+        );
         // 16 bits: the high byte of each sample; alpha is ignored.
-        let s = png_heights(&png_bytes(1, 1, GrayscaleAlpha, Sixteen, None, &[200, 255, 9, 9]), false);
+        let s = png_heights(
+            &png_bytes(1, 1, GrayscaleAlpha, Sixteen, None, &[200, 255, 9, 9]),
+            false,
+        );
         assert_eq!(s.heights.rows, [[g(200.0)]]);
-        let s = png_heights(&png_bytes(1, 1, Rgba, Sixteen, None, &[1, 2, 3, 4, 5, 6, 7, 8]), false);
+        let s = png_heights(
+            &png_bytes(1, 1, Rgba, Sixteen, None, &[1, 2, 3, 4, 5, 6, 7, 8]),
+            false,
+        );
         assert_eq!(s.heights.rows, [[grey(1.0, 3.0, 5.0)]]);
         // 2-bit grey scaled by 255 / 3; a palette looked up, an index past it black.
-        let s = png_heights(&png_bytes(4, 1, Grayscale, Two, None, &[0b00_01_10_11]), false);
+        let s = png_heights(
+            &png_bytes(4, 1, Grayscale, Two, None, &[0b00_01_10_11]),
+            false,
+        );
         assert_eq!(s.heights.rows, [[0.0, g(85.0), g(170.0), g(255.0)]]);
         let pal = [10, 20, 30, 255, 255, 255];
-        let s = png_heights(&png_bytes(3, 1, Indexed, Eight, Some(&pal), &[1, 0, 7]), false);
+        let s = png_heights(
+            &png_bytes(3, 1, Indexed, Eight, Some(&pal), &[1, 0, 7]),
+            false,
+        );
         assert_eq!(s.heights.rows, [[g(255.0), grey(10.0, 20.0, 30.0), 0.0]]);
     }
 
     #[test]
     fn a_png_openscad_cannot_read_is_empty_with_its_warning() {
-        let good = png_bytes(3, 3, png::ColorType::Grayscale, png::BitDepth::Eight, None, &[7; 9]);
+        let good = png_bytes(
+            3,
+            3,
+            png::ColorType::Grayscale,
+            png::BitDepth::Eight,
+            None,
+            &[7; 9],
+        );
         let mut crc = good.clone();
         crc[40] ^= 1;
         for bad in [&good[..good.len() - 20], &good[..12], &crc[..]] {
@@ -643,7 +728,14 @@ mod tests {
 
     #[test]
     fn a_png_past_the_budget_is_refused_from_its_header() {
-        let mut bytes = png_bytes(2, 2, png::ColorType::Grayscale, png::BitDepth::Eight, None, &[0; 4]);
+        let mut bytes = png_bytes(
+            2,
+            2,
+            png::ColorType::Grayscale,
+            png::BitDepth::Eight,
+            None,
+            &[0; 4],
+        );
         // Claim 60000 × 60000 pixels (the header's CRC mended): refused before decoding.
         bytes[16..24].copy_from_slice(&[0, 0, 0xea, 0x60, 0, 0, 0xea, 0x60]);
         let crc = crc32(&bytes[12..29]);
@@ -651,7 +743,10 @@ mod tests {
         let e = read_from(Cursor::new(&bytes), "i.png", false, 20_000_000)
             .unwrap_err()
             .to_string();
-        assert!(e.starts_with("i.png:0:17: a 60000×60000 image: a grid of"), "{e}");
+        assert!(
+            e.starts_with("i.png:0:17: a 60000×60000 image: a grid of"),
+            "{e}"
+        );
     }
 
     /// The PNG chunk CRC (ISO 3309), bit by bit.
@@ -660,7 +755,11 @@ mod tests {
         for &b in bytes {
             c ^= u32::from(b);
             for _ in 0..8 {
-                c = if c & 1 != 0 { 0xedb8_8320 ^ (c >> 1) } else { c >> 1 };
+                c = if c & 1 != 0 {
+                    0xedb8_8320 ^ (c >> 1)
+                } else {
+                    c >> 1
+                };
             }
         }
         !c
@@ -698,7 +797,11 @@ mod tests {
                     want += corners / 4.0 - floor;
                 }
             }
-            assert!((volume(&tris) - want).abs() < 1e-9, "{} {want}", volume(&tris));
+            assert!(
+                (volume(&tris) - want).abs() < 1e-9,
+                "{} {want}",
+                volume(&tris)
+            );
             let xs = tris.iter().flatten().map(|v| v.x);
             let lo = xs.clone().fold(f64::MAX, f64::min);
             assert_eq!(lo, if center { -1.5 } else { 0.0 });
