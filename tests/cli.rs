@@ -409,11 +409,12 @@ fn render_csg(text: &str, extra: &[&str]) -> (Option<i32>, String, bool) {
 
 #[test]
 fn unsupported_csg_nodes_are_named_with_line_and_column() {
-    let text = "group() {\n  cube(size = [1, 1, 1]);\n  surface(file = \"h.dat\");\n}\n";
+    // `roof`: a node of OpenSCAD releases after 2021.01.
+    let text = "group() {\n  cube(size = [1, 1, 1]);\n  roof(method = \"straight\");\n}\n";
     let (code, err, written) = render_csg(text, &[]);
     assert_eq!(code, Some(2));
     assert!(
-        err.contains("scene.csg:3:3") && err.contains("surface"),
+        err.contains("scene.csg:3:3") && err.contains("roof"),
         "{err}"
     );
     assert_eq!(err.lines().count(), 1, "{err}");
@@ -600,7 +601,7 @@ fn voxelize_refuses_bad_input_without_output() {
     let bad = d.path().join("bad.csg");
     std::fs::write(
         &bad,
-        "cube(size = [1, 1, 1]);\nsurface(file = \"h.dat\");\n",
+        "cube(size = [1, 1, 1]);\nroof(method = \"straight\");\n",
     )
     .unwrap();
     for args in [

@@ -1,7 +1,7 @@
 //! `.scad` files as OpenSCAD users write them, through the command line: errors placed at the
 //! line and column of the `.scad` (or said to be in openscad's export), OpenSCAD's warnings
-//! for empty primitives and ignored children, and `--fallback openscad` for what csgpix does
-//! not draw, checked against OpenSCAD's own mesh of the same subtree.
+//! for empty primitives and ignored children, `surface()` checked against OpenSCAD's own mesh
+//! of the design, and `--fallback openscad` for what csgpix does not draw.
 //!
 //! Needs `openscad` on PATH (skipped without it unless `CSGPIX_OPENSCAD=require`).
 
@@ -66,20 +66,22 @@ fn errors_are_placed_in_the_scad_file() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    // surface() is called at one place (line 5, column 3): the error is put there.
+    // surface() is called at one place (line 5, column 3), its file has a height csgpix
+    // refuses: the error is put there.
     let scad = "// a part\nh = 2;\n\nmodule bump() {\n  surface(file = \"bump.dat\");\n}\n\
                 translate([1, 0, 0]) cube(h);\nbump();\n";
-    std::fs::write(dir.path().join("bump.dat"), "1 2\n3 4\n").unwrap();
+    std::fs::write(dir.path().join("bump.dat"), "1 2\n3 inf\n").unwrap();
+    let refused = "bump.dat:2:3: `surface(\"bump.dat\")`: a height of `inf`";
     let (code, _, e) = run(dir.path(), scad, &[]);
     assert_eq!(code, Some(2), "{e}");
     assert_eq!(e.trim().lines().count(), 1, "{e}");
-    assert!(e.contains("p.scad:5:3: unsupported node `surface`"), "{e}");
+    assert!(e.contains("p.scad:5:3: ") && e.contains(refused), "{e}");
     assert!(!dir.path().join("p.nrrd").exists());
     // A module called twice still has one call site of `surface`: the error is put there.
     let twice = format!("{scad}translate([5, 0, 0]) bump();\n");
     let (code, _, e) = run(dir.path(), &twice, &[]);
     assert_eq!(code, Some(2), "{e}");
-    assert!(e.contains("p.scad:5:3: unsupported node `surface`"), "{e}");
+    assert!(e.contains("p.scad:5:3: ") && e.contains(refused), "{e}");
     // Written at two places: no line of the .scad is claimed.
     let twice = format!("{scad}surface(file = \"bump.dat\");\n");
     let (code, _, e) = run(dir.path(), &twice, &[]);
@@ -117,9 +119,11 @@ fn empty_primitives_and_other_dimensions_warn_and_go_on() {
     assert!(only.iter().all(|&f| f), "the cube fills its own bounds");
 }
 
-/// `surface()` meshed by openscad gives the voxels of OpenSCAD's own mesh of the design.
+/// `surface()`, read by csgpix (crates/openscad/src/surface.rs), gives the voxels of
+/// OpenSCAD's own mesh of the design; `--fallback openscad` leaves it to csgpix, as a node
+/// csgpix reads.
 #[test]
-fn fallback_meshes_what_csgpix_does_not_draw() {
+fn surface_gives_the_voxels_of_openscads_mesh() {
     if !have_openscad() {
         return;
     }
@@ -134,18 +138,17 @@ fn fallback_meshes_what_csgpix_does_not_draw() {
     let scad =
         "difference() {\n  translate([0, 0, -1]) surface(file = \"bump.dat\", center = true);\n  \
                 cylinder(r = 1.2, h = 10, center = true, $fn = 24);\n}\n";
-    let (code, _, e) = run(dir.path(), scad, &[]);
-    assert_eq!(code, Some(2), "refused by default: {e}");
     let bounds = ["--bounds", "-3,-3,-2,3,3,4"];
     let mut args = vec!["--fallback", "openscad"];
     args.extend(bounds);
     let (code, _, e) = run(dir.path(), scad, &args);
     assert_eq!(code, Some(0), "{e}");
-    assert!(
-        e.contains("csgpix: warning: p.scad:2:25: `surface` meshed by openscad"),
-        "{e}"
-    );
+    assert!(!e.contains("meshed by openscad"), "{e}");
+    let fallback = occupancy(&dir.path().join("p.nrrd"));
+    let (code, _, e) = run(dir.path(), scad, &bounds);
+    assert_eq!(code, Some(0), "{e}");
     let ours = occupancy(&dir.path().join("p.nrrd"));
+    assert_eq!(ours, fallback);
     let theirs = openscads_voxels(dir.path(), &bounds);
     let both = ours.iter().zip(&theirs).filter(|(a, b)| **a && **b).count();
     let either = ours.iter().zip(&theirs).filter(|(a, b)| **a || **b).count();

@@ -128,7 +128,8 @@ fn a_fallback_mesh_is_stopped_at_the_limit_too() {
     let scene = d.join("scene");
     std::fs::create_dir(&scene).unwrap();
     let csg = scene.join("s.csg");
-    std::fs::write(&csg, "cube(2);\nsurface(file = \"x.dat\");\n").unwrap();
+    // `roof`: a node of OpenSCAD releases after 2021.01, which csgpix does not read.
+    std::fs::write(&csg, "cube(2);\nroof(method = \"straight\");\n").unwrap();
     let out = d.join("o.nrrd");
     let args = [
         "voxelize",
@@ -146,7 +147,7 @@ fn a_fallback_mesh_is_stopped_at_the_limit_too() {
     let err = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(2), "{err}");
     let want = format!(
-        "csgpix: {}:2:1: `surface` (--fallback openscad): openscad did not finish within 1 s \
+        "csgpix: {}:2:1: `roof` (--fallback openscad): openscad did not finish within 1 s \
          (--openscad-timeout)\n",
         csg.display()
     );

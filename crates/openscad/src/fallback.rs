@@ -1,5 +1,5 @@
-//! `--fallback openscad`: a subtree csgpix does not draw (`surface()`, a 2D import, a node it
-//! does not know) meshed by openscad itself and drawn as a closed mesh primitive.
+//! `--fallback openscad`: a subtree csgpix does not draw (a 2D import, a node it does not
+//! know) meshed by openscad itself and drawn as a closed mesh primitive.
 
 use csgpix_scene::Error;
 use std::path::Path;

@@ -64,7 +64,10 @@
 //! so does the reader, into [`CsgScene::warnings`]; [`ReadOptions::strict`] refuses the
 //! first instead.
 //!
-//! Anything else (`surface`, 2D imports, …) is refused with an error naming the node, its
+//! * `surface(file, center, invert)`: the heights of a `.dat` grid or a PNG image closed into
+//!   a solid as OpenSCAD 2021.01 does it ([`surface`]), a closed mesh primitive.
+//!
+//! Anything else (DXF imports, nodes of later releases, …) is refused with an error naming the node, its
 //! line and column, or with [`Fallback::Openscad`] meshed by openscad. [`scene_text`] turns a `.scad` file into
 //! this CSG text by running `openscad`. Every openscad run is killed when it takes longer
 //! than [`ReadOptions::openscad_timeout`] ([`DEFAULT_OPENSCAD_TIMEOUT`] by default).
@@ -128,6 +131,7 @@ mod primitives;
 mod project;
 mod reader;
 mod subprocess;
+pub mod surface;
 mod svg;
 #[cfg(test)]
 mod tests;
@@ -233,8 +237,7 @@ impl ReadOptions {
     }
 }
 
-/// What becomes of a node csgpix does not draw (`surface()`, a 2D import, a node it does
-/// not know).
+/// What becomes of a node csgpix does not draw (a 2D import, a node it does not know).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Fallback {
     /// Refused, with its line and column (the default: csgpix draws what it reads itself).

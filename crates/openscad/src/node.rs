@@ -29,6 +29,7 @@ pub(crate) enum NodeKind {
     Projection,
     Resize,
     Text,
+    Surface,
 }
 
 /// How the children of an operation combine.
@@ -40,7 +41,7 @@ pub(crate) enum Op {
 }
 
 /// Every node this reader understands, by name.
-pub(crate) const NODES: [(&str, NodeKind); 23] = [
+pub(crate) const NODES: [(&str, NodeKind); 24] = [
     ("group", NodeKind::Group),
     ("union", NodeKind::Union),
     ("difference", NodeKind::Difference),
@@ -64,6 +65,7 @@ pub(crate) const NODES: [(&str, NodeKind); 23] = [
     ("projection", NodeKind::Projection),
     ("resize", NodeKind::Resize),
     ("text", NodeKind::Text),
+    ("surface", NodeKind::Surface),
 ];
 
 impl NodeKind {
@@ -125,6 +127,8 @@ impl NodeKind {
                 &["r", "d", "d1", "d2", "$fn", "$fa", "$fs"],
             ),
             NodeKind::Polyhedron => (&["points", "faces", "convexity"], &["triangles"]),
+            // `timestamp`: the CSG export's, ignored (module [`crate::surface`]).
+            NodeKind::Surface => (&["file", "center", "convexity"], &["invert", "timestamp"]),
             // OpenSCAD's own parameters (read and ignored: they concern 2D files), and ours.
             NodeKind::Import => (
                 &["file", "layer", "convexity"],
@@ -156,6 +160,7 @@ impl NodeKind {
                 | NodeKind::Circle
                 | NodeKind::Polygon
                 | NodeKind::Text
+                | NodeKind::Surface
         )
     }
 

@@ -599,6 +599,52 @@ impl<'a> Reader<'a> {
         Ok(Some(Item::Flat(region, head.pos)))
     }
 
+    /// `surface(file, center, invert)`: the heights of a `.dat` grid or a PNG image closed
+    /// into a solid (module [`crate::surface`]), a closed mesh primitive placed by the
+    /// transforms above. A file OpenSCAD cannot read, or too few heights, is empty, with
+    /// OpenSCAD's warning or csgpix's.
+    fn surface(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<Item>, Fail> {
+        let args = crate::surface::surface_args(head)?;
+        if ctx.skip {
+            return Ok(None);
+        }
+        let path = self
+            .options
+            .dir
+            .clone()
+            .unwrap_or_default()
+            .join(&args.file);
+        let budget = self.max_vertices().saturating_sub(self.vertices);
+        let read = crate::surface::read(&path, args.invert, budget).map_err(|e| Fail {
+            pos: head.pos,
+            problem: e.context(format_args!("`surface(\"{}\")`", args.file)),
+        })?;
+        let warned = !read.warnings.is_empty();
+        self.warnings
+            .extend(read.warnings.into_iter().map(|w| (head.pos, w)));
+        let tris = crate::surface::mesh(&read.heights, args.center);
+        if tris.is_empty() {
+            if !warned {
+                let (l, c) = (read.heights.lines(), read.heights.columns());
+                let msg = format!(
+                    "`surface(\"{}\")` has {l} × {c} heights (rows × columns): it encloses \
+                     nothing (it is empty)",
+                    args.file
+                );
+                self.warnings.push((head.pos, msg));
+            }
+            return Ok(Some(Item::Solid(CsgNode::Empty)));
+        }
+        self.vertices += tris.len() * 3;
+        let to = Placement {
+            matrix: ctx.matrix,
+            colour: ctx.colour,
+            pos: head.pos,
+            name: "surface",
+        };
+        self.push_mesh(tris, &to).map(|n| Some(Item::Solid(n)))
+    }
+
     fn leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<Item>, Fail> {
         if head.kind == NodeKind::Import {
             let dir = self.options.dir.as_deref();
@@ -611,6 +657,9 @@ impl<'a> Reader<'a> {
         }
         if crate::import::is_dxf(head) {
             return self.dxf(head, ctx, None);
+        }
+        if head.kind == NodeKind::Surface {
+            return self.surface(head, ctx);
         }
         if head.kind == NodeKind::Import {
             let import = import(head, ctx)?;

@@ -436,10 +436,11 @@ fn syntax_accepted() {
 #[test]
 fn errors_name_line_and_column() {
     assert_err(
-        "group() {\n  surface(file = \"h.dat\");\n}",
+        // `roof`: a node of OpenSCAD releases after 2021.01.
+        "group() {\n  roof(method = \"straight\");\n}",
         2,
         3,
-        "unsupported node `surface` (csgpix reads group",
+        "unsupported node `roof` (csgpix reads group",
     );
     assert_err(
         "projection() cube(1);",
