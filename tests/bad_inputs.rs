@@ -120,7 +120,10 @@ fn unknown_mesh_extensions_are_refused_by_name() {
     let out = dir.path().join("o.nrrd");
     let prim = format!("A={}", s(&ply));
     let e = refused_prim(&prim, &out, &[]);
-    assert!(e.contains(".stl and .obj") && e.contains("PLY"), "{e}");
+    assert!(
+        e.contains(".stl, .obj, .off, .amf and .3mf") && e.contains("PLY"),
+        "{e}"
+    );
 }
 
 #[cfg(unix)]

@@ -31,7 +31,7 @@ pub(crate) const MAX_XML_NODES: u32 = 1 << 24;
 /// through boolmesh, which needs each to be a closed manifold. Empty objects add nothing.
 pub(crate) fn unite(parts: Vec<Soup>, file: &str) -> Result<TriMesh> {
     let parts: Vec<Soup> = parts.into_iter().filter(|p| !p.is_empty()).collect();
-    let boxes: Vec<(DVec3, DVec3)> = parts.iter().map(|p| bounds(p)).collect();
+    let boxes: Vec<(DVec3, DVec3)> = parts.iter().map(bounds).collect();
     let overlap = boxes.iter().enumerate().any(|(i, a)| {
         boxes[..i]
             .iter()

@@ -725,7 +725,19 @@ fn read_picks_the_format_by_extension() {
     let ply = dir.path().join("t.ply");
     std::fs::write(&ply, "ply\nformat ascii 1.0\n").unwrap();
     let e = TriMesh::read(&ply).unwrap_err().to_string();
-    assert!(e.contains(".stl or .obj"), "{e}");
+    assert!(e.contains(".stl, .obj, .off, .amf or .3mf"), "{e}");
+    // OFF, AMF and 3MF by their extension, any case.
+    let off = dir.path().join("t.Off");
+    std::fs::write(&off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").unwrap();
+    assert_eq!(TriMesh::read(&off).unwrap().triangles.len(), 1);
+    let amf = dir.path().join("t.AMF");
+    std::fs::write(&amf, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").unwrap();
+    let e = TriMesh::read(&amf).unwrap_err().to_string();
+    assert!(e.contains("t.AMF:1:1: not well-formed XML"), "{e}");
+    let tmf = dir.path().join("t.3mf");
+    std::fs::write(&tmf, TETRA_STL).unwrap();
+    let e = TriMesh::read(&tmf).unwrap_err().to_string();
+    assert!(e.contains("t.3mf: not a readable zip archive"), "{e}");
 }
 
 fn err(text: &str, file: &str, obj: bool) -> String {
