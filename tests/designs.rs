@@ -188,7 +188,14 @@ fn csgpix_voxels(
     let bounds = format!("{},{},{},{},{},{}", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
     let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_csgpix"));
     cmd.args(["voxelize", csg.to_str().unwrap(), "--res", "64x64x64"]);
-    cmd.args(["--bounds", &bounds, "--model", model, "-o", out.to_str().unwrap()]);
+    cmd.args([
+        "--bounds",
+        &bounds,
+        "--model",
+        model,
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     if fallback == Fallback::Openscad {
         cmd.args(["--fallback", "openscad"]);
     }
@@ -347,7 +354,13 @@ fn compare_ledger(
             (Some(Entry::Refused(was)), Entry::Refused(m)) if was != m => {
                 better.push(format!("{name}: still refused, now: {m}"))
             }
-            (Some(Entry::Accepted { word: w0, float: f0 }), Entry::Accepted { word, float }) => {
+            (
+                Some(Entry::Accepted {
+                    word: w0,
+                    float: f0,
+                }),
+                Entry::Accepted { word, float },
+            ) => {
                 for (what, old, new) in [("word", w0, word), ("float", f0, float)] {
                     if *new < old - SLACK {
                         worse.push(format!("{name}: IoU {what} {new:.4} < ledger {old:.4}"));
@@ -403,7 +416,10 @@ fn print_table(rows: &[Row]) {
             ),
         }
     }
-    let accepted: Vec<_> = rows.iter().filter_map(|r| r.outcome.as_ref().ok()).collect();
+    let accepted: Vec<_> = rows
+        .iter()
+        .filter_map(|r| r.outcome.as_ref().ok())
+        .collect();
     let word_ok = accepted.iter().filter(|a| a.0 >= 0.99).count();
     let float_ok = accepted.iter().filter(|a| a.1 >= 0.999).count();
     println!(
@@ -420,7 +436,11 @@ fn designs_against_ledger() {
     let only = std::env::var("CSGPIX_DESIGNS").ok();
     let wanted = |n: &str| only.as_ref().is_none_or(|o| o.split(',').any(|x| x == n));
     let names: Vec<(String, f64)> = corpus().into_iter().filter(|(n, _)| wanted(n)).collect();
-    assert!(only.is_some() || names.len() >= 150, "{} designs", names.len());
+    assert!(
+        only.is_some() || names.len() >= 150,
+        "{} designs",
+        names.len()
+    );
     let mut rows: Vec<Row> = names
         .par_iter()
         .map(|(n, s)| measure(n, *s, Fallback::Refuse, tmp.path()))
@@ -441,7 +461,11 @@ fn designs_against_ledger() {
     let text = std::fs::read_to_string(ledger_path()).unwrap_or_default();
     let ledger = read_ledger(&text);
     if std::env::var("CSGPIX_LEDGER").as_deref() == Ok("write") {
-        let mut next = if only.is_some() { ledger } else { BTreeMap::new() };
+        let mut next = if only.is_some() {
+            ledger
+        } else {
+            BTreeMap::new()
+        };
         next.extend(now);
         std::fs::write(ledger_path(), write_ledger(&next)).unwrap();
         println!("wrote {} ({} rows)", ledger_path().display(), next.len());
