@@ -10,15 +10,22 @@
 # (the Ubuntu font's Bold face is family "Ubuntu", style "Bold"), so fontconfig gives OpenSCAD
 # its fallback, DejaVu Sans Bold, even with the Ubuntu font installed; csgpix refuses it.
 #
+# Designs named bosl2-* include BOSL2 (BSD-2-Clause, not copied here): put a checkout of
+# BelfrySCAD/BOSL2 at the commit given in README.md in a folder named BOSL2 inside a folder
+# on OPENSCADPATH. Designs named mcad-* and openscad-example023 `use` MCAD from OpenSCAD's
+# installed library folder (Debian: /usr/share/openscad/libraries/MCAD, package openscad-mcad).
+# LIMIT (seconds, default 900) bounds each openscad run; every run is `nice -n 10`.
+#
 #   sh generate.sh              # every design
 #   sh generate.sh NAME...      # only these (their rows of times.tsv are replaced)
+#   LIMIT=300 OPENSCADPATH=/path/to/libs sh generate.sh bosl2-gears
 set -eu
 cd "$(dirname "$0")"
 here=$(pwd)
 OPENSCAD_FONT_PATH="$(cd ../fonts && pwd)${OPENSCAD_FONT_PATH:+:$OPENSCAD_FONT_PATH}"
 export OPENSCAD_FONT_PATH
 mkdir -p meshes
-limit=900
+limit=${LIMIT:-900}
 tab=$(printf '\t')
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -53,7 +60,7 @@ for name in $names; do
     # `$preview = false`: the tree OpenSCAD renders (F6, STL export), not the one it previews
     # (a CSG export alone evaluates `$preview` as true, so a design's `if ($preview)`
     # assembly view would be compared with the printed parts of the mesh below).
-    if ! timeout "$limit" openscad -q -D '$preview=false' -o "$here/meshes/$name.csg" "$src" </dev/null 2>"$tmp/err"; then
+    if ! nice -n 10 timeout "$limit" openscad -q -D '$preview=false' -o "$here/meshes/$name.csg" "$src" </dev/null 2>"$tmp/err"; then
         echo "generate.sh: $name: CSG export failed" >&2
         cat "$tmp/err" >&2
     fi
@@ -68,7 +75,7 @@ for name in $names; do
     start=$(now)
     status=ok
     OPENSCAD_FONT_PATH="$(cd "$dir" && pwd):$OPENSCAD_FONT_PATH" \
-    timeout "$limit" openscad -q -o "$here/meshes/$name.off" "$dir/.$name.mesh.csg" </dev/null 2>"$tmp/err" || {
+    nice -n 10 timeout "$limit" openscad -q -o "$here/meshes/$name.off" "$dir/.$name.mesh.csg" </dev/null 2>"$tmp/err" || {
         rc=$?
         if [ "$rc" -eq 124 ]; then status=timeout; else status="fail:$rc"; fi
     }
