@@ -25,5 +25,6 @@ pub mod mesh;
 pub mod nrrd;
 pub mod solid;
 pub mod trimesh;
+pub mod winding;
 
 pub use error::{Error, IoError, Kind, Location, OneLine, Result};
