@@ -8,7 +8,7 @@
 //! defined, is the parity's 0 or 1 off the surface of a closed, consistently wound mesh, and
 //! changes smoothly across a hole. csgpix takes `p` inside where `w(p) ≥ 1/2` and `p` lies in
 //! the mesh's bounding box (in the voxelizer's frame). OpenSCAD 2021.01 has no counterpart:
-//! its CGAL path (`CGALUtils::createNefPolyhedronFromGeometry`) stops at "The given mesh is
+//! its CGAL path (`createNefPolyhedronFromPolySet` in src/cgalutils.cc) stops at "The given mesh is
 //! not closed! Unable to convert to CGAL_Nef_Polyhedron." and drops the object.
 //!
 //! # Winding by crossings and the boundary
