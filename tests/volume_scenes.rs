@@ -455,7 +455,9 @@ fn bad_imports_are_refused_with_file_line_and_column() {
     w("open.stl", &open);
     let uses_open = w("open.csg", "import(\"open.stl\");\n");
     let open_out = dir.path().join("open.nrrd").display().to_string();
-    let o = csgpix(&["voxelize", &uses_open, "--res", "8x8x8", "-o", &open_out, "--json"]);
+    let o = csgpix(&[
+        "voxelize", &uses_open, "--res", "8x8x8", "-o", &open_out, "--json",
+    ]);
     let report = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let warning = format!("{uses_open}:1:1: warning: `open.stl`: mesh is not closed: 30 edges");

@@ -96,7 +96,10 @@ impl OpenMesh {
 
     /// The boundary chain's edges counted with their multiplicity.
     pub fn boundary_edges(&self) -> usize {
-        self.boundary.iter().map(|(_, m)| m.unsigned_abs() as usize).sum()
+        self.boundary
+            .iter()
+            .map(|(_, m)| m.unsigned_abs() as usize)
+            .sum()
     }
 
     /// The generalized winding number at `p`, summed over every triangle (van Oosterom and
@@ -149,7 +152,12 @@ impl OpenMesh {
         depths: &[f64],
     ) -> Vec<Option<f64>> {
         let mut out = vec![None; depths.len()];
-        let win = Window { x0: x, y0: y, w: 1, h: 1 };
+        let win = Window {
+            x0: x,
+            y0: y,
+            w: 1,
+            h: 1,
+        };
         if let Some((column, crossings)) = self.prepare(to_frame, win, depths) {
             if let Some((px, py)) = column.centre(win, 0) {
                 let w = column.winding(px, py, &crossings[0]);
@@ -168,7 +176,7 @@ impl OpenMesh {
         to_frame: impl Fn(DVec3) -> DVec3,
         win: Window,
         depths: &[f64],
-    ) -> Option<(Column, Vec<Vec<(f64, i32)>>)> {
+    ) -> Option<(Column, Vec<Crossed>)> {
         if self.mesh.triangles.is_empty() || win.w.saturating_mul(win.h) == 0 {
             return None;
         }
@@ -204,17 +212,19 @@ impl OpenMesh {
     /// The fixed-point x, y and the depth of the projected vertices' box.
     fn frame_box(&self, projected: &[Projected]) -> (DVec3, DVec3) {
         let used = self.mesh.triangles.iter().flatten();
-        used.map(|&i| projected[i as usize])
-            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
+        used.map(|&i| projected[i as usize]).fold(
+            (DVec3::INFINITY, DVec3::NEG_INFINITY),
+            |(lo, hi), p| {
                 let v = DVec3::new(p.x as f64, p.y as f64, p.z);
                 (lo.min(v), hi.max(v))
-            })
+            },
+        )
     }
 
     /// Per pixel of `win`, the depths where its column crosses a triangle and the jump of
     /// the winding number there (+1 where the triangle runs clockwise in the frame, facing
     /// down the depth axis), sorted by depth.
-    fn signed_crossings(&self, projected: &[Projected], win: Window) -> Vec<Vec<(f64, i32)>> {
+    fn signed_crossings(&self, projected: &[Projected], win: Window) -> Vec<Crossed> {
         let tris: Vec<Raster> = self
             .mesh
             .triangles
@@ -243,6 +253,9 @@ impl OpenMesh {
         pixels
     }
 }
+
+/// One column's crossings: depth and the winding number's jump there, sorted by depth.
+type Crossed = Vec<(f64, i32)>;
 
 /// The frame's axes in scene proportions: frame coordinate i over `scale[i]` is a scene
 /// length along an orthonormal basis whose handedness is `sign` times the scene's.
@@ -410,7 +423,10 @@ fn orient(vertices: &[DVec3], tris: Vec<[u32; 3]>) -> Vec<[u32; 3]> {
     let mut users: HashMap<(u32, u32), Vec<u32>> = HashMap::with_capacity(tris.len() * 3 / 2);
     for (k, t) in tris.iter().enumerate() {
         for (a, b) in edges(t) {
-            users.entry((a.min(b), a.max(b))).or_default().push(k as u32);
+            users
+                .entry((a.min(b), a.max(b)))
+                .or_default()
+                .push(k as u32);
         }
     }
     let mut piece = vec![u32::MAX; tris.len()];

@@ -127,7 +127,11 @@ fn parity(m: &TriMesh, f: &Frame, n: usize) -> (Vec<bool>, Vec<bool>) {
 fn in_box(f: &Frame, n: usize, lo: [f64; 3], hi: [f64; 3]) -> Vec<bool> {
     let mut v = vec![false; n * n * n];
     for (i, c) in v.iter_mut().enumerate() {
-        let p = f.scene(DVec3::new((i / n % n) as f64, (i / n / n) as f64, (i % n) as f64));
+        let p = f.scene(DVec3::new(
+            (i / n % n) as f64,
+            (i / n / n) as f64,
+            (i % n) as f64,
+        ));
         *c = (0..3).all(|a| lo[a] < p[a] && p[a] < hi[a]);
     }
     v

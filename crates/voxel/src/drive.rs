@@ -11,11 +11,11 @@ use crate::footprint::{footprints, Footprint};
 use crate::masks::{array_mask_in, slice_ops};
 use crate::pixel_box::PixelBox;
 use crate::ranges::{float_ranges, mesh_runs, open_mesh_runs_in, word_ranges};
-use csgpix_scene::trimesh::Window;
 use crate::sampled::Shape;
 use crate::slabs::{SlabRanges, SlabRuns};
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::slicer::{Route, Slicer};
+use csgpix_scene::trimesh::Window;
 // Here before crate::work took them: the public paths stay.
 pub use crate::work::{SliceSink, Work, PROCESS_BYTES};
 

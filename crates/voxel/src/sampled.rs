@@ -14,6 +14,9 @@
 //!   front of the first slab are the "0th slice"). The inside intervals then meet the slabs
 //!   under the same sampling convention and depth-word quantization as the convex solids
 //!   ([`crate::voxelize`]), so a mesh of a convex solid's own faces gives that solid's voxels.
+//! * a mesh that is **not closed** (holes, fins, a soup): the voxel centres where its
+//!   generalized winding number is at least 1/2 ([`csgpix_scene::winding`]), with a warning
+//!   naming its open edges ([`Sampled::warning`]).
 
 use std::path::{Path, PathBuf};
 

@@ -52,7 +52,10 @@ fn polyhedra_openscad_drops_are_voxelized() {
         let warned: Vec<String> = l.scene.warnings.iter().map(|w| w.to_string()).collect();
         match open {
             true => {
-                assert!(matches!(l.sampled[0].shape, Shape::OpenMesh(_, None)), "{name}");
+                assert!(
+                    matches!(l.sampled[0].shape, Shape::OpenMesh(_, None)),
+                    "{name}"
+                );
                 assert_eq!(warned.len(), 1, "{name}: {warned:?}");
                 let w = &warned[0];
                 assert!(w.contains(":2:2: warning: polyhedron is not closed"), "{w}");
@@ -107,21 +110,32 @@ fn an_open_stl_import_carries_its_warning() {
             .collect();
         format!("facet normal 0 0 0\nouter loop\n{v}endloop\nendfacet\n")
     };
-    let c = |i: usize| {
-        [0, 1, 2].map(|a| if i >> a & 1 == 1 { 4.0f32 } else { 0.0 })
-    };
-    let quads = [[0, 2, 3, 1], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+    let c = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 1 { 4.0f32 } else { 0.0 });
+    let quads = [
+        [0, 2, 3, 1],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
     let body: String = quads
         .iter()
         .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
         .map(facet)
         .collect();
-    std::fs::write(dir.path().join("open.stl"), format!("solid o\n{body}endsolid o\n")).unwrap();
+    std::fs::write(
+        dir.path().join("open.stl"),
+        format!("solid o\n{body}endsolid o\n"),
+    )
+    .unwrap();
     let scene = dir.path().join("s.csg");
     std::fs::write(&scene, "group() {\n  import(file = \"open.stl\");\n}\n").unwrap();
     let l = load_scene(&scene).unwrap();
     let w = l.sampled[0].warning().expect("a warning").to_string();
-    let at = format!("{}:2:3: warning: `open.stl`: mesh is not closed: 4 edges", scene.display());
+    let at = format!(
+        "{}:2:3: warning: `open.stl`: mesh is not closed: 4 edges",
+        scene.display()
+    );
     assert!(w.starts_with(&at), "{w}");
     let v = volume(&l, 8, (-0.5, 4.5), Route::Runs { float: true });
     // Voxel centres at −0.1875 + 0.625·i: 0.4375 … 3.5625 inside, 6 a side.

@@ -318,7 +318,8 @@ fn mesh_primitives_by_runs() {
 /// slabs, and as slices handed on.
 #[test]
 fn open_meshes_by_runs() {
-    let open_box = std::fs::read_to_string(format!("{ROOT}/vectors/openmesh/open-box.csg")).unwrap();
+    let open_box =
+        std::fs::read_to_string(format!("{ROOT}/vectors/openmesh/open-box.csg")).unwrap();
     let soup = std::fs::read_to_string(format!("{ROOT}/vectors/openmesh/soup-open.csg")).unwrap();
     let text = format!(
         "difference() {{\n\
