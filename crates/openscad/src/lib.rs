@@ -22,7 +22,9 @@
 //!   clamped. Named and hex colours (`color("red")`) are refused: the CSG
 //!   export always writes the vector form.
 //! * `cube`, `sphere`, `cylinder` are tessellated exactly as OpenSCAD does (see below), and
-//!   `polyhedron` is accepted when it is closed and convex.
+//!   `polyhedron` is a convex solid when it is closed and convex, else a mesh primitive; one
+//!   that is not closed (its corners welded) is kept with a warning and voxelized by its
+//!   generalized winding number (`csgpix_scene::winding`), where OpenSCAD's render drops it.
 //! * The modifiers `%` (background) and `*` (disable) drop the statement, as OpenSCAD leaves
 //!   such nodes out of the rendered result; `#` (highlight) is ignored; `!` is refused.
 //! * `import(file = "x.stl" | "x.obj" | "x.off" | "x.amf" | "x.3mf" | "x.nrrd", threshold = t)`

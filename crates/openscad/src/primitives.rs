@@ -304,24 +304,25 @@ pub(crate) fn circle(out: &mut Vec<Vec3>, r: f64, z: f64, fragments: usize) {
     }
 }
 
-/// `polyhedron(points, faces | triangles)`. OpenSCAD lists each face clockwise seen from
-/// outside and `PolyhedronNode::createGeometry` reverses them; so does this. The result must
-/// be closed (every edge shared by two faces, once in each direction) and convex. Points no
-/// face uses are dropped.
-/// What a polyhedron becomes: a convex solid the array draws, or (not convex, or too large to
-/// check) a closed mesh primitive of its faces, fanned into triangles (the mesh route counts
-/// crossings by parity, so a fan over a concave face still covers exactly its interior).
+/// What a polyhedron becomes: a convex solid the array draws, or (not convex, too large to
+/// check, or not closed) a mesh primitive of its faces, fanned into triangles (the mesh route
+/// counts crossings by parity, so a fan over a concave face still covers exactly its interior;
+/// a mesh that is not closed is voxelized by its winding number, to which a fan is the face).
 pub(crate) enum Polyhedron {
     /// Closed, convex, faces counter-clockwise seen from outside.
     Convex(Shape),
-    /// Closed (every edge shared by an even number of faces), in the file's coordinates.
+    /// Its triangles, in the file's coordinates: closed or not
+    /// (`csgpix_scene::winding`; the reader warns of one that is not).
     Mesh(Vec<[Vec3; 3]>),
 }
 
 /// `polyhedron(points, faces | triangles)` as OpenSCAD takes it: faces listed clockwise seen
 /// from outside (`PolyhedronNode::createGeometry` reverses them) or all the other way round
 /// (OpenSCAD renders those too: csgpix turns them over); convex ones become convex solids,
-/// the others closed mesh primitives. The surface must be closed.
+/// the others mesh primitives. Points no face uses are dropped. A surface that is not closed,
+/// or closed only with some faces wound against their neighbours, OpenSCAD 2021.01's render
+/// drops ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.",
+/// `createNefPolyhedronFromPolySet`, src/cgalutils.cc); csgpix voxelizes it as a mesh.
 ///
 /// Where `PolyhedronNode::createGeometry` (src/primitives.cc) logs a problem and goes on, so
 /// does this, with the warning in `warnings`: `points` that are not a list of finite
@@ -356,11 +357,6 @@ pub(crate) fn polyhedron(
         warnings.push((params.pos, msg.to_string()));
         return Ok(None);
     }
-    let refused = |e: Error| Fail {
-        pos: params.pos,
-        problem: e.context("polyhedron refused"),
-    };
-    check_even_edges(&faces).map_err(refused)?;
     let mut faces = faces;
     if enclosed_volume(&points, &faces) < 0.0 {
         faces.iter_mut().for_each(|f| f.reverse());
@@ -424,25 +420,6 @@ fn enclosed_volume(points: &[Vec3], faces: &[Vec<usize>]) -> f64 {
         }
     }
     v
-}
-
-/// Every edge shared by an even number of faces, whatever their winding: the surface is
-/// closed for the parity of crossings.
-fn check_even_edges(faces: &[Vec<usize>]) -> csgpix_scene::Result<()> {
-    let mut count: HashMap<(usize, usize), (usize, usize)> = HashMap::new();
-    for (k, face) in faces.iter().enumerate() {
-        for (a, b) in ring_edges(face) {
-            count.entry((a.min(b), a.max(b))).or_insert((0, k)).0 += 1;
-        }
-    }
-    let mut open: Vec<_> = count.iter().filter(|(_, (n, _))| n % 2 == 1).collect();
-    open.sort();
-    match open.first() {
-        None => Ok(()),
-        Some(((a, b), (_, k))) => Err(Error::invalid(format!(
-            "not closed: the edge between points {a} and {b} of face {k} has no neighbouring face"
-        ))),
-    }
 }
 
 /// One face's point indices, reversed to counter-clockwise.

@@ -717,6 +717,7 @@ impl<'a> Reader<'a> {
                         name: "polyhedron",
                     };
                     self.vertices += tris.len() * 3;
+                    self.warn_open_polyhedron(&tris, head.pos);
                     let tris = tris.iter().map(|t| t.map(DVec3::from)).collect();
                     return self.push_mesh(tris, &to).map(|n| Some(Item::Solid(n)));
                 }
@@ -870,6 +871,22 @@ impl<'a> Reader<'a> {
 
     /// A closed mesh made by the scene (in the coordinates below `to.matrix`) as an import
     /// leaf: placed, checked against the coordinate limit, named by its node and position.
+    /// A polyhedron whose faces, corners welded, do not close a surface: OpenSCAD 2021.01's
+    /// render drops it with an error (`createNefPolyhedronFromPolySet`, src/cgalutils.cc: "The
+    /// given mesh is not closed!"); csgpix voxelizes it by its winding number
+    /// (`csgpix_scene::winding`) and warns, naming the open edges.
+    fn warn_open_polyhedron(&mut self, tris: &[[[f64; 3]; 3]], pos: Pos) {
+        let mesh = csgpix_scene::trimesh::TriMesh::from_f64(tris);
+        if let Ok(Some(what)) = mesh.open_edges_summary("polyhedron") {
+            let msg = format!(
+                "polyhedron is not closed: {what}; OpenSCAD's render drops it, csgpix \
+                 voxelizes it by its generalized winding number (inside where at least 1/2, \
+                 within its box)"
+            );
+            self.warnings.push((pos, msg));
+        }
+    }
+
     fn push_mesh(&mut self, tris: Vec<[DVec3; 3]>, to: &Placement) -> Result<CsgNode, Fail> {
         if let Some(msg) = removal_3d(to.matrix.as_ref()) {
             self.warnings.push((to.pos, msg.to_string()));

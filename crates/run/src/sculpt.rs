@@ -356,6 +356,10 @@ fn imports_bytes(slicer: &Slicer) -> u64 {
             csgpix_voxel::sampled::Shape::Mesh(m) => {
                 m.vertices.len() as u64 * 24 + m.triangles.len() as u64 * 12
             }
+            csgpix_voxel::sampled::Shape::OpenMesh(m, _) => {
+                let m = m.mesh();
+                m.vertices.len() as u64 * 24 + m.triangles.len() as u64 * 12
+            }
         })
         .sum()
 }

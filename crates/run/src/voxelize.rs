@@ -606,7 +606,8 @@ struct Report {
     hardware_seconds: f64,
     wall_seconds: f64,
     /// What the scene reader warned of (also on stderr): empty primitives, ignored 2D
-    /// children, subtrees meshed by `--fallback openscad`. Left out when there are none.
+    /// children, subtrees meshed by `--fallback openscad`; and imported meshes that are not
+    /// closed, voxelized by their winding number. Left out when there are none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     warnings: Vec<String>,
 }
@@ -1361,7 +1362,12 @@ fn report(
         mesh,
         hardware_seconds: work.cycles as f64 * 1e-7,
         wall_seconds: wall,
-        warnings: scene.warnings.iter().map(|w| w.to_string()).collect(),
+        warnings: scene
+            .warnings
+            .iter()
+            .chain(slicer.sampled.iter().filter_map(|s| s.warning()))
+            .map(|w| w.to_string())
+            .collect(),
     };
     if a.json {
         println!("{}", serde_json::to_string_pretty(&r)?);

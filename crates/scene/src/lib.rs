@@ -1,7 +1,7 @@
 //! csgpix scenes and formats: what a user hands the simulator and what it hands back.
 //!
 //! Display lists (§5.2) and clipping functions (§5.2.1) for the array; CSG scenes over convex
-//! solids (read from OpenSCAD by `csgpix-openscad`), CSG expressions over named primitives (§4.3); closed triangle meshes and NRRD volume
+//! solids (read from OpenSCAD by `csgpix-openscad`), CSG expressions over named primitives (§4.3); triangle meshes (closed ones by parity, others by [`winding`] number) and NRRD volume
 //! datasets as primitives (§3.2-3.3); the voxel grid and volumes (§4.4); mesh and volume
 //! writers (written whole or not at all through `csgpix-output`). No processor here: `csgpix-draw` turns
 //! scenes into array operations.
@@ -30,6 +30,7 @@ mod off;
 pub mod solid;
 mod threemf;
 pub mod trimesh;
+pub mod winding;
 mod zipped;
 
 pub use error::{Error, IoError, Kind, Location, OneLine, Result};

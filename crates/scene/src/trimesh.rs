@@ -185,6 +185,26 @@ impl TriMesh {
     /// the vertices. The error is one line starting `FILE:`.
     pub fn check_closed(&self, file: &str) -> Result<()> {
         let tris = self.proper_triangles(file)?;
+        match self.open_edges(&tris) {
+            None => Ok(()),
+            Some(what) => Err(Error::invalid(format!(
+                "{file}: mesh is not closed: {what}; close the holes and remove the fins \
+                 (e.g. with MeshLab's or Blender's mesh repair) so that every edge is shared by \
+                 an even number of triangles and the surface bounds a solid"
+            ))),
+        }
+    }
+
+    /// What [`TriMesh::check_closed`] finds open, without its advice: `None` when closed,
+    /// else `N edges belong to one triangle (first from (…) to (…)), M to another odd
+    /// number`. Errors as [`TriMesh::check_closed`] for a mesh without proper triangles.
+    pub fn open_edges_summary(&self, file: &str) -> Result<Option<String>> {
+        let tris = self.proper_triangles(file)?;
+        Ok(self.open_edges(&tris))
+    }
+
+    /// The open edges of `tris` (proper triangles of this mesh) in words, if any.
+    fn open_edges(&self, tris: &[[u32; 3]]) -> Option<String> {
         let mut uses: HashMap<(u32, u32), u32> = HashMap::with_capacity(tris.len() * 3 / 2);
         for e in tris.iter().flat_map(edges) {
             *uses.entry(undirected(e)).or_default() += 1;
@@ -192,7 +212,7 @@ impl TriMesh {
         let count = |f: fn(u32) -> bool| uses.values().filter(|&&n| f(n)).count();
         let (open, many) = (count(|n| n == 1), count(|n| n > 2 && n % 2 == 1));
         if open == 0 && many == 0 {
-            return Ok(());
+            return None;
         }
         // The first offending edge in triangle order (deterministic), of the first kind found.
         let first = |f: fn(u32) -> bool| {
@@ -212,17 +232,15 @@ impl TriMesh {
         } else {
             (String::new(), first(|n| n > 2 && n % 2 == 1))
         };
-        Err(Error::invalid(format!(
-            "{file}: mesh is not closed: {open} edges belong to one triangle{first_open}, \
-             {many} to another odd number{first_many}; close the holes and remove the fins \
-             (e.g. with MeshLab's or Blender's mesh repair) so that every edge is shared by \
-             an even number of triangles and the surface bounds a solid"
-        )))
+        Some(format!(
+            "{open} edges belong to one triangle{first_open}, {many} to another odd \
+             number{first_many}"
+        ))
     }
 
     /// The triangles without a repeated index; errors for an index past the vertices or
     /// when none is left.
-    fn proper_triangles(&self, file: &str) -> Result<Vec<[u32; 3]>> {
+    pub(crate) fn proper_triangles(&self, file: &str) -> Result<Vec<[u32; 3]>> {
         let n = self.vertices.len();
         if let Some((k, i)) = self
             .triangles
@@ -321,7 +339,7 @@ impl TriMesh {
 }
 
 /// The three directed edges of a triangle.
-fn edges(t: &[u32; 3]) -> [(u32, u32); 3] {
+pub(crate) fn edges(t: &[u32; 3]) -> [(u32, u32); 3] {
     [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]
 }
 
@@ -330,21 +348,21 @@ fn undirected((a, b): (u32, u32)) -> (u32, u32) {
 }
 
 /// Fixed-point fraction bits of projected x and y: multiples of 2^-16 pixel.
-const FRAC_BITS: u32 = 16;
+pub(crate) const FRAC_BITS: u32 = 16;
 /// Projected x and y are clamped to ±2^31 pixels, so products of coordinate differences
 /// (< 2^96) fit an `i128` with room.
 const LIMIT: f64 = 2_147_483_648.0;
 
 /// A vertex in the frame: x and y snapped to fixed point, depth as is.
 #[derive(Clone, Copy)]
-struct Projected {
-    x: i64,
-    y: i64,
-    z: f64,
+pub(crate) struct Projected {
+    pub(crate) x: i64,
+    pub(crate) y: i64,
+    pub(crate) z: f64,
 }
 
 impl Projected {
-    fn of(f: DVec3) -> Projected {
+    pub(crate) fn of(f: DVec3) -> Projected {
         // Scaling by 2^16 is exact; rounding errs by at most half a step (2^-17 pixel). A
         // NaN becomes 0 (`as` saturates), consistently for every triangle of the vertex.
         let snap = |c: f64| (c.clamp(-LIMIT, LIMIT) * f64::from(1u32 << FRAC_BITS)).round() as i64;
@@ -360,7 +378,7 @@ impl Projected {
 /// `E(p) = (b - a) × (p - a)`, positive inside (§5.3.1: the plane through the edge
 /// perpendicular to the screen).
 #[derive(Clone, Copy)]
-struct Edge {
+pub(crate) struct Edge {
     ax: i64,
     ay: i64,
     dx: i64,
@@ -368,7 +386,7 @@ struct Edge {
 }
 
 impl Edge {
-    fn new(a: Projected, b: Projected) -> Edge {
+    pub(crate) fn new(a: Projected, b: Projected) -> Edge {
         Edge {
             ax: a.x,
             ay: a.y,
@@ -378,7 +396,7 @@ impl Edge {
     }
 
     /// The exact edge function at `(px, py)`.
-    fn at(&self, px: i64, py: i64) -> i128 {
+    pub(crate) fn at(&self, px: i64, py: i64) -> i128 {
         i128::from(self.dx) * i128::from(py - self.ay)
             - i128::from(self.dy) * i128::from(px - self.ax)
     }
@@ -392,9 +410,25 @@ impl Edge {
     }
 }
 
+impl Edge {
+    /// The sign (−1, 0 or 1) of the edge function at `p + (ε, ε²)`, the point
+    /// [`Edge::covers`] decides: 0 only for an edge of no projected length.
+    pub(crate) fn side(&self, px: i64, py: i64) -> i32 {
+        let e = self.at(px, py);
+        let s = match (e.signum(), self.dy.signum(), self.dx.signum()) {
+            (0, 0, dx) => dx,
+            (0, dy, _) => -dy,
+            (e, _, _) => e as i64,
+        };
+        s as i32
+    }
+}
+
 /// A triangle ready to rasterize: counter-clockwise, nonzero projected area.
-struct Raster {
+pub(crate) struct Raster {
     edges: [Edge; 3],
+    /// Whether the triangle as given ran clockwise in the frame (and was turned over).
+    pub(crate) flipped: bool,
     /// Depths of the vertices opposite each edge (edge `i` is `v[i] → v[i+1]`, opposite
     /// `v[i+2]`).
     z: [f64; 3],
@@ -405,7 +439,7 @@ struct Raster {
 
 impl Raster {
     /// `None` for an edge-on triangle (zero projected area) or an index past the vertices.
-    fn new(t: &[u32; 3], p: &[Projected]) -> Option<Raster> {
+    pub(crate) fn new(t: &[u32; 3], p: &[Projected]) -> Option<Raster> {
         let v = |i: u32| p.get(i as usize).copied();
         let (a, mut b, mut c) = (v(t[0])?, v(t[1])?, v(t[2])?);
         let area = Edge::new(a, b).at(c.x, c.y);
@@ -417,6 +451,7 @@ impl Raster {
         }
         Some(Raster {
             edges: [Edge::new(a, b), Edge::new(b, c), Edge::new(c, a)],
+            flipped: area < 0,
             z: [c.z, a.z, b.z],
             area: area.unsigned_abs() as f64,
             lo: (a.x.min(b.x).min(c.x), a.y.min(b.y).min(c.y)),
@@ -425,7 +460,7 @@ impl Raster {
     }
 
     /// Appends `(pixel index in win, depth)` for every covered pixel centre of `win`.
-    fn rasterize(&self, win: Window, out: &mut Vec<(usize, f64)>) {
+    pub(crate) fn rasterize(&self, win: Window, out: &mut Vec<(usize, f64)>) {
         let Some((x0, x1)) = pixel_span(self.lo.0, self.hi.0, win.x0, win.w) else {
             return;
         };

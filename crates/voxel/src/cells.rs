@@ -295,6 +295,9 @@ enum Prim<'a> {
     Tris(Vec<[DVec3; 3]>, DVec3, DVec3),
     /// A dataset and its iso value.
     Lattice(Lattice<'a>),
+    /// A mesh that is not closed, by its box: outside beyond it, anything within (its
+    /// winding number's level set is not bounded here).
+    Unknown(DVec3, DVec3),
     /// Nothing.
     Empty,
 }
@@ -772,6 +775,12 @@ impl Walk<'_, '_> {
                     }
                 }
                 Prim::Lattice(l) => l.classify(c, hg),
+                Prim::Unknown(lo, hi) => {
+                    match (0..3).any(|a| lo[a] > c[a] + hg[a] || hi[a] < c[a] - hg[a]) {
+                        true => Class::Out,
+                        false => Class::Mixed,
+                    }
+                }
                 Prim::Empty => Class::Out,
             };
             let len = dst.len() - start;
@@ -1090,6 +1099,11 @@ pub fn cell_counts(scene: &CsgScene, slicer: &Slicer, depth: u32) -> CellCounts 
                     .flatten()
                     .fold(DVec3::NEG_INFINITY, |a, &p| a.max(p));
                 prims.push(Prim::Tris(tris, lo, hi));
+                grow.push(tol.mesh());
+            }
+            Shape::OpenMesh(m, _) => {
+                let (lo, hi) = m.mesh().bounds();
+                prims.push(Prim::Unknown(to_voxel(lo), to_voxel(hi)));
                 grow.push(tol.mesh());
             }
             Shape::Dataset {

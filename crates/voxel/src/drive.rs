@@ -10,11 +10,12 @@ use crate::error::Result;
 use crate::footprint::{footprints, Footprint};
 use crate::masks::{array_mask_in, slice_ops};
 use crate::pixel_box::PixelBox;
-use crate::ranges::{float_ranges, mesh_runs, word_ranges};
+use crate::ranges::{float_ranges, mesh_runs, open_mesh_runs_in, word_ranges};
 use crate::sampled::Shape;
 use crate::slabs::{SlabRanges, SlabRuns};
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::slicer::{Route, Slicer};
+use csgpix_scene::trimesh::Window;
 // Here before crate::work took them: the public paths stay.
 pub use crate::work::{SliceSink, Work, PROCESS_BYTES};
 
@@ -354,6 +355,12 @@ fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source
         .map(|(j, s)| match &s.shape {
             Shape::Mesh(m) => {
                 let runs = mesh_runs(slicer, m);
+                let toggles = runs.toggles(nz);
+                SampledSource::Runs(runs, toggles)
+            }
+            Shape::OpenMesh(m, _) => {
+                let [w, h, _] = slicer.grid.dims;
+                let runs = open_mesh_runs_in(slicer, m, Window { x0: 0, y0: 0, w, h });
                 let toggles = runs.toggles(nz);
                 SampledSource::Runs(runs, toggles)
             }

@@ -30,7 +30,7 @@ use csgpix_scene::dataset::Column;
 use crate::dataset_runs::DatasetColumns;
 use crate::error::Result;
 use crate::pixel_box::PixelBox;
-use crate::ranges::{mesh_runs_in, FloatPlanes, WordPlanes};
+use crate::ranges::{mesh_runs_in, open_mesh_runs_in, FloatPlanes, WordPlanes};
 use crate::sampled::Shape;
 use crate::slabs::SlabRuns;
 use crate::slice::{Mask, OpCounts, SliceEval};
@@ -179,6 +179,11 @@ impl<'a> Columns<'a> {
                 Shape::Mesh(m) => {
                     let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
                     Depths::Sampled(SampledDepths::Mesh(mesh_runs_in(slicer, m, window(b)), b))
+                }
+                Shape::OpenMesh(m, _) => {
+                    let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
+                    let runs = open_mesh_runs_in(slicer, m, window(b));
+                    Depths::Sampled(SampledDepths::Mesh(runs, b))
                 }
                 Shape::Dataset { .. } => {
                     let d = DatasetColumns::new(s, &slicer.grid).expect("a dataset");

@@ -14,6 +14,9 @@
 //!   front of the first slab are the "0th slice"). The inside intervals then meet the slabs
 //!   under the same sampling convention and depth-word quantization as the convex solids
 //!   ([`crate::voxelize`]), so a mesh of a convex solid's own faces gives that solid's voxels.
+//! * a mesh that is **not closed** (holes, fins, a soup): the voxel centres where its
+//!   generalized winding number is at least 1/2 ([`csgpix_scene::winding`]), with a warning
+//!   naming its open edges ([`Sampled::warning`]).
 
 use std::path::{Path, PathBuf};
 
@@ -29,6 +32,7 @@ use csgpix_scene::grid::Grid;
 use csgpix_scene::nrrd::{read_nrrd_limited, SampleLimit};
 use csgpix_scene::solid::{CsgNode, CsgScene, Import, IMPORTED};
 use csgpix_scene::trimesh::TriMesh;
+use csgpix_scene::winding::OpenMesh;
 use csgpix_scene::Location;
 
 /// What a sampled primitive is.
@@ -45,6 +49,12 @@ pub enum Shape {
     },
     /// A closed mesh, in scene coordinates.
     Mesh(TriMesh),
+    /// A mesh that is not closed (holes, fins, a soup of triangles), in scene coordinates:
+    /// inside where its generalized winding number is at least 1/2
+    /// ([`csgpix_scene::winding`]). With the warning that names its open edges, located
+    /// where the scene or the command line names the file (None when the scene's reader
+    /// warned of it already, as for a `polyhedron()`).
+    OpenMesh(Box<OpenMesh>, Option<csgpix_scene::Error>),
 }
 
 /// A loaded import.
@@ -71,6 +81,7 @@ impl Sampled {
     pub fn bounds(&self) -> (DVec3, DVec3) {
         match &self.shape {
             Shape::Mesh(m) => m.bounds(),
+            Shape::OpenMesh(m, _) => m.mesh().bounds(),
             Shape::Dataset { data, to_file, .. } => {
                 let (lo, hi) = data.bounds();
                 let to_scene = to_file.inverse();
@@ -87,7 +98,7 @@ impl Sampled {
     pub fn sample(&self, p: DVec3) -> Option<f64> {
         match &self.shape {
             Shape::Dataset { data, to_file, .. } => data.sample(to_file.transform_point3(p)),
-            Shape::Mesh(_) => None,
+            Shape::Mesh(_) | Shape::OpenMesh(..) => None,
         }
     }
 
@@ -95,7 +106,7 @@ impl Sampled {
     pub fn inside(&self, p: DVec3) -> bool {
         match &self.shape {
             Shape::Dataset { threshold, .. } => self.sample(p).is_some_and(|v| v >= *threshold),
-            Shape::Mesh(_) => false,
+            Shape::Mesh(_) | Shape::OpenMesh(..) => false,
         }
     }
 
@@ -103,7 +114,7 @@ impl Sampled {
     pub fn grey(&self, p: DVec3) -> Option<u8> {
         match &self.shape {
             Shape::Dataset { data, .. } => self.sample(p).map(|v| data.grey(v)),
-            Shape::Mesh(_) => None,
+            Shape::Mesh(_) | Shape::OpenMesh(..) => None,
         }
     }
 
@@ -119,7 +130,19 @@ impl Sampled {
     pub fn memory_estimate_over(&self, pixels: u64) -> u64 {
         match &self.shape {
             Shape::Mesh(m) => pixels * (24 + 2 * 16 + 24 + 2 * 8) + m.triangles.len() as u64 * 64,
+            // Signed crossings (24 bytes each while collected and kept) for the runs.
+            Shape::OpenMesh(m, _) => {
+                pixels * (24 + 2 * 24 + 24 + 2 * 8) + m.mesh().triangles.len() as u64 * 64
+            }
             Shape::Dataset { .. } => 0,
+        }
+    }
+
+    /// The warning a mesh that is not closed carries ([`Shape::OpenMesh`]).
+    pub fn warning(&self) -> Option<&csgpix_scene::Error> {
+        match &self.shape {
+            Shape::OpenMesh(_, w) => w.as_ref(),
+            _ => None,
         }
     }
 
@@ -204,12 +227,18 @@ pub fn load_scene(path: &Path) -> Result<Loaded> {
     load_scene_with(path, &csgpix_openscad::ReadOptions::default())
 }
 
-/// [`load_scene`] with the reader's options (`--fallback openscad`).
+/// [`load_scene`] with the reader's options (`--fallback openscad`). The warnings of reading
+/// the imported files (a mesh that is not closed, a 3MF transform OpenSCAD does not apply)
+/// join the scene's; under [`ReadOptions::strict`](csgpix_openscad::ReadOptions::strict) the
+/// first is the error instead.
 pub fn load_scene_with(path: &Path, options: &csgpix_openscad::ReadOptions) -> Result<Loaded> {
     let name = path.display().to_string();
     let mut scene = csgpix_openscad::read_scene_with(path, options)?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let (sampled, warnings) = load_imports_warned(&scene, &name, &dir, options.samples)?;
+    if let (Some(first), true) = (warnings.first(), options.strict) {
+        return Err(first.clone().into());
+    }
     scene.warnings.extend(warnings);
     Ok(Loaded { scene, sampled })
 }
@@ -310,9 +339,10 @@ fn load_import(
             Origin::Binding(name) => name.to_string(),
         };
         let mesh = TriMesh::from_f64(tris);
-        mesh.check_closed(&format!("{at}: `{}`", imp.file))?;
+        // Not closed: the reader warned of it (`polyhedron()`).
+        let shape = mesh_shape(mesh, &format!("{at}: `{}`", imp.file), |_| None)?;
         return Ok(Sampled {
-            shape: Shape::Mesh(mesh),
+            shape,
             colour,
             file: imp.file.clone(),
         });
@@ -336,8 +366,15 @@ fn load_import(
         None => {
             let (mesh, found) = TriMesh::read_with_warnings(&path)?;
             warnings.extend(found);
-            mesh.check_closed(&path.display().to_string())?;
-            Shape::Mesh(mesh.transformed(to_scene))
+            // Closed or not as read: placing it keeps its triangles' indices. An open mesh's
+            // warning joins the scene's, located at the import.
+            let mesh = mesh.transformed(to_scene);
+            let warn = |what: &str| Some(open_warning(origin, &imp.file, what));
+            let mut shape = mesh_shape(mesh, &path.display().to_string(), warn)?;
+            if let Shape::OpenMesh(_, w) = &mut shape {
+                warnings.extend(w.take());
+            }
+            shape
         }
     };
     Ok(Sampled {
@@ -345,6 +382,34 @@ fn load_import(
         colour,
         file: imp.file.clone(),
     })
+}
+
+/// A mesh as a primitive: a closed one (every edge shared by an even number of triangles,
+/// [`TriMesh::check_closed`]) sliced by parity as ever; any other by its winding number, with
+/// `warn(what is open)` as its warning. Errors as [`TriMesh::check_closed`] for a mesh with no
+/// proper triangle; `file` names it there.
+fn mesh_shape(
+    mesh: TriMesh,
+    file: &str,
+    warn: impl Fn(&str) -> Option<csgpix_scene::Error>,
+) -> Result<Shape> {
+    Ok(match mesh.open_edges_summary(file)? {
+        None => Shape::Mesh(mesh),
+        Some(what) => Shape::OpenMesh(Box::new(OpenMesh::new(&mesh)), warn(&what)),
+    })
+}
+
+/// The warning for an imported mesh that is not closed, located where it is named.
+fn open_warning(origin: &Origin, file: &str, what: &str) -> csgpix_scene::Error {
+    let msg = format!(
+        "`{file}`: mesh is not closed: {what}; voxelized by its generalized winding \
+         number (inside where at least 1/2, within the mesh's box), where OpenSCAD's render \
+         drops it"
+    );
+    match origin {
+        Origin::Scene(at) => csgpix_scene::Error::at(&at.file, at.line, at.col, msg),
+        Origin::Binding(name) => csgpix_scene::Error::invalid(format!("--prim {name}: {msg}")),
+    }
 }
 
 /// A primitive name of a CSG expression bound to a file (`NAME=FILE[,threshold=T]`):

@@ -313,6 +313,45 @@ fn mesh_primitives_by_runs() {
     }
 }
 
+/// Polyhedra that are not closed (a box without its top, turned; a cube's soup missing a
+/// triangle) go by their winding number at the voxel centres: the same voxels by runs as by
+/// slabs, and as slices handed on.
+#[test]
+fn open_meshes_by_runs() {
+    let open_box =
+        std::fs::read_to_string(format!("{ROOT}/vectors/openmesh/open-box.csg")).unwrap();
+    let soup = std::fs::read_to_string(format!("{ROOT}/vectors/openmesh/soup-open.csg")).unwrap();
+    let text = format!(
+        "difference() {{\n\
+         multmatrix([[0.8, -0.6, 0, 2], [0.6, 0.8, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) {{\n{open_box}}}\n\
+         multmatrix([[1, 0, 0, 4], [0, 1, 0, 4], [0, 0, 1, 7], [0, 0, 0, 1]]) sphere($fn = 10, r = 4);\n\
+         }}\n\
+         multmatrix([[0.5, 0, 0, 12], [0, 0.5, 0, 0], [0, 0, -0.5, 6], [0, 0, 0, 1]]) {{\n{soup}}}\n"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("open.csg");
+    std::fs::write(&path, text).unwrap();
+    let l = load_scene(&path).unwrap();
+    let open = l
+        .sampled
+        .iter()
+        .filter(|s| matches!(s.shape, csgpix_voxel::sampled::Shape::OpenMesh(..)))
+        .count();
+    assert_eq!(open, 2);
+    for dims in [[31, 17, 12], [8, 40, 21]] {
+        let grid = l.grid(dims).unwrap();
+        let opts = SlicerOptions {
+            sampled: l.sampled.clone(),
+            panel: Some([6, 4]),
+            ..SlicerOptions::default()
+        };
+        let slicer = Slicer::new(&l.scene, grid, opts).unwrap();
+        check_equal(&slicer, &BlistEval::new(&l.scene.root));
+        check_slices(&slicer, false, &StackEval::new(&l.scene.root), &[5, 9]);
+        check_outlines(&slicer);
+    }
+}
+
 /// Where voxels take a dataset's grey values the run route hands over to the slab route.
 #[test]
 fn grey_datasets_go_by_slab() {
