@@ -460,7 +460,7 @@ fn bad_imports_are_refused_with_file_line_and_column() {
     ]);
     let report = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let warning = format!("{uses_open}:1:1: warning: `open.stl`: mesh is not closed: 30 edges");
+    let warning = format!("{uses_open}:1:1: `open.stl`: mesh is not closed: 30 edges");
     assert!(report.contains(&warning), "{report}");
     fails_with(
         &[

@@ -58,7 +58,7 @@ fn polyhedra_openscad_drops_are_voxelized() {
                 );
                 assert_eq!(warned.len(), 1, "{name}: {warned:?}");
                 let w = &warned[0];
-                assert!(w.contains(":2:2: warning: polyhedron is not closed"), "{w}");
+                assert!(w.contains(":2:2: polyhedron is not closed"), "{w}");
                 assert!(warned[0].contains("edges belong to one triangle (first from"));
             }
             // Closed once its corners are welded, whatever the winding: parity, no warning.
@@ -133,7 +133,7 @@ fn an_open_stl_import_carries_its_warning() {
     let l = load_scene(&scene).unwrap();
     let w = l.sampled[0].warning().expect("a warning").to_string();
     let at = format!(
-        "{}:2:3: warning: `open.stl`: mesh is not closed: 4 edges",
+        "{}:2:3: `open.stl`: mesh is not closed: 4 edges",
         scene.display()
     );
     assert!(w.starts_with(&at), "{w}");
