@@ -164,9 +164,11 @@ fn surface_gives_the_voxels_of_openscads_mesh() {
     assert!(left.is_empty());
 }
 
-/// A 2D import under `--fallback openscad` (DXF: csgpix does not read it): openscad's outline,
-/// extruded by csgpix, gives the voxels of OpenSCAD's own mesh. An SVG import is read by
-/// csgpix itself (crates/openscad/src/svg.rs), by default and under the fallback alike.
+/// A DXF import csgpix refuses (a value that is not a number, which OpenSCAD skips with a
+/// warning) is outlined by openscad under `--fallback openscad`: extruded by csgpix, it gives
+/// the voxels of OpenSCAD's own mesh. DXF and SVG imports csgpix reads
+/// (crates/openscad/src/dxf.rs, svg.rs) are read by it, by default and under the fallback
+/// alike.
 #[test]
 fn fallback_outlines_a_2d_import() {
     if !have_openscad() {
@@ -185,19 +187,23 @@ fn fallback_outlines_a_2d_import() {
         lwpolyline(&[(2, 2), (18, 2), (18, 18), (2, 18)]),
         lwpolyline(&[(6, 6), (6, 14), (14, 14), (14, 6)])
     );
-    std::fs::write(dir.path().join("frame.dxf"), dxf).unwrap();
+    std::fs::write(dir.path().join("frame.dxf"), &dxf).unwrap();
+    let odd = dxf.replacen("70\n1\n", "70\n1\n40\n1,5\n", 1);
+    std::fs::write(dir.path().join("odd.dxf"), odd).unwrap();
     let svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"20mm\" height=\"20mm\" \
                viewBox=\"0 0 20 20\"><path d=\"M 2 2 L 18 2 L 18 18 L 2 18 Z M 6 6 L 6 14 \
                L 14 14 L 14 6 Z\"/></svg>\n";
     std::fs::write(dir.path().join("frame.svg"), svg).unwrap();
     let bounds = ["--bounds", "0,-1,-1,22,21,4"];
     for (file, fallback) in [
+        ("frame.dxf", false),
         ("frame.dxf", true),
+        ("odd.dxf", true),
         ("frame.svg", false),
         ("frame.svg", true),
     ] {
         let scad = format!("translate([1, 0, 0]) linear_extrude(height = 3) import(\"{file}\");\n");
-        if file.ends_with(".dxf") {
+        if file == "odd.dxf" {
             let (code, _, e) = run(dir.path(), &scad, &[]);
             assert_eq!(code, Some(2), "refused by default: {e}");
             assert!(e.contains("p.scad:1:") && e.contains(file), "{e}");
@@ -212,7 +218,7 @@ fn fallback_outlines_a_2d_import() {
         assert_eq!(code, Some(0), "{file}: {e}");
         assert_eq!(
             e.contains("outlined by openscad"),
-            file.ends_with(".dxf"),
+            file == "odd.dxf",
             "{e}"
         );
         let ours = occupancy(&dir.path().join("p.nrrd"));

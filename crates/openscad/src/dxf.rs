@@ -863,12 +863,14 @@ mod tests {
     fn nearly_meeting_ends_join() {
         let body: String = [
             line((0.0, 0.0), (1.0, 0.0)),
-            line((1.0012, 0.0), (1.0, 1.0)),
+            line((1.0008, -0.0008), (1.0, 1.0)),
             line((1.0, 1.0), (0.0, 0.0)),
         ]
         .concat();
         let d = drawing(&entities(&body)).unwrap();
         assert!((area(&d.shape).abs() - 0.5).abs() < 1e-3);
+        // Three corners: (1.0008, -0.0008), in a neighbouring cell, was snapped onto (1, 0).
+        assert_eq!(d.shape.points().count(), 3, "{:?}", d.shape.paths);
     }
 
     /// POLYLINE, VERTEX, SEQEND and SPLINE draw nothing in 2021.01, with its warning; an
