@@ -35,27 +35,43 @@ impl Ring {
 pub(crate) type Corner = (usize, usize);
 
 /// The triangles covering the shape the rings bound (even-odd), each counter-clockwise.
-/// An outer outline whose ear clipping does not cover its area (self-touching or degenerate
-/// input) is closed by a fan instead, which still bounds it by parity.
+/// An outer outline whose ear clipping does not cover its area or does not end on its edges
+/// (self-touching or degenerate input) is closed by a fan instead, which still bounds it by
+/// parity. Every outline is capped once: a hole belongs to the first outer outline one level
+/// up that encloses it, and a hole no such outline encloses (outlines crossing each other, as
+/// a raw `polygon` with several `paths` may have) is capped on its own, which by parity is
+/// the even-odd fill.
 pub(crate) fn cap(rings: &[Ring]) -> Vec<[Corner; 3]> {
     let mut out = vec![];
+    let mut capped = vec![false; rings.len()];
     for (o, outer) in rings.iter().enumerate() {
         if outer.is_hole() {
             continue;
         }
         let holes: Vec<usize> = (0..rings.len())
-            .filter(|&h| rings[h].depth == outer.depth + 1)
-            .filter(|&h| inside(&outer.points, rings[h].points[0]))
+            .filter(|&h| !capped[h] && rings[h].depth == outer.depth + 1)
+            .filter(|&h| encloses(&outer.points, &rings[h].points))
             .collect();
-        match ear_clipped(rings, o, &holes) {
-            Some(tris) => out.extend(tris),
-            None => out.extend(fan(rings, o).chain(holes.iter().flat_map(|&h| fan(rings, h)))),
-        }
+        holes.iter().for_each(|&h| capped[h] = true);
+        out.extend(ear_clipped_or_fan(rings, o, &holes));
+    }
+    for h in (0..rings.len()).filter(|&h| rings[h].is_hole() && !capped[h]) {
+        out.extend(ear_clipped_or_fan(rings, h, &[]));
     }
     out
 }
 
-/// Outline `o` with `holes` ear-clipped, or None when the triangles' area is not the shape's.
+/// Outline `o` with `holes` ear-clipped, or as fans where that fails.
+fn ear_clipped_or_fan(rings: &[Ring], o: usize, holes: &[usize]) -> Vec<[Corner; 3]> {
+    ear_clipped(rings, o, holes).unwrap_or_else(|| {
+        fan(rings, o)
+            .chain(holes.iter().flat_map(|&h| fan(rings, h)))
+            .collect()
+    })
+}
+
+/// Outline `o` with `holes` ear-clipped, or None when the triangles' area is not the shape's
+/// or they do not end on the outlines' edges ([`bounded_by`]).
 fn ear_clipped(rings: &[Ring], o: usize, holes: &[usize]) -> Option<Vec<[Corner; 3]>> {
     let mut corners: Vec<Corner> = vec![];
     let mut starts: Vec<usize> = vec![];
@@ -86,7 +102,39 @@ fn ear_clipped(rings: &[Ring], o: usize, holes: &[usize]) -> Option<Vec<[Corner;
         .iter()
         .map(|t| 0.5 * (at(t[1]) - at(t[0])).perp_dot(at(t[2]) - at(t[0])))
         .sum();
-    ((got - want).abs() <= 1e-9 * area(o).max(f64::MIN_POSITIVE)).then_some(tris)
+    let covers = (got - want).abs() <= 1e-9 * area(o).max(f64::MIN_POSITIVE);
+    (covers && bounded_by(rings, o, holes, &tris)).then_some(tris)
+}
+
+/// Whether the cap's triangles end exactly on the outlines' edges, as the walls do: every
+/// segment (by its end points' coordinates) in an even number of cap triangles and outline
+/// edges together. The area alone misses a cap whose edges are not the walls' (an outline
+/// touching itself, a point of one outline on an edge of another, earcut's cure of a local
+/// self-intersection): the mesh would then not be closed.
+fn bounded_by(rings: &[Ring], o: usize, holes: &[usize], tris: &[[Corner; 3]]) -> bool {
+    let key = |p: DVec2| p.to_array().map(|c| (c + 0.0).to_bits());
+    let mut odd: std::collections::HashSet<([u64; 2], [u64; 2])> = Default::default();
+    let mut flip = |a: DVec2, b: DVec2| {
+        let (a, b) = (key(a), key(b));
+        if a != b && !odd.remove(&(a.min(b), a.max(b))) {
+            odd.insert((a.min(b), a.max(b)));
+        }
+    };
+    let at = |c: Corner| rings[c.0].points[c.1];
+    for t in tris {
+        let [a, b, c] = t.map(at);
+        // A triangle with two corners at one point is dropped from the mesh (`push`).
+        if a != b && b != c && c != a {
+            flip(a, b);
+            flip(b, c);
+            flip(c, a);
+        }
+    }
+    for &r in std::iter::once(&o).chain(holes) {
+        let p = &rings[r].points;
+        (0..p.len()).for_each(|i| flip(p[i], p[(i + 1) % p.len()]));
+    }
+    odd.is_empty()
 }
 
 /// The triangles split where ear clipping left an outline's edge out: earcut drops a point on
@@ -129,6 +177,59 @@ fn split_at_dropped(rings: &[Ring], corners: &[Corner], tris: &mut Vec<[Corner; 
     }
 }
 
+/// The outline without its parts of zero width, as OpenSCAD 2021.01 extrudes it: it
+/// sanitizes every 2D leaf first (`GeometryEvaluator::visit(const LeafNode &)` calls
+/// `ClipperUtils::sanitize`, whose `toPolygon2d` runs Clipper's `CleanPolygon`), which drops
+/// a repeated point and the tip of a spike. A tip is a point where the outline turns straight
+/// back: on the line through its neighbours (zero area with them, as earcut's `area`) but not
+/// between them. earcut's `filter_points` drops such a point too, and the cap then ran from
+/// one neighbour straight to the other while the walls still went out to the tip and back:
+/// three edges of each cap in one triangle only (a zero-area outline, all its points on one
+/// line, lost its whole cap the same way). A point between its neighbours on a straight line
+/// is kept (OpenSCAD's walls have it; [`split_at_dropped`] puts it back into the cap). Fewer
+/// than three points left: the outline bounds nothing, and is dropped.
+pub(crate) fn unfolded(points: &[DVec2]) -> Vec<DVec2> {
+    let mut out: Vec<DVec2> = Vec::with_capacity(points.len());
+    for &p in points {
+        out.push(p);
+        settle(&mut out);
+    }
+    // The same across the seam: the last points against the first ones.
+    let mut start = 0;
+    while out.len() - start >= 3 {
+        let (a, b) = (out[out.len() - 1], out[start]);
+        if a == b || folds(out[out.len() - 2], a, b) {
+            out.pop();
+        } else if folds(a, b, out[start + 1]) {
+            start += 1;
+        } else {
+            out.drain(..start);
+            return out;
+        }
+    }
+    vec![]
+}
+
+/// Drops the last point while it repeats the one before, and the last but one while it is a
+/// spike's tip (the points before them have neither).
+fn settle(out: &mut Vec<DVec2>) {
+    loop {
+        let n = out.len();
+        if n >= 2 && out[n - 1] == out[n - 2] {
+            out.pop();
+        } else if n >= 3 && folds(out[n - 3], out[n - 2], out[n - 1]) {
+            out.remove(n - 2);
+        } else {
+            return;
+        }
+    }
+}
+
+/// Whether an outline running a → p → b turns straight back at p.
+fn folds(a: DVec2, p: DVec2, b: DVec2) -> bool {
+    (p - a).perp_dot(b - p) == 0.0 && (p - a).dot(b - p) < 0.0
+}
+
 /// Whether p lies strictly between a and b on their segment (within rounding).
 fn on_segment(p: DVec2, a: DVec2, b: DVec2) -> bool {
     let len2 = (b - a).length_squared();
@@ -148,6 +249,32 @@ fn fan(rings: &[Ring], r: usize) -> impl Iterator<Item = [Corner; 3]> + '_ {
         } else {
             [(r, 0), (r, i + 1), (r, i)]
         }
+    })
+}
+
+/// Whether outline `inner` lies inside outline `outer`, decided at inner's first point off
+/// outer's boundary (then, failing that, at the middle of its first edge off it): the outlines
+/// of a shape do not cross, but they may touch (a 2D union leaves two shapes meeting at a
+/// corner as two outlines sharing that point), and a point on the boundary answers either way.
+/// Asked at one fixed point, the outline of one of two triangles touching at a corner counted
+/// as inside the other, a hole by its depth; and, asked again at the first point of the turned
+/// hole, as a hole of nothing, so no cap closed it. False when all of inner is on outer.
+pub(crate) fn encloses(outer: &[DVec2], inner: &[DVec2]) -> bool {
+    let n = inner.len();
+    let middles = (0..n).map(|i| (inner[i] + inner[(i + 1) % n]) * 0.5);
+    inner
+        .iter()
+        .copied()
+        .chain(middles)
+        .find(|&p| !on_boundary(outer, p))
+        .is_some_and(|p| inside(outer, p))
+}
+
+/// Whether p is a point of the outline or lies on one of its edges (within rounding).
+fn on_boundary(poly: &[DVec2], p: DVec2) -> bool {
+    (0..poly.len()).any(|i| {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        p == a || on_segment(p, a, b)
     })
 }
 

@@ -323,7 +323,8 @@ fn walls(lower: &[DVec3], upper: &[DVec3], rising: Option<bool>, out: &mut Vec<T
 /// of others is a hole, run clockwise; the others counter-clockwise. Each with its depth (the
 /// number of outlines it lies inside).
 fn oriented(poly: &Poly2) -> Vec<cap::Ring> {
-    let paths: Vec<&Vec<DVec2>> = poly.paths.iter().filter(|p| p.len() >= 3).collect();
+    let unfolded: Vec<Vec<DVec2>> = poly.paths.iter().map(|p| cap::unfolded(p)).collect();
+    let paths: Vec<&Vec<DVec2>> = unfolded.iter().filter(|p| p.len() >= 3).collect();
     // Each outline's box, so the point-in-outline test runs only where it can succeed.
     let boxes: Vec<(DVec2, DVec2)> = paths
         .iter()
@@ -334,13 +335,16 @@ fn oriented(poly: &Poly2) -> Vec<cap::Ring> {
                 })
         })
         .collect();
-    let in_box = |j: usize, q: DVec2| q.cmpge(boxes[j].0).all() && q.cmple(boxes[j].1).all();
+    // Outline i can lie inside outline j only when its box does.
+    let in_box = |i: usize, j: usize| {
+        boxes[i].0.cmpge(boxes[j].0).all() && boxes[i].1.cmple(boxes[j].1).all()
+    };
     paths
         .iter()
         .enumerate()
         .map(|(i, path)| {
             let depth = (0..paths.len())
-                .filter(|&j| j != i && in_box(j, path[0]) && cap::inside(paths[j], path[0]))
+                .filter(|&j| j != i && in_box(i, j) && cap::encloses(paths[j], path))
                 .count();
             let mut ring = cap::Ring {
                 points: (*path).clone(),
