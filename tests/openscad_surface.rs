@@ -45,10 +45,7 @@ fn openscads_warnings_are_kept_at_the_node() {
     let scene = read(&text, &dir()).unwrap();
     let w: Vec<String> = scene.warnings.iter().map(|w| w.to_string()).collect();
     assert_eq!(w.len(), 1, "{w:?}");
-    assert!(
-        w[0].starts_with("t.csg:1:1: Illegal value in '"),
-        "{w:?}"
-    );
+    assert!(w[0].starts_with("t.csg:1:1: Illegal value in '"), "{w:?}");
     assert!(
         w[0].ends_with("illegal.dat:3:5: `x` is not a number; the rest of the file is ignored"),
         "{w:?}"

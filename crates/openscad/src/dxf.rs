@@ -108,7 +108,8 @@ pub(crate) fn parse(
                 Error::invalid(format!("{name}:{id_line}: {msg}"))
             })?;
         let Some(value) = lines.next()? else {
-            let msg = format!("group code {code} has no value: the file ends (an odd number of lines)");
+            let msg =
+                format!("group code {code} has no value: the file ends (an odd number of lines)");
             return Err(Error::invalid(format!("{name}:{id_line}: {msg}")));
         };
         let value = value.to_vec();
@@ -313,7 +314,10 @@ impl<'s> Dxf<'s> {
 
     /// A number as `boost::lexical_cast<double>` reads it; not finite is refused too.
     fn number(&self, code: i32, value: &[u8], line: usize) -> csgpix_scene::Result<f64> {
-        match std::str::from_utf8(value).ok().and_then(|s| s.parse::<f64>().ok()) {
+        match std::str::from_utf8(value)
+            .ok()
+            .and_then(|s| s.parse::<f64>().ok())
+        {
             Some(v) if v.is_finite() => Ok(v),
             _ => Err(self.fail(
                 line,
@@ -608,7 +612,10 @@ impl<'s> Dxf<'s> {
         if self.in_entities && !self.layer_kept() {
             return Ok(());
         }
-        if [a, b].iter().any(|p| !p.is_finite() || p.abs().max_element() > MAX_COORDINATE) {
+        if [a, b]
+            .iter()
+            .any(|p| !p.is_finite() || p.abs().max_element() > MAX_COORDINATE)
+        {
             let msg = format!(
                 "the {} entity has a point beyond csgpix's coordinate limit {MAX_COORDINATE:e}",
                 shown(&self.mode)
@@ -701,7 +708,12 @@ impl<'l> Paths<'l> {
             // A registration past the last entity segment would be read out of bounds by
             // OpenSCAD; here it is no segment.
             let valid = list.iter().copied().filter(|&k| k < n);
-            walk.push(valid.clone().filter(|&k| lines[k].cell.contains(&c)).collect());
+            walk.push(
+                valid
+                    .clone()
+                    .filter(|&k| lines[k].cell.contains(&c))
+                    .collect(),
+            );
             let mut d: Vec<usize> = valid.collect();
             d.sort_unstable();
             d.dedup();
@@ -819,7 +831,10 @@ mod tests {
     }
 
     fn line(a: (f64, f64), b: (f64, f64)) -> String {
-        format!("0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n", a.0, a.1, b.0, b.1)
+        format!(
+            "0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n",
+            a.0, a.1, b.0, b.1
+        )
     }
 
     #[test]
@@ -827,7 +842,11 @@ mod tests {
         let square = entities(&line((0.0, 0.0), (1.0, 0.0)));
         for (text, at, why) in [
             (format!("{square}999"), "t.dxf:21:", "odd number of lines"),
-            ("0\nSECTION\nX\nENTITIES\n".to_string(), "t.dxf:3:", "bad group code \"X\""),
+            (
+                "0\nSECTION\nX\nENTITIES\n".to_string(),
+                "t.dxf:3:",
+                "bad group code \"X\"",
+            ),
             (
                 square.replace("10\n0\n", "10\n0.0.1\n"),
                 "t.dxf:10:",
@@ -838,7 +857,11 @@ mod tests {
                 "t.dxf:10:",
                 "bad integer \"1.5\"",
             ),
-            (square.replace("\n1\n", "\n1e999\n"), "t.dxf:14:", "bad number \"1e999\""),
+            (
+                square.replace("\n1\n", "\n1e999\n"),
+                "t.dxf:14:",
+                "bad number \"1e999\"",
+            ),
         ] {
             let e = drawing(&text).err().expect(why).to_string();
             assert!(e.starts_with(at) && e.contains(why), "{e}");
@@ -882,9 +905,18 @@ mod tests {
                     0\nLWPOLYLINE\n8\n0\n90\n3\n70\n0\n10\n0\n20\n0\n42\n1\n10\n4\n20\n0\n\
                     10\n4\n20\n3\n";
         let d = drawing(&entities(body)).unwrap();
-        assert!((area(&d.shape).abs() - 6.0).abs() < 1e-9, "{}", area(&d.shape));
+        assert!(
+            (area(&d.shape).abs() - 6.0).abs() < 1e-9,
+            "{}",
+            area(&d.shape)
+        );
         let w = d.warnings.join("\n");
-        for e in ["'POLYLINE' (1)", "'VERTEX' (2)", "'SEQEND' (1)", "'SPLINE' (1)"] {
+        for e in [
+            "'POLYLINE' (1)",
+            "'VERTEX' (2)",
+            "'SEQEND' (1)",
+            "'SPLINE' (1)",
+        ] {
             assert!(w.contains(e), "{w}");
         }
     }
@@ -901,7 +933,11 @@ mod tests {
         let d = drawing(&entities(&body)).unwrap();
         assert_eq!(d.warnings.len(), 1, "{:?}", d.warnings);
         assert!(d.warnings[0].starts_with("t.dxf:6: Not enough input values for LINE"));
-        assert!((area(&d.shape).abs() - 4.5).abs() < 1e-9, "{}", area(&d.shape));
+        assert!(
+            (area(&d.shape).abs() - 4.5).abs() < 1e-9,
+            "{}",
+            area(&d.shape)
+        );
     }
 
     #[test]
@@ -911,7 +947,10 @@ mod tests {
             .err()
             .unwrap()
             .to_string();
-        assert!(e.starts_with("t.dxf:6: the CIRCLE entity would pass"), "{e}");
+        assert!(
+            e.starts_with("t.dxf:6: the CIRCLE entity would pass"),
+            "{e}"
+        );
         assert!(parse(circle.as_bytes(), "t.dxf", &settings(), 60).is_ok());
     }
 }

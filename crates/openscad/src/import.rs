@@ -189,7 +189,11 @@ pub(crate) fn dxf_args(head: &Head) -> Result<DxfArgs, Fail> {
     if let Some(v) = p.get("origin") {
         match &v.kind {
             Kind::List(xy) => match xy.as_slice() {
-                [Value { kind: Kind::Num(x), .. }, Value { kind: Kind::Num(y), .. }] => {
+                [Value {
+                    kind: Kind::Num(x), ..
+                }, Value {
+                    kind: Kind::Num(y), ..
+                }] => {
                     if !(x.is_finite() && y.is_finite()) {
                         return fail(v.pos, "`origin` must be finite");
                     }

@@ -227,7 +227,12 @@ fn polyhedron_refusals() {
     assert_eq!((s.solids.len(), s.imports.len()), (0, 1));
     assert_eq!(s.warnings.len(), 1);
     let w = s.warnings[0].to_string();
-    assert!(w.starts_with("test.csg:1:1: polyhedron is not closed: 3 edges belong to one triangle (first from"), "{w}");
+    assert!(
+        w.starts_with(
+            "test.csg:1:1: polyhedron is not closed: 3 edges belong to one triangle (first from"
+        ),
+        "{w}"
+    );
 }
 
 #[test]

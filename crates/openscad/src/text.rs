@@ -238,7 +238,11 @@ impl Fonts {
             Ok(id) => return Ok((id, None)),
             Err(e) => e,
         };
-        let lookup = if name.trim().is_empty() { DEFAULT_FONT } else { name.trim() };
+        let lookup = if name.trim().is_empty() {
+            DEFAULT_FONT
+        } else {
+            name.trim()
+        };
         let Some(m) = fontconfig_match(lookup) else {
             return Err(missing);
         };
@@ -742,7 +746,10 @@ mod tests {
         let s = crate::parse_csg(text, "t.csg").unwrap();
         assert_eq!(s.warnings.len(), 1);
         let w = s.warnings[0].to_string();
-        assert!(w.starts_with("t.csg:2:3: font `Arial Black` not found"), "{w}");
+        assert!(
+            w.starts_with("t.csg:2:3: font `Arial Black` not found"),
+            "{w}"
+        );
         assert!(w.contains("fontconfig's match"), "{w}");
         // The same outline as the matched face named directly.
         let named = format!(
@@ -809,7 +816,9 @@ mod tests {
     #[test]
     fn a_missing_font_is_an_error_at_the_node() {
         let text = "linear_extrude(height = 1)\n  text(text = \"a\", font = \"No Such Font:style=Bold\");\n";
-        let e = crate::parse_csg_with(text, "t.csg", &strict()).unwrap_err().to_string();
+        let e = crate::parse_csg_with(text, "t.csg", &strict())
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with("t.csg:2:3: "), "{e}");
         assert!(e.to_string().contains("No Such Font"), "{e}");
         let text = "linear_extrude(height = 1) text(text = \"a\", halign = \"middle\");";
@@ -861,7 +870,9 @@ mod tests {
         let without = tempfile::tempdir().unwrap();
         let csg = without.path().join("t.csg");
         std::fs::write(&csg, MAGIERA).unwrap();
-        let e = crate::read_scene_with(&csg, &strict()).unwrap_err().to_string();
+        let e = crate::read_scene_with(&csg, &strict())
+            .unwrap_err()
+            .to_string();
         let at = format!(
             "{}:2:3: font `Magiera:style=Script` not found",
             csg.display()
@@ -876,7 +887,9 @@ mod tests {
             without.path().join("LiberationSerif-Regular.ttf"),
         )
         .unwrap();
-        let e = crate::read_scene_with(&csg, &strict()).unwrap_err().to_string();
+        let e = crate::read_scene_with(&csg, &strict())
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with(&at), "{e}");
         assert!(
             e.contains("(searched the scene's font files, CSGPIX_FONT_PATH"),
@@ -919,7 +932,9 @@ mod tests {
         // fontconfig refuses), at the text() call; `strict` refuses.
         let bare = root.join("bare.scad");
         std::fs::write(&bare, MAGIERA).unwrap();
-        let e = crate::read_scene_with(&bare, &strict()).unwrap_err().to_string();
+        let e = crate::read_scene_with(&bare, &strict())
+            .unwrap_err()
+            .to_string();
         let at = format!(
             "{}:2:3: font `Magiera:style=Script` not found",
             bare.display()
