@@ -46,13 +46,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     for s in &loaded.sampled {
         sep(&mut out, &mut first);
-        match &s.shape {
-            Shape::Mesh(m) => {
+        let mesh = match &s.shape {
+            Shape::Mesh(m) => Some(m),
+            // A mesh that is not closed: its welded, consistently wound triangles.
+            Shape::OpenMesh(m, _) => Some(m.mesh()),
+            Shape::Dataset { .. } => None,
+        };
+        match mesh {
+            Some(m) => {
                 let tris: Vec<[usize; 3]> =
                     m.triangles.iter().map(|t| t.map(|v| v as usize)).collect();
                 primitive(&mut out, m.vertices.iter().map(|v| v.to_array()), &tris)?;
             }
-            Shape::Dataset { .. } => {
+            None => {
                 return Err(format!("{}: a dataset, not a mesh: refused", s.file).into());
             }
         }
