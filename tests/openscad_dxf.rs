@@ -33,8 +33,11 @@ fn dxf_import_matches_openscads_mesh() {
 #[test]
 fn bad_dxf_is_one_line_at_the_import() {
     let tmp = tempfile::tempdir().unwrap();
-    std::fs::write(tmp.path().join("bad.dxf"), "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\nx\n")
-        .unwrap();
+    std::fs::write(
+        tmp.path().join("bad.dxf"),
+        "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\nx\n",
+    )
+    .unwrap();
     std::fs::write(tmp.path().join("odd.dxf"), "0\nSECTION\n2\n").unwrap();
     let options = csgpix::openscad::ReadOptions {
         dir: Some(tmp.path().to_path_buf()),

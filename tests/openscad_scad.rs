@@ -211,11 +211,7 @@ fn fallback_outlines_a_2d_import() {
         args.extend(bounds);
         let (code, _, e) = run(dir.path(), &scad, &args);
         assert_eq!(code, Some(0), "{file}: {e}");
-        assert_eq!(
-            e.contains("outlined by openscad"),
-            file == "odd.dxf",
-            "{e}"
-        );
+        assert_eq!(e.contains("outlined by openscad"), file == "odd.dxf", "{e}");
         let ours = occupancy(&dir.path().join("p.nrrd"));
         let theirs = openscads_voxels(dir.path(), &bounds);
         let both = ours.iter().zip(&theirs).filter(|(a, b)| **a && **b).count();

@@ -108,7 +108,8 @@ pub(crate) fn parse(
                 Error::invalid(format!("{name}:{id_line}: {msg}"))
             })?;
         let Some(value) = lines.next()? else {
-            let msg = format!("group code {code} has no value: the file ends (an odd number of lines)");
+            let msg =
+                format!("group code {code} has no value: the file ends (an odd number of lines)");
             return Err(Error::invalid(format!("{name}:{id_line}: {msg}")));
         };
         let value = value.to_vec();
@@ -313,7 +314,10 @@ impl<'s> Dxf<'s> {
 
     /// A number as `boost::lexical_cast<double>` reads it; not finite is refused too.
     fn number(&self, code: i32, value: &[u8], line: usize) -> csgpix_scene::Result<f64> {
-        match std::str::from_utf8(value).ok().and_then(|s| s.parse::<f64>().ok()) {
+        match std::str::from_utf8(value)
+            .ok()
+            .and_then(|s| s.parse::<f64>().ok())
+        {
             Some(v) if v.is_finite() => Ok(v),
             _ => Err(self.fail(
                 line,
@@ -608,7 +612,10 @@ impl<'s> Dxf<'s> {
         if self.in_entities && !self.layer_kept() {
             return Ok(());
         }
-        if [a, b].iter().any(|p| !p.is_finite() || p.abs().max_element() > MAX_COORDINATE) {
+        if [a, b]
+            .iter()
+            .any(|p| !p.is_finite() || p.abs().max_element() > MAX_COORDINATE)
+        {
             let msg = format!(
                 "the {} entity has a point beyond csgpix's coordinate limit {MAX_COORDINATE:e}",
                 shown(&self.mode)
@@ -658,13 +665,65 @@ impl<'s> Dxf<'s> {
         }
         let paths = Paths::new(&self.lines, &self.grid.cells).extract();
         let poly = Poly2 {
-            paths: paths.into_iter().filter(|p| p.len() >= 3).collect(),
+            paths: odd_edges(&paths),
         };
         Ok(Drawing {
             shape: flatten(&Region::Poly(poly)),
             warnings: self.warnings,
         })
     }
+}
+
+/// The edges of closed `paths` (of snapped points) that appear an odd number of times, either
+/// way round, linked again into closed outlines. An edge crosses a ray as often as its copy, so
+/// the even-odd region is the same (Clipper's fill of the paths), without the coincident
+/// copies of an arc drawn over many turns, which the 2D booleans are slow on.
+fn odd_edges(paths: &[Vec<DVec2>]) -> Vec<Vec<DVec2>> {
+    type Key = (i64, i64);
+    let key = |p: DVec2| ((p.x / GRID).round() as i64, (p.y / GRID).round() as i64);
+    let mut odd: BTreeMap<(Key, Key), bool> = BTreeMap::new();
+    for path in paths {
+        for (i, &p) in path.iter().enumerate() {
+            let (a, b) = (key(p), key(path[(i + 1) % path.len()]));
+            if a != b {
+                let flip = odd.entry((a.min(b), a.max(b))).or_insert(false);
+                *flip = !*flip;
+            }
+        }
+    }
+    let edges: Vec<(Key, Key)> = odd.into_iter().filter(|e| e.1).map(|e| e.0).collect();
+    let mut at: BTreeMap<Key, Vec<usize>> = BTreeMap::new();
+    for (i, &(a, b)) in edges.iter().enumerate() {
+        at.entry(a).or_default().push(i);
+        at.entry(b).or_default().push(i);
+    }
+    let point = |k: Key| DVec2::new(k.0 as f64 * GRID, k.1 as f64 * GRID);
+    let mut used = vec![false; edges.len()];
+    let mut out = vec![];
+    for (i, &(start, _)) in edges.iter().enumerate() {
+        if used[i] {
+            continue;
+        }
+        // Every vertex has an even degree, so a walk from `start` ends there.
+        let (mut cur, mut cycle) = (start, vec![]);
+        while let Some(e) = at.get_mut(&cur).and_then(|l| l.pop()) {
+            if used[e] {
+                continue;
+            }
+            used[e] = true;
+            cycle.push(point(cur));
+            cur = if edges[e].0 == cur {
+                edges[e].1
+            } else {
+                edges[e].0
+            };
+            if cur == start {
+                break;
+            }
+        }
+        out.push(cycle);
+    }
+    out
 }
 
 /// The joining of segments into paths (the end of `DxfData::DxfData`), with bookkeeping that
@@ -701,7 +760,12 @@ impl<'l> Paths<'l> {
             // A registration past the last entity segment would be read out of bounds by
             // OpenSCAD; here it is no segment.
             let valid = list.iter().copied().filter(|&k| k < n);
-            walk.push(valid.clone().filter(|&k| lines[k].cell.contains(&c)).collect());
+            walk.push(
+                valid
+                    .clone()
+                    .filter(|&k| lines[k].cell.contains(&c))
+                    .collect(),
+            );
             let mut d: Vec<usize> = valid.collect();
             d.sort_unstable();
             d.dedup();
@@ -819,7 +883,10 @@ mod tests {
     }
 
     fn line(a: (f64, f64), b: (f64, f64)) -> String {
-        format!("0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n", a.0, a.1, b.0, b.1)
+        format!(
+            "0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n",
+            a.0, a.1, b.0, b.1
+        )
     }
 
     #[test]
@@ -827,7 +894,11 @@ mod tests {
         let square = entities(&line((0.0, 0.0), (1.0, 0.0)));
         for (text, at, why) in [
             (format!("{square}999"), "t.dxf:21:", "odd number of lines"),
-            ("0\nSECTION\nX\nENTITIES\n".to_string(), "t.dxf:3:", "bad group code \"X\""),
+            (
+                "0\nSECTION\nX\nENTITIES\n".to_string(),
+                "t.dxf:3:",
+                "bad group code \"X\"",
+            ),
             (
                 square.replace("10\n0\n", "10\n0.0.1\n"),
                 "t.dxf:10:",
@@ -838,7 +909,11 @@ mod tests {
                 "t.dxf:10:",
                 "bad integer \"1.5\"",
             ),
-            (square.replace("\n1\n", "\n1e999\n"), "t.dxf:14:", "bad number \"1e999\""),
+            (
+                square.replace("\n1\n", "\n1e999\n"),
+                "t.dxf:14:",
+                "bad number \"1e999\"",
+            ),
         ] {
             let e = drawing(&text).err().expect(why).to_string();
             assert!(e.starts_with(at) && e.contains(why), "{e}");
@@ -882,9 +957,18 @@ mod tests {
                     0\nLWPOLYLINE\n8\n0\n90\n3\n70\n0\n10\n0\n20\n0\n42\n1\n10\n4\n20\n0\n\
                     10\n4\n20\n3\n";
         let d = drawing(&entities(body)).unwrap();
-        assert!((area(&d.shape).abs() - 6.0).abs() < 1e-9, "{}", area(&d.shape));
+        assert!(
+            (area(&d.shape).abs() - 6.0).abs() < 1e-9,
+            "{}",
+            area(&d.shape)
+        );
         let w = d.warnings.join("\n");
-        for e in ["'POLYLINE' (1)", "'VERTEX' (2)", "'SEQEND' (1)", "'SPLINE' (1)"] {
+        for e in [
+            "'POLYLINE' (1)",
+            "'VERTEX' (2)",
+            "'SEQEND' (1)",
+            "'SPLINE' (1)",
+        ] {
             assert!(w.contains(e), "{w}");
         }
     }
@@ -901,7 +985,11 @@ mod tests {
         let d = drawing(&entities(&body)).unwrap();
         assert_eq!(d.warnings.len(), 1, "{:?}", d.warnings);
         assert!(d.warnings[0].starts_with("t.dxf:6: Not enough input values for LINE"));
-        assert!((area(&d.shape).abs() - 4.5).abs() < 1e-9, "{}", area(&d.shape));
+        assert!(
+            (area(&d.shape).abs() - 4.5).abs() < 1e-9,
+            "{}",
+            area(&d.shape)
+        );
     }
 
     #[test]
@@ -911,7 +999,35 @@ mod tests {
             .err()
             .unwrap()
             .to_string();
-        assert!(e.starts_with("t.dxf:6: the CIRCLE entity would pass"), "{e}");
+        assert!(
+            e.starts_with("t.dxf:6: the CIRCLE entity would pass"),
+            "{e}"
+        );
         assert!(parse(circle.as_bytes(), "t.dxf", &settings(), 60).is_ok());
+    }
+
+    /// A circle drawn twice cancels by the even-odd rule, an arc over 101 whole turns is one
+    /// circle (OpenSCAD 2021.01 draws the same: a 16-gon of radius 5 and a 30-gon of
+    /// radius 10), and the turns' coincident copies are dropped before the fill.
+    #[test]
+    fn coincident_copies_cancel_by_parity() {
+        let circle = |x: f64, r: f64| format!("0\nCIRCLE\n8\n0\n10\n{x}\n20\n0\n40\n{r}\n");
+        let arc = "0\nARC\n8\n0\n10\n60\n20\n0\n40\n10\n50\n0\n51\n36360\n";
+        let body = [
+            circle(0.0, 10.0),
+            circle(0.0, 10.0),
+            circle(30.0, 5.0),
+            arc.into(),
+        ];
+        let d = drawing(&entities(&body.concat())).unwrap();
+        assert_eq!(d.shape.points().count(), 16 + 30);
+        let polygon = |n: f64, r: f64| n / 2.0 * r * r * (2.0 * std::f64::consts::PI / n).sin();
+        let want = polygon(16.0, 5.0) + polygon(30.0, 10.0);
+        // The corners are snapped to the 1/1024 grid.
+        assert!(
+            (area(&d.shape).abs() - want).abs() < 1e-4 * want,
+            "{}",
+            area(&d.shape)
+        );
     }
 }
