@@ -665,13 +665,65 @@ impl<'s> Dxf<'s> {
         }
         let paths = Paths::new(&self.lines, &self.grid.cells).extract();
         let poly = Poly2 {
-            paths: paths.into_iter().filter(|p| p.len() >= 3).collect(),
+            paths: odd_edges(&paths),
         };
         Ok(Drawing {
             shape: flatten(&Region::Poly(poly)),
             warnings: self.warnings,
         })
     }
+}
+
+/// The edges of closed `paths` (of snapped points) that appear an odd number of times, either
+/// way round, linked again into closed outlines. An edge crosses a ray as often as its copy, so
+/// the even-odd region is the same (Clipper's fill of the paths), without the coincident
+/// copies of an arc drawn over many turns, which the 2D booleans are slow on.
+fn odd_edges(paths: &[Vec<DVec2>]) -> Vec<Vec<DVec2>> {
+    type Key = (i64, i64);
+    let key = |p: DVec2| ((p.x / GRID).round() as i64, (p.y / GRID).round() as i64);
+    let mut odd: BTreeMap<(Key, Key), bool> = BTreeMap::new();
+    for path in paths {
+        for (i, &p) in path.iter().enumerate() {
+            let (a, b) = (key(p), key(path[(i + 1) % path.len()]));
+            if a != b {
+                let flip = odd.entry((a.min(b), a.max(b))).or_insert(false);
+                *flip = !*flip;
+            }
+        }
+    }
+    let edges: Vec<(Key, Key)> = odd.into_iter().filter(|e| e.1).map(|e| e.0).collect();
+    let mut at: BTreeMap<Key, Vec<usize>> = BTreeMap::new();
+    for (i, &(a, b)) in edges.iter().enumerate() {
+        at.entry(a).or_default().push(i);
+        at.entry(b).or_default().push(i);
+    }
+    let point = |k: Key| DVec2::new(k.0 as f64 * GRID, k.1 as f64 * GRID);
+    let mut used = vec![false; edges.len()];
+    let mut out = vec![];
+    for (i, &(start, _)) in edges.iter().enumerate() {
+        if used[i] {
+            continue;
+        }
+        // Every vertex has an even degree, so a walk from `start` ends there.
+        let (mut cur, mut cycle) = (start, vec![]);
+        while let Some(e) = at.get_mut(&cur).and_then(|l| l.pop()) {
+            if used[e] {
+                continue;
+            }
+            used[e] = true;
+            cycle.push(point(cur));
+            cur = if edges[e].0 == cur {
+                edges[e].1
+            } else {
+                edges[e].0
+            };
+            if cur == start {
+                break;
+            }
+        }
+        out.push(cycle);
+    }
+    out
 }
 
 /// The joining of segments into paths (the end of `DxfData::DxfData`), with bookkeeping that
@@ -952,5 +1004,30 @@ mod tests {
             "{e}"
         );
         assert!(parse(circle.as_bytes(), "t.dxf", &settings(), 60).is_ok());
+    }
+
+    /// A circle drawn twice cancels by the even-odd rule, an arc over 101 whole turns is one
+    /// circle (OpenSCAD 2021.01 draws the same: a 16-gon of radius 5 and a 30-gon of
+    /// radius 10), and the turns' coincident copies are dropped before the fill.
+    #[test]
+    fn coincident_copies_cancel_by_parity() {
+        let circle = |x: f64, r: f64| format!("0\nCIRCLE\n8\n0\n10\n{x}\n20\n0\n40\n{r}\n");
+        let arc = "0\nARC\n8\n0\n10\n60\n20\n0\n40\n10\n50\n0\n51\n36360\n";
+        let body = [
+            circle(0.0, 10.0),
+            circle(0.0, 10.0),
+            circle(30.0, 5.0),
+            arc.into(),
+        ];
+        let d = drawing(&entities(&body.concat())).unwrap();
+        assert_eq!(d.shape.points().count(), 16 + 30);
+        let polygon = |n: f64, r: f64| n / 2.0 * r * r * (2.0 * std::f64::consts::PI / n).sin();
+        let want = polygon(16.0, 5.0) + polygon(30.0, 10.0);
+        // The corners are snapped to the 1/1024 grid.
+        assert!(
+            (area(&d.shape).abs() - want).abs() < 1e-4 * want,
+            "{}",
+            area(&d.shape)
+        );
     }
 }

@@ -187,21 +187,19 @@ pub(crate) fn dxf_args(head: &Head) -> Result<DxfArgs, Fail> {
     let mut origin = [0.0, 0.0];
     let mut warning = None;
     if let Some(v) = p.get("origin") {
-        match &v.kind {
-            Kind::List(xy) => match xy.as_slice() {
-                [Value {
-                    kind: Kind::Num(x), ..
-                }, Value {
-                    kind: Kind::Num(y), ..
-                }] => {
-                    if !(x.is_finite() && y.is_finite()) {
-                        return fail(v.pos, "`origin` must be finite");
-                    }
-                    origin = [*x, *y];
-                }
-                _ => warning = Some(v.pos),
+        let pair = match &v.kind {
+            Kind::List(xy) if xy.len() == 2 => match (&xy[0].kind, &xy[1].kind) {
+                (Kind::Num(x), Kind::Num(y)) => Some([*x, *y]),
+                _ => None,
             },
-            _ => warning = Some(v.pos),
+            _ => None,
+        };
+        match pair {
+            Some(o) if !o.iter().all(|c| c.is_finite()) => {
+                return fail(v.pos, "`origin` must be finite")
+            }
+            Some(o) => origin = o,
+            None => warning = Some(v.pos),
         }
     }
     let warning = warning.map(|at| {

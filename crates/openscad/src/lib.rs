@@ -61,15 +61,21 @@
 //!   shape, the glyph outlines shaped and flattened as OpenSCAD 2021.01 does
 //!   ([`crate::text`]); a font that is not found is fontconfig's match, with a warning.
 //!
+//! * `import(file = "x.svg", dpi, center)` and `import(file = "x.dxf", layer, origin, scale,
+//!   $fn, $fa, $fs)`: 2D shapes read as OpenSCAD 2021.01 reads them (modules `svg` and `dxf`:
+//!   a DXF file's LINE, LWPOLYLINE, CIRCLE, ARC, ELLIPSE and block INSERTs, its segments
+//!   joined on OpenSCAD's 1/1024 grid and filled even-odd; other entities are OpenSCAD's
+//!   warnings), errors one line naming the file's line; [`read_dxf`] reads DXF bytes alone.
+//!
+//! * `surface(file, center, invert)`: the heights of a `.dat` grid or a PNG image closed into
+//!   a solid as OpenSCAD 2021.01 does it ([`surface`]), a closed mesh primitive.
+//!
 //! Where OpenSCAD warns and goes on (a colour out of range, a malformed polyhedron, an import
 //! of a missing file, a child of the other dimension, …: docs/volume-scenes.md lists them),
 //! so does the reader, into [`CsgScene::warnings`]; [`ReadOptions::strict`] refuses the
 //! first instead.
 //!
-//! * `surface(file, center, invert)`: the heights of a `.dat` grid or a PNG image closed into
-//!   a solid as OpenSCAD 2021.01 does it ([`surface`]), a closed mesh primitive.
-//!
-//! Anything else (DXF imports, nodes of later releases, …) is refused with an error naming the node, its
+//! Anything else (nodes of later releases, …) is refused with an error naming the node, its
 //! line and column, or with [`Fallback::Openscad`] meshed by openscad. [`scene_text`] turns a `.scad` file into
 //! this CSG text by running `openscad`. Every openscad run is killed when it takes longer
 //! than [`ReadOptions::openscad_timeout`] ([`DEFAULT_OPENSCAD_TIMEOUT`] by default).
@@ -248,6 +254,32 @@ pub enum Fallback {
     /// Meshed by openscad, that subtree alone, and drawn as a closed mesh primitive; each
     /// such subtree is reported as a warning (stderr, `--json`).
     Openscad,
+}
+
+/// The DXF file `bytes` (called `file` in messages) drawn as `import(file)` draws it with
+/// OpenSCAD's default `$fn`, `$fa`, `$fs` (module `dxf`), at most `max_vertices` vertices:
+/// the number of outline points and of warnings. The entry point of the DXF fuzz target.
+///
+/// # Errors
+///
+/// A file csgpix refuses, one line naming `file` and the line.
+pub fn read_dxf(
+    bytes: &[u8],
+    file: &str,
+    max_vertices: usize,
+) -> csgpix_scene::Result<(usize, usize)> {
+    let settings = dxf::Settings {
+        layer: String::new(),
+        origin: [0.0, 0.0],
+        scale: 1.0,
+        res: primitives::Resolution {
+            fn_: 0.0,
+            fa: 12.0,
+            fs: 2.0,
+        },
+    };
+    let d = dxf::parse(bytes, file, &settings, max_vertices)?;
+    Ok((d.shape.points().count(), d.warnings.len()))
 }
 
 /// [`parse_csg`] with [`ReadOptions`].
