@@ -37,7 +37,7 @@
 //! `Ω`'s numerator, the projected edge function) is taken from the same exact fixed-point
 //! edge function at the same perturbed pixel centre, so the two stay in step; a boundary edge
 //! seen end-on adds nothing, like its triangles. The denominator is evaluated in a form free
-//! of cancellation for edges far below `p` ([`boundary_angle`]).
+//! of cancellation for edges far below `p` (`boundary_angle`).
 //!
 //! # Orientation
 //!
