@@ -25,6 +25,7 @@ pub mod mesh;
 // The OFF, AMF and 3MF readers behind `trimesh::TriMesh::read`.
 mod amf;
 mod meshfile;
+mod meshread;
 pub mod nrrd;
 mod off;
 pub mod solid;

@@ -1,4 +1,4 @@
-//! What the OFF, AMF and 3MF readers ([`crate::off`], [`crate::amf`], [`crate::threemf`])
+//! What the OFF, AMF and 3MF readers (modules `off`, `amf`, `threemf`)
 //! share: a file's objects united into one [`TriMesh`] as OpenSCAD 2021.01 unites them, its
 //! warnings, and XML documents whose errors are located `FILE:LINE:COL`.
 
