@@ -46,7 +46,6 @@ fn bad_dxf_is_one_line_at_the_import() {
     for (file, why) in [
         ("bad.dxf", "bad.dxf:8: bad number \"x\" for group code 10"),
         ("odd.dxf", "odd.dxf:3: group code 2 has no value"),
-        ("missing.dxf", "cannot read it"),
     ] {
         let text = format!("union() {{\n  linear_extrude(1)\n    import(file = \"{file}\");\n}}\n");
         let e = csgpix::openscad::parse_csg_with(&text, "t.csg", &options)
@@ -57,6 +56,14 @@ fn bad_dxf_is_one_line_at_the_import() {
         assert!(e.contains(why), "{e}");
         assert_eq!(e.lines().count(), 1, "{e}");
     }
+    // A missing file imports nothing, with OpenSCAD's warning ("Can't open import file").
+    let text = "union() {\n  linear_extrude(1)\n    import(file = \"missing.dxf\");\n}\n";
+    let s = csgpix::openscad::parse_csg_with(text, "t.csg", &options).unwrap();
+    let w = s.warnings[0].to_string();
+    assert!(
+        w.starts_with("t.csg:3:5:") && w.contains("Can't open import file"),
+        "{w}"
+    );
 }
 
 /// OpenSCAD's warnings on a DXF file (an unsupported entity) are the scene's, at the import.
