@@ -102,9 +102,8 @@ fn empty_primitives_and_other_dimensions_warn_and_go_on() {
     let (code, out, e) = run(dir.path(), scad, &["--json"]);
     assert_eq!(code, Some(0), "{e}");
     assert!(
-        e.contains(
-            "csgpix: warning: p.scad:2:1: `cylinder` has a zero, negative or non-finite size"
-        ),
+        e.starts_with("csgpix: warning: ")
+            && e.contains("p.scad:2:1: `cylinder` has a zero, negative or non-finite size"),
         "{e}"
     );
     assert!(
