@@ -432,10 +432,14 @@ fn bad_imports_are_refused_with_file_line_and_column() {
         "missing.csg",
         "union() {\n  cube(1);\n  import(\"nothing.stl\");\n}\n",
     );
+    // A missing file imports nothing (OpenSCAD's warning); --strict refuses at it.
     fails_with(
-        &["voxelize", &missing, "--res", "8x8x8", "-o", &out],
-        &["missing.csg:3:3", "nothing.stl"],
+        &[
+            "voxelize", &missing, "--res", "8x8x8", "--strict", "-o", &out,
+        ],
+        &["missing.csg:3:3", "nothing.stl", "Can't open import file"],
     );
+    w("phantom.nrrd", ""); // present: the refusal is the missing threshold
     let no_threshold = w("nt.csg", "import(file = \"phantom.nrrd\");\n");
     fails_with(
         &["voxelize", &no_threshold, "--res", "8x8x8", "-o", &out],
