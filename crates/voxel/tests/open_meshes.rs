@@ -131,7 +131,7 @@ fn an_open_stl_import_carries_its_warning() {
     let scene = dir.path().join("s.csg");
     std::fs::write(&scene, "group() {\n  import(file = \"open.stl\");\n}\n").unwrap();
     let l = load_scene(&scene).unwrap();
-    let w = l.sampled[0].warning().expect("a warning").to_string();
+    let w = l.scene.warnings.last().expect("a warning").to_string();
     let at = format!(
         "{}:2:3: `open.stl`: mesh is not closed: 4 edges",
         scene.display()
