@@ -33,10 +33,6 @@ const N: usize = 64;
 /// figures are rounded to 4 decimals).
 const SLACK: f64 = 0.001;
 
-/// A voxel whose centre lies within this many voxels of OpenSCAD's surface counts either way
-/// in the centre IoU: there the two meshes of the same solid may round to either side.
-const BAND: f64 = 1e-3;
-
 /// A design's run stops after this many seconds (the corpus's median is well under one).
 const TIMEOUT: f64 = 90.0;
 
@@ -83,96 +79,6 @@ fn reference(tris: Vec<[[f64; 3]; 3]>) -> (CsgScene, DVec3, DVec3) {
         warnings: vec![],
     };
     (scene, lo - pad, hi + pad)
-}
-
-/// The point of triangle `t` closest to `p` (Ericson, Real-Time Collision Detection, 5.1.5).
-fn closest_on_triangle(p: DVec3, [a, b, c]: [DVec3; 3]) -> DVec3 {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(ap), ac.dot(ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return a;
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(bp), ac.dot(bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return b;
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return a + ab * (d1 / (d1 - d3));
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(cp), ac.dot(cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return c;
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return a + ac * (d2 / (d2 - d6));
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0 {
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    }
-    let denom = 1.0 / (va + vb + vc);
-    a + ab * (vb * denom) + ac * (vc * denom)
-}
-
-/// Which of the voxels `asked` (indices, X fastest) have their centre within [`BAND`] voxels
-/// of a triangle of `tris`, distances taken in voxel units (so a thousandth of a voxel along
-/// each axis of a non-cubic voxel). The triangles are binned by their boxes into cells of
-/// [`CELL`]³ voxels, so each centre meets only the triangles near it.
-fn near_surface(tris: &[[[f64; 3]; 3]], grid: &Grid, asked: &[usize]) -> Vec<bool> {
-    const CELL: usize = 4;
-    let [nx, ny, _] = grid.dims;
-    let cells = grid.dims.map(|d| d.div_ceil(CELL));
-    let h = grid.voxel();
-    // Voxel units: voxel (i, j, k)'s centre is the point (i, j, k).
-    let to_voxel = |p: &[f64; 3]| (DVec3::from(*p) - grid.min) / h - 0.5;
-    let mut bins: Vec<Vec<u32>> = vec![vec![]; cells.iter().product()];
-    let cell_range = |lo: f64, hi: f64, n: usize| {
-        let a = ((lo - BAND) / CELL as f64).floor().max(0.0) as usize;
-        let b = ((hi + BAND) / CELL as f64).floor().max(0.0) as usize;
-        a.min(n)..(b + 1).min(n)
-    };
-    for (t, tri) in tris.iter().enumerate() {
-        let v = tri.map(|p| to_voxel(&p));
-        let (lo, hi) = (v[0].min(v[1]).min(v[2]), v[0].max(v[1]).max(v[2]));
-        for z in cell_range(lo.z, hi.z, cells[2]) {
-            for y in cell_range(lo.y, hi.y, cells[1]) {
-                for x in cell_range(lo.x, hi.x, cells[0]) {
-                    bins[(z * cells[1] + y) * cells[0] + x].push(t as u32);
-                }
-            }
-        }
-    }
-    asked
-        .iter()
-        .map(|&i| {
-            let (x, y, z) = (i % nx, (i / nx) % ny, i / (nx * ny));
-            let p = DVec3::new(x as f64, y as f64, z as f64);
-            let cell = ((z / CELL) * cells[1] + y / CELL) * cells[0] + x / CELL;
-            bins[cell].iter().any(|&t| {
-                let v = tris[t as usize].map(|q| to_voxel(&q));
-                closest_on_triangle(p, v).distance(p) <= BAND
-            })
-        })
-        .collect()
-}
-
-/// Centre IoU of csgpix's voxels `ours` against OpenSCAD's `theirs`: a voxel where the two
-/// differ and whose centre lies within [`BAND`] voxels of OpenSCAD's surface (`tris`) counts
-/// as agreeing, whichever side csgpix put it on.
-fn centre_iou(ours: &[bool], theirs: &[bool], tris: &[[[f64; 3]; 3]], grid: &Grid) -> f64 {
-    let differ: Vec<usize> = (0..ours.len()).filter(|&i| ours[i] != theirs[i]).collect();
-    let near = near_surface(tris, grid, &differ);
-    let mut forgiven = theirs.to_vec();
-    for (&i, &n) in differ.iter().zip(&near) {
-        if n {
-            forgiven[i] = ours[i];
-        }
-    }
-    csgpix_testkit::iou(ours, &forgiven)
 }
 
 /// csgpix's voxels of a design's CSG export through the command line (`csgpix voxelize
@@ -249,8 +155,8 @@ fn measure(name: &str, openscad_s: f64, fallback: Fallback, tmp: &Path) -> Row {
         let (word, seconds) = csgpix_voxels(&file, (lo, hi), "word", fallback)?;
         let (float, _) = csgpix_voxels(&file, (lo, hi), "float", fallback)?;
         let theirs = scene_occupancy(&mesh, &base, &grid, Route::Float)?;
-        let w = centre_iou(&word, &theirs, &tris, &grid);
-        let f = centre_iou(&float, &theirs, &tris, &grid);
+        let w = csgpix_testkit::band::centre_iou(&word, &theirs, &tris, &grid);
+        let f = csgpix_testkit::band::centre_iou(&float, &theirs, &tris, &grid);
         Ok((w, f, seconds))
     })();
     // A refusal names the export as the user's `NAME.csg`, not the test's hidden copy.
@@ -526,30 +432,4 @@ fn ledger_comparison_flags_regressions_only() {
     );
     // The ledger reads back what it writes.
     assert_eq!(read_ledger(&write_ledger(&ledger)), ledger);
-}
-
-/// The band: a voxel centre on OpenSCAD's surface may fall either way, one a hundredth of a
-/// voxel away may not.
-#[test]
-fn centre_iou_forgives_only_the_surface_band() {
-    let grid = Grid::new([4, 4, 4], DVec3::ZERO, DVec3::splat(4.0)).unwrap();
-    // A square in the plane x = 2.5 (voxel units: x = 2.0, the centres of column x = 2),
-    // spanning the whole grid in y and z.
-    let sq = |x: f64| {
-        vec![
-            [[x, -1.0, -1.0], [x, 5.0, -1.0], [x, 5.0, 5.0]],
-            [[x, -1.0, -1.0], [x, 5.0, 5.0], [x, -1.0, 5.0]],
-        ]
-    };
-    let inside = |lim: usize| (0..64).map(|i| i % 4 < lim).collect::<Vec<bool>>();
-    // csgpix puts column 2 inside, OpenSCAD outside: forgiven on the plane...
-    assert_eq!(centre_iou(&inside(3), &inside(2), &sq(2.5), &grid), 1.0);
-    // ... a thousandth of a voxel off it still, a hundredth off not.
-    assert_eq!(centre_iou(&inside(3), &inside(2), &sq(2.5009), &grid), 1.0);
-    let off = centre_iou(&inside(3), &inside(2), &sq(2.51), &grid);
-    assert!((off - 2.0 / 3.0).abs() < 1e-12, "{off}");
-    // Voxel units: on a grid twice as long in x, a thousandth of a voxel is 0.002.
-    let long = Grid::new([4, 4, 4], DVec3::ZERO, DVec3::new(8.0, 4.0, 4.0)).unwrap();
-    assert_eq!(centre_iou(&inside(3), &inside(2), &sq(5.0018), &long), 1.0);
-    assert!(centre_iou(&inside(3), &inside(2), &sq(5.0022), &long) < 1.0);
 }

@@ -1,9 +1,12 @@
 //! Helpers shared by csgpix's test suites (a dev-dependency of the crates that test with
 //! random scenes): random `.csg` scenes of the subset every reader and evaluator takes, the
-//! face planes direct evaluation checks slices against, and the IoU of two occupancies.
+//! face planes direct evaluation checks slices against, the IoU of two occupancies, and the
+//! centre IoU against a reference mesh that forgives ties on its surface ([`band`]).
 //!
 //! The strategies draw their values in a fixed order: the `*.proptest-regressions` files of
 //! the suites that use them keep their seeds' scenes only while that order stays.
+
+pub mod band;
 
 use csgpix_scene::solid::ConvexSolid;
 use glam::DVec3;
