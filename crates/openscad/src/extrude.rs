@@ -756,11 +756,18 @@ fn clip(poly: &[DVec2], n: DVec2, c: f64) -> Vec<DVec2> {
 /// extrusions that do not commute with booleans, those whose walls are triangulated between
 /// slices (a twist, a scale differing between X and Y).
 pub fn flatten(r: &Region) -> Poly2 {
-    let mut pts = vec![];
-    crate::flat::collect_points(r, &mut pts);
-    let rect =
-        i_overlay::i_float::float::rect::FloatRect::with_iter(pts.iter().map(|p| p.as_ref()))
-            .unwrap_or(i_overlay::i_float::float::rect::FloatRect::zero());
+    use i_overlay::i_float::float::rect::FloatRect;
+    let mut pts: Vec<[f64; 2]> = vec![];
+    let mut stack = vec![r];
+    while let Some(r) = stack.pop() {
+        match r {
+            Region::Poly(p) => pts.extend(p.points().map(|q| q.to_array())),
+            Region::Union(c) | Region::Intersection(c) | Region::Difference(c) => {
+                stack.extend(c.iter())
+            }
+        }
+    }
+    let rect = FloatRect::with_iter(pts.iter()).unwrap_or(FloatRect::zero());
     let grid = Grid::new(rect);
     Poly2 {
         paths: contours(r, &grid)
@@ -786,8 +793,8 @@ type Grid = i_overlay::i_float::adapter::FloatPointAdapter<[f64; 2], f64>;
 /// One `i_overlay` run on `grid`.
 fn run(
     grid: &Grid,
-    subject: &Vec<Vec<[f64; 2]>>,
-    clip: &Vec<Vec<[f64; 2]>>,
+    subject: &[Vec<[f64; 2]>],
+    clip: &[Vec<[f64; 2]>],
     rule: i_overlay::core::overlay_rule::OverlayRule,
     fill: i_overlay::core::fill_rule::FillRule,
 ) -> Vec<Vec<Vec<[f64; 2]>>> {
@@ -831,7 +838,7 @@ fn contours(r: &Region, grid: &Grid) -> Vec<Vec<Vec<[f64; 2]>>> {
     };
     let mut acc = paths(contours(first, grid));
     if !matches!(rule, OverlayRule::Intersect) {
-        let others = it.flat_map(|p| paths(contours(p, grid))).collect();
+        let others: Vec<_> = it.flat_map(|p| paths(contours(p, grid))).collect();
         return run(grid, &acc, &others, rule, FillRule::NonZero);
     }
     for part in it {
