@@ -164,6 +164,16 @@ impl NodeKind {
         )
     }
 
+    /// Operations that take their children's geometry while the scene is read (their result
+    /// is a new leaf, or their leaves are moved), so an imported mesh file below one is read
+    /// then.
+    pub(crate) fn needs_geometry(self) -> bool {
+        matches!(
+            self,
+            NodeKind::Projection | NodeKind::Hull | NodeKind::Minkowski | NodeKind::Resize
+        )
+    }
+
     /// Leaves of the plane (2D shapes).
     pub(crate) fn is_flat(self) -> bool {
         matches!(

@@ -1,6 +1,7 @@
 //! `cube`, `sphere`, `cylinder` and `polyhedron`, tessellated as OpenSCAD does.
 
 use csgpix_scene::Error;
+use glam::DVec3;
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
@@ -305,9 +306,9 @@ pub(crate) fn circle(out: &mut Vec<Vec3>, r: f64, z: f64, fragments: usize) {
 }
 
 /// What a polyhedron becomes: a convex solid the array draws, or (not convex, too large to
-/// check, or not closed) a mesh primitive of its faces, fanned into triangles (the mesh route
-/// counts crossings by parity, so a fan over a concave face still covers exactly its interior;
-/// a mesh that is not closed is voxelized by its winding number, to which a fan is the face).
+/// check, or not closed) a mesh primitive of its faces as triangles
+/// (`csgpix_scene::facet::triangulate`: a convex face fanned, a concave one ear-clipped, so
+/// that a shadow or section of the mesh has no triangle outside a face).
 pub(crate) enum Polyhedron {
     /// Closed, convex, faces counter-clockwise seen from outside.
     Convex(Shape),
@@ -367,8 +368,9 @@ pub(crate) fn polyhedron(
     }
     let mut tris = Vec::new();
     for f in &faces {
-        for i in 1..f.len() - 1 {
-            tris.push([points[f[0]], points[f[i]], points[f[i + 1]]]);
+        let corners: Vec<DVec3> = f.iter().map(|&i| DVec3::from(points[i])).collect();
+        for t in csgpix_scene::facet::triangulate(&corners) {
+            tris.push(t.map(|j| points[f[j]]));
         }
     }
     Ok(Some(Polyhedron::Mesh(tris)))

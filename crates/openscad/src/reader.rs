@@ -354,6 +354,9 @@ impl<'a> Reader<'a> {
         }
         let (kind, pos) = (frame.kind, frame.pos);
         let flat_at = frame.first_flat.unwrap_or(pos);
+        if kind.needs_geometry() {
+            self.read_imported_meshes(&frame.children)?;
+        }
         match kind {
             NodeKind::LinearExtrude | NodeKind::RotateExtrude => self.extrude(frame).map(Some),
             NodeKind::Hull if frame.flats.is_empty() => self.hull3(frame).map(Some),
@@ -382,6 +385,50 @@ impl<'a> Reader<'a> {
             }
             _ => Ok(Some(Item::Solid(combine(kind.op(), frame.children)))),
         }
+    }
+
+    /// Reads now the mesh files imported below an operation that needs their geometry while
+    /// the scene is read ([`NodeKind::needs_geometry`]), as OpenSCAD's importer gives every
+    /// `import()` its mesh at once: relative to the scene's folder, placed by the import's
+    /// matrix, with the reading's warnings and an open mesh's at the `import`. Without a folder
+    /// (a scene given as text) they stay files, which those operations refuse; datasets stay
+    /// files.
+    fn read_imported_meshes(&mut self, below: &[CsgNode]) -> Result<(), Fail> {
+        let Some(dir) = self.options.dir.clone() else {
+            return Ok(());
+        };
+        let leaves = below.iter().flat_map(crate::project::leaves);
+        for i in leaves.filter_map(|i| i.checked_sub(IMPORTED)) {
+            let import = &self.imports[i];
+            if import.mesh.is_some() || import.threshold.is_some() {
+                continue;
+            }
+            let pos = Pos {
+                line: import.line,
+                col: import.col,
+            };
+            let path = dir.join(&import.file);
+            let (mesh, found) = csgpix_scene::trimesh::TriMesh::read_with_warnings(&path)
+                .map_err(|problem| Fail { pos, problem })?;
+            let m = import.matrix.unwrap_or(IDENTITY);
+            let tris: Vec<[Vec3; 3]> = (mesh.triangles.iter())
+                .map(|t| t.map(|v| transform_point(&m, mesh.vertices[v as usize].to_array())))
+                .collect();
+            let open = mesh.open_edges_summary(&import.file).ok().flatten();
+            let file = import.file.clone();
+            self.imports[i].mesh = Some(std::sync::Arc::new(tris));
+            self.imports[i].matrix = None;
+            self.warnings
+                .extend(found.into_iter().map(|w| (pos, w.to_string())));
+            if let Some(what) = open {
+                let msg = format!(
+                    "`{file}`: mesh is not closed: {what}; OpenSCAD's render drops it, csgpix \
+                     uses its triangles as they are"
+                );
+                self.warnings.push((pos, msg));
+            }
+        }
+        Ok(())
     }
 
     /// The name of the statement ahead when csgpix does not read that node.

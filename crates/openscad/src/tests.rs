@@ -943,3 +943,44 @@ fn the_vertex_limit_follows_the_memory_limit() {
         "{e}"
     );
 }
+
+/// An imported mesh below `projection`, `hull`, `minkowski` or `resize` is read while the
+/// scene is, from the scene's folder; a scene given as text has none and is refused as before.
+#[test]
+fn geometry_operations_read_their_imported_meshes() {
+    let dir = tempfile::tempdir().unwrap();
+    // A closed tetrahedron and an open one (its base left out).
+    let tet = "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+    std::fs::write(dir.path().join("t.off"), tet).unwrap();
+    let open = "OFF\n4 3 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+    std::fs::write(dir.path().join("o.off"), open).unwrap();
+    let here = ReadOptions {
+        dir: Some(dir.path().to_path_buf()),
+        ..Default::default()
+    };
+    let text = "linear_extrude(height = 1) projection() multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) import(\"t.off\");";
+    let s = parse_csg_with(text, "t.csg", &here).unwrap();
+    // The shadow is the triangle (1,0)-(3,0)-(1,2): extruded, one convex prism.
+    assert_eq!((s.solids.len(), s.imports.len()), (1, 0));
+    let xs: Vec<f64> = s.solids[0].vertices.iter().map(|v| v[0]).collect();
+    assert_eq!(xs.iter().copied().fold(f64::INFINITY, f64::min), 1.0);
+    assert_eq!(xs.iter().copied().fold(f64::NEG_INFINITY, f64::max), 3.0);
+    let s = parse_csg_with("hull() { import(\"t.off\"); cube(1); }", "t.csg", &here).unwrap();
+    assert_eq!((s.solids.len(), s.imports.len()), (1, 0));
+    // Resized, the import stays a leaf, now with its (placed) triangles.
+    let s = parse_csg_with("resize([4, 4, 4]) import(\"t.off\");", "t.csg", &here).unwrap();
+    let mesh = s.imports[0].mesh.as_ref().expect("read while the scene is");
+    let top = mesh.iter().flatten().map(|p| p[2]).fold(0.0, f64::max);
+    assert_eq!((s.imports[0].matrix, top), (None, 4.0));
+    // An open mesh is used as it is, with a warning at its import.
+    let s = parse_csg_with("hull() import(\"o.off\");", "t.csg", &here).unwrap();
+    assert!(s.warnings[0]
+        .to_string()
+        .starts_with("t.csg:1:8: `o.off`: mesh is not closed"));
+    // Without a folder the file is not read.
+    let e = parse_csg(text, "t.csg").unwrap_err().to_string();
+    assert!(
+        e.contains("csgpix loads imported files only to voxelize"),
+        "{e}"
+    );
+}

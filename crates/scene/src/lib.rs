@@ -19,6 +19,7 @@ pub mod dataset;
 pub mod display_list;
 pub mod error;
 pub mod expr;
+pub mod facet;
 pub mod grid;
 pub mod input;
 pub mod mesh;

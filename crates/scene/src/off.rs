@@ -11,11 +11,11 @@
 //! starts a comment up to the end of its line. Binary OFF (`OFF BINARY`) and `SKEL` files are
 //! refused.
 //!
-//! Facets of any size are fanned from their first vertex. A fan covers a simple planar
-//! polygon, convex or not, an odd number of times exactly inside it, which is all the parity
-//! rule of [`crate::trimesh::TriMesh::crossings`] needs; OpenSCAD tessellates such polygons instead, the same
-//! surface. A non-planar facet has no single surface: the fan and OpenSCAD's tessellation may
-//! bend it along different diagonals.
+//! Facets of any size become triangles as OpenSCAD tessellates them
+//! ([`crate::facet::triangulate`]: a convex facet fanned from its first vertex, a concave one
+//! ear-clipped in its plane, so that no triangle reaches outside the facet). A non-planar facet
+//! has no single surface: csgpix and OpenSCAD's tessellation may bend it along different
+//! diagonals.
 //!
 //! Where CGAL's polyhedron builder gives up (a vertex index out of range, a facet of fewer
 //! than 3 vertices), OpenSCAD imports nothing; csgpix refuses with the place. A polyhedron
@@ -230,7 +230,7 @@ fn vertex(w: &mut Words, homogeneous: bool) -> Result<[f64; 3]> {
     Ok(p)
 }
 
-/// Facet `k`: `n i1 … in`, fanned from `i1`.
+/// Facet `k`: `n i1 … in`, as triangles ([`crate::facet::triangulate`]).
 fn facet(w: &mut Words, k: usize, vs: &[[f64; 3]], soup: &mut Soup) -> Result<()> {
     let (n, at) = w.count("the number of vertices of a facet")?;
     if n < 3 {
@@ -254,8 +254,9 @@ fn facet(w: &mut Words, k: usize, vs: &[[f64; 3]], soup: &mut Soup) -> Result<()
         line = iw.line;
     }
     w.skip_line(line);
-    for j in 1..n - 1 {
-        soup.push([vs[idx[0]], vs[idx[j]], vs[idx[j + 1]]]);
+    let corners: Vec<glam::DVec3> = idx.iter().map(|&i| glam::DVec3::from(vs[i])).collect();
+    for t in crate::facet::triangulate(&corners) {
+        soup.push(t.map(|j| vs[idx[j]]));
     }
     Ok(())
 }
