@@ -163,11 +163,11 @@ fn surface_gives_the_voxels_of_openscads_mesh() {
     assert!(left.is_empty());
 }
 
-/// A DXF import csgpix refuses (a value that is not a number, which OpenSCAD skips with a
-/// warning) is outlined by openscad under `--fallback openscad`: extruded by csgpix, it gives
-/// the voxels of OpenSCAD's own mesh. DXF and SVG imports csgpix reads
-/// (crates/openscad/src/dxf.rs, svg.rs) are read by it, by default and under the fallback
-/// alike.
+/// A DXF import csgpix refuses (a comment line over 64 KiB, which OpenSCAD reads) is outlined
+/// by openscad under `--fallback openscad`: extruded by csgpix, it gives the voxels of
+/// OpenSCAD's own mesh. DXF and SVG imports csgpix reads (crates/openscad/src/dxf.rs, svg.rs)
+/// are read by it, by default and under the fallback alike, also one with a value that is not
+/// a number, which csgpix skips with OpenSCAD's warning.
 #[test]
 fn fallback_outlines_a_2d_import() {
     if !have_openscad() {
@@ -187,8 +187,14 @@ fn fallback_outlines_a_2d_import() {
         lwpolyline(&[(6, 6), (6, 14), (14, 14), (14, 6)])
     );
     std::fs::write(dir.path().join("frame.dxf"), &dxf).unwrap();
-    let odd = dxf.replacen("70\n1\n", "70\n1\n40\n1,5\n", 1);
+    let odd = dxf.replacen(
+        "70\n1\n",
+        &format!("70\n1\n999\n{}\n", "x".repeat(70_000)),
+        1,
+    );
     std::fs::write(dir.path().join("odd.dxf"), odd).unwrap();
+    let comma = dxf.replacen("70\n1\n", "70\n1\n40\n1,5\n", 1);
+    std::fs::write(dir.path().join("comma.dxf"), comma).unwrap();
     let svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"20mm\" height=\"20mm\" \
                viewBox=\"0 0 20 20\"><path d=\"M 2 2 L 18 2 L 18 18 L 2 18 Z M 6 6 L 6 14 \
                L 14 14 L 14 6 Z\"/></svg>\n";
@@ -198,6 +204,7 @@ fn fallback_outlines_a_2d_import() {
         ("frame.dxf", false),
         ("frame.dxf", true),
         ("odd.dxf", true),
+        ("comma.dxf", false),
         ("frame.svg", false),
         ("frame.svg", true),
     ] {
@@ -216,6 +223,8 @@ fn fallback_outlines_a_2d_import() {
         let (code, _, e) = run(dir.path(), &scad, &args);
         assert_eq!(code, Some(0), "{file}: {e}");
         assert_eq!(e.contains("outlined by openscad"), file == "odd.dxf", "{e}");
+        let skipped = "Illegal value \"1,5\" for group code 40";
+        assert_eq!(e.contains(skipped), file == "comma.dxf", "{e}");
         let ours = occupancy(&dir.path().join("p.nrrd"));
         let theirs = openscads_voxels(dir.path(), &bounds);
         let both = ours.iter().zip(&theirs).filter(|(a, b)| **a && **b).count();

@@ -23,10 +23,11 @@
 //!   open paths"), and all paths are filled together by the even-odd rule.
 //!
 //! Where OpenSCAD warns and goes on (an unsupported entity, an entity short of coordinates),
-//! csgpix does the same to the geometry and records the warning. A bad group code, a number
-//! that does not parse, a group code without its value (an odd number of lines), a coordinate
-//! past [`MAX_COORDINATE`] are refused, one line naming the file and line: OpenSCAD warns there
-//! and stops reading (a bad group code) or skips the value. The file is read line by line
+//! csgpix does the same to the geometry and records the warning: a group code that is not a
+//! number stops the reading ("Illegal ID"; what was drawn before stays), a value that does not
+//! parse is skipped ("Illegal value"), a group code without its value line (an odd number of
+//! lines) has an empty value. A coordinate past [`MAX_COORDINATE`] is refused, one line naming
+//! the file and line. The file is read line by line
 //! (lines of at most [`MAX_LINE`] bytes) and its segments count against the scene's vertex
 //! budget (two vertices each) as they are made, so memory stays bounded; the joining of
 //! segments is linear in their number, up to a heap's logarithm.
@@ -100,20 +101,25 @@ pub(crate) fn parse(
             break;
         }
         let id_line = lines.line;
+        // A group code without its value line (an odd number of lines) has an empty value, as
+        // `std::getline` at the end of the stream gives.
+        let value = lines.next()?.map(<[u8]>::to_vec);
         let code = std::str::from_utf8(&id)
             .ok()
-            .and_then(|s| s.parse::<i32>().ok())
-            .ok_or_else(|| {
-                let msg = format!("bad group code \"{}\" (a number is expected)", shown(&id));
-                Error::invalid(format!("{name}:{id_line}: {msg}"))
-            })?;
-        let Some(value) = lines.next()? else {
-            let msg =
-                format!("group code {code} has no value: the file ends (an odd number of lines)");
-            return Err(Error::invalid(format!("{name}:{id_line}: {msg}")));
+            .and_then(|s| s.parse::<i32>().ok());
+        let Some(code) = code else {
+            // OpenSCAD stops reading here, warning unless the file has ended.
+            if value.is_some() {
+                let msg = format!(
+                    "{name}:{id_line}: Illegal ID \"{}\" (a group code is a number): the rest \
+                     of the file is not read",
+                    shown(&id)
+                );
+                r.warnings.push(msg);
+            }
+            break;
         };
-        let value = value.to_vec();
-        r.pair(code, &value, lines.line)?;
+        r.pair(code, &value.unwrap_or_default(), lines.line)?;
     }
     r.finish()
 }
@@ -312,18 +318,28 @@ impl<'s> Dxf<'s> {
         Error::invalid(format!("{}:{line}: {msg}", self.name))
     }
 
-    /// A number as `boost::lexical_cast<double>` reads it; not finite is refused too.
-    fn number(&self, code: i32, value: &[u8], line: usize) -> csgpix_scene::Result<f64> {
-        match std::str::from_utf8(value)
+    /// A number as `boost::lexical_cast<double>` reads it, or None with OpenSCAD's warning
+    /// ("Illegal value"), the value skipped. csgpix skips `inf` and `nan` too, which OpenSCAD
+    /// reads into coordinates that draw nothing usable.
+    fn number(&mut self, code: i32, value: &[u8], line: usize) -> Option<f64> {
+        let v = std::str::from_utf8(value)
             .ok()
             .and_then(|s| s.parse::<f64>().ok())
-        {
-            Some(v) if v.is_finite() => Ok(v),
-            _ => Err(self.fail(
-                line,
-                format!("bad number \"{}\" for group code {code}", shown(value)),
-            )),
+            .filter(|v| v.is_finite());
+        if v.is_none() {
+            self.illegal_value(code, value, line);
         }
+        v
+    }
+
+    /// `DxfData::DxfData`'s warning on a value that does not parse: the value is skipped.
+    fn illegal_value(&mut self, code: i32, value: &[u8], line: usize) {
+        let msg = format!(
+            "{}:{line}: Illegal value \"{}\" for group code {code}: skipped",
+            self.name,
+            shown(value)
+        );
+        self.warnings.push(msg);
     }
 
     /// A coordinate of the entities section (shifted by `origin`, times `scale`) or of a
@@ -336,42 +352,44 @@ impl<'s> Dxf<'s> {
         }
     }
 
-    /// One group code and its value (at `line`), as the loop body of `DxfData::DxfData`.
+    /// One group code and its value (at `line`), as the loop body of `DxfData::DxfData`: a
+    /// number that does not parse is skipped with a warning, once.
     fn pair(&mut self, code: i32, value: &[u8], line: usize) -> csgpix_scene::Result<()> {
-        if (10..=16).contains(&code) || (20..=26).contains(&code) {
-            // OpenSCAD parses these for dimensions, which draw nothing.
-            self.number(code, value, line)?;
-        }
+        let numeric = matches!(code, 10..=16 | 20..=26 | 40..=42 | 50 | 51);
+        let v = if numeric {
+            // 12-16 and 22-26 are parsed for dimensions, which draw nothing.
+            match self.number(code, value, line) {
+                Some(v) => v,
+                None => return Ok(()),
+            }
+        } else {
+            0.0
+        };
         match code {
             0 => return self.end_entity(value, line),
             2 => self.iddata = value.to_vec(),
             8 => self.layer = value.to_vec(),
             10 | 11 => {
-                let v = self.number(code, value, line)?;
                 let v = self.coordinate(v, self.s.origin[0]);
                 self.xverts.push(v);
             }
             20 | 21 => {
-                let v = self.number(code, value, line)?;
                 let v = self.coordinate(v, self.s.origin[1]);
                 self.yverts.push(v);
             }
-            40 => {
-                let v = self.number(code, value, line)?;
-                self.radius = if self.in_blocks { v } else { v * self.s.scale };
-            }
-            41 => self.ellipse_start = self.number(code, value, line)?,
-            42 => self.ellipse_stop = self.number(code, value, line)?,
-            50 => self.arc_start = self.number(code, value, line)?,
-            51 => self.arc_stop = self.number(code, value, line)?,
+            40 => self.radius = if self.in_blocks { v } else { v * self.s.scale },
+            41 => self.ellipse_start = v,
+            42 => self.ellipse_stop = v,
+            50 => self.arc_start = v,
+            51 => self.arc_stop = v,
             70 => {
-                self.dimtype = std::str::from_utf8(value)
+                let n = std::str::from_utf8(value)
                     .ok()
-                    .and_then(|s| s.parse::<i32>().ok())
-                    .ok_or_else(|| {
-                        let msg = format!("bad integer \"{}\" for group code 70", shown(value));
-                        self.fail(line, msg)
-                    })?;
+                    .and_then(|s| s.parse::<i32>().ok());
+                match n {
+                    Some(n) => self.dimtype = n,
+                    None => self.illegal_value(code, value, line),
+                }
             }
             _ => {}
         }
@@ -889,35 +907,59 @@ mod tests {
         )
     }
 
+    /// Where `DxfData::DxfData` warns and goes on, so does csgpix: each case's warnings at
+    /// their lines, and the drawing what is left.
     #[test]
-    fn malformed_files_are_one_line_at_their_line() {
-        let square = entities(&line((0.0, 0.0), (1.0, 0.0)));
-        for (text, at, why) in [
-            (format!("{square}999"), "t.dxf:21:", "odd number of lines"),
+    fn malformed_values_are_warnings_at_their_line() {
+        let tri = |k: f64| {
+            let p = [(k, k), (k + 2.0, k), (k + 2.0, k + 2.0)];
+            (0..3)
+                .map(|i| line(p[i], p[(i + 1) % 3]))
+                .collect::<String>()
+        };
+        let short = "Not enough input values for LINE";
+        for (text, warned, area_) in [
+            // A value line missing at the end: the group code's value is empty.
+            (format!("{}999", entities(&tri(0.0))), vec![], Some(2.0)),
+            // A group code that is not a number: the rest (a second triangle) is not read.
             (
-                "0\nSECTION\nX\nENTITIES\n".to_string(),
-                "t.dxf:3:",
-                "bad group code \"X\"",
+                format!("0\nSECTION\n2\nENTITIES\n{}X\nY\n{}", tri(0.0), tri(5.0)),
+                vec![("t.dxf:41:", "Illegal ID \"X\"")],
+                Some(2.0),
+            ),
+            // A coordinate that does not parse, or is not finite: skipped, so its LINE is
+            // short of coordinates and keeps them for the next (OpenSCAD's state).
+            (
+                entities(&tri(0.0).replacen("10\n0\n", "10\n0.0.1\n", 1)),
+                vec![
+                    ("t.dxf:10:", "Illegal value \"0.0.1\" for group code 10"),
+                    ("t.dxf:6:", short),
+                ],
+                None,
             ),
             (
-                square.replace("10\n0\n", "10\n0.0.1\n"),
-                "t.dxf:10:",
-                "bad number \"0.0.1\" for group code 10",
+                entities(&tri(0.0).replacen("\n2\n", "\n1e999\n", 1)),
+                vec![
+                    ("t.dxf:14:", "Illegal value \"1e999\""),
+                    ("t.dxf:6:", short),
+                ],
+                None,
             ),
+            // An integer that does not parse: skipped, the LINE drawn.
             (
-                square.replace("8\n0\n", "8\n0\n70\n1.5\n"),
-                "t.dxf:10:",
-                "bad integer \"1.5\"",
-            ),
-            (
-                square.replace("\n1\n", "\n1e999\n"),
-                "t.dxf:14:",
-                "bad number \"1e999\"",
+                entities(&tri(0.0).replacen("8\n0\n", "8\n0\n70\n1.5\n", 1)),
+                vec![("t.dxf:10:", "Illegal value \"1.5\" for group code 70")],
+                Some(2.0),
             ),
         ] {
-            let e = drawing(&text).err().expect(why).to_string();
-            assert!(e.starts_with(at) && e.contains(why), "{e}");
-            assert_eq!(e.lines().count(), 1, "{e}");
+            let d = drawing(&text).unwrap_or_else(|e| panic!("{warned:?}: {e}"));
+            assert_eq!(d.warnings.len(), warned.len(), "{:?}", d.warnings);
+            for (w, (at, why)) in d.warnings.iter().zip(&warned) {
+                assert!(w.starts_with(at) && w.contains(why), "{w}");
+            }
+            if let Some(a) = area_ {
+                assert!((area(&d.shape).abs() - a).abs() < 1e-9, "{warned:?}");
+            }
         }
     }
 
