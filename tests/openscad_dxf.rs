@@ -85,8 +85,7 @@ fn bad_dxf_is_a_warning_at_the_import() {
         assert!(e.starts_with("t.csg:3:5:") && e.contains(why), "{e}");
     }
     let e = csgpix::openscad::parse_csg_with(&scene("far.dxf"), "t.csg", &options)
-        .err()
-        .expect("a coordinate past the limit")
+        .expect_err("a coordinate past the limit")
         .to_string();
     assert!(
         e.starts_with("t.csg:3:5:") && e.contains("coordinate limit"),
