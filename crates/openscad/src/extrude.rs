@@ -264,7 +264,7 @@ pub fn convex_prism(outline: &[DVec2], l: &Linear) -> (Vec<[f64; 3]>, Vec<Vec<us
 /// slices, and the shape's caps (`cap::cap`) at the bottom and, unless the top is scaled to a
 /// point, at the top. Outlines run as OpenSCAD's even-odd cleanup leaves them (outer ones
 /// counter-clockwise, holes clockwise). Each wall quad is split along the diagonal OpenSCAD
-/// 2021.01 picks ([`openscad_split`]).
+/// 2021.01 picks (`openscad_split`).
 pub fn linear_mesh(poly: &Poly2, l: &Linear, sincos: &dyn Fn(f64) -> (f64, f64)) -> Vec<Tri3> {
     let rings = oriented(poly);
     let level = |j: usize| -> Vec<Vec<DVec3>> {
