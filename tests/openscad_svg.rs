@@ -28,7 +28,8 @@ fn svg_import_matches_openscads_mesh() {
     assert_eq!(compared, 7);
 }
 
-/// A bad SVG file is one line naming the import's place in the scene.
+/// A bad SVG file is one line naming the import's place in the scene; a missing one is a
+/// warning there, as OpenSCAD's.
 #[test]
 fn bad_svg_is_one_line_at_the_import() {
     let tmp = tempfile::tempdir().unwrap();
@@ -45,7 +46,6 @@ fn bad_svg_is_one_line_at_the_import() {
     for (file, why) in [
         ("bad.svg", "not a valid SVG file"),
         ("page.svg", "not an SVG file"),
-        ("missing.svg", "cannot read it"),
     ] {
         let text = format!("union() {{\n  linear_extrude(1)\n    import(file = \"{file}\");\n}}\n");
         let e = csgpix::openscad::parse_csg_with(&text, "t.csg", &options)
@@ -56,4 +56,19 @@ fn bad_svg_is_one_line_at_the_import() {
         assert!(e.contains(why), "{e}");
         assert_eq!(e.lines().count(), 1, "{e}");
     }
+    // A missing file imports nothing with OpenSCAD's warning; `strict` refuses at it.
+    let text =
+        "union() {\n  linear_extrude(1)\n    import(file = \"missing.svg\");\n  cube(1);\n}\n";
+    let s = csgpix::openscad::parse_csg_with(text, "t.csg", &options).unwrap();
+    let w = s.warnings[0].to_string();
+    assert!(
+        w.starts_with("t.csg:3:5:") && w.contains("Can't open import file"),
+        "{w}"
+    );
+    let strict = csgpix::openscad::ReadOptions {
+        strict: true,
+        ..options
+    };
+    let e = csgpix::openscad::parse_csg_with(text, "t.csg", &strict).unwrap_err();
+    assert_eq!(e.to_string(), w);
 }
