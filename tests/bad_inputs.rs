@@ -465,6 +465,20 @@ fn arguments_that_are_not_utf8_are_named() {
         let want = format!("{flag}: the value \"{value}\" is not UTF-8: csgpix reads it as text");
         assert!(e.starts_with(&want), "{e}");
     }
+    // A long value is cut to 64 bytes around its first byte that is not UTF-8 (a 100 kB
+    // argument was a 100 kB line), with its length and that byte's offset.
+    let mut long = b"--res=".to_vec();
+    long.extend(std::iter::repeat_n(b'8', 100_000));
+    long.push(0xff);
+    long.extend(std::iter::repeat_n(b'8', 100));
+    let e = refused_os(&[&scene[..], &[OsStr::from_bytes(&long)]].concat());
+    let want = format!(
+        "--res: the value \"…{}\\xFF{}…\" (100101 bytes, the first not UTF-8 at byte 100000)",
+        "8".repeat(32),
+        "8".repeat(31)
+    );
+    assert!(e.starts_with(&want), "{e}");
+    assert!(e.len() < 200, "{e}");
     // Paths are taken as they are: the file is looked for.
     let dl = OsStr::from_bytes(b"no-such-\xff.dl");
     let e = refused_os(&[

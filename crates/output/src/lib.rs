@@ -786,9 +786,17 @@ fn existing_ancestor(p: &Path) -> Result<(PathBuf, String)> {
     }
 }
 
-/// Follow symlinks (dangling ones too, up to 40) to the path that is written.
+/// Follow symlinks (dangling ones too, up to 40) to the path that is written. A trailing
+/// slash after a symlink (`-o LINK/`) names the same link: the system would follow it to the
+/// directory, whose replacement (a store written whole) would then replace the link.
 fn resolve(path: &Path) -> Result<PathBuf> {
     let mut p = path.to_path_buf();
+    let bare: PathBuf = path.components().collect();
+    if bare.as_os_str() != p.as_os_str()
+        && std::fs::symlink_metadata(&bare).is_ok_and(|m| m.file_type().is_symlink())
+    {
+        p = bare;
+    }
     for _ in 0..40 {
         match std::fs::symlink_metadata(&p) {
             Ok(m) if m.file_type().is_symlink() => {
@@ -983,6 +991,40 @@ mod tests {
         drop(outs);
         assert_eq!(names(dir.path()), ["photos.zarr", "v.zarr"]);
         assert_eq!(names(&other), ["a.jpg"]);
+    }
+
+    /// `-o LINK/` and `-o LINK` alike write the store the link names and keep the link (with
+    /// the slash the link was replaced by a directory).
+    #[cfg(unix)]
+    #[test]
+    fn a_store_through_a_symlink_keeps_it_with_or_without_a_trailing_slash() {
+        let dir = tempfile::tempdir().unwrap();
+        let store = dir.path().join("v.zarr");
+        std::fs::create_dir(&store).unwrap();
+        std::fs::write(store.join("zarr.json"), b"old").unwrap();
+        let link = dir.path().join("l.zarr");
+        std::os::unix::fs::symlink("v.zarr", &link).unwrap();
+        for (k, spelling) in [
+            format!("{}/", link.display()),
+            format!("{}//", link.display()),
+        ]
+        .into_iter()
+        .chain([link.display().to_string()])
+        .enumerate()
+        {
+            let mut outs = Outputs::new();
+            let t = outs
+                .tree("-o", Path::new(&spelling), &["zarr"], "zarr.json")
+                .unwrap();
+            let root = outs.stage_root(t).unwrap();
+            std::fs::write(root.join("zarr.json"), format!("new {k}")).unwrap();
+            outs.commit().unwrap();
+            let kept = std::fs::symlink_metadata(&link).unwrap().file_type();
+            assert!(kept.is_symlink(), "{spelling}: the link was replaced");
+            let got = std::fs::read_to_string(store.join("zarr.json")).unwrap();
+            assert_eq!(got, format!("new {k}"), "{spelling}");
+        }
+        assert_eq!(names(dir.path()), ["l.zarr", "v.zarr"]);
     }
 
     #[test]
