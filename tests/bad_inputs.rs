@@ -567,3 +567,37 @@ fn degenerate_extents_are_refused_where_they_are_read() {
     );
     assert!(!nrrd.exists() && !png.exists());
 }
+
+/// An SVG of 10,000 nested groups aborted the process on a stack overflow (exit 134) and left
+/// its staging file: refused in one line at the import and the file's place, nothing written.
+#[test]
+fn deeply_nested_svg_is_one_line_not_an_abort() {
+    let dir = tempfile::tempdir().unwrap();
+    let n = 10_000;
+    let svg = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\">{}<rect width=\"5\" \
+         height=\"5\"/>{}</svg>",
+        "<g>".repeat(n),
+        "</g>".repeat(n)
+    );
+    std::fs::write(dir.path().join("deep.svg"), svg).unwrap();
+    let csg = dir.path().join("deep.csg");
+    std::fs::write(
+        &csg,
+        "linear_extrude(height = 1) import(file = \"deep.svg\");\n",
+    )
+    .unwrap();
+    let out = dir.path().join("d.nrrd");
+    let e = refused(&["voxelize", s(&csg), "--res", "16", "-o", s(&out)]);
+    assert!(
+        e.contains("deep.csg:1:28:") && e.contains("deep.svg:1:"),
+        "{e}"
+    );
+    assert!(e.contains("nested more than 256 deep"), "{e}");
+    let mut left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    left.sort();
+    assert_eq!(left, ["deep.csg", "deep.svg"]);
+}
