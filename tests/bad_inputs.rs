@@ -465,6 +465,20 @@ fn arguments_that_are_not_utf8_are_named() {
         let want = format!("{flag}: the value \"{value}\" is not UTF-8: csgpix reads it as text");
         assert!(e.starts_with(&want), "{e}");
     }
+    // A long value is cut to 64 bytes around its first byte that is not UTF-8 (a 100 kB
+    // argument was a 100 kB line), with its length and that byte's offset.
+    let mut long = b"--res=".to_vec();
+    long.extend(std::iter::repeat_n(b'8', 100_000));
+    long.push(0xff);
+    long.extend(std::iter::repeat_n(b'8', 100));
+    let e = refused_os(&[&scene[..], &[OsStr::from_bytes(&long)]].concat());
+    let want = format!(
+        "--res: the value \"…{}\\xFF{}…\" (100101 bytes, the first not UTF-8 at byte 100000)",
+        "8".repeat(32),
+        "8".repeat(31)
+    );
+    assert!(e.starts_with(&want), "{e}");
+    assert!(e.len() < 200, "{e}");
     // Paths are taken as they are: the file is looked for.
     let dl = OsStr::from_bytes(b"no-such-\xff.dl");
     let e = refused_os(&[
@@ -552,4 +566,38 @@ fn degenerate_extents_are_refused_where_they_are_read() {
         "{e}"
     );
     assert!(!nrrd.exists() && !png.exists());
+}
+
+/// An SVG of 10,000 nested groups aborted the process on a stack overflow (exit 134) and left
+/// its staging file: refused in one line at the import and the file's place, nothing written.
+#[test]
+fn deeply_nested_svg_is_one_line_not_an_abort() {
+    let dir = tempfile::tempdir().unwrap();
+    let n = 10_000;
+    let svg = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\">{}<rect width=\"5\" \
+         height=\"5\"/>{}</svg>",
+        "<g>".repeat(n),
+        "</g>".repeat(n)
+    );
+    std::fs::write(dir.path().join("deep.svg"), svg).unwrap();
+    let csg = dir.path().join("deep.csg");
+    std::fs::write(
+        &csg,
+        "linear_extrude(height = 1) import(file = \"deep.svg\");\n",
+    )
+    .unwrap();
+    let out = dir.path().join("d.nrrd");
+    let e = refused(&["voxelize", s(&csg), "--res", "16", "-o", s(&out)]);
+    assert!(
+        e.contains("deep.csg:1:28:") && e.contains("deep.svg:1:"),
+        "{e}"
+    );
+    assert!(e.contains("nested more than 256 deep"), "{e}");
+    let mut left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    left.sort();
+    assert_eq!(left, ["deep.csg", "deep.svg"]);
 }

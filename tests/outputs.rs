@@ -728,3 +728,80 @@ fn a_volume_file_leaves_its_empty_blocks_as_holes() {
         }
     }
 }
+
+/// A signal that ends a `--fallback openscad` run ends openscad with it (its process group:
+/// here a stand-in script and its `sleep`) and removes the statement written beside the scene
+/// and openscad's scratch directory in TMPDIR; they were left, and openscad kept running.
+#[cfg(unix)]
+#[test]
+fn a_signal_ends_openscad_and_removes_its_scratch_files() {
+    use std::os::unix::fs::PermissionsExt;
+    use std::os::unix::process::ExitStatusExt;
+    for sig in [libc::SIGINT, libc::SIGTERM, libc::SIGHUP] {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        let (bin, tmp, scene) = (d.join("bin"), d.join("tmp"), d.join("scene"));
+        for p in [&bin, &tmp, &scene] {
+            std::fs::create_dir(p).unwrap();
+        }
+        // The stand-in writes a mesh into its -o path's directory and waits; its pid and its
+        // child's are recorded.
+        let fake = bin.join("openscad");
+        let script = format!(
+            "#!/bin/sh\necho $$ > {pids}\nprintf 'solid x\\nendsolid x\\n' > \"$2\"\n\
+             sleep 60 &\necho $! >> {pids}\nwait\n",
+            pids = d.join("pids").display()
+        );
+        std::fs::write(&fake, script).unwrap();
+        std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).unwrap();
+        // A DXF file csgpix refuses (a line over 64 KiB, which OpenSCAD reads): outlined by
+        // openscad under the fallback.
+        let statement = "linear_extrude(height = 1) import(file = \"h.dxf\");\ncube(1);\n";
+        std::fs::write(scene.join("s.csg"), statement).unwrap();
+        let dxf = format!("999\n{}\n0\nEOF\n", "x".repeat(70_000));
+        std::fs::write(scene.join("h.dxf"), dxf).unwrap();
+        let path = format!(
+            "{}:{}",
+            bin.display(),
+            std::env::var("PATH").unwrap_or_default()
+        );
+        let mut child = Command::new(env!("CARGO_BIN_EXE_csgpix"))
+            .current_dir(&scene)
+            .env("PATH", path)
+            .env("TMPDIR", &tmp)
+            .args(["voxelize", "s.csg", "--res", "8", "--fallback", "openscad"])
+            .args(["-o", s(&d.join("o.nrrd"))])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        let t0 = std::time::Instant::now();
+        let pids = || std::fs::read_to_string(d.join("pids")).unwrap_or_default();
+        while pids().lines().count() < 2 {
+            assert!(t0.elapsed().as_secs() < 30, "openscad never started");
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        assert!(
+            names(&tmp).len() == 1,
+            "openscad's scratch directory: {:?}",
+            names(&tmp)
+        );
+        // SAFETY: kill(2) on our own child's pid.
+        assert_eq!(unsafe { libc::kill(child.id() as i32, sig) }, 0);
+        let status = child.wait().unwrap();
+        assert_eq!(status.signal(), Some(sig), "{status:?}");
+        assert!(names(&tmp).is_empty(), "left in TMPDIR: {:?}", names(&tmp));
+        assert_eq!(names(&scene), ["h.dxf", "s.csg"]);
+        assert!(!d.join("o.nrrd").exists());
+        // Both processes are gone (kill(pid, 0) fails once a process is reaped or a zombie
+        // of an exited parent; give init a moment to reap).
+        for pid in pids().lines().map(|l| l.trim().parse::<i32>().unwrap()) {
+            let t0 = std::time::Instant::now();
+            // SAFETY: signal 0 only checks that the process exists.
+            while unsafe { libc::kill(pid, 0) } == 0 {
+                assert!(t0.elapsed().as_secs() < 10, "{pid} still running");
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+        }
+    }
+}

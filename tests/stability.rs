@@ -926,3 +926,67 @@ fn trees_100000_deep_from_a_file_are_refused_in_one_line() {
         table.label_bits
     );
 }
+
+/// Scenes thinner than a voxel (a grid one voxel high or deep) are voxelized, not refused:
+/// `cube([50, 1, 1])` at `--res 32` made a perpendicular plane's dKy one past the word. Every
+/// model gives the voxels of direct evaluation at the voxel centres (a bar, a sliver, and a bar
+/// with 40 slots cut across it).
+#[test]
+fn scenes_thinner_than_a_voxel_are_voxelized() {
+    let dir = tempfile::tempdir().unwrap();
+    // Slots 0.5 wide every 1.25 units, through the bar's whole height and depth.
+    let slot = |i: usize| 1.0 + 1.25 * i as f64;
+    let slots: String = (0..40)
+        .map(|i| {
+            format!(
+                "multmatrix([[1,0,0,{}],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) cube([0.5, 1, 1]);\n",
+                slot(i)
+            )
+        })
+        .collect();
+    let in_bar = |x: f64, len: f64| (0.0..=len).contains(&x);
+    let in_slot = |x: f64| (0..40).any(|i| (slot(i)..=slot(i) + 0.5).contains(&x));
+    let scenes: [(&str, String, &dyn Fn(f64) -> bool); 3] = [
+        ("bar", "cube([50, 1, 1]);".into(), &|x| in_bar(x, 50.0)),
+        ("sliver", "cube([50, 0.1, 0.1]);".into(), &|x| {
+            in_bar(x, 50.0)
+        }),
+        (
+            "slots",
+            format!("difference() {{ cube([51, 1, 1]);\n{slots}}}"),
+            &|x| in_bar(x, 51.0) && !in_slot(x),
+        ),
+    ];
+    for (name, text, inside) in scenes {
+        let csg = dir.path().join(format!("{name}.csg"));
+        std::fs::write(&csg, text).unwrap();
+        for model in ["word", "cycle", "float"] {
+            let out = dir.path().join(format!("{name}-{model}.nrrd"));
+            let args = [
+                "voxelize",
+                s(&csg),
+                "--res",
+                "32",
+                "--model",
+                model,
+                "--json",
+            ];
+            let o = csgpix(&[&args[..], &["-o", s(&out)]].concat());
+            let e = String::from_utf8_lossy(&o.stderr);
+            assert!(o.status.success(), "{name} {model}: {e}");
+            let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+            let (x0, h) = (
+                r["min"][0].as_f64().unwrap(),
+                r["voxel"][0].as_f64().unwrap(),
+            );
+            let (dims, v) = csgpix::scene::nrrd::read(&std::fs::read(&out).unwrap()).unwrap();
+            assert_eq!(dims[1] * dims[2], 1, "{name}: one voxel thick");
+            // The one row's centres lie inside the bar's height and depth: X decides.
+            let want: Vec<bool> = (0..dims[0])
+                .map(|i| inside(x0 + (i as f64 + 0.5) * h))
+                .collect();
+            let got: Vec<bool> = v.iter().map(|&c| c != 0).collect();
+            assert_eq!(got, want, "{name} {model}");
+        }
+    }
+}

@@ -202,7 +202,7 @@ pub fn silhouette_planes(frame: &Frame, s: &ConvexSolid, colour: u32) -> Vec<DlP
 
 /// The factor a perpendicular plane's K is multiplied by before it is quantized for a
 /// `width`×`height` array: the largest power of two (at least 1) that keeps |K| at every
-/// pixel within half the largest word.
+/// pixel, and each of K0, dKx, dKy, within half the largest word.
 ///
 /// The array reads only the sign of K (§2.3.3, §2.3.4: K < 0 outside, K ≥ 0 inside), so any
 /// positive multiple of the distance is the same plane to it; but each of K0, dKx, dKy is
@@ -218,9 +218,12 @@ pub fn perpendicular_scale(p: &DlPlane, fmt: &WordFormat, width: usize, height: 
         width.saturating_sub(1) as f64,
         height.saturating_sub(1) as f64,
     );
+    // The coefficients are words too: on an array one pixel wide or high the corners do not
+    // bound dKx or dKy (a thin scene, `cube([50, 1, 1])` at 32 voxels across, overflowed).
     let largest = [(0.0, 0.0), (xm, 0.0), (0.0, ym), (xm, ym)]
         .iter()
         .map(|&(x, y)| (p.z0 + x * p.dzx + y * p.dzy).abs())
+        .chain([p.z0.abs(), p.dzx.abs(), p.dzy.abs()])
         .fold(0.0, f64::max);
     let room = fmt.to_real(fmt.max_word()) / 2.0;
     if !(largest > 0.0 && largest.is_finite()) || largest >= room {
@@ -595,6 +598,40 @@ mod tests {
             ..k.clone()
         };
         assert_eq!(perpendicular_scale(&far, &fmt, 64, 64), 1.0);
+    }
+
+    /// On an array one pixel high the corners do not bound dKy: a wall along X 0.32 pixel
+    /// from the row (a 1-unit-thin cube at 1.5625 units a voxel) was scaled until dKy = 2^21,
+    /// one past the word, and the thin scene refused. Every coefficient now fits.
+    #[test]
+    fn a_perpendicular_plane_fits_the_word_on_a_one_pixel_array() {
+        let fmt = WordFormat::THESIS;
+        let room = fmt.to_real(fmt.max_word()) / 2.0;
+        let wall = DlPlane {
+            z0: 0.32,
+            dzx: 0.0,
+            dzy: -1.0,
+            colour: 1,
+            h: false,
+            y: true,
+            l: false,
+        };
+        for (w, h) in [(32, 1), (1, 32), (1, 1), (2, 1)] {
+            let mut dl = DisplayList {
+                planes: vec![wall.clone()],
+                terminator: 1,
+            };
+            scale_perpendicular(&mut dl, &fmt, w, h);
+            let p = &dl.planes[0];
+            assert!(
+                [p.z0, p.dzx, p.dzy].iter().all(|c| c.abs() <= room),
+                "{w}x{h}"
+            );
+            crate::compile::coeffs(&fmt, p.z0, p.dzx, p.dzy).unwrap();
+            crate::compile::check_window(std::slice::from_ref(&dl), &fmt, w, h).unwrap();
+            // Still scaled far up: the trace's rounding is shrunk as on any array.
+            assert!(p.z0 / wall.z0 >= 1024.0, "{w}x{h}");
+        }
     }
 
     #[test]

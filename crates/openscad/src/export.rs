@@ -37,6 +37,7 @@ pub fn scene_text_with(
     }
     let dir = tempfile::tempdir()
         .map_err(|e| Error::io("a temporary directory", &e).context(path.display()))?;
+    let _scratch = csgpix_output::scratch(dir.path());
     let out = dir.path().join("scene.csg");
     // `$preview = false`: the tree OpenSCAD renders (F6, STL export), not its preview (a CSG
     // export evaluates `$preview` as true): the voxels are the parts a design prints.

@@ -44,6 +44,8 @@ pub(crate) fn mesh(
         .or_else(|_| tempfile::Builder::new().suffix(".csg").tempfile())
         .map_err(|e| Error::io("a temporary file", &e))?;
     let tmp = tempfile::tempdir().map_err(|e| Error::io("a temporary directory", &e))?;
+    // A signal that ends the run removes both (csgpix_output::scratch).
+    let _scratch = [hidden.path(), tmp.path()].map(csgpix_output::scratch);
     let (csg, stl) = (hidden.path().to_path_buf(), tmp.path().join("sub.stl"));
     std::fs::write(&csg, statement)
         .map_err(|e| Error::io(format_args!("writing {}", csg.display()), &e))?;

@@ -282,6 +282,16 @@ pub fn read_dxf(
     Ok((d.shape.points().count(), d.warnings.len()))
 }
 
+/// The SVG file `text` (called `file` in messages) drawn as `import(file)` draws it at 72 dpi
+/// (module `svg`): the number of its shapes. The entry point of the SVG fuzz target.
+///
+/// # Errors
+///
+/// A file csgpix refuses, one line.
+pub fn read_svg(text: &str, file: &str) -> csgpix_scene::Result<usize> {
+    svg::parse(text, file, 72.0, false).map(|s| s.len())
+}
+
 /// [`parse_csg`] with [`ReadOptions`].
 pub fn parse_csg_with(
     text: &str,

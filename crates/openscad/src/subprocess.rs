@@ -1,5 +1,6 @@
 //! openscad as a subprocess, within a time limit: a `.scad` file can keep it busy for hours
-//! (a `minkowski` of fine spheres, a loop of millions), and nothing else would stop it.
+//! (a `minkowski` of fine spheres, a loop of millions), and nothing else would stop it. A
+//! signal that ends the run ends the child too (`csgpix_output::child`).
 
 use std::io::{Read, Seek};
 use std::process::{Command, ExitStatus, Stdio};
@@ -33,7 +34,14 @@ pub(crate) fn run(cmd: &mut Command, limit: Option<Duration>) -> std::io::Result
     cmd.stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(err.try_clone()?);
+    // Under the binary's signal cleanup the child leads its own process group, which the
+    // cleanup kills with the run (a signal sent to csgpix alone reached no child before).
+    #[cfg(unix)]
+    if csgpix_output::signal_cleanup_installed() {
+        std::os::unix::process::CommandExt::process_group(cmd, 0);
+    }
     let mut child = cmd.spawn()?;
+    let _ended_with_the_run = csgpix_output::child(child.id());
     let Some(status) = wait(&mut child, limit)? else {
         // SIGKILL: openscad has nothing to save, and a busy one may not heed SIGTERM.
         let _ = child.kill();

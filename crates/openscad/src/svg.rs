@@ -56,14 +56,24 @@ fn apply(m: &Affine, p: DVec2) -> DVec2 {
 pub(crate) fn read(path: &Path, dpi: f64, center: bool) -> csgpix_scene::Result<Vec<Poly2>> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| Error::invalid(format!("cannot read it: {e}")))?;
-    parse(&text, dpi, center)
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
+    parse(&text, name.as_deref().unwrap_or("svg"), dpi, center)
 }
 
-/// [`read`] of the file's text.
-pub(crate) fn parse(text: &str, dpi: f64, center: bool) -> csgpix_scene::Result<Vec<Poly2>> {
+/// [`read`] of the file's text (`file` names it in errors). Elements nested deeper than
+/// [`csgpix_scene::MAX_XML_DEPTH`] (libxml2's limit, so OpenSCAD's too) and more than
+/// [`csgpix_scene::MAX_XML_NODES`] nodes (entities included) are refused in one line, before
+/// roxmltree and [`walk`], which recurse once per level.
+pub(crate) fn parse(
+    text: &str,
+    file: &str,
+    dpi: f64,
+    center: bool,
+) -> csgpix_scene::Result<Vec<Poly2>> {
+    csgpix_scene::check_xml_nesting(text, file)?;
     let opts = roxmltree::ParsingOptions {
         allow_dtd: true,
-        ..Default::default()
+        nodes_limit: csgpix_scene::MAX_XML_NODES,
     };
     let doc = roxmltree::Document::parse_with_options(text, opts)
         .map_err(|e| Error::invalid(format!("not a valid SVG file: {e}")))?;
@@ -77,7 +87,7 @@ pub(crate) fn parse(text: &str, dpi: f64, center: bool) -> csgpix_scene::Result<
     let page = Page::read(&root)?;
     let mut shapes = vec![];
     for child in root.children() {
-        walk(child, &IDENTITY, &mut shapes)?;
+        walk(child, &IDENTITY, &mut shapes, 1)?;
     }
     place(&page, shapes, dpi, center)
 }
@@ -269,9 +279,18 @@ fn walk(
     node: roxmltree::Node,
     m: &Affine,
     out: &mut Vec<Vec<Vec<DVec2>>>,
+    depth: usize,
 ) -> csgpix_scene::Result<()> {
     if !node.is_element() {
         return Ok(());
+    }
+    // The text is checked before parsing, but an entity of the DTD may nest more.
+    if depth > csgpix_scene::MAX_XML_DEPTH {
+        let msg = format!(
+            "elements nested more than {} deep: csgpix refuses them",
+            csgpix_scene::MAX_XML_DEPTH
+        );
+        return Err(Error::invalid(msg));
     }
     let ns = node.tag_name().namespace();
     let svg_ns = ns.is_none() || ns == Some("http://www.w3.org/2000/svg");
@@ -295,7 +314,7 @@ fn walk(
         "g" | "text" | "tspan" => {
             let m = own();
             for child in node.children() {
-                walk(child, &m, out)?;
+                walk(child, &m, out, depth + 1)?;
             }
             return Ok(());
         }
@@ -341,7 +360,7 @@ fn walk(
     // Children of a drawing element or of an element libsvg does not know are read with the
     // nearest group's transform.
     for child in node.children() {
-        walk(child, m, out)?;
+        walk(child, m, out, depth + 1)?;
     }
     Ok(())
 }
@@ -1259,20 +1278,57 @@ mod tests {
         assert!((a - 11.0).abs() < 1e-3, "{a}");
     }
 
+    /// 10,000 nested groups overflowed the stack (roxmltree and `walk` recurse per level):
+    /// refused at the first group past 256, as libxml2 refuses them for OpenSCAD; 250 are read.
+    /// Groups nested through a DTD entity, which the scan of the text does not see, are
+    /// refused by `walk`.
+    #[test]
+    fn deep_nesting_is_one_line_not_a_stack_overflow() {
+        let nested = |n: usize| {
+            format!(
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\">{}<rect \
+                 width=\"5\" height=\"5\"/>{}</svg>",
+                "<g>".repeat(n),
+                "</g>".repeat(n)
+            )
+        };
+        assert_eq!(parse(&nested(250), "t.svg", 72.0, false).unwrap().len(), 1);
+        let e = parse(&nested(10_000), "t.svg", 72.0, false)
+            .unwrap_err()
+            .to_string();
+        // The <svg> start tag is level 1: the 256th <g> is the first too deep.
+        let col = e.split(':').nth(2).unwrap().parse::<usize>().unwrap();
+        assert!(
+            e.starts_with("t.svg:1:") && e.contains("nested more than 256"),
+            "{e}"
+        );
+        assert_eq!(col, nested(0).find("<rect").unwrap() + 1 + 255 * 3);
+        assert_eq!(e.lines().count(), 1);
+        let g = "<g>".repeat(200) + &"</g>".repeat(200);
+        let dtd = format!(
+            "<!DOCTYPE svg [<!ENTITY deep \"{g}\">]><svg xmlns=\"http://www.w3.org/2000/svg\">\
+             {}&deep;{}</svg>",
+            "<g>".repeat(200),
+            "</g>".repeat(200)
+        );
+        let e = parse(&dtd, "t.svg", 72.0, false).unwrap_err().to_string();
+        assert!(e.contains("nested more than 256"), "{e}");
+    }
+
     #[test]
     fn page_scale_and_flip() {
         let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" width="20mm" height="10mm"
             viewBox="0 0 200 100"><rect x="10" y="10" width="50" height="20"/></svg>"#;
-        let shapes = parse(svg, 72.0, false).unwrap();
+        let shapes = parse(svg, "t.svg", 72.0, false).unwrap();
         let pts: Vec<DVec2> = shapes[0].points().collect();
         let lo = pts.iter().fold(DVec2::MAX, |a, b| a.min(*b));
         let hi = pts.iter().fold(DVec2::MIN, |a, b| a.max(*b));
         assert!((lo - DVec2::new(1.0, 7.0)).length() < 1e-9, "{lo}");
         assert!((hi - DVec2::new(6.0, 9.0)).length() < 1e-9, "{hi}");
-        let c = parse(svg, 72.0, true).unwrap();
+        let c = parse(svg, "t.svg", 72.0, true).unwrap();
         let lo = c[0].points().fold(DVec2::MAX, |a, b| a.min(b));
         assert!((lo - DVec2::new(-2.5, -1.0)).length() < 1e-9, "{lo}");
-        assert!(parse("<svg><svg/></svg>", 72.0, false).is_err());
-        assert!(parse("<svg viewBox='0 0 0 10'/>", 72.0, false).is_err());
+        assert!(parse("<svg><svg/></svg>", "t.svg", 72.0, false).is_err());
+        assert!(parse("<svg viewBox='0 0 0 10'/>", "t.svg", 72.0, false).is_err());
     }
 }

@@ -23,8 +23,9 @@
 //! other is refused when it is named, before anything is computed. A tree is synced to the
 //! disk before it replaces anything ([`sync_tree`]).
 //!
-//! SIGINT, SIGTERM and SIGHUP remove every staged file and directory before the process dies
-//! of the signal ([`install_signal_cleanup`]); they wait for a commit's renames, never for
+//! SIGINT, SIGTERM and SIGHUP remove every staged file and directory, end the child processes
+//! and remove the scratch files a run registered ([`scratch`], [`child`]), before the process
+//! dies of the signal ([`install_signal_cleanup`]); they wait for a commit's renames, never for
 //! an output written through. SIGKILL cannot be caught: what it leaves beside an output is
 //! cleared (or, for a replaced directory, restored) by the next run that names that output
 //! (`leftover`).
@@ -37,10 +38,12 @@ use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 mod error;
 mod leftover;
 mod oom;
+mod scratch;
 mod sparse;
 
 pub use error::{Error, IoError, OneLine, Refusal, Result};
 pub use oom::{fallible, one_arena_under_address_limit, try_zeroed, AllocFailed, ExitOnOom};
+pub use scratch::{child, scratch, Child, Scratch};
 pub use sparse::{Sparse, BLOCK};
 
 /// Staged paths a signal must remove: temporary files and directories not yet committed.
@@ -77,12 +80,15 @@ fn forget(path: &Path) {
     pending().retain(|p| p != path);
 }
 
-/// On SIGINT, SIGTERM or SIGHUP remove every staged output, then die of the signal as its
-/// default action would (the shell sees the signal). Call once, from `main`.
+/// On SIGINT, SIGTERM or SIGHUP remove every staged output, kill the registered children's
+/// process groups and remove the registered scratch paths ([`scratch`], [`child`]), then die
+/// of the signal as its default action would (the shell sees the signal). Call once, from
+/// `main`.
 pub fn install_signal_cleanup() -> Result<()> {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
     let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
         .map_err(|e| Error::Io(e.into()))?;
+    INSTALLED.store(true, std::sync::atomic::Ordering::SeqCst);
     std::thread::spawn(move || {
         if let Some(sig) = signals.forever().next() {
             // Held to the end: a commit in progress finishes first, and none starts after.
@@ -94,11 +100,21 @@ pub fn install_signal_cleanup() -> Result<()> {
             for p in staged.drain(..) {
                 remove_staged(&p);
             }
+            scratch::clear();
             let _ = signal_hook::low_level::emulate_default_handler(sig);
             std::process::exit(128 + sig);
         }
     });
     Ok(())
+}
+
+static INSTALLED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Whether [`install_signal_cleanup`] runs in this process: a child process may then lead its
+/// own process group, which the cleanup ends ([`child`]); otherwise it stays in the caller's,
+/// so that a terminal's Ctrl-C reaches it (a library user's process, Python).
+pub fn signal_cleanup_installed() -> bool {
+    INSTALLED.load(std::sync::atomic::Ordering::SeqCst)
 }
 
 /// Remove every staged output now, for a process about to end without unwinding (out of
@@ -786,9 +802,17 @@ fn existing_ancestor(p: &Path) -> Result<(PathBuf, String)> {
     }
 }
 
-/// Follow symlinks (dangling ones too, up to 40) to the path that is written.
+/// Follow symlinks (dangling ones too, up to 40) to the path that is written. A trailing
+/// slash after a symlink (`-o LINK/`) names the same link: the system would follow it to the
+/// directory, whose replacement (a store written whole) would then replace the link.
 fn resolve(path: &Path) -> Result<PathBuf> {
     let mut p = path.to_path_buf();
+    let bare: PathBuf = path.components().collect();
+    if bare.as_os_str() != p.as_os_str()
+        && std::fs::symlink_metadata(&bare).is_ok_and(|m| m.file_type().is_symlink())
+    {
+        p = bare;
+    }
     for _ in 0..40 {
         match std::fs::symlink_metadata(&p) {
             Ok(m) if m.file_type().is_symlink() => {
@@ -983,6 +1007,40 @@ mod tests {
         drop(outs);
         assert_eq!(names(dir.path()), ["photos.zarr", "v.zarr"]);
         assert_eq!(names(&other), ["a.jpg"]);
+    }
+
+    /// `-o LINK/` and `-o LINK` alike write the store the link names and keep the link (with
+    /// the slash the link was replaced by a directory).
+    #[cfg(unix)]
+    #[test]
+    fn a_store_through_a_symlink_keeps_it_with_or_without_a_trailing_slash() {
+        let dir = tempfile::tempdir().unwrap();
+        let store = dir.path().join("v.zarr");
+        std::fs::create_dir(&store).unwrap();
+        std::fs::write(store.join("zarr.json"), b"old").unwrap();
+        let link = dir.path().join("l.zarr");
+        std::os::unix::fs::symlink("v.zarr", &link).unwrap();
+        for (k, spelling) in [
+            format!("{}/", link.display()),
+            format!("{}//", link.display()),
+        ]
+        .into_iter()
+        .chain([link.display().to_string()])
+        .enumerate()
+        {
+            let mut outs = Outputs::new();
+            let t = outs
+                .tree("-o", Path::new(&spelling), &["zarr"], "zarr.json")
+                .unwrap();
+            let root = outs.stage_root(t).unwrap();
+            std::fs::write(root.join("zarr.json"), format!("new {k}")).unwrap();
+            outs.commit().unwrap();
+            let kept = std::fs::symlink_metadata(&link).unwrap().file_type();
+            assert!(kept.is_symlink(), "{spelling}: the link was replaced");
+            let got = std::fs::read_to_string(store.join("zarr.json")).unwrap();
+            assert_eq!(got, format!("new {k}"), "{spelling}");
+        }
+        assert_eq!(names(dir.path()), ["l.zarr", "v.zarr"]);
     }
 
     #[test]

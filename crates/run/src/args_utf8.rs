@@ -31,13 +31,48 @@ pub fn message(args: &[OsString]) -> Option<String> {
         token.to_str().is_none() && !arg.as_ref().is_some_and(reads_os_strings)
     })?;
     let name = arg.as_ref().map_or_else(|| "an argument".to_string(), show);
-    // The value without the flag it is attached to (`--res=`, `-o`), which is ASCII: its
-    // characters stand as they are in the quoted form.
-    let quoted = format!("{token:?}");
-    let value = format!("\"{}", &quoted[1 + flag_len..]);
+    // The value without the flag it is attached to (`--res=`, `-o`), which is ASCII.
+    let value = &token.as_encoded_bytes()[flag_len..];
     Some(format!(
-        "{name}: the value {value} is not UTF-8: csgpix reads it as text"
+        "{name}: the value {} is not UTF-8: csgpix reads it as text",
+        shown(value)
     ))
+}
+
+/// The most bytes of a value a message quotes: a longer one is shown around its first byte
+/// that is not UTF-8, so that a 100 kB argument is not a 100 kB line.
+const SHOWN: usize = 64;
+
+/// `value` quoted with its bytes that are not UTF-8 escaped (`"A\xFF"`); past [`SHOWN`]
+/// bytes, [`SHOWN`] of them around the first such byte, with the value's length and that
+/// byte's offset.
+fn shown(value: &[u8]) -> String {
+    let bad = std::str::from_utf8(value)
+        .err()
+        .map_or(0, |e| e.valid_up_to());
+    // As `OsStr`'s Debug writes it: text escaped as Rust does, other bytes as `\xFF`.
+    let quote = |b: &[u8]| {
+        let mut q = String::new();
+        for chunk in b.utf8_chunks() {
+            q.extend(chunk.valid().chars().flat_map(char::escape_debug));
+            for byte in chunk.invalid() {
+                q += &format!("\\x{byte:02X}");
+            }
+        }
+        q
+    };
+    if value.len() <= SHOWN {
+        return format!("\"{}\"", quote(value));
+    }
+    let start = bad.saturating_sub(SHOWN / 2).min(value.len() - SHOWN);
+    let (head, tail) = (start > 0, start + SHOWN < value.len());
+    format!(
+        "\"{}{}{}\" ({} bytes, the first not UTF-8 at byte {bad})",
+        if head { "…" } else { "" },
+        quote(&value[start..start + SHOWN]),
+        if tail { "…" } else { "" },
+        value.len()
+    )
 }
 
 /// Whether the argument takes its value as the system gives it (a path).

@@ -26,6 +26,7 @@ pub mod mesh;
 // The OFF, AMF and 3MF readers behind `trimesh::TriMesh::read`.
 mod amf;
 mod meshfile;
+pub use meshfile::{check_xml_nesting, MAX_XML_DEPTH, MAX_XML_NODES};
 mod meshread;
 pub mod nrrd;
 mod off;

@@ -22,7 +22,7 @@ pub(crate) struct Objects {
 /// The most nodes (elements, texts, comments) an XML mesh file may have: a DOM takes about
 /// 100 bytes per node, so this bounds the document at about 1.6 GB (an AMF of some two
 /// million triangles, a 3MF of some eight million).
-pub(crate) const MAX_XML_NODES: u32 = 1 << 24;
+pub const MAX_XML_NODES: u32 = 1 << 24;
 
 /// The union of the objects, as OpenSCAD 2021.01 forms it when a file has several
 /// (`import_amf.cc`, `AmfImporter::read`, and `import_3mf.cc`, `import_3mf`: a CGAL Nef union
@@ -110,15 +110,7 @@ impl<'a> Xml<'a> {
     /// refused, since its entities could hold nesting that scan does not see (mesh files
     /// have none).
     pub(crate) fn parse(text: &'a str, file: &'a str) -> Result<Xml<'a>> {
-        if let Some(at) = nesting(text.as_bytes(), MAX_XML_DEPTH) {
-            let good = &text.as_bytes()[..at];
-            let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
-            let last = good.rsplit(|&b| b == b'\n').next().unwrap_or_default();
-            let col = String::from_utf8_lossy(last).chars().count() + 1;
-            let msg =
-                format!("elements nested more than {MAX_XML_DEPTH} deep: csgpix refuses them");
-            return Err(Error::at(file, line, col, msg));
-        }
+        check_xml_nesting(text, file)?;
         let opts = roxmltree::ParsingOptions {
             allow_dtd: false,
             nodes_limit: MAX_XML_NODES,
@@ -143,8 +135,24 @@ impl<'a> Xml<'a> {
     }
 }
 
-/// How deep XML elements may nest (an AMF mesh needs 7).
-pub(crate) const MAX_XML_DEPTH: usize = 256;
+/// How deep XML elements may nest (an AMF mesh needs 7; libxml2, OpenSCAD's SVG parser,
+/// refuses deeper than 256 too: "Excessive depth in document").
+pub const MAX_XML_DEPTH: usize = 256;
+
+/// Elements nested deeper than [`MAX_XML_DEPTH`] in the XML `text` (named `file`) are one line
+/// at the first such start tag. roxmltree's tokenizer recurses once per nested element (10,000
+/// levels overflow the stack), so every XML reader measures the depth first.
+pub fn check_xml_nesting(text: &str, file: &str) -> Result<()> {
+    let Some(at) = nesting(text.as_bytes(), MAX_XML_DEPTH) else {
+        return Ok(());
+    };
+    let good = &text.as_bytes()[..at];
+    let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
+    let last = good.rsplit(|&b| b == b'\n').next().unwrap_or_default();
+    let col = String::from_utf8_lossy(last).chars().count() + 1;
+    let msg = format!("elements nested more than {MAX_XML_DEPTH} deep: csgpix refuses them");
+    Err(Error::at(file, line, col, msg))
+}
 
 /// The byte offset of the first start tag nested deeper than `max`, if any. Comments, CDATA,
 /// processing instructions and quoted attribute values are skipped as XML reads them, so on a
