@@ -946,7 +946,9 @@ fn scenes_thinner_than_a_voxel_are_voxelized() {
         .collect();
     let in_bar = |x: f64, len: f64| (0.0..=len).contains(&x);
     let in_slot = |x: f64| (0..40).any(|i| (slot(i)..=slot(i) + 0.5).contains(&x));
-    let scenes: [(&str, String, &dyn Fn(f64) -> bool); 3] = [
+    /// A scene: its name, its text, and which X its voxel centres are inside at.
+    type Thin<'a> = (&'a str, String, &'a dyn Fn(f64) -> bool);
+    let scenes: [Thin; 3] = [
         ("bar", "cube([50, 1, 1]);".into(), &|x| in_bar(x, 50.0)),
         ("sliver", "cube([50, 0.1, 0.1]);".into(), &|x| {
             in_bar(x, 50.0)
