@@ -328,6 +328,12 @@ pub fn read_png<R: BufRead + Seek>(
         Err(e) if limits(&e) => return Err(refused(e)),
         Err(_) => return Ok(cant()),
     };
+    // A palette of a broken number of entries: lodepng refuses it (its error 38), and the
+    // png crate's palette expansion panics on one that is not whole RGB triples.
+    let palette = reader.info().palette.as_deref().map(<[u8]>::len);
+    if palette.is_some_and(|n| n == 0 || n % 3 != 0 || n > 3 * 256) {
+        return Ok(cant());
+    }
     let Some(size) = reader.output_buffer_size() else {
         return Ok(cant());
     };
@@ -724,6 +730,15 @@ mod tests {
         }
         // Eight bytes or fewer that are not the signature: a .dat grid.
         assert_eq!(dat("\u{89}PN").warnings.len(), 0);
+        // A palette of 16 bytes (not whole RGB triples), found by the fuzzer: the png crate's
+        // palette expansion panicked; lodepng refuses it.
+        let root = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../fuzz/regressions/surface"
+        );
+        let bad = std::fs::read(format!("{root}/png-palette-of-16-bytes")).unwrap();
+        let s = png_heights(&bad, false);
+        assert_eq!(s.warnings, ["Can't read PNG image 'i.png'"]);
     }
 
     #[test]

@@ -41,6 +41,19 @@ fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
         "obj" => csgpix_scene::trimesh::TriMesh::parse(bytes, "f.obj", true)
             .err()
             .map(|e| e.to_string()),
+        "surface" => {
+            let invert = bytes.last().is_some_and(|b| b & 1 == 1);
+            let read = csgpix_openscad::surface::read_from(
+                std::io::Cursor::new(bytes),
+                "f",
+                invert,
+                1 << 20,
+            );
+            match read {
+                Err(e) => Some(e.to_string()),
+                Ok(s) => s.warnings.into_iter().find(|w| w.contains('\n')),
+            }
+        }
         other => panic!("no checks for fuzz target {other}"),
     }
 }
