@@ -48,8 +48,10 @@ pub(crate) fn cap(rings: &[Ring]) -> Vec<[Corner; 3]> {
         if outer.is_hole() {
             continue;
         }
+        let near = grown_box(&outer.points);
         let holes: Vec<usize> = (0..rings.len())
             .filter(|&h| !capped[h] && rings[h].depth == outer.depth + 1)
+            .filter(|&h| rings[h].points.first().is_some_and(|&p| near(p)))
             .filter(|&h| encloses(&outer.points, &rings[h].points))
             .collect();
         holes.iter().for_each(|&h| capped[h] = true);
@@ -270,6 +272,20 @@ pub(crate) fn encloses(outer: &[DVec2], inner: &[DVec2]) -> bool {
         .is_some_and(|p| inside(outer, p))
 }
 
+/// Whether a point may lie on or inside the outline: within its box grown by a millionth of
+/// its size. A point outside is neither on an edge (within [`on_segment`]'s rounding, a
+/// billionth of the edge) nor inside, so [`encloses`], which asks at inner's first point when
+/// that is off the boundary, is false for an outline whose first point is outside: the box
+/// spares the point-in-polygon test for every other outline of the shape (quadratic in the
+/// outlines: a 4,000-character text spent seconds there).
+fn grown_box(outline: &[DVec2]) -> impl Fn(DVec2) -> bool {
+    let lo = outline.iter().fold(DVec2::INFINITY, |a, &p| a.min(p));
+    let hi = outline.iter().fold(DVec2::NEG_INFINITY, |a, &p| a.max(p));
+    let grow = DVec2::splat((hi - lo).max_element() * 1e-6);
+    let (lo, hi) = (lo - grow, hi + grow);
+    move |p| p.cmpge(lo).all() && p.cmple(hi).all()
+}
+
 /// Whether p is a point of the outline or lies on one of its edges (within rounding).
 fn on_boundary(poly: &[DVec2], p: DVec2) -> bool {
     (0..poly.len()).any(|i| {
@@ -298,21 +314,28 @@ pub(crate) fn key(p: DVec3) -> [u64; 3] {
 /// The triangles turned so that, in each edge-connected part, every edge shared by exactly two
 /// triangles is run in opposite directions, and each part encloses positive volume (outward by
 /// the right-hand rule). An edge in more than two triangles does not connect parts.
+///
+/// Corners are numbered once (equal bits, one number) and each triangle's neighbours found by
+/// sorting its edges, so the walk touches a few words per triangle: a map from edge keys to
+/// triangle lists, the first form, cost a cache miss per probe and most of a long text's
+/// extrusion (1.6 million triangles).
 pub(crate) fn outward(tris: &mut [Tri3]) {
-    let mut by_edge: HashMap<([u64; 3], [u64; 3]), Vec<usize>> = HashMap::new();
-    for (t, tri) in tris.iter().enumerate() {
-        for k in 0..3 {
-            let (a, b) = (key(tri[k]), key(tri[(k + 1) % 3]));
-            by_edge.entry((a.min(b), a.max(b))).or_default().push(t);
-        }
-    }
+    let ids = corner_ids(tris);
+    let neighbours = neighbours(&ids);
+    let mut order = ids.clone();
     let mut seen = vec![false; tris.len()];
     for start in 0..tris.len() {
         if seen[start] {
             continue;
         }
         seen[start] = true;
-        let part = consistent_part(tris, start, &by_edge, &mut seen);
+        let part = consistent_part(&ids, &mut order, &neighbours, start, &mut seen);
+        // The part's triangles as turned: `order` follows the swaps.
+        for &t in &part {
+            if order[t] != ids[t] {
+                tris[t].swap(1, 2);
+            }
+        }
         let volume: f64 = part
             .iter()
             .map(|&t| tris[t][0].dot(tris[t][1].cross(tris[t][2])))
@@ -323,29 +346,66 @@ pub(crate) fn outward(tris: &mut [Tri3]) {
     }
 }
 
+/// Each triangle's corners as numbers, equal for corners equal bit for bit ([`key`]).
+fn corner_ids(tris: &[Tri3]) -> Vec<[u32; 3]> {
+    let mut number: HashMap<[u64; 3], u32> = HashMap::with_capacity(tris.len());
+    tris.iter()
+        .map(|t| {
+            t.map(|p| {
+                let next = number.len() as u32;
+                *number.entry(key(p)).or_insert(next)
+            })
+        })
+        .collect()
+}
+
+/// For each triangle and edge k (corners k, k + 1 as first given), the triangle across it when
+/// exactly two triangles share that edge, else `u32::MAX`.
+fn neighbours(ids: &[[u32; 3]]) -> Vec<[u32; 3]> {
+    let undirected = |a: u32, b: u32| (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+    let mut edges: Vec<(u64, u32)> = Vec::with_capacity(3 * ids.len());
+    for (t, c) in ids.iter().enumerate() {
+        for k in 0..3 {
+            edges.push((undirected(c[k], c[(k + 1) % 3]), (3 * t + k) as u32));
+        }
+    }
+    edges.sort_unstable();
+    let mut out = vec![[u32::MAX; 3]; ids.len()];
+    for run in edges.chunk_by(|x, y| x.0 == y.0) {
+        if let [(_, s), (_, r)] = run {
+            let (s, r) = (*s as usize, *r as usize);
+            out[s / 3][s % 3] = (r / 3) as u32;
+            out[r / 3][r % 3] = (s / 3) as u32;
+        }
+    }
+    out
+}
+
 /// The part reached from triangle `start` through edges of two triangles, each neighbour
-/// turned to run the shared edge against its predecessor.
+/// turned (its corners 1 and 2 swapped in `order`, which starts as `ids`) to run the shared
+/// edge against its predecessor.
 fn consistent_part(
-    tris: &mut [Tri3],
+    ids: &[[u32; 3]],
+    order: &mut [[u32; 3]],
+    neighbours: &[[u32; 3]],
     start: usize,
-    by_edge: &HashMap<([u64; 3], [u64; 3]), Vec<usize>>,
     seen: &mut [bool],
 ) -> Vec<usize> {
     let mut part = vec![start];
     let mut todo = vec![start];
     while let Some(t) = todo.pop() {
         for k in 0..3 {
-            let (a, b) = (key(tris[t][k]), key(tris[t][(k + 1) % 3]));
-            let [u, v] = by_edge[&(a.min(b), a.max(b))][..] else {
-                continue;
-            };
-            let n = if u == t { v } else { u };
-            if seen[n] {
+            let n = neighbours[t][k];
+            if n == u32::MAX || seen[n as usize] {
                 continue;
             }
+            let n = n as usize;
             seen[n] = true;
-            if runs(&tris[n], a, b) {
-                tris[n].swap(1, 2);
+            // The shared edge as t now runs it: t's corners k and k + 1 of its first order.
+            let edge = (ids[t][k], ids[t][(k + 1) % 3]);
+            let (a, b) = edge_as_run(&order[t], edge);
+            if runs(&order[n], a, b) {
+                order[n].swap(1, 2);
             }
             part.push(n);
             todo.push(n);
@@ -354,9 +414,18 @@ fn consistent_part(
     part
 }
 
+/// Corners `a`, `b` of triangle `t` in the direction `t` runs them.
+fn edge_as_run(t: &[u32; 3], (a, b): (u32, u32)) -> (u32, u32) {
+    if runs(t, a, b) {
+        (a, b)
+    } else {
+        (b, a)
+    }
+}
+
 /// Whether the triangle runs from corner `a` to corner `b` along one of its edges.
-fn runs(t: &Tri3, a: [u64; 3], b: [u64; 3]) -> bool {
-    (0..3).any(|k| key(t[k]) == a && key(t[(k + 1) % 3]) == b)
+fn runs(t: &[u32; 3], a: u32, b: u32) -> bool {
+    (0..3).any(|k| t[k] == a && t[(k + 1) % 3] == b)
 }
 
 #[cfg(test)]
