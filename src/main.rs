@@ -1,7 +1,7 @@
 //! The `csgpix` command line: clap parses the flags into a command of the run layer
 //! (`csgpix-run`), which runs it; this file turns its outcome into an exit status.
 
-use csgpix_run as cli;
+mod cli;
 
 use std::process::ExitCode;
 

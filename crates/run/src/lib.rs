@@ -29,20 +29,22 @@ macro_rules! from_value_name {
     )*};
 }
 
-pub mod args_utf8;
+#[macro_use]
+pub mod named;
 pub mod array_args;
 pub mod blist;
-pub mod completions;
 pub mod error;
 pub mod export_verilog;
 pub mod gen_vectors;
+pub mod grid;
 mod lib_errors;
-pub mod man;
 pub mod memory;
 
 pub mod phantom;
 pub mod plot;
 pub mod png;
+pub mod progress;
+pub mod read;
 pub mod read_args;
 pub mod render;
 pub mod requirements;
@@ -60,7 +62,7 @@ pub mod zarr;
 
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::ValueEnum;
 use csgpix_draw::project::View;
 use csgpix_draw::Model;
 use rtl_model::Equations;
@@ -68,53 +70,6 @@ use rtl_model::Equations;
 pub use error::{Error, Result};
 
 from_value_name!(ViewArg: "view", EquationsArg: "equations");
-
-#[derive(Parser, Debug)]
-#[command(
-    name = "csgpix",
-    version,
-    about = "Cycle-accurate simulator of the 2D CSG pixel-processor array (2005 thesis, Ch. 2)",
-    after_help = "Examples:\n  \
-        csgpix render vectors/thesis/cube.dl -o cube.png\n  \
-        csgpix verify-select --equations printed\n  \
-        csgpix gen-vectors --check\n  \
-        csgpix completions bash > ~/.local/share/bash-completion/completions/csgpix\n  \
-        csgpix man | man -l -"
-)]
-pub struct Cli {
-    #[command(subcommand)]
-    pub cmd: Cmd,
-}
-
-#[derive(Subcommand, Debug)]
-pub enum Cmd {
-    /// Write the golden select-logic vectors (Espresso PLA) and the derived equations.
-    GenVectors(gen_vectors::Args),
-    /// Check an equation set against every row of the golden vectors.
-    VerifySelect(verify_select::Args),
-    /// Write the Verilog twin of SGENE, its testbenches and Yosys scripts (docs/verilog.md).
-    ExportVerilog(export_verilog::Args),
-    /// Run display lists through the array and write the image.
-    Render(render::Args),
-    /// Voxelize a CSG scene slice by slice through the array; write a NRRD volume or an OME-Zarr store.
-    Voxelize(voxelize::Args),
-    /// Carve (or add) with a spherical tool along a path in the hashed octree; write the mesh.
-    Sculpt(sculpt::Args),
-    /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
-    Blist(blist::Args),
-    /// What a scene needs of the hardware: panels, slabs, word, stack, label, and the clocks.
-    Requirements(requirements::Args),
-    /// Throughput: eq. 2.3-2.5 and 5.1, Table 2.1, and a scene's frame rate on panels (§2.5).
-    Throughput(throughput::Args),
-    /// Sweep depth-word bits, tessellation, slabs and model; error against cost as CSV and PNG.
-    Study(study::Args),
-    /// Write the project's CT-head phantom (Figure 5.6's dataset) as NRRD.
-    Phantom(phantom::Args),
-    /// Print the completion script of a shell (bash, zsh, fish, elvish, powershell).
-    Completions(completions::Args),
-    /// Print the manual page (roff).
-    Man(man::Args),
-}
 
 /// `--model`: the names of [`Model`], each with its summary in `--help`.
 pub fn model_parser() -> impl clap::builder::TypedValueParser<Value = Model> {
@@ -140,26 +95,6 @@ impl From<EquationsArg> for Equations {
             EquationsArg::Printed => Equations::Printed,
         }
     }
-}
-
-/// Run the command `cli` names: its exit code, or the error that stopped it.
-pub fn run(cli: Cli) -> Result<ExitCode> {
-    let result = match cli.cmd {
-        Cmd::GenVectors(a) => gen_vectors::run(a),
-        Cmd::Phantom(a) => phantom::run(a),
-        Cmd::VerifySelect(a) => verify_select::run(a),
-        Cmd::ExportVerilog(a) => export_verilog::run(a),
-        Cmd::Render(a) => render::run(a),
-        Cmd::Voxelize(a) => voxelize::run(a),
-        Cmd::Sculpt(a) => sculpt::run(a),
-        Cmd::Blist(a) => blist::run(a),
-        Cmd::Requirements(a) => requirements::run(a),
-        Cmd::Throughput(a) => throughput::run(a),
-        Cmd::Study(a) => study::run(a),
-        Cmd::Completions(a) => completions::run(a),
-        Cmd::Man(a) => man::run(a),
-    };
-    result.map_err(lib_errors::openscad_timeout)
 }
 
 /// A view of a `.csg` scene on the array (`render`, `throughput`, `requirements`).

@@ -30,17 +30,6 @@ pub fn load(e: csgpix_draw::scenes::LoadError) -> Error {
     }
 }
 
-/// openscad killed at its time limit, in any command: the option that sets the limit named
-/// after the message (`FILE.scad: openscad did not finish within 300 s (--openscad-timeout)`).
-pub fn openscad_timeout(e: Error) -> Error {
-    match e.scene().map(csgpix_scene::Error::kind) {
-        Some(csgpix_scene::Kind::TimedOut) => {
-            Error::options("--openscad-timeout", format!("{e} (--openscad-timeout)"))
-        }
-        _ => e,
-    }
-}
-
 /// A voxel store's or sculpting's error; a store over its budget names `--res` and
 /// `--max-memory`, a bad tool `--tool`, a bad stiffness `--stiffness`.
 pub fn sculpt(e: SculptError) -> Error {

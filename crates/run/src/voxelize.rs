@@ -23,8 +23,8 @@ use csgpix_voxel::sampled::{
 };
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{
-    voxelize, voxelize_slabs, voxelize_streaming, BindingProblem, Error as VoxelError, Grid,
-    GridSpec, Route, Sampling, Slicer, SlicerOptions, Volume, Work,
+    voxelize, voxelize_slabs, voxelize_streaming, BindingProblem, Error as VoxelError, Grid, Route,
+    Sampling, Slicer, SlicerOptions, Volume, Work,
 };
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -34,6 +34,7 @@ use serde::Serialize;
 use super::array_args::parse_word;
 use super::lib_errors;
 use super::EquationsArg;
+pub use crate::grid::{grid_spec, parse_bounds, parse_res, Resolution};
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:\n  \
@@ -215,20 +216,6 @@ impl GridArgs {
     pub fn any(&self) -> bool {
         self.voxel.is_some() || self.pad > 0 || self.bounds.is_some()
     }
-}
-
-/// The grid spec of cubic voxels of side `voxel` if given, else of `res` (`--res`), with
-/// `pad` empty voxels on every side (`--pad`); the Python binding's `res`, `voxel`, `pad`.
-pub fn grid_spec(res: Option<Resolution>, voxel: Option<f64>, pad: usize) -> GridSpec {
-    let spec = match (voxel, res) {
-        (Some(v), _) => GridSpec {
-            voxel: Some(v),
-            ..GridSpec::default()
-        },
-        (None, Some(r)) => r.spec(),
-        (None, None) => GridSpec::default(),
-    };
-    GridSpec { pad, ..spec }
 }
 
 /// `--sampling`, shared with `sculpt`.
@@ -458,53 +445,6 @@ pub fn parse_panel(s: &str) -> crate::error::Parsed<PanelArg> {
     Ok(PanelArg(Some([n(x)?, n(y)?])))
 }
 
-/// `--res`: how many voxels, as binvox, OpenVDB and trimesh count them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Resolution {
-    /// `N`: N cubic voxels along the bounds' longest side, the other sides covered by as
-    /// many (the grid centred on the bounds); a cube's bounds get N×N×N over themselves.
-    Longest(usize),
-    /// `NXxNYxNZ`: voxels along X, Y and Z over the bounds (voxels need not be cubic).
-    Axes([usize; 3]),
-}
-
-impl Resolution {
-    /// The grid spec of this resolution (before `--pad`).
-    pub fn spec(self) -> GridSpec {
-        match self {
-            Resolution::Longest(n) => GridSpec {
-                longest: Some(n),
-                ..GridSpec::default()
-            },
-            Resolution::Axes(dims) => GridSpec {
-                res: Some(dims),
-                ..GridSpec::default()
-            },
-        }
-    }
-}
-
-/// `--res`: N (the longest side) or NXxNYxNZ, each 1..=65536.
-pub fn parse_res(s: &str) -> crate::error::Parsed<Resolution> {
-    let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
-    let parts: Vec<&str> = s.split(['x', 'X']).collect();
-    let res = match parts[..] {
-        [a] => Resolution::Longest(n(a)?),
-        [a, b, c] => Resolution::Axes([n(a)?, n(b)?, n(c)?]),
-        _ => return Err("expected N or NXxNYxNZ, e.g. 64 or 64x64x32".into()),
-    };
-    let sides = match res {
-        Resolution::Longest(n) => vec![n],
-        Resolution::Axes(dims) => dims.to_vec(),
-    };
-    if sides.iter().any(|&d| d == 0 || d > 65536) {
-        return Err(crate::error::BadValue(format!(
-            "{s}: each side must be 1..=65536"
-        )));
-    }
-    Ok(res)
-}
-
 /// `--chunk`: N (a cube) or XxYxZ, each side 1..=65536; held Z, Y, X.
 pub fn parse_chunk(s: &str) -> crate::error::Parsed<[usize; 3]> {
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
@@ -537,34 +477,6 @@ pub fn parse_shard(s: &str) -> crate::error::Parsed<usize> {
             "{s:?}: {e}; expected N or `none`"
         ))),
     }
-}
-
-pub fn parse_bounds(s: &str) -> crate::error::Parsed<(DVec3, DVec3)> {
-    let v: Vec<f64> = s
-        .split(',')
-        .map(|x| x.trim().parse::<f64>().map_err(|e| format!("{x:?}: {e}")))
-        .collect::<Result<_, _>>()?;
-    let [x0, y0, z0, x1, y1, z1] = v[..] else {
-        return Err("expected X0,Y0,Z0,X1,Y1,Z1".into());
-    };
-    let (lo, hi) = (DVec3::new(x0, y0, z0), DVec3::new(x1, y1, z1));
-    let extent = hi - lo;
-    if !(lo.is_finite() && hi.is_finite()) {
-        return Err("every bound must be a finite number".into());
-    }
-    if !extent.is_finite() {
-        return Err(crate::error::BadValue(format!(
-            "the extent {extent} overflows: bounds must be within ±1e307"
-        )));
-    }
-    if extent.min_element() <= 0.0 {
-        return Err("each X1, Y1, Z1 must be greater than its X0, Y0, Z0".into());
-    }
-    let (side, min) = (extent.min_element(), csgpix_scene::grid::MIN_EXTENT);
-    if side < min {
-        return Err(format!("degenerate extent: a side is {side:e}, under {min:e}").into());
-    }
-    Ok((lo, hi))
 }
 
 #[derive(Serialize)]

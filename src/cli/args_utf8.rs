@@ -24,7 +24,7 @@ use clap::{Arg, Command, CommandFactory};
 /// assert!(m.starts_with(r#"EXPR: the value "A\xFF" is not UTF-8"#), "{m}");
 /// ```
 pub fn message(args: &[OsString]) -> Option<String> {
-    let mut root = crate::Cli::command();
+    let mut root = super::Cli::command();
     root.build();
     let scan = Scan::of(&root, args);
     let (arg, token, flag_len) = scan.owners.into_iter().find(|(arg, token, _)| {

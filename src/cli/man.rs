@@ -1,7 +1,6 @@
 //! `csgpix man`: the manual page (roff, section 1) of the command and its subcommands, from
 //! the same clap definition as the parser and `--help`, so it cannot fall behind.
 
-use std::io::Write;
 use std::process::ExitCode;
 
 use clap::CommandFactory;
@@ -12,19 +11,14 @@ use clap::CommandFactory;
     csgpix man > ~/.local/share/man/man1/csgpix.1")]
 pub struct Args {}
 
-pub fn run(_: Args) -> crate::Result<ExitCode> {
+pub fn run(_: Args) -> csgpix_run::Result<ExitCode> {
     let mut page = Vec::new();
     clap_mangen::Man::new(super::Cli::command())
         .render(&mut page)
-        .map_err(|source| crate::Error::Io {
+        .map_err(|source| csgpix_run::Error::Io {
             path: "man page".into(),
             source,
         })?;
-    std::io::stdout()
-        .write_all(&page)
-        .map_err(|source| crate::Error::Io {
-            path: "standard output".into(),
-            source,
-        })?;
+    super::common::stdout(&page)?;
     Ok(ExitCode::SUCCESS)
 }

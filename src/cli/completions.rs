@@ -1,7 +1,6 @@
 //! `csgpix completions SHELL`: the shell's completion script for every subcommand and option,
 //! generated from the same clap definition as the parser, so it cannot fall behind.
 
-use std::io::Write;
 use std::process::ExitCode;
 
 use clap::CommandFactory;
@@ -18,17 +17,12 @@ pub struct Args {
     shell: Shell,
 }
 
-pub fn run(a: Args) -> crate::Result<ExitCode> {
+pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
     let mut cmd = super::Cli::command();
     // Into memory first: clap_complete panics on a failed write, and a closed pipe
     // (`| head`) is an error to report, not a crash.
     let mut script = Vec::new();
     clap_complete::generate(a.shell, &mut cmd, "csgpix", &mut script);
-    std::io::stdout()
-        .write_all(&script)
-        .map_err(|source| crate::Error::Io {
-            path: "standard output".into(),
-            source,
-        })?;
+    super::common::stdout(&script)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -1,0 +1,44 @@
+//! How every job that reads a scene reads it, as data: openscad's time limit (a `.scad`
+//! file's export to CSG, `--fallback openscad`'s meshes) and strictness (OpenSCAD's
+//! warnings as refusals); the command line's `--openscad-timeout` and `--strict`.
+
+use std::time::Duration;
+
+use serde::{Deserialize, Serialize};
+
+/// The reading settings of a job. `Default` is the documented defaults: openscad's
+/// default time limit, not strict.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ReadSettings {
+    /// Seconds each openscad run may take before it is killed and the job fails; 0 for no
+    /// limit.
+    pub openscad_timeout: u64,
+    /// Refuse the scene at its first warning instead of going on as OpenSCAD does.
+    pub strict: bool,
+}
+
+impl Default for ReadSettings {
+    fn default() -> Self {
+        ReadSettings {
+            openscad_timeout: csgpix_openscad::DEFAULT_OPENSCAD_TIMEOUT.as_secs(),
+            strict: false,
+        }
+    }
+}
+
+impl ReadSettings {
+    /// The time limit: None for 0.
+    pub fn limit(self) -> Option<Duration> {
+        (self.openscad_timeout > 0).then(|| Duration::from_secs(self.openscad_timeout))
+    }
+
+    /// The reader's options with this limit and strictness, the others their defaults.
+    pub fn read_options(self) -> csgpix_openscad::ReadOptions {
+        csgpix_openscad::ReadOptions {
+            openscad_timeout: self.limit(),
+            strict: self.strict,
+            ..Default::default()
+        }
+    }
+}

@@ -1,0 +1,137 @@
+//! What several commands' flags share: value parsers of named options, the reading flags
+//! (`--openscad-timeout`, `--strict`), `--max-memory`, the grid flags, standard output.
+
+use std::io::Write;
+
+use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+use csgpix_run::grid::{parse_bounds, GridOptions, Resolution};
+use csgpix_run::memory::{default_mib, Cap, Limit, MAX_MIB};
+use csgpix_run::named::Named;
+use csgpix_run::read::ReadSettings;
+use csgpix_voxel::Sampling;
+
+/// The value parser of a [`Named`] option: its names (and aliases) as clap's possible
+/// values, each with its help, so `--help` lists them and completions offer them.
+pub fn named<T: Named + Clone>() -> impl TypedValueParser<Value = T> {
+    let values = T::VALUES.iter().map(|&(v, name, help)| {
+        let aliases = T::ALIASES.iter().filter(move |a| a.1 == v).map(|a| a.0);
+        PossibleValue::new(name).help(help).aliases(aliases)
+    });
+    PossibleValuesParser::new(values)
+        .map(|s| csgpix_run::named::parse::<T>(&s).expect("a possible value"))
+}
+
+/// `--openscad-timeout` and `--strict`, flattened into each command that reads scenes.
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct ReadArgs {
+    /// Seconds each openscad run may take (a `.scad` file's export, a `--fallback openscad`
+    /// mesh) before it is killed and the command fails (exit 2); 0 for no limit. Without a
+    /// limit a `.scad` that keeps openscad busy would hold the command for as long.
+    #[arg(long = "openscad-timeout", value_name = "SECONDS",
+          default_value_t = csgpix_openscad::DEFAULT_OPENSCAD_TIMEOUT.as_secs())]
+    pub seconds: u64,
+    /// Refuse the scene at its first warning (exit 2, nothing written) instead of doing what
+    /// OpenSCAD does and going on: a colour out of range, a singular transform, an import of
+    /// a missing file, a child of the other dimension, a font substituted, an open mesh, …
+    /// (docs/volume-scenes.md lists them).
+    #[arg(long)]
+    pub strict: bool,
+}
+
+impl From<ReadArgs> for ReadSettings {
+    fn from(a: ReadArgs) -> ReadSettings {
+        ReadSettings {
+            openscad_timeout: a.seconds,
+            strict: a.strict,
+        }
+    }
+}
+
+/// `--max-memory`, flattened into each command that allocates in proportion to its input.
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct MaxMemory {
+    /// Refuse a run whose memory estimate is over this many MiB, before allocating. The
+    /// default is the memory available now (MemAvailable), capped by what the process may
+    /// hold: the address-space and data limits (`ulimit -v`, `ulimit -d`) less the process's
+    /// own code, stacks and buffers, and the room left in its cgroup. A larger value is
+    /// lowered to that cap, with a note; at most 2^43.
+    #[arg(long = "max-memory", value_name = "MIB", default_value_t = default_mib(),
+          value_parser = parse_max_memory)]
+    pub mib: u64,
+}
+
+impl MaxMemory {
+    /// The limit, named as the flag.
+    pub fn limit(&self) -> Limit {
+        Limit {
+            mib: self.mib,
+            name: "--max-memory",
+        }
+    }
+}
+
+/// `--max-memory MIB`: 1 to [`MAX_MIB`], lowered to what the process may hold ([`Cap`]) with
+/// a one-line note on standard error, so that a limit above the address space cannot let a
+/// run start that the system will not let finish.
+fn parse_max_memory(s: &str) -> csgpix_run::error::Parsed<u64> {
+    let mib: u64 = s
+        .parse()
+        .map_err(|_| format!("{s:?} is not a whole number of MiB"))?;
+    if !(1..=MAX_MIB).contains(&mib) {
+        return Err(format!("{mib} is not in 1..={MAX_MIB}").into());
+    }
+    Ok(match Cap::probe() {
+        Some(cap) if mib > cap.mib => {
+            eprintln!(
+                "csgpix: note: --max-memory {mib} is above what this process may hold ({}): \
+                 {} MiB used",
+                cap.why, cap.mib
+            );
+            cap.mib
+        }
+        _ => mib,
+    })
+}
+
+/// The grid and sampling flags `voxelize` and `sculpt` share (beside their own `--res`).
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct GridArgs {
+    /// Instead of --res: cubic voxels of this side (scene units), as many as cover the
+    /// bounds, the grid centred on them.
+    #[arg(long, conflicts_with = "res")]
+    pub voxel: Option<f64>,
+    /// Add this many empty voxels on every side of the grid (the voxel size is kept).
+    #[arg(long, default_value_t = 0)]
+    pub pad: usize,
+    /// `centre`: a voxel is inside when its centre is inside the solid (binvox, OpenVDB);
+    /// `slab`: when the segment through its centre along Z meets each primitive (the thesis's
+    /// §4.4 slab, which dilates subtracted solids). docs/voxelization.md.
+    #[arg(long, value_parser = named::<Sampling>(), default_value = "centre")]
+    pub sampling: Sampling,
+    /// Region to voxelize, X0,Y0,Z0,X1,Y1,Z1 in scene units (default: the scene's bounds).
+    #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
+    pub bounds: Option<(glam::DVec3, glam::DVec3)>,
+}
+
+impl GridArgs {
+    /// The job's grid options with the command's resolution `res`.
+    pub fn options(&self, res: Option<Resolution>) -> GridOptions {
+        GridOptions {
+            res,
+            voxel: self.voxel,
+            pad: self.pad,
+            sampling: self.sampling,
+            bounds: self.bounds.map(|(a, b)| (a.to_array(), b.to_array())),
+        }
+    }
+}
+
+/// Write `bytes` to standard output; a closed pipe (`| head`) is an error to report.
+pub fn stdout(bytes: &[u8]) -> csgpix_run::Result<()> {
+    std::io::stdout()
+        .write_all(bytes)
+        .map_err(|source| csgpix_run::Error::Io {
+            path: "standard output".into(),
+            source,
+        })
+}

@@ -1,0 +1,116 @@
+//! The command line of csgpix: clap's flags become a job of the run layer (`csgpix-run`),
+//! the job runs with progress bars ([`progress::Bars`]), and its report (data) is printed
+//! as text or `--json`. Nothing of a pipeline is assembled here: every command module holds
+//! its flags (`Args`), their conversion to the job, and the printing of the report.
+
+// TRANSITION (issue 39): until every command is a job some helpers are unused.
+#![allow(dead_code)]
+
+pub mod args_utf8;
+mod blist;
+mod common;
+mod completions;
+mod man;
+pub mod progress;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use csgpix_run as run;
+
+#[allow(unused_imports)] // the command modules use it as they become jobs
+pub use common::{named, GridArgs, MaxMemory, ReadArgs};
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "csgpix",
+    version,
+    about = "Cycle-accurate simulator of the 2D CSG pixel-processor array (2005 thesis, Ch. 2)",
+    after_help = "Examples:\n  \
+        csgpix render vectors/thesis/cube.dl -o cube.png\n  \
+        csgpix verify-select --equations printed\n  \
+        csgpix gen-vectors --check\n  \
+        csgpix completions bash > ~/.local/share/bash-completion/completions/csgpix\n  \
+        csgpix man | man -l -"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub cmd: Cmd,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Cmd {
+    /// Write the golden select-logic vectors (Espresso PLA) and the derived equations.
+    GenVectors(run::gen_vectors::Args),
+    /// Check an equation set against every row of the golden vectors.
+    VerifySelect(run::verify_select::Args),
+    /// Write the Verilog twin of SGENE, its testbenches and Yosys scripts (docs/verilog.md).
+    ExportVerilog(run::export_verilog::Args),
+    /// Run display lists through the array and write the image.
+    Render(run::render::Args),
+    /// Voxelize a CSG scene slice by slice through the array; write a NRRD volume or an OME-Zarr store.
+    Voxelize(run::voxelize::Args),
+    /// Carve (or add) with a spherical tool along a path in the hashed octree; write the mesh.
+    Sculpt(run::sculpt::Args),
+    /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
+    Blist(blist::Args),
+    /// What a scene needs of the hardware: panels, slabs, word, stack, label, and the clocks.
+    Requirements(run::requirements::Args),
+    /// Throughput: eq. 2.3-2.5 and 5.1, Table 2.1, and a scene's frame rate on panels (§2.5).
+    Throughput(run::throughput::Args),
+    /// Sweep depth-word bits, tessellation, slabs and model; error against cost as CSV and PNG.
+    Study(run::study::Args),
+    /// Write the project's CT-head phantom (Figure 5.6's dataset) as NRRD.
+    Phantom(run::phantom::Args),
+    /// Print the completion script of a shell (bash, zsh, fish, elvish, powershell).
+    Completions(completions::Args),
+    /// Print the manual page (roff).
+    Man(man::Args),
+}
+
+/// Run the command `cli` names: its exit code, or the error that stopped it.
+pub fn run(cli: Cli) -> run::Result<ExitCode> {
+    let result = match cli.cmd {
+        Cmd::GenVectors(a) => run::gen_vectors::run(a),
+        Cmd::Phantom(a) => run::phantom::run(a),
+        Cmd::VerifySelect(a) => run::verify_select::run(a),
+        Cmd::ExportVerilog(a) => run::export_verilog::run(a),
+        Cmd::Render(a) => run::render::run(a),
+        Cmd::Voxelize(a) => run::voxelize::run(a),
+        Cmd::Sculpt(a) => run::sculpt::run(a),
+        Cmd::Blist(a) => blist::run(a),
+        Cmd::Requirements(a) => run::requirements::run(a),
+        Cmd::Throughput(a) => run::throughput::run(a),
+        Cmd::Study(a) => run::study::run(a),
+        Cmd::Completions(a) => completions::run(a),
+        Cmd::Man(a) => man::run(a),
+    };
+    result.map_err(openscad_timeout)
+}
+
+/// openscad killed at its time limit, in any command: the option that sets the limit named
+/// after the message (`FILE.scad: openscad did not finish within 300 s (--openscad-timeout)`).
+fn openscad_timeout(e: run::Error) -> run::Error {
+    match e.scene().map(csgpix_scene::Error::kind) {
+        Some(csgpix_scene::Kind::TimedOut) => {
+            run::Error::options("--openscad-timeout", format!("{e} (--openscad-timeout)"))
+        }
+        _ => e,
+    }
+}
+
+/// A command's closing line: on standard output, or on standard error when an output goes
+/// to standard output (`-o -`).
+pub fn report_line(line: &str, to_stderr: bool) {
+    if to_stderr {
+        eprintln!("{line}");
+    } else {
+        println!("{line}");
+    }
+}
+
+/// A report as `--json` prints it: pretty, one object.
+pub fn print_json<T: serde::Serialize>(report: &T) -> run::Result<()> {
+    println!("{}", serde_json::to_string_pretty(report)?);
+    Ok(())
+}
