@@ -17,7 +17,7 @@
 //! | `csgpix-voxel` | [`voxel`] | slices from the array, masks, the Blist and baseline evaluators, requirements |
 //! | `csgpix-sculpt` | [`sculpt`] | the hashed octree of seed 000, its baselines, Marching Cubes, sculpting |
 //! | `csgpix-zarr` | `zarr` (feature `zarr`, default) | volumes as OME-Zarr 0.5 stores, written a chunk row at a time |
-//! | `csgpix-run` | [`run`] | every command's flags, run and report; the study, charts, PNG output, stores fed from the voxelizer |
+//! | `csgpix-run` | [`run`] | one job per command as plain data (`estimate`, `run` with a `Progress`, a report as data), shared by the binary and Python; the memory limit, stores fed from the voxelizer |
 
 pub use csgpix_draw as draw;
 pub use csgpix_openscad as openscad;
