@@ -108,7 +108,10 @@ impl ExportVerilogJob {
         if !self.scene.is_empty() {
             return scene(self).map(ExportVerilogReport::Scene);
         }
-        let out = self.out.as_deref().unwrap_or(Path::new("rtl-model/verilog"));
+        let out = self
+            .out
+            .as_deref()
+            .unwrap_or(Path::new("rtl-model/verilog"));
         let files = rtl_model::verilog::files()?;
         Ok(ExportVerilogReport::Generated(write_generated(
             &files, out, self.check,

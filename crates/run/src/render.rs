@@ -126,7 +126,13 @@ impl RenderJob {
             .max_memory
             .check(need, "this render", "lower --size")?;
         let options = self.read.read_options();
-        let (scene, ops) = compile_with(&self.scenes, self.clip.as_deref(), self.view, &cfg, &options)?;
+        let (scene, ops) = compile_with(
+            &self.scenes,
+            self.clip.as_deref(),
+            self.view,
+            &cfg,
+            &options,
+        )?;
         if let Some(csg) = &scene.csg {
             warn_all(progress, &csg.warnings);
         }

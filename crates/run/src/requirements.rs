@@ -180,7 +180,11 @@ impl RequirementsJob {
     }
 }
 
-fn analyse(a: &RequirementsJob, scene: &CsgScene, slicer: &Slicer) -> crate::Result<RequirementsReport> {
+fn analyse(
+    a: &RequirementsJob,
+    scene: &CsgScene,
+    slicer: &Slicer,
+) -> crate::Result<RequirementsReport> {
     let [w, h, nz] = slicer.grid.dims;
     let panel = a.panel.unwrap_or([w, h]);
     let fps = footprints(slicer)?;

@@ -242,7 +242,9 @@ impl ThroughputJob {
             surfaces_per_primitive: self.surfaces,
             slices_per_second_one_array: slices_per_second(surfaces_per_second(&hw), ns),
             scene,
-            area: self.area.map(|budget| area_report(budget, self.lut, panels)),
+            area: self
+                .area
+                .map(|budget| area_report(budget, self.lut, panels)),
             fpga,
         }
     }
@@ -322,7 +324,8 @@ fn scene_report(
     let set = Equations::Derived.set();
     let counted = count_cycles(&set);
     let simulated = |cfg: &ArrayConfig, ops: &[Op]| {
-        simulate(cfg, &set, ops, a.max_memory).map_err(|e| csgpix_draw::Error::Counter(e.to_string()))
+        simulate(cfg, &set, ops, a.max_memory)
+            .map_err(|e| csgpix_draw::Error::Counter(e.to_string()))
     };
     let count: &csgpix_draw::panels::Counter = if a.simulate { &simulated } else { &counted };
     let all = vec![true; ps.lists.len()];
