@@ -17,8 +17,9 @@ use rtl_model::{ArrayConfig, Equations};
 use crate::errors::{run, text};
 use crate::voxel::word_format;
 use csgpix_run::array_args::array_config;
-use csgpix_run::error::BadValue;
-use csgpix_run::{EquationsArg, ViewArg};
+use csgpix_run::named::parse;
+use csgpix_run::progress::Quiet;
+use csgpix_run::verify_select::VerifySelectJob;
 
 /// The array's program for a scene, and the configuration it was compiled for.
 #[pyclass(module = "csgpix._native", frozen)]
@@ -73,8 +74,7 @@ impl Program {
 
 /// `derived` or `printed` select equations (§2.3.3), as `--equations`.
 fn equations_arg(name: &str) -> PyResult<Equations> {
-    let e: EquationsArg = name.parse().map_err(|e: BadValue| text(e.to_string()))?;
-    Ok(e.into())
+    parse::<Equations>(name).map_err(|e| text(e.to_string()))
 }
 
 /// The set of [`equations_arg`] `name`.
@@ -83,8 +83,7 @@ pub fn equation_set(name: &str) -> PyResult<rtl_model::EquationSet> {
 }
 
 fn view(name: &str) -> PyResult<View> {
-    let v: ViewArg = name.parse().map_err(|e: BadValue| text(e.to_string()))?;
-    Ok(v.into())
+    parse::<View>(name).map_err(|e| text(e.to_string()))
 }
 
 /// The scene's paths: one path or a list of them.
@@ -143,7 +142,7 @@ pub fn render<'py>(
     let set = equation_set(equations)?;
     let (p, cfg) = (program, program.cfg);
     let drawn = py
-        .detach(|| csgpix_run::render::draw(&p.scene, &p.ops, &cfg, model, set))
+        .detach(|| csgpix_run::render::draw(&p.scene, &p.ops, &cfg, model, set, &Quiet))
         .map_err(run)?;
     let codes = drawn.colour.iter().map(|&c| c as u8).collect();
     let cycles = drawn.cycles;
@@ -170,8 +169,11 @@ pub fn verify_select<'py>(
     equations: &str,
     vectors: Option<PathBuf>,
 ) -> PyResult<Vec<Bound<'py, PyDict>>> {
-    let reports =
-        csgpix_run::verify_select::verify(equations_arg(equations)?, &vectors).map_err(run)?;
+    let job = VerifySelectJob {
+        equations: equations_arg(equations)?,
+        vectors,
+    };
+    let reports = job.run(&Quiet).map_err(run)?.signals;
     let mut out = vec![];
     {
         for r in reports {

@@ -7,11 +7,18 @@
 #![allow(dead_code)]
 
 pub mod args_utf8;
+mod array;
 mod blist;
 mod common;
 mod completions;
+mod export_verilog;
+mod gen_vectors;
 mod man;
 pub mod progress;
+mod render;
+mod requirements;
+mod throughput;
+mod verify_select;
 
 use std::process::ExitCode;
 
@@ -41,13 +48,13 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Cmd {
     /// Write the golden select-logic vectors (Espresso PLA) and the derived equations.
-    GenVectors(run::gen_vectors::Args),
+    GenVectors(gen_vectors::Args),
     /// Check an equation set against every row of the golden vectors.
-    VerifySelect(run::verify_select::Args),
+    VerifySelect(verify_select::Args),
     /// Write the Verilog twin of SGENE, its testbenches and Yosys scripts (docs/verilog.md).
-    ExportVerilog(run::export_verilog::Args),
+    ExportVerilog(export_verilog::Args),
     /// Run display lists through the array and write the image.
-    Render(run::render::Args),
+    Render(render::Args),
     /// Voxelize a CSG scene slice by slice through the array; write a NRRD volume or an OME-Zarr store.
     Voxelize(run::voxelize::Args),
     /// Carve (or add) with a spherical tool along a path in the hashed octree; write the mesh.
@@ -55,9 +62,9 @@ pub enum Cmd {
     /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
     Blist(blist::Args),
     /// What a scene needs of the hardware: panels, slabs, word, stack, label, and the clocks.
-    Requirements(run::requirements::Args),
+    Requirements(requirements::Args),
     /// Throughput: eq. 2.3-2.5 and 5.1, Table 2.1, and a scene's frame rate on panels (§2.5).
-    Throughput(run::throughput::Args),
+    Throughput(throughput::Args),
     /// Sweep depth-word bits, tessellation, slabs and model; error against cost as CSV and PNG.
     Study(run::study::Args),
     /// Write the project's CT-head phantom (Figure 5.6's dataset) as NRRD.
@@ -71,16 +78,16 @@ pub enum Cmd {
 /// Run the command `cli` names: its exit code, or the error that stopped it.
 pub fn run(cli: Cli) -> run::Result<ExitCode> {
     let result = match cli.cmd {
-        Cmd::GenVectors(a) => run::gen_vectors::run(a),
+        Cmd::GenVectors(a) => gen_vectors::run(a),
         Cmd::Phantom(a) => run::phantom::run(a),
-        Cmd::VerifySelect(a) => run::verify_select::run(a),
-        Cmd::ExportVerilog(a) => run::export_verilog::run(a),
-        Cmd::Render(a) => run::render::run(a),
+        Cmd::VerifySelect(a) => verify_select::run(a),
+        Cmd::ExportVerilog(a) => export_verilog::run(a),
+        Cmd::Render(a) => render::run(a),
         Cmd::Voxelize(a) => run::voxelize::run(a),
         Cmd::Sculpt(a) => run::sculpt::run(a),
         Cmd::Blist(a) => blist::run(a),
-        Cmd::Requirements(a) => run::requirements::run(a),
-        Cmd::Throughput(a) => run::throughput::run(a),
+        Cmd::Requirements(a) => requirements::run(a),
+        Cmd::Throughput(a) => throughput::run(a),
         Cmd::Study(a) => run::study::run(a),
         Cmd::Completions(a) => completions::run(a),
         Cmd::Man(a) => man::run(a),

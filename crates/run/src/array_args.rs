@@ -1,73 +1,136 @@
-//! Options every command that runs the array shares: size, model, equations, word format,
-//! stack depth, memory limit, waveform probes.
+//! Options every job that runs the array shares (§2.3): size, model, equations and their
+//! ties, word format (§2.4.1), stack depth, memory limit, waveform probes; as data, the
+//! command line's `--size`, `--model`, `--equations`, … and Python's keyword arguments.
 
+use crate::memory::Limit;
 use crate::Error;
 use std::path::PathBuf;
 
-use clap::ValueEnum;
 use csgpix_output::{Out, Outputs};
 use rtl_model::array::check_program;
 use rtl_model::probe::Recorder;
 use rtl_model::select::vectors::{derive_with_ties, Ties};
 use rtl_model::Op;
 use rtl_model::{Array, ArrayConfig, CycleArray, EquationSet, Equations, WordArray, WordFormat};
+use serde::{Deserialize, Serialize};
 
 pub use csgpix_draw::Model;
 
-use super::EquationsArg;
+named!(Ties: "ties" {
+    Ties::Minimal => "minimal": "Whatever the minimum cover does (derived.eqn; see docs/select-logic.md)",
+    Ties::Keep => "keep": "A = F or A = B keeps the register: the earlier plane wins",
+    Ties::Put => "put": "A = F or A = B puts A: the later plane wins",
+});
 
-/// How the `derived` equations settle the ties the thesis leaves to the user.
-#[derive(ValueEnum, Clone, Copy, Debug, Default, PartialEq)]
-pub enum TiesArg {
-    /// Whatever the minimum cover does (derived.eqn; see docs/select-logic.md).
-    #[default]
-    Minimal,
-    /// A = F or A = B keeps the register: the earlier plane wins.
-    Keep,
-    /// A = F or A = B puts A: the later plane wins.
-    Put,
-}
-
-#[derive(clap::Args, Debug, Clone)]
-pub struct ArrayArgs {
-    /// Array size WIDTHxHEIGHT (the thesis window is 250x250).
-    #[arg(long, default_value = "250x250", value_parser = parse_size)]
+/// The array a job runs on and what it records of it. `Default` is the documented
+/// defaults: the thesis window (250x250), the cycle model, the derived equations with the
+/// minimal cover's ties, the thesis word (10/10/11), 8 stack levels, no probes.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ArrayOptions {
+    /// Array size, width and height in pixels (`--size`).
     pub size: (usize, usize),
-    /// Processor model.
-    #[arg(long, value_parser = super::model_parser(), default_value = "cycle")]
+    /// Processor model (`--model`).
+    #[serde(with = "crate::named::by_name")]
     pub model: Model,
-    /// Select equations.
-    #[arg(long, value_enum, default_value_t)]
-    pub equations: EquationsArg,
-    /// Tie policy of the derived equations (A = F, A = B).
-    #[arg(long, value_enum, default_value_t)]
-    pub ties: TiesArg,
-    /// Depth word FRACTION/INTEGER/OVERFLOW bits (thesis 10/10/11).
-    #[arg(long, default_value = "10/10/11", value_parser = parse_word)]
+    /// Select equations (`--equations`).
+    #[serde(with = "crate::named::by_name")]
+    pub equations: Equations,
+    /// Tie policy of the derived equations, A = F and A = B (`--ties`).
+    #[serde(with = "crate::named::by_name")]
+    pub ties: Ties,
+    /// Depth word FRACTION/INTEGER/OVERFLOW bits (`--word`).
+    #[serde(with = "word_text")]
     pub word: WordFormat,
-    /// Levels of the per-pixel clipping stack.
-    #[arg(long, default_value_t = 8)]
+    /// Levels of the per-pixel clipping stack (`--stack-depth`).
     pub stack_depth: usize,
-    #[command(flatten)]
-    pub mem: super::memory::MaxMemory,
-    /// Write a VCD waveform of the probed pixels.
-    #[arg(long, requires = "probe")]
+    /// The memory limit the run's estimate is checked against (`--max-memory`). Not
+    /// serialized: it is the machine's (its available memory), and a job read back gets
+    /// the default of the machine that reads it.
+    #[serde(skip, default = "default_limit")]
+    pub max_memory: Limit,
+    /// A VCD waveform of the probed pixels (`--vcd`; `-`: standard output).
     pub vcd: Option<PathBuf>,
-    /// Pixels to probe: "x,y;x,y".
-    #[arg(long, value_parser = parse_probes)]
+    /// Pixels to probe (`--probe`).
     pub probe: Option<Probes>,
-    /// Write an SVG timing diagram of the first probed pixel.
-    #[arg(long, requires = "probe")]
+    /// An SVG timing diagram of the first probed pixel (`--wave`).
     pub wave: Option<PathBuf>,
-    /// Clocks the timing diagram shows, FIRST..LAST.
-    #[arg(long, default_value = "0..120", value_parser = parse_range)]
+    /// Clocks the timing diagram shows, first and last (`--wave-clocks`).
     pub wave_clocks: (u64, u64),
 }
 
+/// The default memory limit: the memory available now, as `--max-memory` names it.
+pub fn default_limit() -> Limit {
+    Limit::new(None, "--max-memory")
+}
+
+impl Default for ArrayOptions {
+    fn default() -> Self {
+        ArrayOptions {
+            size: (250, 250),
+            model: Model::Cycle,
+            equations: Equations::Derived,
+            ties: Ties::Minimal,
+            word: WordFormat::THESIS,
+            stack_depth: 8,
+            max_memory: default_limit(),
+            vcd: None,
+            probe: None,
+            wave: None,
+            wave_clocks: (0, 120),
+        }
+    }
+}
+
+/// serde of a [`WordFormat`] as the command line spells it: `10/10/11`.
+pub mod word_text {
+    use rtl_model::WordFormat;
+
+    /// `FRACTION/INTEGER/OVERFLOW`.
+    pub fn serialize<S: serde::Serializer>(w: &WordFormat, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(&format_args!("{}/{}/{}", w.frac, w.int, w.ovf))
+    }
+
+    /// The word of a text ([`super::parse_word`]).
+    pub fn deserialize<'de, D: serde::Deserializer<'de>>(d: D) -> Result<WordFormat, D::Error> {
+        use serde::Deserialize;
+        let s = <std::borrow::Cow<'de, str>>::deserialize(d)?;
+        super::parse_word(&s).map_err(serde::de::Error::custom)
+    }
+}
+
+/// serde of an `Option<WordFormat>` as [`word_text`] spells it, None as null.
+pub mod word_text_opt {
+    use rtl_model::WordFormat;
+
+    /// `FRACTION/INTEGER/OVERFLOW`, or null.
+    pub fn serialize<S: serde::Serializer>(
+        w: &Option<WordFormat>,
+        s: S,
+    ) -> Result<S::Ok, S::Error> {
+        match w {
+            Some(w) => super::word_text::serialize(w, s),
+            None => s.serialize_none(),
+        }
+    }
+
+    /// The word of a text, or None for null.
+    pub fn deserialize<'de, D: serde::Deserializer<'de>>(
+        d: D,
+    ) -> Result<Option<WordFormat>, D::Error> {
+        use serde::Deserialize;
+        let s = <Option<std::borrow::Cow<'de, str>>>::deserialize(d)?;
+        s.map(|s| super::parse_word(&s).map_err(serde::de::Error::custom))
+            .transpose()
+    }
+}
+
 /// Probed pixels, as given to `--probe`.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(transparent)]
 pub struct Probes(pub Vec<(usize, usize)>);
 
+/// `--size`: WIDTHxHEIGHT, each 1..=65536.
 pub fn parse_size(s: &str) -> crate::error::Parsed<(usize, usize)> {
     let (w, h) = s
         .split_once(['x', 'X'])
@@ -82,6 +145,7 @@ pub fn parse_size(s: &str) -> crate::error::Parsed<(usize, usize)> {
     Ok((w, h))
 }
 
+/// `--word`: FRACTION/INTEGER/OVERFLOW bits, a word the model takes.
 pub fn parse_word(s: &str) -> crate::error::Parsed<WordFormat> {
     let f: Vec<&str> = s.split('/').collect();
     let [fr, i, o] = f[..] else {
@@ -91,6 +155,7 @@ pub fn parse_word(s: &str) -> crate::error::Parsed<WordFormat> {
     WordFormat::new(n(fr)?, n(i)?, n(o)?).map_err(|e| e.to_string().into())
 }
 
+/// `--wave-clocks`: FIRST..LAST, at most 100000 clocks.
 pub fn parse_range(s: &str) -> crate::error::Parsed<(u64, u64)> {
     let (a, b) = s
         .split_once("..")
@@ -105,6 +170,7 @@ pub fn parse_range(s: &str) -> crate::error::Parsed<(u64, u64)> {
     Ok((a, b))
 }
 
+/// `--probe`: "x,y;x,y", at least one pixel.
 pub fn parse_probes(s: &str) -> crate::error::Parsed<Probes> {
     let v = s
         .split(';')
@@ -150,33 +216,37 @@ pub fn new_array(model: Model, cfg: ArrayConfig, set: EquationSet) -> Box<dyn Ar
     }
 }
 
-impl ArrayArgs {
+/// The equation set SGENE is built from (§2.3.3): `eq`, its ties settled by `ties` (the
+/// derived equations only; the printed ones fix their own).
+pub fn equation_set(eq: Equations, ties: Ties) -> crate::Result<EquationSet> {
+    match (eq, ties) {
+        (_, Ties::Minimal) => Ok(eq.set()),
+        (Equations::Printed, _) => Err(Error::options(
+            "--ties",
+            "--ties applies to the derived equations; the printed ones fix their own ties",
+        )),
+        (Equations::Derived, t) => Ok(derive_with_ties(t)?),
+    }
+}
+
+impl ArrayOptions {
     /// The array's configuration, checked ([`array_config`]).
     pub fn config(&self) -> crate::Result<ArrayConfig> {
         array_config(self.size, self.word, self.stack_depth)
     }
 
-    /// The equation set SGENE is built from.
+    /// The equation set SGENE is built from ([`equation_set`]).
     pub fn equations(&self) -> crate::Result<EquationSet> {
-        let eq: Equations = self.equations.into();
-        match (eq, self.ties) {
-            (_, TiesArg::Minimal) => Ok(eq.set()),
-            (Equations::Printed, _) => Err(Error::options(
-                "--ties",
-                "--ties applies to the derived equations; the printed ones fix their own ties",
-            )),
-            (Equations::Derived, TiesArg::Keep) => Ok(derive_with_ties(Ties::Keep)?),
-            (Equations::Derived, TiesArg::Put) => Ok(derive_with_ties(Ties::Put)?),
-        }
+        equation_set(self.equations, self.ties)
     }
 
-    /// The name of the equation set [`ArrayArgs::equations`] builds.
+    /// The name of the equation set [`ArrayOptions::equations`] builds.
     pub fn equations_name(&self) -> String {
-        let eq: Equations = self.equations.into();
+        let eq = self.equations;
         match self.ties {
-            TiesArg::Minimal => eq.name().into(),
-            TiesArg::Keep => format!("{}, ties keep", eq.name()),
-            TiesArg::Put => format!("{}, ties put", eq.name()),
+            Ties::Minimal => eq.name().into(),
+            Ties::Keep => format!("{}, ties keep", eq.name()),
+            Ties::Put => format!("{}, ties put", eq.name()),
         }
     }
 
@@ -199,7 +269,7 @@ impl ArrayArgs {
             }
         };
         let what = format!("a {}x{} {} array", cfg.width, cfg.height, self.model.name());
-        self.mem.check(need, &what, "lower --size")?;
+        self.max_memory.check(need, &what, "lower --size")?;
         let set = self.equations()?;
         let mut arr = new_array(self.model, cfg, set);
         if let Some(p) = &self.probe {
@@ -221,7 +291,7 @@ impl ArrayArgs {
         Ok([vcd.transpose()?, svg.transpose()?])
     }
 
-    /// Stage the VCD and the SVG timing diagram named by [`ArrayArgs::wave_outputs`].
+    /// Stage the VCD and the SVG timing diagram named by [`ArrayOptions::wave_outputs`].
     pub fn write_waves(
         &self,
         arr: &mut dyn Array,

@@ -1,73 +1,126 @@
-//! `csgpix export-verilog`: the Verilog twin of SGENE and its checks (docs/verilog.md); with
-//! `--scene`, a directory from which `tb_array` runs a scene and checks every register of
+//! The export-verilog job: the Verilog twin of SGENE and its checks (docs/verilog.md); with
+//! `scene`, a directory from which `tb_array` runs a scene and checks every register of
 //! every pixel after every clock against the `cycle` model (docs/verilog.md, "Running
 //! tb_array from the CLI").
 
+use crate::memory::Limit;
 use crate::Error;
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 
 use csgpix_draw::compile::{clip_scene_ops, coeffs, scene_ops, CompileError};
+use csgpix_draw::project::View;
 use csgpix_output::{Out, Outputs};
 use rtl_model::array::{check_program, program_cycles};
 use rtl_model::program::{translate, Op};
 use rtl_model::verilog::{pixel, stimulus};
 use rtl_model::{ArrayConfig, CycleArray, Equations, WordFormat};
+use serde::{Deserialize, Serialize};
 
-use super::array_args::{parse_size, parse_word};
-use super::memory::MaxMemory;
+use crate::array_args::default_limit;
+use crate::generated::{write_generated, GeneratedReport};
+use crate::progress::Progress;
 use csgpix_draw::scenes::Scene;
 
-#[derive(clap::Args, Debug)]
-#[command(
-    after_help = "Examples:\n  csgpix export-verilog                 # rewrite rtl-model/verilog/\n  \
-    csgpix export-verilog -o out/         # write elsewhere\n  \
-    csgpix export-verilog --check         # exit 1 if the checked-in files differ\n  \
-    csgpix export-verilog --scene vectors/thesis/cube.dl --origin 56,90 -o cube/\n  \
-    sh cube/run.sh                        # tb_array on the cube's 16x16 window, Icarus\n  \
-    sh cube/run.sh verilator              # the same under Verilator\n  \
-    csgpix export-verilog --scene vectors/thesis/box1.dl --scene vectors/thesis/box2.dl \
-    --clip 'A.!B' --origin 112,148 -o boxes/"
-)]
-pub struct Args {
-    /// Directory to write (or check) the files in: rtl-model/verilog when not given; with
-    /// --scene it must be given.
-    #[arg(short = 'o', long)]
-    out: Option<PathBuf>,
-    /// Only compare with the files in the directory; exit 1 on any difference.
-    #[arg(long, conflicts_with = "scene")]
-    check: bool,
-    /// A display list (thesis §5.2) to run on the array; repeat for more objects (A, B, …);
-    /// or one OpenSCAD .csg/.scad scene, projected onto the --size array.
-    /// Writes tb_array's stimulus (control.hex), the state it must see after every clock
-    /// (expected.hex), the image (expected.png), the Verilog it is built from and run.sh.
-    #[arg(long, value_name = "FILE.dl")]
-    scene: Vec<PathBuf>,
-    /// Clipping function over the objects, as for `render` (§5.2.1), e.g. "A.!B".
-    #[arg(long, requires = "scene")]
-    clip: Option<String>,
-    /// Array size WIDTHxHEIGHT; pixel_array.v and tb_array.v are generated for it.
-    #[arg(long, default_value = "16x16", value_parser = parse_size, requires = "scene")]
-    size: (usize, usize),
-    /// The screen pixel X,Y the array's pixel (0, 0) shows: the window of the scene drawn.
-    #[arg(long, default_value = "0,0", value_parser = parse_origin, requires = "scene")]
-    origin: (usize, usize),
-    /// Depth word FRACTION/INTEGER/OVERFLOW bits (thesis 10/10/11).
-    #[arg(long, default_value = "10/10/11", value_parser = parse_word, requires = "scene")]
-    word: WordFormat,
-    #[command(flatten)]
-    mem: MaxMemory,
+/// Write (or check) the Verilog twin, or with `scene` the directory `tb_array` runs it from.
+/// `Default` is the documented defaults: `rtl-model/verilog`, a 16x16 array at the screen's
+/// origin, the thesis word.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ExportVerilogJob {
+    /// The directory to write (or check) the files in (`-o`): `rtl-model/verilog` when None;
+    /// with `scene` it must be given.
+    pub out: Option<PathBuf>,
+    /// Only compare with the files in the directory (`--check`).
+    pub check: bool,
+    /// Display lists (§5.2), objects A, B, …; or one OpenSCAD `.csg`/`.scad` scene
+    /// (`--scene`).
+    pub scene: Vec<PathBuf>,
+    /// Clipping function over the objects, as for `render` (§5.2.1).
+    pub clip: Option<String>,
+    /// The array's width and height (`--size`).
+    pub size: (usize, usize),
+    /// The screen pixel X,Y the array's pixel (0, 0) shows (`--origin`).
+    pub origin: (usize, usize),
+    /// Depth word FRACTION/INTEGER/OVERFLOW bits (`--word`).
+    #[serde(with = "crate::array_args::word_text")]
+    pub word: WordFormat,
+    /// The memory limit (`--max-memory`); not serialized: it is the machine's.
+    #[serde(skip, default = "default_limit")]
+    pub max_memory: Limit,
 }
 
-pub fn run(a: Args) -> crate::Result<ExitCode> {
-    if !a.scene.is_empty() {
-        return scene(&a);
+impl Default for ExportVerilogJob {
+    fn default() -> Self {
+        ExportVerilogJob {
+            out: None,
+            check: false,
+            scene: vec![],
+            clip: None,
+            size: (16, 16),
+            origin: (0, 0),
+            word: WordFormat::THESIS,
+            max_memory: default_limit(),
+        }
     }
-    let out = a.out.as_deref().unwrap_or(Path::new("rtl-model/verilog"));
-    super::write_generated(&rtl_model::verilog::files()?, out, a.check)
 }
 
-fn parse_origin(s: &str) -> crate::error::Parsed<(usize, usize)> {
+/// What the job wrote or found.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub enum ExportVerilogReport {
+    /// The Verilog twin, written or checked.
+    Generated(GeneratedReport),
+    /// A scene's `tb_array` directory.
+    Scene(SceneFiles),
+}
+
+/// A scene's `tb_array` directory, written: what it holds and the line `tb_array` must print.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SceneFiles {
+    /// The directory.
+    pub dir: PathBuf,
+    /// The generated files, in order (then `expected.hex` and `expected.png`).
+    pub files: Vec<String>,
+    /// Bytes of `expected.hex`.
+    pub expected_bytes: usize,
+    /// Clocks `expected.hex` holds (the program's and the idle one).
+    pub clocks: u64,
+    /// The array's width and height.
+    pub size: (usize, usize),
+    /// The line `tb_array` prints when every register matches.
+    pub summary: String,
+}
+
+impl ExportVerilogJob {
+    /// The memory plan: with a scene, the expected states held in memory, the control
+    /// stream and the cycle model ([`bound`]); else nothing grows.
+    pub fn estimate(&self) -> crate::Result<u64> {
+        if self.scene.is_empty() {
+            return Ok(0);
+        }
+        let cfg = config(self)?;
+        let ops = program(self, &cfg)?;
+        let cycles = program_cycles(&cfg, &Equations::Derived.set(), &ops);
+        Ok(need(&cfg, cycles))
+    }
+
+    /// Write or check the twin, or a scene's directory.
+    pub fn run(&self, _: &dyn Progress) -> crate::Result<ExportVerilogReport> {
+        if !self.scene.is_empty() {
+            return scene(self).map(ExportVerilogReport::Scene);
+        }
+        let out = self
+            .out
+            .as_deref()
+            .unwrap_or(Path::new("rtl-model/verilog"));
+        let files = rtl_model::verilog::files()?;
+        Ok(ExportVerilogReport::Generated(write_generated(
+            &files, out, self.check,
+        )?))
+    }
+}
+
+/// `--origin`: X,Y, each at most 2^20.
+pub fn parse_origin(s: &str) -> crate::error::Parsed<(usize, usize)> {
     let (x, y) = s.split_once(',').ok_or("expected X,Y, e.g. 56,90")?;
     let n = |v: &str| v.trim().parse::<usize>().map_err(|e| format!("{v:?}: {e}"));
     let (x, y) = (n(x)?, n(y)?);
@@ -80,7 +133,7 @@ fn parse_origin(s: &str) -> crate::error::Parsed<(usize, usize)> {
 }
 
 /// The array the scene runs on: `--size`, `--word`, the thesis colours and stack.
-fn config(a: &Args) -> crate::Result<ArrayConfig> {
+fn config(a: &ExportVerilogJob) -> crate::Result<ArrayConfig> {
     let mut cfg = ArrayConfig::new(a.size.0, a.size.1);
     cfg.fmt = a.word;
     // Colour registers move within a window, so a very short word narrows them too.
@@ -89,8 +142,8 @@ fn config(a: &Args) -> crate::Result<ArrayConfig> {
     Ok(cfg)
 }
 
-/// `--scene`: compile, bound, simulate clock by clock, stage every file, commit, report.
-fn scene(a: &Args) -> crate::Result<ExitCode> {
+/// `--scene`: compile, bound, simulate clock by clock, stage every file, commit.
+fn scene(a: &ExportVerilogJob) -> crate::Result<SceneFiles> {
     let Some(dir) = &a.out else {
         let message = "--scene needs -o DIR (rtl-model/verilog holds no stimulus)";
         return Err(Error::options("-o", message));
@@ -117,16 +170,22 @@ fn scene(a: &Args) -> crate::Result<ExitCode> {
     outs.write_in(out, "expected.hex", |w| w.write_all(want.text.as_bytes()))?;
     write_image(&mut outs, out, &cfg, &want.image())?;
     outs.commit()?;
-    report(dir, &cfg, &files, &want);
-    Ok(ExitCode::SUCCESS)
+    Ok(SceneFiles {
+        dir: dir.clone(),
+        files: files.into_iter().map(|(name, _)| name).collect(),
+        expected_bytes: want.text.len(),
+        clocks: want.cycles + 1,
+        size: (cfg.width, cfg.height),
+        summary: want.summary(),
+    })
 }
 
 /// The scene's program for the window at `--origin`: display lists compiled as `render`
 /// compiles them, then moved so the array's pixel (0, 0) is the screen's (x0, y0).
 /// A `.csg` or `.scad` scene is projected onto the `--size` array, as `render --size` does
 /// (its tree is the clipping function); a tree that evaluates to nothing draws no plane.
-fn program(a: &Args, cfg: &ArrayConfig) -> crate::Result<Vec<Op>> {
-    let view = super::ViewArg::default().into();
+fn program(a: &ExportVerilogJob, cfg: &ArrayConfig) -> crate::Result<Vec<Op>> {
+    let view = View::Iso;
     let scene =
         Scene::load(&a.scene, a.clip.as_deref(), view, cfg).map_err(super::lib_errors::load)?;
     check_window(&scene, cfg, a.origin)
@@ -185,9 +244,19 @@ fn check_window(
     Ok(())
 }
 
+/// Bytes the scene's run holds for a program of `cycles` clocks: the expected-state file
+/// ([`stimulus::expected_bytes`]), the control stream (a line of 13 bytes a clock), the
+/// cycle model, the process.
+fn need(cfg: &ArrayConfig, cycles: u64) -> u64 {
+    stimulus::expected_bytes(cfg, cycles)
+        .saturating_add((cycles + 1) * 13)
+        .saturating_add(CycleArray::memory_bytes(cfg))
+        .saturating_add(16 << 20)
+}
+
 /// Refuse, before simulating, a stream longer than tb_array holds or an expected-state file
-/// (held in memory, [`stimulus::expected_bytes`]) over `--max-memory`.
-fn bound(a: &Args, cfg: &ArrayConfig, cycles: u64) -> crate::Result<()> {
+/// (held in memory, [`need`]) over `--max-memory`.
+fn bound(a: &ExportVerilogJob, cfg: &ArrayConfig, cycles: u64) -> crate::Result<()> {
     if cycles > stimulus::MAX_CYCLES {
         let message = format!(
             "the scene takes {cycles} clocks, over the {} tb_array holds (MAXCLK): fewer planes",
@@ -195,20 +264,14 @@ fn bound(a: &Args, cfg: &ArrayConfig, cycles: u64) -> crate::Result<()> {
         );
         return Err(Error::options("--scene", message));
     }
-    let text = stimulus::expected_bytes(cfg, cycles);
-    // The control stream (a line of 13 bytes a clock), the cycle model, the process.
-    let need = text
-        .saturating_add((cycles + 1) * 13)
-        .saturating_add(CycleArray::memory_bytes(cfg))
-        .saturating_add(16 << 20);
     let what = format!(
         "expected.hex ({} clocks x {} pixels x {} bytes)",
         cycles + 1,
         cfg.pixels(),
         stimulus::line_bytes(cfg)
     );
-    Ok(a.mem
-        .check(need, &what, "a smaller --size or fewer planes")?)
+    Ok(a.max_memory
+        .check(need(cfg, cycles), &what, "a smaller --size or fewer planes")?)
 }
 
 #[cfg(unix)]
@@ -242,42 +305,4 @@ fn write_image(
         );
     }
     Ok(outs.write_in(out, "expected.png", |w| crate::png::write_png(w, &img))?)
-}
-
-/// What was written and how to run it: the command lines `run.sh` holds, from the directory.
-fn report(dir: &Path, cfg: &ArrayConfig, files: &[(String, String)], want: &stimulus::Expected) {
-    for (name, _) in files {
-        println!("wrote {}", dir.join(name).display());
-    }
-    let mib = want.text.len() as f64 / (1 << 20) as f64;
-    println!(
-        "wrote {} ({} clocks x {} pixels, {mib:.1} MiB)",
-        dir.join("expected.hex").display(),
-        want.cycles + 1,
-        cfg.pixels()
-    );
-    println!(
-        "wrote {} ({}x{}, G after the last clock)",
-        dir.join("expected.png").display(),
-        cfg.width,
-        cfg.height
-    );
-    let d = shell_word(&dir.display().to_string());
-    println!("run tb_array; it must print \"{}\":", want.summary());
-    println!("  icarus:    cd {d} && {}", stimulus::ICARUS);
-    println!("  verilator: cd {d} && {}", stimulus::VERILATOR);
-    println!("  or:        sh {d}/run.sh [icarus|verilator]   (exit 0 only on that line)");
-    println!("run tb_machine (the controller reads program.hex; every word and register checked):");
-    println!("  icarus:    cd {d} && {}", stimulus::MACHINE_ICARUS);
-    println!("  verilator: cd {d} && {}", stimulus::MACHINE_VERILATOR);
-}
-
-/// `s` as one shell word: as it is when it needs no quoting, else in single quotes.
-fn shell_word(s: &str) -> String {
-    let plain = |c: char| c.is_ascii_alphanumeric() || "/._-+,:@%=".contains(c);
-    if !s.is_empty() && s.chars().all(plain) {
-        s.to_string()
-    } else {
-        format!("'{}'", s.replace('\'', r"'\''"))
-    }
 }

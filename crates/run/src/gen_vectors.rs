@@ -1,23 +1,41 @@
-//! `csgpix gen-vectors`: regenerate `vectors/select/` from the case tables.
+//! The gen-vectors job: regenerate the golden select-logic vectors (Espresso PLA) and the
+//! derived equations (`vectors/select/`) from the case tables (§2.3.3).
 
 use std::path::PathBuf;
-use std::process::ExitCode;
 
-#[derive(clap::Args, Debug)]
-#[command(
-    after_help = "Examples:\n  csgpix gen-vectors            # rewrite vectors/select/\n  \
-    csgpix gen-vectors --check    # exit 1 if the checked-in files differ"
-)]
-pub struct Args {
-    /// Directory to write (or check) the PLA files and derived.eqn in.
-    #[arg(short = 'o', long, default_value = "vectors/select")]
-    out: PathBuf,
-    /// Only compare with the files in the directory; exit 1 on any difference.
-    #[arg(long)]
-    check: bool,
+use serde::{Deserialize, Serialize};
+
+use crate::generated::{write_generated, GeneratedReport};
+use crate::progress::Progress;
+
+/// Write (or check) the PLA files and `derived.eqn`. `Default`: into `vectors/select`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct GenVectorsJob {
+    /// The directory to write (or check) the files in (`-o`).
+    pub out: PathBuf,
+    /// Only compare with the files in the directory (`--check`).
+    pub check: bool,
 }
 
-pub fn run(a: Args) -> crate::Result<ExitCode> {
-    let files = rtl_model::select::vectors::generate()?;
-    super::write_generated(&files, &a.out, a.check)
+impl Default for GenVectorsJob {
+    fn default() -> Self {
+        GenVectorsJob {
+            out: "vectors/select".into(),
+            check: false,
+        }
+    }
+}
+
+impl GenVectorsJob {
+    /// The memory plan: the files are a few kilobytes; nothing grows.
+    pub fn estimate(&self) -> crate::Result<u64> {
+        Ok(0)
+    }
+
+    /// Generate, then write or compare.
+    pub fn run(&self, _: &dyn Progress) -> crate::Result<GeneratedReport> {
+        let files = rtl_model::select::vectors::generate()?;
+        write_generated(&files, &self.out, self.check)
+    }
 }

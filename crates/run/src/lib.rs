@@ -36,6 +36,7 @@ pub mod blist;
 pub mod error;
 pub mod export_verilog;
 pub mod gen_vectors;
+pub mod generated;
 pub mod grid;
 mod lib_errors;
 pub mod memory;

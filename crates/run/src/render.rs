@@ -1,87 +1,234 @@
-//! `csgpix render`: display lists or a `.csg` scene through the array, the composed scene
-//! (C, G) as an image.
+//! The render job: display lists or a `.csg` scene through the array (§5.2), the composed
+//! scene (C, G) as an image.
 
 use crate::Error;
 use std::path::PathBuf;
-use std::process::ExitCode;
 use std::time::Instant;
 
 use csgpix_draw::compile::{clip_scene_ops, scene_ops};
 use csgpix_draw::palette::image_rgb;
+use csgpix_draw::project::View;
 use csgpix_output::{Out, Outputs};
-use indicatif::{ProgressBar, ProgressStyle};
 use rtl_model::array::check_program;
 use rtl_model::program::{CReg, Op, Reg};
 use rtl_model::{Array, ArrayConfig, EquationSet};
+use serde::{Deserialize, Serialize};
 
-use serde::Serialize;
-
-use super::array_args::{new_array, ArrayArgs, Model};
-use super::ViewArg;
+use super::array_args::{new_array, ArrayOptions, Model};
+use crate::progress::{warn_all, Progress};
+use crate::read::ReadSettings;
 use csgpix_draw::float::{self, ScreenRule};
 use csgpix_draw::scenes::Scene;
 
-#[derive(clap::Args, Debug)]
-#[command(after_help = "Examples:\n  \
-    csgpix render vectors/thesis/cube.dl -o cube.png\n  \
-    csgpix render vectors/scenes/cube-minus-cylinder.csg --view iso --shade -o scene.png\n  \
-    csgpix render vectors/scenes/twelve.csg --panel 32x32 --json -o twelve.png\n  \
-    csgpix render vectors/thesis/box1.dl vectors/thesis/box2.dl --model word --json -o boxes.png\n  \
-    csgpix render vectors/thesis/box1.dl vectors/thesis/box2.dl --clip 'A.!B' -o fig5-1e.png\n  \
-    csgpix render vectors/thesis/cube.dl --vcd cube.vcd --probe '120,100;10,10' -o cube.png\n  \
-    csgpix render vectors/thesis/cube.dl --probe 120,100 --wave cube.svg --wave-clocks 0..120 -o cube.png")]
-pub struct Args {
-    /// Display-list files (thesis §5.2), composed by the second stage; or one OpenSCAD `.csg`
+/// Draw `scenes` on the array and write the image as a PNG. `Default` is the documented
+/// defaults (the iso view, the default array, no clip, no panels, no shading); `scenes`
+/// and `out` are the caller's.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct RenderJob {
+    /// Display-list files (§5.2), composed by the second stage; or one OpenSCAD `.csg`
     /// file, projected onto the array, its tree evaluated as a clipping function.
-    #[arg(required = true)]
-    scenes: Vec<PathBuf>,
+    pub scenes: Vec<PathBuf>,
     /// View direction for a `.csg` scene (the scene's bounds fill the array).
-    #[arg(long, value_enum, default_value_t)]
-    view: ViewArg,
-    /// Output PNG (`-`: standard output).
-    #[arg(short = 'o', long)]
-    out: PathBuf,
-    #[command(flatten)]
-    array: ArrayArgs,
-    /// Clipping function over the objects, named A, B, … in the order given (§5.2.1), e.g.
-    /// "A.!B"; each literal is drawn, clipped by the rest of its product and composed.
-    #[arg(long)]
-    clip: Option<String>,
-    /// For a `.csg` scene: draw on panels of NXxNY pixels (§2.5), each running only the solids
-    /// whose footprint touches it; panels no solid touches are not simulated. Same image.
-    #[arg(long, value_parser = super::voxelize::parse_panel)]
-    panel: Option<super::voxelize::PanelArg>,
+    #[serde(with = "crate::named::by_name")]
+    pub view: View,
+    /// The PNG (`-`: standard output).
+    pub out: PathBuf,
+    /// The array and its probes.
+    pub array: ArrayOptions,
+    /// Clipping function over the objects, named A, B, … in the order given (§5.2.1).
+    pub clip: Option<String>,
+    /// For a `.csg` scene: panels of NX×NY pixels (§2.5), each running only the solids whose
+    /// footprint touches it (None: the whole array).
+    pub panel: Option<[usize; 2]>,
     /// Shade by depth (C): nearest drawn depth at full colour, farthest at 45%.
-    #[arg(long)]
-    shade: bool,
-    /// Print figures as JSON.
-    #[arg(long)]
-    json: bool,
-    #[command(flatten)]
-    openscad: super::read_args::ReadArgs,
+    pub shade: bool,
+    /// How the scene is read.
+    pub read: ReadSettings,
+    /// The caller prints the report on standard output (the command line's `--json`): no
+    /// output may go there.
+    pub report_on_stdout: bool,
 }
 
-#[derive(Serialize)]
-struct Report {
-    model: &'static str,
-    equations: String,
-    width: usize,
-    height: usize,
-    objects: usize,
-    planes: usize,
-    operations: usize,
-    cycles: u64,
+impl Default for RenderJob {
+    fn default() -> Self {
+        RenderJob {
+            scenes: vec![],
+            view: View::Iso,
+            out: PathBuf::new(),
+            array: ArrayOptions::default(),
+            clip: None,
+            panel: None,
+            shade: false,
+            read: ReadSettings::default(),
+            report_on_stdout: false,
+        }
+    }
+}
+
+/// What a render drew and what it took (`--json` prints these fields, in this order).
+#[derive(Clone, Debug, Serialize)]
+pub struct RenderReport {
+    pub model: &'static str,
+    pub equations: String,
+    pub width: usize,
+    pub height: usize,
+    pub objects: usize,
+    pub planes: usize,
+    pub operations: usize,
+    pub cycles: u64,
     /// Clipping-stack levels the program needs, which is all the array models (array models).
-    stack_levels: usize,
+    pub stack_levels: usize,
     /// Levels the hardware has (`--stack-depth`).
-    stack_depth: usize,
+    pub stack_depth: usize,
     /// Pixel-clocks simulated, against the whole screen's: the same unless `--panel` draws a
     /// `.csg` scene on panels (docs/requirements.md).
-    simulated_pixel_clocks: u64,
-    full_pixel_clocks: u64,
+    pub simulated_pixel_clocks: u64,
+    pub full_pixel_clocks: u64,
     /// Hardware time at the thesis's 10 MHz clock.
-    hardware_seconds: f64,
-    wall_seconds: f64,
+    pub hardware_seconds: f64,
+    pub wall_seconds: f64,
+    /// Whether an output went to standard output (the report's line goes to standard error).
+    #[serde(skip)]
+    pub to_stdout: bool,
+}
+
+/// The picture and the clocks of one run, before the image is written.
+struct Run {
+    drawn: Drawn,
+    /// Stack levels the array modelled (0 on panels and for the float reference).
+    stack_levels: usize,
+    /// Pixel-clocks simulated on panels, when drawn on panels.
+    simulated: Option<u64>,
+}
+
+impl RenderJob {
+    /// The memory plan (docs/memory.md): the array (the whole screen's, or one panel's, the
+    /// panels' C words and their lists of solids), the image, the process.
+    pub fn estimate(&self) -> crate::Result<u64> {
+        Ok(memory_estimate(self, &self.array.config()?))
+    }
+
+    /// Name the outputs, check the estimate, compile, draw, write the PNG (and waveforms).
+    pub fn run(&self, progress: &dyn Progress) -> crate::Result<RenderReport> {
+        let mut outs = Outputs::new();
+        let png = outs.file_or_stdout("-o", &self.out, &["png"])?;
+        let waves = self.array.wave_outputs(&mut outs)?;
+        if self.report_on_stdout && outs.uses_stdout() {
+            return Err(Error::options(
+                "--json",
+                "--json prints to standard output: write the outputs to files",
+            ));
+        }
+        let cfg = self.array.config()?;
+        let need = memory_estimate(self, &cfg);
+        self.array
+            .max_memory
+            .check(need, "this render", "lower --size")?;
+        let options = self.read.read_options();
+        let (scene, ops) = compile_with(
+            &self.scenes,
+            self.clip.as_deref(),
+            self.view,
+            &cfg,
+            &options,
+        )?;
+        if let Some(csg) = &scene.csg {
+            warn_all(progress, &csg.warnings);
+        }
+        let t0 = Instant::now();
+        let run = self.draw_scene(&scene, &ops, &cfg, (&mut outs, waves), progress)?;
+        let drawn = &run.drawn;
+        let image = image_rgb(&drawn.colour, self.shade.then_some(&drawn.depth[..]));
+        let wall = t0.elapsed().as_secs_f64();
+        write_png(&mut outs, png, cfg.width, cfg.height, &image)?;
+        let to_stdout = outs.uses_stdout();
+        outs.commit()?;
+        let mut report = self.report(&scene, &ops, &cfg, &run, wall);
+        report.to_stdout = to_stdout;
+        Ok(report)
+    }
+
+    /// Draw the compiled scene: the float reference, on panels, or on one array (whose
+    /// waveforms are staged).
+    fn draw_scene(
+        &self,
+        scene: &Scene,
+        ops: &[Op],
+        cfg: &ArrayConfig,
+        (outs, waves): (&mut Outputs, [Option<Out>; 2]),
+        progress: &dyn Progress,
+    ) -> crate::Result<Run> {
+        if self.array.model == Model::Float {
+            if self.array.probe.is_some() {
+                let message = "--probe needs an array model (cycle or word)";
+                return Err(Error::options("--probe", message));
+            }
+            let drawn = float_image(scene, cfg);
+            return Ok(Run {
+                drawn,
+                stack_levels: 0,
+                simulated: None,
+            });
+        }
+        if let Some([pw, ph]) = self.panel {
+            let img = on_panels(self, scene, cfg, (pw, ph))?;
+            let depth = img
+                .depth
+                .iter()
+                .map(|&c| Some(cfg.fmt.to_real(c)))
+                .collect();
+            let cycles = rtl_model::array::program_cycles(cfg, &self.array.equations()?, ops);
+            let drawn = Drawn {
+                colour: img.colour,
+                depth,
+                cycles,
+            };
+            return Ok(Run {
+                drawn,
+                stack_levels: 0,
+                simulated: Some(img.simulated_pixel_clocks),
+            });
+        }
+        let (mut arr, stack_levels) = self.array.build(ops)?;
+        let drawn = draw_on(arr.as_mut(), ops, progress)?;
+        self.array.write_waves(arr.as_mut(), outs, waves)?;
+        Ok(Run {
+            drawn,
+            stack_levels,
+            simulated: None,
+        })
+    }
+
+    /// The report of a run.
+    fn report(
+        &self,
+        scene: &Scene,
+        ops: &[Op],
+        cfg: &ArrayConfig,
+        run: &Run,
+        wall: f64,
+    ) -> RenderReport {
+        let lists = &scene.lists;
+        let cycles = run.drawn.cycles;
+        RenderReport {
+            model: self.array.model.name(),
+            equations: self.array.equations_name(),
+            width: cfg.width,
+            height: cfg.height,
+            objects: lists.len(),
+            planes: lists.iter().map(|l| l.planes.len()).sum(),
+            operations: ops.len(),
+            cycles,
+            stack_levels: run.stack_levels,
+            stack_depth: cfg.stack_depth,
+            simulated_pixel_clocks: run.simulated.unwrap_or(cycles * cfg.pixels() as u64),
+            full_pixel_clocks: cycles * cfg.pixels() as u64,
+            hardware_seconds: cycles as f64 * 1e-7,
+            wall_seconds: wall,
+            to_stdout: false,
+        }
+    }
 }
 
 /// Load display lists (composed, or clipped by `clip` over objects A, B, … in order, §5.2.1)
@@ -90,8 +237,8 @@ struct Report {
 pub fn compile(
     scenes: &[PathBuf],
     clip: Option<&str>,
-    view: csgpix_draw::project::View,
-    cfg: &rtl_model::ArrayConfig,
+    view: View,
+    cfg: &ArrayConfig,
 ) -> crate::Result<(Scene, Vec<Op>)> {
     compile_with(scenes, clip, view, cfg, &Default::default())
 }
@@ -100,8 +247,8 @@ pub fn compile(
 pub fn compile_with(
     scenes: &[PathBuf],
     clip: Option<&str>,
-    view: csgpix_draw::project::View,
-    cfg: &rtl_model::ArrayConfig,
+    view: View,
+    cfg: &ArrayConfig,
     options: &csgpix_openscad::ReadOptions,
 ) -> crate::Result<(Scene, Vec<Op>)> {
     let scene =
@@ -116,95 +263,6 @@ pub fn compile_with(
     };
     let ops = compiled.map_err(locate)?;
     Ok((scene, ops))
-}
-
-pub fn run(a: Args) -> crate::Result<ExitCode> {
-    let mut outs = Outputs::new();
-    let png = outs.file_or_stdout("-o", &a.out, &["png"])?;
-    let waves = a.array.wave_outputs(&mut outs)?;
-    if a.json && outs.uses_stdout() {
-        return Err(Error::options(
-            "--json",
-            "--json prints to standard output: write the outputs to files",
-        ));
-    }
-    let cfg = a.array.config()?;
-    a.array
-        .mem
-        .check(memory_estimate(&a, &cfg), "this render", "lower --size")?;
-    let options = a.openscad.read_options();
-    let (scene, ops) = compile_with(&a.scenes, a.clip.as_deref(), a.view.into(), &cfg, &options)?;
-    if let Some(csg) = &scene.csg {
-        crate::read_args::print_warnings(&csg.warnings);
-    }
-    let t0 = Instant::now();
-    let mut stack_levels = 0;
-    let mut simulated = None;
-    let drawn = if a.array.model == Model::Float {
-        if a.array.probe.is_some() {
-            let message = "--probe needs an array model (cycle or word)";
-            return Err(Error::options("--probe", message));
-        }
-        float_image(&scene, &cfg)
-    } else if let Some([pw, ph]) = a.panel.and_then(|p| p.0) {
-        let img = on_panels(&a, &scene, &cfg, (pw, ph))?;
-        simulated = Some(img.simulated_pixel_clocks);
-        let depth = img
-            .depth
-            .iter()
-            .map(|&c| Some(cfg.fmt.to_real(c)))
-            .collect();
-        let cycles = rtl_model::array::program_cycles(&cfg, &a.array.equations()?, &ops);
-        Drawn {
-            colour: img.colour,
-            depth,
-            cycles,
-        }
-    } else {
-        let (mut arr, levels) = a.array.build(&ops)?;
-        stack_levels = levels;
-        let drawn = draw_on(arr.as_mut(), &ops)?;
-        a.array.write_waves(arr.as_mut(), &mut outs, waves)?;
-        drawn
-    };
-    let cycles = drawn.cycles;
-    let image = image_rgb(&drawn.colour, a.shade.then_some(&drawn.depth[..]));
-    let wall = t0.elapsed().as_secs_f64();
-    write_png(&mut outs, png, cfg.width, cfg.height, &image)?;
-    let to_stdout = outs.uses_stdout();
-    outs.commit()?;
-    let lists = &scene.lists;
-    let report = Report {
-        model: a.array.model.name(),
-        equations: a.array.equations_name(),
-        width: cfg.width,
-        height: cfg.height,
-        objects: lists.len(),
-        planes: lists.iter().map(|l| l.planes.len()).sum(),
-        operations: ops.len(),
-        cycles,
-        stack_levels,
-        stack_depth: cfg.stack_depth,
-        simulated_pixel_clocks: simulated.unwrap_or(cycles * cfg.pixels() as u64),
-        full_pixel_clocks: cycles * cfg.pixels() as u64,
-        hardware_seconds: cycles as f64 * 1e-7,
-        wall_seconds: wall,
-    };
-    if a.json {
-        println!("{}", serde_json::to_string_pretty(&report)?);
-    } else {
-        let line = format!(
-            "{}: {} objects, {} planes, {} cycles ({:.1} us at 10 MHz), {:.3} s wall",
-            a.out.display(),
-            report.objects,
-            report.planes,
-            report.cycles,
-            report.hardware_seconds * 1e6,
-            wall
-        );
-        super::report_line(&line, to_stdout);
-    }
-    Ok(ExitCode::SUCCESS)
 }
 
 /// A scene as a model drew it: every pixel's colour code (G) and depth (C, in scene depth
@@ -233,8 +291,8 @@ pub fn float_image(scene: &Scene, cfg: &ArrayConfig) -> Drawn {
 }
 
 /// Run `ops` on `arr` ([`run_with_progress`]) and read every pixel's G and C out.
-pub fn draw_on(arr: &mut dyn Array, ops: &[Op]) -> crate::Result<Drawn> {
-    run_with_progress(arr, ops)?;
+pub fn draw_on(arr: &mut dyn Array, ops: &[Op], progress: &dyn Progress) -> crate::Result<Drawn> {
+    run_with_progress(arr, ops, progress)?;
     let cfg = *arr.config();
     // G and C pixel by pixel: a copy of every register would be 64 bytes a pixel.
     let (colour, depth) = (0..cfg.pixels())
@@ -251,18 +309,19 @@ pub fn draw_on(arr: &mut dyn Array, ops: &[Op]) -> crate::Result<Drawn> {
 /// `scene`, compiled to `ops` for the array `cfg` ([`compile`]), drawn by `model`: the
 /// float reference's picture ([`float_image`]), or a fresh array's of `cfg` running `set`
 /// (§2.3.3) after the whole program ([`draw_on`]): the Python binding's `render`, from the
-/// pieces the command line's `render` runs without panels.
+/// pieces the render job runs without panels.
 pub fn draw(
     scene: &Scene,
     ops: &[Op],
     cfg: &ArrayConfig,
     model: Model,
     set: EquationSet,
+    progress: &dyn Progress,
 ) -> crate::Result<Drawn> {
     if model == Model::Float {
         return Ok(float_image(scene, cfg));
     }
-    draw_on(new_array(model, *cfg, set).as_mut(), ops)
+    draw_on(new_array(model, *cfg, set).as_mut(), ops, progress)
 }
 
 /// Bytes a render holds per pixel besides the array (docs/memory.md): G and C read out
@@ -274,17 +333,18 @@ const BASE_BYTES: u64 = 16 << 20;
 
 /// An upper bound of a render's peak memory: the array (the whole screen's, or one panel's,
 /// the panels' C words and their lists of solids), the image, the process.
-fn memory_estimate(a: &Args, cfg: &rtl_model::ArrayConfig) -> u64 {
+fn memory_estimate(job: &RenderJob, cfg: &ArrayConfig) -> u64 {
     let pixels = cfg.pixels() as u64;
-    let array = |c: &rtl_model::ArrayConfig| match a.array.model {
+    let model = job.array.model;
+    let array = |c: &ArrayConfig| match model {
         Model::Cycle => rtl_model::CycleArray::memory_bytes(c),
         Model::Word => rtl_model::WordArray::memory_bytes(c),
         Model::Float => 0,
     };
-    let arrays = match a.panel.and_then(|p| p.0) {
-        Some([pw, ph]) if a.array.model != Model::Float => {
+    let arrays = match job.panel {
+        Some([pw, ph]) if model != Model::Float => {
             let (pw, ph) = csgpix_draw::panels::clamp_panel((pw, ph), (cfg.width, cfg.height));
-            let panel = rtl_model::ArrayConfig {
+            let panel = ArrayConfig {
                 width: pw,
                 height: ph,
                 ..*cfg
@@ -303,25 +363,28 @@ fn memory_estimate(a: &Args, cfg: &rtl_model::ArrayConfig) -> u64 {
         .saturating_add(BASE_BYTES)
 }
 
-/// Run a program, with a progress bar on a terminal when it is long enough to wait for.
-pub fn run_with_progress(arr: &mut dyn Array, ops: &[Op]) -> crate::Result<()> {
+/// Run a program, its operations a stage of `progress` when it is long enough to wait for.
+pub fn run_with_progress(
+    arr: &mut dyn Array,
+    ops: &[Op],
+    progress: &dyn Progress,
+) -> crate::Result<()> {
     check_program(ops, arr.config().stack_depth)?;
     let work = ops.len() as u64 * arr.config().pixels() as u64;
-    let bar = if work > 50_000_000 {
-        ProgressBar::new(ops.len() as u64)
-    } else {
-        ProgressBar::hidden()
-    };
-    let template = "{elapsed_precise} [{bar:40}] {pos}/{len} operations";
-    if let Ok(style) = ProgressStyle::with_template(template) {
-        bar.set_style(style);
+    let shown = work > 50_000_000;
+    if shown {
+        progress.stage("operations", ops.len() as u64);
     }
     for op in ops {
         arr.step(op)?;
-        bar.inc(1);
+        if shown {
+            progress.advance(1);
+        }
     }
     arr.finish();
-    bar.finish_and_clear();
+    if shown {
+        progress.finish();
+    }
     Ok(())
 }
 
@@ -337,38 +400,32 @@ fn write_png(
     for (i, c) in pixels.iter().enumerate() {
         img.put_pixel((i % width) as u32, (i / width) as u32, image::Rgb(*c));
     }
-    outs.write(out, |w| {
-        let mut buf = std::io::Cursor::new(Vec::new());
-        img.write_to(&mut buf, image::ImageFormat::Png)
-            .map_err(std::io::Error::other)?;
-        w.write_all(buf.get_ref())
-    })?;
+    outs.write(out, |w| crate::png::write_png(w, &img))?;
     Ok(())
 }
 
 /// Draw a `.csg` scene on panels (`--panel`): only the panels its solids touch are simulated.
 fn on_panels(
-    a: &Args,
+    job: &RenderJob,
     scene: &Scene,
-    cfg: &rtl_model::ArrayConfig,
+    cfg: &ArrayConfig,
     panel: (usize, usize),
 ) -> crate::Result<csgpix_draw::panels::PanelImage> {
     let Some(csg) = &scene.csg else {
         let message = "--panel needs one .csg scene (display lists have no footprint)";
         return Err(Error::options("--panel", message));
     };
-    if a.array.probe.is_some() {
+    if job.array.probe.is_some() {
         let message = "--panel and --probe do not go together: probes watch the whole array";
         return Err(Error::options("--panel", message));
     }
-    let ps =
-        csgpix_draw::panels::PanelScene::new(csg, a.view.into(), (cfg.width, cfg.height), cfg.fmt)
-            .map_err(|e| super::lib_errors::draw(e).context(a.scenes[0].display().to_string()))?;
-    let cycle = a.array.model == Model::Cycle;
+    let ps = csgpix_draw::panels::PanelScene::new(csg, job.view, (cfg.width, cfg.height), cfg.fmt)
+        .map_err(|e| super::lib_errors::draw(e).context(job.scenes[0].display().to_string()))?;
+    let cycle = job.array.model == Model::Cycle;
     Ok(csgpix_draw::panels::render_on_panels(
         &ps,
         panel,
         cycle,
-        &a.array.equations()?,
+        &job.array.equations()?,
     )?)
 }

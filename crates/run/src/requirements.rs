@@ -1,65 +1,78 @@
-//! `csgpix requirements`: what a scene needs of the hardware (panels, slabs, word, stack,
-//! label) and the clocks each costs, from the same analysis the simulator prunes with.
+//! The requirements job: what a scene needs of the hardware (panels, slabs, word, stack,
+//! label; §2.5, §4.3.2, §5.5) and the clocks each costs, from the same analysis the
+//! simulator prunes with.
 
+use crate::memory::Limit;
 use crate::Error;
 use std::path::PathBuf;
-use std::process::ExitCode;
 
 use csgpix_draw::compile::clip_scene_ops;
-use csgpix_draw::project::{project, Projected};
+use csgpix_draw::project::{project, Projected, View};
 use csgpix_scene::solid::CsgScene;
 use csgpix_voxel::blist::BlistTable;
 use csgpix_voxel::requirements::DepthLayout;
 use csgpix_voxel::{footprints, touched_panels, Footprint, PixelBox};
-use csgpix_voxel::{slice_ops, Grid, Slicer, SlicerOptions};
-use glam::DVec3;
+use csgpix_voxel::{slice_ops, Grid, Sampling, Slicer, SlicerOptions};
 use rtl_model::array::{check_program, program_cycles};
 use rtl_model::{ArrayConfig, Equations, WordFormat};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
-use super::array_args::{parse_size, parse_word};
-use super::voxelize::{parse_bounds, parse_panel, parse_res, PanelArg, Resolution, SamplingArg};
-use super::ViewArg;
+use crate::array_args::default_limit;
+use crate::grid::Resolution;
+use crate::progress::{warn_all, Progress};
+use crate::read::ReadSettings;
 
-#[derive(clap::Args, Debug)]
-#[command(after_help = "Examples:\n  \
-    csgpix requirements vectors/scenes/twelve.csg --res 128\n  \
-    csgpix requirements vectors/scenes/figure-5.2.csg --res 64 --panel 16x16 --precision 0.001 --json")]
-pub struct Args {
-    /// OpenSCAD `.csg` scene.
-    scene: PathBuf,
-    /// Voxel grid the scene is sliced on: N for a cube, or NXxNYxNZ.
-    #[arg(long, value_parser = parse_res, default_value = "128")]
-    res: Resolution,
-    /// Region, X0,Y0,Z0,X1,Y1,Z1 in scene units (default: the scene's bounds).
-    #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
-    bounds: Option<(DVec3, DVec3)>,
-    /// Panel size in pixels (NXxNY).
-    #[arg(long, default_value = "32x32", value_parser = parse_panel)]
-    panel: PanelArg,
-    /// The sampling convention of the voxelize run described (docs/voxelization.md).
-    #[arg(long, value_enum, default_value_t)]
-    sampling: SamplingArg,
-    /// Depth precision wanted, in scene units along Z: the narrowest word that keeps every
-    /// plane word within it on the whole array.
-    #[arg(long, default_value_t = 0.01)]
-    precision: f64,
-    /// Depth word FRACTION/INTEGER/OVERFLOW bits the scene is sliced with.
-    #[arg(long, default_value = "10/10/11", value_parser = parse_word)]
-    word: WordFormat,
-    /// View of the render program whose clipping stack is measured.
-    #[arg(long, value_enum, default_value_t)]
-    view: ViewArg,
-    /// Screen of the render program, WxH.
-    #[arg(long, default_value = "250x250", value_parser = parse_size)]
-    screen: (usize, usize),
-    /// Print as JSON.
-    #[arg(long)]
-    json: bool,
-    #[command(flatten)]
-    mem: super::memory::MaxMemory,
-    #[command(flatten)]
-    openscad: super::read_args::ReadArgs,
+/// Analyse a `.csg` scene for the hardware. `Default` is the documented defaults: a 128
+/// grid over the scene's bounds, 32x32 panels, centre sampling, precision 0.01, the thesis
+/// word, the iso view on a 250x250 screen.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct RequirementsJob {
+    /// The OpenSCAD `.csg` scene.
+    pub scene: PathBuf,
+    /// The voxel grid the scene is sliced on (`--res`).
+    #[serde(with = "crate::named::by_text")]
+    pub res: Resolution,
+    /// The region, X0,Y0,Z0 and X1,Y1,Z1 (`--bounds`; None: the scene's bounds).
+    pub bounds: Option<([f64; 3], [f64; 3])>,
+    /// Panel size in pixels (`--panel`; None: the whole array).
+    pub panel: Option<[usize; 2]>,
+    /// The sampling convention of the voxelize run described (`--sampling`).
+    #[serde(with = "crate::named::by_name")]
+    pub sampling: Sampling,
+    /// Depth precision wanted, scene units along Z (`--precision`).
+    pub precision: f64,
+    /// The depth word the scene is sliced with (`--word`).
+    #[serde(with = "crate::array_args::word_text")]
+    pub word: WordFormat,
+    /// View of the render program whose clipping stack is measured (`--view`).
+    #[serde(with = "crate::named::by_name")]
+    pub view: View,
+    /// Screen of the render program, width and height (`--screen`).
+    pub screen: (usize, usize),
+    /// The memory limit (`--max-memory`); not serialized: it is the machine's.
+    #[serde(skip, default = "default_limit")]
+    pub max_memory: Limit,
+    /// How the scene is read.
+    pub read: ReadSettings,
+}
+
+impl Default for RequirementsJob {
+    fn default() -> Self {
+        RequirementsJob {
+            scene: PathBuf::new(),
+            res: Resolution::Longest(128),
+            bounds: None,
+            panel: Some([32, 32]),
+            sampling: Sampling::Centre,
+            precision: 0.01,
+            word: WordFormat::THESIS,
+            view: View::Iso,
+            screen: (250, 250),
+            max_memory: default_limit(),
+            read: ReadSettings::default(),
+        }
+    }
 }
 
 /// Bytes per pixel of a slice the analysis holds (footprints and the slicer's per-pixel
@@ -74,90 +87,106 @@ fn memory_estimate(dims: [usize; 3]) -> u64 {
         .saturating_add(16 << 20)
 }
 
-#[derive(Serialize)]
-struct Solid {
+/// One solid's footprint and frame.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Solid {
     /// 1-based, in file order.
-    solid: usize,
-    pixels: Option<PixelBox>,
-    slabs: Option<(u32, u32)>,
-    panels: usize,
+    pub solid: usize,
+    pub pixels: Option<PixelBox>,
+    pub slabs: Option<(u32, u32)>,
+    pub panels: usize,
     /// Clocks of one P·Vz frame on the whole array.
-    frame_clocks: u64,
+    pub frame_clocks: u64,
 }
 
-#[derive(Serialize)]
-struct Report {
-    dims: [usize; 3],
-    panel: Option<[usize; 2]>,
-    panels_total: usize,
-    panels_touched: usize,
+/// What the scene needs (`--json` prints these fields, in this order).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct RequirementsReport {
+    pub dims: [usize; 3],
+    pub panel: Option<[usize; 2]>,
+    pub panels_total: usize,
+    pub panels_touched: usize,
     /// Slabs `first..=last` that hold any geometry.
-    slabs_with_geometry: Option<(u32, u32)>,
+    pub slabs_with_geometry: Option<(u32, u32)>,
     /// Clipping-stack levels: one P·Vz frame, and the scene's render program.
-    stack_levels_slice: usize,
-    stack_levels_render: usize,
+    pub stack_levels_slice: usize,
+    pub stack_levels_render: usize,
     /// The Blist label register and table.
-    label_bits: u32,
-    blist_rows: usize,
+    pub label_bits: u32,
+    pub blist_rows: usize,
     /// The word asked for and its worst plane-word error (scene units), and the narrowest word
     /// reaching `precision`.
-    word: String,
-    word_error: Option<f64>,
-    precision: f64,
-    word_needed: Option<String>,
-    word_needed_error: Option<f64>,
+    pub word: String,
+    pub word_error: Option<f64>,
+    pub precision: f64,
+    pub word_needed: Option<String>,
+    pub word_needed_error: Option<f64>,
     /// Clocks: every solid in every slab (as §5.5 counts), only the slabs each solid meets,
     /// and the render program.
-    cycles_all_frames: u64,
-    cycles_needed_frames: u64,
-    cycles_render: u64,
+    pub cycles_all_frames: u64,
+    pub cycles_needed_frames: u64,
+    pub cycles_render: u64,
     /// Pixel-clocks the array route simulates against the whole array's.
-    simulated_pixel_clocks: u64,
-    full_pixel_clocks: u64,
-    solids: Vec<Solid>,
+    pub simulated_pixel_clocks: u64,
+    pub full_pixel_clocks: u64,
+    pub solids: Vec<Solid>,
 }
 
-pub fn run(a: Args) -> crate::Result<ExitCode> {
-    let at = |e: Error| e.context(a.scene.display().to_string());
-    let scene = csgpix_openscad::read_scene_with(&a.scene, &a.openscad.read_options())?;
-    crate::read_args::print_warnings(&scene.warnings);
-    scene.require_convex(&a.scene.display().to_string(), "`requirements`")?;
-    if !(a.precision > 0.0 && a.precision.is_finite()) {
-        let message = format!("--precision {}: must be a positive number", a.precision);
-        return Err(Error::options("--precision", message));
+impl RequirementsJob {
+    /// The memory plan: per pixel of a slice of the grid over the scene's bounds (or
+    /// `bounds`), and the process; the scene is read to know its bounds.
+    pub fn estimate(&self) -> crate::Result<u64> {
+        let scene = csgpix_openscad::read_scene_with(&self.scene, &self.read.read_options())?;
+        Ok(memory_estimate(self.grid(&scene)?.dims))
     }
-    let grid = match a.bounds {
-        Some((lo, hi)) => a.res.spec().grid(lo, hi),
-        None => Grid::scene_bounds(&scene).and_then(|(lo, hi)| a.res.spec().grid(lo, hi)),
+
+    /// Read the scene, check the estimate, analyse.
+    pub fn run(&self, progress: &dyn Progress) -> crate::Result<RequirementsReport> {
+        let at = |e: Error| e.context(self.scene.display().to_string());
+        let scene = csgpix_openscad::read_scene_with(&self.scene, &self.read.read_options())?;
+        warn_all(progress, &scene.warnings);
+        scene.require_convex(&self.scene.display().to_string(), "`requirements`")?;
+        if !(self.precision > 0.0 && self.precision.is_finite()) {
+            let message = format!("--precision {}: must be a positive number", self.precision);
+            return Err(Error::options("--precision", message));
+        }
+        let grid = self.grid(&scene)?;
+        self.max_memory
+            .check(memory_estimate(grid.dims), "this analysis", "lower --res")?;
+        let opts = SlicerOptions {
+            fmt: self.word,
+            sampling: self.sampling,
+            ..SlicerOptions::default()
+        };
+        let slicer = Slicer::new(&scene, grid, opts).map_err(|e| at(e.into()))?;
+        analyse(self, &scene, &slicer).map_err(at)
     }
-    .map_err(|e| match e.kind() {
-        csgpix_scene::Kind::NeedsBounds => at(Error::options(
-            "--bounds",
-            "the scene has no solids: give --bounds",
-        )),
-        _ => at(e.into()),
-    })?;
-    a.mem
-        .check(memory_estimate(grid.dims), "this analysis", "lower --res")?;
-    let opts = SlicerOptions {
-        fmt: a.word,
-        sampling: a.sampling.sampling(),
-        ..SlicerOptions::default()
-    };
-    let slicer = Slicer::new(&scene, grid, opts).map_err(|e| at(e.into()))?;
-    let report = analyse(&a, &scene, &slicer).map_err(at)?;
-    if a.json {
-        let text = serde_json::to_string_pretty(&report)?;
-        println!("{text}");
-    } else {
-        print_text(&report);
+
+    /// The grid over `bounds` or the scene's bounds.
+    fn grid(&self, scene: &CsgScene) -> crate::Result<Grid> {
+        let at = |e: Error| e.context(self.scene.display().to_string());
+        let spec = self.res.spec();
+        match self.bounds {
+            Some((lo, hi)) => spec.grid(lo.into(), hi.into()),
+            None => Grid::scene_bounds(scene).and_then(|(lo, hi)| spec.grid(lo, hi)),
+        }
+        .map_err(|e| match e.kind() {
+            csgpix_scene::Kind::NeedsBounds => at(Error::options(
+                "--bounds",
+                "the scene has no solids: give --bounds",
+            )),
+            _ => at(e.into()),
+        })
     }
-    Ok(ExitCode::SUCCESS)
 }
 
-fn analyse(a: &Args, scene: &CsgScene, slicer: &Slicer) -> crate::Result<Report> {
+fn analyse(
+    a: &RequirementsJob,
+    scene: &CsgScene,
+    slicer: &Slicer,
+) -> crate::Result<RequirementsReport> {
     let [w, h, nz] = slicer.grid.dims;
-    let panel = a.panel.0.unwrap_or([w, h]);
+    let panel = a.panel.unwrap_or([w, h]);
     let fps = footprints(slicer)?;
     let set = Equations::Derived.set();
     let cfg = slicer.config();
@@ -194,9 +223,9 @@ fn analyse(a: &Args, scene: &CsgScene, slicer: &Slicer) -> crate::Result<Report>
     let needed_word = layout.word_for(a.precision, a.word);
     let (render_levels, render_cycles) = render_program(a, scene)?;
     let table = BlistTable::compile(&scene.root);
-    Ok(Report {
+    Ok(RequirementsReport {
         dims: slicer.grid.dims,
-        panel: a.panel.0,
+        panel: a.panel,
         panels_total: touched.len(),
         panels_touched: touched.iter().filter(|&&t| t).count(),
         slabs_with_geometry: slab_union(&fps),
@@ -246,14 +275,14 @@ fn slab_union(fps: &[Footprint]) -> Option<(u32, u32)> {
 
 /// Stack levels and clocks of the scene's render program (the scene's tree as a clipping
 /// function, §5.2.1) on the `--screen` array.
-fn render_program(a: &Args, scene: &CsgScene) -> crate::Result<(usize, u64)> {
+fn render_program(a: &RequirementsJob, scene: &CsgScene) -> crate::Result<(usize, u64)> {
     let (w, h) = a.screen;
     let cfg = ArrayConfig {
         fmt: a.word,
         ..ArrayConfig::new(w, h)
     };
     let Projected { lists, clip } =
-        project(scene, a.view.into(), w, h, &cfg.fmt).map_err(super::lib_errors::draw)?;
+        project(scene, a.view, w, h, &cfg.fmt).map_err(super::lib_errors::draw)?;
     let Some(clip) = clip else {
         return Ok((0, 0));
     };
@@ -273,53 +302,4 @@ fn render_program(a: &Args, scene: &CsgScene) -> crate::Result<(usize, u64)> {
 
 fn word_name(f: &WordFormat) -> String {
     format!("{}/{}/{} (N_D = {})", f.frac, f.int, f.ovf, f.bits())
-}
-
-fn print_text(r: &Report) {
-    let pct = |a: u64, b: u64| 100.0 * a as f64 / b.max(1) as f64;
-    println!("grid {}x{}x{}", r.dims[0], r.dims[1], r.dims[2]);
-    println!(
-        "panels: {} of {} touched ({})",
-        r.panels_touched,
-        r.panels_total,
-        r.panel.map_or("whole array".into(), |p| format!(
-            "{}x{} pixels",
-            p[0], p[1]
-        ))
-    );
-    match r.slabs_with_geometry {
-        Some((f, l)) => println!("slabs with geometry: {f}..={l} of 0..={}", r.dims[2] - 1),
-        None => println!("slabs with geometry: none"),
-    }
-    println!(
-        "clipping stack: {} levels per slice, {} for the render program",
-        r.stack_levels_slice, r.stack_levels_render
-    );
-    println!(
-        "Blist: {} rows, label register {} bits",
-        r.blist_rows, r.label_bits
-    );
-    println!(
-        "word {}: worst plane-word error {} scene units",
-        r.word,
-        r.word_error
-            .map_or("- (slabs do not fit)".into(), |e| format!("{e:.3e}"))
-    );
-    match (&r.word_needed, r.word_needed_error) {
-        (Some(w), Some(e)) => println!("word for precision {}: {w}, error {e:.3e}", r.precision),
-        _ => println!("word for precision {}: none up to 62 bits", r.precision),
-    }
-    println!(
-        "clocks: {} for every solid in every slab, {} for the slabs each meets ({:.1}%); render {}",
-        r.cycles_all_frames,
-        r.cycles_needed_frames,
-        pct(r.cycles_needed_frames, r.cycles_all_frames),
-        r.cycles_render
-    );
-    println!(
-        "simulated pixel-clocks on the array route: {} of {} ({:.1}%)",
-        r.simulated_pixel_clocks,
-        r.full_pixel_clocks,
-        pct(r.simulated_pixel_clocks, r.full_pixel_clocks)
-    );
 }

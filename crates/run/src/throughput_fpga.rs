@@ -117,30 +117,3 @@ pub fn report(path: &Path, hw: &Hardware, screen: (usize, usize)) -> crate::Resu
         clock_ratio: clock_hz / THESIS_CLOCK_HZ,
     })
 }
-
-/// The report's lines in `throughput`'s text output.
-pub fn print(r: &FpgaReport, screen: (usize, usize)) {
-    let (n, m) = r.panel;
-    println!(
-        "\n--fpga {}: {}, a {n}x{m} panel ({} pixels, {:.1} LCs each) at {:.2} MHz \
-         ({:.2}x the thesis's 10 MHz); critical path {}",
-        r.report,
-        r.device,
-        n * m,
-        r.lc_per_pixel,
-        r.clock_hz / 1e6,
-        r.clock_ratio,
-        r.critical_path
-    );
-    println!(
-        "  eq. 2.3, one panel: {:.0} surfaces/s; devices for a {}x{} screen: {}",
-        r.surfaces_per_second, screen.0, screen.1, r.devices_for_screen
-    );
-    println!(
-        "  eq. 2.5 (Table 2.1 reading), the screen: {:.0} surfaces/frame at {:.2} MHz, {:.0} at \
-         10 MHz",
-        r.screen_surfaces_per_frame,
-        r.clock_hz / 1e6,
-        r.screen_surfaces_per_frame_thesis
-    );
-}

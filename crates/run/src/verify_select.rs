@@ -1,29 +1,56 @@
-//! `csgpix verify-select`: every equation on every golden vector row.
+//! The verify-select job: every select equation on every golden vector row (§2.3.3).
 
 use std::path::PathBuf;
-use std::process::ExitCode;
 
 use rtl_model::select::verify::{verify_table, SignalReport, VectorFile};
 use rtl_model::select::{Table, GOLDEN};
 use rtl_model::Equations;
+use serde::{Deserialize, Serialize};
 
-use super::EquationsArg;
+use crate::progress::Progress;
 
-#[derive(clap::Args, Debug)]
-#[command(
-    after_help = "Exit status: 0 when every care row matches, 1 on any mismatch, 2 on bad input.\n\n\
-    Examples:\n  csgpix verify-select\n  csgpix verify-select --equations printed --json"
-)]
-pub struct Args {
-    /// Equation set to check.
-    #[arg(long, value_enum, default_value_t)]
-    equations: EquationsArg,
-    /// Read the PLA files from this directory instead of the built-in golden vectors.
-    #[arg(long)]
-    vectors: Option<PathBuf>,
-    /// Print a JSON array of {signal, rows, mismatches}.
-    #[arg(long)]
-    json: bool,
+/// Check an equation set against the golden vectors. `Default`: the derived equations, the
+/// built-in vectors.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct VerifySelectJob {
+    /// The equation set to check (`--equations`).
+    #[serde(with = "crate::named::by_name")]
+    pub equations: Equations,
+    /// A directory of PLA files to read instead of the built-in golden vectors (`--vectors`).
+    pub vectors: Option<PathBuf>,
+}
+
+/// The verdict on every signal (`--json` prints `signals`, an array).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct VerifySelectReport {
+    /// The equation set checked.
+    #[serde(skip)]
+    pub equations: Equations,
+    /// One verdict per signal, table by table.
+    pub signals: Vec<SignalReport>,
+}
+
+impl VerifySelectReport {
+    /// The care rows where an equation disagrees, over all signals.
+    pub fn mismatches(&self) -> usize {
+        self.signals.iter().map(|r| r.mismatches.len()).sum()
+    }
+}
+
+impl VerifySelectJob {
+    /// The memory plan: the vectors are a few kilobytes; nothing grows.
+    pub fn estimate(&self) -> crate::Result<u64> {
+        Ok(0)
+    }
+
+    /// Check every signal.
+    pub fn run(&self, _: &dyn Progress) -> crate::Result<VerifySelectReport> {
+        Ok(VerifySelectReport {
+            equations: self.equations,
+            signals: verify(self.equations, &self.vectors)?,
+        })
+    }
 }
 
 fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> crate::Result<VectorFile> {
@@ -52,49 +79,4 @@ pub fn verify(eq: Equations, vectors: &Option<PathBuf>) -> crate::Result<Vec<Sig
         reports.extend(verify_table(&set, t, &file)?);
     }
     Ok(reports)
-}
-
-pub fn run(a: Args) -> crate::Result<ExitCode> {
-    let eq: Equations = a.equations.into();
-    let reports = verify(eq, &a.vectors)?;
-    let bad: usize = reports.iter().map(|r| r.mismatches.len()).sum();
-    if a.json {
-        println!("{}", serde_json::to_string_pretty(&reports)?);
-    } else {
-        print_text(eq, &reports);
-    }
-    Ok(if bad == 0 {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
-}
-
-fn print_text(eq: Equations, reports: &[SignalReport]) {
-    println!("equation set: {}", eq.name());
-    for r in reports {
-        let verdict = if r.mismatches.is_empty() {
-            "ok"
-        } else {
-            "MISMATCH"
-        };
-        println!(
-            "{:<10} {:>4} rows  {:>3} mismatches  {verdict}",
-            r.signal,
-            r.rows,
-            r.mismatches.len()
-        );
-        for m in &r.mismatches {
-            println!(
-                "    {}  expected {} got {}   [{}]",
-                m.inputs, m.expected as u8, m.got as u8, m.case
-            );
-        }
-    }
-    let bad: usize = reports.iter().map(|r| r.mismatches.len()).sum();
-    let rows: usize = reports.iter().map(|r| r.rows).sum();
-    println!(
-        "{} signals, {rows} rows checked, {bad} mismatches",
-        reports.len()
-    );
 }
