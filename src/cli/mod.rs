@@ -14,9 +14,13 @@ mod completions;
 mod export_verilog;
 mod gen_vectors;
 mod man;
+mod phantom;
+mod plot;
 pub mod progress;
 mod render;
 mod requirements;
+mod sculpt;
+mod study;
 mod throughput;
 mod verify_select;
 
@@ -58,7 +62,7 @@ pub enum Cmd {
     /// Voxelize a CSG scene slice by slice through the array; write a NRRD volume or an OME-Zarr store.
     Voxelize(run::voxelize::Args),
     /// Carve (or add) with a spherical tool along a path in the hashed octree; write the mesh.
-    Sculpt(run::sculpt::Args),
+    Sculpt(sculpt::Args),
     /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
     Blist(blist::Args),
     /// What a scene needs of the hardware: panels, slabs, word, stack, label, and the clocks.
@@ -66,9 +70,9 @@ pub enum Cmd {
     /// Throughput: eq. 2.3-2.5 and 5.1, Table 2.1, and a scene's frame rate on panels (§2.5).
     Throughput(throughput::Args),
     /// Sweep depth-word bits, tessellation, slabs and model; error against cost as CSV and PNG.
-    Study(run::study::Args),
+    Study(study::Args),
     /// Write the project's CT-head phantom (Figure 5.6's dataset) as NRRD.
-    Phantom(run::phantom::Args),
+    Phantom(phantom::Args),
     /// Print the completion script of a shell (bash, zsh, fish, elvish, powershell).
     Completions(completions::Args),
     /// Print the manual page (roff).
@@ -79,16 +83,16 @@ pub enum Cmd {
 pub fn run(cli: Cli) -> run::Result<ExitCode> {
     let result = match cli.cmd {
         Cmd::GenVectors(a) => gen_vectors::run(a),
-        Cmd::Phantom(a) => run::phantom::run(a),
+        Cmd::Phantom(a) => phantom::run(a),
         Cmd::VerifySelect(a) => verify_select::run(a),
         Cmd::ExportVerilog(a) => export_verilog::run(a),
         Cmd::Render(a) => render::run(a),
         Cmd::Voxelize(a) => run::voxelize::run(a),
-        Cmd::Sculpt(a) => run::sculpt::run(a),
+        Cmd::Sculpt(a) => sculpt::run(a),
         Cmd::Blist(a) => blist::run(a),
         Cmd::Requirements(a) => requirements::run(a),
         Cmd::Throughput(a) => throughput::run(a),
-        Cmd::Study(a) => run::study::run(a),
+        Cmd::Study(a) => study::run(a),
         Cmd::Completions(a) => completions::run(a),
         Cmd::Man(a) => man::run(a),
     };

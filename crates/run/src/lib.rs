@@ -43,6 +43,8 @@ pub mod memory;
 
 pub mod phantom;
 pub mod plot;
+// TRANSITION (issue 39): throughput's charts drawn to files, until they go through `plot::Charts`.
+pub mod plot_file;
 pub mod png;
 pub mod progress;
 pub mod read;

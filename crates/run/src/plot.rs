@@ -1,15 +1,13 @@
-//! Line charts as PNG, for the figures the thesis draws as curves (Figure 2.12, Figure 5.11)
-//! and for the accuracy/cost sweeps.
-//!
-//! Text is drawn with the bundled DejaVu Sans (`assets/fonts`, its licence beside it), so a
-//! chart looks the same on every machine and needs no system fonts.
+//! Line charts as data, for the figures the thesis draws as curves (Figure 2.12, Figure 5.11)
+//! and for the accuracy/cost sweeps of `study`: the curves, the axes, the titles, the ranges
+//! and the legend's corner. Drawing them is not the run layer's: a job that writes charts
+//! takes a [`Charts`] (the binary's draws with plotters, `src/cli/plot.rs`) and stages the
+//! PNG bytes it returns with its other files.
 
-use plotters::prelude::*;
-use std::path::Path;
-use std::sync::Once;
+use serde::Serialize;
 
 /// One curve: its legend and its points, drawn joined in the order given.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Series {
     /// The legend.
     pub label: String,
@@ -18,7 +16,7 @@ pub struct Series {
 }
 
 /// A chart of curves over shared axes.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Chart {
     /// The title above the plot.
     pub title: String,
@@ -34,29 +32,31 @@ pub struct Chart {
     pub series: Vec<Series>,
 }
 
+/// The font of every chart's text: DejaVu Sans, bundled (`assets/fonts`, its licence beside
+/// it), so a chart needs no system fonts.
+pub const FONT_TTF: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+
 /// An axis range, low to high.
-type Span = (f64, f64);
+pub type Span = (f64, f64);
 
-static FONT: Once = Once::new();
-
-/// `10^self` or `other`, the smaller.
-trait Exp10Min {
-    fn exp10_min(self, other: f64) -> f64;
+/// A corner of the plot, where the legend goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Corner {
+    /// Bottom left.
+    LowerLeft,
+    /// Bottom right.
+    LowerRight,
+    /// Top left.
+    UpperLeft,
+    /// Top right.
+    UpperRight,
 }
 
-impl Exp10Min for f64 {
-    fn exp10_min(self, other: f64) -> f64 {
-        10f64.powf(self).min(other)
-    }
-}
-
-fn register_font() {
-    FONT.call_once(|| {
-        let bytes: &'static [u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
-        // The bundled font is a valid TrueType file; if it ever were not, text would be
-        // missing from the chart, which the chart tests would see as a failed draw.
-        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, bytes);
-    });
+/// What draws a chart as a PNG image: the binary's implementation draws with plotters and
+/// the bundled DejaVu Sans, so a chart looks the same on every machine.
+pub trait Charts: Sync {
+    /// The chart drawn into a PNG of `width` × `height` pixels, as the file's bytes.
+    fn png(&self, chart: &Chart, width: u32, height: u32) -> Result<Vec<u8>, PlotError>;
 }
 
 /// A chart that could not be drawn.
@@ -77,16 +77,28 @@ pub enum PlotError {
     /// The backend could not draw or write the file.
     #[error("{}: {message}", csgpix_output::OneLine(path.display()))]
     Draw {
-        /// The PNG file.
+        /// The PNG file (or, drawn in memory, the chart's title).
         path: std::path::PathBuf,
         /// The backend's message.
         message: String,
     },
 }
 
+/// `10^self` or `other`, the smaller.
+trait Exp10Min {
+    fn exp10_min(self, other: f64) -> f64;
+}
+
+impl Exp10Min for f64 {
+    fn exp10_min(self, other: f64) -> f64 {
+        10f64.powf(self).min(other)
+    }
+}
+
 impl Chart {
-    /// The range of the data along x and y, padded so that no point sits on the frame.
-    fn ranges(&self) -> Result<(Span, Span), PlotError> {
+    /// The range of the data along x and y, padded so that no point sits on the frame; an
+    /// error where a point is not finite or a log axis has a value that is not positive.
+    pub fn ranges(&self) -> Result<(Span, Span), PlotError> {
         let pts = || self.series.iter().flat_map(|s| s.points.iter().copied());
         if pts().any(|(x, y)| !x.is_finite() || !y.is_finite()) {
             return Err(PlotError::NotFinite {
@@ -120,51 +132,9 @@ impl Chart {
         ))
     }
 
-    /// Draw the chart into a PNG of `width` × `height` pixels at `path`.
-    pub fn write_png(&self, path: &Path, width: u32, height: u32) -> Result<(), PlotError> {
-        register_font();
-        let ranges = self.ranges()?;
-        let corner = self.legend_corner(ranges);
-        // plotters' error is generic over its backend: kept as its message.
-        let err = |e: &dyn std::fmt::Display| PlotError::Draw {
-            path: path.to_path_buf(),
-            message: e.to_string(),
-        };
-        let root = BitMapBackend::new(path, (width, height)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| err(&e))?;
-        match (self.log_x, self.log_y) {
-            (false, false) => self.draw(
-                &root,
-                ranges.0 .0..ranges.0 .1,
-                ranges.1 .0..ranges.1 .1,
-                corner,
-            ),
-            (true, false) => self.draw(
-                &root,
-                (ranges.0 .0..ranges.0 .1).log_scale(),
-                ranges.1 .0..ranges.1 .1,
-                corner,
-            ),
-            (false, true) => self.draw(
-                &root,
-                ranges.0 .0..ranges.0 .1,
-                (ranges.1 .0..ranges.1 .1).log_scale(),
-                corner,
-            ),
-            (true, true) => self.draw(
-                &root,
-                (ranges.0 .0..ranges.0 .1).log_scale(),
-                (ranges.1 .0..ranges.1 .1).log_scale(),
-                corner,
-            ),
-        }
-        .map_err(|e| err(&e))?;
-        root.present().map_err(|e| err(&e))
-    }
-
     /// The corner of the plot farthest from the data, for the legend: the one whose quarter
     /// (in axis coordinates, log where the axis is) holds the fewest curve samples.
-    fn legend_corner(&self, (xs, ys): (Span, Span)) -> SeriesLabelPosition {
+    pub fn legend_corner(&self, (xs, ys): (Span, Span)) -> Corner {
         let norm = |v: f64, (lo, hi): Span, log: bool| {
             if log {
                 (v.ln() - lo.ln()) / (hi.ln() - lo.ln())
@@ -191,71 +161,21 @@ impl Chart {
             }
         }
         let corners = [
-            SeriesLabelPosition::LowerLeft,
-            SeriesLabelPosition::LowerRight,
-            SeriesLabelPosition::UpperLeft,
-            SeriesLabelPosition::UpperRight,
+            Corner::LowerLeft,
+            Corner::LowerRight,
+            Corner::UpperLeft,
+            Corner::UpperRight,
         ];
         let best = (0..4)
             .min_by_key(|&i| (counts[i], [3, 2, 1, 0][i]))
             .unwrap_or(3);
-        corners[best].clone()
-    }
-
-    fn draw<X, Y>(
-        &self,
-        root: &DrawingArea<BitMapBackend, plotters::coord::Shift>,
-        x: X,
-        y: Y,
-        corner: SeriesLabelPosition,
-    ) -> Result<(), Box<dyn std::error::Error + '_>>
-    where
-        X: plotters::coord::ranged1d::AsRangedCoord<Value = f64>,
-        Y: plotters::coord::ranged1d::AsRangedCoord<Value = f64>,
-        X::CoordDescType: plotters::coord::ranged1d::ValueFormatter<f64>,
-        Y::CoordDescType: plotters::coord::ranged1d::ValueFormatter<f64>,
-    {
-        let mut chart = ChartBuilder::on(root)
-            .caption(&self.title, ("sans-serif", 20))
-            .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(70)
-            .build_cartesian_2d(x, y)?;
-        chart
-            .configure_mesh()
-            .x_desc(&self.x_label)
-            .y_desc(&self.y_label)
-            .label_style(("sans-serif", 13))
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
-            .draw()?;
-        for (i, s) in self.series.iter().enumerate() {
-            let colour = Palette99::pick(i).to_rgba();
-            chart
-                .draw_series(LineSeries::new(
-                    s.points.iter().copied(),
-                    colour.stroke_width(2),
-                ))?
-                .label(&s.label)
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2))
-                });
-            chart.draw_series(s.points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
-        }
-        chart
-            .configure_series_labels()
-            .position(corner)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 13))
-            .draw()?;
-        Ok(())
+        corners[best]
     }
 }
 
 /// A tick label: whole numbers without a fraction (up to 1e6), powers of ten from 1e6 on as
 /// 1e7, other large or small values with 3 significant digits.
-fn tick(v: f64) -> String {
+pub fn tick(v: f64) -> String {
     let a = v.abs();
     if a >= 1e6 || (a > 0.0 && a < 1e-3) {
         let s = format!("{v:.2e}");
@@ -290,25 +210,6 @@ mod tests {
     }
 
     #[test]
-    fn draws_a_png_with_ink_on_it() {
-        let dir = tempfile::tempdir().unwrap();
-        for log in [false, true] {
-            let path = dir.path().join(format!("c{log}.png"));
-            chart(log, vec![(1.0, 2.0), (10.0, 40.0), (100.0, 3.0)])
-                .write_png(&path, 320, 240)
-                .unwrap();
-            let img = image::open(&path).unwrap().to_rgb8();
-            assert_eq!(img.dimensions(), (320, 240));
-            // Not blank: text and curve leave dark pixels.
-            let dark = img
-                .pixels()
-                .filter(|p| p.0.iter().all(|&c| c < 100))
-                .count();
-            assert!(dark > 200, "{dark} dark pixels");
-        }
-    }
-
-    #[test]
     fn tick_labels_are_short() {
         assert_eq!(tick(100_000_000.0), "1e8");
         assert_eq!(tick(2_500_000.0), "2.5e6");
@@ -318,15 +219,32 @@ mod tests {
     }
 
     #[test]
-    fn refuses_bad_values_without_writing() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("c.png");
-        assert!(chart(true, vec![(0.0, 1.0)])
-            .write_png(&path, 100, 100)
-            .is_err());
-        assert!(chart(false, vec![(f64::NAN, 1.0)])
-            .write_png(&path, 100, 100)
-            .is_err());
-        assert!(!path.exists());
+    fn refuses_bad_values() {
+        let e = chart(true, vec![(0.0, 1.0)]).ranges().unwrap_err();
+        assert_eq!(e.to_string(), "t: a value on a log axis is not positive");
+        let e = chart(false, vec![(f64::NAN, 1.0)]).ranges().unwrap_err();
+        assert_eq!(e.to_string(), "t: a point is not finite");
+    }
+
+    #[test]
+    fn ranges_pad_the_data_and_reach_the_decade_below_on_log_axes() {
+        let (x, y) = chart(false, vec![(0.0, 10.0), (10.0, 20.0)])
+            .ranges()
+            .unwrap();
+        assert_eq!((x, y), ((-0.5, 10.5), (9.0, 21.0)));
+        let (x, _) = chart(true, vec![(3.0, 1.0), (30.0, 2.0)]).ranges().unwrap();
+        assert_eq!(x, (1.0, 45.0));
+    }
+
+    /// A curve rising from the lower left to the upper right leaves the other two corners
+    /// free; of those the upper left is preferred.
+    #[test]
+    fn the_legend_goes_where_the_curves_are_not() {
+        let c = chart(false, vec![(0.0, 0.0), (1.0, 1.0)]);
+        let r = c.ranges().unwrap();
+        assert_eq!(c.legend_corner(r), Corner::UpperLeft);
+        let c = chart(false, vec![(0.0, 1.0), (1.0, 0.0)]);
+        let r = c.ranges().unwrap();
+        assert_eq!(c.legend_corner(r), Corner::UpperRight);
     }
 }

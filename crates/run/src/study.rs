@@ -1,114 +1,137 @@
-//! `csgpix study`: sweep the knobs that trade speed for accuracy when voxelizing a scene
+//! The study job: sweep the knobs that trade speed for accuracy when voxelizing a scene
 //! through the array (depth-word fraction bits §2.3.1/§2.5, tessellation, slabs §4.4/§5.5,
-//! model), and write the figures as CSV and PNG charts.
+//! model), and write the figures as CSV and PNG charts ([`crate::sweep`]).
 
 use std::path::PathBuf;
-use std::process::ExitCode;
-
-use csgpix_output::{Out, Outputs};
 use std::time::Instant;
 
-use super::voxelize::SamplingArg;
-use crate::sweep::{charts, csv, prepare, Model, Point, Prepared, Sweep};
+use csgpix_output::{Out, Outputs};
 use csgpix_voxel::memory_estimate;
-use indicatif::{ProgressBar, ProgressStyle};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
-#[derive(clap::Args, Debug)]
-#[command(
-    after_help = "Writes DIR/study.csv (one row per point) and the charts DIR/bits.png, \
-    DIR/fragments.png, DIR/depth.png, DIR/wall.png. See docs/tradeoffs.md for the columns.\n\n\
-    Examples:\n  \
-    csgpix study vectors/scenes/cube-minus-cylinder.csg --models cycle,word,float -o study/cmc\n  \
-    csgpix study vectors/scenes/csg-logo.csg --bits 4,8,12 --fragments 16,32 --slabs 32 -o logo\n  \
-    csgpix study vectors/scenes/figure-5.2.csg --res 64 --json -o fig52 > fig52.json\n  \
-    csgpix study scene.csg --bits 10 --int-bits 8 --ovf-bits 4 --slabs 16,32,64,128 -o out"
-)]
-pub struct Args {
+use crate::memory::Limit;
+use crate::plot::{Chart, Charts};
+use crate::progress::Progress;
+use crate::read::ReadSettings;
+use crate::sweep::{charts, csv, prepare, Point, Prepared, Sweep};
+
+/// The charts' size in pixels.
+const CHART_SIZE: (u32, u32) = (800, 560);
+
+/// Sweep `sweep` over the `.csg` scene `scene`; write `out`/study.csv and the charts.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct StudyJob {
     /// OpenSCAD `.csg` scene.
-    scene: PathBuf,
+    pub scene: PathBuf,
     /// Output directory (created if missing; files are written only when the whole sweep
     /// succeeded).
-    #[arg(short = 'o', long)]
-    out: PathBuf,
-    /// Fraction bits F of the depth word to sweep (N_D = F + I + O + 1 clocks per plane).
-    #[arg(long, value_delimiter = ',', default_values_t = [4u32, 6, 8, 10, 12, 16])]
-    bits: Vec<u32>,
-    /// `$fn` of every sphere and cylinder to sweep (the scene's own `$fn` is overridden).
-    #[arg(long, value_delimiter = ',', default_values_t = [8u32, 16, 32, 64])]
-    fragments: Vec<u32>,
-    /// Slabs along Z to sweep (voxel resolution along Z).
-    #[arg(long, value_delimiter = ',', default_values_t = [16usize, 32, 64, 128])]
-    slabs: Vec<usize>,
-    /// Models to run: `cycle` (every frame clock by clock: the same voxels and clocks as
-    /// `word`, at 20 to 300 times its wall time, so not run unless asked), `word` (the array's
-    /// plane words), `float` (exact, not hardware).
-    #[arg(long, value_parser = super::model_parser(), value_delimiter = ',', default_value = "word,float")]
-    models: Vec<Model>,
-    /// Voxels along X and Y (the array is RES×RES pixels).
-    #[arg(long, default_value_t = 32)]
-    res: usize,
-    /// Integer bits I of the depth word, fixed during the sweep.
-    #[arg(long, default_value_t = 10)]
-    int_bits: u32,
-    /// Overflow bits O of the depth word, fixed during the sweep.
-    #[arg(long, default_value_t = 11)]
-    ovf_bits: u32,
-    /// The sampling convention of every voxelization (docs/voxelization.md).
-    #[arg(long, value_enum, default_value_t)]
-    sampling: SamplingArg,
-    #[command(flatten)]
-    mem: super::memory::MaxMemory,
-    #[command(flatten)]
-    openscad: super::read_args::ReadArgs,
-    /// Print every point as JSON.
-    #[arg(long)]
-    json: bool,
+    pub out: PathBuf,
+    /// The ranges swept and the fixed word bits, resolution and sampling.
+    #[serde(flatten)]
+    pub sweep: Sweep,
+    /// The memory limit in MiB (`--max-memory`); None: the memory available when it runs.
+    pub max_memory: Option<u64>,
+    /// openscad's time limit (`--openscad-timeout`; `--strict` does not apply: a study reads
+    /// `.csg` text).
+    pub read: ReadSettings,
 }
 
-#[derive(Serialize)]
-struct Report<'a> {
-    scene: String,
-    sweep: &'a Sweep,
+/// What a study measured. The JSON fields in this order, as `--json` prints them.
+#[derive(Clone, Debug, Serialize)]
+pub struct StudyReport {
+    /// The scene's file name.
+    pub scene: String,
+    /// The sweep, normalized (sorted, without repeats).
+    pub sweep: Sweep,
     /// The grid box shared by every point, scene units.
-    bounds: [[f64; 3]; 2],
-    points: &'a [Point],
-    wall_seconds: f64,
+    pub bounds: [[f64; 3]; 2],
+    /// Every point, slabs outermost, then fragments, bits and models.
+    pub points: Vec<Point>,
+    /// The sweep's wall time.
+    pub wall_seconds: f64,
+    /// The CSV written (text only).
+    #[serde(skip)]
+    pub csv: PathBuf,
+    /// The charts' data, `(file name, chart)`: staged as PNG beside the CSV when the job ran
+    /// with a drawer ([`StudyJob::run_with_charts`]); for a caller to draw otherwise.
+    #[serde(skip)]
+    pub charts: Vec<(&'static str, Chart)>,
 }
 
-pub fn run(a: Args) -> crate::Result<ExitCode> {
-    let file = a.scene.display().to_string();
-    let text = csgpix_openscad::scene_text_with(&a.scene, a.openscad.limit())?;
-    let sweep = Sweep {
-        bits: a.bits.clone(),
-        fragments: a.fragments.clone(),
-        slabs: a.slabs.clone(),
-        models: a.models.clone(),
-        res: a.res,
-        int_bits: a.int_bits,
-        ovf_bits: a.ovf_bits,
-        sampling: a.sampling.sampling(),
-    };
-    let mut outs = Outputs::new();
-    let dir = outs.dir("-o", &a.out)?;
-    let prep = prepare(&text, &file, sweep)?;
-    check_memory(&prep, a.mem)?;
-    let t0 = Instant::now();
-    let bar = progress(prep.sweep.len());
-    let points = prep.run(&|| bar.inc(1))?;
-    bar.finish_and_clear();
-    let wall = t0.elapsed().as_secs_f64();
-    let name = a
-        .scene
-        .file_name()
-        .map_or(file.clone(), |n| n.to_string_lossy().into());
-    write_outputs(&mut outs, dir, &points, &name)?;
-    outs.commit()?;
-    report(&a, &prep, &points, &name, wall)
+impl StudyJob {
+    /// The memory plan (docs/memory.md): the scene read at every tessellation, then the
+    /// largest grid's voxelization with the reference and float volumes beside it.
+    pub fn estimate(&self) -> crate::Result<u64> {
+        self.prepare().and_then(|p| need(&p))
+    }
+
+    /// Run the sweep and write study.csv alone: a caller without a chart drawer gets the
+    /// charts' data in the report.
+    pub fn run(&self, progress: &dyn Progress) -> crate::Result<StudyReport> {
+        self.sweep_and_write(None, progress)
+    }
+
+    /// Run the sweep and write study.csv and the charts, drawn by `charts`, as one
+    /// directory: all of them or, on any error or signal, none.
+    pub fn run_with_charts(
+        &self,
+        charts: &dyn Charts,
+        progress: &dyn Progress,
+    ) -> crate::Result<StudyReport> {
+        self.sweep_and_write(Some(charts), progress)
+    }
+
+    /// The memory limit, named as the command line names it.
+    fn limit(&self) -> Limit {
+        Limit::new(self.max_memory, "--max-memory")
+    }
+
+    /// The scene read at every tessellation, every grid and word laid on it.
+    fn prepare(&self) -> crate::Result<Prepared> {
+        let file = self.scene.display().to_string();
+        let text = csgpix_openscad::scene_text_with(&self.scene, self.read.limit())?;
+        prepare(&text, &file, self.sweep.clone())
+    }
+
+    fn sweep_and_write(
+        &self,
+        drawer: Option<&dyn Charts>,
+        progress: &dyn Progress,
+    ) -> crate::Result<StudyReport> {
+        let file = self.scene.display().to_string();
+        let text = csgpix_openscad::scene_text_with(&self.scene, self.read.limit())?;
+        let mut outs = Outputs::new();
+        let dir = outs.dir("-o", &self.out)?;
+        let prep = prepare(&text, &file, self.sweep.clone())?;
+        self.limit()
+            .check(need(&prep)?, "this sweep", "lower --res or --slabs")?;
+        let t0 = Instant::now();
+        progress.stage("points", prep.sweep.len() as u64);
+        let points = prep.run(&|| progress.advance(1))?;
+        progress.finish();
+        let wall_seconds = t0.elapsed().as_secs_f64();
+        let scene = self
+            .scene
+            .file_name()
+            .map_or(file, |n| n.to_string_lossy().into());
+        let charts = charts(&points, &scene);
+        write_outputs(&mut outs, dir, &points, &charts, drawer)?;
+        outs.commit()?;
+        Ok(StudyReport {
+            scene,
+            bounds: [prep.min.to_array(), prep.max.to_array()],
+            sweep: prep.sweep,
+            points,
+            wall_seconds,
+            csv: self.out.join("study.csv"),
+            charts,
+        })
+    }
 }
 
 /// The largest grid's voxelization, and the reference and float volumes kept beside it.
-fn check_memory(prep: &Prepared, mem: super::memory::MaxMemory) -> crate::Result<()> {
+fn need(prep: &Prepared) -> crate::Result<u64> {
     let slabs = prep.sweep.slabs.iter().copied().max().unwrap_or(1);
     let grid = prep.grid(slabs)?;
     let solids = prep
@@ -117,55 +140,100 @@ fn check_memory(prep: &Prepared, mem: super::memory::MaxMemory) -> crate::Result
         .map(|(_, s)| s.solids.len())
         .max()
         .unwrap_or(0);
-    let need = memory_estimate(&grid, solids, rayon::current_num_threads()).saturating_mul(3);
-    Ok(mem.check(need, "this sweep", "lower --res or --slabs")?)
+    Ok(memory_estimate(&grid, solids, rayon::current_num_threads()).saturating_mul(3))
 }
 
-fn progress(points: usize) -> ProgressBar {
-    let bar = ProgressBar::new(points as u64);
-    if let Ok(style) =
-        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} points")
-    {
-        bar.set_style(style);
-    }
-    bar
-}
-
-/// Stage study.csv and the charts as the files of directory output `dir`.
-fn write_outputs(outs: &mut Outputs, dir: Out, points: &[Point], scene: &str) -> crate::Result<()> {
+/// Stage study.csv and (with a drawer) the charts as the files of directory output `dir`.
+fn write_outputs(
+    outs: &mut Outputs,
+    dir: Out,
+    points: &[Point],
+    charts: &[(&'static str, Chart)],
+    drawer: Option<&dyn Charts>,
+) -> crate::Result<()> {
     let table = csv(points);
     outs.write_in(dir, "study.csv", |w| w.write_all(table.as_bytes()))?;
-    for (name, chart) in charts(points, scene) {
-        chart.write_png(&outs.stage_path(dir, name)?, 800, 560)?;
+    if let Some(drawer) = drawer {
+        let (width, height) = CHART_SIZE;
+        for (name, chart) in charts {
+            let png = drawer.png(chart, width, height)?;
+            outs.write_in(dir, name, |w| w.write_all(&png))?;
+        }
     }
     Ok(())
 }
 
-fn report(
-    a: &Args,
-    prep: &Prepared,
-    points: &[Point],
-    scene: &str,
-    wall: f64,
-) -> crate::Result<ExitCode> {
-    if a.json {
-        let r = Report {
-            scene: scene.into(),
-            sweep: &prep.sweep,
-            bounds: [prep.min.to_array(), prep.max.to_array()],
-            points,
-            wall_seconds: wall,
-        };
-        let text = serde_json::to_string_pretty(&r)?;
-        println!("{text}");
-    } else {
-        let worst = points.iter().map(|p| p.diff_ref).max().unwrap_or(0);
-        println!(
-            "{}: {scene}, {} points, at most {worst} voxels differ from the reference; \
-             charts beside it; {wall:.2} s wall",
-            a.out.join("study.csv").display(),
-            points.len(),
-        );
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::progress::Quiet;
+
+    /// A drawer that writes the chart's title as its "PNG".
+    struct Titles;
+
+    impl Charts for Titles {
+        fn png(&self, c: &Chart, _: u32, _: u32) -> Result<Vec<u8>, crate::plot::PlotError> {
+            Ok(c.title.clone().into_bytes())
+        }
     }
-    Ok(ExitCode::SUCCESS)
+
+    fn job(out: PathBuf) -> StudyJob {
+        let scene = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../vectors/scenes/cube-minus-cylinder.csg"
+        );
+        StudyJob {
+            scene: scene.into(),
+            out,
+            sweep: Sweep {
+                bits: vec![6],
+                fragments: vec![8],
+                slabs: vec![8],
+                res: 8,
+                ..Sweep::default()
+            },
+            ..StudyJob::default()
+        }
+    }
+
+    #[test]
+    fn the_csv_alone_without_a_drawer_and_the_charts_with_one() {
+        let dir = tempfile::tempdir().unwrap();
+        let plain = dir.path().join("plain");
+        let r = job(plain.clone()).run(&Quiet).unwrap();
+        assert_eq!(r.points.len(), 2);
+        assert_eq!(r.csv, plain.join("study.csv"));
+        let files = |d: &std::path::Path| {
+            let mut f: Vec<String> = std::fs::read_dir(d)
+                .unwrap()
+                .map(|e| e.unwrap().file_name().to_string_lossy().into())
+                .collect();
+            f.sort();
+            f
+        };
+        assert_eq!(files(&plain), ["study.csv"]);
+        let drawn = dir.path().join("drawn");
+        let r = job(drawn.clone()).run_with_charts(&Titles, &Quiet).unwrap();
+        let names = [
+            "bits.png",
+            "depth.png",
+            "fragments.png",
+            "study.csv",
+            "wall.png",
+        ];
+        assert_eq!(files(&drawn), names);
+        let bits = std::fs::read_to_string(drawn.join("bits.png")).unwrap();
+        assert_eq!(bits, r.charts[0].1.title);
+        assert!(job(drawn).estimate().unwrap() > 0);
+    }
+
+    #[test]
+    fn a_job_goes_through_json_unchanged() {
+        let j = job("out".into());
+        let text = serde_json::to_string(&j).unwrap();
+        assert!(text.contains("\"models\":[\"word\",\"float\"]"), "{text}");
+        assert_eq!(serde_json::from_str::<StudyJob>(&text).unwrap(), j);
+        let empty: StudyJob = serde_json::from_str("{}").unwrap();
+        assert_eq!(empty, StudyJob::default());
+    }
 }

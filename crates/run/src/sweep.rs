@@ -35,7 +35,7 @@ use std::time::Instant;
 
 use glam::DVec3;
 use rtl_model::{Equations, WordFormat};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::plot::{Chart, Series};
 use csgpix_draw::compile::CompileError;
@@ -64,7 +64,9 @@ fn route(model: Model) -> Route {
 }
 
 /// The ranges swept. Every list is sorted and without repeats ([`Sweep::normalized`]).
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// `Default` is the documented defaults (`csgpix study --help`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct Sweep {
     /// Fraction bits F of the depth word.
     pub bits: Vec<u32>,
@@ -73,6 +75,7 @@ pub struct Sweep {
     /// Slabs along Z.
     pub slabs: Vec<usize>,
     /// Models run at every point.
+    #[serde(with = "models_by_name")]
     pub models: Vec<Model>,
     /// Voxels along X and Y (array pixels per side).
     pub res: usize,
@@ -81,7 +84,41 @@ pub struct Sweep {
     /// Overflow bits O of the depth word (fixed during the sweep).
     pub ovf_bits: u32,
     /// The sampling convention of every run (docs/voxelization.md).
+    #[serde(with = "crate::named::by_name")]
     pub sampling: Sampling,
+}
+
+impl Default for Sweep {
+    fn default() -> Self {
+        Sweep {
+            bits: vec![4, 6, 8, 10, 12, 16],
+            fragments: vec![8, 16, 32, 64],
+            slabs: vec![16, 32, 64, 128],
+            models: vec![Model::Word, Model::Float],
+            res: 32,
+            int_bits: 10,
+            ovf_bits: 11,
+            sampling: Sampling::Centre,
+        }
+    }
+}
+
+/// serde of the models by name (`["word", "float"]`).
+mod models_by_name {
+    use super::Model;
+
+    pub fn serialize<S: serde::Serializer>(v: &[Model], s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(v.iter().map(|m| m.name()))
+    }
+
+    pub fn deserialize<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<Model>, D::Error> {
+        use serde::Deserialize;
+        let names = <Vec<std::borrow::Cow<'de, str>>>::deserialize(d)?;
+        names
+            .iter()
+            .map(|n| crate::named::parse(n).map_err(serde::de::Error::custom))
+            .collect()
+    }
 }
 
 impl Sweep {
