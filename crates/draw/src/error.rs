@@ -10,7 +10,7 @@ use rtl_model::WordFormat;
 use crate::compile::CompileError;
 
 /// An error of `csgpix-draw`.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// A scene error.
     #[error(transparent)]

@@ -72,10 +72,10 @@ impl Clip {
     pub fn parse(text: &str, names: &[String]) -> Result<Clip> {
         let known = |name: &str| {
             names.iter().position(|n| n == name).ok_or_else(|| {
-                Error::invalid(format!(
-                    "unknown object {name:?}; the scene names {}",
-                    names.join(", ")
-                ))
+                Error::UnknownObject {
+                    name: name.to_string(),
+                    known: names.to_vec(),
+                }
             })
         };
         let tree = expr::parse(text, &GRAMMAR, known)?;
@@ -128,9 +128,9 @@ impl Clip {
             pa.len() + pb.len()
         };
         if n > MAX_PRODUCTS {
-            return Err(Error::invalid(format!(
-                "the expression expands to more than {MAX_PRODUCTS} products"
-            )));
+            return Err(Error::TooManyProducts {
+                limit: MAX_PRODUCTS,
+            });
         }
         Ok(if is_and {
             pa.iter()

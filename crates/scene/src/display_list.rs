@@ -139,8 +139,8 @@ impl DisplayList {
             Ok(bytes) => bytes,
             Err(err) => return Err(Error::Io(err.into()).located(&file, 0, 0)),
         };
-        if let Some((line, col, msg)) = crate::input::bad_utf8(&bytes) {
-            return Err(Spot::new(line, col, msg).into_error(&file));
+        if let Some((line, col, problem)) = crate::input::bad_utf8(&bytes) {
+            return Err(problem.located(&file, line, col));
         }
         Self::parse(&String::from_utf8_lossy(&bytes), &file)
     }
@@ -186,7 +186,7 @@ impl Spot {
     }
 
     fn into_error(self, file: &str) -> Error {
-        Error::at(file, self.line, self.col, self.msg)
+        Error::at(file, self.line, self.col, Error::invalid(self.msg))
     }
 }
 

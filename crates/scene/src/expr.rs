@@ -210,7 +210,7 @@ impl<F: FnMut(&str) -> Result<usize>> Parser<'_, F> {
     }
 
     fn err<T>(&self, col: usize, msg: impl Into<String>) -> Result<T> {
-        Err(Error::at(INPUT, 1, col, msg))
+        Err(Error::at(INPUT, 1, col, Error::invalid(msg)))
     }
 
     /// Push `!` or `(` (at the current character), refusing nesting past the limit.
@@ -444,8 +444,11 @@ mod tests {
         );
         let e = parse("A+Bad", &grammar(), |n| match n {
             "A" => Ok(0),
-            _ => Err(Error::invalid(format!("no {n}"))),
+            _ => Err(Error::UnknownObject {
+                name: n.to_string(),
+                known: vec!["A".to_string()],
+            }),
         });
-        assert_eq!(e.unwrap_err().to_string(), "<expr>:1:3: no Bad");
+        assert_eq!(e.unwrap_err().to_string(), "<expr>:1:3: unknown object \"Bad\"; the scene names A");
     }
 }

@@ -72,17 +72,16 @@ impl<'a> Words<'a> {
     fn next(&mut self, what: &str) -> Result<Word<'a>> {
         self.words.next().ok_or_else(|| {
             let (l, c) = self.end;
-            Error::at(
-                self.file,
-                l,
-                c,
-                format!("expected {what}, found the end of the file"),
-            )
+            let e = Error::Expected {
+                expected: what.to_string(),
+                found: "the end of the file".to_string(),
+            };
+            Error::at(self.file, l, c, e)
         })
     }
 
     fn error(&self, w: Word, msg: impl Into<String>) -> Error {
-        Error::at(self.file, w.line, w.col, msg)
+        Error::at(self.file, w.line, w.col, Error::invalid(msg))
     }
 
     /// A finite number and its line.
@@ -119,10 +118,7 @@ struct Header {
 /// Reads the keyword, if any, as CGAL's `operator>>(istream, File_header_OFF)` does.
 fn header(w: &mut Words) -> Result<Header> {
     let first = *w.words.peek().ok_or_else(|| {
-        Error::invalid(format!(
-            "{}: empty file: an OFF file starts with `OFF`",
-            w.file
-        ))
+        Error::EmptyOff.context(w.file)
     })?;
     let t = first.text.as_bytes();
     // CGAL: a keyword unless the word starts with a digit other than '4' or has a digit second.
