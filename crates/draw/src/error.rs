@@ -117,9 +117,3 @@ impl Error {
         }
     }
 }
-
-impl From<Error> for String {
-    fn from(e: Error) -> String {
-        e.to_string()
-    }
-}

@@ -213,9 +213,3 @@ impl Error {
         }
     }
 }
-
-impl From<Error> for String {
-    fn from(e: Error) -> String {
-        e.to_string()
-    }
-}

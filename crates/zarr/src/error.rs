@@ -144,9 +144,3 @@ pub enum StoreProblem {
 
 /// A `csgpix-zarr` result.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
-
-impl From<Error> for String {
-    fn from(e: Error) -> String {
-        e.to_string()
-    }
-}
