@@ -41,8 +41,11 @@ const GRAMMAR: Grammar = Grammar {
     max_depth: MAX_DEPTH,
     depth_at_operand: true,
     misplaced: |c, open| match open {
-        Some(_) => "expected ')'".to_string(),
-        None => format!("expected '+', '.' or the end, found {}", expr::found(c)),
+        Some(_) => Error::Unclosed { open: None },
+        None => Error::Expected {
+            expected: "'+', '.' or the end".into(),
+            found: expr::found(c),
+        },
     },
 };
 

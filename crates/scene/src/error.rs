@@ -151,6 +151,34 @@ pub enum Error {
         /// The parser's message.
         reason: String,
     },
+    /// An expression of more nested parentheses and `!` than csgpix reads.
+    #[error("expression nested deeper than {limit}")]
+    ExpressionTooDeep {
+        /// The deepest nesting read.
+        limit: usize,
+    },
+    /// An expression that ends with a `(` still open: where it opened, when the message
+    /// says so (`expected ')'` otherwise).
+    #[error("expected ')'{}", match open {
+        Some(col) => format!(" to close the '(' at column {col}"),
+        None => String::new(),
+    })]
+    Unclosed {
+        /// The column of the `(` still open.
+        open: Option<usize>,
+    },
+    /// A `)` with no `(` open.
+    #[error("')' without a matching '('")]
+    Unmatched,
+    /// A colour code too large for its type.
+    #[error("colour `{}` is out of range", OneLine(text))]
+    ColourOutOfRange {
+        /// The code, as written.
+        text: String,
+    },
+    /// A display list whose terminating entry comes before any plane (the list is empty).
+    #[error("terminating entry found before any plane")]
+    TerminatorFirst,
     /// A name of a CSG expression that the scene does not have.
     #[error("unknown object {name:?}; the scene names {}", known.join(", "))]
     UnknownObject {
@@ -362,6 +390,45 @@ pub enum Error {
     /// An empty OFF file.
     #[error("empty file: an OFF file starts with `OFF`")]
     EmptyOff,
+    /// An OFF file of no vertices.
+    #[error("the file has no vertices")]
+    NoVertices,
+    /// A SKEL file (OFF's skeleton format) where a surface is needed.
+    #[error("a SKEL file has no surface: csgpix reads OFF")]
+    SkelFile,
+    /// A binary OFF file.
+    #[error("binary OFF is not read: write the mesh as text OFF, STL or OBJ")]
+    BinaryOff,
+    /// An nOFF file of a dimension other than 3.
+    #[error("an OFF file of dimension {dimension}: csgpix reads 3D meshes")]
+    OffDimension {
+        /// The dimension it declares.
+        dimension: usize,
+    },
+    /// A homogeneous coordinate that makes its vertex infinite.
+    #[error("this w makes the vertex infinite")]
+    InfiniteVertex,
+    /// An OFF facet of fewer than 3 vertices.
+    #[error("facet {facet} has {vertices} vertices: a facet needs at least 3")]
+    FacetTooSmall {
+        /// The facet's index.
+        facet: usize,
+        /// The vertices it lists.
+        vertices: usize,
+    },
+    /// An OFF facet that refers to a vertex the file does not have.
+    #[error(
+        "facet {facet} refers to vertex {vertex}, but the file has {count} vertices (numbered \
+         from 0)"
+    )]
+    FacetVertex {
+        /// The facet's index.
+        facet: usize,
+        /// The vertex it names.
+        vertex: usize,
+        /// The vertices there are.
+        count: usize,
+    },
     /// A path whose extension names no mesh format csgpix writes.
     #[error("the mesh format comes from the extension: .stl, .obj or .ply")]
     MeshWriteExtension,
@@ -928,3 +995,140 @@ impl Error {
     }
 }
 
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_syntax_error_reads_expected_then_found_at_its_place() {
+        let e = Error::Expected {
+            expected: "`endfacet`".into(),
+            found: "the end of the file".into(),
+        };
+        let e = Error::at("a.stl", 9, 1, e);
+        assert_eq!(
+            e.to_string(),
+            "a.stl:9:1: expected `endfacet`, found the end of the file"
+        );
+        assert!(matches!(e.problem(), Error::Expected { .. }));
+        assert_eq!(e.kind(), Kind::Other);
+    }
+
+    #[test]
+    fn counts_and_limits_show_their_numbers() {
+        let e = Error::SampleCount {
+            samples: 5,
+            sizes: [2, 2, 2],
+        };
+        assert_eq!(e.context("dataset").to_string(), "dataset: 5 samples for sizes 2×2×2");
+        let e = Error::WriteSampleCount {
+            samples: 5,
+            sizes: [2, 2, 2],
+        };
+        assert_eq!(e.to_string(), "5 samples for sizes [2, 2, 2]");
+        let e = Error::Needs {
+            what: "a face",
+            needs: "at least 3 vertices",
+            found: 2,
+        };
+        assert_eq!(e.to_string(), "a face needs at least 3 vertices, found 2");
+        let e = Error::VoxelSizeTooSmall {
+            size: 0.001,
+            extent: 100.0,
+            limit: 65536,
+        };
+        assert_eq!(
+            e.to_string(),
+            "voxel size 0.001 over an extent of 100: more than 65536 voxels per axis"
+        );
+    }
+
+    #[test]
+    fn a_line_too_long_names_the_format_only_when_given() {
+        let dxf = Error::LineTooLong {
+            limit: 4096,
+            format: Some("DXF"),
+        };
+        assert_eq!(
+            dxf.context("a.dxf:7").to_string(),
+            "a.dxf:7: a line longer than 4096 bytes (not a DXF file?)"
+        );
+        let dat = Error::LineTooLong {
+            limit: 100,
+            format: None,
+        };
+        assert_eq!(dat.to_string(), "a line longer than 100 bytes");
+    }
+
+    #[test]
+    fn an_open_mesh_says_how_to_mend_it() {
+        let e = Error::NotClosed {
+            open: "3 edges belong to one triangle".into(),
+        }
+        .context("m.stl");
+        assert_eq!(
+            e.to_string(),
+            "m.stl: mesh is not closed: 3 edges belong to one triangle; close the holes and \
+             remove the fins (e.g. with MeshLab's or Blender's mesh repair) so that every edge \
+             is shared by an even number of triangles and the surface bounds a solid"
+        );
+    }
+
+    #[test]
+    fn fonts_and_openscad_word_their_cases() {
+        let font = |scene| Error::FontNotFound {
+            font: "Nope".into(),
+            scene,
+        };
+        assert_eq!(
+            font(true).to_string(),
+            "font `Nope` not found (searched the scene's font files, CSGPIX_FONT_PATH, the \
+             bundled fonts and the system fonts)"
+        );
+        assert_eq!(
+            font(false).to_string(),
+            "font `Nope` not found (searched CSGPIX_FONT_PATH, the bundled fonts and the system \
+             fonts)"
+        );
+        let unread = Error::FontUnreadable {
+            font: "X".into(),
+            parsed: true,
+        };
+        assert_eq!(unread.to_string(), "font `X` could not be parsed");
+        assert_eq!(
+            Error::NoOpenscad { scad: true }.context("p.scad").to_string(),
+            "p.scad: reading .scad needs openscad on PATH (Debian: apt-get install openscad); or \
+             export File → Export → Export as CSG and give the .csg"
+        );
+        let failed = Error::OpenscadFailed {
+            action: "mesh",
+            why: "ERROR: Parser error\nin file".into(),
+        };
+        assert_eq!(
+            failed.to_string(),
+            format!("openscad could not mesh it: {}", OneLine("ERROR: Parser error\nin file")),
+            "a library's or program's text stays one line"
+        );
+    }
+
+    #[test]
+    fn an_image_size_wraps_why_that_size_is_refused() {
+        let e = Error::ImageSize {
+            width: 3,
+            height: 2,
+            problem: Box::new(Error::SurfaceTooLarge {
+                lines: 2,
+                columns: 3,
+                vertices: 20,
+                left: 10,
+            }),
+        };
+        assert_eq!(
+            Error::at("h.png", 0, 17, e).to_string(),
+            "h.png:0:17: a 3×2 image: a grid of 2 × 3 heights would pass the scene's vertex \
+             limit: 20 more vertices, 10 left (the limit follows the memory limit, e.g. \
+             --max-memory)"
+        );
+    }
+}
