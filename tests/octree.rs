@@ -299,7 +299,7 @@ fn a_store_built_while_voxelizing_equals_one_built_from_the_volume() {
         set,
         &eval,
         &|| {},
-        &mut |k, s| b.push(k, s).map_err(String::from),
+        &mut |k, s| b.push(k, s),
     )
     .unwrap();
     let streamed = b.finish().unwrap();

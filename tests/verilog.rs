@@ -543,7 +543,7 @@ fn cosim_with(
     set: Equations,
 ) -> Result<usize, String> {
     use rtl_model::verilog::pixel;
-    let want = expected_states(cfg, ops, &set.set())?;
+    let want = expected_states(cfg, ops, &set.set()).map_err(|e| e.to_string())?;
     let tmp = tempfile::tempdir().unwrap();
     let ctl = pixel::control_stream(&cfg, &set.set(), ops);
     std::fs::write(tmp.path().join("control.hex"), ctl).unwrap();

@@ -315,9 +315,3 @@ impl std::fmt::Display for ProbeOutside {
 }
 
 impl std::error::Error for ProbeOutside {}
-
-impl From<ProbeOutside> for String {
-    fn from(e: ProbeOutside) -> String {
-        e.to_string()
-    }
-}

@@ -356,9 +356,3 @@ impl std::fmt::Display for ProgramError {
 }
 
 impl std::error::Error for ProgramError {}
-
-impl From<ProgramError> for String {
-    fn from(e: ProgramError) -> String {
-        e.to_string()
-    }
-}

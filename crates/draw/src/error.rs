@@ -10,7 +10,7 @@ use rtl_model::WordFormat;
 use crate::compile::CompileError;
 
 /// An error of `csgpix-draw`.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// A scene error.
     #[error(transparent)]
@@ -115,11 +115,5 @@ impl Error {
                 source: Box::new(e),
             },
         }
-    }
-}
-
-impl From<Error> for String {
-    fn from(e: Error) -> String {
-        e.to_string()
     }
 }

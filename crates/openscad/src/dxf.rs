@@ -77,7 +77,7 @@ pub(crate) fn read(
     budget: usize,
 ) -> csgpix_scene::Result<Drawing> {
     let file =
-        std::fs::File::open(path).map_err(|e| Error::invalid(format!("cannot read it: {e}")))?;
+        std::fs::File::open(path).map_err(|e| Error::io("cannot read it", &e))?;
     parse(std::io::BufReader::new(file), name, settings, budget)
 }
 
@@ -140,13 +140,13 @@ impl<R: BufRead> Lines<'_, R> {
         let n = (&mut self.input)
             .take(MAX_LINE as u64 + 1)
             .read_until(b'\n', &mut self.buf)
-            .map_err(|e| Error::invalid(format!("{}:{at}: cannot read it: {e}", self.name)))?;
+            .map_err(|e| Error::io("cannot read it", &e).context(format_args!("{}:{at}", self.name)))?;
         if n == 0 {
             return Ok(None);
         }
         if self.buf.len() > MAX_LINE {
-            let msg = format!("a line longer than {MAX_LINE} bytes (not a DXF file?)");
-            return Err(Error::invalid(format!("{}:{at}: {msg}", self.name)));
+            let e = Error::LineTooLong { limit: MAX_LINE, format: Some("DXF") };
+            return Err(e.context(format_args!("{}:{at}", self.name)));
         }
         self.line = at;
         Ok(Some(trim(&self.buf)))
@@ -315,7 +315,7 @@ impl<'s> Dxf<'s> {
     }
 
     fn fail(&self, line: usize, msg: impl std::fmt::Display) -> Error {
-        Error::invalid(format!("{}:{line}: {msg}", self.name))
+        Error::invalid(msg.to_string()).context(format_args!("{}:{line}", self.name))
     }
 
     /// A number as `boost::lexical_cast<double>` reads it, or None with OpenSCAD's warning

@@ -49,10 +49,7 @@ pub fn scene_text_with(
     let run = crate::subprocess::run(&mut cmd, timeout);
     let (status, stderr) = match run {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            return Err(Error::invalid(format!(
-                "{name}: reading .scad needs openscad on PATH (Debian: apt-get install openscad); \
-                 or export File → Export → Export as CSG and give the .csg"
-            )))
+            return Err(Error::NoOpenscad { scad: true }.context(name))
         }
         Err(e) => return Err(Error::io("running openscad", &e).context(path.display())),
         Ok(Ran::TimedOut) => return Err(timed_out(timeout).context(path.display())),
@@ -67,10 +64,7 @@ pub fn scene_text_with(
             .find(|l| l.contains("ERROR"))
             .or_else(|| stderr.lines().rfind(|l| !l.trim().is_empty()))
             .unwrap_or("no output");
-        Error::invalid(format!(
-            "{name}: openscad could not export it: {}",
-            line.trim()
-        ))
+        Error::OpenscadFailed { action: "export", why: line.trim().to_string() }.context(name)
     })
 }
 
@@ -111,7 +105,7 @@ pub fn read_scene_with(
     };
     if is_scad(path) {
         for w in &mut scene.warnings {
-            *w = in_scad(std::mem::replace(w, Error::invalid("")), &text, path);
+            *w = in_scad(std::mem::replace(w, Error::NeedsBounds), &text, path);
         }
     }
     Ok(scene)
@@ -399,18 +393,21 @@ mod tests {
         )
         .unwrap();
         let export = "group() {\n\tsurface(file = \"x.dat\");\n\tcube(size = [1, 1, 1]);\n}\n";
-        let e = Error::at("p.scad", 2, 2, "unsupported node `surface`");
+        let e = Error::at("p.scad", 2, 2, Error::HullTooFewPoints);
         let placed = in_scad(e, export, &scad);
         let at = placed.location().cloned().expect("placed");
         assert_eq!((at.line, at.col), (5, 3), "{placed}");
         assert!(at.file.ends_with("p.scad"));
         // cube is called twice: no line of the .scad is claimed.
-        let e = Error::at("p.scad", 3, 2, "bad cube");
+        let e = Error::at("p.scad", 3, 2, Error::MixedXSign);
         let unplaced = in_scad(e, export, &scad);
         assert!(unplaced.location().is_none());
         let text = unplaced.to_string();
         assert!(
-            text.contains("in the CSG openscad exported from it (line 3, `cube(…)`): bad cube"),
+            text.contains(
+                "in the CSG openscad exported from it (line 3, `cube(…)`): all points for \
+                 rotate_extrude() must have the same X coordinate sign"
+            ),
             "{text}"
         );
     }

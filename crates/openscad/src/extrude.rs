@@ -397,9 +397,7 @@ pub fn rotate_mesh(
             (a.min(p.x), b.max(p.x))
         });
     if lo < 0.0 && hi > 0.0 {
-        return Err(Error::invalid(
-            "all points for rotate_extrude() must have the same X coordinate sign",
-        ));
+        return Err(Error::MixedXSign);
     }
     let full = angle.abs() >= 360.0;
     let at = |j: usize| {

@@ -53,9 +53,7 @@ pub(crate) fn mesh(
     cmd.arg("-o").arg(&stl).arg(&csg);
     let (status, stderr) = match crate::subprocess::run(&mut cmd, options.openscad_timeout) {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            return Err(Error::invalid(
-                "needs openscad on PATH (Debian: apt-get install openscad)",
-            ))
+            return Err(Error::NoOpenscad { scad: false })
         }
         Err(e) => return Err(Error::io("running openscad", &e)),
         Ok(Ran::TimedOut) => return Err(crate::export::timed_out(options.openscad_timeout)),
@@ -67,10 +65,10 @@ pub(crate) fn mesh(
             .find(|l| l.contains("ERROR") || l.contains("not a 3D object"))
             .or_else(|| stderr.lines().rfind(|l| !l.trim().is_empty()))
             .unwrap_or("no output");
-        return Err(Error::invalid(format!(
-            "openscad could not mesh it: {}",
-            why.trim()
-        )));
+        return Err(Error::OpenscadFailed {
+            action: "mesh",
+            why: why.trim().to_string(),
+        });
     }
     let m = TriMesh::read(&stl)?;
     m.check_closed("openscad's mesh")?;

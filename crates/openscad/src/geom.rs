@@ -91,7 +91,7 @@ pub(crate) fn mesh_of(
                 CsgNode::Empty => done.push(None),
                 CsgNode::Solid(i) => done.push(leaf_manifold(*i, solids, imports)?),
                 CsgNode::Complement(_) => {
-                    return Err(Error::invalid("the geometry of a complement is unbounded"))
+                    return Err(Error::UnboundedComplement)
                 }
                 CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
                     stack.push(Step::Leave(n));
@@ -143,7 +143,7 @@ fn boolean(a: &Manifold, b: &Manifold, op: OpType) -> csgpix_scene::Result<Optio
         // boolmesh reports an empty result (disjoint operands of an intersection, a
         // difference removing everything) as an error without vertices.
         Err(e) if e.contains("empty") => Ok(None),
-        Err(e) => Err(Error::invalid(format!("mesh boolean failed: {e}"))),
+        Err(reason) => Err(Error::BooleanFailed { reason }),
     }
 }
 
@@ -165,17 +165,14 @@ pub(crate) fn leaf_mesh(
     if i < IMPORTED {
         let s = solids
             .get(i)
-            .ok_or_else(|| Error::invalid(format!("internal: no solid {i}")))?;
+            .ok_or(Error::NoPrimitive { kind: "solid", index: i })?;
         return Ok(solid_triangles(s));
     }
     let import = imports
         .get(i - IMPORTED)
-        .ok_or_else(|| Error::invalid(format!("internal: no import {}", i - IMPORTED)))?;
+        .ok_or(Error::NoPrimitive { kind: "import", index: i - IMPORTED })?;
     let Some(mesh) = &import.mesh else {
-        return Err(Error::invalid(format!(
-            "`import(\"{}\")` has no geometry while the scene is read (a dataset or mesh file)",
-            import.file
-        )));
+        return Err(Error::ImportWithoutGeometry { file: import.file.clone() });
     };
     let m = import.matrix;
     Ok(mesh
@@ -214,7 +211,7 @@ fn manifold(tris: &[[DVec3; 3]]) -> csgpix_scene::Result<Option<Manifold>> {
     let idx: Vec<usize> = (0..tris.len() * 3).collect();
     Manifold::new(&pos, &idx)
         .map(Some)
-        .map_err(|e| Error::invalid(format!("not a closed manifold mesh: {e}")))
+        .map_err(|e| Error::NotManifold { reason: e.to_string() })
 }
 
 fn triangles(m: &Manifold) -> Mesh {
@@ -256,7 +253,7 @@ pub(crate) fn pieces(
             CsgNode::Solid(i) if *i < IMPORTED => {
                 let s = solids
                     .get(*i)
-                    .ok_or_else(|| Error::invalid(format!("internal: no solid {i}")))?;
+                    .ok_or(Error::NoPrimitive { kind: "solid", index: *i })?;
                 out.push(Piece::Convex(
                     s.vertices.iter().map(|&v| DVec3::from(v)).collect(),
                 ));
@@ -359,10 +356,7 @@ fn spender(budget: usize) -> impl FnMut(usize) -> csgpix_scene::Result<()> {
 }
 
 fn over_budget() -> Error {
-    Error::invalid(
-        "the Minkowski sum would pass the scene's vertex limit (the limit follows the memory \
-         limit, e.g. --max-memory)",
-    )
+    Error::MinkowskiTooLarge
 }
 
 /// X ⊕ C = (X + c0) ∪ ⋃ hull(T ⊕ C).

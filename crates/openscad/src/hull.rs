@@ -33,11 +33,11 @@ pub fn hull3(points: &[DVec3]) -> Result<(Vec<DVec3>, Vec<Vec<usize>>)> {
         });
     let extent = (hi - lo).max_element();
     if !(extent.is_finite() && extent > 0.0) {
-        return Err(Error::invalid("hull() of fewer than two distinct points"));
+        return Err(Error::HullTooFewPoints);
     }
     let eps = EPS * extent;
     let tet = initial_tetrahedron(points, eps)
-        .ok_or_else(|| Error::invalid("hull() of points on one plane: no volume"))?;
+        .ok_or(Error::FlatHull)?;
     let mut hull = Hull::new(points, eps, tet);
     hull.build();
     Ok(hull.merge_coplanar())
@@ -680,11 +680,11 @@ mod properties {
     }
 
     /// Every property the hull must have, against `points`; Err names the first that fails.
-    fn check(points: &[DVec3]) -> csgpix_scene::Result<()> {
+    fn check(points: &[DVec3]) -> Result<(), String> {
         let Ok((v, faces)) = hull3(points) else {
             return match initial_tetrahedron(points, EPS * extent(points)) {
                 None => Ok(()),
-                Some(_) => Err(Error::invalid("refused points that span a volume")),
+                Some(_) => Err(String::from("refused points that span a volume")),
             };
         };
         let size = extent(points);
@@ -696,20 +696,20 @@ mod properties {
             .iter()
             .all(|p| inputs.contains(&p.to_array().map(f64::to_bits)))
         {
-            return Err(Error::invalid("a vertex is no input point"));
+            return Err(String::from("a vertex is no input point"));
         }
         if faces.len() < 4 || faces.iter().any(|f| f.len() < 3) {
-            return Err(Error::invalid(format!(
+            return Err(format!(
                 "{} faces, or a face of fewer than 3",
                 faces.len()
-            )));
+            ));
         }
         if !closed(&faces) {
-            return Err(Error::invalid("not closed: an edge not used once each way"));
+            return Err(String::from("not closed: an edge not used once each way"));
         }
         let used: HashSet<usize> = faces.iter().flatten().copied().collect();
         if used.len() != v.len() {
-            return Err(Error::invalid("a vertex no face uses"));
+            return Err(String::from("a vertex no face uses"));
         }
         let tol = 1e-8 * size;
         for f in &faces {
@@ -721,10 +721,10 @@ mod properties {
             let c = f.iter().map(|&i| v[i]).sum::<DVec3>() / f.len() as f64;
             if let Some(q) = points.iter().find(|q| n.dot(**q - c) > tol) {
                 let fv: Vec<DVec3> = f.iter().map(|&i| v[i]).collect();
-                return Err(Error::invalid(format!(
+                return Err(format!(
                     "{q} is {} outside a face {fv:?} n {n}",
                     n.dot(*q - c)
-                )));
+                ));
             }
         }
         let got = volume(&v, &faces);
@@ -734,9 +734,9 @@ mod properties {
             .map(|t| points[t[0]].dot(points[t[1]].cross(points[t[2]])) / 6.0)
             .sum();
         if !(got > 0.0 && (got - want).abs() <= 1e-9 * size.powi(3)) {
-            return Err(Error::invalid(format!(
+            return Err(format!(
                 "volume {got}, the incremental hull's {want}"
-            )));
+            ));
         }
         Ok(())
     }

@@ -302,7 +302,7 @@ pub fn parse_csg_with(
         .run()
         .map_err(|fail| fail.problem.located(file, fail.pos.line, fail.pos.col))?;
     for w in &mut scene.warnings {
-        *w = std::mem::replace(w, Error::invalid("")).in_file(file);
+        *w = std::mem::replace(w, Error::NeedsBounds).in_file(file);
     }
     match scene.warnings.first() {
         Some(first) if options.strict => Err(first.clone()),

@@ -488,10 +488,7 @@ pub(crate) fn check_convex_closed(
     let volume: f64 = planes.iter().map(|p| dot(p.centre, p.normal) / 6.0).sum();
     let has_volume = volume > 1e-12 * extent * extent * extent;
     if !has_volume {
-        return Err(Error::invalid(
-            "the faces wind the wrong way round (OpenSCAD lists each face clockwise \
-                    seen from outside) or enclose no volume",
-        ));
+        return Err(Error::WrongWinding);
     }
     let tolerance = CONVEXITY_TOLERANCE * magnitude;
     for (k, plane) in planes.iter().enumerate() {
@@ -499,9 +496,11 @@ pub(crate) fn check_convex_closed(
         for &i in &used {
             let d = dot(unit, sub(vertices[i], plane.centre));
             if d > tolerance {
-                return Err(Error::invalid(format!(
-                    "not convex: point {i} lies {d:.3e} outside the plane of face {k}"
-                )));
+                return Err(Error::NotConvex {
+                    point: i,
+                    distance: d,
+                    face: k,
+                });
             }
         }
     }
@@ -526,7 +525,7 @@ pub(crate) fn face_planes(
             let normal = newell(vertices, face);
             let has_area = norm(normal) > 1e-12 * extent * extent;
             if !has_area {
-                return Err(Error::invalid(format!("face {k} has no area")));
+                return Err(Error::FaceWithoutArea { face: k });
             }
             let centre = centroid(vertices, face);
             Ok(Plane { normal, centre })
@@ -539,21 +538,19 @@ pub(crate) fn check_closed(faces: &[Vec<usize>]) -> csgpix_scene::Result<()> {
     for (k, face) in faces.iter().enumerate() {
         for edge in ring_edges(face) {
             if let Some(j) = edges.insert(edge, k) {
-                return Err(Error::invalid(format!(
-                    "faces {j} and {k} both run from point {} to point {} (the surface \
-                     is not closed and consistently wound)",
-                    edge.1, edge.0
-                )));
+                return Err(Error::EdgeTwice {
+                    first: j,
+                    second: k,
+                    from: edge.1,
+                    to: edge.0,
+                });
             }
         }
     }
     for (k, face) in faces.iter().enumerate() {
         for (a, b) in ring_edges(face) {
             if !edges.contains_key(&(b, a)) {
-                return Err(Error::invalid(format!(
-                    "not closed: the edge between points {a} and {b} of face {k} has no \
-                     neighbouring face"
-                )));
+                return Err(Error::OpenEdge { a, b, face: k });
             }
         }
     }

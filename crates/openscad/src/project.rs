@@ -52,11 +52,8 @@ fn leaf<'a>(i: usize, solids: &'a [ConvexSolid], imports: &'a [Import]) -> Leaf<
     }
 }
 
-fn file_refused(what: &str, import: &Import) -> Error {
-    Error::invalid(format!(
-        "{what} of `import(\"{}\")` is not supported (csgpix loads imported files only to voxelize)",
-        import.file
-    ))
+fn file_refused(what: &'static str, import: &Import) -> Error {
+    Error::ImportNotSupported { operation: what, file: import.file.clone() }
 }
 
 fn empty() -> Region {
@@ -80,7 +77,7 @@ pub(crate) fn section(
         CsgNode::Union(c) => Region::Union(parts(c)?),
         CsgNode::Intersection(c) => Region::Intersection(parts(c)?),
         CsgNode::Difference(c) => Region::Difference(parts(c)?),
-        CsgNode::Complement(_) => return Err(Error::invalid("internal: a complement in a file")),
+        CsgNode::Complement(_) => return Err(Error::Internal("a complement in a file")),
         CsgNode::Solid(i) => match leaf(*i, solids, imports) {
             Leaf::Convex(s) => {
                 convex_section(s).map_or_else(empty, |p| Region::Poly(Poly2 { paths: vec![p] }))

@@ -149,7 +149,7 @@ impl<'a> Reader<'a> {
                 let warnings = self
                     .warnings
                     .iter()
-                    .map(|(at, msg)| Error::at("", at.line, at.col, msg.as_str()))
+                    .map(|(at, msg)| Error::at("", at.line, at.col, Error::invalid(msg.as_str())))
                     .collect();
                 Ok(CsgScene {
                     solids,

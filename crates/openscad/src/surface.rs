@@ -87,14 +87,9 @@ pub fn mesh_vertices(lines: usize, columns: usize) -> usize {
 }
 
 /// The refusal of a grid of `lines` × `columns` that passes the `budget`.
-fn over_budget(lines: usize, columns: usize, budget: usize) -> Option<String> {
+fn over_budget(lines: usize, columns: usize, budget: usize) -> Option<Error> {
     let n = mesh_vertices(lines, columns);
-    (n > budget).then(|| {
-        format!(
-            "a grid of {lines} × {columns} heights would pass the scene's vertex limit: {n} more \
-             vertices, {budget} left (the limit follows the memory limit, e.g. --max-memory)"
-        )
-    })
+    (n > budget).then_some(Error::SurfaceTooLarge { lines, columns, vertices: n, left: budget })
 }
 
 /// The heights of the file at `path` (`SurfaceNode::read_png_or_dat`), `name` in messages. A
@@ -230,8 +225,8 @@ pub fn read_dat<R: BufRead>(mut r: R, name: &str, budget: usize) -> csgpix_scene
         let (start, line) = trim(&buf);
         // A line held in part is a comment when its start says so; else it is refused.
         if long && line.first() != Some(&b'#') {
-            let msg = format!("a line longer than {MAX_DAT_LINE} bytes");
-            return Err(Error::at(name, number, 1, msg));
+            let e = Error::LineTooLong { limit: MAX_DAT_LINE, format: None };
+            return Err(Error::at(name, number, 1, e));
         }
         if line.first().is_none_or(|&b| b == b'#') {
             // A comment at the end without a newline: OpenSCAD reads it as values and stops at
@@ -256,8 +251,8 @@ pub fn read_dat<R: BufRead>(mut r: R, name: &str, budget: usize) -> csgpix_scene
             };
             if !v.is_finite() {
                 let tok = String::from_utf8_lossy(token);
-                let msg = format!("a height of `{tok}`: csgpix needs finite heights");
-                return Err(Error::at(name, number, column(&buf, col), msg));
+                let e = Error::NonFiniteHeight { token: tok.into_owned() };
+                return Err(Error::at(name, number, column(&buf, col), e));
             }
             row.push(v);
             columns = columns.max(row.len());
@@ -319,10 +314,11 @@ pub fn read_png<R: BufRead + Seek>(
     let (width, height) = info.size();
     let (w, h) = (width as usize, height as usize);
     if let Some(msg) = over_budget(h, w, budget) {
-        return Err(Error::at(name, 0, 17, format!("a {w}×{h} image: {msg}")));
+        let e = Error::ImageSize { width: w, height: h, problem: Box::new(msg) };
+        return Err(Error::at(name, 0, 17, e));
     }
     let limits = |e: &png::DecodingError| matches!(e, png::DecodingError::LimitsExceeded);
-    let refused = |e: png::DecodingError| Error::at(name, 0, 1, format!("PNG decoder: {e}"));
+    let refused = |e: png::DecodingError| Error::at(name, 0, 1, Error::Png { reason: e.to_string() });
     let mut reader = match decoder.read_info() {
         Ok(reader) => reader,
         Err(e) if limits(&e) => return Err(refused(e)),

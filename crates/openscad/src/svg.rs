@@ -55,7 +55,7 @@ fn apply(m: &Affine, p: DVec2) -> DVec2 {
 /// per SVG element, their union. Err is one line.
 pub(crate) fn read(path: &Path, dpi: f64, center: bool) -> csgpix_scene::Result<Vec<Poly2>> {
     let text = std::fs::read_to_string(path)
-        .map_err(|e| Error::invalid(format!("cannot read it: {e}")))?;
+        .map_err(|e| Error::io("cannot read it", &e))?;
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
     parse(&text, name.as_deref().unwrap_or("svg"), dpi, center)
 }
@@ -76,13 +76,10 @@ pub(crate) fn parse(
         nodes_limit: csgpix_scene::MAX_XML_NODES,
     };
     let doc = roxmltree::Document::parse_with_options(text, opts)
-        .map_err(|e| Error::invalid(format!("not a valid SVG file: {e}")))?;
+        .map_err(|e| Error::BadSvg { reason: e.to_string() })?;
     let root = doc.root_element();
     if root.tag_name().name() != "svg" {
-        return Err(Error::invalid(format!(
-            "not an SVG file: its root element is <{}>, not <svg>",
-            root.tag_name().name()
-        )));
+        return Err(Error::NotSvg { root: root.tag_name().name().to_string() });
     }
     let page = Page::read(&root)?;
     let mut shapes = vec![];
@@ -135,10 +132,7 @@ impl Page {
         let viewbox = parse_viewbox(attr("viewBox"));
         if let Some(v) = viewbox {
             if v[2] == 0.0 || v[3] == 0.0 {
-                return Err(Error::invalid(format!(
-                    "the viewBox \"{}\" is empty",
-                    attr("viewBox")
-                )));
+                return Err(Error::EmptyViewBox { view_box: attr("viewBox").to_string() });
             }
         }
         let (align, meet) = parse_alignment(attr("preserveAspectRatio"));
@@ -202,7 +196,7 @@ fn place(
     let (mut lo, mut hi) = (DVec2::splat(f64::MAX), DVec2::splat(f64::MIN));
     for p in shapes.iter().flatten().flatten() {
         if !p.is_finite() {
-            return Err(Error::invalid("a coordinate is not a finite number"));
+            return Err(Error::NonFiniteCoordinate);
         }
         lo = lo.min(scale * *p);
         hi = hi.max(scale * *p);
@@ -286,11 +280,7 @@ fn walk(
     }
     // The text is checked before parsing, but an entity of the DTD may nest more.
     if depth > csgpix_scene::MAX_XML_DEPTH {
-        let msg = format!(
-            "elements nested more than {} deep: csgpix refuses them",
-            csgpix_scene::MAX_XML_DEPTH
-        );
-        return Err(Error::invalid(msg));
+        return Err(Error::TooDeep { limit: csgpix_scene::MAX_XML_DEPTH });
     }
     let ns = node.tag_name().namespace();
     let svg_ns = ns.is_none() || ns == Some("http://www.w3.org/2000/svg");
@@ -298,7 +288,7 @@ fn walk(
     match name {
         // libsvg skips everything inside <defs>.
         "defs" => return Ok(()),
-        "svg" => return Err(Error::invalid("an <svg> inside the <svg> is not supported")),
+        "svg" => return Err(Error::NestedSvg),
         _ => {}
     }
     let attr = |n: &str| at(node, n);
@@ -943,7 +933,7 @@ fn path_outlines(d: &str, style: &Style) -> csgpix_scene::Result<Vec<Vec<DVec2>>
                 6 => {
                     let yy = if rel { y + p } else { p };
                     if rx == 0.0 || ry == 0.0 {
-                        return Err(Error::invalid("a path has an arc of radius 0"));
+                        return Err(Error::ZeroRadiusArc);
                     }
                     arc_to(back, [x, y], rx, ry, [xx, yy], angle, large, sweep);
                     (x, y) = (xx, yy);

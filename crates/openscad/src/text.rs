@@ -162,16 +162,15 @@ impl Fonts {
                     weight = Some(match v.trim().to_ascii_lowercase().as_str() {
                         "bold" => 700,
                         "regular" | "normal" | "medium" => 400,
-                        _ => return Err(Error::invalid(format!("font `{name}`: unsupported weight `{v}`"))),
+                        _ => return Err(Error::UnsupportedFontWeight { weight: v.to_string() }.context(format_args!("font `{name}`"))),
                     })
                 }
                 None if prop.eq_ignore_ascii_case("bold") => weight = Some(700),
                 None if prop.eq_ignore_ascii_case("italic") => italic = true,
                 None if prop.eq_ignore_ascii_case("regular") => weight = Some(400),
                 _ => {
-                    return Err(Error::invalid(format!(
-                        "font `{name}`: unsupported property `{prop}` (csgpix reads `Family:style=Style`)"
-                    )))
+                    return Err(Error::UnsupportedFontProperty { property: prop.to_string() }
+                        .context(format_args!("font `{name}`")))
                 }
             }
         }
@@ -214,19 +213,11 @@ impl Fonts {
                     layer: *layer,
                     id: f.id,
                 }),
-                None => Err(Error::invalid(format!(
-                    "font `{name}`: family `{family}` has no such style"
-                ))),
+                None => Err(Error::NoSuchStyle { family: family.to_string() }
+                    .context(format_args!("font `{name}`"))),
             };
         }
-        let scene = if self.then.is_some() {
-            "the scene's font files, "
-        } else {
-            ""
-        };
-        Err(Error::invalid(format!(
-            "font `{name}` not found (searched {scene}CSGPIX_FONT_PATH, the bundled fonts and the system fonts)"
-        )))
+        Err(Error::FontNotFound { font: name.to_string(), scene: self.then.is_some() })
     }
 }
 
@@ -497,27 +488,29 @@ pub fn render_noting(
     let (id, note) = fonts.find_or_substitute(&spec.font)?;
     notes.extend(note);
     if !matches!(spec.halign.as_str(), "left" | "right" | "center") {
-        return Err(Error::invalid(format!(
-            "unknown halign `{}` (left, center or right)",
-            spec.halign
-        )));
+        return Err(Error::UnknownAlignment {
+            axis: "halign",
+            value: spec.halign.clone(),
+            allowed: "left, center or right",
+        });
     }
     if !matches!(
         spec.valign.as_str(),
         "top" | "center" | "baseline" | "bottom"
     ) {
-        return Err(Error::invalid(format!(
-            "unknown valign `{}` (top, center, baseline or bottom)",
-            spec.valign
-        )));
+        return Err(Error::UnknownAlignment {
+            axis: "valign",
+            value: spec.valign.clone(),
+            allowed: "top, center, baseline or bottom",
+        });
     }
     fonts
         .with_face_data(id, |data, index| render_face(spec, data, index, max_points))
         .unwrap_or_else(|| {
-            Err(Error::invalid(format!(
-                "font `{}` could not be read",
-                spec.font
-            )))
+            Err(Error::FontUnreadable {
+                font: spec.font.clone(),
+                parsed: false,
+            })
         })
 }
 
@@ -528,7 +521,7 @@ fn render_face(
     max_points: usize,
 ) -> csgpix_scene::Result<Poly2> {
     let face = rustybuzz::Face::from_slice(data, index)
-        .ok_or_else(|| Error::invalid(format!("font `{}` could not be parsed", spec.font)))?;
+        .ok_or_else(|| Error::FontUnreadable { font: spec.font.clone(), parsed: true })?;
     let to26 = units_26_6(&face);
     let mut buffer = rustybuzz::UnicodeBuffer::new();
     buffer.push_str(&spec.text);
@@ -566,9 +559,7 @@ fn render_face(
         face.outline_glyph(id, &mut o);
         points += o.contours.iter().map(Vec::len).sum::<usize>();
         if points > max_points {
-            return Err(Error::invalid(format!(
-                "the text's outline has more than the {max_points} points csgpix accepts (lower $fn or the size)"
-            )));
+            return Err(Error::TextTooDetailed { limit: max_points });
         }
         let mut pos = *pos;
         if !horizontal {

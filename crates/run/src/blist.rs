@@ -111,17 +111,15 @@ fn trace_bits(text: &str, e: &CsgExpr) -> crate::Result<Vec<bool>> {
                 "--trace",
                 1,
                 i + 1,
-                format!("expected 0 or 1, found {c:?}"),
+                csgpix_scene::Error::Expected { expected: "0 or 1".into(), found: format!("{c:?}") },
             )),
         })
         .collect::<Result<_, _>>()?;
     if bits.len() != e.names.len() {
-        let message = format!(
-            "expected {} bits, one per primitive ({}), found {}",
-            e.names.len(),
-            e.names.join(", "),
-            bits.len()
-        );
+        let message = csgpix_scene::Error::Expected {
+            expected: format!("{} bits, one per primitive ({})", e.names.len(), e.names.join(", ")),
+            found: bits.len().to_string(),
+        };
         return Err(csgpix_scene::Error::at("--trace", 1, 1, message).into());
     }
     Ok(bits)

@@ -32,20 +32,19 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Objects> {
     let entry = match names.iter().find(|n| n.rsplit('/').next() == Some(base)) {
         Some(n) => n.clone(),
         None if names.len() == 1 => {
-            let msg = format!(
-                "the zipped AMF has no entry `{base}`: its only entry `{}` is read, as \
-                 OpenSCAD 2021.01 does",
-                names[0]
-            );
-            warnings.push(Error::invalid(msg).context(file));
+            let guessed = Error::AmfEntryGuessed {
+                expected: base.to_string(),
+                read: names[0].clone(),
+            };
+            warnings.push(guessed.context(file));
             names[0].clone()
         }
         None => {
-            return Err(Error::invalid(format!(
-                "{file}: the zipped AMF has {} entries and none is named `{base}`: OpenSCAD \
-                 reads the entry named as the archive",
-                names.len()
-            )))
+            return Err(Error::AmfEntryMissing {
+                entries: names.len(),
+                expected: base.to_string(),
+            }
+            .context(file))
         }
     };
     let xml = zip.read(&entry)?.unwrap_or_default();

@@ -41,8 +41,11 @@ const GRAMMAR: Grammar = Grammar {
     max_depth: MAX_DEPTH,
     depth_at_operand: true,
     misplaced: |c, open| match open {
-        Some(_) => "expected ')'".to_string(),
-        None => format!("expected '+', '.' or the end, found {}", expr::found(c)),
+        Some(_) => Error::Unclosed { open: None },
+        None => Error::Expected {
+            expected: "'+', '.' or the end".into(),
+            found: expr::found(c),
+        },
     },
 };
 
@@ -72,10 +75,10 @@ impl Clip {
     pub fn parse(text: &str, names: &[String]) -> Result<Clip> {
         let known = |name: &str| {
             names.iter().position(|n| n == name).ok_or_else(|| {
-                Error::invalid(format!(
-                    "unknown object {name:?}; the scene names {}",
-                    names.join(", ")
-                ))
+                Error::UnknownObject {
+                    name: name.to_string(),
+                    known: names.to_vec(),
+                }
             })
         };
         let tree = expr::parse(text, &GRAMMAR, known)?;
@@ -128,9 +131,9 @@ impl Clip {
             pa.len() + pb.len()
         };
         if n > MAX_PRODUCTS {
-            return Err(Error::invalid(format!(
-                "the expression expands to more than {MAX_PRODUCTS} products"
-            )));
+            return Err(Error::TooManyProducts {
+                limit: MAX_PRODUCTS,
+            });
         }
         Ok(if is_and {
             pa.iter()

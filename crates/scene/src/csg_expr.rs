@@ -19,7 +19,7 @@ use std::collections::HashMap;
 
 use crate::expr::{self, BinOp, Grammar, Node};
 use crate::solid::CsgNode;
-use crate::Result;
+use crate::{Error, Result};
 
 /// Parentheses and `!` nested deeper than this are refused.
 pub const MAX_DEPTH: usize = 10_000;
@@ -44,12 +44,12 @@ const GRAMMAR: Grammar = Grammar {
     max_depth: MAX_DEPTH,
     depth_at_operand: false,
     misplaced: |c, open| match (c, open) {
-        (None, Some(col)) => format!("expected ')' to close the '(' at column {col}"),
-        (Some(')'), None) => "')' without a matching '('".to_string(),
-        (c, _) => format!(
-            "expected '+', '-', '.', ')' or the end, found {}",
-            expr::found(c)
-        ),
+        (None, Some(col)) => Error::Unclosed { open: Some(col) },
+        (Some(')'), None) => Error::Unmatched,
+        (c, _) => Error::Expected {
+            expected: "'+', '-', '.', ')' or the end".into(),
+            found: expr::found(c),
+        },
     },
 };
 

@@ -29,18 +29,18 @@ impl Dataset {
     pub fn new(nrrd: Nrrd) -> Result<Dataset> {
         let count = nrrd.sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n));
         if count != Some(nrrd.samples.len()) || nrrd.samples.is_empty() {
-            let [x, y, z] = nrrd.sizes;
-            let n = nrrd.samples.len();
-            return Err(Error::invalid(format!(
-                "dataset: {n} samples for sizes {x}×{y}×{z}"
-            )));
+            let e = Error::SampleCount {
+                samples: nrrd.samples.len(),
+                sizes: nrrd.sizes,
+            };
+            return Err(e.context("dataset"));
         }
         if !invertible(&nrrd.directions) || !nrrd.origin.is_finite() {
-            let msg = "dataset: expected a finite origin and 3 independent axis steps";
-            return Err(Error::invalid(format!(
-                "{msg}, found {:?}",
-                nrrd.directions
-            )));
+            let e = Error::Expected {
+                expected: "a finite origin and 3 independent axis steps".into(),
+                found: format!("{:?}", nrrd.directions),
+            };
+            return Err(e.context("dataset"));
         }
         let inverse = nrrd.directions.inverse();
         Ok(Dataset { nrrd, inverse })

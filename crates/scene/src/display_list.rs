@@ -139,8 +139,8 @@ impl DisplayList {
             Ok(bytes) => bytes,
             Err(err) => return Err(Error::Io(err.into()).located(&file, 0, 0)),
         };
-        if let Some((line, col, msg)) = crate::input::bad_utf8(&bytes) {
-            return Err(Spot::new(line, col, msg).into_error(&file));
+        if let Some((line, col, problem)) = crate::input::bad_utf8(&bytes) {
+            return Err(problem.located(&file, line, col));
         }
         Self::parse(&String::from_utf8_lossy(&bytes), &file)
     }
@@ -168,25 +168,29 @@ impl Display for DisplayList {
     }
 }
 
-/// An error position and message, before the file name is attached.
+/// An error position and problem, before the file name is attached.
 #[derive(Debug)]
 struct Spot {
     line: usize,
     col: usize,
-    msg: String,
+    problem: Error,
 }
 
 impl Spot {
-    fn new(line: usize, col: usize, msg: impl Into<String>) -> Spot {
-        Spot {
-            line,
-            col,
-            msg: msg.into(),
-        }
+    fn new(line: usize, col: usize, problem: Error) -> Spot {
+        Spot { line, col, problem }
     }
 
     fn into_error(self, file: &str) -> Error {
-        Error::at(file, self.line, self.col, self.msg)
+        Error::at(file, self.line, self.col, self.problem)
+    }
+}
+
+/// `expected WHAT, found FOUND`.
+fn expected(what: impl Into<String>, found: impl Into<String>) -> Error {
+    Error::Expected {
+        expected: what.into(),
+        found: found.into(),
     }
 }
 
@@ -198,30 +202,34 @@ struct Field<'a> {
 }
 
 impl Field<'_> {
-    fn error(&self, msg: impl Into<String>) -> Spot {
-        Spot::new(self.line, self.col, msg)
+    fn error(&self, problem: Error) -> Spot {
+        Spot::new(self.line, self.col, problem)
+    }
+
+    /// `expected WHAT, found `FIELD``, at the field.
+    fn expected(&self, what: impl Into<String>) -> Spot {
+        self.error(expected(what, format!("`{}`", self.text)))
     }
 
     /// A real number (Z0, dZx, dZy or K0, dKx, dKy); must be finite.
     fn number(&self, name: &str) -> Result<f64, Spot> {
         match self.text.parse::<f64>() {
             Ok(value) if value.is_finite() => Ok(value),
-            _ => Err(self.error(format!(
-                "expected a finite number for {name}, found `{}`",
-                self.text
-            ))),
+            _ => Err(self.expected(format!("a finite number for {name}"))),
         }
     }
 
     /// An unsigned integer colour code.
     fn colour(&self) -> Result<u32, Spot> {
         if self.text.is_empty() || !self.text.bytes().all(|b| b.is_ascii_digit()) {
-            let msg = format!("expected an unsigned integer colour, found `{}`", self.text);
-            return Err(self.error(msg));
+            return Err(self.expected("an unsigned integer colour"));
         }
         self.text
             .parse()
-            .map_err(|_| self.error(format!("colour `{}` is out of range", self.text)))
+            .map_err(|_| {
+                let text = self.text.to_string();
+                self.error(Error::ColourOutOfRange { text })
+            })
     }
 
     /// An external variable H, Y or L: exactly `0` or `1`.
@@ -229,7 +237,7 @@ impl Field<'_> {
         match self.text {
             "0" => Ok(false),
             "1" => Ok(true),
-            other => Err(self.error(format!("expected 0 or 1 for {name}, found `{other}`"))),
+            _ => Err(self.expected(format!("0 or 1 for {name}"))),
         }
     }
 }
@@ -252,18 +260,17 @@ impl<'a> Row<'a> {
 
     /// The next field, or an error at end of line naming what was expected.
     fn field(&mut self, what: &str) -> Result<Field<'a>, Spot> {
-        let msg = || format!("expected {what}, found end of line");
         let (line, col) = (self.line, self.end_col);
         self.fields
             .next()
-            .ok_or_else(|| Spot::new(line, col, msg()))
+            .ok_or_else(|| Spot::new(line, col, expected(what, "end of line")))
     }
 
     /// Checks that no field is left, else points at the first extra one.
     fn finish(mut self) -> Result<(), Spot> {
         match self.fields.next() {
             None => Ok(()),
-            Some(f) => Err(f.error(format!("expected end of line, found `{}`", f.text))),
+            Some(f) => Err(f.expected("end of line")),
         }
     }
 }
@@ -321,8 +328,8 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn at_eof(&self, msg: &str) -> Spot {
-        Spot::new(self.eof.0, self.eof.1, msg)
+    fn at_eof(&self, problem: Error) -> Spot {
+        Spot::new(self.eof.0, self.eof.1, problem)
     }
 
     /// Parses planes until the terminating entry, then checks nothing follows.
@@ -343,27 +350,23 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn missing_terminator(&self) -> &'static str {
+    fn missing_terminator(&self) -> Error {
         if self.planes.is_empty() {
-            "empty display list: expected a plane, found end of file"
+            expected("a plane", "end of file").context("empty display list")
         } else {
-            "expected a terminating entry with colour > 1000, found end of file"
+            expected("a terminating entry with colour > 1000", "end of file")
         }
     }
 
     /// Handles the dummy entry of colour `terminator` (§5.2).
     fn terminate(mut self, field: &Field, terminator: u32) -> Result<DisplayList, Spot> {
         if self.planes.is_empty() {
-            let msg = "empty display list: terminating entry found before any plane";
-            return Err(field.error(msg));
+            let e = Error::TerminatorFirst.context("empty display list");
+            return Err(field.error(e));
         }
         // A significant row always holds at least one field.
         if let Some(extra) = self.rows.next().and_then(|mut row| row.fields.next()) {
-            let msg = format!(
-                "expected nothing after the terminating entry, found `{}`",
-                extra.text
-            );
-            return Err(extra.error(msg));
+            return Err(extra.expected("nothing after the terminating entry"));
         }
         Ok(DisplayList {
             planes: self.planes,
@@ -374,7 +377,7 @@ impl<'a> Parser<'a> {
     /// Parses the `H Y L` row completing a plane whose first row is given.
     fn externals(&mut self, z0: f64, dzx: f64, dzy: f64, colour: u32) -> Result<DlPlane, Spot> {
         let Some(mut row) = self.rows.next() else {
-            return Err(self.at_eof("expected an H Y L row, found end of file"));
+            return Err(self.at_eof(expected("an H Y L row", "end of file")));
         };
         let h = row.field("H")?.flag("H")?;
         let y = row.field("Y")?.flag("Y")?;
@@ -401,11 +404,10 @@ impl<'a> Parser<'a> {
                 Ok(())
             }
             Some(first) if first.l == l => Ok(()),
-            Some(first) => Err(field.error(format!(
-                "expected L={} as on line {} (all planes of an object share L), found `{}`",
+            Some(first) => Err(field.expected(format!(
+                "L={} as on line {} (all planes of an object share L)",
                 u8::from(first.l),
                 self.first_l_line,
-                field.text
             ))),
         }
     }

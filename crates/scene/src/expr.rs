@@ -107,7 +107,7 @@ pub struct Grammar {
     pub depth_at_operand: bool,
     /// The message where an operator, `)` or the end was expected: given what was found
     /// (`None` at the end) and the column of the innermost `(` still open, if any.
-    pub misplaced: fn(found: Option<char>, open: Option<usize>) -> String,
+    pub misplaced: fn(found: Option<char>, open: Option<usize>) -> Error,
 }
 
 /// `'c'`, or "the end".
@@ -209,8 +209,8 @@ impl<F: FnMut(&str) -> Result<usize>> Parser<'_, F> {
         self.pos + 1
     }
 
-    fn err<T>(&self, col: usize, msg: impl Into<String>) -> Result<T> {
-        Err(Error::at(INPUT, 1, col, msg))
+    fn err<T>(&self, col: usize, problem: Error) -> Result<T> {
+        Err(Error::at(INPUT, 1, col, problem))
     }
 
     /// Push `!` or `(` (at the current character), refusing nesting past the limit.
@@ -225,8 +225,8 @@ impl<F: FnMut(&str) -> Result<usize>> Parser<'_, F> {
                 }
                 false => self.col() - 1,
             };
-            let msg = format!("expression nested deeper than {}", self.grammar.max_depth);
-            return self.err(col, msg);
+            let limit = self.grammar.max_depth;
+            return self.err(col, Error::ExpressionTooDeep { limit });
         }
         self.ops.push(p);
         Ok(())
@@ -247,8 +247,11 @@ impl<F: FnMut(&str) -> Result<usize>> Parser<'_, F> {
             }
             c => {
                 let noun = self.grammar.noun;
-                let msg = format!("expected {noun} name, '!' or '(', found {}", found(c));
-                self.err(self.col(), msg)
+                let e = Error::Expected {
+                    expected: format!("{noun} name, '!' or '('"),
+                    found: found(c),
+                };
+                self.err(self.col(), e)
             }
         }
     }
@@ -371,7 +374,10 @@ mod tests {
             max_nesting: 3,
             max_depth: 3,
             depth_at_operand: false,
-            misplaced: |c, _| format!("misplaced {}", found(c)),
+            misplaced: |c, _| Error::Expected {
+                expected: "an operator".into(),
+                found: found(c),
+            },
         }
     }
 
@@ -437,15 +443,18 @@ mod tests {
     fn errors_are_located() {
         let err = |t: &str| parse(t, &grammar(), |_| Ok(0)).unwrap_err();
         let e = err("A B");
-        assert_eq!(e.to_string(), "<expr>:1:3: misplaced 'B'");
+        assert_eq!(e.to_string(), "<expr>:1:3: expected an operator, found 'B'");
         assert_eq!(
             err("((((A").to_string(),
             "<expr>:1:4: expression nested deeper than 3"
         );
         let e = parse("A+Bad", &grammar(), |n| match n {
             "A" => Ok(0),
-            _ => Err(Error::invalid(format!("no {n}"))),
+            _ => Err(Error::UnknownObject {
+                name: n.to_string(),
+                known: vec!["A".to_string()],
+            }),
         });
-        assert_eq!(e.unwrap_err().to_string(), "<expr>:1:3: no Bad");
+        assert_eq!(e.unwrap_err().to_string(), "<expr>:1:3: unknown object \"Bad\"; the scene names A");
     }
 }

@@ -42,15 +42,14 @@ impl Grid {
             return Err(Error::EmptyResolution { dims });
         }
         if !(min.is_finite() && max.is_finite()) || (max - min).min_element() <= 0.0 {
-            return Err(Error::invalid(format!(
-                "bounds {min} .. {max} must be finite with every side positive"
-            )));
+            return Err(Error::BadBounds { min, max });
         }
         let side = (max - min).min_element();
         if side < MIN_EXTENT {
-            return Err(Error::invalid(format!(
-                "degenerate extent: the bounds are {side:e} across, under {MIN_EXTENT:e}"
-            )));
+            return Err(Error::DegenerateExtent {
+                side,
+                min: MIN_EXTENT,
+            });
         }
         Ok(Grid { dims, min, max })
     }
@@ -109,9 +108,7 @@ impl GridSpec {
             (None, Some(size), None) => Self::cubic(size, lo, hi)?,
             (None, None, Some(n)) => Self::longest(n, lo, hi)?,
             _ => {
-                return Err(Error::invalid(
-                    "give the grid as a resolution or a voxel size, not both",
-                ))
+                return Err(Error::ResolutionAndVoxelSize)
             }
         };
         let v = inner.voxel();
@@ -143,9 +140,7 @@ impl GridSpec {
     /// Cubic voxels of side `size`: as many as cover each side of the box, centred on it.
     fn cubic(size: f64, lo: DVec3, hi: DVec3) -> Result<Grid> {
         if !(size.is_finite() && size > 0.0) {
-            return Err(Error::invalid(format!(
-                "voxel size {size}: must be a positive number"
-            )));
+            return Err(Error::BadVoxelSize { size });
         }
         let extent = hi - lo;
         let mut dims = [0usize; 3];
@@ -153,9 +148,11 @@ impl GridSpec {
             // A side that is a whole number of voxels (to rounding) gets exactly that many.
             let n = (e / size * (1.0 - 1e-12)).ceil().max(1.0);
             if n.is_nan() || n > MAX_GRID_SIDE as f64 {
-                return Err(Error::invalid(format!(
-                    "voxel size {size} over an extent of {e}: more than {MAX_GRID_SIDE} voxels per axis"
-                )));
+                return Err(Error::VoxelSizeTooSmall {
+                    size,
+                    extent: e,
+                    limit: MAX_GRID_SIDE,
+                });
             }
             *d = n as usize;
         }

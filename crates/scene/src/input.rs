@@ -15,20 +15,18 @@ pub fn read_text(path: &Path) -> Result<String> {
 /// from 1, COL is 1 + the characters before it on its line.
 pub fn text(bytes: Vec<u8>, file: &str) -> Result<String> {
     String::from_utf8(bytes).map_err(|e| {
-        let (line, col, msg) = bad_utf8(e.as_bytes()).expect("invalid UTF-8 has a first bad byte");
-        Error::at(file, line, col, msg)
+        let (line, col, problem) =
+            bad_utf8(e.as_bytes()).expect("invalid UTF-8 has a first bad byte");
+        Error::at(file, line, col, problem)
     })
 }
 
-/// Line, column and message of the first invalid UTF-8 byte of `bytes`, if any.
-pub fn bad_utf8(bytes: &[u8]) -> Option<(usize, usize, String)> {
+/// Line, column and problem ([`Error::BadUtf8`]) of the first invalid UTF-8 byte of
+/// `bytes`, if any.
+pub fn bad_utf8(bytes: &[u8]) -> Option<(usize, usize, Error)> {
     let at = std::str::from_utf8(bytes).err()?.valid_up_to();
     let (line, col) = position(&bytes[..at]);
-    let msg = format!(
-        "invalid UTF-8 (byte 0x{:02X}): text inputs are UTF-8",
-        bytes[at]
-    );
-    Some((line, col, msg))
+    Some((line, col, Error::BadUtf8 { byte: bytes[at] }))
 }
 
 /// Line and column just past `valid` (valid UTF-8 by construction).

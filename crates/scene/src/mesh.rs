@@ -34,10 +34,7 @@ impl Format {
             Some("stl") => Ok(Format::Stl),
             Some("obj") => Ok(Format::Obj),
             Some("ply") => Ok(Format::Ply),
-            _ => Err(Error::invalid(format!(
-                "{}: the mesh format comes from the extension: .stl, .obj or .ply",
-                path.display()
-            ))),
+            _ => Err(Error::MeshWriteExtension.context(path.display())),
         }
     }
 }

@@ -41,11 +41,11 @@ pub(crate) fn unite(parts: Vec<Soup>, file: &str) -> Result<TriMesh> {
         return Ok(TriMesh::from_f64(&parts.concat()));
     }
     let fail = |e: String| {
-        Error::invalid(format!(
-            "{file}: the union of its {} objects failed ({e}); OpenSCAD unites them as solids, \
-             so each must be a closed surface",
-            parts.len()
-        ))
+        let e = Error::UnionFailed {
+            objects: parts.len(),
+            reason: e,
+        };
+        e.context(file)
     };
     let mut acc: Option<Manifold> = None;
     for p in &parts {
@@ -117,13 +117,15 @@ impl<'a> Xml<'a> {
         };
         let doc = roxmltree::Document::parse_with_options(text, opts).map_err(|e| {
             let p = e.pos();
-            let msg = match e {
-                roxmltree::Error::NodesLimitReached => {
-                    format!("more than {MAX_XML_NODES} XML nodes: csgpix refuses larger files")
-                }
-                e => format!("not well-formed XML: {e}"),
+            let problem = match e {
+                roxmltree::Error::NodesLimitReached => Error::TooManyXmlNodes {
+                    limit: MAX_XML_NODES,
+                },
+                e => Error::NotWellFormedXml {
+                    reason: e.to_string(),
+                },
             };
-            Error::at(file, p.row as usize, p.col as usize, msg)
+            Error::at(file, p.row as usize, p.col as usize, problem)
         })?;
         Ok(Xml { doc, file })
     }
@@ -131,7 +133,7 @@ impl<'a> Xml<'a> {
     /// `msg` at the start of `node`.
     pub(crate) fn error(&self, node: roxmltree::Node, msg: impl Into<String>) -> Error {
         let p = self.doc.text_pos_at(node.range().start);
-        Error::at(self.file, p.row as usize, p.col as usize, msg)
+        Error::at(self.file, p.row as usize, p.col as usize, Error::invalid(msg))
     }
 }
 
@@ -150,8 +152,10 @@ pub fn check_xml_nesting(text: &str, file: &str) -> Result<()> {
     let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
     let last = good.rsplit(|&b| b == b'\n').next().unwrap_or_default();
     let col = String::from_utf8_lossy(last).chars().count() + 1;
-    let msg = format!("elements nested more than {MAX_XML_DEPTH} deep: csgpix refuses them");
-    Err(Error::at(file, line, col, msg))
+    let problem = Error::TooDeep {
+        limit: MAX_XML_DEPTH,
+    };
+    Err(Error::at(file, line, col, problem))
 }
 
 /// The byte offset of the first start tag nested deeper than `max`, if any. Comments, CDATA,
@@ -214,7 +218,7 @@ pub(crate) fn utf8<'a>(bytes: &'a [u8], file: &str) -> Result<&'a str> {
         let last = good.rsplit(|&b| b == b'\n').next().unwrap_or_default();
         // Valid UTF-8 up to here: its characters are the column.
         let col = String::from_utf8_lossy(last).chars().count() + 1;
-        Error::at(file, line, col, "not UTF-8 text")
+        Error::at(file, line, col, Error::NotUtf8Text)
     })
 }
 

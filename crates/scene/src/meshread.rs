@@ -26,9 +26,7 @@ impl TriMesh {
         let ext = path.extension().and_then(|e| e.to_str());
         let ext = ext.map(str::to_ascii_lowercase).unwrap_or_default();
         if !READ_EXTENSIONS.contains(&ext.as_str()) {
-            let msg = "a mesh is read from .stl, .obj, .off, .amf or .3mf (the extension names \
-                       the format)";
-            return Err(Error::invalid(msg).context(file));
+            return Err(Error::MeshReadExtension.context(file));
         }
         let bytes = std::fs::read(path).map_err(|e| Error::io("cannot read", &e).context(&file))?;
         TriMesh::parse_format(&bytes, &file, &ext)
@@ -44,8 +42,11 @@ impl TriMesh {
             "3mf" => crate::threemf::parse(bytes, file)?,
             "stl" | "obj" => return Ok((TriMesh::parse(bytes, file, ext == "obj")?, vec![])),
             _ => {
-                let msg = format!("no mesh format `{ext}`: one of {READ_EXTENSIONS:?}");
-                return Err(Error::invalid(msg).context(file));
+                let e = Error::UnknownMeshFormat {
+                    format: ext.to_string(),
+                    known: &READ_EXTENSIONS,
+                };
+                return Err(e.context(file));
             }
         };
         let mesh = crate::meshfile::unite(objects.parts, file)?;

@@ -158,31 +158,35 @@ pub fn read(bytes: &[u8]) -> Result<([usize; 3], Vec<u8>)> {
     let split = bytes
         .windows(2)
         .position(|w| w == b"\n\n")
-        .ok_or_else(|| Error::invalid("no blank line after the NRRD header"))?;
-    let head = std::str::from_utf8(&bytes[..split]).map_err(|e| Error::invalid(e.to_string()))?;
+        .ok_or(Error::NoNrrdHeaderEnd)?;
+    let head = std::str::from_utf8(&bytes[..split]).map_err(|reason| Error::Utf8 { reason })?;
     if !head.starts_with("NRRD000") {
-        return Err(Error::invalid("not a NRRD file"));
+        return Err(Error::NotNrrd);
     }
     let sizes = head
         .lines()
         .find_map(|l| l.strip_prefix("sizes: "))
-        .ok_or_else(|| Error::invalid("no sizes field"))?;
+        .ok_or(Error::MissingField { field: "sizes" })?;
     let dims: Vec<usize> = sizes
         .split_whitespace()
-        .map(|s| s.parse().map_err(|e| Error::invalid(format!("sizes: {e}"))))
+        .map(|s| {
+            s.parse()
+                .map_err(|reason| Error::BadInteger { reason }.context("sizes"))
+        })
         .collect::<Result<_>>()?;
     let [nx, ny, nz] = dims[..] else {
-        return Err(Error::invalid(format!(
-            "sizes: expected 3, found {}",
-            dims.len()
-        )));
+        let e = Error::Expected {
+            expected: "3".into(),
+            found: dims.len().to_string(),
+        };
+        return Err(e.context("sizes"));
     };
     let data = bytes[split + 2..].to_vec();
     if data.len() != nx * ny * nz {
-        return Err(Error::invalid(format!(
-            "{} data bytes for {nx}x{ny}x{nz}",
-            data.len()
-        )));
+        return Err(Error::DataLength {
+            bytes: data.len(),
+            sizes: [nx, ny, nz],
+        });
     }
     Ok(([nx, ny, nz], data))
 }
@@ -262,17 +266,16 @@ impl Nrrd {
     ) -> Result<Nrrd> {
         let count = sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n));
         if count != Some(samples.len()) || samples.is_empty() {
-            let [x, y, z] = sizes;
-            return Err(Error::invalid(format!(
-                "{} samples for sizes {x}×{y}×{z}",
-                samples.len()
-            )));
+            return Err(Error::SampleCount {
+                samples: samples.len(),
+                sizes,
+            });
         }
         if let Some(i) = samples.iter().position(|v| !v.is_finite()) {
-            return Err(Error::invalid(format!(
-                "sample {i} is {}: expected finite values",
-                samples[i]
-            )));
+            return Err(Error::NonFiniteSample {
+                index: i,
+                value: samples[i],
+            });
         }
         let range = samples
             .iter()
@@ -474,8 +477,11 @@ pub fn read_nrrd_limited(path: &Path, limit: SampleLimit) -> Result<Nrrd> {
         .len();
     let cap = MAX_SAMPLES as u64 * 8 + (1 << 20);
     if len > cap {
-        let msg = format!("{len} bytes: larger than any volume of {MAX_SAMPLES} samples");
-        return Err(Error::invalid(msg).context(&name));
+        let e = Error::VolumeFileTooLarge {
+            len,
+            limit: MAX_SAMPLES,
+        };
+        return Err(e.context(&name));
     }
     let bytes = std::fs::read(path).map_err(|e| Error::io(&name, &e))?;
     parse_nrrd_limited(&bytes, &name, path.parent(), limit)
@@ -518,7 +524,7 @@ pub fn parse_nrrd_limited(
 
 /// `FILE:LINE:COL: message`.
 fn at(file: &str, line: usize, col: usize, msg: impl Display) -> Error {
-    Error::at(file, line, col, msg.to_string())
+    Error::at(file, line, col, Error::invalid(msg.to_string()))
 }
 
 /// One `field: value` line: where its value starts (1-based) and the value.
@@ -1163,14 +1169,13 @@ pub fn nrrd_bytes(
 ) -> Result<Vec<u8>> {
     let d = nrrd.directions;
     if !nrrd.origin.is_finite() || !d.is_finite() {
-        return Err(Error::invalid("space origin and directions must be finite"));
+        return Err(Error::NonFiniteFrame);
     }
     if Some(nrrd.samples.len()) != nrrd.sizes.iter().try_fold(1usize, |a, &n| a.checked_mul(n)) {
-        return Err(Error::invalid(format!(
-            "{} samples for sizes {:?}",
-            nrrd.samples.len(),
-            nrrd.sizes
-        )));
+        return Err(Error::WriteSampleCount {
+            samples: nrrd.samples.len(),
+            sizes: nrrd.sizes,
+        });
     }
     let big = endian == Endian::Big;
     let ty = nrrd.sample_type;

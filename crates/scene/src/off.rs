@@ -72,34 +72,40 @@ impl<'a> Words<'a> {
     fn next(&mut self, what: &str) -> Result<Word<'a>> {
         self.words.next().ok_or_else(|| {
             let (l, c) = self.end;
-            Error::at(
-                self.file,
-                l,
-                c,
-                format!("expected {what}, found the end of the file"),
-            )
+            let e = Error::Expected {
+                expected: what.to_string(),
+                found: "the end of the file".to_string(),
+            };
+            Error::at(self.file, l, c, e)
         })
     }
 
-    fn error(&self, w: Word, msg: impl Into<String>) -> Error {
-        Error::at(self.file, w.line, w.col, msg)
+    fn error(&self, w: Word, problem: Error) -> Error {
+        Error::at(self.file, w.line, w.col, problem)
+    }
+
+    /// `expected WHAT, found `WORD``, at the word.
+    fn expected(&self, w: Word, what: impl Into<String>) -> Error {
+        let found = format!("`{}`", w.text);
+        let e = Error::Expected {
+            expected: what.into(),
+            found,
+        };
+        self.error(w, e)
     }
 
     /// A finite number and its line.
     fn number(&mut self, what: &str) -> Result<(f64, usize)> {
         let w = self.next(what)?;
         let v = w.text.parse::<f64>().ok().filter(|v| v.is_finite());
-        let v = v.ok_or_else(|| self.error(w, format!("expected {what}, found `{}`", w.text)))?;
+        let v = v.ok_or_else(|| self.expected(w, what))?;
         Ok((v, w.line))
     }
 
     fn count(&mut self, what: &str) -> Result<(usize, Word<'a>)> {
         let w = self.next(what)?;
         let n = w.text.parse::<usize>().map_err(|_| {
-            self.error(
-                w,
-                format!("expected {what} (a whole number), found `{}`", w.text),
-            )
+            self.expected(w, format!("{what} (a whole number)"))
         })?;
         Ok((n, w))
     }
@@ -119,10 +125,7 @@ struct Header {
 /// Reads the keyword, if any, as CGAL's `operator>>(istream, File_header_OFF)` does.
 fn header(w: &mut Words) -> Result<Header> {
     let first = *w.words.peek().ok_or_else(|| {
-        Error::invalid(format!(
-            "{}: empty file: an OFF file starts with `OFF`",
-            w.file
-        ))
+        Error::EmptyOff.context(w.file)
     })?;
     let t = first.text.as_bytes();
     // CGAL: a keyword unless the word starts with a digit other than '4' or has a digit second.
@@ -144,29 +147,20 @@ fn header(w: &mut Words) -> Result<Header> {
     let (_colours, _normals, homogeneous, dimension) = (flag('C'), flag('N'), flag('4'), flag('n'));
     match rest {
         "OFF" => {}
-        "SKEL" => return Err(w.error(first, "a SKEL file has no surface: csgpix reads OFF")),
+        "SKEL" => return Err(w.error(first, Error::SkelFile)),
         _ => {
-            let msg = format!(
-                "expected an OFF header (`OFF`, `COFF`, `NOFF`, `4OFF`, …), found `{}`",
-                first.text
-            );
-            return Err(w.error(first, msg));
+            let what = "an OFF header (`OFF`, `COFF`, `NOFF`, `4OFF`, …)";
+            return Err(w.expected(first, what));
         }
     }
     if w.words.peek().is_some_and(|n| n.text == "BINARY") {
         let b = w.next("")?;
-        return Err(w.error(
-            b,
-            "binary OFF is not read: write the mesh as text OFF, STL or OBJ",
-        ));
+        return Err(w.error(b, Error::BinaryOff));
     }
     if dimension {
         let (d, at) = w.count("the dimension of an nOFF file")?;
         if d != 3 {
-            return Err(w.error(
-                at,
-                format!("an OFF file of dimension {d}: csgpix reads 3D meshes"),
-            ));
+            return Err(w.error(at, Error::OffDimension { dimension: d }));
         }
     }
     Ok(Header {
@@ -186,7 +180,7 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Objects> {
         w.count("the number of edges")?;
     }
     if nv == 0 {
-        return Err(w.error(at, "the file has no vertices"));
+        return Err(w.error(at, Error::NoVertices));
     }
     // Each vertex and facet takes at least 6 bytes of text: no count past that is believed
     // when reserving memory.
@@ -219,10 +213,10 @@ fn vertex(w: &mut Words, homogeneous: bool) -> Result<[f64; 3]> {
             .ok()
             .filter(|h| h.is_finite() && *h != 0.0);
         let h =
-            h.ok_or_else(|| w.error(at, format!("expected a nonzero w, found `{}`", at.text)))?;
+            h.ok_or_else(|| w.expected(at, "a nonzero w"))?;
         p = p.map(|c| c / h);
         if p.iter().any(|c| !c.is_finite()) {
-            return Err(w.error(at, "this w makes the vertex infinite"));
+            return Err(w.error(at, Error::InfiniteVertex));
         }
         line = at.line;
     }
@@ -234,21 +228,23 @@ fn vertex(w: &mut Words, homogeneous: bool) -> Result<[f64; 3]> {
 fn facet(w: &mut Words, k: usize, vs: &[[f64; 3]], soup: &mut Soup) -> Result<()> {
     let (n, at) = w.count("the number of vertices of a facet")?;
     if n < 3 {
-        return Err(w.error(
-            at,
-            format!("facet {k} has {n} vertices: a facet needs at least 3"),
-        ));
+        let e = Error::FacetTooSmall {
+            facet: k,
+            vertices: n,
+        };
+        return Err(w.error(at, e));
     }
     let mut idx = Vec::with_capacity(n.min(vs.len()));
     let mut line = at.line;
     for _ in 0..n {
         let (i, iw) = w.count("a vertex index")?;
         if i >= vs.len() {
-            let msg = format!(
-                "facet {k} refers to vertex {i}, but the file has {} vertices (numbered from 0)",
-                vs.len()
-            );
-            return Err(w.error(iw, msg));
+            let e = Error::FacetVertex {
+                facet: k,
+                vertex: i,
+                count: vs.len(),
+            };
+            return Err(w.error(iw, e));
         }
         idx.push(i);
         line = iw.line;

@@ -101,11 +101,11 @@ impl CsgScene {
                     Some(_) => format!("`{}` (not a convex solid)", i.file),
                     None => format!("`import(\"{}\")`", i.file),
                 };
-                let msg = format!(
-                    "{name}: {what} draws convex solids only; datasets and meshes are \
-                     voxelized (`csgpix voxelize`)"
-                );
-                Err(crate::Error::at(file, i.line, i.col, msg))
+                let problem = crate::Error::ConvexOnly {
+                    primitive: name,
+                    command: what.to_string(),
+                };
+                Err(problem.located(file, i.line, i.col))
             }
         }
     }

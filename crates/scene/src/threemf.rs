@@ -32,9 +32,7 @@ pub(crate) fn parse(bytes: &[u8], file: &str) -> Result<Objects> {
         None => "3D/3dmodel.model".to_string(),
     };
     let Some(model) = zip.read(&path)? else {
-        return Err(Error::invalid(format!(
-            "{file}: the 3MF package has no model part `{path}`"
-        )));
+        return Err(Error::No3mfModel { part: path }.context(file));
     };
     parse_model(&model, &format!("{file}[{path}]"))
 }

@@ -53,7 +53,7 @@ impl Welder {
             return Ok(i);
         }
         let i = u32::try_from(self.mesh.vertices.len())
-            .map_err(|_| Error::invalid("more than 2^32 distinct vertices"))?;
+            .map_err(|_| Error::TooManyVertices)?;
         self.mesh.vertices.push(p);
         self.at.insert(key, i);
         Ok(i)
@@ -143,11 +143,7 @@ impl TriMesh {
         let tris = self.proper_triangles(file)?;
         match self.open_edges(&tris) {
             None => Ok(()),
-            Some(what) => Err(Error::invalid(format!(
-                "{file}: mesh is not closed: {what}; close the holes and remove the fins \
-                 (e.g. with MeshLab's or Blender's mesh repair) so that every edge is shared by \
-                 an even number of triangles and the surface bounds a solid"
-            ))),
+            Some(open) => Err(Error::NotClosed { open }.context(file)),
         }
     }
 
@@ -204,9 +200,12 @@ impl TriMesh {
             .enumerate()
             .find_map(|(k, t)| t.iter().find(|&&i| i as usize >= n).map(|&i| (k, i)))
         {
-            return Err(Error::invalid(format!(
-                "{file}: triangle {k} refers to vertex {i}, but the mesh has {n} vertices"
-            )));
+            let e = Error::NoSuchVertex {
+                triangle: k,
+                vertex: i,
+                count: n,
+            };
+            return Err(e.context(file));
         }
         let tris: Vec<[u32; 3]> = self
             .triangles
@@ -215,11 +214,8 @@ impl TriMesh {
             .copied()
             .collect();
         if tris.is_empty() {
-            return Err(Error::invalid(format!(
-                "{file}: mesh has no triangles (after dropping {} degenerate ones); a solid \
-                 needs a closed surface",
-                self.triangles.len()
-            )));
+            let degenerate = self.triangles.len();
+            return Err(Error::NoTriangles { degenerate }.context(file));
         }
         Ok(tris)
     }
@@ -568,28 +564,28 @@ mod stl {
     fn binary(bytes: &[u8], file: &str) -> Result<TriMesh> {
         let len = bytes.len() as u64;
         let n = count(bytes).ok_or_else(|| {
-            let msg =
-                format!("binary STL truncated at byte offset {len}: the header needs 84 bytes");
-            Error::invalid(msg).context(file)
+            Error::StlHeaderTruncated { len }.context(file)
         })?;
         if len < 84 + 50 * n {
             let k = (len - 84) / 50;
-            return Err(Error::invalid(format!(
-                "{file}: binary STL truncated at byte offset {len}: the header promises {n} \
-                 triangles ({} bytes), triangle {k} starts at byte offset {} and is incomplete",
-                84 + 50 * n,
-                84 + 50 * k
-            )));
+            let e = Error::StlTruncated {
+                len,
+                triangles: n,
+                needs: 84 + 50 * n,
+                incomplete: k,
+                offset: 84 + 50 * k,
+            };
+            return Err(e.context(file));
         }
         let mut w = Welder::default();
         for (k, rec) in bytes[84..].chunks_exact(50).take(n as usize).enumerate() {
             let t = [0, 1, 2].map(|i| vertex(&rec[12 + 12 * i..24 + 12 * i]));
             match t {
                 [Some(a), Some(b), Some(c)] => w.triangle([a, b, c]),
-                _ => Err(Error::invalid(format!(
-                    "triangle {k} (byte offset {}) has a coordinate that is not a finite number",
-                    84 + 50 * k
-                ))),
+                _ => Err(Error::NonFiniteTriangle {
+                    triangle: k,
+                    offset: 84 + 50 * k,
+                }),
             }
             .map_err(|e| e.context("binary STL").context(file))?;
         }
@@ -627,10 +623,10 @@ mod stl {
                         return Ok(p.welder.mesh);
                     }
                 }
-                _ => return Err(p.error(w, "expected `facet` or `endsolid`")),
+                _ => return Err(p.error(w, "`facet` or `endsolid`")),
             }
         }
-        Err(p.at_end("expected `facet` or `endsolid`"))
+        Err(p.at_end("`facet` or `endsolid`"))
     }
 
     /// Line and column just past the last byte.
@@ -647,16 +643,24 @@ mod stl {
         welder: Welder,
     }
 
+    /// `expected WHAT, found FOUND`.
+    fn expected(what: &str, found: String) -> Error {
+        Error::Expected {
+            expected: what.to_string(),
+            found,
+        }
+    }
+
     impl<'a> Ascii<'a> {
         fn error(&self, w: Word, what: &str) -> Error {
-            let msg = format!("{what}, found `{}`", show(w.text));
-            Error::at(self.file, w.line, w.col, msg)
+            let found = format!("`{}`", show(w.text));
+            Error::at(self.file, w.line, w.col, expected(what, found))
         }
 
         fn at_end(&self, what: &str) -> Error {
             let (l, c) = self.end;
-            let msg = format!("{what}, found the end of the file");
-            Error::at(self.file, l, c, msg)
+            let found = "the end of the file";
+            Error::at(self.file, l, c, expected(what, found.to_string()))
         }
 
         fn next(&mut self, what: &str) -> Result<Word<'a>> {
@@ -664,17 +668,17 @@ mod stl {
         }
 
         fn keyword(&mut self, k: &str) -> Result<Word<'a>> {
-            let w = self.next(&format!("expected `{k}`"))?;
+            let w = self.next(&format!("`{k}`"))?;
             if w.text.eq_ignore_ascii_case(k.as_bytes()) {
                 Ok(w)
             } else {
-                Err(self.error(w, &format!("expected `{k}`")))
+                Err(self.error(w, &format!("`{k}`")))
             }
         }
 
         fn number(&mut self) -> Result<f64> {
-            let w = self.next("expected a number")?;
-            finite(w.text).ok_or_else(|| self.error(w, "expected a finite number"))
+            let w = self.next("a number")?;
+            finite(w.text).ok_or_else(|| self.error(w, "a finite number"))
         }
 
         fn skip_line(&mut self, line: usize) {
@@ -698,18 +702,19 @@ mod stl {
             self.keyword("loop")?;
             let mut v = Vec::with_capacity(3);
             loop {
-                let w = self.next("expected `vertex` or `endloop`")?;
+                let w = self.next("`vertex` or `endloop`")?;
                 if w.text.eq_ignore_ascii_case(b"endloop") {
                     break;
                 }
                 if !w.text.eq_ignore_ascii_case(b"vertex") {
-                    return Err(self.error(w, "expected `vertex` or `endloop`"));
+                    return Err(self.error(w, "`vertex` or `endloop`"));
                 }
                 v.push(DVec3::new(self.number()?, self.number()?, self.number()?));
             }
             let [a, b, c] = v[..] else {
-                let msg = format!("this facet has {} vertices; an STL facet has 3", v.len());
-                return Err(Error::at(self.file, facet.line, facet.col, msg));
+                let vertices = v.len();
+                let e = Error::FacetVertices { vertices };
+                return Err(e.located(self.file, facet.line, facet.col));
             };
             self.keyword("endfacet")?;
             self.welder
@@ -760,13 +765,20 @@ mod obj {
             let (col, w) = words.next().ok_or_else(|| {
                 (
                     end,
-                    Error::invalid(format!("a vertex needs 3 coordinates, found {k}")),
+                    Error::Needs {
+                        what: "a vertex",
+                        needs: "3 coordinates",
+                        found: k,
+                    },
                 )
             })?;
             *c = finite(w).ok_or_else(|| {
                 (
                     col,
-                    Error::invalid(format!("expected a finite number, found `{}`", show(w))),
+                    Error::Expected {
+                        expected: "a finite number".into(),
+                        found: format!("`{}`", show(w)),
+                    },
                 )
             })?;
         }
@@ -786,10 +798,11 @@ mod obj {
         if refs.len() < 3 {
             return Err((
                 col,
-                Error::invalid(format!(
-                    "a face needs at least 3 vertices, found {}",
-                    refs.len()
-                )),
+                Error::Needs {
+                    what: "a face",
+                    needs: "at least 3 vertices",
+                    found: refs.len(),
+                },
             ));
         }
         for k in 1..refs.len() - 1 {
@@ -806,7 +819,10 @@ mod obj {
             .ok()
             .and_then(|s| s.parse().ok())
             .ok_or_else(|| {
-                Error::invalid(format!("expected a vertex index, found `{}`", show(r)))
+                Error::Expected {
+                    expected: "a vertex index".into(),
+                    found: format!("`{}`", show(r)),
+                }
             })?;
         let k = match i {
             1.. => usize::try_from(i - 1).ok().filter(|&k| k < n),
@@ -814,8 +830,10 @@ mod obj {
             0 => None,
         };
         k.ok_or_else(|| {
-            let msg = format!("vertex index {i} is out of range: {n} vertices are defined so far");
-            Error::invalid(msg)
+            Error::VertexIndex {
+                index: i,
+                defined: n,
+            }
         })
     }
 }

@@ -39,10 +39,12 @@ impl<'a> Archive<'a> {
     /// Reads the central directory; a truncated or damaged archive is one line.
     pub(crate) fn open(bytes: &'a [u8], file: &'a str) -> Result<Archive<'a>> {
         let zip = ZipArchive::new(Cursor::new(bytes)).map_err(|e| {
-            Error::invalid(format!(
-                "{file}: not a readable zip archive ({} bytes): {e}",
-                bytes.len()
-            ))
+            let reason = e.to_string();
+            Error::NotZip {
+                bytes: bytes.len(),
+                reason,
+            }
+            .context(file)
         })?;
         Ok(Archive {
             zip,
@@ -66,22 +68,23 @@ impl<'a> Archive<'a> {
             Ok(e) => e,
             Err(zip::result::ZipError::FileNotFound) => return Ok(None),
             Err(e) => {
-                let msg = format!("{file}: zip entry `{name}`: {e}");
-                return Err(Error::invalid(msg));
+                let reason = e.to_string();
+                let e = Error::ZipEntry { reason }.context(format_args!("zip entry `{name}`"));
+                return Err(e.context(file));
             }
         };
         let at = entry.header_start();
-        let here = |msg: String| {
-            Error::invalid(format!(
-                "{file}: zip entry `{name}` (byte offset {at}): {msg}"
-            ))
+        let here = |e: Error| {
+            e.context(format_args!("zip entry `{name}` (byte offset {at})"))
+                .context(file)
         };
         let bomb = || {
-            here(format!(
-                "inflates past {left} bytes, more than csgpix allows for an archive of this \
-                 size ({INFLATE_RATIO} times, at least {MIN_INFLATE}, at most {MAX_INFLATE} \
-                 bytes): a zip bomb or a damaged archive"
-            ))
+            here(Error::ZipBomb {
+                left,
+                ratio: INFLATE_RATIO,
+                min: MIN_INFLATE,
+                max: MAX_INFLATE,
+            })
         };
         if entry.size() > left {
             return Err(bomb());
@@ -90,7 +93,7 @@ impl<'a> Archive<'a> {
         (&mut entry)
             .take(left + 1)
             .read_to_end(&mut out)
-            .map_err(|e| here(e.to_string()))?;
+            .map_err(|e| here(Error::ZipEntry { reason: e.to_string() }))?;
         // Fewer than `left + 1` bytes: the entry's end was reached (and its CRC checked).
         if out.len() as u64 > left {
             return Err(bomb());

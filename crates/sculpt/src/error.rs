@@ -7,7 +7,7 @@
 use csgpix_scene::{Location, OneLine};
 
 /// An error of `csgpix-sculpt`.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// A scene error (a path file's `FILE:LINE:COL`, a volume's header).
     #[error(transparent)]
@@ -177,11 +177,5 @@ impl Error {
                 source: Box::new(e),
             },
         }
-    }
-}
-
-impl From<Error> for String {
-    fn from(e: Error) -> String {
-        e.to_string()
     }
 }

@@ -517,21 +517,25 @@ fn parse_row(fields: &[(usize, &str)], len: usize, file: &str, line: usize) -> R
     if fields.len() != 3 {
         let col = fields.get(3).map_or(len + 1, |f| f.0);
         let found = fields.len();
-        let msg = format!("expected 3 fields x,y,z, found {found}");
-        return Err(Error::Scene(SceneError::at(file, line, col, msg)));
+        let problem = SceneError::Expected {
+            expected: "3 fields x,y,z".into(),
+            found: found.to_string(),
+        };
+        return Err(Error::Scene(SceneError::at(file, line, col, problem)));
     }
     let mut v = [0.0; 3];
     for (i, (col, f)) in fields.iter().enumerate() {
         let f = f.trim();
-        let msg = match f.parse::<f64>() {
+        let text = f.to_string();
+        let problem = match f.parse::<f64>() {
             Ok(x) if x.is_finite() => {
                 v[i] = x;
                 continue;
             }
-            Ok(_) => format!("{f:?} is not a finite number"),
-            Err(_) => format!("{f:?} is not a number"),
+            Ok(_) => SceneError::NotFinite { text },
+            Err(_) => SceneError::NotANumber { text },
         };
-        return Err(Error::Scene(SceneError::at(file, line, *col, msg)));
+        return Err(Error::Scene(SceneError::at(file, line, *col, problem)));
     }
     Ok(DVec3::from_array(v))
 }

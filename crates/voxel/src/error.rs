@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use csgpix_scene::{Location, OneLine};
 
 /// An error of `csgpix-voxel`.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// A scene error.
     #[error(transparent)]
@@ -120,7 +120,7 @@ pub enum Error {
 
 /// Why a CSG expression over named primitives could not be read: `1:col: error` (the
 /// expression is one line; the line is said all the same, as every located error says it).
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("1:{col}: {}", .error.problem())]
 pub struct ExprError {
     /// The column (1-based, in characters) of the problem.
@@ -211,11 +211,5 @@ impl Error {
                 source: Box::new(e),
             },
         }
-    }
-}
-
-impl From<Error> for String {
-    fn from(e: Error) -> String {
-        e.to_string()
     }
 }

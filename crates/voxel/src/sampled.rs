@@ -303,17 +303,15 @@ enum Origin<'a> {
 impl Origin<'_> {
     /// The import's file is missing.
     fn missing(&self, file: &str, path: PathBuf) -> Error {
-        let problem = BindingProblem::NoSuchFile {
-            file: file.to_string(),
-            path,
-        };
+        let file = file.to_string();
         match self {
             Origin::Scene(at) => {
-                csgpix_scene::Error::at(&at.file, at.line, at.col, problem.to_string()).into()
+                let problem = csgpix_scene::Error::NoSuchImport { file, path };
+                csgpix_scene::Error::at(&at.file, at.line, at.col, problem).into()
             }
             Origin::Binding(name) => Error::Binding {
                 name: name.to_string(),
-                problem,
+                problem: BindingProblem::NoSuchFile { file, path },
             },
         }
     }
@@ -401,14 +399,13 @@ fn mesh_shape(
 
 /// The warning for an imported mesh that is not closed, located where it is named.
 fn open_warning(origin: &Origin, file: &str, what: &str) -> csgpix_scene::Error {
-    let msg = format!(
-        "`{file}`: mesh is not closed: {what}; voxelized by its generalized winding \
-         number (inside where at least 1/2, within the mesh's box), where OpenSCAD's render \
-         drops it"
-    );
+    let warning = csgpix_scene::Error::OpenMeshVoxelized {
+        file: file.to_string(),
+        open: what.to_string(),
+    };
     match origin {
-        Origin::Scene(at) => csgpix_scene::Error::at(&at.file, at.line, at.col, msg),
-        Origin::Binding(name) => csgpix_scene::Error::invalid(format!("--prim {name}: {msg}")),
+        Origin::Scene(at) => warning.located(&at.file, at.line, at.col),
+        Origin::Binding(name) => warning.context(format_args!("--prim {name}")),
     }
 }
 

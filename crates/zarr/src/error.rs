@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 
 /// An error of `csgpix-zarr`.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Error {
     /// The voxelizer's error (with the scene's `FILE:LINE:COL` where it has one).
     #[error(transparent)]
@@ -144,9 +144,3 @@ pub enum StoreProblem {
 
 /// A `csgpix-zarr` result.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
-
-impl From<Error> for String {
-    fn from(e: Error) -> String {
-        e.to_string()
-    }
-}

@@ -276,11 +276,6 @@ impl std::fmt::Display for TableConflict {
 
 impl std::error::Error for TableConflict {}
 
-impl From<TableConflict> for String {
-    fn from(e: TableConflict) -> String {
-        e.to_string()
-    }
-}
 
 impl TruthTable {
     /// Build a table from the reachable pairs of one or more formats.

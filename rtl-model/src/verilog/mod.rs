@@ -47,11 +47,6 @@ impl std::fmt::Display for GoldenError {
 
 impl std::error::Error for GoldenError {}
 
-impl From<GoldenError> for String {
-    fn from(e: GoldenError) -> String {
-        e.to_string()
-    }
-}
 
 /// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE and
 /// for the whole pixel; generic gates and LUT4s for the comparator and for one DEPGEN tree.
