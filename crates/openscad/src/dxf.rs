@@ -76,8 +76,7 @@ pub(crate) fn read(
     settings: &Settings,
     budget: usize,
 ) -> csgpix_scene::Result<Drawing> {
-    let file =
-        std::fs::File::open(path).map_err(|e| Error::io("cannot read it", &e))?;
+    let file = std::fs::File::open(path).map_err(|e| Error::io("cannot read it", &e))?;
     parse(std::io::BufReader::new(file), name, settings, budget)
 }
 
@@ -140,12 +139,17 @@ impl<R: BufRead> Lines<'_, R> {
         let n = (&mut self.input)
             .take(MAX_LINE as u64 + 1)
             .read_until(b'\n', &mut self.buf)
-            .map_err(|e| Error::io("cannot read it", &e).context(format_args!("{}:{at}", self.name)))?;
+            .map_err(|e| {
+                Error::io("cannot read it", &e).context(format_args!("{}:{at}", self.name))
+            })?;
         if n == 0 {
             return Ok(None);
         }
         if self.buf.len() > MAX_LINE {
-            let e = Error::LineTooLong { limit: MAX_LINE, format: Some("DXF") };
+            let e = Error::LineTooLong {
+                limit: MAX_LINE,
+                format: Some("DXF"),
+            };
             return Err(e.context(format_args!("{}:{at}", self.name)));
         }
         self.line = at;

@@ -64,7 +64,11 @@ pub fn scene_text_with(
             .find(|l| l.contains("ERROR"))
             .or_else(|| stderr.lines().rfind(|l| !l.trim().is_empty()))
             .unwrap_or("no output");
-        Error::OpenscadFailed { action: "export", why: line.trim().to_string() }.context(name)
+        Error::OpenscadFailed {
+            action: "export",
+            why: line.trim().to_string(),
+        }
+        .context(name)
     })
 }
 

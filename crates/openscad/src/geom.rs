@@ -90,9 +90,7 @@ pub(crate) fn mesh_of(
             Step::Enter(n) => match n {
                 CsgNode::Empty => done.push(None),
                 CsgNode::Solid(i) => done.push(leaf_manifold(*i, solids, imports)?),
-                CsgNode::Complement(_) => {
-                    return Err(Error::UnboundedComplement)
-                }
+                CsgNode::Complement(_) => return Err(Error::UnboundedComplement),
                 CsgNode::Union(c) | CsgNode::Intersection(c) | CsgNode::Difference(c) => {
                     stack.push(Step::Leave(n));
                     // Reversed, so the first child is evaluated (and pushed on `done`) first.
@@ -163,16 +161,20 @@ pub(crate) fn leaf_mesh(
     imports: &[Import],
 ) -> csgpix_scene::Result<Mesh> {
     if i < IMPORTED {
-        let s = solids
-            .get(i)
-            .ok_or(Error::NoPrimitive { kind: "solid", index: i })?;
+        let s = solids.get(i).ok_or(Error::NoPrimitive {
+            kind: "solid",
+            index: i,
+        })?;
         return Ok(solid_triangles(s));
     }
-    let import = imports
-        .get(i - IMPORTED)
-        .ok_or(Error::NoPrimitive { kind: "import", index: i - IMPORTED })?;
+    let import = imports.get(i - IMPORTED).ok_or(Error::NoPrimitive {
+        kind: "import",
+        index: i - IMPORTED,
+    })?;
     let Some(mesh) = &import.mesh else {
-        return Err(Error::ImportWithoutGeometry { file: import.file.clone() });
+        return Err(Error::ImportWithoutGeometry {
+            file: import.file.clone(),
+        });
     };
     let m = import.matrix;
     Ok(mesh
@@ -211,7 +213,9 @@ fn manifold(tris: &[[DVec3; 3]]) -> csgpix_scene::Result<Option<Manifold>> {
     let idx: Vec<usize> = (0..tris.len() * 3).collect();
     Manifold::new(&pos, &idx)
         .map(Some)
-        .map_err(|e| Error::NotManifold { reason: e.to_string() })
+        .map_err(|e| Error::NotManifold {
+            reason: e.to_string(),
+        })
 }
 
 fn triangles(m: &Manifold) -> Mesh {
@@ -251,9 +255,10 @@ pub(crate) fn pieces(
             CsgNode::Empty => {}
             CsgNode::Union(c) => stack.extend(c.iter()),
             CsgNode::Solid(i) if *i < IMPORTED => {
-                let s = solids
-                    .get(*i)
-                    .ok_or(Error::NoPrimitive { kind: "solid", index: *i })?;
+                let s = solids.get(*i).ok_or(Error::NoPrimitive {
+                    kind: "solid",
+                    index: *i,
+                })?;
                 out.push(Piece::Convex(
                     s.vertices.iter().map(|&v| DVec3::from(v)).collect(),
                 ));

@@ -36,8 +36,7 @@ pub fn hull3(points: &[DVec3]) -> Result<(Vec<DVec3>, Vec<Vec<usize>>)> {
         return Err(Error::HullTooFewPoints);
     }
     let eps = EPS * extent;
-    let tet = initial_tetrahedron(points, eps)
-        .ok_or(Error::FlatHull)?;
+    let tet = initial_tetrahedron(points, eps).ok_or(Error::FlatHull)?;
     let mut hull = Hull::new(points, eps, tet);
     hull.build();
     Ok(hull.merge_coplanar())
@@ -699,10 +698,7 @@ mod properties {
             return Err(String::from("a vertex is no input point"));
         }
         if faces.len() < 4 || faces.iter().any(|f| f.len() < 3) {
-            return Err(format!(
-                "{} faces, or a face of fewer than 3",
-                faces.len()
-            ));
+            return Err(format!("{} faces, or a face of fewer than 3", faces.len()));
         }
         if !closed(&faces) {
             return Err(String::from("not closed: an edge not used once each way"));
@@ -734,9 +730,7 @@ mod properties {
             .map(|t| points[t[0]].dot(points[t[1]].cross(points[t[2]])) / 6.0)
             .sum();
         if !(got > 0.0 && (got - want).abs() <= 1e-9 * size.powi(3)) {
-            return Err(format!(
-                "volume {got}, the incremental hull's {want}"
-            ));
+            return Err(format!("volume {got}, the incremental hull's {want}"));
         }
         Ok(())
     }

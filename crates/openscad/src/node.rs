@@ -273,7 +273,10 @@ impl Params {
     pub(crate) fn require(&self, name: &str, usage: &str) -> Result<&Value, Fail> {
         self.get(name).ok_or_else(|| Fail {
             pos: self.pos,
-            problem: csgpix_scene::Error::NeedsArgument { node: self.node.name().to_string(), usage: usage.to_string() },
+            problem: csgpix_scene::Error::NeedsArgument {
+                node: self.node.name().to_string(),
+                usage: usage.to_string(),
+            },
         })
     }
 }

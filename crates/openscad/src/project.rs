@@ -53,7 +53,10 @@ fn leaf<'a>(i: usize, solids: &'a [ConvexSolid], imports: &'a [Import]) -> Leaf<
 }
 
 fn file_refused(what: &'static str, import: &Import) -> Error {
-    Error::ImportNotSupported { operation: what, file: import.file.clone() }
+    Error::ImportNotSupported {
+        operation: what,
+        file: import.file.clone(),
+    }
 }
 
 fn empty() -> Region {

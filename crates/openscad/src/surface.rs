@@ -89,7 +89,12 @@ pub fn mesh_vertices(lines: usize, columns: usize) -> usize {
 /// The refusal of a grid of `lines` × `columns` that passes the `budget`.
 fn over_budget(lines: usize, columns: usize, budget: usize) -> Option<Error> {
     let n = mesh_vertices(lines, columns);
-    (n > budget).then_some(Error::SurfaceTooLarge { lines, columns, vertices: n, left: budget })
+    (n > budget).then_some(Error::SurfaceTooLarge {
+        lines,
+        columns,
+        vertices: n,
+        left: budget,
+    })
 }
 
 /// The heights of the file at `path` (`SurfaceNode::read_png_or_dat`), `name` in messages. A
@@ -225,7 +230,10 @@ pub fn read_dat<R: BufRead>(mut r: R, name: &str, budget: usize) -> csgpix_scene
         let (start, line) = trim(&buf);
         // A line held in part is a comment when its start says so; else it is refused.
         if long && line.first() != Some(&b'#') {
-            let e = Error::LineTooLong { limit: MAX_DAT_LINE, format: None };
+            let e = Error::LineTooLong {
+                limit: MAX_DAT_LINE,
+                format: None,
+            };
             return Err(Error::at(name, number, 1, e));
         }
         if line.first().is_none_or(|&b| b == b'#') {
@@ -251,7 +259,9 @@ pub fn read_dat<R: BufRead>(mut r: R, name: &str, budget: usize) -> csgpix_scene
             };
             if !v.is_finite() {
                 let tok = String::from_utf8_lossy(token);
-                let e = Error::NonFiniteHeight { token: tok.into_owned() };
+                let e = Error::NonFiniteHeight {
+                    token: tok.into_owned(),
+                };
                 return Err(Error::at(name, number, column(&buf, col), e));
             }
             row.push(v);
@@ -314,11 +324,24 @@ pub fn read_png<R: BufRead + Seek>(
     let (width, height) = info.size();
     let (w, h) = (width as usize, height as usize);
     if let Some(msg) = over_budget(h, w, budget) {
-        let e = Error::ImageSize { width: w, height: h, problem: Box::new(msg) };
+        let e = Error::ImageSize {
+            width: w,
+            height: h,
+            problem: Box::new(msg),
+        };
         return Err(Error::at(name, 0, 17, e));
     }
     let limits = |e: &png::DecodingError| matches!(e, png::DecodingError::LimitsExceeded);
-    let refused = |e: png::DecodingError| Error::at(name, 0, 1, Error::Png { reason: e.to_string() });
+    let refused = |e: png::DecodingError| {
+        Error::at(
+            name,
+            0,
+            1,
+            Error::Png {
+                reason: e.to_string(),
+            },
+        )
+    };
     let mut reader = match decoder.read_info() {
         Ok(reader) => reader,
         Err(e) if limits(&e) => return Err(refused(e)),

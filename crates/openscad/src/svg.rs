@@ -54,8 +54,7 @@ fn apply(m: &Affine, p: DVec2) -> DVec2 {
 /// The SVG file `path` as OpenSCAD's `import(file, dpi, center)` draws it: one even-odd shape
 /// per SVG element, their union. Err is one line.
 pub(crate) fn read(path: &Path, dpi: f64, center: bool) -> csgpix_scene::Result<Vec<Poly2>> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Error::io("cannot read it", &e))?;
+    let text = std::fs::read_to_string(path).map_err(|e| Error::io("cannot read it", &e))?;
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
     parse(&text, name.as_deref().unwrap_or("svg"), dpi, center)
 }
@@ -75,11 +74,14 @@ pub(crate) fn parse(
         allow_dtd: true,
         nodes_limit: csgpix_scene::MAX_XML_NODES,
     };
-    let doc = roxmltree::Document::parse_with_options(text, opts)
-        .map_err(|e| Error::BadSvg { reason: e.to_string() })?;
+    let doc = roxmltree::Document::parse_with_options(text, opts).map_err(|e| Error::BadSvg {
+        reason: e.to_string(),
+    })?;
     let root = doc.root_element();
     if root.tag_name().name() != "svg" {
-        return Err(Error::NotSvg { root: root.tag_name().name().to_string() });
+        return Err(Error::NotSvg {
+            root: root.tag_name().name().to_string(),
+        });
     }
     let page = Page::read(&root)?;
     let mut shapes = vec![];
@@ -132,7 +134,9 @@ impl Page {
         let viewbox = parse_viewbox(attr("viewBox"));
         if let Some(v) = viewbox {
             if v[2] == 0.0 || v[3] == 0.0 {
-                return Err(Error::EmptyViewBox { view_box: attr("viewBox").to_string() });
+                return Err(Error::EmptyViewBox {
+                    view_box: attr("viewBox").to_string(),
+                });
             }
         }
         let (align, meet) = parse_alignment(attr("preserveAspectRatio"));
@@ -280,7 +284,9 @@ fn walk(
     }
     // The text is checked before parsing, but an entity of the DTD may nest more.
     if depth > csgpix_scene::MAX_XML_DEPTH {
-        return Err(Error::TooDeep { limit: csgpix_scene::MAX_XML_DEPTH });
+        return Err(Error::TooDeep {
+            limit: csgpix_scene::MAX_XML_DEPTH,
+        });
     }
     let ns = node.tag_name().namespace();
     let svg_ns = ns.is_none() || ns == Some("http://www.w3.org/2000/svg");

@@ -162,15 +162,22 @@ impl Fonts {
                     weight = Some(match v.trim().to_ascii_lowercase().as_str() {
                         "bold" => 700,
                         "regular" | "normal" | "medium" => 400,
-                        _ => return Err(Error::UnsupportedFontWeight { weight: v.to_string() }.context(format_args!("font `{name}`"))),
+                        _ => {
+                            return Err(Error::UnsupportedFontWeight {
+                                weight: v.to_string(),
+                            }
+                            .context(format_args!("font `{name}`")))
+                        }
                     })
                 }
                 None if prop.eq_ignore_ascii_case("bold") => weight = Some(700),
                 None if prop.eq_ignore_ascii_case("italic") => italic = true,
                 None if prop.eq_ignore_ascii_case("regular") => weight = Some(400),
                 _ => {
-                    return Err(Error::UnsupportedFontProperty { property: prop.to_string() }
-                        .context(format_args!("font `{name}`")))
+                    return Err(Error::UnsupportedFontProperty {
+                        property: prop.to_string(),
+                    }
+                    .context(format_args!("font `{name}`")))
                 }
             }
         }
@@ -213,11 +220,16 @@ impl Fonts {
                     layer: *layer,
                     id: f.id,
                 }),
-                None => Err(Error::NoSuchStyle { family: family.to_string() }
-                    .context(format_args!("font `{name}`"))),
+                None => Err(Error::NoSuchStyle {
+                    family: family.to_string(),
+                }
+                .context(format_args!("font `{name}`"))),
             };
         }
-        Err(Error::FontNotFound { font: name.to_string(), scene: self.then.is_some() })
+        Err(Error::FontNotFound {
+            font: name.to_string(),
+            scene: self.then.is_some(),
+        })
     }
 }
 
@@ -520,8 +532,10 @@ fn render_face(
     index: u32,
     max_points: usize,
 ) -> csgpix_scene::Result<Poly2> {
-    let face = rustybuzz::Face::from_slice(data, index)
-        .ok_or_else(|| Error::FontUnreadable { font: spec.font.clone(), parsed: true })?;
+    let face = rustybuzz::Face::from_slice(data, index).ok_or_else(|| Error::FontUnreadable {
+        font: spec.font.clone(),
+        parsed: true,
+    })?;
     let to26 = units_26_6(&face);
     let mut buffer = rustybuzz::UnicodeBuffer::new();
     buffer.push_str(&spec.text);

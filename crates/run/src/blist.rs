@@ -111,13 +111,20 @@ fn trace_bits(text: &str, e: &CsgExpr) -> crate::Result<Vec<bool>> {
                 "--trace",
                 1,
                 i + 1,
-                csgpix_scene::Error::Expected { expected: "0 or 1".into(), found: format!("{c:?}") },
+                csgpix_scene::Error::Expected {
+                    expected: "0 or 1".into(),
+                    found: format!("{c:?}"),
+                },
             )),
         })
         .collect::<Result<_, _>>()?;
     if bits.len() != e.names.len() {
         let message = csgpix_scene::Error::Expected {
-            expected: format!("{} bits, one per primitive ({})", e.names.len(), e.names.join(", ")),
+            expected: format!(
+                "{} bits, one per primitive ({})",
+                e.names.len(),
+                e.names.join(", ")
+            ),
             found: bits.len().to_string(),
         };
         return Err(csgpix_scene::Error::at("--trace", 1, 1, message).into());

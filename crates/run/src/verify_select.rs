@@ -66,7 +66,9 @@ fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> crate::Result<VectorF
         ),
     };
     let file = VectorFile::parse(name.as_str(), &text);
-    file.map_err(|e| csgpix_scene::Error::at(name, e.line, e.col, csgpix_scene::Error::invalid(e.msg)).into())
+    file.map_err(|e| {
+        csgpix_scene::Error::at(name, e.line, e.col, csgpix_scene::Error::invalid(e.msg)).into()
+    })
 }
 
 /// Every signal of `eq` checked on every care row of the golden vectors (§2.3.3): the

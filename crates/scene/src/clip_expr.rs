@@ -74,12 +74,13 @@ impl Clip {
     /// ```
     pub fn parse(text: &str, names: &[String]) -> Result<Clip> {
         let known = |name: &str| {
-            names.iter().position(|n| n == name).ok_or_else(|| {
-                Error::UnknownObject {
+            names
+                .iter()
+                .position(|n| n == name)
+                .ok_or_else(|| Error::UnknownObject {
                     name: name.to_string(),
                     known: names.to_vec(),
-                }
-            })
+                })
         };
         let tree = expr::parse(text, &GRAMMAR, known)?;
         Ok(tree.lower(|node, kids| match node {

@@ -224,12 +224,10 @@ impl Field<'_> {
         if self.text.is_empty() || !self.text.bytes().all(|b| b.is_ascii_digit()) {
             return Err(self.expected("an unsigned integer colour"));
         }
-        self.text
-            .parse()
-            .map_err(|_| {
-                let text = self.text.to_string();
-                self.error(Error::ColourOutOfRange { text })
-            })
+        self.text.parse().map_err(|_| {
+            let text = self.text.to_string();
+            self.error(Error::ColourOutOfRange { text })
+        })
     }
 
     /// An external variable H, Y or L: exactly `0` or `1`.

@@ -380,7 +380,9 @@ pub enum Error {
         offset: u64,
     },
     /// A binary STL triangle with a coordinate that is infinite or NaN.
-    #[error("triangle {triangle} (byte offset {offset}) has a coordinate that is not a finite number")]
+    #[error(
+        "triangle {triangle} (byte offset {offset}) has a coordinate that is not a finite number"
+    )]
     NonFiniteTriangle {
         /// The triangle's index.
         triangle: usize,
@@ -681,7 +683,9 @@ pub enum Error {
         to: usize,
     },
     /// A polyhedron edge with no neighbouring face.
-    #[error("not closed: the edge between points {a} and {b} of face {face} has no neighbouring face")]
+    #[error(
+        "not closed: the edge between points {a} and {b} of face {face} has no neighbouring face"
+    )]
     OpenEdge {
         /// One end.
         a: usize,
@@ -726,7 +730,10 @@ pub enum Error {
         weight: String,
     },
     /// A font property csgpix does not read.
-    #[error("unsupported property `{}` (csgpix reads `Family:style=Style`)", OneLine(property))]
+    #[error(
+        "unsupported property `{}` (csgpix reads `Family:style=Style`)",
+        OneLine(property)
+    )]
     UnsupportedFontProperty {
         /// The property, as written.
         property: String,
@@ -995,7 +1002,6 @@ impl Error {
     }
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1021,7 +1027,10 @@ mod tests {
             samples: 5,
             sizes: [2, 2, 2],
         };
-        assert_eq!(e.context("dataset").to_string(), "dataset: 5 samples for sizes 2×2×2");
+        assert_eq!(
+            e.context("dataset").to_string(),
+            "dataset: 5 samples for sizes 2×2×2"
+        );
         let e = Error::WriteSampleCount {
             samples: 5,
             sizes: [2, 2, 2],
@@ -1097,7 +1106,9 @@ mod tests {
         };
         assert_eq!(unread.to_string(), "font `X` could not be parsed");
         assert_eq!(
-            Error::NoOpenscad { scad: true }.context("p.scad").to_string(),
+            Error::NoOpenscad { scad: true }
+                .context("p.scad")
+                .to_string(),
             "p.scad: reading .scad needs openscad on PATH (Debian: apt-get install openscad); or \
              export File → Export → Export as CSG and give the .csg"
         );
@@ -1107,7 +1118,10 @@ mod tests {
         };
         assert_eq!(
             failed.to_string(),
-            format!("openscad could not mesh it: {}", OneLine("ERROR: Parser error\nin file")),
+            format!(
+                "openscad could not mesh it: {}",
+                OneLine("ERROR: Parser error\nin file")
+            ),
             "a library's or program's text stays one line"
         );
     }

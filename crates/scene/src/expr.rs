@@ -455,6 +455,9 @@ mod tests {
                 known: vec!["A".to_string()],
             }),
         });
-        assert_eq!(e.unwrap_err().to_string(), "<expr>:1:3: unknown object \"Bad\"; the scene names A");
+        assert_eq!(
+            e.unwrap_err().to_string(),
+            "<expr>:1:3: unknown object \"Bad\"; the scene names A"
+        );
     }
 }

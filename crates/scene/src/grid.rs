@@ -107,9 +107,7 @@ impl GridSpec {
             (Some(dims), None, None) => Grid::new(dims, lo, hi)?,
             (None, Some(size), None) => Self::cubic(size, lo, hi)?,
             (None, None, Some(n)) => Self::longest(n, lo, hi)?,
-            _ => {
-                return Err(Error::ResolutionAndVoxelSize)
-            }
+            _ => return Err(Error::ResolutionAndVoxelSize),
         };
         let v = inner.voxel();
         let pad = self.pad.min(MAX_GRID_SIDE);

@@ -133,7 +133,12 @@ impl<'a> Xml<'a> {
     /// `msg` at the start of `node`.
     pub(crate) fn error(&self, node: roxmltree::Node, msg: impl Into<String>) -> Error {
         let p = self.doc.text_pos_at(node.range().start);
-        Error::at(self.file, p.row as usize, p.col as usize, Error::invalid(msg))
+        Error::at(
+            self.file,
+            p.row as usize,
+            p.col as usize,
+            Error::invalid(msg),
+        )
     }
 }
 

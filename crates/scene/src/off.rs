@@ -104,9 +104,10 @@ impl<'a> Words<'a> {
 
     fn count(&mut self, what: &str) -> Result<(usize, Word<'a>)> {
         let w = self.next(what)?;
-        let n = w.text.parse::<usize>().map_err(|_| {
-            self.expected(w, format!("{what} (a whole number)"))
-        })?;
+        let n = w
+            .text
+            .parse::<usize>()
+            .map_err(|_| self.expected(w, format!("{what} (a whole number)")))?;
         Ok((n, w))
     }
 
@@ -124,9 +125,10 @@ struct Header {
 
 /// Reads the keyword, if any, as CGAL's `operator>>(istream, File_header_OFF)` does.
 fn header(w: &mut Words) -> Result<Header> {
-    let first = *w.words.peek().ok_or_else(|| {
-        Error::EmptyOff.context(w.file)
-    })?;
+    let first = *w
+        .words
+        .peek()
+        .ok_or_else(|| Error::EmptyOff.context(w.file))?;
     let t = first.text.as_bytes();
     // CGAL: a keyword unless the word starts with a digit other than '4' or has a digit second.
     if t.len() < 2 || (t[0].is_ascii_digit() && t[0] != b'4') || t[1].is_ascii_digit() {
@@ -212,8 +214,7 @@ fn vertex(w: &mut Words, homogeneous: bool) -> Result<[f64; 3]> {
             .parse::<f64>()
             .ok()
             .filter(|h| h.is_finite() && *h != 0.0);
-        let h =
-            h.ok_or_else(|| w.expected(at, "a nonzero w"))?;
+        let h = h.ok_or_else(|| w.expected(at, "a nonzero w"))?;
         p = p.map(|c| c / h);
         if p.iter().any(|c| !c.is_finite()) {
             return Err(w.error(at, Error::InfiniteVertex));

@@ -52,8 +52,7 @@ impl Welder {
         if let Some(&i) = self.at.get(&key) {
             return Ok(i);
         }
-        let i = u32::try_from(self.mesh.vertices.len())
-            .map_err(|_| Error::TooManyVertices)?;
+        let i = u32::try_from(self.mesh.vertices.len()).map_err(|_| Error::TooManyVertices)?;
         self.mesh.vertices.push(p);
         self.at.insert(key, i);
         Ok(i)
@@ -563,9 +562,7 @@ mod stl {
     /// 2-byte attribute. Bytes past the last triangle are ignored.
     fn binary(bytes: &[u8], file: &str) -> Result<TriMesh> {
         let len = bytes.len() as u64;
-        let n = count(bytes).ok_or_else(|| {
-            Error::StlHeaderTruncated { len }.context(file)
-        })?;
+        let n = count(bytes).ok_or_else(|| Error::StlHeaderTruncated { len }.context(file))?;
         if len < 84 + 50 * n {
             let k = (len - 84) / 50;
             let e = Error::StlTruncated {
@@ -818,22 +815,18 @@ mod obj {
         let i: i64 = std::str::from_utf8(a)
             .ok()
             .and_then(|s| s.parse().ok())
-            .ok_or_else(|| {
-                Error::Expected {
-                    expected: "a vertex index".into(),
-                    found: format!("`{}`", show(r)),
-                }
+            .ok_or_else(|| Error::Expected {
+                expected: "a vertex index".into(),
+                found: format!("`{}`", show(r)),
             })?;
         let k = match i {
             1.. => usize::try_from(i - 1).ok().filter(|&k| k < n),
             ..=-1 => usize::try_from(n as i64 + i).ok(),
             0 => None,
         };
-        k.ok_or_else(|| {
-            Error::VertexIndex {
-                index: i,
-                defined: n,
-            }
+        k.ok_or_else(|| Error::VertexIndex {
+            index: i,
+            defined: n,
         })
     }
 }

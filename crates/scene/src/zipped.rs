@@ -93,7 +93,11 @@ impl<'a> Archive<'a> {
         (&mut entry)
             .take(left + 1)
             .read_to_end(&mut out)
-            .map_err(|e| here(Error::ZipEntry { reason: e.to_string() }))?;
+            .map_err(|e| {
+                here(Error::ZipEntry {
+                    reason: e.to_string(),
+                })
+            })?;
         // Fewer than `left + 1` bytes: the entry's end was reached (and its CRC checked).
         if out.len() as u64 > left {
             return Err(bomb());

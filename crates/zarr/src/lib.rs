@@ -1040,7 +1040,10 @@ impl ZarrVolume {
 /// The grid the `csgpix` attribute describes.
 fn grid_of(v: &Value) -> csgpix_scene::Result<Grid> {
     let field = |key: &str, e: serde_json::Error| {
-        csgpix_scene::Error::Json { reason: e.to_string() }.context(format_args!("`{key}`"))
+        csgpix_scene::Error::Json {
+            reason: e.to_string(),
+        }
+        .context(format_args!("`{key}`"))
     };
     let dims: [usize; 3] =
         serde_json::from_value(v["dims"].clone()).map_err(|e| field("dims", e))?;

@@ -276,7 +276,6 @@ impl std::fmt::Display for TableConflict {
 
 impl std::error::Error for TableConflict {}
 
-
 impl TruthTable {
     /// Build a table from the reachable pairs of one or more formats.
     pub fn build(t: Table, reach: &[Reachable]) -> Result<TruthTable, TableConflict> {

@@ -47,7 +47,6 @@ impl std::fmt::Display for GoldenError {
 
 impl std::error::Error for GoldenError {}
 
-
 /// The Yosys cost script: generic gates, then 4- and 6-input LUTs, for each set's SGENE and
 /// for the whole pixel; generic gates and LUT4s for the comparator and for one DEPGEN tree.
 fn cost_script() -> String {
