@@ -12,6 +12,7 @@ mod common;
 mod completions;
 mod man;
 pub mod progress;
+mod voxelize;
 
 use std::process::ExitCode;
 
@@ -49,7 +50,7 @@ pub enum Cmd {
     /// Run display lists through the array and write the image.
     Render(run::render::Args),
     /// Voxelize a CSG scene slice by slice through the array; write a NRRD volume or an OME-Zarr store.
-    Voxelize(run::voxelize::Args),
+    Voxelize(voxelize::Args),
     /// Carve (or add) with a spherical tool along a path in the hashed octree; write the mesh.
     Sculpt(run::sculpt::Args),
     /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
@@ -76,7 +77,7 @@ pub fn run(cli: Cli) -> run::Result<ExitCode> {
         Cmd::VerifySelect(a) => run::verify_select::run(a),
         Cmd::ExportVerilog(a) => run::export_verilog::run(a),
         Cmd::Render(a) => run::render::run(a),
-        Cmd::Voxelize(a) => run::voxelize::run(a),
+        Cmd::Voxelize(a) => voxelize::run(a),
         Cmd::Sculpt(a) => run::sculpt::run(a),
         Cmd::Blist(a) => blist::run(a),
         Cmd::Requirements(a) => run::requirements::run(a),

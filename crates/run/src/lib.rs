@@ -37,6 +37,7 @@ pub mod error;
 pub mod export_verilog;
 pub mod gen_vectors;
 pub mod grid;
+pub mod grid_args;
 mod lib_errors;
 pub mod memory;
 
@@ -57,8 +58,6 @@ pub mod throughput_fpga;
 pub mod value;
 pub mod verify_select;
 pub mod voxelize;
-#[cfg(feature = "zarr")]
-pub mod zarr;
 
 use std::process::ExitCode;
 
