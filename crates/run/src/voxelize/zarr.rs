@@ -101,14 +101,9 @@ impl VoxelizeJob {
         progress: &dyn Progress,
     ) -> crate::Result<(Work, u64)> {
         let store = ZarrVolume::open(path)?;
-        let pool = super::thread_pool(self.threads)?;
-        let job = VoxelizeJob {
-            threads: Some(pool.current_num_threads()),
-            ..self.clone()
-        };
         // Checked before anything is allocated: the store's grid and chunks are what its
         // zarr.json says, whoever wrote it.
-        let plan = job.plan_on(loaded, *store.grid())??;
+        let plan = self.plan_on(loaded, *store.grid())??;
         let layout = store.layout();
         // The estimate walks a dataset's columns to count its runs: on the task's threads.
         let need = plan.pool.install(|| {
