@@ -7,13 +7,17 @@ use glam::DVec3;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+use std::sync::Mutex;
+
 use csgpix_run::array_args::parse_word;
+use csgpix_run::grid::{GridOptions, Resolution};
 use csgpix_run::memory::Limit;
-use csgpix_run::voxelize::{grid_spec, parse_blend, Resolution, Voxelization};
+use csgpix_run::progress::Progress;
+use csgpix_run::voxelize::{parse_blend, Voxelization, VoxelizeJob};
 use csgpix_voxel::sampled::{load_scene_with, scene_from_expr_with, Binding, Loaded};
-use csgpix_voxel::slice::SliceEval;
-use csgpix_voxel::{Grid, Route, Slicer};
-use rtl_model::{Equations, WordFormat};
+use csgpix_voxel::Grid;
+use rtl_model::WordFormat;
 
 use crate::errors::{text, voxel};
 
@@ -193,16 +197,6 @@ fn read_options() -> csgpix_openscad::ReadOptions {
     }
 }
 
-/// Refuse a run whose estimate `need` (bytes) is over `max_memory` MiB, by default the memory
-/// available now (docs/memory.md), before anything is allocated.
-pub fn check_memory(need: u64, max_memory: Option<u64>) -> PyResult<()> {
-    let limit = Limit::new(max_memory, "max_memory");
-    let fix = "lower res (or z, or chunk)";
-    limit
-        .check(need, "this run", fix)
-        .map_err(|e| text(e.to_string()))
-}
-
 fn binding(name: String, v: &Bound<'_, PyAny>) -> PyResult<Binding> {
     let (file, threshold) = match v.extract::<(PathBuf, f64)>() {
         Ok((f, t)) => (f, Some(t)),
@@ -222,43 +216,25 @@ fn binding(name: String, v: &Bound<'_, PyAny>) -> PyResult<Binding> {
     })
 }
 
-/// The grid and sampling options of a voxelization.
-pub struct GridOptions {
-    pub res: Option<Resolution>,
-    pub voxel: Option<f64>,
-    pub pad: usize,
-    pub bounds: Option<([f64; 3], [f64; 3])>,
-}
-
-impl GridOptions {
-    /// The options as given: `res` N or (NX, NY, NZ), or `voxel`, one of them.
-    pub fn new(
-        res: Option<&Bound<'_, PyAny>>,
-        voxel: Option<f64>,
-        pad: usize,
-        bounds: Option<([f64; 3], [f64; 3])>,
-    ) -> PyResult<GridOptions> {
-        let res = resolution(res)?;
-        if res.is_some() == voxel.is_some() {
-            return Err(text("give res or voxel (one of them)".into()));
-        }
-        Ok(GridOptions {
-            res,
-            voxel,
-            pad,
-            bounds,
-        })
+/// The grid options of a voxelization as given: `res` N or (NX, NY, NZ), or `voxel`, one of
+/// them; `pad` and `bounds` as `--pad` and `--bounds`.
+pub fn grid_options(
+    res: Option<&Bound<'_, PyAny>>,
+    voxel: Option<f64>,
+    pad: usize,
+    bounds: Option<([f64; 3], [f64; 3])>,
+) -> PyResult<GridOptions> {
+    let res = resolution(res)?;
+    if res.is_some() == voxel.is_some() {
+        return Err(text("give res or voxel (one of them)".into()));
     }
-
-    /// The grid of these options over `bounds` or the scene's, as `--res`, `--voxel`,
-    /// `--pad` and `--bounds` make it.
-    pub fn grid(&self, scene: &Scene) -> PyResult<Grid> {
-        let spec = grid_spec(self.res, self.voxel, self.pad);
-        let bounds = self
-            .bounds
-            .map(|(a, b)| (DVec3::from_array(a), DVec3::from_array(b)));
-        scene.loaded.grid_over(&spec, bounds).map_err(voxel)
-    }
+    Ok(GridOptions {
+        res,
+        voxel,
+        pad,
+        bounds,
+        ..GridOptions::default()
+    })
 }
 
 /// `res` as N (cubic voxels, N along the longest side, as `--res N`) or (NX, NY, NZ).
@@ -272,10 +248,6 @@ fn resolution(res: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Resolution>> {
         .map_err(|_| text("res: an int N or a tuple (NX, NY, NZ)".into()))
 }
 
-/// Everything but the grid that decides a run's voxels: the command line's options
-/// ([`Voxelization`]), from keyword arguments spelled as its flags' values.
-pub struct RunOptions(pub Voxelization);
-
 /// A keyword argument's value by its flag's parser: the command line's names and forms.
 fn parsed<T: std::str::FromStr>(s: &str) -> PyResult<T>
 where
@@ -284,50 +256,73 @@ where
     s.parse().map_err(|e: T::Err| text(e.to_string()))
 }
 
-impl RunOptions {
-    #[allow(clippy::too_many_arguments)]
-    pub fn parse(
-        sampling: &str,
-        model: &str,
-        route: &str,
-        eval: &str,
-        grey: bool,
-        blend: Option<&str>,
-        word: &str,
-    ) -> PyResult<RunOptions> {
-        let blend = match blend {
+/// The keyword arguments that decide a run's voxels beside its grid, spelled as the command
+/// line's flags' values.
+pub struct Options<'a> {
+    pub sampling: &'a str,
+    pub model: &'a str,
+    pub route: &'a str,
+    pub eval: &'a str,
+    pub grey: bool,
+    pub blend: Option<&'a str>,
+    pub word: &'a str,
+}
+
+impl Options<'_> {
+    /// The job of voxelizing `scene` on `grid` with these options (the command line's
+    /// defaults for the rest: derived equations, 32×32 panels), within `max_memory` MiB (by
+    /// default the memory available now, docs/memory.md).
+    pub fn job(
+        &self,
+        scene: &Scene,
+        mut grid: GridOptions,
+        max_memory: Option<u64>,
+    ) -> PyResult<VoxelizeJob> {
+        let blend = match self.blend {
             None => None,
             Some(b) => Some(parse_blend(b).map_err(|e| text(format!("blend {b:?}: {e}")))?),
         };
-        if grey && blend.is_some() {
+        if self.grey && blend.is_some() {
             return Err(text("grey and blend: give one".into()));
         }
-        let word = word_format(word)?;
-        Ok(RunOptions(Voxelization {
-            sampling: parsed(sampling)?,
-            model: parsed(model)?,
-            route: parsed(route)?,
-            eval: parsed(eval)?,
-            equations: Equations::Derived,
+        let word = word_format(self.word)?;
+        grid.sampling = csgpix_run::named::parse(self.sampling).map_err(|e| text(e.to_string()))?;
+        let voxels = Voxelization {
+            model: parsed(self.model)?,
+            route: parsed(self.route)?,
+            eval: parsed(self.eval)?,
             word,
-            panel: Some(csgpix_voxel::DEFAULT_PANEL),
-            grey,
+            grey: self.grey,
             blend,
-        }))
+            ..Voxelization::default()
+        };
+        let (scene_path, expr, prim) = scene.input();
+        Ok(VoxelizeJob {
+            scene: scene_path,
+            expr,
+            prim,
+            grid,
+            voxels,
+            max_memory: Limit::new(max_memory, "max_memory"),
+            ..VoxelizeJob::default()
+        })
     }
+}
 
-    /// The route these options take on `slicer`.
-    pub fn route(&self, slicer: &Slicer) -> Route {
-        self.0.route(slicer)
-    }
-
-    pub fn evaluator(&self, scene: &Scene) -> Box<dyn SliceEval + Send + Sync> {
-        self.0.evaluator(&scene.loaded.scene)
-    }
-
-    /// The slicer of `scene` on `grid`.
-    pub fn slicer(&self, scene: &Scene, grid: Grid) -> PyResult<Slicer> {
-        self.0.slicer(&scene.loaded, grid).map_err(voxel)
+impl Scene {
+    /// The job's input: the scene's file, or its expression and bindings.
+    fn input(&self) -> (Option<PathBuf>, Option<String>, Vec<Binding>) {
+        match &self.source {
+            Source::File(p, _, _) => (Some(p.clone()), None, vec![]),
+            Source::Expr(e, prims) => {
+                let prims = prims.iter().map(|(name, file, threshold)| Binding {
+                    name: name.clone(),
+                    file: file.clone(),
+                    threshold: *threshold,
+                });
+                (None, Some(e.clone()), prims.collect())
+            }
+        }
     }
 }
 
@@ -336,21 +331,13 @@ pub fn word_format(s: &str) -> PyResult<WordFormat> {
     parse_word(s).map_err(|e| text(format!("word {s:?}: {e}")))
 }
 
-/// The slab range `z` of `nz` slabs: all of them when None.
-pub fn slab_range(z: Option<(usize, usize)>, nz: usize) -> PyResult<std::ops::Range<usize>> {
-    match z {
-        None => Ok(0..nz),
-        Some((a, b)) if a <= b && b <= nz => Ok(a..b),
-        Some((a, b)) => Err(text(format!("z=({a}, {b}): the grid has slabs 0..{nz}"))),
-    }
-}
-
 /// Voxelize `scene` (seed 001 §4.4): uint8 colour codes, 0 empty, as a numpy array of shape
 /// (k1 − k0, NY, NX), with the grid's origin (centre of voxel (0, 0, 0)), spacing and dims.
+/// `progress`: called as `progress(done, total)` as the slices are computed.
 #[pyfunction]
 #[pyo3(signature = (scene, res=None, *, voxel=None, pad=0, bounds=None, sampling="centre",
     model="word", route="runs", eval="blist", grey=false, blend=None, word="10/10/11",
-    z=None, max_memory=None))]
+    z=None, max_memory=None, progress=None))]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 pub fn voxelize<'py>(
     py: Python<'py>,
@@ -368,23 +355,25 @@ pub fn voxelize<'py>(
     word: &str,
     z: Option<(usize, usize)>,
     max_memory: Option<u64>,
+    progress: Option<Py<PyAny>>,
 ) -> PyResult<(Bound<'py, PyAny>, [f64; 3], [f64; 3], [usize; 3])> {
-    let grid = GridOptions::new(res, voxel, pad, bounds)?.grid(scene)?;
-    let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
-    let slabs = slab_range(z, grid.dims[2])?;
-    let slicer = opts.slicer(scene, grid)?;
-    let eval = opts.evaluator(scene);
-    let threads = rayon::current_num_threads();
-    check_memory(
-        opts.0
-            .slabs_estimate(&slicer, eval.as_ref(), &slabs, threads),
-        max_memory,
-    )?;
+    let grid = grid_options(res, voxel, pad, bounds)?;
+    let options = Options {
+        sampling,
+        model,
+        route,
+        eval,
+        grey,
+        blend,
+        word,
+    };
+    let job = options.job(scene, grid, max_memory)?;
+    let sink = Callback::new(progress);
+    let slabs = py.detach(|| job.slabs(&scene.loaded, z, &sink));
+    sink.raise()?;
+    let (bytes, grid) = slabs.map_err(crate::errors::run)?;
     let [nx, ny, _] = grid.dims;
-    let n = slabs.len();
-    let bytes = py
-        .detach(|| opts.0.slabs(&slicer, eval.as_ref(), slabs))
-        .map_err(crate::errors::voxel)?;
+    let n = bytes.len() / (nx * ny).max(1);
     let arr = PyArray1::from_vec(py, bytes).reshape([n, ny, nx])?;
     Ok((
         arr.into_any(),
@@ -392,6 +381,59 @@ pub fn voxelize<'py>(
         grid.voxel().to_array(),
         grid.dims,
     ))
+}
+
+/// A job's progress handed to a Python callable as `progress(done, total)` (tqdm-friendly:
+/// `lambda done, total: bar.update(done - bar.n)`), the GIL taken for each call. The first
+/// exception it raises is kept and raised once the job is over.
+pub struct Callback {
+    f: Option<Py<PyAny>>,
+    done: AtomicU64,
+    total: AtomicU64,
+    raised: Mutex<Option<PyErr>>,
+}
+
+impl Callback {
+    /// The sink of `f`, or one that shows nothing.
+    pub fn new(f: Option<Py<PyAny>>) -> Callback {
+        Callback {
+            f,
+            done: AtomicU64::new(0),
+            total: AtomicU64::new(0),
+            raised: Mutex::new(None),
+        }
+    }
+
+    fn call(&self) {
+        let Some(f) = &self.f else { return };
+        let mut raised = self.raised.lock().unwrap_or_else(|e| e.into_inner());
+        if raised.is_some() {
+            return;
+        }
+        let (done, total) = (self.done.load(Relaxed), self.total.load(Relaxed));
+        if let Err(e) = Python::attach(|py| f.call1(py, (done, total)).map(drop)) {
+            *raised = Some(e);
+        }
+    }
+
+    /// The callback's first exception, if it raised one.
+    pub fn raise(&self) -> PyResult<()> {
+        let raised = self.raised.lock().unwrap_or_else(|e| e.into_inner()).take();
+        raised.map_or(Ok(()), Err)
+    }
+}
+
+impl Progress for Callback {
+    fn stage(&self, _: &str, total: u64) {
+        self.done.store(0, Relaxed);
+        self.total.store(total, Relaxed);
+        self.call();
+    }
+
+    fn advance(&self, n: u64) {
+        self.done.fetch_add(n, Relaxed);
+        self.call();
+    }
 }
 
 /// The surface of a volume (`data[k, j, i]`, uint8, 0 empty) on its grid (`origin` the centre

@@ -8,13 +8,12 @@ use std::path::PathBuf;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use csgpix_run::voxelize::{parse_chunk, parse_shard, thread_pool};
-use csgpix_run::zarr::{by_bricks, create_store, estimate, write_bricks};
-use csgpix_zarr::{Layout, ZarrVolume, DEFAULT_CHUNK, DEFAULT_SHARD};
-use rtl_model::Equations;
+use csgpix_run::grid::GridOptions;
+use csgpix_run::voxelize::{parse_chunk, parse_shard};
+use csgpix_zarr::{DEFAULT_CHUNK, DEFAULT_SHARD};
 
-use crate::errors::{run, text, zarr};
-use crate::voxel::{check_memory, GridOptions, RunOptions, Scene};
+use crate::errors::{run, text};
+use crate::voxel::{grid_options, Callback, Options, Scene};
 
 /// `chunk` as N or (X, Y, Z), as `res` is, read as `--chunk` reads `N` or `XxYxZ`; held
 /// (Z, Y, X), the array's order.
@@ -80,17 +79,22 @@ pub fn zarr_create<'py>(
     blend: Option<&str>,
     word: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let grid = GridOptions::new(res, voxel, pad, bounds)?.grid(scene)?;
+    let grid = grid_options(res, voxel, pad, bounds)?;
     // Checked here so that a bad option fails before any file is written.
-    let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
-    let bricks = by_bricks(opts.route(&opts.slicer(scene, grid)?));
-    let layout = Layout {
-        chunk: chunk_shape(chunk)?,
-        shard: shard_side(shard)?,
-        levels,
+    let options = Options {
+        sampling,
+        model,
+        route,
+        eval,
+        grey,
+        blend,
+        word,
     };
-    let blend = blend.is_some();
-    let store = create_store(&path, &grid, &layout, &scene.name, grey, blend).map_err(zarr)?;
+    let mut job = options.job(scene, grid, None)?;
+    job.outputs.chunk = Some(chunk_shape(chunk)?);
+    job.outputs.shard = Some(shard_side(shard)?);
+    job.outputs.levels = levels;
+    let (store, bricks) = job.create_zarr(&scene.loaded, &path).map_err(run)?;
     let d = PyDict::new(py);
     d.set_item("dims", store.dims())?;
     d.set_item("chunk", store.chunk())?;
@@ -106,12 +110,13 @@ pub fn zarr_create<'py>(
 /// Voxelize chunk rows `rows` (r0, r1) of the volume at `path` and store them; the grid is
 /// the store's. `tiles` (t0, t1): only the bricks of those XY tiles (indices into the
 /// store's tiles, row-major; default all), which the run route alone computes apart.
-/// `threads`: the voxelizer's (default: every core). Returns the bricks' work, and
+/// `threads`: the voxelizer's (default: every core). `progress`: called as
+/// `progress(done, total)` as bricks (or slices) are stored. Returns the bricks' work, and
 /// `files_written`: the shard (or chunk) files it wrote, every level.
 #[pyfunction]
 #[pyo3(signature = (scene, path, rows, *, tiles=None, sampling="centre", model="word",
     route="runs", eval="blist", grey=false, blend=None, word="10/10/11", threads=None,
-    max_memory=None))]
+    max_memory=None, progress=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn zarr_write_rows<'py>(
     py: Python<'py>,
@@ -128,39 +133,31 @@ pub fn zarr_write_rows<'py>(
     word: &str,
     threads: Option<usize>,
     max_memory: Option<u64>,
+    progress: Option<Py<PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let opts = RunOptions::parse(sampling, model, route, eval, grey, blend, word)?;
-    let store = ZarrVolume::open(&path).map_err(zarr)?;
-    let pool = thread_pool(threads).map_err(run)?;
-    // Checked before anything is allocated: the store's grid and chunks are what its
-    // zarr.json says, whoever wrote it.
-    let slicer = opts.slicer(scene, *store.grid())?;
-    let eval = opts.evaluator(scene);
-    let route = opts.route(&slicer);
-    let threads = pool.current_num_threads();
-    let layout = store.layout();
+    let options = Options {
+        sampling,
+        model,
+        route,
+        eval,
+        grey,
+        blend,
+        word,
+    };
+    // The grid is the store's: these options are never used.
+    let mut job = options.job(scene, GridOptions::default(), max_memory)?;
+    job.threads = threads;
     let (rows, tiles) = (rows.0..rows.1, tiles.map(|(t0, t1)| t0..t1));
-    // The estimate walks a dataset's columns to count its runs: on the task's threads.
-    let need = py.detach(|| {
-        let within = (&layout, tiles.clone());
-        pool.install(|| estimate(&slicer, route, eval.as_ref(), threads, within))
-    });
-    check_memory(need.map_err(zarr)?, max_memory)?;
-    let set = Equations::Derived.set();
-    let work = py
-        .detach(|| {
-            pool.install(|| {
-                let (e, tick) = (eval.as_ref(), &|| {});
-                write_bricks(&slicer, route, set, e, tick, &store, rows, tiles)
-            })
-        })
-        .map_err(run)?;
+    let sink = Callback::new(progress);
+    let done = py.detach(|| job.write_zarr_rows(&scene.loaded, &path, (rows, tiles), &sink));
+    sink.raise()?;
+    let (work, files) = done.map_err(run)?;
     let d = PyDict::new(py);
     d.set_item("filled", work.filled)?;
     d.set_item("frames", work.frames)?;
     d.set_item("cycles", work.cycles)?;
     d.set_item("simulated_pixel_clocks", work.simulated_pixel_clocks)?;
     d.set_item("full_pixel_clocks", work.full_pixel_clocks)?;
-    d.set_item("files_written", store.files_written().iter().sum::<u64>())?;
+    d.set_item("files_written", files)?;
     Ok(d)
 }

@@ -23,6 +23,7 @@ mod sculpt;
 mod study;
 mod throughput;
 mod verify_select;
+mod voxelize;
 
 use std::process::ExitCode;
 
@@ -60,7 +61,7 @@ pub enum Cmd {
     /// Run display lists through the array and write the image.
     Render(render::Args),
     /// Voxelize a CSG scene slice by slice through the array; write a NRRD volume or an OME-Zarr store.
-    Voxelize(run::voxelize::Args),
+    Voxelize(voxelize::Args),
     /// Carve (or add) with a spherical tool along a path in the hashed octree; write the mesh.
     Sculpt(sculpt::Args),
     /// Compile a CSG expression to its Blist table (§4.3.2); trace one voxel through it.
@@ -87,7 +88,7 @@ pub fn run(cli: Cli) -> run::Result<ExitCode> {
         Cmd::VerifySelect(a) => verify_select::run(a),
         Cmd::ExportVerilog(a) => export_verilog::run(a),
         Cmd::Render(a) => render::run(a),
-        Cmd::Voxelize(a) => run::voxelize::run(a),
+        Cmd::Voxelize(a) => voxelize::run(a),
         Cmd::Sculpt(a) => sculpt::run(a),
         Cmd::Blist(a) => blist::run(a),
         Cmd::Requirements(a) => requirements::run(a),

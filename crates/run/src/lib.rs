@@ -6,7 +6,7 @@
 //! parsed by clap), its run and its report; beside them what the commands share: the memory
 //! limit ([`memory`]), the study's sweep ([`sweep`]) and charts ([`plot`]), PNG output
 //! ([`png`]), voxel stores fed from the voxelizer ([`store`]) and OME-Zarr stores written by
-//! chunk rows or bricks ([`zarr`]). Each command returns its
+//! chunk rows or bricks (`voxelize::zarr`). Each command returns its
 //! exit code, or an [`Error`] (typed, one line when printed; exit status 2).
 
 /// The flags' value names as [`FromStr`](std::str::FromStr), for the Python binding's keyword
@@ -38,6 +38,7 @@ pub mod export_verilog;
 pub mod gen_vectors;
 pub mod generated;
 pub mod grid;
+pub mod grid_args;
 mod lib_errors;
 pub mod memory;
 
@@ -60,8 +61,6 @@ pub mod throughput_fpga;
 pub mod value;
 pub mod verify_select;
 pub mod voxelize;
-#[cfg(feature = "zarr")]
-pub mod zarr;
 
 use std::process::ExitCode;
 

@@ -1,0 +1,316 @@
+//! The plan of a voxelization: its grid, the slicer of the scene on it (§4.4; the one place
+//! its options are made), the evaluator of the tree per slice (§4.2, §3.4.1, §4.5), the
+//! route, the worker threads, and the memory estimate (docs/memory.md).
+
+use std::ops::Range;
+
+use csgpix_draw::Model;
+use csgpix_scene::solid::CsgScene;
+use csgpix_sculpt::octree;
+use csgpix_voxel::blend::BlendEval;
+use csgpix_voxel::blist::{BlistEval, BlistTable};
+use csgpix_voxel::evaluate::{StackEval, TreeEval};
+use csgpix_voxel::sampled::Loaded;
+use csgpix_voxel::slice::SliceEval;
+use csgpix_voxel::{voxelize_slabs, Error as VoxelError, Grid, Route, Slicer, SlicerOptions};
+
+use super::route::Ran;
+use super::{flag_message, Eval, Format, RouteKind, Voxelization, VoxelizeJob, VoxelizeReport};
+use crate::{lib_errors, Error};
+
+/// The voxelizer's worker threads: `threads` of them, or by default one per core (rayon's).
+pub fn thread_pool(threads: Option<usize>) -> crate::Result<rayon::ThreadPool> {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads.unwrap_or(0));
+    Ok(pool.build()?)
+}
+
+/// A voxelization planned on a loaded scene.
+pub struct Plan {
+    /// The scene cut into slices on the grid (`slicer.grid`).
+    pub slicer: Slicer,
+    /// The tree's evaluator per slice.
+    pub eval: Box<dyn SliceEval + Send + Sync>,
+    /// The route the model and route options take on this slicer.
+    pub route: Route,
+    /// Worker threads.
+    pub threads: usize,
+    /// Their pool.
+    pub pool: rayon::ThreadPool,
+}
+
+/// What the plan holds in memory, and how the NRRD output goes.
+pub struct Budget {
+    /// The estimate checked against the limit, bytes.
+    pub need: u64,
+    /// The NRRD file is written slice by slice, the volume never held.
+    pub stream: bool,
+    /// `--store`: the bytes of its nodes, bounded from the scene.
+    pub store_nodes: Option<u64>,
+}
+
+impl Voxelization {
+    /// The slicer of `loaded` on `grid` with `sampling` (§4.4).
+    pub fn slicer(
+        &self,
+        loaded: &Loaded,
+        grid: Grid,
+        sampling: csgpix_voxel::Sampling,
+    ) -> Result<Slicer, VoxelError> {
+        let scene = &loaded.scene;
+        let opts = SlicerOptions {
+            fmt: self.word,
+            sampling,
+            panel: self.panel,
+            grey: self.grey,
+            blend: self.blend.map(|u| BlendEval::new(&scene.root, u)),
+            sampled: loaded.sampled.clone(),
+        };
+        Slicer::new(scene, grid, opts)
+    }
+
+    /// The evaluator of `scene`'s tree per slice (§4.2, §3.4.1, §4.5).
+    pub fn evaluator(&self, scene: &CsgScene) -> Box<dyn SliceEval + Send + Sync> {
+        match self.eval {
+            Eval::Tree => Box::new(TreeEval::new(&scene.root)),
+            Eval::Stack => Box::new(StackEval::new(&scene.root)),
+            Eval::Blist => Box::new(BlistEval::new(&scene.root)),
+        }
+    }
+
+    /// The route the model and the route option ask for on `slicer`: the run route where it
+    /// gives the volume ([`csgpix_voxel::runs::applies`]), else its slab route.
+    pub fn route(&self, slicer: &Slicer) -> Route {
+        let r = match (self.model, self.route) {
+            (Model::Cycle, _) => Route::Array { cycle: true },
+            (Model::Word, RouteKind::Array) => Route::Array { cycle: false },
+            (Model::Word, RouteKind::Intervals) => Route::Intervals,
+            (Model::Word, RouteKind::Runs) => Route::Runs { float: false },
+            (Model::Float, RouteKind::Runs) => Route::Runs { float: true },
+            (Model::Float, _) => Route::Float,
+        };
+        match csgpix_voxel::runs::applies(slicer) {
+            true => r,
+            false => r.by_slab(),
+        }
+    }
+
+    /// What the voxel values mean, as the report says it.
+    pub fn values(&self) -> &'static str {
+        if self.blend.is_some() {
+            "grey (blended, §3.3)"
+        } else if self.grey {
+            "colour codes, datasets grey"
+        } else {
+            "colour codes"
+        }
+    }
+}
+
+/// `--json`'s name of a route: the float model's slab route is `float`, as it always was.
+fn route_name(route: Route) -> &'static str {
+    match route {
+        Route::Array { .. } => "array",
+        Route::Intervals => "intervals",
+        Route::Float => "float",
+        Route::Runs { .. } => "runs",
+    }
+}
+
+impl VoxelizeJob {
+    /// The plan on `loaded`, its errors in the command line's words and said of the input.
+    pub fn plan(&self, loaded: &Loaded) -> crate::Result<Plan> {
+        let name = self.name();
+        let grid = self.grid.grid(loaded).map_err(flag_message);
+        let grid = grid.map_err(|e| e.context(&name))?;
+        let plan = self.plan_on(loaded, grid);
+        plan.map_err(|e| Error::from(e).context(&name))?
+    }
+
+    /// The plan on `loaded` and `grid`: the voxelizer's error (outer), or the pool's (inner).
+    pub fn plan_on(&self, loaded: &Loaded, grid: Grid) -> Result<crate::Result<Plan>, VoxelError> {
+        let threads = self.threads.unwrap_or_else(rayon::current_num_threads);
+        let slicer = self.voxels.slicer(loaded, grid, self.grid.sampling)?;
+        let eval = self.voxels.evaluator(&loaded.scene);
+        let route = self.voxels.route(&slicer);
+        Ok(thread_pool(Some(threads)).map(|pool| Plan {
+            slicer,
+            eval,
+            route,
+            threads,
+            pool,
+        }))
+    }
+}
+
+impl Plan {
+    /// Whether the run goes by the run route.
+    pub fn runs(&self) -> bool {
+        matches!(self.route, Route::Runs { .. })
+    }
+
+    /// The memory of the job's run (docs/memory.md), by route and output: the run route's
+    /// follows the primitives' footprints, the slab routes' every primitive's per-pixel
+    /// ranges; and whether the NRRD output is streamed.
+    pub fn budget(&self, job: &VoxelizeJob, scene: &CsgScene) -> crate::Result<Budget> {
+        let (slicer, e, threads) = (&self.slicer, self.eval.as_ref(), self.threads);
+        // The run route's NRRD estimates, with and without the volume: they decide whether
+        // the file is streamed, and the one that applies is the run's. They walk a dataset's
+        // columns to count its runs: on the run's own threads.
+        let runs_nrrd = (self.runs() && job.format() == Format::Nrrd).then(|| {
+            let each = || csgpix_voxel::runs::memory_estimates(slicer, e, threads);
+            self.pool.install(each)
+        });
+        let stream = streams(job, self.route, runs_nrrd);
+        let store_nodes = self.store_nodes(job, scene)?;
+        let need = self
+            .pool
+            .install(|| self.estimate(job, stream, runs_nrrd))?;
+        Ok(Budget {
+            need: need.saturating_add(store_nodes.unwrap_or(0)),
+            stream,
+            store_nodes,
+        })
+    }
+
+    /// `--store`: its nodes bounded from the scene (docs/memory.md).
+    fn store_nodes(&self, job: &VoxelizeJob, scene: &CsgScene) -> crate::Result<Option<u64>> {
+        let Some(kind) = job.outputs.store else {
+            return Ok(None);
+        };
+        let dims = self.slicer.grid.dims;
+        let depth = octree::depth_for(dims).map_err(lib_errors::sculpt)?;
+        let counts = csgpix_voxel::cells::cell_counts(scene, &self.slicer, depth);
+        Ok(Some(
+            octree::estimate::store_bytes(kind, dims, &counts)?.nodes,
+        ))
+    }
+
+    /// An upper bound of the run's memory beside the store's nodes.
+    fn estimate(
+        &self,
+        job: &VoxelizeJob,
+        stream: bool,
+        runs_nrrd: Option<[u64; 2]>,
+    ) -> crate::Result<u64> {
+        let (slicer, eval, threads) = (&self.slicer, self.eval.as_ref(), self.threads);
+        #[cfg(feature = "zarr")]
+        if job.format() == Format::Zarr {
+            // Nothing else is held: the format's check refuses --store beside a Zarr store.
+            let layout = job.zarr_layout();
+            let need = super::zarr::estimate(slicer, self.route, eval, threads, (&layout, None));
+            return need.map_err(|e| job.zarr_message(e));
+        }
+        let grid = &slicer.grid;
+        // Streamed, the NRRD output holds the runs and a slice, as a Zarr row sweep does.
+        let whole_volume = job.outputs.store.is_none() && !stream;
+        let mut need = match self.runs() {
+            true => runs_nrrd
+                .unwrap_or_else(|| csgpix_voxel::runs::memory_estimates(slicer, eval, threads))
+                [usize::from(whole_volume)],
+            false => crate::memory::slab_route_estimate(slicer, grid, threads),
+        };
+        if let Some(st) = job.outputs.store {
+            need = need.saturating_add(octree::memory_estimate(st, grid.dims)?);
+            if self.runs() {
+                // The volume is gathered slice by slice beside the store.
+                need = need.saturating_add(grid.dims.iter().map(|&d| d as u64).product());
+            }
+        }
+        Ok(need)
+    }
+
+    /// An upper bound of the memory of [`Plan::slabs`] over `z` (docs/memory.md): the slabs
+    /// it returns beside the route's working memory. On the run route that is the runs of
+    /// the whole grid, swept along z; on a slab route the slab ranges and per-thread state of
+    /// a volume only `z` deep, and the imported primitives.
+    pub fn slabs_estimate(&self, z: &Range<usize>) -> u64 {
+        let slicer = &self.slicer;
+        let out = (z.len() as u64).saturating_mul(slicer.grid.slice_len() as u64);
+        if self.runs() {
+            let e = self.eval.as_ref();
+            let each = || csgpix_voxel::runs::memory_estimates(slicer, e, self.threads);
+            return self.pool.install(each)[0].saturating_add(out);
+        }
+        let mut held = slicer.grid;
+        held.dims[2] = z.len().max(1);
+        crate::memory::slab_route_estimate(slicer, &held, self.threads)
+    }
+
+    /// Slabs `z` of the volume: the slices' bytes, x fastest, then y, then k; `tick` once a
+    /// slice (or a band of rows on the run route).
+    pub fn slabs(
+        &self,
+        voxels: &Voxelization,
+        z: Range<usize>,
+        tick: &(dyn Fn() + Sync),
+    ) -> Result<Vec<u8>, VoxelError> {
+        let mut out = Vec::with_capacity(z.len() * self.slicer.grid.slice_len());
+        let set = voxels.equations.set();
+        let e = self.eval.as_ref();
+        self.pool.install(|| {
+            let mut sink = |_: usize, s: &[u8]| {
+                out.extend_from_slice(s);
+                Ok(())
+            };
+            voxelize_slabs::<VoxelError>(&self.slicer, self.route, set, e, tick, z, &mut sink)
+        })?;
+        Ok(out)
+    }
+
+    /// The report of the job's run.
+    pub fn report(
+        &self,
+        job: &VoxelizeJob,
+        scene: &CsgScene,
+        ran: Ran,
+        memory_estimate: u64,
+    ) -> VoxelizeReport {
+        let (slicer, v) = (&self.slicer, &job.voxels);
+        let pixels = slicer.grid.slice_len();
+        let table = BlistTable::compile(&scene.root);
+        let sampled = slicer.sampled.iter().filter_map(|s| s.warning());
+        VoxelizeReport {
+            memory_estimate,
+            dims: slicer.grid.dims,
+            sampling: crate::named::Named::name(job.grid.sampling),
+            voxel: slicer.grid.voxel().to_array(),
+            min: slicer.grid.min.to_array(),
+            max: slicer.grid.max.to_array(),
+            model: v.model.name(),
+            route: route_name(self.route),
+            eval: crate::named::Named::name(v.eval),
+            solids: scene.solids.len(),
+            imports: scene.imports.len(),
+            values: v.values(),
+            label_bits: table.label_bits,
+            blist_rows: table.rows.len(),
+            state_bits_per_voxel: self.eval.state_bytes(pixels) * 8 / pixels.max(1),
+            work: ran.work,
+            store: ran.store,
+            zarr: ran.zarr,
+            mesh: ran.mesh,
+            hardware_seconds: ran.work.cycles as f64 * 1e-7,
+            wall_seconds: ran.wall,
+            warnings: scene
+                .warnings
+                .iter()
+                .map(|w| w.to_string())
+                .chain(sampled.map(|w| w.to_string()))
+                .collect(),
+            to_stdout: ran.to_stdout,
+        }
+    }
+}
+
+/// Whether the NRRD file is written slice by slice as the run route sweeps them, the volume
+/// never held: when nothing else needs it (no --slices, --preview, --mesh or --store) and the
+/// columns' runs, held for the sweep, are estimated below the volume (thousands of small
+/// primitives can make them the larger). `runs_nrrd`: the run route's NRRD estimates,
+/// without and with the volume.
+fn streams(job: &VoxelizeJob, route: Route, runs_nrrd: Option<[u64; 2]>) -> bool {
+    let o = &job.outputs;
+    let alone = o.slices.is_none() && o.preview.is_none() && o.mesh.is_none();
+    let runs = matches!(route, Route::Runs { .. });
+    let eligible = job.format() == Format::Nrrd && o.store.is_none() && alone && runs;
+    eligible && runs_nrrd.is_some_and(|[swept, whole]| swept <= whole)
+}

@@ -1,0 +1,296 @@
+//! Running the slices (§4.4) into the job's output: a NRRD file streamed slice by slice as
+//! the run route sweeps them, a Zarr store by chunk rows or bricks, or the volume in memory
+//! (with a voxel store built beside it, `--store`) for the outputs that need it whole.
+
+use std::io::Write;
+use std::time::Instant;
+
+use csgpix_output::Out;
+use csgpix_scene::nrrd::VolumeFormat;
+use csgpix_sculpt::octree::{self, StoreKind};
+use csgpix_voxel::slice::SliceEval;
+use csgpix_voxel::{voxelize, voxelize_slabs, Error as VoxelError, Route, Slicer, Volume, Work};
+use rtl_model::EquationSet;
+use serde::Serialize;
+
+use super::outputs::{MeshReport, Staged};
+use super::plan::{Budget, Plan};
+use super::{Format, VoxelizeJob, ZarrReport};
+use crate::progress::Progress;
+use crate::{lib_errors, store};
+
+/// The store `--store` built.
+#[derive(Serialize, Clone, Debug)]
+pub struct StoreReport {
+    pub kind: StoreKind,
+    /// Octree levels below the root (cell grid side 2^depth).
+    pub depth: u32,
+    pub side: usize,
+    /// Nodes held (pointer and hash: 8·I + 1 with the root; octree: 7·I + 1; dense: cells).
+    pub nodes: usize,
+    pub internal_nodes: usize,
+    pub bytes: usize,
+    pub bytes_per_node: f64,
+    /// Time spent in the store's builder (slices in, store out), voxelization excluded.
+    pub build_seconds: f64,
+}
+
+/// What a run made, for its report.
+pub struct Ran {
+    pub work: Work,
+    pub store: Option<StoreReport>,
+    pub zarr: Option<ZarrReport>,
+    pub mesh: Option<MeshReport>,
+    /// Seconds from the first slice to the last output staged.
+    pub wall: f64,
+    /// An output went to standard output.
+    pub to_stdout: bool,
+}
+
+/// The progress of a run that takes a while: slices on the slab routes, bands of rows on
+/// the run route (which ticks once per band), bricks for a Zarr store by bricks (`bricks`).
+/// Light runs show none.
+fn stage(slicer: &Slicer, route: Route, bricks: Option<usize>, progress: &dyn Progress) {
+    let [_, _, nz] = slicer.grid.dims;
+    let voxels = slicer.grid.slice_len() * nz;
+    let heavy = match route {
+        Route::Array { .. } => true,
+        Route::Runs { .. } => voxels > 100_000_000,
+        _ => voxels * slicer.primitive_count() > 50_000_000,
+    };
+    if !heavy {
+        return;
+    }
+    match (bricks, route) {
+        (Some(n), _) => progress.stage("bricks", n as u64),
+        (None, Route::Runs { .. }) => {
+            progress.stage("row bands", csgpix_voxel::runs::ticks(slicer) as u64)
+        }
+        (None, _) => progress.stage("slices", nz as u64),
+    }
+}
+
+/// Run `plan` into the outputs `staged` names, and commit them.
+pub fn run(
+    job: &VoxelizeJob,
+    plan: &Plan,
+    budget: &Budget,
+    staged: Staged,
+    progress: &dyn Progress,
+) -> crate::Result<Ran> {
+    let t0 = Instant::now();
+    #[cfg(feature = "zarr")]
+    if job.format() == Format::Zarr {
+        return zarr(job, plan, staged, progress, t0);
+    }
+    let tick = || progress.advance(1);
+    if budget.stream {
+        stage(&plan.slicer, plan.route, None, progress);
+        let mut staged = staged;
+        let (out, head) = (staged.nrrd, staged.nrrd_format(job, &plan.slicer));
+        let comment = format!("csgpix voxelize {}", job.name());
+        let work = plan.pool.install(|| {
+            let e = plan.eval.as_ref();
+            let route = (plan.route, job.voxels.equations.set());
+            stream_nrrd(
+                &mut staged.outs,
+                out,
+                &plan.slicer,
+                route,
+                e,
+                &tick,
+                (&comment, &head),
+            )
+        })?;
+        progress.finish();
+        let wall = t0.elapsed().as_secs_f64();
+        let to_stdout = staged.outs.uses_stdout();
+        staged.outs.commit()?;
+        let (store, zarr, mesh) = (None, None, None);
+        return Ok(Ran {
+            work,
+            store,
+            zarr,
+            mesh,
+            wall,
+            to_stdout,
+        });
+    }
+    in_memory(job, plan, budget, staged, progress, t0)
+}
+
+/// The volume in memory (and the store beside it), then every output made of it.
+fn in_memory(
+    job: &VoxelizeJob,
+    plan: &Plan,
+    budget: &Budget,
+    staged: Staged,
+    progress: &dyn Progress,
+    t0: Instant,
+) -> crate::Result<Ran> {
+    stage(&plan.slicer, plan.route, None, progress);
+    let tick = || progress.advance(1);
+    let rest = job.max_memory.bytes().saturating_sub(budget.need);
+    let (slicer, e) = (&plan.slicer, plan.eval.as_ref());
+    let route = (plan.route, job.voxels.equations.set());
+    let (volume, work, store) = match job.outputs.store {
+        None => plan
+            .pool
+            .install(|| voxelize(slicer, route.0, route.1, e, &tick))
+            .map(|(v, w)| (v, w, None))?,
+        Some(kind) => {
+            // The nodes are charged against what the estimate kept for them.
+            let budget = rest.saturating_add(budget.store_nodes.unwrap_or(0));
+            let (v, w, st) = plan
+                .pool
+                .install(|| with_store(slicer, route, e, &tick, kind, budget))?;
+            (v, w, Some(st))
+        }
+    };
+    progress.finish();
+    let wall = t0.elapsed().as_secs_f64();
+    let (mesh, to_stdout) = staged.write_volume(job, plan, &volume, rest)?;
+    Ok(Ran {
+        work,
+        store,
+        zarr: None,
+        mesh,
+        wall,
+        to_stdout,
+    })
+}
+
+/// Voxelizes while building the store from each slice as it comes (`--store`, through
+/// [`store::feed`]); the store's budget is what the memory limit leaves.
+fn with_store(
+    slicer: &Slicer,
+    route: (Route, EquationSet),
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    kind: StoreKind,
+    budget: u64,
+) -> crate::Result<(Volume, Work, StoreReport)> {
+    let dims = slicer.grid.dims;
+    let mut b = octree::builder(kind, dims, budget).map_err(lib_errors::sculpt)?;
+    let mut voxels = Vec::with_capacity(dims.iter().product());
+    let mut build = std::time::Duration::ZERO;
+    let work = store::feed(slicer, route, eval, tick, &mut |k, s| {
+        voxels.extend_from_slice(s);
+        let t = Instant::now();
+        let r = b.push(k, s);
+        build += t.elapsed();
+        r
+    })?;
+    let t = Instant::now();
+    let st = b.finish().map_err(lib_errors::sculpt)?;
+    build += t.elapsed();
+    let r = StoreReport {
+        kind,
+        depth: st.depth(),
+        side: st.side(),
+        nodes: st.node_count(),
+        internal_nodes: st.internal_count(),
+        bytes: st.bytes(),
+        bytes_per_node: st.bytes() as f64 / st.node_count().max(1) as f64,
+        build_seconds: build.as_secs_f64(),
+    };
+    Ok((Volume { dims, voxels }, work, r))
+}
+
+/// The Zarr store `-o`: its metadata, then its chunk rows (by bricks on the run route).
+#[cfg(feature = "zarr")]
+fn zarr(
+    job: &VoxelizeJob,
+    plan: &Plan,
+    staged: Staged,
+    progress: &dyn Progress,
+    t0: Instant,
+) -> crate::Result<Ran> {
+    let root = staged.outs.stage_root(staged.nrrd)?;
+    let store = job.create_store(&plan.slicer.grid, &root);
+    let store = store.map_err(|e| job.zarr_message(e))?;
+    let rows = store.chunk_rows().len();
+    let bricks = super::zarr::by_bricks(plan.route).then_some(rows * store.tiles().len());
+    stage(&plan.slicer, plan.route, bricks, progress);
+    let work = plan.write_rows(job, &store, 0..rows, None, progress);
+    let work = work.map_err(|e| match e {
+        crate::Error::Zarr(e) => job.zarr_message(e),
+        e => e,
+    })?;
+    progress.finish();
+    let wall = t0.elapsed().as_secs_f64();
+    staged.outs.commit()?;
+    let zarr = Some(ZarrReport {
+        chunk: store.chunk(),
+        chunk_rows: rows,
+        shard: store.levels()[0].shard,
+        levels: store.levels().len(),
+        files_written: store.files_written(),
+        tile: bricks.map(|_| store.tile()),
+        bricks,
+        chunks: store.chunks_held(),
+    });
+    let (store, mesh, to_stdout) = (None, None, false);
+    Ok(Ran {
+        work,
+        store,
+        zarr,
+        mesh,
+        wall,
+        to_stdout,
+    })
+}
+
+/// The NRRD file `out`: its header, then every slice in order of k as the run route sweeps
+/// the columns' runs ([`voxelize_slabs`]), so memory is the runs and one slice, not the
+/// volume, and the bytes are those of the volume written whole.
+fn stream_nrrd(
+    outs: &mut csgpix_output::Outputs,
+    out: Out,
+    slicer: &Slicer,
+    (route, set): (Route, EquationSet),
+    eval: &dyn SliceEval,
+    tick: &(dyn Fn() + Sync),
+    (comment, format): (&str, &VolumeFormat),
+) -> crate::Result<Work> {
+    let nz = slicer.grid.dims[2];
+    let mut done: Option<Result<Work, Stop>> = None;
+    let written = outs.write_sparse(out, |w| {
+        let head = csgpix_scene::nrrd::header_as(&slicer.grid, comment, format);
+        w.write_all(head.as_bytes())?;
+        let mut data = csgpix_scene::nrrd::data_writer(w, format.encoding);
+        // The sink's own error is the file's, told apart from the voxelizer's.
+        let mut sink = |_: usize, s: &[u8]| data.write_all(s).map_err(Stop::Io);
+        match voxelize_slabs(slicer, route, set, eval, tick, 0..nz, &mut sink) {
+            Err(Stop::Io(e)) => Err(e),
+            r => {
+                let failed = r.is_err();
+                done = Some(r);
+                match failed {
+                    true => Err(std::io::Error::other("the voxelization failed")),
+                    false => data.finish(),
+                }
+            }
+        }
+    });
+    match (done, written) {
+        // The voxelizer's error, as the whole-volume path reports it.
+        (Some(Err(Stop::Voxel(e))), _) => Err(e.into()),
+        (_, Err(e)) => Err(e.into()),
+        (Some(Ok(work)), Ok(_)) => Ok(work),
+        // The fill returns an I/O error as the file's and sets `done` whenever it succeeds.
+        (Some(Err(Stop::Io(_))) | None, Ok(_)) => unreachable!("a fill that succeeded"),
+    }
+}
+
+/// Why a streamed NRRD sweep stopped: the file's write or the voxelizer.
+enum Stop {
+    Io(std::io::Error),
+    Voxel(VoxelError),
+}
+
+impl From<VoxelError> for Stop {
+    fn from(e: VoxelError) -> Stop {
+        Stop::Voxel(e)
+    }
+}
