@@ -5,7 +5,7 @@ use std::io::Write;
 
 use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 use csgpix_run::grid::{parse_bounds, GridOptions, Resolution};
-use csgpix_run::memory::{default_mib, Cap, Limit, MAX_MIB};
+use csgpix_run::memory::{default_mib, Limit};
 use csgpix_run::named::Named;
 use csgpix_run::read::ReadSettings;
 use csgpix_voxel::Sampling;
@@ -70,27 +70,15 @@ impl MaxMemory {
     }
 }
 
-/// `--max-memory MIB`: 1 to [`MAX_MIB`], lowered to what the process may hold ([`Cap`]) with
+/// `--max-memory MIB`: 1 to `MAX_MIB`, lowered to what the process may hold (`Cap`) with
 /// a one-line note on standard error, so that a limit above the address space cannot let a
 /// run start that the system will not let finish.
 fn parse_max_memory(s: &str) -> csgpix_run::error::Parsed<u64> {
-    let mib: u64 = s
-        .parse()
-        .map_err(|_| format!("{s:?} is not a whole number of MiB"))?;
-    if !(1..=MAX_MIB).contains(&mib) {
-        return Err(format!("{mib} is not in 1..={MAX_MIB}").into());
+    let (mib, note) = csgpix_run::memory::parse_mib(s)?;
+    if let Some(note) = note {
+        eprintln!("csgpix: note: {note}");
     }
-    Ok(match Cap::probe() {
-        Some(cap) if mib > cap.mib => {
-            eprintln!(
-                "csgpix: note: --max-memory {mib} is above what this process may hold ({}): \
-                 {} MiB used",
-                cap.why, cap.mib
-            );
-            cap.mib
-        }
-        _ => mib,
-    })
+    Ok(mib)
 }
 
 /// The grid and sampling flags `voxelize` and `sculpt` share (beside their own `--res`).

@@ -3,8 +3,6 @@
 //! as text or `--json`. Nothing of a pipeline is assembled here: every command module holds
 //! its flags (`Args`), their conversion to the job, and the printing of the report.
 
-// TRANSITION (issue 39): until every command is a job some helpers are unused.
-#![allow(dead_code)]
 
 pub mod args_utf8;
 mod array;
@@ -30,8 +28,6 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 use csgpix_run as run;
 
-#[allow(unused_imports)] // the command modules use it as they become jobs
-pub use common::{named, GridArgs, MaxMemory, ReadArgs};
 
 #[derive(Parser, Debug)]
 #[command(

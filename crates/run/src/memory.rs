@@ -67,48 +67,10 @@ impl Limit {
     }
 }
 
-/// `--max-memory`, flattened into each command that allocates in proportion to its input.
-#[derive(clap::Args, Debug, Clone, Copy)]
-pub struct MaxMemory {
-    /// Refuse a run whose memory estimate is over this many MiB, before allocating. The
-    /// default is the memory available now (MemAvailable), capped by what the process may
-    /// hold: the address-space and data limits (`ulimit -v`, `ulimit -d`) less the process's
-    /// own code, stacks and buffers, and the room left in its cgroup. A larger value is
-    /// lowered to that cap, with a note; at most 2^43.
-    #[arg(long = "max-memory", value_name = "MIB", default_value_t = default_mib(),
-          value_parser = parse_max_memory)]
-    pub mib: u64,
-}
-
-impl MaxMemory {
-    /// The limit.
-    pub fn limit(&self) -> Limit {
-        Limit {
-            mib: self.mib,
-            name: "--max-memory",
-        }
-    }
-
-    /// The limit in bytes (no wrap: at most 2^63).
-    pub fn bytes(&self) -> u64 {
-        self.limit().bytes()
-    }
-
-    /// The readers' sample limit ([`Limit::samples`]).
-    pub fn samples(&self) -> SampleLimit {
-        self.limit().samples()
-    }
-
-    /// Refuse `need` bytes of `what` when over the limit, saying how to lower it (`fix`).
-    pub fn check(&self, need: u64, what: &str, fix: &str) -> Result<(), OverMemory> {
-        self.limit().check(need, what, fix)
-    }
-}
-
-/// `--max-memory MIB`: 1 to [`MAX_MIB`], lowered to what the process may hold ([`Cap`]) with
-/// a one-line note on standard error, so that a limit above the address space cannot let a
-/// run start that the system will not let finish.
-fn parse_max_memory(s: &str) -> crate::value::Parsed<u64> {
+/// A limit typed by the user (`--max-memory MIB`, Python's `max_memory`): 1 to [`MAX_MIB`]
+/// MiB, lowered to what the process may hold ([`Cap`]), with the note that says so, so that a
+/// limit above the address space cannot let a run start that the system will not let finish.
+pub fn parse_mib(s: &str) -> crate::value::Parsed<(u64, Option<String>)> {
     let mib: u64 = s
         .parse()
         .map_err(|_| format!("{s:?} is not a whole number of MiB"))?;
@@ -117,14 +79,13 @@ fn parse_max_memory(s: &str) -> crate::value::Parsed<u64> {
     }
     Ok(match Cap::probe() {
         Some(cap) if mib > cap.mib => {
-            eprintln!(
-                "csgpix: note: --max-memory {mib} is above what this process may hold ({}): \
-                 {} MiB used",
+            let note = format!(
+                "--max-memory {mib} is above what this process may hold ({}): {} MiB used",
                 cap.why, cap.mib
             );
-            cap.mib
+            (cap.mib, Some(note))
         }
-        _ => mib,
+        _ => (mib, None),
     })
 }
 
@@ -351,17 +312,22 @@ mod tests {
 
     #[test]
     fn an_explicit_limit_is_parsed_in_range() {
-        assert!(parse_max_memory("0").is_err());
-        assert!(parse_max_memory("x").is_err());
-        assert!(parse_max_memory(&(MAX_MIB + 1).to_string()).is_err());
+        assert!(parse_mib("0").is_err());
+        assert!(parse_mib("x").is_err());
+        assert!(parse_mib(&(MAX_MIB + 1).to_string()).is_err());
         let cap = Cap::probe().map_or(MAX_MIB, |c| c.mib);
-        assert_eq!(parse_max_memory(&MAX_MIB.to_string()).unwrap(), cap);
-        assert_eq!(parse_max_memory("1").unwrap(), 1);
+        let (mib, note) = parse_mib(&MAX_MIB.to_string()).unwrap();
+        assert_eq!(mib, cap);
+        assert_eq!(note.is_some(), cap < MAX_MIB);
+        assert_eq!(parse_mib("1").unwrap(), (1, None));
     }
 
     #[test]
     fn the_limit_in_bytes_cannot_wrap() {
-        let m = MaxMemory { mib: MAX_MIB };
+        let m = Limit {
+            mib: MAX_MIB,
+            name: "--max-memory",
+        };
         assert_eq!(m.bytes(), 1 << 63);
         assert!(m.check(u64::MAX, "x", "y").is_err());
         assert!(m.check(1 << 63, "x", "y").is_ok());

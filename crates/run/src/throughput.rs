@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use csgpix_output::{Out, Outputs};
 
-use crate::plot::{Chart, Series};
+use crate::plot::{Chart, Charts, Series};
 use csgpix_draw::panels::{
     count_cycles, estimate, panel_work, PanelScene, PanelWork, SceneEstimate,
 };
@@ -130,6 +130,10 @@ pub struct ThroughputReport {
     pub area: Option<AreaReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fpga: Option<crate::throughput_fpga::FpgaReport>,
+    /// The charts' data, `(file name, chart)`: drawn into `plots` by
+    /// [`ThroughputJob::run_with_charts`]; for a caller to draw otherwise.
+    #[serde(skip)]
+    pub charts: Vec<(String, Chart)>,
 }
 
 /// Which panels fit a LUT budget.
@@ -168,8 +172,27 @@ impl ThroughputJob {
         Ok(0)
     }
 
-    /// Read the FPGA report and the scene, compute every figure, write the charts.
+    /// Read the FPGA report and the scene and compute every figure; a caller without a
+    /// chart drawer gets the charts' data in the report (`plots` is not written).
     pub fn run(&self, progress: &dyn Progress) -> crate::Result<ThroughputReport> {
+        self.figures(None, progress)
+    }
+
+    /// As [`ThroughputJob::run`], and with `plots` the charts drawn by `charts` into that
+    /// directory, all of them or, on any error or signal, none.
+    pub fn run_with_charts(
+        &self,
+        charts: &dyn Charts,
+        progress: &dyn Progress,
+    ) -> crate::Result<ThroughputReport> {
+        self.figures(Some(charts), progress)
+    }
+
+    fn figures(
+        &self,
+        drawer: Option<&dyn Charts>,
+        progress: &dyn Progress,
+    ) -> crate::Result<ThroughputReport> {
         let mut hw = Hardware {
             bits: self.bits,
             clock_hz: self.clock,
@@ -185,19 +208,19 @@ impl ThroughputJob {
         }
         let panels = self.panels()?;
         let mut outs = Outputs::new();
-        let plots = self
-            .plots
-            .as_ref()
-            .map(|d| outs.dir("--plots", d))
-            .transpose()?;
+        let plots = match (&self.plots, drawer) {
+            (Some(d), Some(_)) => Some(outs.dir("--plots", d)?),
+            _ => None,
+        };
         let scene = self
             .scene
             .as_ref()
             .map(|p| scene_report(self, p, &hw, &panels, progress))
             .transpose()?;
-        let report = self.report(hw, &panels, scene, fpga);
-        if let Some(dir) = plots {
-            write_plots(&mut outs, dir, &hw, self.screen, report.scene.as_ref())?;
+        let mut report = self.report(hw, &panels, scene, fpga);
+        report.charts = charts(&hw, self.screen, report.scene.as_ref());
+        if let (Some(dir), Some(drawer)) = (plots, drawer) {
+            write_plots(&mut outs, dir, &report.charts, drawer)?;
             outs.commit()?;
         }
         Ok(report)
@@ -246,6 +269,7 @@ impl ThroughputJob {
                 .area
                 .map(|budget| area_report(budget, self.lut, panels)),
             fpga,
+            charts: vec![],
         }
     }
 }
@@ -387,25 +411,37 @@ pub fn fmt_num(v: f64) -> String {
     }
 }
 
-/// Stage Figure 2.12, Figure 5.11 and (with a scene) the scene's frame rates on panels as
-/// the files of directory output `out`.
-fn write_plots(
-    outs: &mut Outputs,
-    out: Out,
+/// Figure 2.12, Figure 5.11 and (with a scene) the scene's frame rates on panels, each
+/// with its file name.
+fn charts(
     hw: &Hardware,
     screen: (usize, usize),
     scene: Option<&SceneReport>,
-) -> crate::Result<()> {
-    let mut write = |c: Chart, name: &str| -> crate::Result<()> {
-        Ok(c.write_png(&outs.stage_path(out, name)?, 800, 560)?)
-    };
-    write(figure_2_12(hw, screen), "figure-2.12.png")?;
-    write(figure_5_11(hw, screen), "figure-5.11.png")?;
+) -> Vec<(String, Chart)> {
+    let mut charts = vec![
+        ("figure-2.12.png".to_string(), figure_2_12(hw, screen)),
+        ("figure-5.11.png".to_string(), figure_5_11(hw, screen)),
+    ];
     if let Some(s) = scene {
         let stem = Path::new(&s.file)
             .file_stem()
             .map_or("scene".into(), |f| f.to_string_lossy());
-        write(scene_chart(s), &format!("scene-{stem}-{}.png", s.view))?;
+        let name = format!("scene-{stem}-{}.png", s.view);
+        charts.push((name, scene_chart(s)));
+    }
+    charts
+}
+
+/// Stage `charts`, drawn by `drawer`, as the files of directory output `out`.
+fn write_plots(
+    outs: &mut Outputs,
+    out: Out,
+    charts: &[(String, Chart)],
+    drawer: &dyn Charts,
+) -> crate::Result<()> {
+    for (name, chart) in charts {
+        let png = drawer.png(chart, 800, 560)?;
+        outs.write_in(out, name, |w| w.write_all(&png))?;
     }
     Ok(())
 }

@@ -1,9 +1,9 @@
-//! A flag's value that does not parse: the error of every clap value parser of the run layer,
-//! in a leaf module so that the modules whose flags parse values (memory, voxelize, …) and the
+//! An option's value that does not parse (`--res 0x1`, `res=(0, 1, 1)`): the error of every
+//! value parser of the run layer, in a leaf module so that the modules whose flags parse values (memory, voxelize, …) and the
 //! run layer's error (which wraps theirs) do not depend on each other.
 
-/// A flag's value that does not parse (clap's value parsers): the reason, one line, which
-/// clap prints after the flag and the value.
+/// An option's value that does not parse: the reason, one line, which the command line
+/// prints after the flag and the value.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("{0}")]
 pub struct BadValue(pub String);

@@ -33,8 +33,6 @@ pub mod zarr;
 #[cfg(feature = "zarr")]
 pub use self::zarr::ZarrReport;
 pub use crate::grid::{grid_spec, parse_bounds, parse_res, Resolution};
-// TRANSITION (issue 39): the clap grid flags of the commands not yet jobs.
-pub use crate::grid_args::{GridArgs, SamplingArg};
 pub use outputs::{mesh, MeshReport};
 pub use plan::thread_pool;
 pub use route::StoreReport;
