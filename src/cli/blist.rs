@@ -84,15 +84,11 @@ fn print_text(r: &BlistReport) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults.
     #[test]
     fn flags_make_the_default_job() {
-        let cli = super::super::Cli::try_parse_from(["csgpix", "blist", "A+B"]).unwrap();
-        let super::super::Cmd::Blist(a) = cli.cmd else {
-            panic!("not blist")
-        };
+        let a = parsed!(Blist, ["csgpix", "blist", "A+B"]);
         let want = BlistJob {
             expr: "A+B".into(),
             ..BlistJob::default()

@@ -120,16 +120,12 @@ fn shell_word(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults (the memory limit is the
     /// machine's, read once by each).
     #[test]
     fn flags_make_the_default_job() {
-        let cli = super::super::Cli::try_parse_from(["csgpix", "export-verilog"]).unwrap();
-        let super::super::Cmd::ExportVerilog(a) = cli.cmd else {
-            panic!("not export-verilog")
-        };
+        let a = parsed!(ExportVerilog, ["csgpix", "export-verilog"]);
         let want = ExportVerilogJob {
             max_memory: a.mem.limit(),
             ..ExportVerilogJob::default()

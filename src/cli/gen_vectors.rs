@@ -55,15 +55,11 @@ pub fn print_generated(r: &GeneratedReport) -> ExitCode {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults.
     #[test]
     fn flags_make_the_default_job() {
-        let cli = super::super::Cli::try_parse_from(["csgpix", "gen-vectors"]).unwrap();
-        let super::super::Cmd::GenVectors(a) = cli.cmd else {
-            panic!("not gen-vectors")
-        };
+        let a = parsed!(GenVectors, ["csgpix", "gen-vectors"]);
         assert_eq!(a.job(), GenVectorsJob::default());
     }
 }

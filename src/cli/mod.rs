@@ -4,6 +4,19 @@
 //! its flags (`Args`), their conversion to the job, and the printing of the report.
 
 
+/// The `Args` of the command line `argv` (program name included), which must parse as
+/// command `$cmd`: for each command's test that its flags' defaults are its job's.
+#[cfg(test)]
+macro_rules! parsed {
+    ($cmd:ident, $argv:expr) => {{
+        use clap::Parser;
+        match crate::cli::Cli::try_parse_from($argv).unwrap().cmd {
+            crate::cli::Cmd::$cmd(a) => a,
+            other => panic!("parsed as {other:?}"),
+        }
+    }};
+}
+
 pub mod args_utf8;
 mod array;
 mod blist;

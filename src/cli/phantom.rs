@@ -57,17 +57,13 @@ pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults (the memory limit aside: its
     /// default is the memory available when the flags are parsed).
     #[test]
     fn flags_make_the_default_job() {
         let argv = ["csgpix", "phantom", "-o", "h.nrrd"];
-        let cli = super::super::Cli::try_parse_from(argv).unwrap();
-        let super::super::Cmd::Phantom(a) = cli.cmd else {
-            panic!("not phantom")
-        };
+        let a = parsed!(Phantom, argv);
         let job = a.job();
         let want = PhantomJob {
             out: "h.nrrd".into(),

@@ -93,17 +93,13 @@ fn print_line(a: &Args, r: &RenderReport) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults (the memory limit is the
     /// machine's, read once by each).
     #[test]
     fn flags_make_the_default_job() {
         let argv = ["csgpix", "render", "a.dl", "-o", "a.png"];
-        let cli = super::super::Cli::try_parse_from(argv).unwrap();
-        let super::super::Cmd::Render(a) = cli.cmd else {
-            panic!("not render")
-        };
+        let a = parsed!(Render, argv);
         let mut want = RenderJob {
             scenes: vec!["a.dl".into()],
             out: "a.png".into(),

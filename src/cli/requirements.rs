@@ -146,17 +146,13 @@ fn print_clocks(r: &RequirementsReport) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults (the memory limit is the
     /// machine's, read once by each).
     #[test]
     fn flags_make_the_default_job() {
         let argv = ["csgpix", "requirements", "a.csg"];
-        let cli = super::super::Cli::try_parse_from(argv).unwrap();
-        let super::super::Cmd::Requirements(a) = cli.cmd else {
-            panic!("not requirements")
-        };
+        let a = parsed!(Requirements, argv);
         let want = RequirementsJob {
             scene: "a.csg".into(),
             max_memory: a.mem.limit(),

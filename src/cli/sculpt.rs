@@ -116,7 +116,6 @@ fn print_text(a: &Args, r: &SculptReport) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults (the memory limit aside: its
     /// default is the memory available when the flags are parsed).
@@ -125,10 +124,7 @@ mod tests {
         let argv = [
             "csgpix", "sculpt", "s.csg", "--tool", "sphere:3", "--path", "p.csv", "-o", "m.stl",
         ];
-        let cli = super::super::Cli::try_parse_from(argv).unwrap();
-        let super::super::Cmd::Sculpt(a) = cli.cmd else {
-            panic!("not sculpt")
-        };
+        let a = parsed!(Sculpt, argv);
         let job = a.job();
         let want = SculptJob {
             input: "s.csg".into(),

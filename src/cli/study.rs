@@ -111,17 +111,13 @@ fn print_text(r: &StudyReport) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults (the memory limit aside: its
     /// default is the memory available when the flags are parsed).
     #[test]
     fn flags_make_the_default_job() {
         let argv = ["csgpix", "study", "s.csg", "-o", "out"];
-        let cli = super::super::Cli::try_parse_from(argv).unwrap();
-        let super::super::Cmd::Study(a) = cli.cmd else {
-            panic!("not study")
-        };
+        let a = parsed!(Study, argv);
         let job = a.job();
         let want = StudyJob {
             scene: "s.csg".into(),

@@ -258,16 +258,12 @@ fn print_fpga(r: &FpgaReport, screen: (usize, usize)) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults (the memory limit is the
     /// machine's, read once by each).
     #[test]
     fn flags_make_the_default_job() {
-        let cli = super::super::Cli::try_parse_from(["csgpix", "throughput"]).unwrap();
-        let super::super::Cmd::Throughput(a) = cli.cmd else {
-            panic!("not throughput")
-        };
+        let a = parsed!(Throughput, ["csgpix", "throughput"]);
         let want = ThroughputJob {
             max_memory: a.mem.limit(),
             ..ThroughputJob::default()

@@ -82,15 +82,11 @@ fn print_text(report: &VerifySelectReport) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     /// The flags' defaults are the job's documented defaults.
     #[test]
     fn flags_make_the_default_job() {
-        let cli = super::super::Cli::try_parse_from(["csgpix", "verify-select"]).unwrap();
-        let super::super::Cmd::VerifySelect(a) = cli.cmd else {
-            panic!("not verify-select")
-        };
+        let a = parsed!(VerifySelect, ["csgpix", "verify-select"]);
         assert_eq!(a.job(), VerifySelectJob::default());
     }
 }

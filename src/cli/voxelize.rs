@@ -241,13 +241,9 @@ fn print_text(a: &Args, r: &VoxelizeReport) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::Parser;
 
     fn parse(args: &[&str]) -> Args {
-        let cli = super::super::Cli::try_parse_from(args).unwrap();
-        let super::super::Cmd::Voxelize(a) = cli.cmd else {
-            panic!("not voxelize")
-        };
+        let a = parsed!(Voxelize, args);
         a
     }
 
