@@ -693,6 +693,67 @@ struct Task {
     arena: Vec<u32>,
 }
 
+/// A convex solid's class on the box (centre `c`, half sizes `hg`, grown by its drawing
+/// tolerance) from its `active` planes: out when the box lies beyond one plane (by more
+/// than its slack), else in when within all, else mixed; the planes the box meets pushed
+/// to `dst` (none when out).
+fn classify_planes(
+    planes: &[(DVec3, f64, f64)],
+    active: &[u32],
+    c: DVec3,
+    hg: DVec3,
+    dst: &mut Vec<u32>,
+) -> Class {
+    let start = dst.len();
+    for &j in active {
+        let (n, d, t) = planes[j as usize];
+        let s = n.dot(c) - d;
+        let r = n.abs().dot(hg);
+        let slack = t + 1e-9 * (1.0 + d.abs());
+        if s - r > slack {
+            dst.truncate(start);
+            return Class::Out;
+        }
+        if s + r >= -slack {
+            dst.push(j);
+        }
+    }
+    if dst.len() == start {
+        Class::In
+    } else {
+        Class::Mixed
+    }
+}
+
+/// A closed mesh's `active` triangles on the box (centre `c`, half sizes `hg`): those it
+/// meets pushed to `dst`, and the box centre's class carried from the parent's point
+/// `e.at` by the triangles the segment between them crosses ([`Class::Unif`] when a
+/// crossing is unsure or the parent's was unknown).
+fn centre_class(
+    tris: &[[DVec3; 3]],
+    active: &[u32],
+    e: &Entry,
+    c: DVec3,
+    hg: DVec3,
+    dst: &mut Vec<u32>,
+) -> Class {
+    let mut known = e.known;
+    for &j in active {
+        let t = &tris[j as usize];
+        if known != Class::Unif {
+            match crosses(t, e.at, c) {
+                Crossing::Once => known = known.not(),
+                Crossing::No => {}
+                Crossing::Unsure => known = Class::Unif,
+            }
+        }
+        if meets_triangle(t, c, hg) {
+            dst.push(j);
+        }
+    }
+    known
+}
+
 /// Visits added to the shared count at a time.
 const VISIT_BATCH: u64 = 1 << 14;
 
@@ -724,49 +785,13 @@ impl Walk<'_, '_> {
             let mut known = Class::Unif;
             let active = &items[e.start as usize..(e.start + e.len) as usize];
             let class = match &self.prims[e.prim as usize] {
-                Prim::Planes(planes) => {
-                    let mut out_of = false;
-                    for &j in active {
-                        let (n, d, t) = planes[j as usize];
-                        let s = n.dot(c) - d;
-                        let r = n.abs().dot(hg);
-                        let slack = t + 1e-9 * (1.0 + d.abs());
-                        if s - r > slack {
-                            out_of = true;
-                            break;
-                        }
-                        if s + r >= -slack {
-                            dst.push(j);
-                        }
-                    }
-                    if out_of {
-                        dst.truncate(start);
-                        Class::Out
-                    } else if dst.len() == start {
-                        Class::In
-                    } else {
-                        Class::Mixed
-                    }
-                }
+                Prim::Planes(planes) => classify_planes(planes, active, c, hg, dst),
                 Prim::Tris(tris, lo, hi) => {
                     if (0..3).any(|a| lo[a] > c[a] + hg[a] || hi[a] < c[a] - hg[a]) {
                         Class::Out
                     } else {
                         // The centre's membership, from the parent's point.
-                        known = e.known;
-                        for &j in active {
-                            let t = &tris[j as usize];
-                            if known != Class::Unif {
-                                match crosses(t, e.at, c) {
-                                    Crossing::Once => known = known.not(),
-                                    Crossing::No => {}
-                                    Crossing::Unsure => known = Class::Unif,
-                                }
-                            }
-                            if meets_triangle(t, c, hg) {
-                                dst.push(j);
-                            }
-                        }
+                        known = centre_class(tris, active, e, c, hg, dst);
                         if dst.len() == start {
                             known
                         } else {
@@ -1083,74 +1108,99 @@ pub fn cell_counts(scene: &CsgScene, slicer: &Slicer, depth: u32) -> CellCounts 
         grow.push(DVec3::ZERO);
     }
     for s in &slicer.sampled {
-        match &s.shape {
-            Shape::Mesh(m) => {
-                let tris: Vec<[DVec3; 3]> = m
-                    .triangles
-                    .iter()
-                    .map(|t| t.map(|i| to_voxel(m.vertices[i as usize])))
-                    .collect();
-                let lo = tris
-                    .iter()
-                    .flatten()
-                    .fold(DVec3::INFINITY, |a, &p| a.min(p));
-                let hi = tris
-                    .iter()
-                    .flatten()
-                    .fold(DVec3::NEG_INFINITY, |a, &p| a.max(p));
-                prims.push(Prim::Tris(tris, lo, hi));
-                grow.push(tol.mesh());
-            }
-            Shape::OpenMesh(m, _) => {
-                let (lo, hi) = m.mesh().bounds();
-                prims.push(Prim::Unknown(to_voxel(lo), to_voxel(hi)));
-                grow.push(tol.mesh());
-            }
-            Shape::Dataset {
-                data,
-                threshold,
-                to_file,
-            } => {
-                // Voxel → scene → file → lattice index, an affine map.
-                let index = |v: DVec3| {
-                    let scene = grid.min + (v + DVec3::splat(0.5)) * voxel;
-                    data.index_of(to_file.transform_point3(scene))
-                };
-                let b = index(DVec3::ZERO);
-                let a = DMat3::from_cols(
-                    index(DVec3::X) - b,
-                    index(DVec3::Y) - b,
-                    index(DVec3::Z) - b,
-                );
-                let graded = slicer.blend.is_some();
-                prims.push(Prim::Lattice(Lattice::new(a, b, data, *threshold, graded)));
-                grow.push(DVec3::splat(1e-9));
-            }
+        let (prim, g) = sampled_prim(&s.shape, slicer, &to_voxel, &tol);
+        prims.push(prim);
+        grow.push(g);
+    }
+    let grid_prim = prims.len() as u32;
+    prims.push(grid_planes(grid.dims));
+    grow.push(DVec3::ZERO);
+    let ops = tree_ops(&scene.root, grid_prim, slicer);
+    walk(&prims, &grow, ops.as_deref(), grid_prim, depth)
+}
+
+/// A sampled shape as a primitive in voxel coordinates (`to_voxel` maps scene points
+/// there), with how far its boundary may move: a closed mesh by its triangles and box, one
+/// that is not closed by its box, a dataset by the affine map from voxels to its lattice.
+fn sampled_prim<'a>(
+    shape: &'a Shape,
+    slicer: &Slicer,
+    to_voxel: &impl Fn(DVec3) -> DVec3,
+    tol: &Tolerance,
+) -> (Prim<'a>, DVec3) {
+    let grid = &slicer.grid;
+    match shape {
+        Shape::Mesh(m) => {
+            let tris: Vec<[DVec3; 3]> = m
+                .triangles
+                .iter()
+                .map(|t| t.map(|i| to_voxel(m.vertices[i as usize])))
+                .collect();
+            let lo = tris
+                .iter()
+                .flatten()
+                .fold(DVec3::INFINITY, |a, &p| a.min(p));
+            let hi = tris
+                .iter()
+                .flatten()
+                .fold(DVec3::NEG_INFINITY, |a, &p| a.max(p));
+            (Prim::Tris(tris, lo, hi), tol.mesh())
+        }
+        Shape::OpenMesh(m, _) => {
+            let (lo, hi) = m.mesh().bounds();
+            (Prim::Unknown(to_voxel(lo), to_voxel(hi)), tol.mesh())
+        }
+        Shape::Dataset {
+            data,
+            threshold,
+            to_file,
+        } => {
+            let voxel = grid.voxel();
+            // Voxel → scene → file → lattice index, an affine map.
+            let index = |v: DVec3| {
+                let scene = grid.min + (v + DVec3::splat(0.5)) * voxel;
+                data.index_of(to_file.transform_point3(scene))
+            };
+            let b = index(DVec3::ZERO);
+            let a = DMat3::from_cols(
+                index(DVec3::X) - b,
+                index(DVec3::Y) - b,
+                index(DVec3::Z) - b,
+            );
+            let graded = slicer.blend.is_some();
+            let lattice = Lattice::new(a, b, data, *threshold, graded);
+            (Prim::Lattice(lattice), DVec3::splat(1e-9))
         }
     }
-    // The grid: voxel centres 0..dims; any box between them and the next centres out.
-    let dims = DVec3::from(grid.dims.map(|d| d as f64));
-    let grid_prim = prims.len() as u32;
-    prims.push(Prim::Planes(vec![
+}
+
+/// The grid as a primitive: voxel centres 0..dims; any box between them and the next
+/// centres out.
+fn grid_planes(dims: [usize; 3]) -> Prim<'static> {
+    let dims = DVec3::from(dims.map(|d| d as f64));
+    Prim::Planes(vec![
         (DVec3::NEG_X, 0.5, 0.0),
         (DVec3::NEG_Y, 0.5, 0.0),
         (DVec3::NEG_Z, 0.5, 0.0),
         (DVec3::X, dims.x - 0.5, 0.0),
         (DVec3::Y, dims.y - 0.5, 0.0),
         (DVec3::Z, dims.z - 0.5, 0.0),
-    ]));
-    grow.push(DVec3::ZERO);
+    ])
+}
+
+/// The CSG tree in postfix, when the walk may evaluate it: few enough leaves, all of them
+/// primitives before the grid's (`grid_prim`), and boolean. Blending (`--blend`) combines
+/// grey values, not memberships: only that the volume is a function of what each primitive
+/// holds is used then.
+fn tree_ops(root: &CsgNode, grid_prim: u32, slicer: &Slicer) -> Option<Vec<Op>> {
     let mut ops = vec![];
-    postfix(&scene.root, &mut ops);
+    postfix(root, &mut ops);
     let leaves = ops.iter().filter(|o| matches!(o, Op::Leaf(_))).count();
     let known = ops
         .iter()
         .all(|o| !matches!(o, Op::Leaf(p) if *p as usize >= grid_prim as usize));
-    // Blending (`--blend`) combines grey values, not memberships: only that the volume is a
-    // function of what each primitive holds is used then.
     let boolean = slicer.blend.is_none();
-    let ops = (leaves <= TREE_LEAVES && known && boolean).then_some(ops);
-    walk(&prims, &grow, ops.as_deref(), grid_prim, depth)
+    (leaves <= TREE_LEAVES && known && boolean).then_some(ops)
 }
 
 fn walk(prims: &[Prim], grow: &[DVec3], ops: Option<&[Op]>, grid: u32, depth: u32) -> CellCounts {
@@ -1180,23 +1230,7 @@ fn walk(prims: &[Prim], grow: &[DVec3], ops: Option<&[Op]>, grid: u32, depth: u3
         };
         // The top levels here, the subtrees below them in parallel.
         let mut w = fresh(Some(SPLIT));
-        for (p, prim) in prims.iter().enumerate() {
-            let (n, at) = match prim {
-                Prim::Planes(v) => (v.len(), DVec3::ZERO),
-                // A point outside the mesh's box is outside the mesh.
-                Prim::Tris(t, lo, hi) => (t.len(), *lo - (*hi - *lo) - DVec3::ONE),
-                _ => (0, DVec3::ZERO),
-            };
-            let start = w.arena[0].len() as u32;
-            w.arena[0].extend(0..n as u32);
-            w.lists[0].push(Entry {
-                prim: p as u32,
-                start,
-                len: n as u32,
-                at,
-                known: Class::Out,
-            });
-        }
+        w.seed_root();
         let top = w.visit(0, [0; 3]);
         let tasks = std::mem::take(&mut w.tasks);
         let subtrees: Result<Vec<_>, Spent> = top.and_then(|()| {
@@ -1215,24 +1249,12 @@ fn walk(prims: &[Prim], grow: &[DVec3], ops: Option<&[Op]>, grid: u32, depth: u3
         match subtrees {
             Ok(parts) => {
                 for (counts, corners) in parts {
-                    for (a, b) in w.counts.iter_mut().zip(counts) {
-                        *a += b;
-                    }
-                    for (a, b) in w.corners.iter_mut().zip(corners) {
-                        *a += b;
-                    }
+                    w.add(&counts, &corners);
                 }
                 return w.finish();
             }
             Err(Spent) if last > 0 => last -= 1,
-            Err(Spent) => {
-                // Not even the root fits the budget: every node may be internal.
-                let mut c = w.finish();
-                c.nonuniform = (0..=depth).map(|l| cap(depth, l)).collect();
-                c.corners = vec![0; CORNER_CODES];
-                c.corners[CORNER_CODES - 1] = c.nonuniform[depth as usize];
-                return c;
-            }
+            Err(Spent) => return w.finish_unwalked(),
         }
     }
 }
@@ -1247,6 +1269,47 @@ fn cap(depth: u32, l: u32) -> u64 {
 }
 
 impl Walk<'_, '_> {
+    /// Level 0's list: every primitive with all its planes or triangles active, a mesh's
+    /// known point outside its box (a point outside the mesh's box is outside the mesh).
+    fn seed_root(&mut self) {
+        for (p, prim) in self.prims.iter().enumerate() {
+            let (n, at) = match prim {
+                Prim::Planes(v) => (v.len(), DVec3::ZERO),
+                Prim::Tris(t, lo, hi) => (t.len(), *lo - (*hi - *lo) - DVec3::ONE),
+                _ => (0, DVec3::ZERO),
+            };
+            let start = self.arena[0].len() as u32;
+            self.arena[0].extend(0..n as u32);
+            self.lists[0].push(Entry {
+                prim: p as u32,
+                start,
+                len: n as u32,
+                at,
+                known: Class::Out,
+            });
+        }
+    }
+
+    /// A subtree's counts and corner codes added to these.
+    fn add(&mut self, counts: &[u64], corners: &[u64]) {
+        for (a, b) in self.counts.iter_mut().zip(counts) {
+            *a += b;
+        }
+        for (a, b) in self.corners.iter_mut().zip(corners) {
+            *a += b;
+        }
+    }
+
+    /// The counts when not even the root fits the budget: every node may be internal.
+    fn finish_unwalked(self) -> CellCounts {
+        let depth = self.depth;
+        let mut c = self.finish();
+        c.nonuniform = (0..=depth).map(|l| cap(depth, l)).collect();
+        c.corners = vec![0; CORNER_CODES];
+        c.corners[CORNER_CODES - 1] = c.nonuniform[depth as usize];
+        c
+    }
+
     fn finish(self) -> CellCounts {
         let mut nonuniform = self.counts;
         let mut corners = self.corners;
