@@ -540,6 +540,83 @@ fn metadata_options() -> ArrayMetadataOptions {
     ArrayMetadataOptions::default().with_include_zarrs_metadata(false)
 }
 
+/// The layout the `csgpix` attribute `ours` records (chunk, shard and levels), or for a store
+/// written before shards and levels, one level whose chunks are those of its array.
+fn stored_layout(
+    ours: &Value,
+    store: &Arc<FilesystemStore>,
+    bad: &dyn Fn(String) -> Error,
+) -> Result<Layout> {
+    let field = |key: &str| -> Result<Option<Value>> { Ok(ours.get(key).cloned()) };
+    Ok(match (field("chunk")?, field("shard")?, field("levels")?) {
+        (Some(c), Some(s), Some(l)) => {
+            let parse = |v: Value, what: &str| bad(format!("attribute `csgpix`: `{what}`: {v}"));
+            Layout {
+                chunk: serde_json::from_value(c.clone()).map_err(|_| parse(c, "chunk"))?,
+                shard: serde_json::from_value(s.clone()).map_err(|_| parse(s, "shard"))?,
+                levels: Some(serde_json::from_value(l.clone()).map_err(|_| parse(l, "levels"))?),
+            }
+        }
+        _ => {
+            // Before shards and levels: one level, its chunks those of the array.
+            let array =
+                Array::open(store.clone(), &format!("/{}", 0)).map_err(|e| bad(e.to_string()))?;
+            let chunk = array
+                .chunk_shape_usize(&[0, 0, 0])
+                .map_err(|e| bad(e.to_string()))?;
+            Layout {
+                chunk: chunk
+                    .try_into()
+                    .map_err(|_| bad("the array is not 3D".into()))?,
+                shard: 1,
+                levels: Some(1),
+            }
+        }
+    })
+}
+
+/// Level `l`'s array in the store, checked against its `level` of the plan: its shape,
+/// uint8 samples, and the chunks (or shards) and inner chunks the layout makes.
+fn open_level(
+    store: &Arc<FilesystemStore>,
+    l: usize,
+    level: Level,
+    bad: &dyn Fn(String) -> Error,
+) -> Result<LevelArray> {
+    let bad = |what: String| bad(format!("level {l}: {what}"));
+    let array = Array::open(store.clone(), &format!("/{l}")).map_err(|e| bad(e.to_string()))?;
+    let [nx, ny, nz] = level.dims.map(|d| d as u64);
+    if array.shape() != [nz, ny, nx] {
+        return Err(bad(format!(
+            "array shape {:?} is not (nz, ny, nx) of dims {:?}",
+            array.shape(),
+            level.dims
+        )));
+    }
+    if array.data_type() != &zarrs::array::data_type::uint8() {
+        return Err(bad("the array is not uint8".into()));
+    }
+    // Chunks (or shards) and inner chunks as the attribute's layout makes them.
+    let want = array_builder(&level)
+        .build_metadata()
+        .map_err(|e| bad(e.to_string()))?;
+    let have = serde_json::to_value(array.metadata()).map_err(|e| bad(e.to_string()))?;
+    let want = serde_json::to_value(want).map_err(|e| bad(e.to_string()))?;
+    for key in ["chunk_grid", "codecs"] {
+        if have[key] != want[key] {
+            return Err(bad(format!(
+                "`{key}` is {}, not {} as the `csgpix` attribute's layout makes it",
+                have[key], want[key]
+            )));
+        }
+    }
+    Ok(LevelArray {
+        level,
+        array,
+        written: AtomicU64::new(0),
+    })
+}
+
 /// The array of `level`: uint8, fill 0, dimension names z, y, x; gzip at [`GZIP_LEVEL`],
 /// inside the `sharding_indexed` codec when sharded (index at the end, `bytes`
 /// little-endian, no checksum).
@@ -658,71 +735,11 @@ impl ZarrVolume {
             .get("csgpix")
             .ok_or_else(|| bad("no `csgpix` attribute".into()))?;
         let grid = grid_of(ours).map_err(|e| bad(format!("attribute `csgpix`: {e}")))?;
-        let field = |key: &str| -> Result<Option<Value>> { Ok(ours.get(key).cloned()) };
-        let layout = match (field("chunk")?, field("shard")?, field("levels")?) {
-            (Some(c), Some(s), Some(l)) => {
-                let parse =
-                    |v: Value, what: &str| bad(format!("attribute `csgpix`: `{what}`: {v}"));
-                Layout {
-                    chunk: serde_json::from_value(c.clone()).map_err(|_| parse(c, "chunk"))?,
-                    shard: serde_json::from_value(s.clone()).map_err(|_| parse(s, "shard"))?,
-                    levels: Some(
-                        serde_json::from_value(l.clone()).map_err(|_| parse(l, "levels"))?,
-                    ),
-                }
-            }
-            _ => {
-                // Before shards and levels: one level, its chunks those of the array.
-                let array = Array::open(store.clone(), &format!("/{}", 0))
-                    .map_err(|e| bad(e.to_string()))?;
-                let chunk = array
-                    .chunk_shape_usize(&[0, 0, 0])
-                    .map_err(|e| bad(e.to_string()))?;
-                Layout {
-                    chunk: chunk
-                        .try_into()
-                        .map_err(|_| bad("the array is not 3D".into()))?,
-                    shard: 1,
-                    levels: Some(1),
-                }
-            }
-        };
+        let layout = stored_layout(ours, &store, &bad)?;
         let levels = plan(grid.dims, &layout).map_err(|e| bad(e.to_string()))?;
         let mut arrays = vec![];
         for (l, level) in levels.into_iter().enumerate() {
-            let bad = |what: String| bad(format!("level {l}: {what}"));
-            let array =
-                Array::open(store.clone(), &format!("/{l}")).map_err(|e| bad(e.to_string()))?;
-            let [nx, ny, nz] = level.dims.map(|d| d as u64);
-            if array.shape() != [nz, ny, nx] {
-                return Err(bad(format!(
-                    "array shape {:?} is not (nz, ny, nx) of dims {:?}",
-                    array.shape(),
-                    level.dims
-                )));
-            }
-            if array.data_type() != &zarrs::array::data_type::uint8() {
-                return Err(bad("the array is not uint8".into()));
-            }
-            // Chunks (or shards) and inner chunks as the attribute's layout makes them.
-            let want = array_builder(&level)
-                .build_metadata()
-                .map_err(|e| bad(e.to_string()))?;
-            let have = serde_json::to_value(array.metadata()).map_err(|e| bad(e.to_string()))?;
-            let want = serde_json::to_value(want).map_err(|e| bad(e.to_string()))?;
-            for key in ["chunk_grid", "codecs"] {
-                if have[key] != want[key] {
-                    return Err(bad(format!(
-                        "`{key}` is {}, not {} as the `csgpix` attribute's layout makes it",
-                        have[key], want[key]
-                    )));
-                }
-            }
-            arrays.push(LevelArray {
-                level,
-                array,
-                written: AtomicU64::new(0),
-            });
+            arrays.push(open_level(&store, l, level, &bad)?);
         }
         Ok(ZarrVolume {
             path: path.into(),
