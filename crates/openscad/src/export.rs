@@ -277,50 +277,24 @@ struct Scanned {
 fn scan(text: &str, node: &str) -> Scanned {
     let chars: Vec<char> = text.chars().collect();
     let (mut calls, mut includes, mut fonts) = (vec![], vec![], vec![]);
-    let (mut i, mut line, mut col) = (0, 1, 1);
-    let mut prev_word = String::new();
-    let step = |i: &mut usize, line: &mut usize, col: &mut usize| {
-        if chars[*i] == '\n' {
-            *line += 1;
-            *col = 1;
-        } else {
-            *col += 1;
-        }
-        *i += 1;
+    let mut at = Cursor {
+        chars: &chars,
+        i: 0,
+        line: 1,
+        col: 1,
     };
-    while i < chars.len() {
-        let c = chars[i];
-        let next = chars.get(i + 1).copied();
+    let mut prev_word = String::new();
+    while at.i < chars.len() {
+        let c = chars[at.i];
+        let next = chars.get(at.i + 1).copied();
         if c == '/' && next == Some('/') {
-            while i < chars.len() && chars[i] != '\n' {
-                step(&mut i, &mut line, &mut col);
-            }
+            at.skip_line_comment();
         } else if c == '/' && next == Some('*') {
-            step(&mut i, &mut line, &mut col);
-            step(&mut i, &mut line, &mut col);
-            while i < chars.len() && !(chars[i] == '*' && chars.get(i + 1) == Some(&'/')) {
-                step(&mut i, &mut line, &mut col);
-            }
-            for _ in 0..2.min(chars.len() - i) {
-                step(&mut i, &mut line, &mut col);
-            }
+            at.skip_block_comment();
         } else if c == '"' {
-            step(&mut i, &mut line, &mut col);
-            while i < chars.len() && chars[i] != '"' {
-                if chars[i] == '\\' && i + 1 < chars.len() {
-                    step(&mut i, &mut line, &mut col);
-                }
-                step(&mut i, &mut line, &mut col);
-            }
-            if i < chars.len() {
-                step(&mut i, &mut line, &mut col);
-            }
+            at.skip_string();
         } else if c == '<' && matches!(prev_word.as_str(), "include" | "use") {
-            let start = i + 1;
-            while i < chars.len() && chars[i] != '>' && chars[i] != '\n' {
-                step(&mut i, &mut line, &mut col);
-            }
-            let name: String = chars[start..i].iter().collect();
+            let name = at.file_name();
             if prev_word == "use" && is_font_file(Path::new(name.trim())) {
                 fonts.push(name);
             } else {
@@ -328,19 +302,10 @@ fn scan(text: &str, node: &str) -> Scanned {
             }
             prev_word.clear();
         } else if c.is_ascii_alphabetic() || c == '_' || c == '$' {
-            let (l0, c0, start) = (line, col, i);
-            step(&mut i, &mut line, &mut col);
-            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
-                step(&mut i, &mut line, &mut col);
-            }
-            let word: String = chars[start..i].iter().collect();
-            let mut j = i;
-            while j < chars.len() && chars[j].is_whitespace() {
-                j += 1;
-            }
-            let called = chars.get(j) == Some(&'(');
+            let (l0, c0) = (at.line, at.col);
+            let word = at.word();
             let defined = matches!(prev_word.as_str(), "module" | "function");
-            if !node.is_empty() && word == node && called && !defined {
+            if !node.is_empty() && word == node && at.called() && !defined {
                 calls.push((l0, c0));
             }
             prev_word = word;
@@ -348,13 +313,101 @@ fn scan(text: &str, node: &str) -> Scanned {
             if !c.is_whitespace() {
                 prev_word.clear();
             }
-            step(&mut i, &mut line, &mut col);
+            at.step();
         }
     }
     Scanned {
         calls,
         includes,
         fonts,
+    }
+}
+
+/// A place in a `.scad` text: its index among the characters, and its line and column.
+struct Cursor<'a> {
+    chars: &'a [char],
+    i: usize,
+    line: usize,
+    col: usize,
+}
+
+impl Cursor<'_> {
+    /// One character on.
+    fn step(&mut self) {
+        if self.chars[self.i] == '\n' {
+            self.line += 1;
+            self.col = 1;
+        } else {
+            self.col += 1;
+        }
+        self.i += 1;
+    }
+
+    /// Past a `//` comment, to its line's end.
+    fn skip_line_comment(&mut self) {
+        while self.i < self.chars.len() && self.chars[self.i] != '\n' {
+            self.step();
+        }
+    }
+
+    /// Past a `/* … */` comment (to the text's end when it is not closed).
+    fn skip_block_comment(&mut self) {
+        let chars = self.chars;
+        self.step();
+        self.step();
+        while self.i < chars.len() && !(chars[self.i] == '*' && chars.get(self.i + 1) == Some(&'/'))
+        {
+            self.step();
+        }
+        for _ in 0..2.min(chars.len() - self.i) {
+            self.step();
+        }
+    }
+
+    /// Past a string literal, its escapes included.
+    fn skip_string(&mut self) {
+        let chars = self.chars;
+        self.step();
+        while self.i < chars.len() && chars[self.i] != '"' {
+            if chars[self.i] == '\\' && self.i + 1 < chars.len() {
+                self.step();
+            }
+            self.step();
+        }
+        if self.i < chars.len() {
+            self.step();
+        }
+    }
+
+    /// The file name of `include <…>` or `use <…>`, the cursor at the `<`: up to the `>`
+    /// (or the line's end), where the cursor stops.
+    fn file_name(&mut self) -> String {
+        let start = self.i + 1;
+        while self.i < self.chars.len() && self.chars[self.i] != '>' && self.chars[self.i] != '\n' {
+            self.step();
+        }
+        self.chars[start..self.i].iter().collect()
+    }
+
+    /// The identifier starting at the cursor, which moves past it.
+    fn word(&mut self) -> String {
+        let start = self.i;
+        self.step();
+        while self.i < self.chars.len()
+            && (self.chars[self.i].is_ascii_alphanumeric() || self.chars[self.i] == '_')
+        {
+            self.step();
+        }
+        self.chars[start..self.i].iter().collect()
+    }
+
+    /// Whether the next character but white space is `(` (a call).
+    fn called(&self) -> bool {
+        let mut j = self.i;
+        while j < self.chars.len() && self.chars[j].is_whitespace() {
+            j += 1;
+        }
+        self.chars.get(j) == Some(&'(')
     }
 }
 

@@ -533,8 +533,40 @@ pub fn clipper_offset(shape: &Poly2, o: Offset, sincos: &dyn Fn(f64) -> (f64, f6
     use i_overlay::core::fill_rule::FillRule;
     use i_overlay::core::overlay_rule::OverlayRule;
     use i_overlay::float::single::SingleFloatOverlay;
-    // The outlines as Clipper's AddPath keeps them: integer points, repeats dropped, fewer
-    // than three points skipped. `flatten` gives each shape's outer outline first.
+    let src = clipper_paths(shape);
+    let delta = o.amount() * CLIPPER_SCALE;
+    let dest: Vec<Vec<[f64; 2]>> = if delta.abs() < 1e-20 {
+        src.iter()
+            .map(|p| p.iter().map(|v| v.to_array()).collect())
+            .collect()
+    } else {
+        let offset = ClosedOffset::new(o, delta, sincos);
+        src.iter()
+            .filter(|p| !(delta <= 0.0 && p.len() < 3))
+            .map(|p| offset.outline(p))
+            .collect()
+    };
+    let none: Vec<Vec<[f64; 2]>> = vec![];
+    let shapes = dest.overlay(&none, OverlayRule::Subject, FillRule::Positive);
+    Poly2 {
+        paths: shapes
+            .into_iter()
+            .flatten()
+            .filter(|c| c.len() >= 3)
+            .map(|c| {
+                c.into_iter()
+                    .map(|v| DVec2::from(v) / CLIPPER_SCALE)
+                    .collect()
+            })
+            .collect(),
+    }
+}
+
+/// The outlines of `shape` as Clipper's `AddPath` keeps them: integer points, repeats
+/// dropped, fewer than three points skipped; then oriented as OpenSCAD's sanitized polygons
+/// are, outer outlines counter-clockwise and holes (by even-odd nesting) clockwise.
+fn clipper_paths(shape: &Poly2) -> Vec<Vec<DVec2>> {
+    // `flatten` gives each shape's outer outline first.
     let mut src: Vec<Vec<DVec2>> = vec![];
     for path in &shape.paths {
         let mut p: Vec<DVec2> = path.iter().map(|v| (*v * CLIPPER_SCALE).trunc()).collect();
@@ -546,8 +578,6 @@ pub fn clipper_offset(shape: &Poly2, o: Offset, sincos: &dyn Fn(f64) -> (f64, f6
             src.push(p);
         }
     }
-    // Orientation: which outlines are holes, by nesting (the even-odd structure); outer
-    // outlines counter-clockwise, holes clockwise (OpenSCAD's sanitized polygons).
     let inside_count = |i: usize| {
         let q = src[i][0];
         src.iter()
@@ -561,15 +591,30 @@ pub fn clipper_offset(shape: &Poly2, o: Offset, sincos: &dyn Fn(f64) -> (f64, f6
             p.reverse();
         }
     }
-    let delta = o.amount() * CLIPPER_SCALE;
-    let mut dest: Vec<Vec<[f64; 2]>> = vec![];
-    if delta.abs() < 1e-20 {
-        dest = src
-            .iter()
-            .map(|p| p.iter().map(|v| v.to_array()).collect())
-            .collect();
-    } else {
-        // DoOffset's set-up.
+    src
+}
+
+/// Clipper's `Round` of a point onto the integer grid, appended to `out`.
+fn put_rounded(out: &mut Vec<[f64; 2]>, v: DVec2) {
+    out.push([cround(v.x), cround(v.y)]);
+}
+
+/// Clipper 6.4's `ClipperOffset::DoOffset` for closed outlines: the join kind, the offset
+/// `delta` (scaled) and the arc steps its set-up derives.
+struct ClosedOffset {
+    o: Offset,
+    delta: f64,
+    miter_lim: f64,
+    steps_per_rad: f64,
+    /// The sine (negated for an inward offset) and cosine of one arc step.
+    m_sin: f64,
+    m_cos: f64,
+}
+
+impl ClosedOffset {
+    /// `DoOffset`'s set-up: miter limit 10⁶, and the arc steps from OpenSCAD's arc
+    /// tolerance `|r|·(1 − cos(180°/fragments))` (0.25 when 0, at most `|delta|/4`).
+    fn new(o: Offset, delta: f64, sincos: &dyn Fn(f64) -> (f64, f64)) -> Self {
         let miter_lim = 2.0 / (1e6 * 1e6);
         let arc_tolerance = match o {
             Offset::Round { r, fragments } => {
@@ -592,94 +637,120 @@ pub fn clipper_offset(shape: &Poly2, o: Offset, sincos: &dyn Fn(f64) -> (f64, f6
         }
         let two_pi = 2.0 * std::f64::consts::PI;
         let (mut m_sin, m_cos) = ((two_pi / steps).sin(), (two_pi / steps).cos());
-        let steps_per_rad = steps / two_pi;
         if delta < 0.0 {
             m_sin = -m_sin;
         }
-        for p in &src {
-            if delta <= 0.0 && p.len() < 3 {
-                continue;
-            }
-            let len = p.len();
-            let normals: Vec<DVec2> = (0..len)
-                .map(|j| {
-                    let d = p[(j + 1) % len] - p[j];
-                    if d == DVec2::ZERO {
-                        DVec2::ZERO
-                    } else {
-                        let f = 1.0 / (d.x * d.x + d.y * d.y).sqrt();
-                        DVec2::new(d.y * f, -d.x * f)
-                    }
-                })
-                .collect();
-            let mut out: Vec<[f64; 2]> = vec![];
-            let mut put = |v: DVec2| out.push([cround(v.x), cround(v.y)]);
-            let mut k = len - 1;
-            for j in 0..len {
-                let (nk, nj, pj) = (normals[k], normals[j], p[j]);
-                let mut sin_a = nk.x * nj.y - nj.x * nk.y;
-                let cos_a = nk.x * nj.x + nj.y * nk.y;
-                if (sin_a * delta).abs() < 1.0 {
-                    if cos_a > 0.0 {
-                        put(pj + nk * delta);
-                        continue;
-                    }
-                } else {
-                    sin_a = sin_a.clamp(-1.0, 1.0);
-                }
-                if sin_a * delta < 0.0 {
-                    put(pj + nk * delta);
-                    put(pj);
-                    put(pj + nj * delta);
-                } else {
-                    let square = |put: &mut dyn FnMut(DVec2)| {
-                        let dx = (sin_a.atan2(cos_a) / 4.0).tan();
-                        put(pj + DVec2::new(nk.x - nk.y * dx, nk.y + nk.x * dx) * delta);
-                        put(pj + DVec2::new(nj.x + nj.y * dx, nj.y - nj.x * dx) * delta);
-                    };
-                    match o {
-                        Offset::Delta { chamfer: false, .. } => {
-                            let r = 1.0 + (nj.x * nk.x + nj.y * nk.y);
-                            if r >= miter_lim {
-                                let q = delta / r;
-                                put(pj + (nk + nj) * q);
-                            } else {
-                                square(&mut put);
-                            }
-                        }
-                        Offset::Delta { chamfer: true, .. } => square(&mut put),
-                        Offset::Round { .. } => {
-                            let a = sin_a.atan2(cos_a);
-                            let n = (cround(steps_per_rad * a.abs()) as i64).max(1);
-                            let (mut x, mut y) = (nk.x, nk.y);
-                            for _ in 0..n {
-                                put(pj + DVec2::new(x, y) * delta);
-                                let x2 = x;
-                                x = x * m_cos - m_sin * y;
-                                y = x2 * m_sin + y * m_cos;
-                            }
-                            put(pj + nj * delta);
-                        }
-                    }
-                }
-                k = j;
-            }
-            dest.push(out);
+        ClosedOffset {
+            o,
+            delta,
+            miter_lim,
+            steps_per_rad: steps / two_pi,
+            m_sin,
+            m_cos,
         }
     }
-    let none: Vec<Vec<[f64; 2]>> = vec![];
-    let shapes = dest.overlay(&none, OverlayRule::Subject, FillRule::Positive);
-    Poly2 {
-        paths: shapes
-            .into_iter()
-            .flatten()
-            .filter(|c| c.len() >= 3)
-            .map(|c| {
-                c.into_iter()
-                    .map(|v| DVec2::from(v) / CLIPPER_SCALE)
-                    .collect()
+
+    /// One closed outline offset: its edge normals, then each point's join.
+    fn outline(&self, p: &[DVec2]) -> Vec<[f64; 2]> {
+        let len = p.len();
+        let normals: Vec<DVec2> = (0..len)
+            .map(|j| {
+                let d = p[(j + 1) % len] - p[j];
+                if d == DVec2::ZERO {
+                    DVec2::ZERO
+                } else {
+                    let f = 1.0 / (d.x * d.x + d.y * d.y).sqrt();
+                    DVec2::new(d.y * f, -d.x * f)
+                }
             })
-            .collect(),
+            .collect();
+        let mut out: Vec<[f64; 2]> = vec![];
+        let mut k = len - 1;
+        for j in 0..len {
+            if self.offset_point(&mut out, normals[k], normals[j], p[j]) {
+                k = j;
+            }
+        }
+        out
+    }
+
+    /// Clipper's `OffsetPoint`: the join at `pj` between the edges with normals `nk` (in)
+    /// and `nj` (out); false when the point is skipped (the edges nearly parallel).
+    fn offset_point(&self, out: &mut Vec<[f64; 2]>, nk: DVec2, nj: DVec2, pj: DVec2) -> bool {
+        let delta = self.delta;
+        let mut sin_a = nk.x * nj.y - nj.x * nk.y;
+        let cos_a = nk.x * nj.x + nj.y * nk.y;
+        if (sin_a * delta).abs() < 1.0 {
+            if cos_a > 0.0 {
+                put_rounded(out, pj + nk * delta);
+                return false;
+            }
+        } else {
+            sin_a = sin_a.clamp(-1.0, 1.0);
+        }
+        if sin_a * delta < 0.0 {
+            put_rounded(out, pj + nk * delta);
+            put_rounded(out, pj);
+            put_rounded(out, pj + nj * delta);
+            return true;
+        }
+        match self.o {
+            Offset::Delta { chamfer: false, .. } => {
+                let r = 1.0 + (nj.x * nk.x + nj.y * nk.y);
+                if r >= self.miter_lim {
+                    let q = delta / r;
+                    put_rounded(out, pj + (nk + nj) * q);
+                } else {
+                    self.do_square(out, nk, nj, pj, sin_a, cos_a);
+                }
+            }
+            Offset::Delta { chamfer: true, .. } => self.do_square(out, nk, nj, pj, sin_a, cos_a),
+            Offset::Round { .. } => self.do_round(out, nk, nj, pj, sin_a, cos_a),
+        }
+        true
+    }
+
+    /// Clipper's `DoSquare`: the corner at `pj` cut square at distance `delta`.
+    fn do_square(
+        &self,
+        out: &mut Vec<[f64; 2]>,
+        nk: DVec2,
+        nj: DVec2,
+        pj: DVec2,
+        sin_a: f64,
+        cos_a: f64,
+    ) {
+        let dx = (sin_a.atan2(cos_a) / 4.0).tan();
+        put_rounded(
+            out,
+            pj + DVec2::new(nk.x - nk.y * dx, nk.y + nk.x * dx) * self.delta,
+        );
+        put_rounded(
+            out,
+            pj + DVec2::new(nj.x + nj.y * dx, nj.y - nj.x * dx) * self.delta,
+        );
+    }
+
+    /// Clipper's `DoRound`: an arc around `pj` from normal `nk` to normal `nj`.
+    fn do_round(
+        &self,
+        out: &mut Vec<[f64; 2]>,
+        nk: DVec2,
+        nj: DVec2,
+        pj: DVec2,
+        sin_a: f64,
+        cos_a: f64,
+    ) {
+        let a = sin_a.atan2(cos_a);
+        let n = (cround(self.steps_per_rad * a.abs()) as i64).max(1);
+        let (mut x, mut y) = (nk.x, nk.y);
+        for _ in 0..n {
+            put_rounded(out, pj + DVec2::new(x, y) * self.delta);
+            let x2 = x;
+            x = x * self.m_cos - self.m_sin * y;
+            y = x2 * self.m_sin + y * self.m_cos;
+        }
+        put_rounded(out, pj + nj * self.delta);
     }
 }
 

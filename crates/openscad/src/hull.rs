@@ -207,14 +207,24 @@ impl<'a> Hull<'a> {
     /// Replaces the faces point `p` sees, starting from face `f`, by a fan from their horizon
     /// to `p`; the new faces, or None when the horizon is not one loop (nothing changed).
     fn add_point(&mut self, f: usize, p: usize) -> Option<Vec<usize>> {
-        let at = self.points[p];
+        let (visible, horizon) = self.visible_region(f, self.points[p]);
+        if !self.is_one_loop(&horizon) {
+            return None;
+        }
+        Some(self.replace_by_fan(&visible, &horizon, p))
+    }
+
+    /// The faces point `at` sees from face `f` on (marked with a new pass), grown until no
+    /// new face would fold over the faces beyond, with their horizon: the edges `(a, b, h)`
+    /// to the unseen faces `h`.
+    fn visible_region(&mut self, f: usize, at: DVec3) -> (Vec<usize>, Vec<(usize, usize, usize)>) {
         self.pass += 1;
         let pass = self.pass;
         self.faces[f].mark = pass;
         let mut visible = vec![f];
         let mut i = 0;
-        let horizon = loop {
-            // The faces `p` is above (by more than the tolerance), over adjacency.
+        loop {
+            // The faces `at` is above (by more than the tolerance), over adjacency.
             while i < visible.len() {
                 for g in self.faces[visible[i]].adj {
                     if self.faces[g].mark != pass && self.faces[g].distance(at) > self.eps {
@@ -225,23 +235,9 @@ impl<'a> Hull<'a> {
                 i += 1;
             }
             let horizon = self.horizon(&visible, pass);
-            // A new face must not fold back over the unseen face it meets: that face's third
-            // corner above it, or, `p` all but on that face's plane, facing the other way
-            // (`p` on the face's side of the edge). That face goes too.
-            let folds: Vec<usize> = horizon
-                .iter()
-                .filter(|&&(a, b, h)| {
-                    let [pa, pb] = [a, b].map(|i| self.points[i]);
-                    let face = &self.faces[h];
-                    let n = (pb - pa).cross(at - pa).normalize_or_zero();
-                    let c = face.v.into_iter().find(|&i| i != a && i != b);
-                    c.is_some_and(|c| n.dot(self.points[c] - pa) > self.eps)
-                        || (face.distance(at) > -self.eps && n.dot(face.n) < 0.0)
-                })
-                .map(|&(_, _, h)| h)
-                .collect();
+            let folds = self.folds(&horizon, at);
             if folds.is_empty() {
-                break horizon;
+                return (visible, horizon);
             }
             for h in folds {
                 if self.faces[h].mark != pass {
@@ -249,9 +245,31 @@ impl<'a> Hull<'a> {
                     visible.push(h);
                 }
             }
-        };
-        // One loop: every horizon vertex starts exactly one edge, and the walk along them
-        // from the first meets them all.
+        }
+    }
+
+    /// The unseen faces of `horizon` a new face to `at` would fold back over: that face's
+    /// third corner above it, or, `at` all but on that face's plane, facing the other way
+    /// (`at` on the face's side of the edge). Those faces go too.
+    fn folds(&self, horizon: &[(usize, usize, usize)], at: DVec3) -> Vec<usize> {
+        horizon
+            .iter()
+            .filter(|&&(a, b, h)| {
+                let [pa, pb] = [a, b].map(|i| self.points[i]);
+                let face = &self.faces[h];
+                let n = (pb - pa).cross(at - pa).normalize_or_zero();
+                let c = face.v.into_iter().find(|&i| i != a && i != b);
+                c.is_some_and(|c| n.dot(self.points[c] - pa) > self.eps)
+                    || (face.distance(at) > -self.eps && n.dot(face.n) < 0.0)
+            })
+            .map(|&(_, _, h)| h)
+            .collect()
+    }
+
+    /// Whether `horizon` is one loop: every horizon vertex starts exactly one edge, and the
+    /// walk along them from the first meets them all. When it is, `starts` holds each
+    /// vertex's edge (to be cleared by the caller); else it is left clear.
+    fn is_one_loop(&mut self, horizon: &[(usize, usize, usize)]) -> bool {
         let mut simple = !horizon.is_empty();
         for (n, &(a, _, _)) in horizon.iter().enumerate() {
             simple &= self.starts[a] == NONE;
@@ -270,13 +288,24 @@ impl<'a> Hull<'a> {
             simple = v == horizon[0].0 && steps == horizon.len();
         }
         if !simple {
-            for &(a, _, _) in &horizon {
+            for &(a, _, _) in horizon {
                 self.starts[a] = NONE;
             }
-            return None;
         }
+        simple
+    }
+
+    /// The `visible` faces removed and a fan of new faces from each `horizon` edge to point
+    /// `p` added, linked to each other (through `starts`, cleared after) and to the unseen
+    /// faces; their outside points handed to the new faces. The new faces.
+    fn replace_by_fan(
+        &mut self,
+        visible: &[usize],
+        horizon: &[(usize, usize, usize)],
+        p: usize,
+    ) -> Vec<usize> {
         let mut moved: Vec<usize> = vec![];
-        for &g in &visible {
+        for &g in visible {
             moved.append(&mut self.faces[g].outside);
             self.faces[g].alive = false;
             self.free.push(g);
@@ -296,12 +325,12 @@ impl<'a> Hull<'a> {
             self.faces[face].adj = [h, next, self.faces[face].adj[2]];
             self.faces[next].adj[2] = face;
         }
-        for &(a, _, _) in &horizon {
+        for &(a, _, _) in horizon {
             self.starts[a] = NONE;
         }
         moved.retain(|&i| i != p);
         self.assign(moved, &new);
-        Some(new)
+        new
     }
 
     /// The faces left, the triangles of one plane merged into one polygon: the outline of the
@@ -310,97 +339,13 @@ impl<'a> Hull<'a> {
     /// use are kept. Every edge of the result is so used once each way.
     fn merge_coplanar(&self) -> (Vec<DVec3>, Vec<Vec<usize>>) {
         let points = self.points;
-        let eps = self.eps;
-        // The faces on a seed's plane (their corners within the tolerance of it), over
-        // adjacency: on a convex hull the triangles of one plane are connected.
-        let mut group_of = vec![NONE; self.faces.len()];
-        let mut groups: Vec<Vec<usize>> = vec![];
-        for seed in 0..self.faces.len() {
-            if !self.faces[seed].alive || group_of[seed] != NONE {
-                continue;
-            }
-            let (n, d) = (self.faces[seed].n, self.faces[seed].d);
-            group_of[seed] = groups.len();
-            let mut group = vec![seed];
-            let mut i = 0;
-            while i < group.len() {
-                for g in self.faces[group[i]].adj {
-                    let face = &self.faces[g];
-                    if group_of[g] == NONE
-                        && n.dot(face.n) > 0.0
-                        && face.v.iter().all(|&i| (n.dot(points[i]) - d).abs() <= eps)
-                    {
-                        group_of[g] = groups.len();
-                        group.push(g);
-                    }
-                }
-                i += 1;
-            }
-            groups.push(group);
-        }
-        // Each group's outline, when its edges to other groups form one loop (else, only
-        // within the tolerance, its triangles stay apart).
-        let outlines: Vec<Option<Vec<usize>>> = groups
-            .iter()
-            .enumerate()
-            .map(|(id, group)| {
-                let mut edges: Vec<(usize, usize)> = group
-                    .iter()
-                    .flat_map(|&g| {
-                        let face = &self.faces[g];
-                        (0..3)
-                            .filter(|&k| group_of[face.adj[k]] != id)
-                            .map(|k| (face.v[k], face.v[(k + 1) % 3]))
-                    })
-                    .collect();
-                edges.sort_unstable();
-                one_loop(&edges)
-            })
-            .collect();
-        // Per point, the outlines that hold it: a point two outlines hold and that lies on
-        // the line of its neighbours there is on the edge between the two faces.
-        let mut holders = vec![0u8; points.len()];
-        for (outline, group) in outlines.iter().zip(&groups) {
-            match outline {
-                Some(ring) => ring
-                    .iter()
-                    .for_each(|&i| holders[i] = holders[i].saturating_add(1)),
-                None => group
-                    .iter()
-                    .flat_map(|&g| self.faces[g].v)
-                    .for_each(|i| holders[i] = u8::MAX),
-            }
-        }
-        let mut keep = vec![false; points.len()];
-        for ring in outlines.iter().flatten() {
-            for (k, &i) in ring.iter().enumerate() {
-                let (u, w) = (
-                    ring[(k + ring.len() - 1) % ring.len()],
-                    ring[(k + 1) % ring.len()],
-                );
-                let line = points[w] - points[u];
-                let off = (points[i] - points[u]).cross(line).length();
-                if off.is_nan() || off > eps * line.length() {
-                    keep[i] = true;
-                }
-            }
-        }
+        let (group_of, groups) = self.coplanar_groups();
+        let outlines = self.group_outlines(&group_of, &groups);
+        let holders = self.holders(&outlines, &groups);
+        let keep = self.off_line_points(&outlines);
         let corner = |i: usize, keep: &[bool]| holders[i] != 2 || keep[i];
         // A face left with fewer than three corners keeps all its points.
-        loop {
-            let mut changed = false;
-            for ring in outlines.iter().flatten() {
-                if ring.iter().filter(|&&i| corner(i, &keep)).count() < 3 {
-                    for &i in ring {
-                        changed |= !keep[i];
-                        keep[i] = true;
-                    }
-                }
-            }
-            if !changed {
-                break;
-            }
-        }
+        let keep = keep_three_corners(&outlines, keep, corner);
         let mut index = vec![NONE; points.len()];
         let mut vertices = vec![];
         let mut number = |i: usize| {
@@ -427,6 +372,123 @@ impl<'a> Hull<'a> {
             }
         }
         (vertices, out)
+    }
+
+    /// The live faces grouped by plane: each seed's group the faces on its plane (their
+    /// corners within the tolerance of it), over adjacency, as on a convex hull the
+    /// triangles of one plane are connected. Each face's group, and the groups.
+    fn coplanar_groups(&self) -> (Vec<usize>, Vec<Vec<usize>>) {
+        let (points, eps) = (self.points, self.eps);
+        let mut group_of = vec![NONE; self.faces.len()];
+        let mut groups: Vec<Vec<usize>> = vec![];
+        for seed in 0..self.faces.len() {
+            if !self.faces[seed].alive || group_of[seed] != NONE {
+                continue;
+            }
+            let (n, d) = (self.faces[seed].n, self.faces[seed].d);
+            group_of[seed] = groups.len();
+            let mut group = vec![seed];
+            let mut i = 0;
+            while i < group.len() {
+                for g in self.faces[group[i]].adj {
+                    let face = &self.faces[g];
+                    if group_of[g] == NONE
+                        && n.dot(face.n) > 0.0
+                        && face.v.iter().all(|&i| (n.dot(points[i]) - d).abs() <= eps)
+                    {
+                        group_of[g] = groups.len();
+                        group.push(g);
+                    }
+                }
+                i += 1;
+            }
+            groups.push(group);
+        }
+        (group_of, groups)
+    }
+
+    /// Each group's outline, when its edges to other groups form one loop (else, only
+    /// within the tolerance, its triangles stay apart).
+    fn group_outlines(&self, group_of: &[usize], groups: &[Vec<usize>]) -> Vec<Option<Vec<usize>>> {
+        groups
+            .iter()
+            .enumerate()
+            .map(|(id, group)| {
+                let mut edges: Vec<(usize, usize)> = group
+                    .iter()
+                    .flat_map(|&g| {
+                        let face = &self.faces[g];
+                        (0..3)
+                            .filter(|&k| group_of[face.adj[k]] != id)
+                            .map(|k| (face.v[k], face.v[(k + 1) % 3]))
+                    })
+                    .collect();
+                edges.sort_unstable();
+                one_loop(&edges)
+            })
+            .collect()
+    }
+
+    /// Per point, how many outlines hold it (saturating; the most for a point of a group
+    /// left as triangles): a point two outlines hold and that lies on the line of its
+    /// neighbours there is on the edge between the two faces.
+    fn holders(&self, outlines: &[Option<Vec<usize>>], groups: &[Vec<usize>]) -> Vec<u8> {
+        let mut holders = vec![0u8; self.points.len()];
+        for (outline, group) in outlines.iter().zip(groups) {
+            match outline {
+                Some(ring) => ring
+                    .iter()
+                    .for_each(|&i| holders[i] = holders[i].saturating_add(1)),
+                None => group
+                    .iter()
+                    .flat_map(|&g| self.faces[g].v)
+                    .for_each(|i| holders[i] = u8::MAX),
+            }
+        }
+        holders
+    }
+
+    /// The outline points off the line of their neighbours (by more than the tolerance).
+    fn off_line_points(&self, outlines: &[Option<Vec<usize>>]) -> Vec<bool> {
+        let points = self.points;
+        let mut keep = vec![false; points.len()];
+        for ring in outlines.iter().flatten() {
+            for (k, &i) in ring.iter().enumerate() {
+                let (u, w) = (
+                    ring[(k + ring.len() - 1) % ring.len()],
+                    ring[(k + 1) % ring.len()],
+                );
+                let line = points[w] - points[u];
+                let off = (points[i] - points[u]).cross(line).length();
+                if off.is_nan() || off > self.eps * line.length() {
+                    keep[i] = true;
+                }
+            }
+        }
+        keep
+    }
+}
+
+/// `keep` with every point of an outline that would be left with fewer than three corners
+/// (by `corner`) kept, until no outline is.
+fn keep_three_corners(
+    outlines: &[Option<Vec<usize>>],
+    mut keep: Vec<bool>,
+    corner: impl Fn(usize, &[bool]) -> bool,
+) -> Vec<bool> {
+    loop {
+        let mut changed = false;
+        for ring in outlines.iter().flatten() {
+            if ring.iter().filter(|&&i| corner(i, &keep)).count() < 3 {
+                for &i in ring {
+                    changed |= !keep[i];
+                    keep[i] = true;
+                }
+            }
+        }
+        if !changed {
+            return keep;
+        }
     }
 }
 

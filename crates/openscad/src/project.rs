@@ -446,21 +446,7 @@ pub(crate) fn resize(
         return fail(pos, "internal: a resize without its parameters");
     };
     if !frame.flats.is_empty() {
-        let at = frame.first_flat.unwrap_or(pos);
-        let region = crate::flat::region_of(Op::Union, frame.flats);
-        let s = match bbox2(&region) {
-            Some((lo, hi)) => {
-                let size = hi - lo;
-                resize_scale(newsize, auto, [size.x, size.y, 0.0], 2).unwrap_or([1.0; 3])
-            }
-            None => [1.0; 3],
-        };
-        let m = plane_part(frame.placement.as_ref());
-        let region = map_region(region, &|p| {
-            p.transformed([[s[0], 0.0, 0.0], [0.0, s[1], 0.0]])
-                .transformed(m)
-        });
-        return Ok(Item::Flat(region, at));
+        return Ok(resize_flat(frame, newsize, auto));
     }
     let node = combine(Op::Union, frame.children);
     let bbox = bbox3(&node, solids, imports).map_err(|problem| Fail { pos, problem })?;
@@ -483,12 +469,46 @@ pub(crate) fn resize(
     if let Some(outer) = &frame.placement {
         m = mat_mul(outer, &m);
     }
-    let flip = det3(&m) < 0.0;
-    for i in leaves(&node) {
+    move_leaves(&node, solids, imports, &m, pos)?;
+    Ok(Item::Solid(node))
+}
+
+/// A `resize` of 2D children: the union scaled about the origin from its exact bounding box
+/// in x and y, then placed in the plane.
+fn resize_flat(frame: Frame, newsize: [f64; 3], auto: [bool; 3]) -> Item {
+    let pos = frame.pos;
+    let at = frame.first_flat.unwrap_or(pos);
+    let region = crate::flat::region_of(Op::Union, frame.flats);
+    let s = match bbox2(&region) {
+        Some((lo, hi)) => {
+            let size = hi - lo;
+            resize_scale(newsize, auto, [size.x, size.y, 0.0], 2).unwrap_or([1.0; 3])
+        }
+        None => [1.0; 3],
+    };
+    let m = plane_part(frame.placement.as_ref());
+    let region = map_region(region, &|p| {
+        p.transformed([[s[0], 0.0, 0.0], [0.0, s[1], 0.0]])
+            .transformed(m)
+    });
+    Item::Flat(region, at)
+}
+
+/// The solids and imports under `node` moved by `m` in place (faces reversed when `m`
+/// mirrors); an error when a coordinate then passes the limit.
+fn move_leaves(
+    node: &CsgNode,
+    solids: &mut [ConvexSolid],
+    imports: &mut [Import],
+    m: &Mat4,
+    pos: Pos,
+) -> Result<(), Fail> {
+    let flip = det3(m) < 0.0;
+    for i in leaves(node) {
         if i < IMPORTED {
             let solid = &mut solids[i];
             for v in &mut solid.vertices {
-                *v = transform_point(&m, *v);
+                *v = transform_point(m, *v);
             }
             if flip {
                 solid.faces.iter_mut().for_each(|f| f.reverse());
@@ -506,7 +526,7 @@ pub(crate) fn resize(
             Some(mesh) => {
                 let tris = std::sync::Arc::make_mut(mesh);
                 for t in tris.iter_mut() {
-                    *t = t.map(|v| transform_point(&m, v));
+                    *t = t.map(|v| transform_point(m, v));
                     if flip {
                         t.swap(1, 2);
                     }
@@ -520,13 +540,13 @@ pub(crate) fn resize(
             }
             None => {
                 import.matrix = Some(match &import.matrix {
-                    Some(inner) => mat_mul(&m, inner),
-                    None => m,
+                    Some(inner) => mat_mul(m, inner),
+                    None => *m,
                 })
             }
         }
     }
-    Ok(Item::Solid(node))
+    Ok(())
 }
 
 #[cfg(test)]

@@ -709,41 +709,11 @@ impl<'a> Reader<'a> {
             return self.surface(head, ctx);
         }
         if head.kind == NodeKind::Import {
-            let import = import(head, ctx)?;
-            if ctx.skip {
-                return Ok(None);
-            }
-            if let Some(msg) = removal_3d(ctx.matrix.as_ref()) {
-                return Ok(self.removed(Some(msg), head.pos, false, false));
-            }
-            self.imports.push(import);
-            return Ok(Some(Item::Solid(CsgNode::Solid(
-                IMPORTED + self.imports.len() - 1,
-            ))));
+            return self.import_leaf(head, ctx);
         }
         let budget = self.max_vertices().saturating_sub(self.vertices);
         if head.kind.is_flat() {
-            let mut notes = vec![];
-            let shape = flat_shape(&head.params, || self.fonts(), budget, &mut notes)?;
-            if !ctx.skip {
-                self.warnings
-                    .extend(notes.into_iter().map(|n| (head.pos, n)));
-            }
-            let Some(poly) = shape else {
-                self.empty_primitive(head, ctx);
-                return Ok(None);
-            };
-            let n = poly.points().count();
-            check_budget(n, budget, head.pos)?;
-            if ctx.skip {
-                return Ok(None);
-            }
-            if let Some(msg) = removal_2d(ctx.matrix.as_ref()) {
-                return Ok(self.removed(Some(msg), head.pos, false, true));
-            }
-            self.vertices += n;
-            let poly = poly.transformed(plane_part(ctx.matrix.as_ref()));
-            return Ok(Some(Item::Flat(Region::Poly(poly), head.pos)));
+            return self.flat_leaf(head, ctx, budget);
         }
         let shape = match head.kind {
             NodeKind::Cube => cube(&head.params)?,
@@ -753,20 +723,7 @@ impl<'a> Reader<'a> {
                 None => return Ok(self.removed(None, head.pos, ctx.skip, false)),
                 Some(Polyhedron::Convex(shape)) => Some(shape),
                 Some(Polyhedron::Mesh(tris)) => {
-                    check_budget(tris.len() * 3, budget, head.pos)?;
-                    if ctx.skip {
-                        return Ok(None);
-                    }
-                    let to = Placement {
-                        matrix: ctx.matrix,
-                        colour: ctx.colour,
-                        pos: head.pos,
-                        name: "polyhedron",
-                    };
-                    self.vertices += tris.len() * 3;
-                    self.warn_open_polyhedron(&tris, head.pos);
-                    let tris = tris.iter().map(|t| t.map(DVec3::from)).collect();
-                    return self.push_mesh(tris, &to).map(|n| Some(Item::Solid(n)));
+                    return self.mesh_polyhedron(&tris, head, ctx, budget);
                 }
             },
         };
@@ -785,6 +742,73 @@ impl<'a> Reader<'a> {
         self.vertices += solid.vertices.len();
         self.solids.push(solid);
         Ok(Some(Item::Solid(CsgNode::Solid(self.solids.len() - 1))))
+    }
+
+    /// A 3D `import`: the file's solid, kept for the scene (removed under a matrix that
+    /// flattens it).
+    fn import_leaf(&mut self, head: &Head, ctx: &Ctx) -> Result<Option<Item>, Fail> {
+        let import = import(head, ctx)?;
+        if ctx.skip {
+            return Ok(None);
+        }
+        if let Some(msg) = removal_3d(ctx.matrix.as_ref()) {
+            return Ok(self.removed(Some(msg), head.pos, false, false));
+        }
+        self.imports.push(import);
+        Ok(Some(Item::Solid(CsgNode::Solid(
+            IMPORTED + self.imports.len() - 1,
+        ))))
+    }
+
+    /// A 2D primitive (`square`, `circle`, `polygon`, `text`): its outline within the
+    /// vertex `budget`, placed in the plane.
+    fn flat_leaf(&mut self, head: &Head, ctx: &Ctx, budget: usize) -> Result<Option<Item>, Fail> {
+        let mut notes = vec![];
+        let shape = flat_shape(&head.params, || self.fonts(), budget, &mut notes)?;
+        if !ctx.skip {
+            self.warnings
+                .extend(notes.into_iter().map(|n| (head.pos, n)));
+        }
+        let Some(poly) = shape else {
+            self.empty_primitive(head, ctx);
+            return Ok(None);
+        };
+        let n = poly.points().count();
+        check_budget(n, budget, head.pos)?;
+        if ctx.skip {
+            return Ok(None);
+        }
+        if let Some(msg) = removal_2d(ctx.matrix.as_ref()) {
+            return Ok(self.removed(Some(msg), head.pos, false, true));
+        }
+        self.vertices += n;
+        let poly = poly.transformed(plane_part(ctx.matrix.as_ref()));
+        Ok(Some(Item::Flat(Region::Poly(poly), head.pos)))
+    }
+
+    /// A `polyhedron` that is not convex: its triangles within the vertex `budget`, placed
+    /// as a mesh (with a warning when it is not closed).
+    fn mesh_polyhedron(
+        &mut self,
+        tris: &[[[f64; 3]; 3]],
+        head: &Head,
+        ctx: &Ctx,
+        budget: usize,
+    ) -> Result<Option<Item>, Fail> {
+        check_budget(tris.len() * 3, budget, head.pos)?;
+        if ctx.skip {
+            return Ok(None);
+        }
+        let to = Placement {
+            matrix: ctx.matrix,
+            colour: ctx.colour,
+            pos: head.pos,
+            name: "polyhedron",
+        };
+        self.vertices += tris.len() * 3;
+        self.warn_open_polyhedron(tris, head.pos);
+        let tris = tris.iter().map(|t| t.map(DVec3::from)).collect();
+        self.push_mesh(tris, &to).map(|n| Some(Item::Solid(n)))
     }
 
     /// A finished `linear_extrude` or `rotate_extrude`: the CSG tree of its 2D children's

@@ -305,45 +305,14 @@ fn walk(
         join: attr("stroke-linejoin"),
         style: attr("style"),
     };
-    let mut paths: Option<Vec<Vec<DVec2>>> = None;
-    match name {
-        "g" | "text" | "tspan" => {
-            let m = own();
-            for child in node.children() {
-                walk(child, &m, out, depth + 1)?;
-            }
-            return Ok(());
+    if let "g" | "text" | "tspan" = name {
+        let m = own();
+        for child in node.children() {
+            walk(child, &m, out, depth + 1)?;
         }
-        "path" => paths = Some(path_outlines(attr("d"), &style)?),
-        "rect" => paths = Some(rect(node, &style)?),
-        "circle" => {
-            let r = parse_double(attr("r"));
-            let c = [parse_double(attr("cx")), parse_double(attr("cy"))];
-            paths = Some(vec![ellipse(c, r, r)]);
-        }
-        "ellipse" => {
-            let (rx, ry) = (parse_double(attr("rx")), parse_double(attr("ry")));
-            let c = [parse_double(attr("cx")), parse_double(attr("cy"))];
-            paths = Some(vec![ellipse(c, rx, ry)]);
-        }
-        "line" => {
-            let a = DVec2::new(parse_double(attr("x1")), parse_double(attr("y1")));
-            let b = DVec2::new(parse_double(attr("x2")), parse_double(attr("y2")));
-            paths = Some(style.stroke(&[a, b]));
-        }
-        "polygon" | "polyline" => {
-            let mut pts = points(attr("points"));
-            paths = Some(if name == "polygon" {
-                if let Some(&first) = pts.first() {
-                    pts.push(first);
-                }
-                vec![pts]
-            } else {
-                style.stroke(&pts)
-            });
-        }
-        _ => {}
+        return Ok(());
     }
+    let paths = shape_outlines(node, name, &style)?;
     if let Some(paths) = paths {
         let own = own();
         out.push(
@@ -359,6 +328,44 @@ fn walk(
         walk(child, m, out, depth + 1)?;
     }
     Ok(())
+}
+
+/// libsvg's shapes: the outlines of drawing element `node` (named `name`) in its own
+/// coordinates, or `None` when it is not one (SVG 1.1 §8 `path`, §9 basic shapes).
+fn shape_outlines(
+    node: roxmltree::Node,
+    name: &str,
+    style: &Style,
+) -> csgpix_scene::Result<Option<Vec<Vec<DVec2>>>> {
+    let attr = |n: &str| at(node, n);
+    Ok(Some(match name {
+        "path" => path_outlines(attr("d"), style)?,
+        "rect" => rect(node, style)?,
+        "circle" => {
+            let r = parse_double(attr("r"));
+            let c = [parse_double(attr("cx")), parse_double(attr("cy"))];
+            vec![ellipse(c, r, r)]
+        }
+        "ellipse" => {
+            let (rx, ry) = (parse_double(attr("rx")), parse_double(attr("ry")));
+            let c = [parse_double(attr("cx")), parse_double(attr("cy"))];
+            vec![ellipse(c, rx, ry)]
+        }
+        "line" => {
+            let a = DVec2::new(parse_double(attr("x1")), parse_double(attr("y1")));
+            let b = DVec2::new(parse_double(attr("x2")), parse_double(attr("y2")));
+            style.stroke(&[a, b])
+        }
+        "polygon" => {
+            let mut pts = points(attr("points"));
+            if let Some(&first) = pts.first() {
+                pts.push(first);
+            }
+            vec![pts]
+        }
+        "polyline" => style.stroke(&points(attr("points"))),
+        _ => return Ok(None),
+    }))
 }
 
 /// An attribute's value ("" when missing, as libsvg's attribute map gives it).
@@ -729,39 +736,88 @@ fn open_offset(path: &[DVec2], width: f64, cap: Cap, join: Join) -> Vec<Vec<DVec
     const SCALE: f64 = 10000.0;
     let mut src: Vec<DVec2> = path.iter().map(|v| (*v * SCALE).trunc()).collect();
     src.dedup();
-    let len = src.len();
-    if len == 0 {
+    if src.is_empty() {
         return vec![];
     }
-    let delta = width * 5000.0;
-    let two_pi = std::f64::consts::TAU;
-    let y = 0.25f64.min(delta.abs() * 0.25);
-    let mut steps = std::f64::consts::PI / (1.0 - y / delta.abs()).acos();
-    if steps > delta.abs() * std::f64::consts::PI {
-        steps = delta.abs() * std::f64::consts::PI;
+    let mut offset = ClipperOffset::new(&src, width * 5000.0, join);
+    if src.len() == 1 {
+        offset.point_outline();
+    } else {
+        offset.polyline_outline(cap);
     }
-    let (m_sin, m_cos) = ((two_pi / steps).sin(), (two_pi / steps).cos());
-    let steps_per_rad = steps / two_pi;
-    let miter_lim = 0.5;
-    let mut dest: Vec<DVec2> = vec![];
-    let pt = |p: DVec2, n: DVec2, d: f64| DVec2::new(round(p.x + n.x * d), round(p.y + n.y * d));
-    if len == 1 {
-        if join == Join::Round {
+    let outline: Vec<[f64; 2]> = offset.dest.iter().map(|v| v.to_array()).collect();
+    clean(&[outline], Fill::Positive)
+        .paths
+        .into_iter()
+        .map(|p| p.into_iter().map(|v| v / SCALE).collect())
+        .collect()
+}
+
+/// Point `p` moved by `d` along unit vector `n`, rounded to Clipper's integer grid.
+fn offset_pt(p: DVec2, n: DVec2, d: f64) -> DVec2 {
+    DVec2::new(round(p.x + n.x * d), round(p.y + n.y * d))
+}
+
+/// Clipper's `ClipperOffset::DoOffset` state for one open path: the scaled points, the
+/// offset `delta`, the arc steps its arc tolerance gives, and the outline so far.
+struct ClipperOffset<'a> {
+    src: &'a [DVec2],
+    delta: f64,
+    join: Join,
+    /// Steps in a full circle, and the sine and cosine of one step.
+    steps: f64,
+    m_sin: f64,
+    m_cos: f64,
+    steps_per_rad: f64,
+    dest: Vec<DVec2>,
+}
+
+impl<'a> ClipperOffset<'a> {
+    /// The arc steps for `delta` with arc tolerance 0.25 (at most one per unit of arc).
+    fn new(src: &'a [DVec2], delta: f64, join: Join) -> Self {
+        let two_pi = std::f64::consts::TAU;
+        let y = 0.25f64.min(delta.abs() * 0.25);
+        let mut steps = std::f64::consts::PI / (1.0 - y / delta.abs()).acos();
+        if steps > delta.abs() * std::f64::consts::PI {
+            steps = delta.abs() * std::f64::consts::PI;
+        }
+        ClipperOffset {
+            src,
+            delta,
+            join,
+            steps,
+            m_sin: (two_pi / steps).sin(),
+            m_cos: (two_pi / steps).cos(),
+            steps_per_rad: steps / two_pi,
+            dest: vec![],
+        }
+    }
+
+    /// A single point's outline: a circle for round joins, else a square.
+    fn point_outline(&mut self) {
+        let (p, delta) = (self.src[0], self.delta);
+        if self.join == Join::Round {
             let (mut x, mut yy) = (1.0, 0.0);
             let mut j = 1.0;
-            while j <= steps {
-                dest.push(pt(src[0], DVec2::new(x, yy), delta));
+            while j <= self.steps {
+                self.dest.push(offset_pt(p, DVec2::new(x, yy), delta));
                 let x2 = x;
-                x = x * m_cos - m_sin * yy;
-                yy = x2 * m_sin + yy * m_cos;
+                x = x * self.m_cos - self.m_sin * yy;
+                yy = x2 * self.m_sin + yy * self.m_cos;
                 j += 1.0;
             }
         } else {
             for (x, yy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
-                dest.push(pt(src[0], DVec2::new(x, yy), delta));
+                self.dest.push(offset_pt(p, DVec2::new(x, yy), delta));
             }
         }
-    } else {
+    }
+
+    /// A polyline's outline: along one side, around the far end's cap, back along the
+    /// other side (the normals reversed), and around the near end's cap.
+    fn polyline_outline(&mut self, cap: Cap) {
+        let (src, delta) = (self.src, self.delta);
+        let len = src.len();
         let unit_normal = |a: DVec2, b: DVec2| {
             let d = b - a;
             if d == DVec2::ZERO {
@@ -774,83 +830,17 @@ fn open_offset(path: &[DVec2], width: f64, cap: Cap, join: Join) -> Vec<Vec<DVec
             .map(|j| unit_normal(src[j], src[j + 1]))
             .collect();
         normals.push(normals[len - 2]);
-        let mut sin_a = 0.0;
-        let do_square = |dest: &mut Vec<DVec2>, n: &[DVec2], j: usize, k: usize, sin_a: f64| {
-            let dx = (sin_a.atan2(n[k].dot(n[j])) / 4.0).tan();
-            let p = src[j];
-            dest.push(DVec2::new(
-                round(p.x + delta * (n[k].x - n[k].y * dx)),
-                round(p.y + delta * (n[k].y + n[k].x * dx)),
-            ));
-            dest.push(DVec2::new(
-                round(p.x + delta * (n[j].x + n[j].y * dx)),
-                round(p.y + delta * (n[j].y - n[j].x * dx)),
-            ));
-        };
-        let do_round = |dest: &mut Vec<DVec2>, n: &[DVec2], j: usize, k: usize, sin_a: f64| {
-            let a = sin_a.atan2(n[k].dot(n[j]));
-            let steps = (round(steps_per_rad * a.abs()) as i64).max(1);
-            let (mut x, mut yy) = (n[k].x, n[k].y);
-            for _ in 0..steps {
-                dest.push(pt(src[j], DVec2::new(x, yy), delta));
-                let x2 = x;
-                x = x * m_cos - m_sin * yy;
-                yy = x2 * m_sin + yy * m_cos;
-            }
-            dest.push(pt(src[j], n[j], delta));
-        };
-        let offset_point =
-            |dest: &mut Vec<DVec2>, n: &[DVec2], j: usize, k: &mut usize, sin_a: &mut f64| {
-                *sin_a = n[*k].x * n[j].y - n[j].x * n[*k].y;
-                if (*sin_a * delta).abs() < 1.0 {
-                    if n[*k].dot(n[j]) > 0.0 {
-                        dest.push(pt(src[j], n[*k], delta));
-                        return;
-                    }
-                } else {
-                    *sin_a = sin_a.clamp(-1.0, 1.0);
-                }
-                if *sin_a * delta < 0.0 {
-                    dest.push(pt(src[j], n[*k], delta));
-                    dest.push(src[j]);
-                    dest.push(pt(src[j], n[j], delta));
-                } else {
-                    match join {
-                        Join::Miter => {
-                            let r = 1.0 + n[j].dot(n[*k]);
-                            if r >= miter_lim {
-                                let q = delta / r;
-                                dest.push(DVec2::new(
-                                    round(src[j].x + (n[*k].x + n[j].x) * q),
-                                    round(src[j].y + (n[*k].y + n[j].y) * q),
-                                ));
-                            } else {
-                                do_square(dest, n, j, *k, *sin_a);
-                            }
-                        }
-                        Join::Square => do_square(dest, n, j, *k, *sin_a),
-                        Join::Round => do_round(dest, n, j, *k, *sin_a),
-                    }
-                }
-                *k = j;
-            };
         let mut k = 0;
         for j in 1..len - 1 {
-            offset_point(&mut dest, &normals, j, &mut k, &mut sin_a);
+            self.offset_point(&normals, j, &mut k);
         }
         let j = len - 1;
         if cap == Cap::Butt {
-            dest.push(pt(src[j], normals[j], delta));
-            dest.push(pt(src[j], normals[j], -delta));
+            self.dest.push(offset_pt(src[j], normals[j], delta));
+            self.dest.push(offset_pt(src[j], normals[j], -delta));
         } else {
-            k = len - 2;
-            sin_a = 0.0;
             normals[j] = -normals[j];
-            if cap == Cap::Square {
-                do_square(&mut dest, &normals, j, k, sin_a);
-            } else {
-                do_round(&mut dest, &normals, j, k, sin_a);
-            }
+            self.cap(cap, &normals, j, len - 2);
         }
         for j in (1..len).rev() {
             normals[j] = -normals[j - 1];
@@ -858,240 +848,474 @@ fn open_offset(path: &[DVec2], width: f64, cap: Cap, join: Join) -> Vec<Vec<DVec
         normals[0] = -normals[1];
         k = len - 1;
         for j in (1..len - 1).rev() {
-            offset_point(&mut dest, &normals, j, &mut k, &mut sin_a);
+            self.offset_point(&normals, j, &mut k);
         }
         if cap == Cap::Butt {
-            dest.push(pt(src[0], normals[0], -delta));
-            dest.push(pt(src[0], normals[0], delta));
+            self.dest.push(offset_pt(src[0], normals[0], -delta));
+            self.dest.push(offset_pt(src[0], normals[0], delta));
         } else {
-            sin_a = 0.0;
-            if cap == Cap::Square {
-                do_square(&mut dest, &normals, 0, 1, sin_a);
-            } else {
-                do_round(&mut dest, &normals, 0, 1, sin_a);
-            }
+            self.cap(cap, &normals, 0, 1);
         }
     }
-    let outline: Vec<[f64; 2]> = dest.iter().map(|v| v.to_array()).collect();
-    clean(&[outline], Fill::Positive)
-        .paths
-        .into_iter()
-        .map(|p| p.into_iter().map(|v| v / SCALE).collect())
-        .collect()
+
+    /// A square or round cap at end `j` (`k` its neighbour), as Clipper draws it with
+    /// `sinA` 0.
+    fn cap(&mut self, cap: Cap, n: &[DVec2], j: usize, k: usize) {
+        if cap == Cap::Square {
+            self.do_square(n, j, k, 0.0);
+        } else {
+            self.do_round(n, j, k, 0.0);
+        }
+    }
+
+    /// Clipper's `DoSquare`: the corner at point `j` cut square at distance `delta`.
+    fn do_square(&mut self, n: &[DVec2], j: usize, k: usize, sin_a: f64) {
+        let delta = self.delta;
+        let dx = (sin_a.atan2(n[k].dot(n[j])) / 4.0).tan();
+        let p = self.src[j];
+        self.dest.push(DVec2::new(
+            round(p.x + delta * (n[k].x - n[k].y * dx)),
+            round(p.y + delta * (n[k].y + n[k].x * dx)),
+        ));
+        self.dest.push(DVec2::new(
+            round(p.x + delta * (n[j].x + n[j].y * dx)),
+            round(p.y + delta * (n[j].y - n[j].x * dx)),
+        ));
+    }
+
+    /// Clipper's `DoRound`: an arc around point `j` from normal `k` to normal `j`.
+    fn do_round(&mut self, n: &[DVec2], j: usize, k: usize, sin_a: f64) {
+        let a = sin_a.atan2(n[k].dot(n[j]));
+        let steps = (round(self.steps_per_rad * a.abs()) as i64).max(1);
+        let (mut x, mut yy) = (n[k].x, n[k].y);
+        for _ in 0..steps {
+            self.dest
+                .push(offset_pt(self.src[j], DVec2::new(x, yy), self.delta));
+            let x2 = x;
+            x = x * self.m_cos - self.m_sin * yy;
+            yy = x2 * self.m_sin + yy * self.m_cos;
+        }
+        self.dest.push(offset_pt(self.src[j], n[j], self.delta));
+    }
+
+    /// Clipper's `OffsetPoint`: the join at point `j` between the edges with normals `k`
+    /// and `j` (`k` becomes `j` unless the point is skipped).
+    fn offset_point(&mut self, n: &[DVec2], j: usize, k: &mut usize) {
+        let (src, delta) = (self.src, self.delta);
+        let mut sin_a = n[*k].x * n[j].y - n[j].x * n[*k].y;
+        if (sin_a * delta).abs() < 1.0 {
+            if n[*k].dot(n[j]) > 0.0 {
+                self.dest.push(offset_pt(src[j], n[*k], delta));
+                return;
+            }
+        } else {
+            sin_a = sin_a.clamp(-1.0, 1.0);
+        }
+        if sin_a * delta < 0.0 {
+            self.dest.push(offset_pt(src[j], n[*k], delta));
+            self.dest.push(src[j]);
+            self.dest.push(offset_pt(src[j], n[j], delta));
+        } else {
+            match self.join {
+                Join::Miter => {
+                    const MITER_LIM: f64 = 0.5;
+                    let r = 1.0 + n[j].dot(n[*k]);
+                    if r >= MITER_LIM {
+                        let q = delta / r;
+                        self.dest.push(DVec2::new(
+                            round(src[j].x + (n[*k].x + n[j].x) * q),
+                            round(src[j].y + (n[*k].y + n[j].y) * q),
+                        ));
+                    } else {
+                        self.do_square(n, j, *k, sin_a);
+                    }
+                }
+                Join::Square => self.do_square(n, j, *k, sin_a),
+                Join::Round => self.do_round(n, j, *k, sin_a),
+            }
+        }
+        *k = j;
+    }
 }
 
 /// libsvg's `path`: its `d` read token by token as libsvg does (boost tokens apart by spaces
 /// and commas, each command letter and `-` a token of its own), each subpath a list of
 /// points; open subpaths become their strokes.
 fn path_outlines(d: &str, style: &Style) -> csgpix_scene::Result<Vec<Vec<DVec2>>> {
-    const COMMANDS: &str = "-zmlcqahvstZMLCQAHVST";
     let mut toks: Vec<String> = vec![];
-    for t in tokens(d, |c| c.is_whitespace() || c == ',', COMMANDS) {
+    for t in tokens(d, |c| c.is_whitespace() || c == ',', PATH_COMMANDS) {
         toks.extend(split_dots(t));
     }
     let mut list: Vec<Vec<DVec2>> = vec![vec![]];
-    let (mut x, mut y, mut xx) = (0.0f64, 0.0f64, 0.0f64);
-    let (mut rx, mut ry, mut cx1, mut cy1, mut cx2, mut cy2) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    let (mut angle, mut large, mut sweep) = (0.0, false, false);
-    let (mut last_cubic, mut last_quad) = (false, false);
-    let mut cmd = ' ';
-    let mut point: i32 = 0;
-    let mut negate = false;
-    let mut closed = false;
-    let mut exp = String::new();
-    let is_open = |p: &[DVec2]| p[0].distance(p[p.len() - 1]) > 0.1;
+    let mut pen = PathPen::new();
+    let mut number = PathNumber::default();
     for v in &toks {
-        let mut p = 0.0;
-        if v.len() == 1 && COMMANDS.contains(v.as_str()) {
+        let p = if v.len() == 1 && PATH_COMMANDS.contains(v.as_str()) {
             if v == "-" {
-                negate = true;
+                number.negate = true;
                 continue;
             }
-            point = -1;
-            cmd = v.chars().next().unwrap_or(' ');
+            pen.point = -1;
+            pen.cmd = v.chars().next().unwrap_or(' ');
+            0.0
         } else {
-            if v.ends_with('e') {
-                exp = if negate { format!("-{v}") } else { v.clone() };
-                negate = false;
-                continue;
+            match number.read(v) {
+                Some(p) => p,
+                None => continue,
             }
-            if exp.is_empty() {
-                p = parse_double(v);
-                if negate {
-                    p = -p;
-                }
-            } else {
-                p = parse_double(&format!("{exp}{}{v}", if negate { "-" } else { "" }));
-                exp.clear();
-            }
-            negate = false;
-        }
-        let rel = cmd.is_ascii_lowercase();
-        let back = list.last_mut().expect("a current subpath");
-        match cmd.to_ascii_lowercase() {
-            'a' => match point {
-                0 => rx = p.abs(),
-                1 => ry = p.abs(),
-                2 => angle = p,
-                3 => large = p > 0.5,
-                4 => sweep = p > 0.5,
-                5 => xx = if rel { x + p } else { p },
-                6 => {
-                    let yy = if rel { y + p } else { p };
-                    if rx == 0.0 || ry == 0.0 {
-                        return Err(Error::ZeroRadiusArc);
-                    }
-                    arc_to(back, [x, y], rx, ry, [xx, yy], angle, large, sweep);
-                    (x, y) = (xx, yy);
-                    point = -1;
-                    (last_cubic, last_quad) = (false, false);
-                }
-                _ => {}
-            },
-            'l' => match point {
-                0 => xx = if rel { x + p } else { p },
-                1 => {
-                    let yy = if rel { y + p } else { p };
-                    back.push(DVec2::new(xx, yy));
-                    (x, y) = (xx, yy);
-                    point = -1;
-                    (last_cubic, last_quad) = (false, false);
-                }
-                _ => {}
-            },
-            'c' => match point {
-                0 => cx1 = p,
-                1 => cy1 = p,
-                2 => cx2 = p,
-                3 => cy2 = p,
-                4 => xx = if rel { x + p } else { p },
-                5 => {
-                    let yy = if rel { y + p } else { p };
-                    if rel {
-                        (cx1, cy1, cx2, cy2) = (x + cx1, y + cy1, x + cx2, y + cy2);
-                    }
-                    cubic(back, [x, y], [cx1, cy1], [cx2, cy2], [xx, yy]);
-                    (x, y) = (xx, yy);
-                    point = -1;
-                    (last_cubic, last_quad) = (true, false);
-                }
-                _ => {}
-            },
-            's' => match point {
-                0 => {
-                    if last_cubic {
-                        (cx1, cy1) = (2.0 * x - cx2, 2.0 * y - cy2);
-                    } else {
-                        (cx1, cy1) = (x, y);
-                    }
-                    cx2 = p;
-                }
-                1 => cy2 = p,
-                2 => xx = if rel { x + p } else { p },
-                3 => {
-                    let yy = if rel { y + p } else { p };
-                    if rel {
-                        (cx2, cy2) = (x + cx2, y + cy2);
-                    }
-                    cubic(back, [x, y], [cx1, cy1], [cx2, cy2], [xx, yy]);
-                    (x, y) = (xx, yy);
-                    point = -1;
-                    (last_cubic, last_quad) = (true, false);
-                }
-                _ => {}
-            },
-            'q' => match point {
-                0 => cx1 = p,
-                1 => cy1 = p,
-                2 => xx = if rel { x + p } else { p },
-                3 => {
-                    let yy = if rel { y + p } else { p };
-                    if rel {
-                        (cx1, cy1) = (x + cx1, y + cy1);
-                    }
-                    quadratic(back, [x, y], [cx1, cy1], [xx, yy]);
-                    (x, y) = (xx, yy);
-                    point = -1;
-                    (last_cubic, last_quad) = (false, true);
-                }
-                _ => {}
-            },
-            't' => match point {
-                0 => {
-                    if last_quad {
-                        (cx1, cy1) = (2.0 * x - cx1, 2.0 * y - cy1);
-                    } else {
-                        (cx1, cy1) = (x, y);
-                    }
-                    xx = if rel { x + p } else { p };
-                }
-                1 => {
-                    let yy = if rel { y + p } else { p };
-                    quadratic(back, [x, y], [cx1, cy1], [xx, yy]);
-                    (x, y) = (xx, yy);
-                    point = -1;
-                    (last_cubic, last_quad) = (false, true);
-                }
-                _ => {}
-            },
-            'm' => match point {
-                0 => xx = if rel { x + p } else { p },
-                1 => {
-                    let yy = if rel { y + p } else { p };
-                    cmd = if rel { 'l' } else { 'L' };
-                    if !back.is_empty() {
-                        if is_open(back) {
-                            let open = list.pop().expect("the current subpath");
-                            list.extend(style.stroke(&open));
-                        }
-                        list.push(vec![]);
-                    }
-                    list.last_mut()
-                        .expect("a current subpath")
-                        .push(DVec2::new(xx, yy));
-                    (x, y) = (xx, yy);
-                    point = -1;
-                    (last_cubic, last_quad) = (false, false);
-                }
-                _ => {}
-            },
-            'v' if point == 0 => {
-                y = if rel { y + p } else { p };
-                back.push(DVec2::new(x, y));
-                point = -1;
-                (last_cubic, last_quad) = (false, false);
-            }
-            'h' if point == 0 => {
-                x = if rel { x + p } else { p };
-                back.push(DVec2::new(x, y));
-                point = -1;
-                (last_cubic, last_quad) = (false, false);
-            }
-            'z' => {
-                if let Some(&first) = back.first() {
-                    back.push(first);
-                    (x, y) = (first.x, first.y);
-                }
-                list.push(vec![]);
-                closed = true;
-                (last_cubic, last_quad) = (false, false);
-            }
-            _ => {}
-        }
-        point += 1;
+        };
+        pen.step(&mut list, style, p)?;
     }
     while list.last().is_some_and(|p| p.is_empty()) {
         list.pop();
     }
-    if !closed {
+    if !pen.closed {
         if let Some(last) = list.last() {
-            if is_open(last) {
+            if subpath_is_open(last) {
                 let open = list.pop().expect("the last subpath");
                 list.extend(style.stroke(&open));
             }
         }
     }
     Ok(list)
+}
+
+/// The tokens of a path's `d` that are tokens of their own: the command letters and `-`.
+const PATH_COMMANDS: &str = "-zmlcqahvstZMLCQAHVST";
+
+/// Whether a subpath is open in libsvg's sense: its ends more than 0.1 apart.
+fn subpath_is_open(p: &[DVec2]) -> bool {
+    p[0].distance(p[p.len() - 1]) > 0.1
+}
+
+/// libsvg's reading of a number token: a `-` token before it negates it, and a token ending
+/// in `e` is an exponent's mantissa that is glued to the next number token.
+#[derive(Default)]
+struct PathNumber {
+    /// A `-` token came last.
+    negate: bool,
+    /// The pending mantissa (with its sign) of a number written with an exponent.
+    exp: String,
+}
+
+impl PathNumber {
+    /// The value of number token `v`, or `None` when `v` is a mantissa awaiting its
+    /// exponent.
+    fn read(&mut self, v: &str) -> Option<f64> {
+        if v.ends_with('e') {
+            self.exp = if self.negate {
+                format!("-{v}")
+            } else {
+                v.to_string()
+            };
+            self.negate = false;
+            return None;
+        }
+        let p = if self.exp.is_empty() {
+            let p = parse_double(v);
+            if self.negate {
+                -p
+            } else {
+                p
+            }
+        } else {
+            let sign = if self.negate { "-" } else { "" };
+            let p = parse_double(&format!("{}{sign}{v}", self.exp));
+            self.exp.clear();
+            p
+        };
+        self.negate = false;
+        Some(p)
+    }
+}
+
+/// libsvg's path reader between tokens: the command in force, which of its parameters comes
+/// next, the parameters read so far and the current point.
+struct PathPen {
+    /// The command in force (a repeated command needs no new letter).
+    cmd: char,
+    /// The index of the command's next parameter.
+    point: i32,
+    /// The current point.
+    x: f64,
+    y: f64,
+    /// The end point's x, read before its y.
+    xx: f64,
+    /// An arc's radii, rotation and flags.
+    rx: f64,
+    ry: f64,
+    angle: f64,
+    large: bool,
+    sweep: bool,
+    /// A Bézier's control points.
+    cx1: f64,
+    cy1: f64,
+    cx2: f64,
+    cy2: f64,
+    /// Whether the last segment was a cubic or a quadratic (for `s` and `t` reflections).
+    last_cubic: bool,
+    last_quad: bool,
+    /// A `z` was read.
+    closed: bool,
+}
+
+impl PathPen {
+    fn new() -> Self {
+        PathPen {
+            cmd: ' ',
+            point: 0,
+            x: 0.0,
+            y: 0.0,
+            xx: 0.0,
+            rx: 0.0,
+            ry: 0.0,
+            angle: 0.0,
+            large: false,
+            sweep: false,
+            cx1: 0.0,
+            cy1: 0.0,
+            cx2: 0.0,
+            cy2: 0.0,
+            last_cubic: false,
+            last_quad: false,
+            closed: false,
+        }
+    }
+
+    /// Parameter `p` of the command in force (0 for a command letter itself), applied to
+    /// the subpaths `list` (whose last is the current one).
+    fn step(
+        &mut self,
+        list: &mut Vec<Vec<DVec2>>,
+        style: &Style,
+        p: f64,
+    ) -> csgpix_scene::Result<()> {
+        let rel = self.cmd.is_ascii_lowercase();
+        let back = list.last_mut().expect("a current subpath");
+        match self.cmd.to_ascii_lowercase() {
+            'a' => self.arc(back, rel, p)?,
+            'l' => self.line(back, rel, p),
+            'c' => self.cubic(back, rel, p),
+            's' => self.smooth_cubic(back, rel, p),
+            'q' => self.quadratic(back, rel, p),
+            't' => self.smooth_quadratic(back, rel, p),
+            'm' => self.move_to(list, style, rel, p),
+            'v' if self.point == 0 => {
+                self.y = if rel { self.y + p } else { p };
+                back.push(DVec2::new(self.x, self.y));
+                self.end_segment(self.x, self.y, false, false);
+            }
+            'h' if self.point == 0 => {
+                self.x = if rel { self.x + p } else { p };
+                back.push(DVec2::new(self.x, self.y));
+                self.end_segment(self.x, self.y, false, false);
+            }
+            'z' => self.close(list),
+            _ => {}
+        }
+        self.point += 1;
+        Ok(())
+    }
+
+    /// The absolute x of coordinate `p`.
+    fn abs_x(&self, rel: bool, p: f64) -> f64 {
+        if rel {
+            self.x + p
+        } else {
+            p
+        }
+    }
+
+    /// The absolute y of coordinate `p`.
+    fn abs_y(&self, rel: bool, p: f64) -> f64 {
+        if rel {
+            self.y + p
+        } else {
+            p
+        }
+    }
+
+    /// A segment drawn: the pen moves to its end and the command may repeat.
+    fn end_segment(&mut self, x: f64, y: f64, cubic: bool, quad: bool) {
+        (self.x, self.y) = (x, y);
+        self.point = -1;
+        (self.last_cubic, self.last_quad) = (cubic, quad);
+    }
+
+    /// `A rx ry angle large sweep x y`: an elliptical arc.
+    fn arc(&mut self, back: &mut Vec<DVec2>, rel: bool, p: f64) -> csgpix_scene::Result<()> {
+        match self.point {
+            0 => self.rx = p.abs(),
+            1 => self.ry = p.abs(),
+            2 => self.angle = p,
+            3 => self.large = p > 0.5,
+            4 => self.sweep = p > 0.5,
+            5 => self.xx = self.abs_x(rel, p),
+            6 => {
+                let yy = self.abs_y(rel, p);
+                if self.rx == 0.0 || self.ry == 0.0 {
+                    return Err(Error::ZeroRadiusArc);
+                }
+                let (x, y, xx) = (self.x, self.y, self.xx);
+                let (large, sweep) = (self.large, self.sweep);
+                arc_to(
+                    back,
+                    [x, y],
+                    self.rx,
+                    self.ry,
+                    [xx, yy],
+                    self.angle,
+                    large,
+                    sweep,
+                );
+                self.end_segment(xx, yy, false, false);
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// `L x y`: a straight line.
+    fn line(&mut self, back: &mut Vec<DVec2>, rel: bool, p: f64) {
+        match self.point {
+            0 => self.xx = self.abs_x(rel, p),
+            1 => {
+                let yy = self.abs_y(rel, p);
+                back.push(DVec2::new(self.xx, yy));
+                self.end_segment(self.xx, yy, false, false);
+            }
+            _ => {}
+        }
+    }
+
+    /// `C x1 y1 x2 y2 x y`: a cubic Bézier.
+    fn cubic(&mut self, back: &mut Vec<DVec2>, rel: bool, p: f64) {
+        match self.point {
+            0 => self.cx1 = p,
+            1 => self.cy1 = p,
+            2 => self.cx2 = p,
+            3 => self.cy2 = p,
+            4 => self.xx = self.abs_x(rel, p),
+            5 => {
+                let yy = self.abs_y(rel, p);
+                let (x, y) = (self.x, self.y);
+                if rel {
+                    (self.cx1, self.cy1) = (x + self.cx1, y + self.cy1);
+                    (self.cx2, self.cy2) = (x + self.cx2, y + self.cy2);
+                }
+                let (c1, c2) = ([self.cx1, self.cy1], [self.cx2, self.cy2]);
+                cubic(back, [x, y], c1, c2, [self.xx, yy]);
+                self.end_segment(self.xx, yy, true, false);
+            }
+            _ => {}
+        }
+    }
+
+    /// `S x2 y2 x y`: a cubic Bézier whose first control point mirrors the last cubic's
+    /// second (or is the current point).
+    fn smooth_cubic(&mut self, back: &mut Vec<DVec2>, rel: bool, p: f64) {
+        let (x, y) = (self.x, self.y);
+        match self.point {
+            0 => {
+                if self.last_cubic {
+                    (self.cx1, self.cy1) = (2.0 * x - self.cx2, 2.0 * y - self.cy2);
+                } else {
+                    (self.cx1, self.cy1) = (x, y);
+                }
+                self.cx2 = p;
+            }
+            1 => self.cy2 = p,
+            2 => self.xx = self.abs_x(rel, p),
+            3 => {
+                let yy = self.abs_y(rel, p);
+                if rel {
+                    (self.cx2, self.cy2) = (x + self.cx2, y + self.cy2);
+                }
+                let (c1, c2) = ([self.cx1, self.cy1], [self.cx2, self.cy2]);
+                cubic(back, [x, y], c1, c2, [self.xx, yy]);
+                self.end_segment(self.xx, yy, true, false);
+            }
+            _ => {}
+        }
+    }
+
+    /// `Q x1 y1 x y`: a quadratic Bézier.
+    fn quadratic(&mut self, back: &mut Vec<DVec2>, rel: bool, p: f64) {
+        match self.point {
+            0 => self.cx1 = p,
+            1 => self.cy1 = p,
+            2 => self.xx = self.abs_x(rel, p),
+            3 => {
+                let yy = self.abs_y(rel, p);
+                let (x, y) = (self.x, self.y);
+                if rel {
+                    (self.cx1, self.cy1) = (x + self.cx1, y + self.cy1);
+                }
+                quadratic(back, [x, y], [self.cx1, self.cy1], [self.xx, yy]);
+                self.end_segment(self.xx, yy, false, true);
+            }
+            _ => {}
+        }
+    }
+
+    /// `T x y`: a quadratic Bézier whose control point mirrors the last quadratic's (or is
+    /// the current point).
+    fn smooth_quadratic(&mut self, back: &mut Vec<DVec2>, rel: bool, p: f64) {
+        let (x, y) = (self.x, self.y);
+        match self.point {
+            0 => {
+                if self.last_quad {
+                    (self.cx1, self.cy1) = (2.0 * x - self.cx1, 2.0 * y - self.cy1);
+                } else {
+                    (self.cx1, self.cy1) = (x, y);
+                }
+                self.xx = self.abs_x(rel, p);
+            }
+            1 => {
+                let yy = self.abs_y(rel, p);
+                quadratic(back, [x, y], [self.cx1, self.cy1], [self.xx, yy]);
+                self.end_segment(self.xx, yy, false, true);
+            }
+            _ => {}
+        }
+    }
+
+    /// `M x y`: a new subpath (the current one, if open, replaced by its stroke); further
+    /// pairs are lines.
+    fn move_to(&mut self, list: &mut Vec<Vec<DVec2>>, style: &Style, rel: bool, p: f64) {
+        match self.point {
+            0 => self.xx = self.abs_x(rel, p),
+            1 => {
+                let yy = self.abs_y(rel, p);
+                self.cmd = if rel { 'l' } else { 'L' };
+                let back = list.last().expect("a current subpath");
+                if !back.is_empty() {
+                    if subpath_is_open(back) {
+                        let open = list.pop().expect("the current subpath");
+                        list.extend(style.stroke(&open));
+                    }
+                    list.push(vec![]);
+                }
+                list.last_mut()
+                    .expect("a current subpath")
+                    .push(DVec2::new(self.xx, yy));
+                self.end_segment(self.xx, yy, false, false);
+            }
+            _ => {}
+        }
+    }
+
+    /// `Z`: the current subpath closed back to its start, and a new one begun.
+    fn close(&mut self, list: &mut Vec<Vec<DVec2>>) {
+        let back = list.last_mut().expect("a current subpath");
+        if let Some(&first) = back.first() {
+            back.push(first);
+            (self.x, self.y) = (first.x, first.y);
+        }
+        list.push(vec![]);
+        self.closed = true;
+        (self.last_cubic, self.last_quad) = (false, false);
+    }
 }
 
 /// libsvg's `split_dots`: a token with two or more points split before each further point

@@ -150,6 +150,52 @@ impl Fonts {
             trimmed
         };
         let (families, props) = lookup.split_once(':').unwrap_or((lookup, ""));
+        let props = FontProps::parse(name, props)?;
+        let layers = self.layers();
+        for family in families.split(',').map(str::trim).filter(|f| !f.is_empty()) {
+            // The faces of the family, in lookup order.
+            let faces: Vec<(usize, &fontdb::FaceInfo)> = layers
+                .iter()
+                .enumerate()
+                .flat_map(|(layer, fonts)| fonts.db.faces().map(move |f| (layer, f)))
+                .filter(|(_, f)| {
+                    f.families
+                        .iter()
+                        .any(|(n, _)| n.eq_ignore_ascii_case(family))
+                })
+                .collect();
+            if faces.is_empty() {
+                continue;
+            }
+            return match props.pick(&layers, &faces) {
+                Some((layer, f)) => Ok(FaceId {
+                    layer: *layer,
+                    id: f.id,
+                }),
+                None => Err(Error::NoSuchStyle {
+                    family: family.to_string(),
+                }
+                .context(format_args!("font `{name}`"))),
+            };
+        }
+        Err(Error::FontNotFound {
+            font: name.to_string(),
+            scene: self.then.is_some(),
+        })
+    }
+}
+
+/// The properties after a font name's families (fontconfig's pattern syntax, the part
+/// csgpix reads): `style=…`, `weight=…` and the constants `bold`, `italic`, `regular`.
+struct FontProps {
+    style: Option<String>,
+    weight: Option<u16>,
+    italic: bool,
+}
+
+impl FontProps {
+    /// The properties `props` of font `name`; an error names one csgpix does not read.
+    fn parse(name: &str, props: &str) -> csgpix_scene::Result<FontProps> {
         let mut style: Option<String> = None;
         let mut weight: Option<u16> = None;
         let mut italic = false;
@@ -181,55 +227,38 @@ impl Fonts {
                 }
             }
         }
-        let layers = self.layers();
-        for family in families.split(',').map(str::trim).filter(|f| !f.is_empty()) {
-            // The faces of the family, in lookup order.
-            let faces: Vec<(usize, &fontdb::FaceInfo)> = layers
-                .iter()
-                .enumerate()
-                .flat_map(|(layer, fonts)| fonts.db.faces().map(move |f| (layer, f)))
-                .filter(|(_, f)| {
-                    f.families
-                        .iter()
-                        .any(|(n, _)| n.eq_ignore_ascii_case(family))
-                })
-                .collect();
-            if faces.is_empty() {
-                continue;
-            }
-            let found = if let Some(style) = &style {
-                faces.iter().find(|(layer, f)| {
-                    style_names(&layers[*layer].db, f)
-                        .iter()
-                        .any(|s| s.eq_ignore_ascii_case(style))
-                })
-            } else {
-                let want = weight.unwrap_or(400);
-                let wants_italic = |(_, f): &&(usize, &fontdb::FaceInfo)| {
-                    (f.style != fontdb::Style::Normal) == italic
-                };
-                faces
-                    .iter()
-                    .filter(wants_italic)
-                    .filter(|(_, f)| f.stretch == fontdb::Stretch::Normal)
-                    .min_by_key(|(_, f)| (f.weight.0 as i32 - want as i32).abs())
-                    .filter(|(_, f)| weight.is_none() || f.weight.0 == want)
-            };
-            return match found {
-                Some((layer, f)) => Ok(FaceId {
-                    layer: *layer,
-                    id: f.id,
-                }),
-                None => Err(Error::NoSuchStyle {
-                    family: family.to_string(),
-                }
-                .context(format_args!("font `{name}`"))),
-            };
-        }
-        Err(Error::FontNotFound {
-            font: name.to_string(),
-            scene: self.then.is_some(),
+        Ok(FontProps {
+            style,
+            weight,
+            italic,
         })
+    }
+
+    /// The face of a family's `faces` (in lookup order) these properties pick: the first
+    /// with the named style; else, of normal stretch and the wanted slant, the nearest in
+    /// weight to the one asked (400 when none), which must match it when one was asked.
+    fn pick<'f, 'd>(
+        &self,
+        layers: &[&Fonts],
+        faces: &'f [(usize, &'d fontdb::FaceInfo)],
+    ) -> Option<&'f (usize, &'d fontdb::FaceInfo)> {
+        if let Some(style) = &self.style {
+            return faces.iter().find(|(layer, f)| {
+                style_names(&layers[*layer].db, f)
+                    .iter()
+                    .any(|s| s.eq_ignore_ascii_case(style))
+            });
+        }
+        let (weight, italic) = (self.weight, self.italic);
+        let want = weight.unwrap_or(400);
+        let wants_italic =
+            |(_, f): &&(usize, &fontdb::FaceInfo)| (f.style != fontdb::Style::Normal) == italic;
+        faces
+            .iter()
+            .filter(wants_italic)
+            .filter(|(_, f)| f.stretch == fontdb::Stretch::Normal)
+            .min_by_key(|(_, f)| (f.weight.0 as i32 - want as i32).abs())
+            .filter(|(_, f)| weight.is_none() || f.weight.0 == want)
     }
 }
 
@@ -526,6 +555,8 @@ pub fn render_noting(
         })
 }
 
+/// OpenSCAD's `FreetypeRenderer::render` of `spec` with the face in `data`: the text shaped,
+/// its glyphs outlined, the whole aligned by `halign` and `valign` and scaled by `size`.
 fn render_face(
     spec: &TextSpec,
     data: &[u8],
@@ -536,7 +567,39 @@ fn render_face(
         font: spec.font.clone(),
         parsed: true,
     })?;
-    let to26 = units_26_6(&face);
+    let buffer = shaping_buffer(spec);
+    let horizontal = matches!(
+        buffer.direction(),
+        rustybuzz::Direction::LeftToRight | rustybuzz::Direction::RightToLeft
+    );
+    let shaped = rustybuzz::shape(&face, &[], buffer);
+    let glyphs = outline_glyphs(spec, &face, &shaped, horizontal, max_points)?;
+    // Positions as hb-ft reports them: whole 26.6 units.
+    let pos_to26 = units_26_6_positions(&face);
+    let (width, ascend, descend) = text_extent(spec, &glyphs, horizontal, pos_to26);
+    let x_offset = match spec.halign.as_str() {
+        "right" => -width,
+        "center" => -width / 2.0,
+        _ => 0.0,
+    };
+    let y_offset = match spec.valign.as_str() {
+        "top" => -ascend,
+        "center" => descend / 2.0 - ascend / 2.0,
+        "bottom" => descend,
+        _ => 0.0,
+    };
+    let offset = DVec2::new(x_offset, y_offset);
+    Ok(nonzero_union(place_glyphs(spec, &glyphs, offset, pos_to26)))
+}
+
+/// A glyph position in whole 26.6 units (hb-ft's), from font units scaled by `pos_to26`.
+fn whole_26_6(v: i32, pos_to26: f64) -> f64 {
+    (v as f64 * pos_to26).round()
+}
+
+/// The HarfBuzz buffer of `spec`'s text with its direction, script and language where they
+/// parse; the rest guessed from the text.
+fn shaping_buffer(spec: &TextSpec) -> rustybuzz::UnicodeBuffer {
     let mut buffer = rustybuzz::UnicodeBuffer::new();
     buffer.push_str(&spec.text);
     if let Ok(d) = spec.direction.parse::<rustybuzz::Direction>() {
@@ -551,14 +614,19 @@ fn render_face(
         buffer.set_language(l);
     }
     buffer.guess_segment_properties();
-    let horizontal = matches!(
-        buffer.direction(),
-        rustybuzz::Direction::LeftToRight | rustybuzz::Direction::RightToLeft
-    );
-    let shaped = rustybuzz::shape(&face, &[], buffer);
-    // Positions as hb-ft reports them: whole 26.6 units.
-    let pos_to26 = units_26_6_positions(&face);
-    let pos26 = |v: i32| (v as f64 * pos_to26).round();
+    buffer
+}
+
+/// Each shaped glyph's outline (in 26.6 units) with its position, vertical positions as
+/// FreeType gives them; an error once the outlines pass `max_points` points.
+fn outline_glyphs(
+    spec: &TextSpec,
+    face: &rustybuzz::Face,
+    shaped: &rustybuzz::GlyphBuffer,
+    horizontal: bool,
+    max_points: usize,
+) -> csgpix_scene::Result<Vec<(Outline, rustybuzz::GlyphPosition)>> {
+    let to26 = units_26_6(face);
     let mut glyphs = Vec::new();
     let mut points = 0usize;
     for (info, pos) in shaped.glyph_infos().iter().zip(shaped.glyph_positions()) {
@@ -577,30 +645,47 @@ fn render_face(
         }
         let mut pos = *pos;
         if !horizontal {
-            // hb-ft's vertical metrics, which OpenSCAD gets: FreeType's TrueType loader makes
-            // them up for a font without `vmtx` (TT_Get_VMetrics, compute_glyph_metrics): the
-            // advance is sTypoAscender − sTypoDescender (hhea's without OS/2) and the origin
-            // lies `top = (advance − height) / 2` above the glyph's box; HarfBuzz's own
-            // fallback (rustybuzz) uses the font ascender and descender instead.
-            if face.tables().vmtx.is_none() {
-                let advance = match face.tables().os2 {
-                    Some(os2) => {
-                        os2.typographic_ascender() as i32 - os2.typographic_descender() as i32
-                    }
-                    None => face.ascender() as i32 - face.descender() as i32,
-                };
-                let (y_min, y_max) = face
-                    .glyph_bounding_box(id)
-                    .map_or((0, 0), |b| (b.y_min as i32, b.y_max as i32));
-                let top = (advance - (y_max - y_min)) / 2;
-                pos.y_offset = -(y_max + top);
-                pos.y_advance = -advance;
-            }
+            freetype_vertical_metrics(face, id, &mut pos);
         }
         glyphs.push((o, pos));
     }
+    Ok(glyphs)
+}
+
+/// hb-ft's vertical metrics, which OpenSCAD gets: FreeType's TrueType loader makes them up
+/// for a font without `vmtx` (TT_Get_VMetrics, compute_glyph_metrics): the advance is
+/// sTypoAscender − sTypoDescender (hhea's without OS/2) and the origin lies
+/// `top = (advance − height) / 2` above the glyph's box; HarfBuzz's own fallback
+/// (rustybuzz) uses the font ascender and descender instead.
+fn freetype_vertical_metrics(
+    face: &rustybuzz::Face,
+    id: ttf_parser::GlyphId,
+    pos: &mut rustybuzz::GlyphPosition,
+) {
+    if face.tables().vmtx.is_none() {
+        let advance = match face.tables().os2 {
+            Some(os2) => os2.typographic_ascender() as i32 - os2.typographic_descender() as i32,
+            None => face.ascender() as i32 - face.descender() as i32,
+        };
+        let (y_min, y_max) = face
+            .glyph_bounding_box(id)
+            .map_or((0, 0), |b| (b.y_min as i32, b.y_max as i32));
+        let top = (advance - (y_max - y_min)) / 2;
+        pos.y_offset = -(y_max + top);
+        pos.y_advance = -advance;
+    }
+}
+
+/// The text's width, ascent and descent (in units of `size`) as OpenSCAD measures them for
+/// alignment: from the grid-fitted glyph boxes and the advances.
+fn text_extent(
+    spec: &TextSpec,
+    glyphs: &[(Outline, rustybuzz::GlyphPosition)],
+    horizontal: bool,
+    pos_to26: f64,
+) -> (f64, f64, f64) {
     let (mut width, mut ascend, mut descend) = (0.0f64, 0.0f64, 0.0f64);
-    for (o, pos) in &glyphs {
+    for (o, pos) in glyphs {
         let pos = *pos;
         // FT_Glyph_Get_CBox(FT_GLYPH_BBOX_GRIDFIT): an empty glyph's box is all zeros.
         let (lo, hi) = if o.lo.x.is_finite() {
@@ -611,29 +696,30 @@ fn render_face(
         if horizontal {
             ascend = ascend.max((hi.y / UNSCALE).max(0.0));
             descend = descend.max((-lo.y / UNSCALE).max(0.0));
-            width += pos26(pos.x_advance) / UNSCALE * spec.spacing;
+            width += whole_26_6(pos.x_advance, pos_to26) / UNSCALE * spec.spacing;
         } else {
             width = width.max((hi.x - lo.x) / UNSCALE);
-            ascend += pos26(pos.y_advance) / UNSCALE * spec.spacing;
+            ascend += whole_26_6(pos.y_advance, pos_to26) / UNSCALE * spec.spacing;
         }
     }
-    let x_offset = match spec.halign.as_str() {
-        "right" => -width,
-        "center" => -width / 2.0,
-        _ => 0.0,
-    };
-    let y_offset = match spec.valign.as_str() {
-        "top" => -ascend,
-        "center" => descend / 2.0 - ascend / 2.0,
-        "bottom" => descend,
-        _ => 0.0,
-    };
+    (width, ascend, descend)
+}
+
+/// The glyphs' contours placed one after another along the advances, moved by the
+/// alignment `offset` and scaled by `size`.
+fn place_glyphs(
+    spec: &TextSpec,
+    glyphs: &[(Outline, rustybuzz::GlyphPosition)],
+    offset: DVec2,
+    pos_to26: f64,
+) -> Vec<Vec<[f64; 2]>> {
+    let pos26 = |v: i32| whole_26_6(v, pos_to26);
     let mut advance = DVec2::ZERO;
     let mut paths: Vec<Vec<[f64; 2]>> = Vec::new();
-    for (o, pos) in &glyphs {
+    for (o, pos) in glyphs {
         let offset = DVec2::new(
-            x_offset + pos26(pos.x_offset) / UNSCALE,
-            y_offset + pos26(pos.y_offset) / UNSCALE,
+            offset.x + pos26(pos.x_offset) / UNSCALE,
+            offset.y + pos26(pos.y_offset) / UNSCALE,
         );
         for c in &o.contours {
             paths.push(
@@ -647,7 +733,7 @@ fn render_face(
             pos26(pos.y_advance) / UNSCALE * spec.spacing,
         );
     }
-    Ok(nonzero_union(paths))
+    paths
 }
 
 /// The contours united with the nonzero rule, as simple paths (outer outlines and holes).

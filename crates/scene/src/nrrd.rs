@@ -1539,6 +1539,10 @@ mod tests {
             "4:8",
             "3 sizes",
         );
+    }
+
+    #[test]
+    fn encoding_data_and_space_errors_point_at_the_field() {
         let h = "NRRD0004\ntype: float\ndimension: 3\nsizes: 1 1 1\nencoding: raw\n\n";
         fails(h, &[0; 4], "2:7", "needs an `endian:` field");
         fails(&format!("{U8}encoding: raw\n"), &[], "6:1", "given twice");

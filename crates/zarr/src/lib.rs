@@ -86,6 +86,7 @@
 //! ```
 
 mod error;
+mod layout;
 pub mod pyramid;
 mod shard;
 
@@ -109,6 +110,7 @@ use zarrs::filesystem::FilesystemStore;
 use zarrs::group::{Group, GroupBuilder};
 
 pub use error::{Error, Result, StoreProblem};
+pub use layout::*;
 pub use pyramid::{downsample, label_of};
 
 /// The side of a cubic chunk when none is asked for: a chunk row of a 2048² grid is then
@@ -155,268 +157,6 @@ impl VolumeAttrs {
             values: values.into(),
         }
     }
-}
-
-/// How a store is cut: chunks, shards and pyramid levels.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Layout {
-    /// The chunk (a shard's inner chunk) of level 0, Z, Y, X, before [`chunk_shape`] cuts
-    /// it to the grid.
-    pub chunk: [usize; 3],
-    /// Inner chunks per shard side across Y and X (a shard is one chunk deep); 1 writes no
-    /// shards, one file per chunk.
-    pub shard: usize,
-    /// Multiscale levels, level 0 the grid itself; None: [`default_levels`], within what the
-    /// chunk depth allows ([`max_levels`]).
-    pub levels: Option<usize>,
-}
-
-impl Layout {
-    /// Chunks `chunk`, shards of [`DEFAULT_SHARD`] chunks a side, the default levels.
-    pub fn new(chunk: [usize; 3]) -> Layout {
-        Layout {
-            chunk,
-            shard: DEFAULT_SHARD,
-            levels: None,
-        }
-    }
-}
-
-impl Default for Layout {
-    fn default() -> Layout {
-        Layout::new([DEFAULT_CHUNK; 3])
-    }
-}
-
-/// A run's chunks by what they hold ([`ZarrVolume::chunks_held`]).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
-pub struct ChunksHeld {
-    /// All 0: skipped.
-    pub empty: u64,
-    /// One non-zero value throughout.
-    pub uniform: u64,
-    /// Anything else.
-    pub mixed: u64,
-}
-
-/// One level of the pyramid as written: the array at `OUT.zarr/L`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Level {
-    /// Voxels along X, Y and Z: level 0's halved `l` times, rounding up.
-    pub dims: [usize; 3],
-    /// The chunk (inner chunk when sharded), Z, Y, X: level 0's depth halved `l` times, so
-    /// that every chunk row of level 0 makes exactly one of this level.
-    pub chunk: [usize; 3],
-    /// The shard, Z, Y, X (a whole number of chunks), or None when unsharded.
-    pub shard: Option<[usize; 3]>,
-}
-
-impl Level {
-    /// The array's chunk grid unit: the shard, or the chunk when unsharded.
-    pub fn grid_unit(&self) -> [usize; 3] {
-        self.shard.unwrap_or(self.chunk)
-    }
-
-    /// Files a chunk row of this level can have: shards (or chunks) across Y times across X.
-    pub fn files_per_row(&self) -> usize {
-        let [nx, ny, _] = self.dims;
-        let [_, uy, ux] = self.grid_unit();
-        ny.div_ceil(uy) * nx.div_ceil(ux)
-    }
-}
-
-/// The chunk shape a store of `dims` (X, Y, Z) gets for `chunk` (Z, Y, X): each side at most
-/// the grid's, so that a small grid is not padded out to a large chunk.
-pub fn chunk_shape(dims: [usize; 3], chunk: [usize; 3]) -> Result<[usize; 3]> {
-    if chunk.contains(&0) {
-        return Err(Error::BadChunk { chunk });
-    }
-    let [nx, ny, nz] = dims;
-    Ok([chunk[0].min(nz), chunk[1].min(ny), chunk[2].min(nx)])
-}
-
-/// Levels the default pyramid has on `dims`: level 0, then one more per halving until the
-/// largest side is at most [`PYRAMID_SIDE`] (384³: 2 levels, 4096³: 5, 16384³: 7).
-pub fn default_levels(dims: [usize; 3]) -> usize {
-    let mut side = dims.into_iter().max().unwrap_or(1);
-    let mut levels = 1;
-    while side > PYRAMID_SIDE {
-        side = side.div_ceil(2);
-        levels += 1;
-    }
-    levels
-}
-
-/// The most levels a store of `dims` with chunks `chunk` (cut, Z first) can have: each
-/// chunk row of level 0 makes one chunk row of every level, so when the grid has more than
-/// one row the chunk depth must halve exactly, 2^(levels-1) dividing it (64: at most 7
-/// levels); and no level past the first that is 1×1×1.
-pub fn max_levels(dims: [usize; 3], chunk: [usize; 3]) -> usize {
-    let mut side = dims.into_iter().max().unwrap_or(1);
-    let mut levels = 1;
-    while side > 1 {
-        side = side.div_ceil(2);
-        levels += 1;
-    }
-    let cz = chunk[0];
-    if dims[2] > cz {
-        levels = levels.min(1 + cz.trailing_zeros() as usize);
-    }
-    levels
-}
-
-/// The levels of a store of `dims` cut by `layout`.
-pub fn plan(dims: [usize; 3], layout: &Layout) -> Result<Vec<Level>> {
-    let chunk = chunk_shape(dims, layout.chunk)?;
-    if layout.shard == 0 {
-        return Err(Error::BadShard);
-    }
-    let max = max_levels(dims, chunk);
-    let levels = match layout.levels {
-        None => default_levels(dims).min(max),
-        Some(l) if (1..=max).contains(&l) => l,
-        Some(l) => {
-            return Err(Error::BadLevels {
-                levels: l,
-                max,
-                depth: chunk[0],
-            })
-        }
-    };
-    let [cz, cy, cx] = chunk;
-    Ok((0..levels)
-        .map(|l| {
-            let dims = dims.map(|d| d.div_ceil(1 << l));
-            let [nx, ny, _] = dims;
-            let chunk = [cz.div_ceil(1 << l), cy.min(ny), cx.min(nx)];
-            // Level l's shard is `shard >> l` chunks a side (at least 1), so that while the
-            // chunk's sides stay, every level's shard covers the scene a level-0 shard does:
-            // a brick of level-0 shards makes whole files at every level ([`tile`]).
-            let per = (layout.shard >> l).max(1);
-            let shard = (layout.shard > 1).then(|| {
-                let across = |n: usize, c: usize| per.min(n.div_ceil(c)) * c;
-                [chunk[0], across(ny, chunk[1]), across(nx, chunk[2])]
-            });
-            Level { dims, chunk, shard }
-        })
-        .collect())
-}
-
-/// The XY tile (level-0 voxels along X, then Y) of a brick: the least side that every
-/// level's file (its shard, or chunk when unsharded), scaled back to level 0, divides, so a
-/// brick of rows × tile makes whole files at every level and its downsampled levels start on
-/// even voxels; the grid's side when that is larger. Tiles start at multiples of it.
-pub fn tile(dims: [usize; 3], levels: &[Level]) -> [usize; 2] {
-    let side = |axis: usize, n: usize| {
-        let t = levels.iter().enumerate().fold(1usize, |t, (l, v)| {
-            lcm(t, v.grid_unit()[axis].saturating_mul(1 << l))
-        });
-        t.min(n).max(1)
-    };
-    [side(2, dims[0]), side(1, dims[1])]
-}
-
-/// The tiles of a grid of `dims` cut every `tile` columns (X, Y), row-major: the columns of
-/// each brick.
-pub fn tile_boxes(dims: [usize; 3], [tx, ty]: [usize; 2]) -> Vec<PixelBox> {
-    let [nx, ny, _] = dims;
-    let (tx, ty) = (tx.max(1), ty.max(1));
-    (0..ny.div_ceil(ty))
-        .flat_map(|j| {
-            (0..nx.div_ceil(tx)).map(move |i| {
-                PixelBox::new(
-                    i * tx,
-                    j * ty,
-                    ((i + 1) * tx).min(nx),
-                    ((j + 1) * ty).min(ny),
-                )
-            })
-        })
-        .collect()
-}
-
-fn lcm(a: usize, b: usize) -> usize {
-    let gcd = |mut a: usize, mut b: usize| {
-        while b != 0 {
-            (a, b) = (b, a % b);
-        }
-        a
-    };
-    (a / gcd(a, b)).saturating_mul(b)
-}
-
-/// Bytes of chunk row slices a run holds per level: level 0's row (buffered by
-/// [`voxelize_rows`]) and each coarser level's, made from it; of `xy` columns (X, Y) of
-/// level 0 when a brick's.
-fn rows_bytes(levels: &[Level], xy: Option<[usize; 2]>) -> u64 {
-    levels
-        .iter()
-        .enumerate()
-        .map(|(l, v)| {
-            let [mut nx, mut ny, nz] = v.dims;
-            if let Some([tx, ty]) = xy {
-                (nx, ny) = (nx.min(tx.div_ceil(1 << l)), ny.min(ty.div_ceil(1 << l)));
-            }
-            (v.chunk[0].min(nz) as u64)
-                .saturating_mul(ny as u64)
-                .saturating_mul(nx as u64)
-        })
-        .fold(0u64, u64::saturating_add)
-}
-
-/// Bytes a run over a store of `layout` on `threads` threads holds besides the voxelizer's
-/// own: one chunk row of slices per level, and while a row is written, the larger of
-/// - sharded: per thread a chunk copied out of the row and its deflate state, and a batch
-///   (`BATCH_PER_THREAD` per thread) of compressed chunks, each
-///   at most zlib's bound; with a shard's index;
-/// - unsharded: per writer ([`WRITERS`]) a chunk copied out of the row and its gzip stream
-///   (at most the chunk and zlib's bound) and deflate state.
-///
-/// Level 0's chunk is the largest, and levels are written one after another.
-pub fn writer_bytes(dims: [usize; 3], layout: &Layout, threads: usize) -> Result<u64> {
-    writer_bytes_over(dims, layout, threads, false)
-}
-
-/// [`writer_bytes`] of a run by bricks ([`voxelize_bricks`]): a brick's rows, not a row's.
-pub fn writer_bytes_bricks(dims: [usize; 3], layout: &Layout, threads: usize) -> Result<u64> {
-    writer_bytes_over(dims, layout, threads, true)
-}
-
-fn writer_bytes_over(
-    dims: [usize; 3],
-    layout: &Layout,
-    threads: usize,
-    bricks: bool,
-) -> Result<u64> {
-    let levels = plan(dims, layout)?;
-    let rows = rows_bytes(&levels, bricks.then(|| tile(dims, &levels)));
-    let [cz, cy, cx] = levels[0].chunk.map(|c| c as u64);
-    let chunk = cz.saturating_mul(cy).saturating_mul(cx);
-    let bound = shard::gzip_bound(chunk);
-    let threads = threads.max(1) as u64;
-    let writing = match levels[0].shard {
-        Some([_, sy, sx]) => {
-            let index = ((sy / levels[0].chunk[1]) * (sx / levels[0].chunk[2])) as u64 * 16;
-            let batch = shard::BATCH_PER_THREAD as u64 * threads;
-            threads
-                .saturating_mul(chunk.saturating_add(DEFLATE_STATE))
-                .saturating_add(batch.saturating_mul(bound))
-                .saturating_add(index.saturating_mul(2))
-        }
-        None => (WRITERS as u64)
-            .saturating_mul(chunk.saturating_add(bound).saturating_add(DEFLATE_STATE)),
-    };
-    Ok(rows.saturating_add(writing))
-}
-
-/// An upper bound of the memory of a run into a store of `layout` (docs/memory.md): the
-/// voxelizer's without a volume ([`csgpix_voxel::memory_estimate_rows`]) and
-/// [`writer_bytes`].
-pub fn memory_estimate(grid: &Grid, layout: &Layout, prims: usize, threads: usize) -> Result<u64> {
-    let held = writer_bytes(grid.dims, layout, threads)?;
-    Ok(csgpix_voxel::memory_estimate_rows(
-        grid, prims, threads, held,
-    ))
 }
 
 /// A level's array and what this process wrote into it.
@@ -540,6 +280,83 @@ fn metadata_options() -> ArrayMetadataOptions {
     ArrayMetadataOptions::default().with_include_zarrs_metadata(false)
 }
 
+/// The layout the `csgpix` attribute `ours` records (chunk, shard and levels), or for a store
+/// written before shards and levels, one level whose chunks are those of its array.
+fn stored_layout(
+    ours: &Value,
+    store: &Arc<FilesystemStore>,
+    bad: &dyn Fn(String) -> Error,
+) -> Result<Layout> {
+    let field = |key: &str| -> Result<Option<Value>> { Ok(ours.get(key).cloned()) };
+    Ok(match (field("chunk")?, field("shard")?, field("levels")?) {
+        (Some(c), Some(s), Some(l)) => {
+            let parse = |v: Value, what: &str| bad(format!("attribute `csgpix`: `{what}`: {v}"));
+            Layout {
+                chunk: serde_json::from_value(c.clone()).map_err(|_| parse(c, "chunk"))?,
+                shard: serde_json::from_value(s.clone()).map_err(|_| parse(s, "shard"))?,
+                levels: Some(serde_json::from_value(l.clone()).map_err(|_| parse(l, "levels"))?),
+            }
+        }
+        _ => {
+            // Before shards and levels: one level, its chunks those of the array.
+            let array =
+                Array::open(store.clone(), &format!("/{}", 0)).map_err(|e| bad(e.to_string()))?;
+            let chunk = array
+                .chunk_shape_usize(&[0, 0, 0])
+                .map_err(|e| bad(e.to_string()))?;
+            Layout {
+                chunk: chunk
+                    .try_into()
+                    .map_err(|_| bad("the array is not 3D".into()))?,
+                shard: 1,
+                levels: Some(1),
+            }
+        }
+    })
+}
+
+/// Level `l`'s array in the store, checked against its `level` of the plan: its shape,
+/// uint8 samples, and the chunks (or shards) and inner chunks the layout makes.
+fn open_level(
+    store: &Arc<FilesystemStore>,
+    l: usize,
+    level: Level,
+    bad: &dyn Fn(String) -> Error,
+) -> Result<LevelArray> {
+    let bad = |what: String| bad(format!("level {l}: {what}"));
+    let array = Array::open(store.clone(), &format!("/{l}")).map_err(|e| bad(e.to_string()))?;
+    let [nx, ny, nz] = level.dims.map(|d| d as u64);
+    if array.shape() != [nz, ny, nx] {
+        return Err(bad(format!(
+            "array shape {:?} is not (nz, ny, nx) of dims {:?}",
+            array.shape(),
+            level.dims
+        )));
+    }
+    if array.data_type() != &zarrs::array::data_type::uint8() {
+        return Err(bad("the array is not uint8".into()));
+    }
+    // Chunks (or shards) and inner chunks as the attribute's layout makes them.
+    let want = array_builder(&level)
+        .build_metadata()
+        .map_err(|e| bad(e.to_string()))?;
+    let have = serde_json::to_value(array.metadata()).map_err(|e| bad(e.to_string()))?;
+    let want = serde_json::to_value(want).map_err(|e| bad(e.to_string()))?;
+    for key in ["chunk_grid", "codecs"] {
+        if have[key] != want[key] {
+            return Err(bad(format!(
+                "`{key}` is {}, not {} as the `csgpix` attribute's layout makes it",
+                have[key], want[key]
+            )));
+        }
+    }
+    Ok(LevelArray {
+        level,
+        array,
+        written: AtomicU64::new(0),
+    })
+}
+
 /// The array of `level`: uint8, fill 0, dimension names z, y, x; gzip at [`GZIP_LEVEL`],
 /// inside the `sharding_indexed` codec when sharded (index at the end, `bytes`
 /// little-endian, no checksum).
@@ -658,71 +475,11 @@ impl ZarrVolume {
             .get("csgpix")
             .ok_or_else(|| bad("no `csgpix` attribute".into()))?;
         let grid = grid_of(ours).map_err(|e| bad(format!("attribute `csgpix`: {e}")))?;
-        let field = |key: &str| -> Result<Option<Value>> { Ok(ours.get(key).cloned()) };
-        let layout = match (field("chunk")?, field("shard")?, field("levels")?) {
-            (Some(c), Some(s), Some(l)) => {
-                let parse =
-                    |v: Value, what: &str| bad(format!("attribute `csgpix`: `{what}`: {v}"));
-                Layout {
-                    chunk: serde_json::from_value(c.clone()).map_err(|_| parse(c, "chunk"))?,
-                    shard: serde_json::from_value(s.clone()).map_err(|_| parse(s, "shard"))?,
-                    levels: Some(
-                        serde_json::from_value(l.clone()).map_err(|_| parse(l, "levels"))?,
-                    ),
-                }
-            }
-            _ => {
-                // Before shards and levels: one level, its chunks those of the array.
-                let array = Array::open(store.clone(), &format!("/{}", 0))
-                    .map_err(|e| bad(e.to_string()))?;
-                let chunk = array
-                    .chunk_shape_usize(&[0, 0, 0])
-                    .map_err(|e| bad(e.to_string()))?;
-                Layout {
-                    chunk: chunk
-                        .try_into()
-                        .map_err(|_| bad("the array is not 3D".into()))?,
-                    shard: 1,
-                    levels: Some(1),
-                }
-            }
-        };
+        let layout = stored_layout(ours, &store, &bad)?;
         let levels = plan(grid.dims, &layout).map_err(|e| bad(e.to_string()))?;
         let mut arrays = vec![];
         for (l, level) in levels.into_iter().enumerate() {
-            let bad = |what: String| bad(format!("level {l}: {what}"));
-            let array =
-                Array::open(store.clone(), &format!("/{l}")).map_err(|e| bad(e.to_string()))?;
-            let [nx, ny, nz] = level.dims.map(|d| d as u64);
-            if array.shape() != [nz, ny, nx] {
-                return Err(bad(format!(
-                    "array shape {:?} is not (nz, ny, nx) of dims {:?}",
-                    array.shape(),
-                    level.dims
-                )));
-            }
-            if array.data_type() != &zarrs::array::data_type::uint8() {
-                return Err(bad("the array is not uint8".into()));
-            }
-            // Chunks (or shards) and inner chunks as the attribute's layout makes them.
-            let want = array_builder(&level)
-                .build_metadata()
-                .map_err(|e| bad(e.to_string()))?;
-            let have = serde_json::to_value(array.metadata()).map_err(|e| bad(e.to_string()))?;
-            let want = serde_json::to_value(want).map_err(|e| bad(e.to_string()))?;
-            for key in ["chunk_grid", "codecs"] {
-                if have[key] != want[key] {
-                    return Err(bad(format!(
-                        "`{key}` is {}, not {} as the `csgpix` attribute's layout makes it",
-                        have[key], want[key]
-                    )));
-                }
-            }
-            arrays.push(LevelArray {
-                level,
-                array,
-                written: AtomicU64::new(0),
-            });
+            arrays.push(open_level(&store, l, level, &bad)?);
         }
         Ok(ZarrVolume {
             path: path.into(),
@@ -1199,454 +956,4 @@ pub fn values_text(grey: bool, blend: bool) -> &'static str {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn grid(dims: [usize; 3]) -> Grid {
-        // Odd corners and sizes: their decimals must come back exactly.
-        Grid::new(
-            dims,
-            DVec3::new(-1.1, 0.3, 2.0 / 3.0),
-            DVec3::new(7.7, 9.1, 5.0),
-        )
-        .unwrap()
-    }
-
-    fn attrs() -> VolumeAttrs {
-        VolumeAttrs::new("test", "codes")
-    }
-
-    fn unsharded(chunk: [usize; 3]) -> Layout {
-        Layout {
-            chunk,
-            shard: 1,
-            levels: Some(1),
-        }
-    }
-
-    fn sharded(chunk: [usize; 3], shard: usize, levels: usize) -> Layout {
-        Layout {
-            chunk,
-            shard,
-            levels: Some(levels),
-        }
-    }
-
-    proptest::proptest! {
-        /// Every file (shard, or chunk when unsharded) of every level lies in one tile,
-        /// scaled back to level 0, and tiles start on voxels even at every level.
-        #[test]
-        fn a_tile_holds_whole_files_of_every_level(
-            dims in proptest::array::uniform3(1usize..600),
-            chunk in proptest::array::uniform3(1usize..70),
-            shard in 1usize..9,
-            levels in 1usize..8,
-        ) {
-            let layout = Layout { chunk, shard, levels: None };
-            let mut levels_of = plan(dims, &layout).unwrap();
-            levels_of.truncate(levels);
-            let [tx, ty] = tile(dims, &levels_of);
-            for (l, v) in levels_of.iter().enumerate() {
-                let [_, uy, ux] = v.grid_unit();
-                for (t, u, n) in [(tx, ux, dims[0]), (ty, uy, dims[1])] {
-                    // A tile is the whole side, or a whole number of the level's files.
-                    proptest::prop_assert!(t == n || (t % (u << l) == 0), "{t} {u} {l} {n}");
-                    proptest::prop_assert!(t == n || t % (1 << (levels_of.len() - 1)) == 0);
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn shards_cover_the_same_scene_at_every_level() {
-        let levels = plan([4096, 4096, 4096], &Layout::default()).unwrap();
-        assert_eq!(levels.len(), 5);
-        for (l, v) in levels.iter().enumerate() {
-            let [_, sy, sx] = v.shard.unwrap();
-            assert_eq!([sy << l, sx << l], [4096, 4096], "level {l}");
-        }
-        assert_eq!(tile([4096, 4096, 4096], &levels), [4096, 4096]);
-        assert_eq!(
-            tile(
-                [16384, 16384, 16384],
-                &plan([16384; 3], &Layout::default()).unwrap()
-            ),
-            [4096, 4096]
-        );
-        let small = Layout {
-            shard: 8,
-            ..Layout::default()
-        };
-        assert_eq!(
-            tile([16384; 3], &plan([16384; 3], &small).unwrap()),
-            [4096, 4096]
-        );
-        let small = Layout {
-            shard: 8,
-            levels: Some(4),
-            ..Layout::default()
-        };
-        assert_eq!(
-            tile([16384; 3], &plan([16384; 3], &small).unwrap()),
-            [512, 512]
-        );
-    }
-
-    #[test]
-    fn chunks_are_cut_to_the_grid_and_rows_cover_every_slab_once() {
-        assert_eq!(chunk_shape([10, 20, 30], [64, 8, 64]).unwrap(), [30, 8, 10]);
-        assert_eq!(
-            chunk_shape([10, 20, 30], [4, 0, 4]).unwrap_err(),
-            Error::BadChunk { chunk: [4, 0, 4] }
-        );
-        let dir = tempfile::tempdir().unwrap();
-        let v = ZarrVolume::create(
-            &dir.path().join("a"),
-            &grid([5, 6, 11]),
-            &unsharded([4, 4, 4]),
-            &attrs(),
-        )
-        .unwrap();
-        assert_eq!(v.chunk(), [4, 4, 4]);
-        assert_eq!(v.chunk_rows(), [0..4, 4..8, 8..11]);
-        assert_eq!(v.row_bytes(), 4 * 6 * 5);
-    }
-
-    /// The levels and shards of the rule (docs/zarr.md): depth halved per level, sides cut
-    /// to each level, shards a whole number of chunks, halved per level, cut to the level.
-    #[test]
-    fn the_plan_halves_levels_and_cuts_shards() {
-        let p = plan([1000, 300, 130], &sharded([64, 64, 64], 4, 3)).unwrap();
-        assert_eq!(
-            p,
-            [
-                Level {
-                    dims: [1000, 300, 130],
-                    chunk: [64, 64, 64],
-                    shard: Some([64, 256, 256])
-                },
-                Level {
-                    dims: [500, 150, 65],
-                    chunk: [32, 64, 64],
-                    shard: Some([32, 128, 128])
-                },
-                Level {
-                    dims: [250, 75, 33],
-                    chunk: [16, 64, 64],
-                    shard: Some([16, 64, 64])
-                },
-            ]
-        );
-        // Level l's shard is 4 >> l chunks a side: each covers a level-0 shard's scene.
-        assert_eq!(p[0].files_per_row(), 2 * 4);
-        assert_eq!(p[1].files_per_row(), 2 * 4);
-        assert_eq!(p[2].files_per_row(), 2 * 4);
-        // Defaults: levels until the largest side is at most 256, within the depth's halvings.
-        assert_eq!(default_levels([384; 3]), 2);
-        assert_eq!(default_levels([256, 10, 10]), 1);
-        assert_eq!(default_levels([4096; 3]), 5);
-        assert_eq!(default_levels([16384; 3]), 7);
-        assert_eq!(default_levels([32768; 3]), 8);
-        assert_eq!(max_levels([32768; 3], [64; 3]), 7);
-        assert_eq!(max_levels([100, 100, 100], [12, 64, 64]), 3);
-        // One row: any depth halves; no level past 1×1×1.
-        assert_eq!(max_levels([5, 3, 7], [7, 3, 5]), 4);
-        let one = plan([5, 3, 7], &sharded([64; 3], 2, 4)).unwrap();
-        assert_eq!(one[3].dims, [1, 1, 1]);
-        assert_eq!(one[3].chunk, [1, 1, 1]);
-        assert_eq!(one[1].chunk, [4, 2, 3]);
-        let l = plan([100, 100, 100], &Layout::new([12, 64, 64])).unwrap();
-        assert_eq!(l.len(), 1, "100 ≤ 256: no pyramid by default");
-        assert_eq!(
-            plan([100, 100, 100], &sharded([12, 64, 64], 64, 4)).unwrap_err(),
-            Error::BadLevels {
-                levels: 4,
-                max: 3,
-                depth: 12
-            }
-        );
-        assert_eq!(
-            plan([9; 3], &sharded([3; 3], 0, 1)).unwrap_err(),
-            Error::BadShard
-        );
-        assert!(plan([9; 3], &sharded([3; 3], 2, 0)).is_err());
-        // Unsharded: no shard at any level.
-        let u = plan(
-            [300, 20, 20],
-            &Layout {
-                shard: 1,
-                ..Layout::new([4; 3])
-            },
-        )
-        .unwrap();
-        assert_eq!(u.len(), 2);
-        assert!(u.iter().all(|v| v.shard.is_none()));
-    }
-
-    /// Voxel (i, j, k) is element [k, j, i]; rows written in any order, edge chunks cut;
-    /// sharded and not.
-    #[test]
-    fn a_row_lands_at_k_j_i() {
-        let [nx, ny, nz] = [5, 6, 7];
-        let value = |i: usize, j: usize, k: usize| (1 + i + 10 * j + 100 * k) as u8;
-        for (layout, file) in [
-            (unsharded([3, 4, 2]), "0/c/2/1/2"),     // 3 rows of 2 × 3 chunks
-            (sharded([3, 4, 2], 2, 1), "0/c/2/0/1"), // shards of 2 × 2 chunks: 1 × 2
-        ] {
-            let dir = tempfile::tempdir().unwrap();
-            let v = ZarrVolume::create(
-                &dir.path().join("a"),
-                &grid([nx, ny, nz]),
-                &layout,
-                &attrs(),
-            )
-            .unwrap();
-            for (row, slabs) in v.chunk_rows().into_iter().enumerate().rev() {
-                let mut slices = vec![];
-                for k in slabs {
-                    for j in 0..ny {
-                        slices.extend((0..nx).map(|i| value(i, j, k)));
-                    }
-                }
-                v.write_row(row, &slices).unwrap();
-            }
-            let all = v.read_level(0).unwrap();
-            for k in 0..nz {
-                for j in 0..ny {
-                    for i in 0..nx {
-                        assert_eq!(
-                            all[(k * ny + j) * nx + i],
-                            value(i, j, k),
-                            "{layout:?} ({i}, {j}, {k})"
-                        );
-                    }
-                }
-            }
-            assert!(dir.path().join("a").join(file).is_file(), "{layout:?}");
-            let files = v.files_written();
-            assert_eq!(
-                files,
-                [v.levels()[0].files_per_row() as u64 * 3],
-                "{layout:?}"
-            );
-        }
-    }
-
-    /// A chunk that becomes all 0 loses its file (sharded: its index entry, then its shard's
-    /// file); the rest read as 0 without one.
-    #[test]
-    fn all_zero_chunks_have_no_file() {
-        for layout in [unsharded([2, 4, 2]), sharded([2, 4, 2], 2, 1)] {
-            let dir = tempfile::tempdir().unwrap();
-            let path = dir.path().join("a");
-            let v = ZarrVolume::create(&path, &grid([4, 4, 4]), &layout, &attrs()).unwrap();
-            let mut row = vec![0u8; 2 * 4 * 4];
-            row[3] = 9; // voxel (3, 0, 0): chunk (0, 0, 1)
-            v.write_row(0, &row).unwrap();
-            let (kept, gone) = match layout.shard {
-                1 => ("0/c/0/0/1", "0/c/0/0/0"),
-                _ => ("0/c/0/0/0", "0/c/1/0/0"),
-            };
-            assert!(path.join(kept).is_file(), "{layout:?}");
-            assert!(!path.join(gone).exists(), "{layout:?}");
-            if layout.shard > 1 {
-                // One inner chunk of two, and a 2-entry index: (offset 0, its length) and
-                // (MAX, MAX) for the empty one.
-                let bytes = std::fs::read(path.join(kept)).unwrap();
-                let index: Vec<u64> = bytes[bytes.len() - 32..]
-                    .chunks(8)
-                    .map(|b| u64::from_le_bytes(b.try_into().unwrap()))
-                    .collect();
-                assert_eq!(index[..2], [u64::MAX, u64::MAX]);
-                assert_eq!(index[2..], [0, bytes.len() as u64 - 32]);
-            }
-            assert_eq!(v.read_level(0).unwrap()[3], 9);
-            v.write_row(0, &[0; 32]).unwrap();
-            assert!(!path.join(kept).exists(), "{layout:?}");
-            assert!(v.read_level(0).unwrap().iter().all(|&x| x == 0));
-        }
-    }
-
-    /// Unsharded chunks, written here rather than by zarrs's store (which syncs each file),
-    /// are the bytes zarrs's own chunk writer gives for the same chunks.
-    #[test]
-    fn unsharded_chunks_are_the_bytes_zarrs_writes() {
-        let dir = tempfile::tempdir().unwrap();
-        let layout = unsharded([2, 3, 2]);
-        let (ours, theirs) = (dir.path().join("ours"), dir.path().join("theirs"));
-        let v = ZarrVolume::create(&ours, &grid([5, 4, 2]), &layout, &attrs()).unwrap();
-        let z = ZarrVolume::create(&theirs, &grid([5, 4, 2]), &layout, &attrs()).unwrap();
-        // A mixed chunk, a chunk of one value, chunks cut by the grid's edges, empty ones.
-        let row: Vec<u8> = (0..40u8)
-            .map(|i| [0, 7, i % 3, 7][(i / 10) as usize])
-            .collect();
-        v.write_row(0, &row).unwrap();
-        let cut = shard::RowCut {
-            slices: &row,
-            nx: 5,
-            ny: 4,
-            slabs: 2,
-            chunk: [2, 3, 2],
-            at: [0, 0],
-            known: None,
-        };
-        let (down, across) = cut.grid();
-        let mut files = 0;
-        for (j, i) in (0..down).flat_map(|j| (0..across).map(move |i| (j, i))) {
-            let key = format!("0/c/0/{j}/{i}");
-            if cut.held(j, i) == shard::Held::Empty {
-                assert!(!ours.join(&key).exists(), "{key}");
-                continue;
-            }
-            let chunk = cut.copy(j, i);
-            let options = zarrs::array::CodecOptions::default();
-            let at = [0, j as u64, i as u64];
-            z.levels[0]
-                .array
-                .store_chunk_opt(&at, chunk, &options)
-                .unwrap();
-            let (a, b) = (ours.join(&key), theirs.join(&key));
-            assert_eq!(
-                std::fs::read(a).unwrap(),
-                std::fs::read(b).unwrap(),
-                "{key}"
-            );
-            files += 1;
-        }
-        assert!(files >= 3, "{files}");
-    }
-
-    /// Each level read back is the downsample of the one below, and is placed at the centre
-    /// of the voxels it covers.
-    #[test]
-    fn levels_are_downsamples_of_the_level_below() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("a");
-        let [nx, ny, nz] = [13, 9, 11];
-        let g = grid([nx, ny, nz]);
-        let v = ZarrVolume::create(&path, &g, &sharded([4, 4, 4], 2, 3), &attrs()).unwrap();
-        assert_eq!(v.chunk_rows().len(), 3);
-        let value = |i: usize, j: usize, k: usize| ((i * 7 + j * 3 + k) % 5) as u8;
-        for (row, slabs) in v.chunk_rows().into_iter().enumerate() {
-            let mut slices = vec![];
-            for k in slabs {
-                for j in 0..ny {
-                    slices.extend((0..nx).map(|i| value(i, j, k)));
-                }
-            }
-            v.write_row(row, &slices).unwrap();
-        }
-        let mut want = v.read_level(0).unwrap();
-        let mut dims = [nx, ny, nz];
-        for l in 1..3 {
-            want = downsample(&want, dims);
-            dims = dims.map(|d| d.div_ceil(2));
-            assert_eq!(v.levels()[l].dims, dims);
-            assert_eq!(v.read_level(l).unwrap(), want, "level {l}");
-        }
-        let group: Value =
-            serde_json::from_slice(&std::fs::read(path.join("zarr.json")).unwrap()).unwrap();
-        let ds = &group["attributes"]["ome"]["multiscales"][0]["datasets"];
-        let t = &ds[2]["coordinateTransformations"];
-        let (o, s) = (g.centre(0, 0, 0), g.voxel());
-        assert_eq!(ds[2]["path"], "2");
-        assert_eq!(t[0]["scale"], json!(zyx(s * 4.0)));
-        // Level 2's voxel 0 covers level 0's 0..4: its centre is 1.5 voxels past theirs.
-        assert_eq!(t[1]["translation"], json!(zyx(o + s * 1.5)));
-        let reopened = ZarrVolume::open(&path).unwrap();
-        assert_eq!(reopened.levels(), v.levels());
-        assert_eq!(reopened.layout(), sharded([4, 4, 4], 2, 3));
-    }
-
-    #[test]
-    fn open_gives_back_the_grid_exactly_and_refuses_other_stores() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("a");
-        let g = grid([9, 8, 7]);
-        ZarrVolume::create(&path, &g, &Layout::new([5, 5, 5]), &attrs()).unwrap();
-        let v = ZarrVolume::open(&path).unwrap();
-        assert_eq!((*v.grid(), v.chunk(), v.dims()), (g, [5, 5, 5], [9, 8, 7]));
-        assert_eq!(v.shard(), DEFAULT_SHARD);
-
-        // A Zarr group that is not ours.
-        let foreign = dir.path().join("b");
-        std::fs::create_dir(&foreign).unwrap();
-        std::fs::write(
-            foreign.join("zarr.json"),
-            r#"{"zarr_format": 3, "node_type": "group", "attributes": {}}"#,
-        )
-        .unwrap();
-        let e = ZarrVolume::open(&foreign).unwrap_err().to_string();
-        assert!(
-            e.ends_with("not a csgpix Zarr volume: no `csgpix` attribute"),
-            "{e}"
-        );
-        // Ours with its array gone.
-        std::fs::remove_file(path.join("0/zarr.json")).unwrap();
-        let e = ZarrVolume::open(&path).unwrap_err().to_string();
-        assert!(e.contains("not a csgpix Zarr volume"), "{e}");
-        // create: only where nothing is.
-        let e = ZarrVolume::create(&path, &g, &Layout::new([5, 5, 5]), &attrs()).unwrap_err();
-        assert_eq!(e, Error::NotEmpty { path: path.clone() });
-        let file = dir.path().join("f");
-        std::fs::write(&file, b"x").unwrap();
-        let e = ZarrVolume::create(&file, &g, &Layout::new([5, 5, 5]), &attrs()).unwrap_err();
-        assert_eq!(e, Error::NotEmpty { path: file });
-
-        // An array whose shards are not what the attribute says.
-        let c = dir.path().join("c");
-        ZarrVolume::create(&c, &g, &sharded([2, 2, 2], 2, 1), &attrs()).unwrap();
-        let meta = c.join("0/zarr.json");
-        let mut m: Value = serde_json::from_slice(&std::fs::read(&meta).unwrap()).unwrap();
-        assert_eq!(
-            m["chunk_grid"]["configuration"]["chunk_shape"],
-            json!([2, 4, 4])
-        );
-        m["chunk_grid"]["configuration"]["chunk_shape"] = json!([2, 2, 4]);
-        std::fs::write(&meta, m.to_string()).unwrap();
-        let e = ZarrVolume::open(&c).unwrap_err().to_string();
-        assert!(e.contains("level 0: `chunk_grid` is"), "{e}");
-    }
-
-    #[test]
-    fn bad_rows_are_refused_in_one_line() {
-        let dir = tempfile::tempdir().unwrap();
-        let v = ZarrVolume::create(
-            &dir.path().join("a"),
-            &grid([2, 3, 5]),
-            &Layout::new([4, 3, 2]),
-            &attrs(),
-        )
-        .unwrap();
-        assert_eq!(
-            v.write_row(2, &[]).unwrap_err().to_string(),
-            "chunk row 2: the volume has rows 0..2"
-        );
-        assert_eq!(
-            v.write_row(1, &[1; 7]).unwrap_err().to_string(),
-            "chunk row 1: expected 6 bytes (slabs 1 of 2x3), got 7"
-        );
-    }
-
-    /// The writer's estimate grows with the rows and the chunk, not with the shard.
-    #[test]
-    fn the_writers_estimate() {
-        let d = [2048, 2048, 2048];
-        let s = |shard| {
-            writer_bytes(
-                d,
-                &Layout {
-                    shard,
-                    ..Layout::default()
-                },
-                2,
-            )
-            .unwrap()
-        };
-        // A shard costs its index alone, 16 bytes a chunk (64 is cut to the grid's 32).
-        assert_eq!(s(64) - s(16), 2 * 16 * (32 * 32 - 16 * 16));
-        let row0 = 64 * 2048 * 2048u64;
-        assert!(s(64) > row0 + row0 / 8 && s(64) < row0 + row0 / 7 + (8 << 20));
-        assert!(s(1) > row0 + 8 * (64 << 12));
-    }
-}
+mod tests;

@@ -141,43 +141,10 @@ pub fn volume_counts(v: &Volume) -> Result<CellCounts> {
     let depth = depth_for(v.dims)?;
     let side = 1usize << depth;
     let [nx, ny, nz] = v.dims;
-    // Row (y, z) of voxels, shifted by one (cells' corners are voxels x − 1 ..= x), and
-    // whether it is empty, full or neither.
-    let row = |y: usize, z: usize| -> Option<&[u8]> {
-        (y >= 1 && z >= 1 && y <= ny && z <= nz)
-            .then(|| &v.voxels[((z - 1) * ny + (y - 1)) * nx..][..nx])
-    };
-    let kind = |r: Option<&[u8]>| match r {
-        None => 0u8,
-        Some(r) if r.iter().all(|&b| b == 0) => 0,
-        Some(r) if r.iter().all(|&b| b != 0) => 1,
-        Some(_) => 2,
-    };
-    let kinds: Vec<u8> = (0..=nz + 1)
-        .flat_map(|z| (0..=ny + 1).map(move |y| (y, z)))
-        .map(|(y, z)| kind(row(y, z)))
-        .collect();
+    let kinds = row_kinds(v);
     let kind_at = |y: usize, z: usize| kinds[z * (ny + 2) + y];
-    // Internal nodes of level l: one bit each.
-    let mut marks: Vec<Vec<u64>> = (0..depth)
-        .map(|l| vec![0u64; (1usize << (3 * l)).div_ceil(64)])
-        .collect();
-    let mut surface = 0u64;
-    let mut corners = vec![0u64; CORNER_CODES];
-    let mut cell = |x: usize, y: usize, z: usize, c: [bool; 8]| {
-        if c.iter().all(|&b| b == c[0]) {
-            return;
-        }
-        surface += 1;
-        corners[corner_code(c.map(|b| if b { Corner::In } else { Corner::Out }))] += 1;
-        if x < side && y < side && z < side {
-            for (l, m) in marks.iter_mut().enumerate() {
-                let s = depth as usize - l;
-                let at = ((z >> s) << (2 * l) | (y >> s) << l) | x >> s;
-                m[at / 64] |= 1 << (at % 64);
-            }
-        }
-    };
+    let row = |y: usize, z: usize| shifted_row(v, y, z);
+    let mut tally = Tally::new(depth);
     for z in 0..=nz.min(side) {
         for y in 0..=ny.min(side) {
             let k = [
@@ -198,25 +165,97 @@ pub fn volume_counts(v: &Volume) -> Result<CellCounts> {
             if k == [1; 4] {
                 // Full rows: only the cells at the row's two ends have an empty corner.
                 for x in [0, nx.min(side)] {
-                    cell(x, y, z, corners_at(x));
+                    tally.cell(x, y, z, corners_at(x));
                 }
                 continue;
             }
             for x in 0..=nx.min(side) {
-                cell(x, y, z, corners_at(x));
+                tally.cell(x, y, z, corners_at(x));
             }
         }
     }
-    let mut nonuniform: Vec<u64> = marks
-        .iter()
-        .map(|m| m.iter().map(|w| u64::from(w.count_ones())).sum())
-        .collect();
-    nonuniform.push(surface);
-    Ok(CellCounts {
-        depth,
-        nonuniform,
-        corners,
-    })
+    Ok(tally.finish())
+}
+
+/// Row (y, z) of `v`'s voxels, shifted by one (cells' corners are voxels x − 1 ..= x); None
+/// outside the volume.
+fn shifted_row(v: &Volume, y: usize, z: usize) -> Option<&[u8]> {
+    let [nx, ny, nz] = v.dims;
+    (y >= 1 && z >= 1 && y <= ny && z <= nz)
+        .then(|| &v.voxels[((z - 1) * ny + (y - 1)) * nx..][..nx])
+}
+
+/// Per shifted row (y in 0..=ny + 1 fastest, z in 0..=nz + 1) whether it is empty (or
+/// outside), full or neither: 0, 1 or 2.
+fn row_kinds(v: &Volume) -> Vec<u8> {
+    let [_, ny, nz] = v.dims;
+    let kind = |r: Option<&[u8]>| match r {
+        None => 0u8,
+        Some(r) if r.iter().all(|&b| b == 0) => 0,
+        Some(r) if r.iter().all(|&b| b != 0) => 1,
+        Some(_) => 2,
+    };
+    (0..=nz + 1)
+        .flat_map(|z| (0..=ny + 1).map(move |y| (y, z)))
+        .map(|(y, z)| kind(shifted_row(v, y, z)))
+        .collect()
+}
+
+/// The counts so far: the internal nodes of each level above the deepest (one bit each),
+/// the cells with a surface and their corner codes.
+struct Tally {
+    depth: u32,
+    side: usize,
+    marks: Vec<Vec<u64>>,
+    surface: u64,
+    corners: Vec<u64>,
+}
+
+impl Tally {
+    fn new(depth: u32) -> Tally {
+        Tally {
+            depth,
+            side: 1usize << depth,
+            marks: (0..depth)
+                .map(|l| vec![0u64; (1usize << (3 * l)).div_ceil(64)])
+                .collect(),
+            surface: 0,
+            corners: vec![0u64; CORNER_CODES],
+        }
+    }
+
+    /// Cell (x, y, z) with corners `c` (in or out): when they differ, a surface cell, and
+    /// (within the octree) its ancestors internal.
+    fn cell(&mut self, x: usize, y: usize, z: usize, c: [bool; 8]) {
+        if c.iter().all(|&b| b == c[0]) {
+            return;
+        }
+        self.surface += 1;
+        self.corners[corner_code(c.map(|b| if b { Corner::In } else { Corner::Out }))] += 1;
+        let side = self.side;
+        if x < side && y < side && z < side {
+            for (l, m) in self.marks.iter_mut().enumerate() {
+                let s = self.depth as usize - l;
+                let at = ((z >> s) << (2 * l) | (y >> s) << l) | x >> s;
+                m[at / 64] |= 1 << (at % 64);
+            }
+        }
+    }
+
+    /// Per level the internal nodes, at the deepest the surface cells; their corners.
+    fn finish(self) -> CellCounts {
+        let mut nonuniform: Vec<u64> = self
+            .marks
+            .iter()
+            .map(|m| m.iter().map(|w| u64::from(w.count_ones())).sum())
+            .collect();
+        nonuniform.push(self.surface);
+        CellCounts {
+            depth: self.depth,
+            nonuniform,
+            corners: self.corners,
+        }
+    }
 }
 
 #[cfg(test)]

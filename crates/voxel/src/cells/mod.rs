@@ -40,6 +40,14 @@ use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene};
 use crate::sampled::Shape;
 use crate::slicer::{Sampling, Slicer};
 
+mod lattice;
+mod prims;
+mod triangle;
+
+use lattice::Lattice;
+use prims::{grid_planes, planes, sampled_prim};
+use triangle::{crosses, meets_triangle, Crossing};
+
 /// Codes of a cell's corners ([`corner_code`]): 3^8.
 pub const CORNER_CODES: usize = 6561;
 
@@ -302,267 +310,6 @@ enum Prim<'a> {
     Empty,
 }
 
-/// One level of a dataset's blocks: each block's least and greatest sample, and how many
-/// blocks there are along each axis.
-type Blocks = (Vec<(f32, f32)>, [usize; 3]);
-
-/// A dataset seen from voxel coordinates.
-struct Lattice<'a> {
-    /// Voxel coordinates → continuous lattice index: `a·v + b`.
-    a: DMat3,
-    abs_a: DMat3,
-    b: DVec3,
-    data: &'a Dataset,
-    threshold: f64,
-    eps: f64,
-    /// Under `--blend` a voxel inside takes the dataset's grey value, which varies: only
-    /// outside is known.
-    graded: bool,
-    /// Least and greatest sample of blocks of 4^… cells: `mip[m]` has blocks of 2^(m + 2)
-    /// cells a side, `dims[m]` of them.
-    mip: Vec<Blocks>,
-}
-
-/// Cells a range is read over piece by piece (the exact range of the interpolant) before
-/// their samples bound it.
-const PIECES: usize = 27;
-
-/// Cells whose samples a range reads before blocks of samples bound it.
-const SAMPLES: usize = 512;
-
-impl<'a> Lattice<'a> {
-    fn new(a: DMat3, b: DVec3, data: &'a Dataset, threshold: f64, graded: bool) -> Lattice<'a> {
-        let abs_a = DMat3::from_cols(a.x_axis.abs(), a.y_axis.abs(), a.z_axis.abs());
-        let (lo, hi) = data.nrrd.range;
-        let scale = 1.0 + f64::from(lo).abs().max(f64::from(hi).abs()) + threshold.abs();
-        let mut l = Lattice {
-            a,
-            abs_a,
-            b,
-            data,
-            threshold,
-            eps: 1e-9 * scale,
-            graded,
-            mip: vec![],
-        };
-        l.build_mip();
-        l
-    }
-
-    /// Cells along each axis (a lattice of one sample along an axis has one cell there).
-    fn cells(&self) -> [usize; 3] {
-        self.data.nrrd.sizes.map(|n| n.saturating_sub(1).max(1))
-    }
-
-    fn at(&self, i: usize, j: usize, k: usize) -> f64 {
-        f64::from(self.data.nrrd.at(i, j, k))
-    }
-
-    fn build_mip(&mut self) {
-        let cells = self.cells();
-        let sizes = self.data.nrrd.sizes;
-        // Blocks of 4 cells: their samples read once (the samples on a block's faces twice).
-        let dims = cells.map(|c| c.div_ceil(4));
-        let mut first = Vec::with_capacity(dims.iter().product());
-        for bz in 0..dims[2] {
-            for by in 0..dims[1] {
-                for bx in 0..dims[0] {
-                    let b = [bx, by, bz];
-                    let r = |a: usize| 4 * b[a]..=(4 * b[a] + 4).min(sizes[a] - 1);
-                    let (mut mn, mut mx) = (f32::INFINITY, f32::NEG_INFINITY);
-                    for k in r(2) {
-                        for j in r(1) {
-                            for i in r(0) {
-                                let v = self.data.nrrd.at(i, j, k);
-                                (mn, mx) = (mn.min(v), mx.max(v));
-                            }
-                        }
-                    }
-                    first.push((mn, mx));
-                }
-            }
-        }
-        self.mip.push((first, dims));
-        while self
-            .mip
-            .last()
-            .is_some_and(|(_, d)| d.iter().any(|&n| n > 1))
-        {
-            let (below, d) = self.mip.last().expect("a level");
-            let dims = d.map(|n| n.div_ceil(2));
-            let mut up = Vec::with_capacity(dims.iter().product());
-            for bz in 0..dims[2] {
-                for by in 0..dims[1] {
-                    for bx in 0..dims[0] {
-                        let (mut mn, mut mx) = (f32::INFINITY, f32::NEG_INFINITY);
-                        for c in 0..8 {
-                            let q = [2 * bx + (c & 1), 2 * by + (c >> 1 & 1), 2 * bz + (c >> 2)];
-                            if (0..3).all(|a| q[a] < d[a]) {
-                                let (lo, hi) = below[(q[2] * d[1] + q[1]) * d[0] + q[0]];
-                                (mn, mx) = (mn.min(lo), mx.max(hi));
-                            }
-                        }
-                        up.push((mn, mx));
-                    }
-                }
-            }
-            self.mip.push((up, dims));
-        }
-    }
-
-    /// The trilinear value at index point q, inside the lattice cell `c` (lower corner).
-    fn trilinear(&self, c: [usize; 3], q: DVec3) -> f64 {
-        let sizes = self.data.nrrd.sizes;
-        let hi = |a: usize| (c[a] + 1).min(sizes[a] - 1);
-        let t = |a: usize| (q[a] - c[a] as f64).clamp(0.0, 1.0);
-        let (tx, ty, tz) = (t(0), t(1), t(2));
-        let l = |a: f64, b: f64, t: f64| (1.0 - t) * a + t * b;
-        let row = |j, k| l(self.at(c[0], j, k), self.at(hi(0), j, k), tx);
-        let plane = |k| l(row(c[1], k), row(hi(1), k), ty);
-        l(plane(c[2]), plane(hi(2)), tz)
-    }
-
-    /// The least and greatest value over the index box [lo, hi] (inside the lattice): exact
-    /// over a few cells (the interpolant is multilinear in each, its extremes at the corners
-    /// of the box's piece there), else bounded by the samples of blocks covering the box.
-    fn range(&self, lo: DVec3, hi: DVec3) -> (f64, f64) {
-        let cells = self.cells();
-        let cell = |a: usize, q: f64| (q.floor().max(0.0) as usize).min(cells[a] - 1);
-        let c0 = [0, 1, 2].map(|a| cell(a, lo[a]));
-        // A box ending on a lattice plane stays in the cell below it.
-        let c1 =
-            [0, 1, 2].map(|a| ((hi[a].ceil() - 1.0).max(0.0) as usize).clamp(c0[a], cells[a] - 1));
-        let n: usize = (0..3).map(|a| c1[a] - c0[a] + 1).product();
-        let (mut mn, mut mx) = (f64::INFINITY, f64::NEG_INFINITY);
-        if n <= PIECES {
-            for z in c0[2]..=c1[2] {
-                for y in c0[1]..=c1[1] {
-                    for x in c0[0]..=c1[0] {
-                        let c = [x, y, z];
-                        let plo = DVec3::from(c.map(|v| v as f64)).max(lo);
-                        let phi = DVec3::from(c.map(|v| v as f64 + 1.0)).min(hi).max(plo);
-                        for k in 0..8 {
-                            let q = DVec3::new(
-                                if k & 1 == 0 { plo.x } else { phi.x },
-                                if k & 2 == 0 { plo.y } else { phi.y },
-                                if k & 4 == 0 { plo.z } else { phi.z },
-                            );
-                            let v = self.trilinear(c, q);
-                            (mn, mx) = (mn.min(v), mx.max(v));
-                        }
-                    }
-                }
-            }
-            return (mn, mx);
-        }
-        if n <= SAMPLES {
-            let top = self.data.nrrd.sizes.map(|s| s - 1);
-            for z in c0[2]..=(c1[2] + 1).min(top[2]) {
-                for y in c0[1]..=(c1[1] + 1).min(top[1]) {
-                    for x in c0[0]..=(c1[0] + 1).min(top[0]) {
-                        let v = self.at(x, y, z);
-                        (mn, mx) = (mn.min(v), mx.max(v));
-                    }
-                }
-            }
-            return (mn, mx);
-        }
-        // The first level whose blocks the box spans at most two of along each axis.
-        let mut m = 0;
-        while m + 1 < self.mip.len() && (0..3).any(|a| (c1[a] >> (m + 2)) - (c0[a] >> (m + 2)) > 1)
-        {
-            m += 1;
-        }
-        let (blocks, d) = &self.mip[m];
-        let b0 = c0.map(|c| c >> (m + 2));
-        let b1 = [0, 1, 2].map(|a| (c1[a] >> (m + 2)).min(d[a] - 1));
-        for z in b0[2]..=b1[2] {
-            for y in b0[1]..=b1[1] {
-                for x in b0[0]..=b1[0] {
-                    let (lo, hi) = blocks[(z * d[1] + y) * d[0] + x];
-                    (mn, mx) = (mn.min(f64::from(lo)), mx.max(f64::from(hi)));
-                }
-            }
-        }
-        (mn, mx)
-    }
-
-    /// A dataset voxel is filled when the sample at its centre is at or above the threshold:
-    /// filled, empty, or too close to tell (or past the lattice by its tolerance).
-    fn point(&self, v: DVec3) -> Class {
-        let q = self.a * v + self.b;
-        let [nx, ny, nz] = self.data.nrrd.sizes;
-        let tol = 1e-6;
-        let (Some(x), Some(y), Some(z)) = (cell(q.x, nx), cell(q.y, ny), cell(q.z, nz)) else {
-            let top = DVec3::from(self.data.nrrd.sizes.map(|n| (n - 1) as f64));
-            let far = (0..3).any(|a| q[a] < -tol || q[a] > top[a] + tol);
-            return if far { Class::Out } else { Class::Mixed };
-        };
-        let c = [x.0, y.0, z.0];
-        let v = self.trilinear(c, q);
-        let near = (0..3).any(|a| {
-            let top = (self.data.nrrd.sizes[a] - 1) as f64;
-            q[a] < tol || q[a] > top - tol
-        });
-        if v < self.threshold - self.eps {
-            Class::Out
-        } else if v >= self.threshold + self.eps && !near {
-            Class::In
-        } else {
-            Class::Mixed
-        }
-    }
-
-    fn classify(&self, c: DVec3, h: DVec3) -> Class {
-        match self.membership(c, h) {
-            Class::In if self.graded => Class::Mixed,
-            c => c,
-        }
-    }
-
-    /// Whether the voxel centres of the box (centre c, half sizes h) are inside.
-    fn membership(&self, c: DVec3, h: DVec3) -> Class {
-        // A node of up to 3 voxels a side: its voxel centres one by one.
-        if h.max_element() <= 1.0 {
-            let n = [h.x, h.y, h.z].map(|x| x.round() as i64);
-            let mut seen = None;
-            for k in -n[2]..=n[2] {
-                for j in -n[1]..=n[1] {
-                    for i in -n[0]..=n[0] {
-                        let v = c + DVec3::new(i as f64, j as f64, k as f64);
-                        let p = self.point(v);
-                        match (seen, p) {
-                            (_, Class::Mixed) => return Class::Mixed,
-                            (None, p) => seen = Some(p),
-                            (Some(s), p) if s != p => return Class::Mixed,
-                            _ => {}
-                        }
-                    }
-                }
-            }
-            return seen.unwrap_or(Class::Out);
-        }
-        let ci = self.a * c + self.b;
-        let hi = self.abs_a * h + DVec3::splat(1e-9);
-        let (lo, hi) = (ci - hi, ci + hi);
-        let tol = csgpix_scene::dataset::INDEX_TOLERANCE;
-        let top = DVec3::from(self.data.nrrd.sizes.map(|n| (n - 1) as f64));
-        if (0..3).any(|a| lo[a] > top[a] + tol || hi[a] < -tol) {
-            return Class::Out;
-        }
-        let partial = (0..3).any(|a| lo[a] < -tol || hi[a] > top[a] + tol);
-        let (lo, hi) = (lo.clamp(DVec3::ZERO, top), hi.clamp(DVec3::ZERO, top));
-        let (mn, mx) = self.range(lo, hi);
-        if mx < self.threshold - self.eps {
-            Class::Out
-        } else if !partial && mn >= self.threshold + self.eps {
-            Class::In
-        } else {
-            Class::Mixed
-        }
-    }
-}
-
 /// A mixed primitive of a node, and its planes or triangles that may meet the node
 /// (`arena[start..start + len]` of its depth).
 ///
@@ -576,85 +323,6 @@ struct Entry {
     len: u32,
     at: DVec3,
     known: Class,
-}
-
-/// Whether the segment p → q crosses the triangle: once, not at all, or too near an edge, a
-/// vertex or its plane to tell.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Crossing {
-    Once,
-    No,
-    Unsure,
-}
-
-fn crosses(t: &[DVec3; 3], p: DVec3, q: DVec3) -> Crossing {
-    let lo = t[0].min(t[1]).min(t[2]);
-    let hi = t[0].max(t[1]).max(t[2]);
-    let (slo, shi) = (p.min(q), p.max(q));
-    if (0..3).any(|a| lo[a] > shi[a] + 1e-9 || hi[a] < slo[a] - 1e-9) {
-        return Crossing::No;
-    }
-    // Signed volumes, each against a tolerance of its own scale.
-    let vol = |a: DVec3, b: DVec3, c: DVec3, d: DVec3| {
-        let (u, v, w) = (b - a, c - a, d - a);
-        let x = u.cross(v).dot(w);
-        let tol = 1e-9 * u.length() * v.length() * w.length() + 1e-300;
-        if x > tol {
-            1
-        } else if x < -tol {
-            -1
-        } else {
-            0
-        }
-    };
-    let (sp, sq) = (vol(t[0], t[1], t[2], p), vol(t[0], t[1], t[2], q));
-    if sp != 0 && sp == sq {
-        return Crossing::No;
-    }
-    let edges = [
-        vol(p, q, t[0], t[1]),
-        vol(p, q, t[1], t[2]),
-        vol(p, q, t[2], t[0]),
-    ];
-    if edges.contains(&1) && edges.contains(&-1) {
-        return Crossing::No;
-    }
-    if sp == 0 || sq == 0 || edges.contains(&0) {
-        return Crossing::Unsure;
-    }
-    Crossing::Once
-}
-
-/// Does the box (centre c, half sizes h) perhaps meet the triangle? The separating axis
-/// test (the box's axes, the triangle's normal, and the 9 products of their edges), each
-/// axis given a little slack.
-fn meets_triangle(t: &[DVec3; 3], c: DVec3, h: DVec3) -> bool {
-    let lo = t[0].min(t[1]).min(t[2]);
-    let hi = t[0].max(t[1]).max(t[2]);
-    if (0..3).any(|a| lo[a] > c[a] + h[a] || hi[a] < c[a] - h[a]) {
-        return false;
-    }
-    let v = t.map(|p| p - c);
-    let e = [v[1] - v[0], v[2] - v[1], v[0] - v[2]];
-    let separates = |axis: DVec3| {
-        let r = axis.abs().dot(h);
-        let p = v.map(|q| axis.dot(q));
-        let (mn, mx) = (p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2]));
-        let slack = 1e-9 * (axis.length() * (r.abs() + mx.abs().max(mn.abs())) + 1e-12);
-        mn > r + slack || mx < -r - slack
-    };
-    if separates(e[0].cross(e[1])) {
-        return false;
-    }
-    for edge in e {
-        for axis in [DVec3::X, DVec3::Y, DVec3::Z] {
-            let a = axis.cross(edge);
-            if a != DVec3::ZERO && separates(a) {
-                return false;
-            }
-        }
-    }
-    true
 }
 
 struct Walk<'p, 'a> {
@@ -693,6 +361,67 @@ struct Task {
     arena: Vec<u32>,
 }
 
+/// A convex solid's class on the box (centre `c`, half sizes `hg`, grown by its drawing
+/// tolerance) from its `active` planes: out when the box lies beyond one plane (by more
+/// than its slack), else in when within all, else mixed; the planes the box meets pushed
+/// to `dst` (none when out).
+fn classify_planes(
+    planes: &[(DVec3, f64, f64)],
+    active: &[u32],
+    c: DVec3,
+    hg: DVec3,
+    dst: &mut Vec<u32>,
+) -> Class {
+    let start = dst.len();
+    for &j in active {
+        let (n, d, t) = planes[j as usize];
+        let s = n.dot(c) - d;
+        let r = n.abs().dot(hg);
+        let slack = t + 1e-9 * (1.0 + d.abs());
+        if s - r > slack {
+            dst.truncate(start);
+            return Class::Out;
+        }
+        if s + r >= -slack {
+            dst.push(j);
+        }
+    }
+    if dst.len() == start {
+        Class::In
+    } else {
+        Class::Mixed
+    }
+}
+
+/// A closed mesh's `active` triangles on the box (centre `c`, half sizes `hg`): those it
+/// meets pushed to `dst`, and the box centre's class carried from the parent's point
+/// `e.at` by the triangles the segment between them crosses ([`Class::Unif`] when a
+/// crossing is unsure or the parent's was unknown).
+fn centre_class(
+    tris: &[[DVec3; 3]],
+    active: &[u32],
+    e: &Entry,
+    c: DVec3,
+    hg: DVec3,
+    dst: &mut Vec<u32>,
+) -> Class {
+    let mut known = e.known;
+    for &j in active {
+        let t = &tris[j as usize];
+        if known != Class::Unif {
+            match crosses(t, e.at, c) {
+                Crossing::Once => known = known.not(),
+                Crossing::No => {}
+                Crossing::Unsure => known = Class::Unif,
+            }
+        }
+        if meets_triangle(t, c, hg) {
+            dst.push(j);
+        }
+    }
+    known
+}
+
 /// Visits added to the shared count at a time.
 const VISIT_BATCH: u64 = 1 << 14;
 
@@ -724,49 +453,13 @@ impl Walk<'_, '_> {
             let mut known = Class::Unif;
             let active = &items[e.start as usize..(e.start + e.len) as usize];
             let class = match &self.prims[e.prim as usize] {
-                Prim::Planes(planes) => {
-                    let mut out_of = false;
-                    for &j in active {
-                        let (n, d, t) = planes[j as usize];
-                        let s = n.dot(c) - d;
-                        let r = n.abs().dot(hg);
-                        let slack = t + 1e-9 * (1.0 + d.abs());
-                        if s - r > slack {
-                            out_of = true;
-                            break;
-                        }
-                        if s + r >= -slack {
-                            dst.push(j);
-                        }
-                    }
-                    if out_of {
-                        dst.truncate(start);
-                        Class::Out
-                    } else if dst.len() == start {
-                        Class::In
-                    } else {
-                        Class::Mixed
-                    }
-                }
+                Prim::Planes(planes) => classify_planes(planes, active, c, hg, dst),
                 Prim::Tris(tris, lo, hi) => {
                     if (0..3).any(|a| lo[a] > c[a] + hg[a] || hi[a] < c[a] - hg[a]) {
                         Class::Out
                     } else {
                         // The centre's membership, from the parent's point.
-                        known = e.known;
-                        for &j in active {
-                            let t = &tris[j as usize];
-                            if known != Class::Unif {
-                                match crosses(t, e.at, c) {
-                                    Crossing::Once => known = known.not(),
-                                    Crossing::No => {}
-                                    Crossing::Unsure => known = Class::Unif,
-                                }
-                            }
-                            if meets_triangle(t, c, hg) {
-                                dst.push(j);
-                            }
-                        }
+                        known = centre_class(tris, active, e, c, hg, dst);
                         if dst.len() == start {
                             known
                         } else {
@@ -1023,47 +716,6 @@ impl Walk<'_, '_> {
     }
 }
 
-/// The convex solid's supporting planes in voxel coordinates (`to_voxel` maps scene points),
-/// each with how far it may be drawn from where it is.
-fn planes(
-    s: &ConvexSolid,
-    to_voxel: impl Fn(DVec3) -> DVec3,
-    tol: &Tolerance,
-) -> Vec<(DVec3, f64, f64)> {
-    let v: Vec<DVec3> = s
-        .vertices
-        .iter()
-        .map(|&p| to_voxel(DVec3::from(p)))
-        .collect();
-    if v.is_empty() {
-        return vec![];
-    }
-    let mean = v.iter().copied().sum::<DVec3>() / v.len() as f64;
-    let mut out = vec![];
-    for f in &s.faces {
-        let pts: Vec<DVec3> = f.iter().filter_map(|&i| v.get(i).copied()).collect();
-        if pts.len() < 3 {
-            continue;
-        }
-        // Newell's normal, outward for a face counter-clockwise seen from outside.
-        let mut n = DVec3::ZERO;
-        for (k, a) in pts.iter().enumerate() {
-            let b = pts[(k + 1) % pts.len()];
-            n += a.cross(b);
-        }
-        let Some(n) = n.try_normalize() else { continue };
-        let centre = pts.iter().copied().sum::<DVec3>() / pts.len() as f64;
-        let n = if n.dot(mean) > n.dot(centre) { -n } else { n };
-        // A supporting plane: every vertex on its inner side.
-        let d = v
-            .iter()
-            .map(|p| n.dot(*p))
-            .fold(f64::NEG_INFINITY, f64::max);
-        out.push((n, d, tol.plane(n)));
-    }
-    out
-}
-
 /// Upper bounds of the internal nodes of every level of an octree of side 2^depth over
 /// `slicer`'s voxelization of `scene`, and of the cells with a surface (module docs).
 pub fn cell_counts(scene: &CsgScene, slicer: &Slicer, depth: u32) -> CellCounts {
@@ -1083,74 +735,30 @@ pub fn cell_counts(scene: &CsgScene, slicer: &Slicer, depth: u32) -> CellCounts 
         grow.push(DVec3::ZERO);
     }
     for s in &slicer.sampled {
-        match &s.shape {
-            Shape::Mesh(m) => {
-                let tris: Vec<[DVec3; 3]> = m
-                    .triangles
-                    .iter()
-                    .map(|t| t.map(|i| to_voxel(m.vertices[i as usize])))
-                    .collect();
-                let lo = tris
-                    .iter()
-                    .flatten()
-                    .fold(DVec3::INFINITY, |a, &p| a.min(p));
-                let hi = tris
-                    .iter()
-                    .flatten()
-                    .fold(DVec3::NEG_INFINITY, |a, &p| a.max(p));
-                prims.push(Prim::Tris(tris, lo, hi));
-                grow.push(tol.mesh());
-            }
-            Shape::OpenMesh(m, _) => {
-                let (lo, hi) = m.mesh().bounds();
-                prims.push(Prim::Unknown(to_voxel(lo), to_voxel(hi)));
-                grow.push(tol.mesh());
-            }
-            Shape::Dataset {
-                data,
-                threshold,
-                to_file,
-            } => {
-                // Voxel → scene → file → lattice index, an affine map.
-                let index = |v: DVec3| {
-                    let scene = grid.min + (v + DVec3::splat(0.5)) * voxel;
-                    data.index_of(to_file.transform_point3(scene))
-                };
-                let b = index(DVec3::ZERO);
-                let a = DMat3::from_cols(
-                    index(DVec3::X) - b,
-                    index(DVec3::Y) - b,
-                    index(DVec3::Z) - b,
-                );
-                let graded = slicer.blend.is_some();
-                prims.push(Prim::Lattice(Lattice::new(a, b, data, *threshold, graded)));
-                grow.push(DVec3::splat(1e-9));
-            }
-        }
+        let (prim, g) = sampled_prim(&s.shape, slicer, &to_voxel, &tol);
+        prims.push(prim);
+        grow.push(g);
     }
-    // The grid: voxel centres 0..dims; any box between them and the next centres out.
-    let dims = DVec3::from(grid.dims.map(|d| d as f64));
     let grid_prim = prims.len() as u32;
-    prims.push(Prim::Planes(vec![
-        (DVec3::NEG_X, 0.5, 0.0),
-        (DVec3::NEG_Y, 0.5, 0.0),
-        (DVec3::NEG_Z, 0.5, 0.0),
-        (DVec3::X, dims.x - 0.5, 0.0),
-        (DVec3::Y, dims.y - 0.5, 0.0),
-        (DVec3::Z, dims.z - 0.5, 0.0),
-    ]));
+    prims.push(grid_planes(grid.dims));
     grow.push(DVec3::ZERO);
+    let ops = tree_ops(&scene.root, grid_prim, slicer);
+    walk(&prims, &grow, ops.as_deref(), grid_prim, depth)
+}
+
+/// The CSG tree in postfix, when the walk may evaluate it: few enough leaves, all of them
+/// primitives before the grid's (`grid_prim`), and boolean. Blending (`--blend`) combines
+/// grey values, not memberships: only that the volume is a function of what each primitive
+/// holds is used then.
+fn tree_ops(root: &CsgNode, grid_prim: u32, slicer: &Slicer) -> Option<Vec<Op>> {
     let mut ops = vec![];
-    postfix(&scene.root, &mut ops);
+    postfix(root, &mut ops);
     let leaves = ops.iter().filter(|o| matches!(o, Op::Leaf(_))).count();
     let known = ops
         .iter()
         .all(|o| !matches!(o, Op::Leaf(p) if *p as usize >= grid_prim as usize));
-    // Blending (`--blend`) combines grey values, not memberships: only that the volume is a
-    // function of what each primitive holds is used then.
     let boolean = slicer.blend.is_none();
-    let ops = (leaves <= TREE_LEAVES && known && boolean).then_some(ops);
-    walk(&prims, &grow, ops.as_deref(), grid_prim, depth)
+    (leaves <= TREE_LEAVES && known && boolean).then_some(ops)
 }
 
 fn walk(prims: &[Prim], grow: &[DVec3], ops: Option<&[Op]>, grid: u32, depth: u32) -> CellCounts {
@@ -1180,23 +788,7 @@ fn walk(prims: &[Prim], grow: &[DVec3], ops: Option<&[Op]>, grid: u32, depth: u3
         };
         // The top levels here, the subtrees below them in parallel.
         let mut w = fresh(Some(SPLIT));
-        for (p, prim) in prims.iter().enumerate() {
-            let (n, at) = match prim {
-                Prim::Planes(v) => (v.len(), DVec3::ZERO),
-                // A point outside the mesh's box is outside the mesh.
-                Prim::Tris(t, lo, hi) => (t.len(), *lo - (*hi - *lo) - DVec3::ONE),
-                _ => (0, DVec3::ZERO),
-            };
-            let start = w.arena[0].len() as u32;
-            w.arena[0].extend(0..n as u32);
-            w.lists[0].push(Entry {
-                prim: p as u32,
-                start,
-                len: n as u32,
-                at,
-                known: Class::Out,
-            });
-        }
+        w.seed_root();
         let top = w.visit(0, [0; 3]);
         let tasks = std::mem::take(&mut w.tasks);
         let subtrees: Result<Vec<_>, Spent> = top.and_then(|()| {
@@ -1215,24 +807,12 @@ fn walk(prims: &[Prim], grow: &[DVec3], ops: Option<&[Op]>, grid: u32, depth: u3
         match subtrees {
             Ok(parts) => {
                 for (counts, corners) in parts {
-                    for (a, b) in w.counts.iter_mut().zip(counts) {
-                        *a += b;
-                    }
-                    for (a, b) in w.corners.iter_mut().zip(corners) {
-                        *a += b;
-                    }
+                    w.add(&counts, &corners);
                 }
                 return w.finish();
             }
             Err(Spent) if last > 0 => last -= 1,
-            Err(Spent) => {
-                // Not even the root fits the budget: every node may be internal.
-                let mut c = w.finish();
-                c.nonuniform = (0..=depth).map(|l| cap(depth, l)).collect();
-                c.corners = vec![0; CORNER_CODES];
-                c.corners[CORNER_CODES - 1] = c.nonuniform[depth as usize];
-                return c;
-            }
+            Err(Spent) => return w.finish_unwalked(),
         }
     }
 }
@@ -1247,6 +827,47 @@ fn cap(depth: u32, l: u32) -> u64 {
 }
 
 impl Walk<'_, '_> {
+    /// Level 0's list: every primitive with all its planes or triangles active, a mesh's
+    /// known point outside its box (a point outside the mesh's box is outside the mesh).
+    fn seed_root(&mut self) {
+        for (p, prim) in self.prims.iter().enumerate() {
+            let (n, at) = match prim {
+                Prim::Planes(v) => (v.len(), DVec3::ZERO),
+                Prim::Tris(t, lo, hi) => (t.len(), *lo - (*hi - *lo) - DVec3::ONE),
+                _ => (0, DVec3::ZERO),
+            };
+            let start = self.arena[0].len() as u32;
+            self.arena[0].extend(0..n as u32);
+            self.lists[0].push(Entry {
+                prim: p as u32,
+                start,
+                len: n as u32,
+                at,
+                known: Class::Out,
+            });
+        }
+    }
+
+    /// A subtree's counts and corner codes added to these.
+    fn add(&mut self, counts: &[u64], corners: &[u64]) {
+        for (a, b) in self.counts.iter_mut().zip(counts) {
+            *a += b;
+        }
+        for (a, b) in self.corners.iter_mut().zip(corners) {
+            *a += b;
+        }
+    }
+
+    /// The counts when not even the root fits the budget: every node may be internal.
+    fn finish_unwalked(self) -> CellCounts {
+        let depth = self.depth;
+        let mut c = self.finish();
+        c.nonuniform = (0..=depth).map(|l| cap(depth, l)).collect();
+        c.corners = vec![0; CORNER_CODES];
+        c.corners[CORNER_CODES - 1] = c.nonuniform[depth as usize];
+        c
+    }
+
     fn finish(self) -> CellCounts {
         let mut nonuniform = self.counts;
         let mut corners = self.corners;
@@ -1269,74 +890,4 @@ impl Walk<'_, '_> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use proptest::prelude::*;
-
-    #[test]
-    fn the_logic_keeps_unknown_constants_and_mixtures_apart() {
-        use Class::*;
-        // A constant of unknown value stays constant under every operator…
-        for c in [Out, In, Unif] {
-            assert_ne!(Unif.or(c), Mixed);
-            assert_ne!(Unif.and(c), Mixed);
-        }
-        // …but may not hide a mixed primitive, which an In (or an Out) does.
-        assert_eq!(Unif.or(Mixed), Mixed);
-        assert_eq!(In.or(Mixed), In);
-        assert_eq!(Out.and(Mixed), Out);
-        assert_eq!(Mixed.not(), Mixed);
-        assert_eq!(In.not(), Out);
-    }
-
-    #[test]
-    fn a_segment_crosses_a_triangle_once_misses_it_or_is_unsure_on_its_edge() {
-        let t = [DVec3::ZERO, DVec3::X * 4.0, DVec3::Y * 4.0];
-        let through = crosses(&t, DVec3::new(1.0, 1.0, -1.0), DVec3::new(1.0, 1.0, 1.0));
-        assert_eq!(through, Crossing::Once);
-        let beside = crosses(&t, DVec3::new(3.0, 3.0, -1.0), DVec3::new(3.0, 3.0, 1.0));
-        assert_eq!(beside, Crossing::No);
-        let short = crosses(&t, DVec3::new(1.0, 1.0, 0.5), DVec3::new(1.0, 1.0, 1.0));
-        assert_eq!(short, Crossing::No);
-        let edge = crosses(&t, DVec3::new(2.0, 0.0, -1.0), DVec3::new(2.0, 0.0, 1.0));
-        assert_eq!(edge, Crossing::Unsure);
-    }
-
-    #[test]
-    fn faces_along_z_are_exact_and_level_faces_move_by_the_words_rounding() {
-        let t = Tolerance {
-            slab_raw: 2048.0,
-            pixels: [512.0, 512.0],
-            half: 0.0,
-            steep: 0.5,
-            range: 512.0,
-            slope: 1000.0,
-        };
-        assert!(t.plane(DVec3::X) < 1e-3);
-        assert!(t.plane(DVec3::new(0.6, 0.8, 0.0)) < 1e-3);
-        // A level face: its slopes are 0, held exactly; Z0 rounds, Vz is one unit.
-        let level = t.plane(DVec3::Z);
-        assert!(level > 2.0 / 2048.0 && level < 1e-2, "{level}");
-        // A sloped face: its slopes round too, by up to half a unit each, across the array.
-        let sloped = t.plane(DVec3::new(0.3, 0.2, 0.9).normalize());
-        assert!(sloped > level && sloped < 1.0, "{sloped}");
-    }
-
-    proptest! {
-        /// Whatever point of a triangle lies in a box, the box is taken to meet it.
-        #[test]
-        fn a_box_holding_a_point_of_a_triangle_meets_it(
-            t in prop::array::uniform3(prop::array::uniform3(-4.0..4.0f64)),
-            c in prop::array::uniform3(-4.0..4.0f64),
-            h in prop::array::uniform3(0.0..2.0f64),
-            w in prop::array::uniform3(0.0..1.0f64),
-        ) {
-            let t = t.map(DVec3::from);
-            let (c, h) = (DVec3::from(c), DVec3::from(h));
-            let s = w[0] + w[1] + w[2] + 1e-9;
-            let p = (t[0] * w[0] + t[1] * w[1] + t[2] * w[2]) / s;
-            let inside = (0..3).all(|a| (p[a] - c[a]).abs() <= h[a]);
-            prop_assert!(!inside || meets_triangle(&t, c, h));
-        }
-    }
-}
+mod tests;
