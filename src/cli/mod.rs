@@ -3,7 +3,6 @@
 //! as text or `--json`. Nothing of a pipeline is assembled here: every command module holds
 //! its flags (`Args`), their conversion to the job, and the printing of the report.
 
-
 /// The `Args` of the command line `argv` (program name included), which must parse as
 /// command `$cmd`: for each command's test that its flags' defaults are its job's.
 #[cfg(test)]
@@ -40,7 +39,6 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use csgpix_run as run;
-
 
 #[derive(Parser, Debug)]
 #[command(

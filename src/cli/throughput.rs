@@ -105,7 +105,9 @@ impl Args {
 }
 
 pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
-    let report = a.job().run_with_charts(&super::plot::Plotters, &Bars::default())?;
+    let report = a
+        .job()
+        .run_with_charts(&super::plot::Plotters, &Bars::default())?;
     if a.json {
         super::print_json(&report)?;
     } else {

@@ -5,6 +5,7 @@ use csgpix_draw::Error as DrawError;
 use csgpix_sculpt::Error as SculptError;
 
 use crate::Error;
+use csgpix_voxel::{BindingProblem, Error as VoxelError};
 
 /// A drawing error; a scene too deep for the word names `--word` and `--size`.
 pub fn draw(e: DrawError) -> Error {
@@ -42,6 +43,30 @@ pub fn sculpt(e: SculptError) -> Error {
         }
         SculptError::BadStiffness => {
             Error::options("--stiffness", "--stiffness must be a finite number >= 0")
+        }
+        e => e.into(),
+    }
+}
+
+/// A voxelizer error (loading, grid) in the command line's words: the option that fixes it
+/// named (`--bounds`, `--expr`, `--prim`).
+pub fn voxel(e: VoxelError) -> Error {
+    match e {
+        VoxelError::NeedsBounds => Error::options("--bounds", format!("{e}: give --bounds")),
+        VoxelError::Expr(m) => Error::options("--expr", format!("--expr:{m}")),
+        VoxelError::Unbound { name, col } => Error::options(
+            "--expr",
+            format!("--expr:1:{col}: primitive `{name}` needs a file: --prim {name}=FILE"),
+        ),
+        VoxelError::Binding {
+            name,
+            problem: BindingProblem::NotInExpression,
+        } => Error::options(
+            "--prim",
+            format!("--prim {name}: the expression has no primitive `{name}`"),
+        ),
+        VoxelError::Binding { name, problem } => {
+            Error::options("--prim", format!("--prim {name}: {problem}"))
         }
         e => e.into(),
     }

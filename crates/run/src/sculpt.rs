@@ -10,7 +10,9 @@ use csgpix_scene::mesh;
 use csgpix_scene::solid::CsgScene;
 use csgpix_sculpt::octree::{self, OptimizedOctree, StoreKind, VoxelStore};
 use csgpix_sculpt::{self as sculpt, Frame, Latency, Sculptor, Step, Tool};
-use csgpix_voxel::{Slicer, SlicerOptions, Volume, PROCESS_BYTES};
+use csgpix_voxel::{Slicer, Volume, PROCESS_BYTES};
+
+use crate::voxelize::Voxelization;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
@@ -403,14 +405,12 @@ impl SculptJob {
         };
         let grid = grid
             .grid(&loaded)
-            .map_err(|e| grid_error(e).context(&name))?;
-        let opts = SlicerOptions {
-            sampling: self.grid.sampling,
-            sampled: loaded.sampled,
-            ..SlicerOptions::default()
-        };
+            .map_err(|e| lib_errors::voxel(e).context(&name))?;
+        // The thesis word and the scene's imports, as `voxelize` slices them by default.
+        let slicer = Voxelization::default()
+            .slicer(&loaded, grid, self.grid.sampling)
+            .map_err(|e| Error::from(e).context(name))?;
         let scene = loaded.scene;
-        let slicer = Slicer::new(&scene, grid, opts).map_err(|e| Error::from(e).context(name))?;
         // The run route's voxelizer, streaming its slices (`store::octree_from_scene`), the
         // scene's imports, and the store's nodes bounded from the scene (docs/memory.md).
         let eval = csgpix_voxel::blist::BlistEval::new(&scene.root);
@@ -472,16 +472,6 @@ pub fn finite(s: &str) -> crate::error::Parsed<f64> {
         _ => Err(crate::error::BadValue(format!(
             "{s:?}: expected a finite number"
         ))),
-    }
-}
-
-/// A grid error in the command line's words: a scene without solids needs `--bounds`.
-fn grid_error(e: csgpix_voxel::Error) -> Error {
-    match e {
-        csgpix_voxel::Error::NeedsBounds => {
-            Error::options("--bounds", format!("{e}: give --bounds"))
-        }
-        e => e.into(),
     }
 }
 

@@ -13,7 +13,7 @@ use csgpix_openscad::Fallback;
 use csgpix_sculpt::octree::StoreKind;
 use csgpix_voxel::blend::Union;
 use csgpix_voxel::sampled::Binding;
-use csgpix_voxel::{BindingProblem, Error as VoxelError, Work};
+use csgpix_voxel::Work;
 use rtl_model::{Equations, WordFormat};
 use serde::{Deserialize, Serialize};
 
@@ -354,29 +354,6 @@ impl VoxelizeJob {
         let bytes = plan.slabs(&self.voxels, z, &|| progress.advance(1))?;
         progress.finish();
         Ok((bytes, grid))
-    }
-}
-
-/// A loading error in the words of this command's flags (`--bounds`, `--expr`, `--prim`).
-pub fn flag_message(e: VoxelError) -> Error {
-    match e {
-        VoxelError::NeedsBounds => Error::options("--bounds", format!("{e}: give --bounds")),
-        VoxelError::Expr(m) => Error::options("--expr", format!("--expr:{m}")),
-        VoxelError::Unbound { name, col } => Error::options(
-            "--expr",
-            format!("--expr:1:{col}: primitive `{name}` needs a file: --prim {name}=FILE"),
-        ),
-        VoxelError::Binding {
-            name,
-            problem: BindingProblem::NotInExpression,
-        } => Error::options(
-            "--prim",
-            format!("--prim {name}: the expression has no primitive `{name}`"),
-        ),
-        VoxelError::Binding { name, problem } => {
-            Error::options("--prim", format!("--prim {name}: {problem}"))
-        }
-        e => e.into(),
     }
 }
 

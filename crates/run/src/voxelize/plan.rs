@@ -15,7 +15,8 @@ use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{voxelize_slabs, Error as VoxelError, Grid, Route, Slicer, SlicerOptions};
 
 use super::route::Ran;
-use super::{flag_message, Eval, Format, RouteKind, Voxelization, VoxelizeJob, VoxelizeReport};
+use super::{Eval, Format, RouteKind, Voxelization, VoxelizeJob, VoxelizeReport};
+use crate::lib_errors::voxel as voxel_error;
 use crate::{lib_errors, Error};
 
 /// The voxelizer's worker threads: `threads` of them, or by default one per core (rayon's).
@@ -120,7 +121,7 @@ impl VoxelizeJob {
     /// The plan on `loaded`, its errors in the command line's words and said of the input.
     pub fn plan(&self, loaded: &Loaded) -> crate::Result<Plan> {
         let name = self.name();
-        let grid = self.grid.grid(loaded).map_err(flag_message);
+        let grid = self.grid.grid(loaded).map_err(voxel_error);
         let grid = grid.map_err(|e| e.context(&name))?;
         let plan = self.plan_on(loaded, grid);
         plan.map_err(|e| Error::from(e).context(&name))?

@@ -4,7 +4,8 @@
 
 use csgpix_voxel::sampled::{load_scene_with, scene_from_expr_with, Loaded};
 
-use super::{flag_message, VoxelizeJob};
+use super::VoxelizeJob;
+use crate::lib_errors::voxel as voxel_error;
 use crate::progress::{warn_all, Progress};
 use crate::Error;
 
@@ -23,7 +24,7 @@ impl VoxelizeJob {
                     samples,
                     ..self.read.read_options()
                 };
-                let loaded = load_scene_with(p, &options).map_err(flag_message)?;
+                let loaded = load_scene_with(p, &options).map_err(voxel_error)?;
                 warn_all(progress, &loaded.scene.warnings);
                 Ok(loaded)
             }
@@ -32,7 +33,7 @@ impl VoxelizeJob {
                     samples,
                     ..self.read.read_options()
                 };
-                scene_from_expr_with(e, &self.prim, &options).map_err(flag_message)
+                scene_from_expr_with(e, &self.prim, &options).map_err(voxel_error)
             }
             (None, None) => Err(Error::options("--expr", "give a scene file or --expr")),
         }
