@@ -21,7 +21,7 @@ the system cannot read raises the matching :class:`OSError` instead (``FileNotFo
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Optional, Sequence, Tuple, Union
+from typing import Callable, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -113,6 +113,7 @@ def voxelize(
     word: str = "10/10/11",
     z: Optional[Tuple[int, int]] = None,
     max_memory: Optional[int] = None,
+    progress: Optional[Callable[[int, int], object]] = None,
 ) -> Volume:
     """Voxelize ``scene`` (a :class:`Scene` or a ``.csg``/``.scad`` path) as
     ``csgpix voxelize`` does: ``res`` N (N cubic voxels along the longest side of the bounds,
@@ -125,12 +126,18 @@ def voxelize(
 
     A run whose memory estimate is over ``max_memory`` MiB (default: the memory available
     now) is refused before anything is allocated, as the command line's ``--max-memory``.
+
+    ``progress``, if given, is called as ``progress(done, total)`` as the slices are computed
+    (``total`` the slices, ``done`` those finished), from the voxelizer's threads with the GIL
+    taken: ``lambda done, total: bar.update(done - bar.n)`` drives a tqdm bar. An exception
+    it raises is raised once the run is over.
     """
     if not isinstance(scene, Scene):
         scene = load(scene)
     data, origin, spacing, dims = _native.voxelize(
         scene, res, voxel=voxel, pad=pad, bounds=bounds, sampling=sampling, model=model,
         route=route, eval=eval, grey=grey, blend=blend, word=word, z=z, max_memory=max_memory,
+        progress=progress,
     )
     k0, k1 = z if z is not None else (0, dims[2])
     return Volume(data, tuple(origin), tuple(spacing), tuple(dims), (k0, k1))

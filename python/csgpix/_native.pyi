@@ -1,7 +1,7 @@
 """Type stubs of csgpix._native, the Rust library behind the csgpix package."""
 
 from os import PathLike
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -47,6 +47,7 @@ def voxelize(
     word: str = "10/10/11",
     z: Optional[Tuple[int, int]] = None,
     max_memory: Optional[int] = None,
+    progress: Optional[Callable[[int, int], object]] = None,
 ) -> Tuple[npt.NDArray[np.uint8], _Vec3, _Vec3, Tuple[int, int, int]]: ...
 def mesh(
     data: npt.NDArray[np.uint8],
@@ -119,6 +120,7 @@ def zarr_write_rows(
     word: str = "10/10/11",
     threads: Optional[int] = None,
     max_memory: Optional[int] = None,
+    progress: Optional[Callable[[int, int], object]] = None,
 ) -> Dict[str, int]: ...
 
 # --- array models (cocotb reference) -----------------------------------------------------

@@ -67,6 +67,26 @@ def test_the_models_agree():
         assert np.array_equal(csgpix.voxelize(scene, 24, eval=ev).data, word)
 
 
+@pytest.mark.parametrize("route", ["runs", "intervals"])
+def test_progress_counts_up_to_its_total(route):
+    scene = csgpix.load(SCENES / "csg-logo.csg")
+    calls = []
+    vol = csgpix.voxelize(scene, 24, route=route, progress=lambda d, t: calls.append((d, t)))
+    assert np.array_equal(vol.data, csgpix.voxelize(scene, 24, route=route).data)
+    totals = {t for _, t in calls}
+    assert len(totals) == 1 and totals.pop() > 0
+    done = [d for d, _ in calls]
+    assert done == sorted(done) and done[-1] == calls[-1][1]
+
+
+def test_an_exception_in_progress_is_raised_after_the_run():
+    def fail(done, total):
+        raise ValueError(f"stop at {done}")
+
+    with pytest.raises(ValueError, match="stop at"):
+        csgpix.voxelize(csgpix.load(SCENES / "figure-5.2.csg"), 16, progress=fail)
+
+
 def test_an_expression_over_files(tmp):
     # A dataset minus a box scene: the same as the command line's --expr run.
     prims = [("head", (str(SCENES / "phantom.nrrd"), 300.0)), ("box", str(SCENES / "figure-5.2.csg"))]
