@@ -128,6 +128,20 @@ pub fn report_line(line: &str, to_stderr: bool) {
     }
 }
 
+/// A report as `--json` prints it (pretty, one object) or as its text lines (`text`).
+pub fn print<T: serde::Serialize>(
+    json: bool,
+    report: &T,
+    text: impl FnOnce(&T),
+) -> run::Result<ExitCode> {
+    if json {
+        print_json(report)?;
+    } else {
+        text(report);
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
 /// A report as `--json` prints it: pretty, one object.
 pub fn print_json<T: serde::Serialize>(report: &T) -> run::Result<()> {
     println!("{}", serde_json::to_string_pretty(report)?);

@@ -69,12 +69,7 @@ impl Args {
 
 pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
     let report = a.job().run(&Bars::default())?;
-    if a.json {
-        super::print_json(&report)?;
-    } else {
-        print_line(&a, &report);
-    }
-    Ok(ExitCode::SUCCESS)
+    super::print(a.json, &report, |r| print_line(&a, r))
 }
 
 fn print_line(a: &Args, r: &RenderReport) {

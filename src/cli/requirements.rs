@@ -76,12 +76,7 @@ impl Args {
 
 pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
     let report = a.job().run(&Bars::default())?;
-    if a.json {
-        super::print_json(&report)?;
-    } else {
-        print_text(&report);
-    }
-    Ok(ExitCode::SUCCESS)
+    super::print(a.json, &report, print_text)
 }
 
 fn print_text(r: &RequirementsReport) {

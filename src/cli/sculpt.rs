@@ -80,12 +80,7 @@ impl Args {
 
 pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
     let report = a.job().run(&Bars::default())?;
-    if a.json {
-        super::print_json(&report)?;
-    } else {
-        print_text(&a, &report);
-    }
-    Ok(ExitCode::SUCCESS)
+    super::print(a.json, &report, |r| print_text(&a, r))
 }
 
 fn print_text(a: &Args, r: &SculptReport) {

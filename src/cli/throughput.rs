@@ -108,12 +108,7 @@ pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
     let report = a
         .job()
         .run_with_charts(&super::plot::Plotters, &Bars::default())?;
-    if a.json {
-        super::print_json(&report)?;
-    } else {
-        print_text(&report);
-    }
-    Ok(ExitCode::SUCCESS)
+    super::print(a.json, &report, print_text)
 }
 
 fn print_text(r: &ThroughputReport) {

@@ -194,12 +194,7 @@ impl Args {
 
 pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
     let report = a.job().run(&Bars::default())?;
-    if a.json {
-        super::print_json(&report)?;
-    } else {
-        print_text(&a, &report);
-    }
-    Ok(ExitCode::SUCCESS)
+    super::print(a.json, &report, |r| print_text(&a, r))
 }
 
 /// The closing lines: on standard output, or on standard error when an output went there.

@@ -759,16 +759,14 @@ mod obj {
     ) -> Result<DVec3, Located> {
         let mut c = [0.0; 3];
         for (k, c) in c.iter_mut().enumerate() {
-            let (col, w) = words.next().ok_or_else(|| {
-                (
-                    end,
-                    Error::Needs {
-                        what: "a vertex",
-                        needs: "3 coordinates",
-                        found: k,
-                    },
-                )
-            })?;
+            let (col, w) = words.next().ok_or((
+                end,
+                Error::Needs {
+                    what: "a vertex",
+                    needs: "3 coordinates",
+                    found: k,
+                },
+            ))?;
             *c = finite(w).ok_or_else(|| {
                 (
                     col,
@@ -824,7 +822,7 @@ mod obj {
             ..=-1 => usize::try_from(n as i64 + i).ok(),
             0 => None,
         };
-        k.ok_or_else(|| Error::VertexIndex {
+        k.ok_or(Error::VertexIndex {
             index: i,
             defined: n,
         })
