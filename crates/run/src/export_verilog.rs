@@ -92,7 +92,7 @@ pub struct SceneFiles {
 
 impl ExportVerilogJob {
     /// The memory plan: with a scene, the expected states held in memory, the control
-    /// stream and the cycle model ([`bound`]); else nothing grows.
+    /// stream and the cycle model (`bound`); else nothing grows.
     pub fn estimate(&self) -> crate::Result<u64> {
         if self.scene.is_empty() {
             return Ok(0);

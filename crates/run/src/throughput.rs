@@ -167,7 +167,7 @@ pub struct SceneReport {
 
 impl ThroughputJob {
     /// The memory plan: the figures are a few numbers a panel; with `simulate`, one panel's
-    /// cycle model at a time, checked against the limit before each run ([`simulate`]).
+    /// cycle model at a time, checked against the limit before each run (`simulate`).
     pub fn estimate(&self) -> crate::Result<u64> {
         Ok(0)
     }

@@ -8,16 +8,21 @@ use csgpix_draw::Model;
 use csgpix_scene::solid::CsgScene;
 use csgpix_sculpt::octree;
 use csgpix_voxel::blend::BlendEval;
-use csgpix_voxel::blist::{BlistEval, BlistTable};
+use csgpix_voxel::blist::BlistEval;
 use csgpix_voxel::evaluate::{StackEval, TreeEval};
 use csgpix_voxel::sampled::Loaded;
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{voxelize_slabs, Error as VoxelError, Grid, Route, Slicer, SlicerOptions};
 
-use super::route::Ran;
-use super::{Eval, Format, RouteKind, Voxelization, VoxelizeJob, VoxelizeReport};
+use super::{Eval, Format, RouteKind, Voxelization, VoxelizeJob};
 use crate::lib_errors::voxel as voxel_error;
+#[cfg(feature = "zarr")]
+use crate::memory::imports_estimate;
 use crate::{lib_errors, Error};
+#[cfg(feature = "zarr")]
+use csgpix_voxel::PixelBox;
+#[cfg(feature = "zarr")]
+use csgpix_zarr::Layout;
 
 /// The voxelizer's worker threads: `threads` of them, or by default one per core (rayon's).
 pub fn thread_pool(threads: Option<usize>) -> crate::Result<rayon::ThreadPool> {
@@ -108,7 +113,7 @@ impl Voxelization {
 }
 
 /// `--json`'s name of a route: the float model's slab route is `float`, as it always was.
-fn route_name(route: Route) -> &'static str {
+pub(super) fn route_name(route: Route) -> &'static str {
     match route {
         Route::Array { .. } => "array",
         Route::Intervals => "intervals",
@@ -198,7 +203,7 @@ impl Plan {
         if job.format() == Format::Zarr {
             // Nothing else is held: the format's check refuses --store beside a Zarr store.
             let layout = job.zarr_layout();
-            let need = super::zarr::estimate(slicer, self.route, eval, threads, (&layout, None));
+            let need = zarr_estimate(slicer, self.route, eval, threads, (&layout, None));
             return need.map_err(|e| job.zarr_message(e));
         }
         let grid = &slicer.grid;
@@ -257,50 +262,6 @@ impl Plan {
         })?;
         Ok(out)
     }
-
-    /// The report of the job's run.
-    pub fn report(
-        &self,
-        job: &VoxelizeJob,
-        scene: &CsgScene,
-        ran: Ran,
-        memory_estimate: u64,
-    ) -> VoxelizeReport {
-        let (slicer, v) = (&self.slicer, &job.voxels);
-        let pixels = slicer.grid.slice_len();
-        let table = BlistTable::compile(&scene.root);
-        let sampled = slicer.sampled.iter().filter_map(|s| s.warning());
-        VoxelizeReport {
-            memory_estimate,
-            dims: slicer.grid.dims,
-            sampling: crate::named::Named::name(job.grid.sampling),
-            voxel: slicer.grid.voxel().to_array(),
-            min: slicer.grid.min.to_array(),
-            max: slicer.grid.max.to_array(),
-            model: v.model.name(),
-            route: route_name(self.route),
-            eval: crate::named::Named::name(v.eval),
-            solids: scene.solids.len(),
-            imports: scene.imports.len(),
-            values: v.values(),
-            label_bits: table.label_bits,
-            blist_rows: table.rows.len(),
-            state_bits_per_voxel: self.eval.state_bytes(pixels) * 8 / pixels.max(1),
-            work: ran.work,
-            store: ran.store,
-            zarr: ran.zarr,
-            mesh: ran.mesh,
-            hardware_seconds: ran.work.cycles as f64 * 1e-7,
-            wall_seconds: ran.wall,
-            warnings: scene
-                .warnings
-                .iter()
-                .map(|w| w.to_string())
-                .chain(sampled.map(|w| w.to_string()))
-                .collect(),
-            to_stdout: ran.to_stdout,
-        }
-    }
 }
 
 /// Whether the NRRD file is written slice by slice as the run route sweeps them, the volume
@@ -314,4 +275,41 @@ fn streams(job: &VoxelizeJob, route: Route, runs_nrrd: Option<[u64; 2]>) -> bool
     let runs = matches!(route, Route::Runs { .. });
     let eligible = job.format() == Format::Nrrd && o.store.is_none() && alone && runs;
     eligible && runs_nrrd.is_some_and(|[swept, whole]| swept <= whole)
+}
+
+/// Whether the store is written brick by brick (a chunk row of one XY tile: the run route)
+/// rather than a whole chunk row at a time.
+pub fn by_bricks(route: Route) -> bool {
+    matches!(route, Route::Runs { .. })
+}
+
+#[cfg(feature = "zarr")]
+/// The memory of voxelizing chunk rows of a store cut by `layout` on the slicer's grid with
+/// `threads` threads (docs/memory.md): on the run route a tile's runs (of `tiles`, a task's
+/// share of [`ZarrVolume::tiles`], or of any tile) and the writer's bricks, else the rows'
+/// slabs, the writer's and the imports' samples.
+pub fn zarr_estimate(
+    slicer: &Slicer,
+    route: Route,
+    eval: &dyn SliceEval,
+    threads: usize,
+    (layout, tiles): (&Layout, Option<Range<usize>>),
+) -> Result<u64, csgpix_zarr::Error> {
+    let grid = &slicer.grid;
+    if by_bricks(route) {
+        let levels = csgpix_zarr::plan(grid.dims, layout)?;
+        let tile = csgpix_zarr::tile(grid.dims, &levels);
+        let writer = csgpix_zarr::writer_bytes_bricks(grid.dims, layout, threads)?;
+        // A task's tiles: only their panels' datasets are walked to count their runs.
+        let boxes = csgpix_zarr::tile_boxes(grid.dims, tile);
+        let within = tiles.and_then(|t| boxes.get(t)).map(|b| {
+            let all = b.iter().copied().reduce(PixelBox::union);
+            all.unwrap_or(PixelBox::new(0, 0, 0, 0))
+        });
+        let runs = csgpix_voxel::runs::memory_estimate_bricks(slicer, eval, threads, tile, within);
+        return Ok(runs.saturating_add(writer));
+    }
+    let prims = slicer.primitive_count();
+    let rows = csgpix_zarr::memory_estimate(grid, layout, prims, threads)?;
+    Ok(rows.saturating_add(imports_estimate(slicer)))
 }

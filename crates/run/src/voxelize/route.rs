@@ -7,15 +7,19 @@ use std::time::Instant;
 
 use csgpix_output::Out;
 use csgpix_scene::nrrd::VolumeFormat;
+use csgpix_scene::solid::CsgScene;
 use csgpix_sculpt::octree::{self, StoreKind};
+use csgpix_voxel::blist::BlistTable;
 use csgpix_voxel::slice::SliceEval;
 use csgpix_voxel::{voxelize, voxelize_slabs, Error as VoxelError, Route, Slicer, Volume, Work};
 use rtl_model::EquationSet;
 use serde::Serialize;
 
 use super::outputs::{MeshReport, Staged};
-use super::plan::{Budget, Plan};
-use super::{Format, VoxelizeJob, ZarrReport};
+use super::plan::{route_name, Budget, Plan};
+#[cfg(feature = "zarr")]
+use super::Format;
+use super::{VoxelizeJob, VoxelizeReport, ZarrReport};
 use crate::progress::Progress;
 use crate::{lib_errors, store};
 
@@ -210,7 +214,7 @@ fn zarr(
     let store = job.create_store(&plan.slicer.grid, &root);
     let store = store.map_err(|e| job.zarr_message(e))?;
     let rows = store.chunk_rows().len();
-    let bricks = super::zarr::by_bricks(plan.route).then_some(rows * store.tiles().len());
+    let bricks = super::plan::by_bricks(plan.route).then_some(rows * store.tiles().len());
     stage(&plan.slicer, plan.route, bricks, progress);
     let work = plan.write_rows(job, &store, 0..rows, None, progress);
     let work = work.map_err(|e| match e {
@@ -292,5 +296,51 @@ enum Stop {
 impl From<VoxelError> for Stop {
     fn from(e: VoxelError) -> Stop {
         Stop::Voxel(e)
+    }
+}
+
+impl Plan {
+    /// The report of the job's run.
+    pub fn report(
+        &self,
+        job: &VoxelizeJob,
+        scene: &CsgScene,
+        ran: Ran,
+        memory_estimate: u64,
+    ) -> VoxelizeReport {
+        let (slicer, v) = (&self.slicer, &job.voxels);
+        let pixels = slicer.grid.slice_len();
+        let table = BlistTable::compile(&scene.root);
+        let sampled = slicer.sampled.iter().filter_map(|s| s.warning());
+        VoxelizeReport {
+            memory_estimate,
+            dims: slicer.grid.dims,
+            sampling: crate::named::Named::name(job.grid.sampling),
+            voxel: slicer.grid.voxel().to_array(),
+            min: slicer.grid.min.to_array(),
+            max: slicer.grid.max.to_array(),
+            model: v.model.name(),
+            route: route_name(self.route),
+            eval: crate::named::Named::name(v.eval),
+            solids: scene.solids.len(),
+            imports: scene.imports.len(),
+            values: v.values(),
+            label_bits: table.label_bits,
+            blist_rows: table.rows.len(),
+            state_bits_per_voxel: self.eval.state_bytes(pixels) * 8 / pixels.max(1),
+            work: ran.work,
+            store: ran.store,
+            zarr: ran.zarr,
+            mesh: ran.mesh,
+            hardware_seconds: ran.work.cycles as f64 * 1e-7,
+            wall_seconds: ran.wall,
+            warnings: scene
+                .warnings
+                .iter()
+                .map(|w| w.to_string())
+                .chain(sampled.map(|w| w.to_string()))
+                .collect(),
+            to_stdout: ran.to_stdout,
+        }
     }
 }

@@ -8,15 +8,14 @@ use std::path::Path;
 
 use csgpix_voxel::sampled::Loaded;
 use csgpix_voxel::slice::SliceEval;
-use csgpix_voxel::{Grid, PixelBox, Route, Slicer, Work};
+use csgpix_voxel::{Grid, Route, Slicer, Work};
 use csgpix_zarr::{voxelize_bricks, voxelize_rows, Layout, VolumeAttrs, ZarrVolume};
 use rtl_model::EquationSet;
 
 use serde::Serialize;
 
-use super::plan::Plan;
+use super::plan::{by_bricks, zarr_estimate as estimate, Plan};
 use super::VoxelizeJob;
-use crate::memory::imports_estimate;
 use crate::progress::Progress;
 use crate::Error;
 
@@ -166,42 +165,6 @@ pub fn create_store(
     let values = csgpix_zarr::values_text(grey, blend);
     let attrs = VolumeAttrs::new(format!("csgpix voxelize {name}"), values);
     ZarrVolume::create(root, grid, layout, &attrs)
-}
-
-/// Whether the store is written brick by brick (a chunk row of one XY tile: the run route)
-/// rather than a whole chunk row at a time.
-pub fn by_bricks(route: Route) -> bool {
-    matches!(route, Route::Runs { .. })
-}
-
-/// The memory of voxelizing chunk rows of a store cut by `layout` on the slicer's grid with
-/// `threads` threads (docs/memory.md): on the run route a tile's runs (of `tiles`, a task's
-/// share of [`ZarrVolume::tiles`], or of any tile) and the writer's bricks, else the rows'
-/// slabs, the writer's and the imports' samples.
-pub fn estimate(
-    slicer: &Slicer,
-    route: Route,
-    eval: &dyn SliceEval,
-    threads: usize,
-    (layout, tiles): (&Layout, Option<Range<usize>>),
-) -> Result<u64, csgpix_zarr::Error> {
-    let grid = &slicer.grid;
-    if by_bricks(route) {
-        let levels = csgpix_zarr::plan(grid.dims, layout)?;
-        let tile = csgpix_zarr::tile(grid.dims, &levels);
-        let writer = csgpix_zarr::writer_bytes_bricks(grid.dims, layout, threads)?;
-        // A task's tiles: only their panels' datasets are walked to count their runs.
-        let boxes = csgpix_zarr::tile_boxes(grid.dims, tile);
-        let within = tiles.and_then(|t| boxes.get(t)).map(|b| {
-            let all = b.iter().copied().reduce(PixelBox::union);
-            all.unwrap_or(PixelBox::new(0, 0, 0, 0))
-        });
-        let runs = csgpix_voxel::runs::memory_estimate_bricks(slicer, eval, threads, tile, within);
-        return Ok(runs.saturating_add(writer));
-    }
-    let prims = slicer.primitive_count();
-    let rows = csgpix_zarr::memory_estimate(grid, layout, prims, threads)?;
-    Ok(rows.saturating_add(imports_estimate(slicer)))
 }
 
 /// Voxelize chunk rows `rows` of `store` by `route` and store them: on the run route their
