@@ -317,7 +317,7 @@ pub enum Error {
          triangles and the surface bounds a solid"
     )]
     NotClosed {
-        /// The open edges, as [`crate::TriMesh::open_edges_summary`] words them.
+        /// The open edges, as [`crate::trimesh::TriMesh::open_edges_summary`] words them.
         open: String,
     },
     /// A triangle that refers to a vertex the mesh does not have.
@@ -556,7 +556,7 @@ pub enum Error {
     OpenMeshVoxelized {
         /// The mesh file.
         file: String,
-        /// The open edges, as [`crate::TriMesh::open_edges_summary`] words them.
+        /// The open edges, as [`crate::trimesh::TriMesh::open_edges_summary`] words them.
         open: String,
     },
     /// An operation on an imported file that csgpix does not do.

@@ -286,7 +286,7 @@ pub fn by_bricks(route: Route) -> bool {
 #[cfg(feature = "zarr")]
 /// The memory of voxelizing chunk rows of a store cut by `layout` on the slicer's grid with
 /// `threads` threads (docs/memory.md): on the run route a tile's runs (of `tiles`, a task's
-/// share of [`ZarrVolume::tiles`], or of any tile) and the writer's bricks, else the rows'
+/// share of [`csgpix_zarr::ZarrVolume::tiles`], or of any tile) and the writer's bricks, else the rows'
 /// slabs, the writer's and the imports' samples.
 pub fn zarr_estimate(
     slicer: &Slicer,
