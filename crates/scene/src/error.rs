@@ -814,6 +814,64 @@ pub enum Error {
     #[error("a path has an arc of radius 0")]
     ZeroRadiusArc,
 
+    // --- Other crates' errors --------------------------------------------------------------
+    /// A display list or clip program that does not compile: the draw compiler's reason
+    /// (`CompileError::msg`; its plane and field place it in an enclosing [`Error::At`] or
+    /// [`Error::Context`]).
+    #[error("{}", OneLine(reason))]
+    Compile {
+        /// What is wrong, as the compiler words it.
+        reason: String,
+    },
+    /// A `.pla` file of golden vectors that does not parse: the parser's reason (`PlaError::
+    /// msg`; its line and column in an enclosing [`Error::At`]).
+    #[error("{}", OneLine(reason))]
+    Pla {
+        /// What is wrong, as the parser words it.
+        reason: String,
+    },
+    /// A warning of the OpenSCAD reader (OpenSCAD's own wording where it warns too, or that
+    /// of the mesh, DXF or font reader it called), located in an enclosing [`Error::At`].
+    #[error("{}", OneLine(message))]
+    Warning {
+        /// The warning, one line.
+        message: String,
+    },
+
+    // --- DXF -------------------------------------------------------------------------------
+    /// A DXF entity whose fragments would pass the scene's vertex limit.
+    #[error(
+        "the {} entity would pass the scene's vertex limit ({left} vertices left; the limit \
+         follows the memory limit, e.g. --max-memory)",
+        OneLine(entity)
+    )]
+    DxfVertexLimit {
+        /// The entity's type, as written (at most 40 characters).
+        entity: String,
+        /// The vertices left.
+        left: usize,
+    },
+    /// A DXF arc or ellipse whose end angle is more whole turns below its start than csgpix
+    /// unwinds.
+    #[error("the {} entity's end angle is more than {turns:e} turns below its start", OneLine(entity))]
+    DxfAngleTurns {
+        /// The entity's type, as written.
+        entity: String,
+        /// The most turns unwound.
+        turns: f64,
+    },
+    /// A DXF entity with a point that is not finite or is past csgpix's coordinate limit.
+    #[error(
+        "the {} entity has a point beyond csgpix's coordinate limit {limit:e}",
+        OneLine(entity)
+    )]
+    DxfCoordinateLimit {
+        /// The entity's type, as written.
+        entity: String,
+        /// The largest coordinate accepted.
+        limit: f64,
+    },
+
     // --- Not yet typed ---------------------------------------------------------------------
     /// A parser's message not yet given a variant of its own (the OpenSCAD lexer and
     /// parser, the NRRD header, XML mesh formats, display lists, DXF): what is wrong, one
