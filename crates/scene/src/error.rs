@@ -814,6 +814,89 @@ pub enum Error {
     #[error("a path has an arc of radius 0")]
     ZeroRadiusArc,
 
+    // --- NRRD headers ----------------------------------------------------------------------
+    /// Input that is not what its format allows at this point, where nothing in particular is
+    /// found instead (a line of no field, a missing field, too few bytes to skip).
+    #[error("expected {expected}")]
+    ExpectedHere {
+        /// What the format allows here.
+        expected: String,
+    },
+    /// A NRRD header field the format does not have.
+    #[error("unknown field `{}`", OneLine(name))]
+    UnknownField {
+        /// The field's name, as written.
+        name: String,
+    },
+    /// A header field given a second time.
+    #[error("`{}` given twice (first on line {first_line})", OneLine(name))]
+    DuplicateField {
+        /// The field's name, as written the second time.
+        name: String,
+        /// The line of its first occurrence.
+        first_line: usize,
+    },
+    /// A NRRD encoding of the format that csgpix does not read (text, hex, bzip2).
+    #[error("expected encoding raw or gzip (`{}` is not supported)", OneLine(encoding))]
+    UnsupportedEncoding {
+        /// The encoding, as written (lowercased).
+        encoding: String,
+    },
+    /// A multi-byte NRRD sample type without an `endian:` field.
+    #[error("the {bytes}-byte type {ty} needs an `endian:` field")]
+    NeedsEndian {
+        /// The bytes of a sample.
+        bytes: usize,
+        /// The type's name (`uint16`).
+        ty: &'static str,
+    },
+    /// A volume with more samples than the limit.
+    #[error(
+        "sizes {}×{}×{} exceed the limit of {limit} samples{}",
+        sizes[0],
+        sizes[1],
+        sizes[2],
+        match set_by { Some(s) => format!(" ({s})"), None => String::new() }
+    )]
+    TooManySamples {
+        /// The sizes, X, Y, Z.
+        sizes: [usize; 3],
+        /// The most samples.
+        limit: usize,
+        /// What sets a limit lower than csgpix's own, when one does.
+        set_by: Option<&'static str>,
+    },
+    /// NRRD data that could not be read: `gzip` when it was to be decompressed, the reason.
+    #[error("expected {} data: {}", if *gzip { "gzip" } else { "readable" }, OneLine(reason))]
+    UnreadableData {
+        /// Whether the data are gzip.
+        gzip: bool,
+        /// The system's or decoder's message.
+        reason: String,
+    },
+    /// NRRD data of another number of bytes than the sizes and type need: `found` the bytes
+    /// there are when fewer, `None` when more.
+    #[error(
+        "sizes {}×{}×{} of {ty} need {bytes} data bytes{}, found {}",
+        sizes[0],
+        sizes[1],
+        sizes[2],
+        if *gzip { " after decompression" } else { "" },
+        match found { Some(n) => format!("only {n}"), None => "more".to_string() }
+    )]
+    DataBytes {
+        /// The sizes, X, Y, Z.
+        sizes: [usize; 3],
+        /// The sample type's name.
+        ty: &'static str,
+        /// The bytes needed.
+        bytes: usize,
+        /// Whether they are counted after decompression.
+        gzip: bool,
+        /// The bytes there are, when fewer.
+        found: Option<u64>,
+    },
+
     // --- Other crates' errors --------------------------------------------------------------
     /// A display list or clip program that does not compile: the draw compiler's reason
     /// (`CompileError::msg`; its plane and field place it in an enclosing [`Error::At`] or
