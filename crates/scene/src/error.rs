@@ -814,6 +814,104 @@ pub enum Error {
     #[error("a path has an arc of radius 0")]
     ZeroRadiusArc,
 
+    // --- AMF and 3MF ------------------------------------------------------------------------
+    /// An XML mesh file whose root element is not the format's.
+    #[error("not {what}: its root element is <{}>, not <{want}>", OneLine(root))]
+    WrongRootElement {
+        /// What the file is not (`an AMF file`, `a 3MF model`).
+        what: &'static str,
+        /// The root element's name.
+        root: String,
+        /// The root element the format has.
+        want: &'static str,
+    },
+    /// A warning: a unit other than millimetres, which OpenSCAD ignores; `whatever` when the
+    /// message adds that it does so whatever the unit (AMF).
+    #[error(
+        "unit \"{}\" is ignored: OpenSCAD 2021.01 reads {format} coordinates as millimetres{}",
+        OneLine(unit),
+        if *whatever { ", whatever the unit" } else { "" }
+    )]
+    UnitIgnored {
+        /// The unit, as written.
+        unit: String,
+        /// `AMF` or `3MF`.
+        format: &'static str,
+        /// Whether to add ", whatever the unit".
+        whatever: bool,
+    },
+    /// A warning: part of a 3MF file OpenSCAD does not apply (`what` is its subject, with
+    /// its verb: `components are`).
+    #[error("{what} not applied: OpenSCAD 2021.01 imports each mesh object once, where it is defined")]
+    NotApplied {
+        /// What is not applied, with its verb.
+        what: &'static str,
+    },
+    /// An AMF element without a child element it needs.
+    #[error("{parent} has no <{child}>")]
+    NoChildElement {
+        /// The element, as the message names it (`a <triangle>`).
+        parent: &'static str,
+        /// The child's name.
+        child: &'static str,
+    },
+    /// An AMF coordinate element that is not a finite number.
+    #[error("<{element}> must be a finite number, found \"{}\"", OneLine(text))]
+    NotFiniteElement {
+        /// The element's name.
+        element: &'static str,
+        /// Its text, trimmed.
+        text: String,
+    },
+    /// An AMF triangle corner that is not the index of a vertex listed so far.
+    #[error(
+        "<{element}> must index the {count} vertices listed so far (from 0), found \"{}\"",
+        OneLine(text)
+    )]
+    ElementVertexIndex {
+        /// The element's name (`v1`).
+        element: &'static str,
+        /// The vertices listed so far.
+        count: usize,
+        /// Its text, trimmed.
+        text: String,
+    },
+    /// A 3MF package whose relationships name no 3D model part.
+    #[error("no relationship names the 3D model part")]
+    No3mfModelRelationship,
+    /// A 3MF build item naming an object the resources do not define.
+    #[error("the build item names object \"{}\", which the resources do not define", OneLine(id))]
+    UndefinedObject {
+        /// The object's id, as written.
+        id: String,
+    },
+    /// An XML element without an attribute it needs.
+    #[error("a <{element}> needs its attribute {attribute}")]
+    MissingAttribute {
+        /// The element's name.
+        element: &'static str,
+        /// The attribute's name.
+        attribute: &'static str,
+    },
+    /// A 3MF vertex coordinate that is not a finite 32-bit number.
+    #[error("{attribute}=\"{}\" is not a finite 32-bit number", OneLine(text))]
+    NotFiniteAttribute {
+        /// The attribute's name.
+        attribute: &'static str,
+        /// Its value, as written.
+        text: String,
+    },
+    /// A 3MF triangle corner that is not the index of one of the mesh's vertices.
+    #[error("{attribute}=\"{}\" must index the mesh's {count} vertices (from 0)", OneLine(text))]
+    AttributeVertexIndex {
+        /// The attribute's name (`v1`).
+        attribute: &'static str,
+        /// Its value, as written.
+        text: String,
+        /// The mesh's vertices.
+        count: usize,
+    },
+
     // --- NRRD headers ----------------------------------------------------------------------
     /// Input that is not what its format allows at this point, where nothing in particular is
     /// found instead (a line of no field, a missing field, too few bytes to skip).
