@@ -842,7 +842,9 @@ pub enum Error {
     },
     /// A warning: part of a 3MF file OpenSCAD does not apply (`what` is its subject, with
     /// its verb: `components are`).
-    #[error("{what} not applied: OpenSCAD 2021.01 imports each mesh object once, where it is defined")]
+    #[error(
+        "{what} not applied: OpenSCAD 2021.01 imports each mesh object once, where it is defined"
+    )]
     NotApplied {
         /// What is not applied, with its verb.
         what: &'static str,
@@ -880,7 +882,10 @@ pub enum Error {
     #[error("no relationship names the 3D model part")]
     No3mfModelRelationship,
     /// A 3MF build item naming an object the resources do not define.
-    #[error("the build item names object \"{}\", which the resources do not define", OneLine(id))]
+    #[error(
+        "the build item names object \"{}\", which the resources do not define",
+        OneLine(id)
+    )]
     UndefinedObject {
         /// The object's id, as written.
         id: String,
@@ -902,7 +907,10 @@ pub enum Error {
         text: String,
     },
     /// A 3MF triangle corner that is not the index of one of the mesh's vertices.
-    #[error("{attribute}=\"{}\" must index the mesh's {count} vertices (from 0)", OneLine(text))]
+    #[error(
+        "{attribute}=\"{}\" must index the mesh's {count} vertices (from 0)",
+        OneLine(text)
+    )]
     AttributeVertexIndex {
         /// The attribute's name (`v1`).
         attribute: &'static str,
@@ -935,7 +943,10 @@ pub enum Error {
         first_line: usize,
     },
     /// A NRRD encoding of the format that csgpix does not read (text, hex, bzip2).
-    #[error("expected encoding raw or gzip (`{}` is not supported)", OneLine(encoding))]
+    #[error(
+        "expected encoding raw or gzip (`{}` is not supported)",
+        OneLine(encoding)
+    )]
     UnsupportedEncoding {
         /// The encoding, as written (lowercased).
         encoding: String,
@@ -1034,7 +1045,10 @@ pub enum Error {
     },
     /// A DXF arc or ellipse whose end angle is more whole turns below its start than csgpix
     /// unwinds.
-    #[error("the {} entity's end angle is more than {turns:e} turns below its start", OneLine(entity))]
+    #[error(
+        "the {} entity's end angle is more than {turns:e} turns below its start",
+        OneLine(entity)
+    )]
     DxfAngleTurns {
         /// The entity's type, as written.
         entity: String,
@@ -1054,9 +1068,8 @@ pub enum Error {
     },
 
     // --- Not yet typed ---------------------------------------------------------------------
-    /// A parser's message not yet given a variant of its own (the OpenSCAD lexer and
-    /// parser, the NRRD header, XML mesh formats, display lists, DXF): what is wrong, one
-    /// line (the place, when it has one, is in an enclosing [`Error::At`]).
+    /// A message of the OpenSCAD lexer and parser, not yet given a variant of its own: what
+    /// is wrong, one line (the place, when it has one, is in an enclosing [`Error::At`]).
     #[error("{}", OneLine(.0))]
     Invalid(String),
 }
@@ -1383,5 +1396,90 @@ mod tests {
              limit: 20 more vertices, 10 left (the limit follows the memory limit, e.g. \
              --max-memory)"
         );
+    }
+    #[test]
+    fn nrrd_header_variants_keep_their_messages() {
+        let e = Error::DuplicateField {
+            name: "sizes".into(),
+            first_line: 3,
+        };
+        assert_eq!(
+            Error::at("v.nrrd", 5, 1, e).to_string(),
+            "v.nrrd:5:1: `sizes` given twice (first on line 3)"
+        );
+        let e = Error::UnsupportedEncoding {
+            encoding: "bzip2".into(),
+        };
+        assert_eq!(
+            e.to_string(),
+            "expected encoding raw or gzip (`bzip2` is not supported)"
+        );
+        let e = Error::TooManySamples {
+            sizes: [2, 3, 4],
+            limit: 10,
+            set_by: Some("--max-memory"),
+        };
+        assert_eq!(
+            e.to_string(),
+            "sizes 2×3×4 exceed the limit of 10 samples (--max-memory)"
+        );
+        let e = Error::DataBytes {
+            sizes: [2, 2, 2],
+            ty: "uint16",
+            bytes: 16,
+            gzip: true,
+            found: Some(3),
+        };
+        assert_eq!(
+            e.to_string(),
+            "sizes 2×2×2 of uint16 need 16 data bytes after decompression, found only 3"
+        );
+        let e = Error::ExpectedHere {
+            expected: "`(x,y,z)` or `none`".into(),
+        };
+        assert_eq!(e.to_string(), "expected `(x,y,z)` or `none`");
+    }
+
+    #[test]
+    fn xml_mesh_and_dxf_variants_keep_their_messages() {
+        let e = Error::UnitIgnored {
+            unit: "inch".into(),
+            format: "AMF",
+            whatever: true,
+        };
+        assert_eq!(
+            e.to_string(),
+            "unit \"inch\" is ignored: OpenSCAD 2021.01 reads AMF coordinates as millimetres, \
+             whatever the unit"
+        );
+        let e = Error::NotApplied {
+            what: "components are",
+        };
+        assert_eq!(
+            e.to_string(),
+            "components are not applied: OpenSCAD 2021.01 imports each mesh object once, where \
+             it is defined"
+        );
+        let e = Error::AttributeVertexIndex {
+            attribute: "v2",
+            text: "9".into(),
+            count: 4,
+        };
+        assert_eq!(
+            e.to_string(),
+            "v2=\"9\" must index the mesh's 4 vertices (from 0)"
+        );
+        let e = Error::DxfAngleTurns {
+            entity: "ARC".into(),
+            turns: 1e6,
+        };
+        assert_eq!(
+            e.to_string(),
+            "the ARC entity's end angle is more than 1e6 turns below its start"
+        );
+        let e = Error::Compile {
+            reason: "bad\ncolour".into(),
+        };
+        assert_eq!(e.to_string(), OneLine("bad\ncolour").to_string());
     }
 }

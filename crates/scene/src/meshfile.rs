@@ -133,12 +133,7 @@ impl<'a> Xml<'a> {
     /// `problem` at the start of `node`.
     pub(crate) fn error(&self, node: roxmltree::Node, problem: Error) -> Error {
         let p = self.doc.text_pos_at(node.range().start);
-        Error::at(
-            self.file,
-            p.row as usize,
-            p.col as usize,
-            problem,
-        )
+        Error::at(self.file, p.row as usize, p.col as usize, problem)
     }
 }
 

@@ -770,11 +770,7 @@ fn dimension(h: &Header) -> Result<()> {
     let f = h.need("dimension")?;
     match f.value.trim() {
         "3" => Ok(()),
-        v => Err(h.err(
-            f,
-            0,
-            expected("dimension 3 (a volume)", v),
-        )),
+        v => Err(h.err(f, 0, expected("dimension 3 (a volume)", v))),
     }
 }
 
@@ -870,9 +866,11 @@ fn big_endian(h: &Header, ty: SampleType) -> Result<bool> {
 fn skips(h: &Header, encoding: Encoding) -> Result<(usize, Option<u64>)> {
     let lines = match h.get("line skip") {
         None => 0,
-        Some(f) => f.value.trim().parse::<usize>().map_err(|_| {
-            h.err(f, 0, expected("a line count ≥ 0", f.value))
-        })?,
+        Some(f) => f
+            .value
+            .trim()
+            .parse::<usize>()
+            .map_err(|_| h.err(f, 0, expected("a line count ≥ 0", f.value)))?,
     };
     let bytes = match h.get("byte skip") {
         None => Some(0),
@@ -976,8 +974,7 @@ fn spacings(h: &Header, f: Field) -> Result<DMat3> {
     }
     let mut d = [0.0; 3];
     for (s, &(off, word)) in d.iter_mut().zip(&w) {
-        *s = number(word)
-            .ok_or_else(|| h.err(f, off, expected("a finite spacing", word)))?;
+        *s = number(word).ok_or_else(|| h.err(f, off, expected("a finite spacing", word)))?;
     }
     Ok(DMat3::from_diagonal(DVec3::from(d)))
 }
@@ -1024,13 +1021,8 @@ fn vector(h: &Header, f: Field, off: usize, inner: &str) -> Result<DVec3> {
     let mut o = off;
     for (c, part) in v.iter_mut().zip(parts) {
         let lead = part.len() - part.trim_start().len();
-        *c = number(part).ok_or_else(|| {
-            h.err(
-                f,
-                o + lead,
-                expected("a finite number", part.trim()),
-            )
-        })?;
+        *c = number(part)
+            .ok_or_else(|| h.err(f, o + lead, expected("a finite number", part.trim())))?;
         o += part.len() + 1;
     }
     Ok(DVec3::from(v))
@@ -1082,8 +1074,7 @@ fn fetch(h: &Header, plan: &Plan, bytes: &[u8], dir: Option<&Path>) -> Result<Ve
 fn data_path(h: &Header, f: Field, dir: Option<&Path>) -> Result<PathBuf> {
     let v = f.value.trim();
     if v.starts_with("LIST") || (v.contains('%') && words(v).len() >= 4) || v.is_empty() {
-        let msg =
-            expected_here("one data file name (lists and numbered series are not supported)");
+        let msg = expected_here("one data file name (lists and numbered series are not supported)");
         return Err(h.err(f, 0, msg));
     }
     let p = Path::new(v);

@@ -144,15 +144,13 @@ fn mesh_soup(x: &Xml, mesh: roxmltree::Node) -> Result<Soup> {
     for v in children(mesh, "vertices").flat_map(|n| children(n, "vertex")) {
         let mut p = [0.0; 3];
         for (c, name) in p.iter_mut().zip(["x", "y", "z"]) {
-            let text = v
-                .attribute(name)
-                .ok_or_else(|| {
-                    let msg = Error::MissingAttribute {
-                        element: "vertex",
-                        attribute: name,
-                    };
-                    x.error(v, msg)
-                })?;
+            let text = v.attribute(name).ok_or_else(|| {
+                let msg = Error::MissingAttribute {
+                    element: "vertex",
+                    attribute: name,
+                };
+                x.error(v, msg)
+            })?;
             // lib3mf's vertices are 32-bit floats.
             *c = finite(text)
                 .map(|f| f64::from(f as f32))
