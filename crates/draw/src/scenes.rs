@@ -157,7 +157,9 @@ impl Scene {
     pub fn locate_error(&self, i: usize, e: &CompileError) -> csgpix_scene::Error {
         use crate::compile::{WHOLE_LIST, WHOLE_PROGRAM};
         use csgpix_scene::Error;
-        let problem = Error::invalid(e.msg.clone());
+        let problem = Error::Compile {
+            reason: e.msg.clone(),
+        };
         match (&self.origins[i], e.field) {
             // Display lists are clipped by --clip: the whole program is its.
             (Origin::List { .. }, WHOLE_PROGRAM) => return problem.context("--clip"),

@@ -318,8 +318,8 @@ impl<'s> Dxf<'s> {
         }
     }
 
-    fn fail(&self, line: usize, msg: impl std::fmt::Display) -> Error {
-        Error::invalid(msg.to_string()).context(format_args!("{}:{line}", self.name))
+    fn fail(&self, line: usize, problem: Error) -> Error {
+        problem.context(format_args!("{}:{line}", self.name))
     }
 
     /// A number as `boost::lexical_cast<double>` reads it, or None with OpenSCAD's warning
@@ -508,12 +508,10 @@ impl<'s> Dxf<'s> {
     fn over_budget(&self) -> Error {
         self.fail(
             self.mode_line,
-            format!(
-                "the {} entity would pass the scene's vertex limit ({} vertices left; the \
-                 limit follows the memory limit, e.g. --max-memory)",
-                shown(&self.mode),
-                self.budget
-            ),
+            Error::DxfVertexLimit {
+                entity: shown(&self.mode),
+                left: self.budget,
+            },
         )
     }
 
@@ -554,10 +552,10 @@ impl<'s> Dxf<'s> {
             stop += turn;
             turns += 1.0;
             if turns > MAX_TURNS {
-                let msg = format!(
-                    "the {} entity's end angle is more than {MAX_TURNS:e} turns below its start",
-                    shown(&self.mode)
-                );
+                let msg = Error::DxfAngleTurns {
+                    entity: shown(&self.mode),
+                    turns: MAX_TURNS,
+                };
                 return Err(Stop::Fail(self.fail(self.mode_line, msg)));
             }
         }
@@ -638,10 +636,10 @@ impl<'s> Dxf<'s> {
             .iter()
             .any(|p| !p.is_finite() || p.abs().max_element() > MAX_COORDINATE)
         {
-            let msg = format!(
-                "the {} entity has a point beyond csgpix's coordinate limit {MAX_COORDINATE:e}",
-                shown(&self.mode)
-            );
+            let msg = Error::DxfCoordinateLimit {
+                entity: shown(&self.mode),
+                limit: MAX_COORDINATE,
+            };
             return Err(self.fail(self.mode_line, msg));
         }
         if self.budget < 2 {

@@ -149,7 +149,10 @@ impl<'a> Reader<'a> {
                 let warnings = self
                     .warnings
                     .iter()
-                    .map(|(at, msg)| Error::at("", at.line, at.col, Error::invalid(msg.as_str())))
+                    .map(|(at, msg)| {
+                        let message = msg.clone();
+                        Error::at("", at.line, at.col, Error::Warning { message })
+                    })
                     .collect();
                 Ok(CsgScene {
                     solids,

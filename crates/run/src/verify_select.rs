@@ -67,7 +67,8 @@ fn load(dir: &Option<PathBuf>, t: Table, builtin: &str) -> crate::Result<VectorF
     };
     let file = VectorFile::parse(name.as_str(), &text);
     file.map_err(|e| {
-        csgpix_scene::Error::at(name, e.line, e.col, csgpix_scene::Error::invalid(e.msg)).into()
+        let problem = csgpix_scene::Error::Pla { reason: e.msg };
+        csgpix_scene::Error::at(name, e.line, e.col, problem).into()
     })
 }
 

@@ -56,10 +56,11 @@ fn parse_xml(bytes: &[u8], file: &str, warnings: Vec<Error>) -> Result<Objects> 
     let x = Xml::parse(utf8(bytes, file)?, file)?;
     let root = x.doc.root_element();
     if root.tag_name().name() != "amf" {
-        let msg = format!(
-            "not an AMF file: its root element is <{}>, not <amf>",
-            root.tag_name().name()
-        );
+        let msg = Error::WrongRootElement {
+            what: "an AMF file",
+            root: root.tag_name().name().to_string(),
+            want: "amf",
+        };
         return Err(x.error(root, msg));
     }
     let mut out = Objects {
@@ -68,10 +69,11 @@ fn parse_xml(bytes: &[u8], file: &str, warnings: Vec<Error>) -> Result<Objects> 
     };
     if let Some(u) = root.attribute("unit") {
         if !u.eq_ignore_ascii_case("millimeter") {
-            let msg = format!(
-                "unit \"{u}\" is ignored: OpenSCAD 2021.01 reads AMF coordinates as \
-                 millimetres, whatever the unit"
-            );
+            let msg = Error::UnitIgnored {
+                unit: u.to_string(),
+                format: "AMF",
+                whatever: true,
+            };
             out.warnings.push(x.error(root, msg));
         }
     }
@@ -120,16 +122,20 @@ fn coordinates(x: &Xml, c: roxmltree::Node) -> Result<[f64; 3]> {
     let mut p = [0.0; 3];
     for (k, name) in ["x", "y", "z"].into_iter().enumerate() {
         let Some(e) = children(c, name).last() else {
-            return Err(x.error(c, format!("a vertex's <coordinates> has no <{name}>")));
+            let msg = Error::NoChildElement {
+                parent: "a vertex's <coordinates>",
+                child: name,
+            };
+            return Err(x.error(c, msg));
         };
         let text = e.text().unwrap_or_default();
         p[k] = finite(text).ok_or_else(|| {
             x.error(
                 e,
-                format!(
-                    "<{name}> must be a finite number, found \"{}\"",
-                    text.trim()
-                ),
+                Error::NotFiniteElement {
+                    element: name,
+                    text: text.trim().to_string(),
+                },
             )
         })?;
     }
@@ -141,17 +147,22 @@ fn triangle(x: &Xml, t: roxmltree::Node, vs: &[[f64; 3]]) -> Result<[[f64; 3]; 3
     let mut tri = [[0.0; 3]; 3];
     for (k, name) in ["v1", "v2", "v3"].into_iter().enumerate() {
         let Some(e) = children(t, name).last() else {
-            return Err(x.error(t, format!("a <triangle> has no <{name}>")));
+            let msg = Error::NoChildElement {
+                parent: "a <triangle>",
+                child: name,
+            };
+            return Err(x.error(t, msg));
         };
         let text = e.text().unwrap_or_default().trim();
         let i = text.parse::<usize>().ok().filter(|&i| i < vs.len());
         tri[k] = vs[i.ok_or_else(|| {
             x.error(
                 e,
-                format!(
-                    "<{name}> must index the {} vertices listed so far (from 0), found \"{text}\"",
-                    vs.len()
-                ),
+                Error::ElementVertexIndex {
+                    element: name,
+                    count: vs.len(),
+                    text: text.to_string(),
+                },
             )
         })?];
     }

@@ -814,10 +814,262 @@ pub enum Error {
     #[error("a path has an arc of radius 0")]
     ZeroRadiusArc,
 
+    // --- AMF and 3MF ------------------------------------------------------------------------
+    /// An XML mesh file whose root element is not the format's.
+    #[error("not {what}: its root element is <{}>, not <{want}>", OneLine(root))]
+    WrongRootElement {
+        /// What the file is not (`an AMF file`, `a 3MF model`).
+        what: &'static str,
+        /// The root element's name.
+        root: String,
+        /// The root element the format has.
+        want: &'static str,
+    },
+    /// A warning: a unit other than millimetres, which OpenSCAD ignores; `whatever` when the
+    /// message adds that it does so whatever the unit (AMF).
+    #[error(
+        "unit \"{}\" is ignored: OpenSCAD 2021.01 reads {format} coordinates as millimetres{}",
+        OneLine(unit),
+        if *whatever { ", whatever the unit" } else { "" }
+    )]
+    UnitIgnored {
+        /// The unit, as written.
+        unit: String,
+        /// `AMF` or `3MF`.
+        format: &'static str,
+        /// Whether to add ", whatever the unit".
+        whatever: bool,
+    },
+    /// A warning: part of a 3MF file OpenSCAD does not apply (`what` is its subject, with
+    /// its verb: `components are`).
+    #[error(
+        "{what} not applied: OpenSCAD 2021.01 imports each mesh object once, where it is defined"
+    )]
+    NotApplied {
+        /// What is not applied, with its verb.
+        what: &'static str,
+    },
+    /// An AMF element without a child element it needs.
+    #[error("{parent} has no <{child}>")]
+    NoChildElement {
+        /// The element, as the message names it (`a <triangle>`).
+        parent: &'static str,
+        /// The child's name.
+        child: &'static str,
+    },
+    /// An AMF coordinate element that is not a finite number.
+    #[error("<{element}> must be a finite number, found \"{}\"", OneLine(text))]
+    NotFiniteElement {
+        /// The element's name.
+        element: &'static str,
+        /// Its text, trimmed.
+        text: String,
+    },
+    /// An AMF triangle corner that is not the index of a vertex listed so far.
+    #[error(
+        "<{element}> must index the {count} vertices listed so far (from 0), found \"{}\"",
+        OneLine(text)
+    )]
+    ElementVertexIndex {
+        /// The element's name (`v1`).
+        element: &'static str,
+        /// The vertices listed so far.
+        count: usize,
+        /// Its text, trimmed.
+        text: String,
+    },
+    /// A 3MF package whose relationships name no 3D model part.
+    #[error("no relationship names the 3D model part")]
+    No3mfModelRelationship,
+    /// A 3MF build item naming an object the resources do not define.
+    #[error(
+        "the build item names object \"{}\", which the resources do not define",
+        OneLine(id)
+    )]
+    UndefinedObject {
+        /// The object's id, as written.
+        id: String,
+    },
+    /// An XML element without an attribute it needs.
+    #[error("a <{element}> needs its attribute {attribute}")]
+    MissingAttribute {
+        /// The element's name.
+        element: &'static str,
+        /// The attribute's name.
+        attribute: &'static str,
+    },
+    /// A 3MF vertex coordinate that is not a finite 32-bit number.
+    #[error("{attribute}=\"{}\" is not a finite 32-bit number", OneLine(text))]
+    NotFiniteAttribute {
+        /// The attribute's name.
+        attribute: &'static str,
+        /// Its value, as written.
+        text: String,
+    },
+    /// A 3MF triangle corner that is not the index of one of the mesh's vertices.
+    #[error(
+        "{attribute}=\"{}\" must index the mesh's {count} vertices (from 0)",
+        OneLine(text)
+    )]
+    AttributeVertexIndex {
+        /// The attribute's name (`v1`).
+        attribute: &'static str,
+        /// Its value, as written.
+        text: String,
+        /// The mesh's vertices.
+        count: usize,
+    },
+
+    // --- NRRD headers ----------------------------------------------------------------------
+    /// Input that is not what its format allows at this point, where nothing in particular is
+    /// found instead (a line of no field, a missing field, too few bytes to skip).
+    #[error("expected {expected}")]
+    ExpectedHere {
+        /// What the format allows here.
+        expected: String,
+    },
+    /// A NRRD header field the format does not have.
+    #[error("unknown field `{}`", OneLine(name))]
+    UnknownField {
+        /// The field's name, as written.
+        name: String,
+    },
+    /// A header field given a second time.
+    #[error("`{}` given twice (first on line {first_line})", OneLine(name))]
+    DuplicateField {
+        /// The field's name, as written the second time.
+        name: String,
+        /// The line of its first occurrence.
+        first_line: usize,
+    },
+    /// A NRRD encoding of the format that csgpix does not read (text, hex, bzip2).
+    #[error(
+        "expected encoding raw or gzip (`{}` is not supported)",
+        OneLine(encoding)
+    )]
+    UnsupportedEncoding {
+        /// The encoding, as written (lowercased).
+        encoding: String,
+    },
+    /// A multi-byte NRRD sample type without an `endian:` field.
+    #[error("the {bytes}-byte type {ty} needs an `endian:` field")]
+    NeedsEndian {
+        /// The bytes of a sample.
+        bytes: usize,
+        /// The type's name (`uint16`).
+        ty: &'static str,
+    },
+    /// A volume with more samples than the limit.
+    #[error(
+        "sizes {}×{}×{} exceed the limit of {limit} samples{}",
+        sizes[0],
+        sizes[1],
+        sizes[2],
+        match set_by { Some(s) => format!(" ({s})"), None => String::new() }
+    )]
+    TooManySamples {
+        /// The sizes, X, Y, Z.
+        sizes: [usize; 3],
+        /// The most samples.
+        limit: usize,
+        /// What sets a limit lower than csgpix's own, when one does.
+        set_by: Option<&'static str>,
+    },
+    /// NRRD data that could not be read: `gzip` when it was to be decompressed, the reason.
+    #[error("expected {} data: {}", if *gzip { "gzip" } else { "readable" }, OneLine(reason))]
+    UnreadableData {
+        /// Whether the data are gzip.
+        gzip: bool,
+        /// The system's or decoder's message.
+        reason: String,
+    },
+    /// NRRD data of another number of bytes than the sizes and type need: `found` the bytes
+    /// there are when fewer, `None` when more.
+    #[error(
+        "sizes {}×{}×{} of {ty} need {bytes} data bytes{}, found {}",
+        sizes[0],
+        sizes[1],
+        sizes[2],
+        if *gzip { " after decompression" } else { "" },
+        match found { Some(n) => format!("only {n}"), None => "more".to_string() }
+    )]
+    DataBytes {
+        /// The sizes, X, Y, Z.
+        sizes: [usize; 3],
+        /// The sample type's name.
+        ty: &'static str,
+        /// The bytes needed.
+        bytes: usize,
+        /// Whether they are counted after decompression.
+        gzip: bool,
+        /// The bytes there are, when fewer.
+        found: Option<u64>,
+    },
+
+    // --- Other crates' errors --------------------------------------------------------------
+    /// A display list or clip program that does not compile: the draw compiler's reason
+    /// (`CompileError::msg`; its plane and field place it in an enclosing [`Error::At`] or
+    /// [`Error::Context`]).
+    #[error("{}", OneLine(reason))]
+    Compile {
+        /// What is wrong, as the compiler words it.
+        reason: String,
+    },
+    /// A `.pla` file of golden vectors that does not parse: the parser's reason (`PlaError::
+    /// msg`; its line and column in an enclosing [`Error::At`]).
+    #[error("{}", OneLine(reason))]
+    Pla {
+        /// What is wrong, as the parser words it.
+        reason: String,
+    },
+    /// A warning of the OpenSCAD reader (OpenSCAD's own wording where it warns too, or that
+    /// of the mesh, DXF or font reader it called), located in an enclosing [`Error::At`].
+    #[error("{}", OneLine(message))]
+    Warning {
+        /// The warning, one line.
+        message: String,
+    },
+
+    // --- DXF -------------------------------------------------------------------------------
+    /// A DXF entity whose fragments would pass the scene's vertex limit.
+    #[error(
+        "the {} entity would pass the scene's vertex limit ({left} vertices left; the limit \
+         follows the memory limit, e.g. --max-memory)",
+        OneLine(entity)
+    )]
+    DxfVertexLimit {
+        /// The entity's type, as written (at most 40 characters).
+        entity: String,
+        /// The vertices left.
+        left: usize,
+    },
+    /// A DXF arc or ellipse whose end angle is more whole turns below its start than csgpix
+    /// unwinds.
+    #[error(
+        "the {} entity's end angle is more than {turns:e} turns below its start",
+        OneLine(entity)
+    )]
+    DxfAngleTurns {
+        /// The entity's type, as written.
+        entity: String,
+        /// The most turns unwound.
+        turns: f64,
+    },
+    /// A DXF entity with a point that is not finite or is past csgpix's coordinate limit.
+    #[error(
+        "the {} entity has a point beyond csgpix's coordinate limit {limit:e}",
+        OneLine(entity)
+    )]
+    DxfCoordinateLimit {
+        /// The entity's type, as written.
+        entity: String,
+        /// The largest coordinate accepted.
+        limit: f64,
+    },
+
     // --- Not yet typed ---------------------------------------------------------------------
-    /// A parser's message not yet given a variant of its own (the OpenSCAD lexer and
-    /// parser, the NRRD header, XML mesh formats, display lists, DXF): what is wrong, one
-    /// line (the place, when it has one, is in an enclosing [`Error::At`]).
+    /// A message of the OpenSCAD lexer and parser, not yet given a variant of its own: what
+    /// is wrong, one line (the place, when it has one, is in an enclosing [`Error::At`]).
     #[error("{}", OneLine(.0))]
     Invalid(String),
 }
@@ -1144,5 +1396,90 @@ mod tests {
              limit: 20 more vertices, 10 left (the limit follows the memory limit, e.g. \
              --max-memory)"
         );
+    }
+    #[test]
+    fn nrrd_header_variants_keep_their_messages() {
+        let e = Error::DuplicateField {
+            name: "sizes".into(),
+            first_line: 3,
+        };
+        assert_eq!(
+            Error::at("v.nrrd", 5, 1, e).to_string(),
+            "v.nrrd:5:1: `sizes` given twice (first on line 3)"
+        );
+        let e = Error::UnsupportedEncoding {
+            encoding: "bzip2".into(),
+        };
+        assert_eq!(
+            e.to_string(),
+            "expected encoding raw or gzip (`bzip2` is not supported)"
+        );
+        let e = Error::TooManySamples {
+            sizes: [2, 3, 4],
+            limit: 10,
+            set_by: Some("--max-memory"),
+        };
+        assert_eq!(
+            e.to_string(),
+            "sizes 2×3×4 exceed the limit of 10 samples (--max-memory)"
+        );
+        let e = Error::DataBytes {
+            sizes: [2, 2, 2],
+            ty: "uint16",
+            bytes: 16,
+            gzip: true,
+            found: Some(3),
+        };
+        assert_eq!(
+            e.to_string(),
+            "sizes 2×2×2 of uint16 need 16 data bytes after decompression, found only 3"
+        );
+        let e = Error::ExpectedHere {
+            expected: "`(x,y,z)` or `none`".into(),
+        };
+        assert_eq!(e.to_string(), "expected `(x,y,z)` or `none`");
+    }
+
+    #[test]
+    fn xml_mesh_and_dxf_variants_keep_their_messages() {
+        let e = Error::UnitIgnored {
+            unit: "inch".into(),
+            format: "AMF",
+            whatever: true,
+        };
+        assert_eq!(
+            e.to_string(),
+            "unit \"inch\" is ignored: OpenSCAD 2021.01 reads AMF coordinates as millimetres, \
+             whatever the unit"
+        );
+        let e = Error::NotApplied {
+            what: "components are",
+        };
+        assert_eq!(
+            e.to_string(),
+            "components are not applied: OpenSCAD 2021.01 imports each mesh object once, where \
+             it is defined"
+        );
+        let e = Error::AttributeVertexIndex {
+            attribute: "v2",
+            text: "9".into(),
+            count: 4,
+        };
+        assert_eq!(
+            e.to_string(),
+            "v2=\"9\" must index the mesh's 4 vertices (from 0)"
+        );
+        let e = Error::DxfAngleTurns {
+            entity: "ARC".into(),
+            turns: 1e6,
+        };
+        assert_eq!(
+            e.to_string(),
+            "the ARC entity's end angle is more than 1e6 turns below its start"
+        );
+        let e = Error::Compile {
+            reason: "bad\ncolour".into(),
+        };
+        assert_eq!(e.to_string(), OneLine("bad\ncolour").to_string());
     }
 }

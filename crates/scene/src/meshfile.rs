@@ -130,15 +130,10 @@ impl<'a> Xml<'a> {
         Ok(Xml { doc, file })
     }
 
-    /// `msg` at the start of `node`.
-    pub(crate) fn error(&self, node: roxmltree::Node, msg: impl Into<String>) -> Error {
+    /// `problem` at the start of `node`.
+    pub(crate) fn error(&self, node: roxmltree::Node, problem: Error) -> Error {
         let p = self.doc.text_pos_at(node.range().start);
-        Error::at(
-            self.file,
-            p.row as usize,
-            p.col as usize,
-            Error::invalid(msg),
-        )
+        Error::at(self.file, p.row as usize, p.col as usize, problem)
     }
 }
 

@@ -523,8 +523,23 @@ pub fn parse_nrrd_limited(
 }
 
 /// `FILE:LINE:COL: message`.
-fn at(file: &str, line: usize, col: usize, msg: impl Display) -> Error {
-    Error::at(file, line, col, Error::invalid(msg.to_string()))
+fn at(file: &str, line: usize, col: usize, problem: Error) -> Error {
+    Error::at(file, line, col, problem)
+}
+
+/// `expected what, found `found``.
+fn expected(what: &str, found: impl Display) -> Error {
+    Error::Expected {
+        expected: what.into(),
+        found: format!("`{found}`"),
+    }
+}
+
+/// `expected what`.
+fn expected_here(what: impl Into<String>) -> Error {
+    Error::ExpectedHere {
+        expected: what.into(),
+    }
 }
 
 /// One `field: value` line: where its value starts (1-based) and the value.
@@ -552,13 +567,13 @@ impl<'a> Header<'a> {
 
     fn need(&self, name: &str) -> Result<Field<'a>> {
         self.get(name).ok_or_else(|| {
-            let msg = format!("expected a `{name}:` field before the end of the header");
+            let msg = expected_here(format!("a `{name}:` field before the end of the header"));
             at(self.file, self.end, 1, msg)
         })
     }
 
     /// An error `offset` bytes into field `f`'s value.
-    fn err(&self, f: Field, offset: usize, msg: impl Display) -> Error {
+    fn err(&self, f: Field, offset: usize, msg: Error) -> Error {
         at(self.file, f.line, f.col + offset, msg)
     }
 
@@ -572,13 +587,14 @@ impl<'a> Header<'a> {
             (Some(f), Some(k)) if f < k => f,
             (_, Some(_)) => return Ok(()),
             (None, None) => {
-                let msg = "expected `field: value`, `key:=value` or `# comment`";
+                let msg = expected_here("`field: value`, `key:=value` or `# comment`");
                 return Err(at(self.file, line, 1, msg));
             }
         };
         let name = &text[..sep];
         let Some(canon) = canonical(name) else {
-            return Err(at(self.file, line, 1, format!("unknown field `{name}`")));
+            let name = name.to_string();
+            return Err(at(self.file, line, 1, Error::UnknownField { name }));
         };
         let value = text[sep + 2..].trim_end();
         let f = Field {
@@ -588,7 +604,10 @@ impl<'a> Header<'a> {
         };
         match self.fields.insert(canon, f) {
             Some(old) => {
-                let msg = format!("`{name}` given twice (first on line {})", old.line);
+                let msg = Error::DuplicateField {
+                    name: name.to_string(),
+                    first_line: old.line,
+                };
                 Err(at(self.file, line, 1, msg))
             }
             None => Ok(()),
@@ -663,7 +682,7 @@ fn split_header<'a>(bytes: &'a [u8], file: &'a str) -> Result<Header<'a>> {
         let raw = raw.strip_suffix(b"\r").unwrap_or(raw);
         pos = end + 1;
         let text = std::str::from_utf8(raw).map_err(|e| {
-            let msg = "expected header text (is the blank line ending the header missing?)";
+            let msg = expected_here("header text (is the blank line ending the header missing?)");
             at(file, line, e.valid_up_to() + 1, msg)
         })?;
         if line == 1 {
@@ -690,7 +709,7 @@ fn check_magic(text: &str, file: &str) -> Result<()> {
             file,
             1,
             1,
-            "expected the magic `NRRD0001` to `NRRD0005`",
+            expected_here("the magic `NRRD0001` to `NRRD0005`"),
         )),
     }
 }
@@ -751,21 +770,17 @@ fn dimension(h: &Header) -> Result<()> {
     let f = h.need("dimension")?;
     match f.value.trim() {
         "3" => Ok(()),
-        v => Err(h.err(
-            f,
-            0,
-            format!("expected dimension 3 (a volume), found `{v}`"),
-        )),
+        v => Err(h.err(f, 0, expected("dimension 3 (a volume)", v))),
     }
 }
 
 fn sample_type(h: &Header) -> Result<SampleType> {
     let f = h.need("type")?;
     SampleType::parse(f.value).ok_or_else(|| {
-        let msg = format!(
-            "expected a sample type (int8, uint8, int16, uint16, int32, uint32, float, double, \
-             or a C spelling like `unsigned short`), found `{}`",
-            f.value
+        let msg = expected(
+            "a sample type (int8, uint8, int16, uint16, int32, uint32, float, double, or a C \
+             spelling like `unsigned short`)",
+            f.value,
         );
         h.err(f, 0, msg)
     })
@@ -775,13 +790,17 @@ fn sizes(h: &Header) -> Result<[usize; 3]> {
     let f = h.need("sizes")?;
     let w = words(f.value);
     if w.len() != 3 {
-        return Err(h.err(f, 0, format!("expected 3 sizes, found {}", w.len())));
+        let msg = Error::Expected {
+            expected: "3 sizes".into(),
+            found: w.len().to_string(),
+        };
+        return Err(h.err(f, 0, msg));
     }
     let mut sizes = [0; 3];
     for (s, &(off, word)) in sizes.iter_mut().zip(&w) {
         *s = match word.parse::<usize>() {
             Ok(n) if n >= 1 => n,
-            _ => return Err(h.err(f, off, format!("expected a size ≥ 1, found `{word}`"))),
+            _ => return Err(h.err(f, off, expected("a size ≥ 1", word))),
         };
     }
     Ok(sizes)
@@ -795,12 +814,15 @@ fn data_bytes(h: &Header, sizes: [usize; 3], ty: SampleType, limit: SampleLimit)
     match (count, bytes) {
         (Some(c), Some(b)) if c <= max => Ok(b),
         _ => {
-            let [x, y, z] = sizes;
-            let why = match max < MAX_SAMPLES && !limit.source.is_empty() {
-                true => format!(" ({})", limit.source),
-                false => String::new(),
+            let set_by = match max < MAX_SAMPLES && !limit.source.is_empty() {
+                true => Some(limit.source),
+                false => None,
             };
-            let msg = format!("sizes {x}×{y}×{z} exceed the limit of {max} samples{why}");
+            let msg = Error::TooManySamples {
+                sizes,
+                limit: max,
+                set_by,
+            };
             Err(h.err(h.need("sizes")?, 0, msg))
         }
     }
@@ -812,10 +834,12 @@ fn encoding(h: &Header) -> Result<Encoding> {
         "raw" => Ok(Encoding::Raw),
         "gzip" | "gz" => Ok(Encoding::Gzip),
         v @ ("ascii" | "text" | "txt" | "hex" | "bzip2" | "bz2") => {
-            let msg = format!("expected encoding raw or gzip (`{v}` is not supported)");
+            let msg = Error::UnsupportedEncoding {
+                encoding: v.to_string(),
+            };
             Err(h.err(f, 0, msg))
         }
-        v => Err(h.err(f, 0, format!("expected encoding raw or gzip, found `{v}`"))),
+        v => Err(h.err(f, 0, expected("encoding raw or gzip", v))),
     }
 }
 
@@ -824,13 +848,16 @@ fn big_endian(h: &Header, ty: SampleType) -> Result<bool> {
     match (h.get("endian"), ty.size()) {
         (None, 1) => Ok(false),
         (None, n) => {
-            let msg = format!("the {n}-byte type {} needs an `endian:` field", ty.name());
+            let msg = Error::NeedsEndian {
+                bytes: n,
+                ty: ty.name(),
+            };
             Err(h.err(h.need("type")?, 0, msg))
         }
         (Some(f), _) => match f.value.trim() {
             "little" => Ok(false),
             "big" => Ok(true),
-            v => Err(h.err(f, 0, format!("expected `little` or `big`, found `{v}`"))),
+            v => Err(h.err(f, 0, expected("`little` or `big`", v))),
         },
     }
 }
@@ -839,24 +866,23 @@ fn big_endian(h: &Header, ty: SampleType) -> Result<bool> {
 fn skips(h: &Header, encoding: Encoding) -> Result<(usize, Option<u64>)> {
     let lines = match h.get("line skip") {
         None => 0,
-        Some(f) => f.value.trim().parse::<usize>().map_err(|_| {
-            h.err(
-                f,
-                0,
-                format!("expected a line count ≥ 0, found `{}`", f.value),
-            )
-        })?,
+        Some(f) => f
+            .value
+            .trim()
+            .parse::<usize>()
+            .map_err(|_| h.err(f, 0, expected("a line count ≥ 0", f.value)))?,
     };
     let bytes = match h.get("byte skip") {
         None => Some(0),
         Some(f) => match (f.value.trim().parse::<i64>(), encoding) {
             (Ok(-1), Encoding::Raw) => None,
             (Ok(-1), Encoding::Gzip) => {
-                return Err(h.err(f, 0, "expected a byte count ≥ 0 (-1 is for raw data only)"))
+                let msg = expected_here("a byte count ≥ 0 (-1 is for raw data only)");
+                return Err(h.err(f, 0, msg));
             }
             (Ok(n), _) if n >= 0 => Some(n as u64),
             _ => {
-                let msg = format!("expected a byte count ≥ 0 or -1, found `{}`", f.value);
+                let msg = expected("a byte count ≥ 0 or -1", f.value);
                 return Err(h.err(f, 0, msg));
             }
         },
@@ -876,7 +902,7 @@ fn geometry(h: &Header) -> Result<(DVec3, DMat3)> {
     };
     let (dirs, field) = match (h.get("space directions"), h.get("spacings")) {
         (Some(_), Some(s)) => {
-            let msg = "expected `spacings` or `space directions`, not both";
+            let msg = expected_here("`spacings` or `space directions`, not both");
             return Err(h.err(s, 0, msg));
         }
         (Some(f), None) => (directions(h, f)?, f),
@@ -884,7 +910,7 @@ fn geometry(h: &Header) -> Result<(DVec3, DMat3)> {
         (None, None) => return Ok((origin, DMat3::IDENTITY)),
     };
     if !invertible(&dirs) {
-        let msg = "expected 3 independent axis steps (these are singular)";
+        let msg = expected_here("3 independent axis steps (these are singular)");
         return Err(h.err(field, 0, msg));
     }
     Ok((origin, dirs))
@@ -894,14 +920,17 @@ fn geometry(h: &Header) -> Result<(DVec3, DMat3)> {
 fn check_space(h: &Header) -> Result<()> {
     if let Some(f) = h.get("space dimension") {
         if f.value.trim() != "3" {
-            let msg = format!("expected space dimension 3, found `{}`", f.value);
+            let msg = expected("space dimension 3", f.value);
             return Err(h.err(f, 0, msg));
         }
     }
     if let Some(f) = h.get("space") {
         let s = f.value.trim().to_ascii_lowercase();
         if s.ends_with("-time") || matches!(s.as_str(), "rast" | "last" | "lpst") {
-            let msg = format!("expected a 3D space, found `{}` (4D)", f.value);
+            let msg = Error::Expected {
+                expected: "a 3D space".into(),
+                found: format!("`{}` (4D)", f.value),
+            };
             return Err(h.err(f, 0, msg));
         }
     }
@@ -911,20 +940,23 @@ fn check_space(h: &Header) -> Result<()> {
 fn origin(h: &Header, f: Field) -> Result<DVec3> {
     match vectors(h, f)?[..] {
         [(_, Some(v))] => Ok(v),
-        _ => Err(h.err(f, 0, "expected one vector `(x,y,z)`")),
+        _ => Err(h.err(f, 0, expected_here("one vector `(x,y,z)`"))),
     }
 }
 
 fn directions(h: &Header, f: Field) -> Result<DMat3> {
     let list = vectors(h, f)?;
     if list.len() != 3 {
-        let msg = format!("expected 3 vectors (one per axis), found {}", list.len());
+        let msg = Error::Expected {
+            expected: "3 vectors (one per axis)".into(),
+            found: list.len().to_string(),
+        };
         return Err(h.err(f, 0, msg));
     }
     let mut cols = [DVec3::ZERO; 3];
     for (axis, (c, &(off, v))) in cols.iter_mut().zip(&list).enumerate() {
         *c = v.ok_or_else(|| {
-            let msg = format!("expected axis {axis} to be spatial, found `none`");
+            let msg = expected(&format!("axis {axis} to be spatial"), "none");
             h.err(f, off, msg)
         })?;
     }
@@ -934,12 +966,15 @@ fn directions(h: &Header, f: Field) -> Result<DMat3> {
 fn spacings(h: &Header, f: Field) -> Result<DMat3> {
     let w = words(f.value);
     if w.len() != 3 {
-        return Err(h.err(f, 0, format!("expected 3 spacings, found {}", w.len())));
+        let msg = Error::Expected {
+            expected: "3 spacings".into(),
+            found: w.len().to_string(),
+        };
+        return Err(h.err(f, 0, msg));
     }
     let mut d = [0.0; 3];
     for (s, &(off, word)) in d.iter_mut().zip(&w) {
-        *s = number(word)
-            .ok_or_else(|| h.err(f, off, format!("expected a finite spacing, found `{word}`")))?;
+        *s = number(word).ok_or_else(|| h.err(f, off, expected("a finite spacing", word)))?;
     }
     Ok(DMat3::from_diagonal(DVec3::from(d)))
 }
@@ -967,7 +1002,7 @@ fn vectors(h: &Header, f: Field) -> Result<Vec<(usize, Option<DVec3>)>> {
             out.push((i, Some(vector(h, f, i + 1, &inner[..close - 1])?)));
             i += close + 1;
         } else {
-            return Err(h.err(f, i, "expected `(x,y,z)` or `none`"));
+            return Err(h.err(f, i, expected_here("`(x,y,z)` or `none`")));
         }
     }
 }
@@ -976,20 +1011,18 @@ fn vectors(h: &Header, f: Field) -> Result<Vec<(usize, Option<DVec3>)>> {
 fn vector(h: &Header, f: Field, off: usize, inner: &str) -> Result<DVec3> {
     let parts: Vec<&str> = inner.split(',').collect();
     if parts.len() != 3 {
-        let msg = format!("expected 3 components, found {}", parts.len());
+        let msg = Error::Expected {
+            expected: "3 components".into(),
+            found: parts.len().to_string(),
+        };
         return Err(h.err(f, off - 1, msg));
     }
     let mut v = [0.0; 3];
     let mut o = off;
     for (c, part) in v.iter_mut().zip(parts) {
         let lead = part.len() - part.trim_start().len();
-        *c = number(part).ok_or_else(|| {
-            h.err(
-                f,
-                o + lead,
-                format!("expected a finite number, found `{}`", part.trim()),
-            )
-        })?;
+        *c = number(part)
+            .ok_or_else(|| h.err(f, o + lead, expected("a finite number", part.trim())))?;
         o += part.len() + 1;
     }
     Ok(DVec3::from(v))
@@ -1028,7 +1061,7 @@ fn fetch(h: &Header, plan: &Plan, bytes: &[u8], dir: Option<&Path>) -> Result<Ve
         }
         None => {
             let start = h.data.ok_or_else(|| {
-                let msg = "expected a blank line and then the data, or a `data file:` field";
+                let msg = expected_here("a blank line and then the data, or a `data file:` field");
                 at(h.file, h.end, 1, msg)
             })?;
             read_data(std::io::Cursor::new(&bytes[start..]), plan)
@@ -1041,7 +1074,7 @@ fn fetch(h: &Header, plan: &Plan, bytes: &[u8], dir: Option<&Path>) -> Result<Ve
 fn data_path(h: &Header, f: Field, dir: Option<&Path>) -> Result<PathBuf> {
     let v = f.value.trim();
     if v.starts_with("LIST") || (v.contains('%') && words(v).len() >= 4) || v.is_empty() {
-        let msg = "expected one data file name (lists and numbered series are not supported)";
+        let msg = expected_here("one data file name (lists and numbered series are not supported)");
         return Err(h.err(f, 0, msg));
     }
     let p = Path::new(v);
@@ -1124,27 +1157,29 @@ fn fault(h: &Header, plan: &Plan, e: Fault) -> Error {
         Fault::Skip => field("byte skip"),
         Fault::Short(_) | Fault::Excess => field("sizes"),
     };
-    let [x, y, z] = plan.sizes;
-    let need = format!(
-        "sizes {x}×{y}×{z} of {} need {} data bytes{}",
-        plan.ty.name(),
-        plan.bytes,
-        if gz { " after decompression" } else { "" }
-    );
+    let bytes = |found| Error::DataBytes {
+        sizes: plan.sizes,
+        ty: plan.ty.name(),
+        bytes: plan.bytes,
+        gzip: gz,
+        found,
+    };
     let msg = match e {
-        Fault::Io(e) if gz => format!("expected gzip data: {e}"),
-        Fault::Io(e) => format!("expected readable data: {e}"),
-        Fault::Lines => format!(
-            "expected {} lines to skip; the data ended first",
+        Fault::Io(e) => Error::UnreadableData {
+            gzip: gz,
+            reason: e.to_string(),
+        },
+        Fault::Lines => expected_here(format!(
+            "{} lines to skip; the data ended first",
             plan.line_skip
-        ),
-        Fault::Skip => "expected the bytes to skip; the data ended first".to_string(),
-        Fault::Short(got) => format!("{need}, found only {got}"),
-        Fault::Excess => format!("{need}, found more"),
+        )),
+        Fault::Skip => expected_here("the bytes to skip; the data ended first"),
+        Fault::Short(got) => bytes(Some(got)),
+        Fault::Excess => bytes(None),
     };
     match place {
         Ok(f) => h.err(f, 0, msg),
-        Err(prefix) => Error::invalid(msg).context(prefix),
+        Err(prefix) => msg.context(prefix),
     }
 }
 

@@ -48,7 +48,7 @@ fn model_path(rels: &[u8], file: &str) -> Result<String> {
         .map(|t| t.trim_start_matches('/').to_string())
         .ok_or_else(|| {
             let root = x.doc.root_element();
-            x.error(root, "no relationship names the 3D model part")
+            x.error(root, Error::No3mfModelRelationship)
         })
 }
 
@@ -57,17 +57,20 @@ pub(crate) fn parse_model(bytes: &[u8], file: &str) -> Result<Objects> {
     let x = Xml::parse(utf8(bytes, file)?, file)?;
     let root = x.doc.root_element();
     if root.tag_name().name() != "model" {
-        let msg = format!(
-            "not a 3MF model: its root element is <{}>, not <model>",
-            root.tag_name().name()
-        );
+        let msg = Error::WrongRootElement {
+            what: "a 3MF model",
+            root: root.tag_name().name().to_string(),
+            want: "model",
+        };
         return Err(x.error(root, msg));
     }
     let mut out = Objects::default();
     if let Some(u) = root.attribute("unit").filter(|u| *u != "millimeter") {
-        let msg = format!(
-            "unit \"{u}\" is ignored: OpenSCAD 2021.01 reads 3MF coordinates as millimetres"
-        );
+        let msg = Error::UnitIgnored {
+            unit: u.to_string(),
+            format: "3MF",
+            whatever: false,
+        };
         out.warnings.push(x.error(root, msg));
     }
     let mut ids = HashSet::new();
@@ -82,8 +85,9 @@ pub(crate) fn parse_model(bytes: &[u8], file: &str) -> Result<Objects> {
         }
     }
     if let Some(c) = component {
-        let msg = "components are not applied: OpenSCAD 2021.01 imports each mesh object once, \
-                   where it is defined";
+        let msg = Error::NotApplied {
+            what: "components are",
+        };
         out.warnings.push(x.error(c, msg));
     }
     build(&x, root, &ids, &mut out.warnings)?;
@@ -110,8 +114,7 @@ fn build(
     for item in children(root, "build").flat_map(|b| children(b, "item")) {
         let id = item.attribute("objectid").unwrap_or_default();
         if !ids.contains(id) {
-            let msg =
-                format!("the build item names object \"{id}\", which the resources do not define");
+            let msg = Error::UndefinedObject { id: id.to_string() };
             return Err(x.error(item, msg));
         }
         let identity = "1 0 0 0 1 0 0 0 1 0 0 0";
@@ -127,8 +130,9 @@ fn build(
         }
     }
     if let Some(item) = moved {
-        let msg = "the build item's transform is not applied: OpenSCAD 2021.01 imports each mesh \
-                   object once, where it is defined";
+        let msg = Error::NotApplied {
+            what: "the build item's transform is",
+        };
         warnings.push(x.error(item, msg));
     }
     Ok(())
@@ -140,9 +144,13 @@ fn mesh_soup(x: &Xml, mesh: roxmltree::Node) -> Result<Soup> {
     for v in children(mesh, "vertices").flat_map(|n| children(n, "vertex")) {
         let mut p = [0.0; 3];
         for (c, name) in p.iter_mut().zip(["x", "y", "z"]) {
-            let text = v
-                .attribute(name)
-                .ok_or_else(|| x.error(v, format!("a <vertex> needs its attribute {name}")))?;
+            let text = v.attribute(name).ok_or_else(|| {
+                let msg = Error::MissingAttribute {
+                    element: "vertex",
+                    attribute: name,
+                };
+                x.error(v, msg)
+            })?;
             // lib3mf's vertices are 32-bit floats.
             *c = finite(text)
                 .map(|f| f64::from(f as f32))
@@ -150,7 +158,10 @@ fn mesh_soup(x: &Xml, mesh: roxmltree::Node) -> Result<Soup> {
                 .ok_or_else(|| {
                     x.error(
                         v,
-                        format!("{name}=\"{text}\" is not a finite 32-bit number"),
+                        Error::NotFiniteAttribute {
+                            attribute: name,
+                            text: text.to_string(),
+                        },
                     )
                 })?;
         }
@@ -166,7 +177,11 @@ fn mesh_soup(x: &Xml, mesh: roxmltree::Node) -> Result<Soup> {
                 let n = vs.len();
                 x.error(
                     t,
-                    format!("{name}=\"{text}\" must index the mesh's {n} vertices (from 0)"),
+                    Error::AttributeVertexIndex {
+                        attribute: name,
+                        text: text.to_string(),
+                        count: n,
+                    },
                 )
             })?];
         }
