@@ -3,8 +3,10 @@
 //! store a chunk row at a time (`--format zarr`, docs/zarr.md).
 //!
 //! By stage: [`scene`] reads the input, [`plan`] makes the grid, the slicer, the evaluator,
-//! the route and the memory estimate, [`route`] runs the slices (streamed NRRD, Zarr rows or
-//! bricks, in memory) and [`outputs`] writes what they make.
+//! the route and the memory estimate, [`outputs`] names and writes the outputs, `zarr`
+//! creates and fills OME-Zarr stores, and [`route`] runs the slices (streamed NRRD, Zarr rows
+//! or bricks, in memory) into them and builds the report. Each stage uses only the ones
+//! before it (`.ci/module_cycles.py`).
 
 use std::path::PathBuf;
 
