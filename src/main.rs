@@ -50,12 +50,14 @@ fn main() -> ExitCode {
         eprintln!("csgpix: cannot watch for signals: {e}");
         return ExitCode::from(2);
     }
-    match cli::run(args) {
+    let code = match cli::run(args) {
         Ok(code) => code,
         Err(e) => {
             // The libraries escape what they echo; this is the last resort for the rest.
             eprintln!("csgpix: {}", OneLine(e));
             ExitCode::from(2)
         }
-    }
+    };
+    // A signal that came first ends the process instead (crates/output).
+    csgpix_output::finish(code)
 }

@@ -402,6 +402,63 @@ fn a_signal_ends_a_run_waiting_on_a_fifo_without_a_reader() {
     assert_eq!(names(dir.path()), ["out.png"]);
 }
 
+/// A signal that comes once some outputs are in place ends the run as interrupted, and says
+/// which outputs were already written whole: here the VCD is renamed into place, then the
+/// render waits for a reader of its FIFO.
+#[cfg(unix)]
+#[test]
+fn a_late_signal_says_which_outputs_are_already_whole() {
+    use std::os::unix::process::ExitStatusExt;
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("out.png");
+    let vcd = dir.path().join("w.vcd");
+    assert!(Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let args = [
+        "render",
+        CUBE,
+        "--probe",
+        "0,0",
+        "--vcd",
+        s(&vcd),
+        "-o",
+        s(&fifo),
+    ];
+    let child = Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(args)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let t0 = std::time::Instant::now();
+    while !vcd.exists() {
+        assert!(
+            t0.elapsed().as_secs() < 20,
+            "the VCD was never put in place"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    // SAFETY: kill(2) on our own child's pid.
+    assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGINT) }, 0);
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.signal(), Some(libc::SIGINT), "{out:?}");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let said = format!(
+        "csgpix: interrupted by SIGINT; already written whole: {}\n",
+        s(&vcd)
+    );
+    assert_eq!(err, said);
+    assert!(std::fs::read_to_string(&vcd)
+        .unwrap()
+        .contains("$enddefinitions"));
+    assert_eq!(names(dir.path()), ["out.png", "w.vcd"]);
+}
+
 /// `--vcd`, `--wave` and `--forces` are named with `-o` and go with it: a path that cannot
 /// be written, whichever it is, leaves none of the others (nor their staging files).
 #[test]

@@ -26,7 +26,8 @@
 //! SIGINT, SIGTERM and SIGHUP remove every staged file and directory, end the child processes
 //! and remove the scratch files a run registered ([`scratch`], [`child`]), before the process
 //! dies of the signal ([`install_signal_cleanup`]); they wait for a commit's renames, never for
-//! an output written through. SIGKILL cannot be caught: what it leaves beside an output is
+//! an output written through. A signal that comes after some outputs are in place says which
+//! ones; a signal that comes after the run has ended ([`finish`]) is not acted on. SIGKILL cannot be caught: what it leaves beside an output is
 //! cleared (or, for a replaced directory, restored) by the next run that names that output
 //! (`leftover`).
 
@@ -35,12 +36,14 @@ use std::io::{Seek, Write};
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard, RwLock, RwLockReadGuard};
 
+mod ending;
 mod error;
 mod leftover;
 mod oom;
 mod scratch;
 mod sparse;
 
+pub use ending::finish;
 pub use error::{Error, IoError, OneLine, Refusal, Result};
 pub use oom::{fallible, one_arena_under_address_limit, try_zeroed, AllocFailed, ExitOnOom};
 pub use scratch::{child, scratch, Child, Scratch};
@@ -91,6 +94,10 @@ pub fn install_signal_cleanup() -> Result<()> {
     INSTALLED.store(true, std::sync::atomic::Ordering::SeqCst);
     std::thread::spawn(move || {
         if let Some(sig) = signals.forever().next() {
+            if !ending::claim() {
+                // The run has ended first, with its own status and report.
+                return;
+            }
             // Held to the end: a commit in progress finishes first, and none starts after.
             let _commit = COMMIT.lock().unwrap_or_else(|e| e.into_inner());
             // Writes in flight end first; none starts after (held to the end too).
@@ -101,6 +108,9 @@ pub fn install_signal_cleanup() -> Result<()> {
                 remove_staged(&p);
             }
             scratch::clear();
+            if let Some(line) = ending::written_line(sig) {
+                ending::say(line);
+            }
             let _ = signal_hook::low_level::emulate_default_handler(sig);
             std::process::exit(128 + sig);
         }
@@ -605,6 +615,16 @@ fn same_target(a: &Target, b: &Target) -> bool {
 }
 
 fn commit_slot(slot: Slot) -> Result<()> {
+    let shown = match slot.target {
+        Target::Stdout => "standard output".to_string(),
+        _ => slot.shown.clone(),
+    };
+    put_in_place(slot)?;
+    ending::written(&shown);
+    Ok(())
+}
+
+fn put_in_place(slot: Slot) -> Result<()> {
     let err = |e: std::io::Error| Error::io(&slot.shown, &e);
     match (slot.target, slot.stage) {
         (Target::File(p, mode), Stage::Named(s)) => s.persist(&p, mode),
