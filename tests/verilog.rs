@@ -937,8 +937,8 @@ fn export_verilog_scene_runs_under_icarus_as_printed() {
 }
 
 /// Refused runs of `export-verilog --scene` exit 2 with one line (a display-list error at its
-/// FILE:LINE:COL; a window where a plane leaves the depth word, at the plane's Z0; an
-/// expected-state file over --max-memory) and leave no file: no new directory, nothing added
+/// FILE:LINE:COL; a window where a plane leaves the depth word, at the plane's Z0; a run
+/// over --max-memory; files over the disk's free space) and leave no file: no new directory, nothing added
 /// to an existing one, no staging left beside them.
 #[test]
 fn export_verilog_scene_refusals_leave_no_files() {
@@ -950,15 +950,23 @@ fn export_verilog_scene_refusals_leave_no_files() {
     std::fs::write(old.join("keep.txt"), "kept").unwrap();
     let bad = bad.to_str().unwrap();
     let cube = "vectors/thesis/cube.dl";
-    let cases: [(&[&str], String); 3] = [
+    // 60 PB of expected states: more than any disk holds, refused before the model runs.
+    let huge = ["--size", "65536x65536", "--max-memory", "100000000"];
+    let cases: [(&[&str], String); 4] = [
         (&["--scene", bad], format!("{bad}:3:5: ")),
+        (
+            &[&["--scene", cube][..], &huge[..]].concat(),
+            "the files take about 59571198 MB (expected.hex: 306 clocks x 4294967296 pixels x 45 \
+             bytes), over the "
+                .into(),
+        ),
         (
             &["--scene", cube, "--origin", "1000000,1000000"],
             format!("{cube}:8:1: Z0 + x*dZx + y*dZy = "),
         ),
         (
             &["--scene", cube, "--max-memory", "1"],
-            "expected.hex (294 clocks x 256 pixels x 45 bytes) needs about".into(),
+            "the cycle model of 256 pixels, 294 clocks needs about".into(),
         ),
     ];
     for (args, start) in cases {

@@ -941,3 +941,26 @@ fn check_extension(path: &Path, exts: &[&str]) -> Result<()> {
 
 #[cfg(test)]
 mod tests;
+
+/// Bytes free to an unprivileged writer on the filesystem that holds `dir` (`statvfs`'s
+/// `f_bavail`), or `None` where the system does not say: for a run that knows its outputs'
+/// size before it writes them, to refuse rather than fill the disk.
+#[cfg(unix)]
+pub fn free_bytes(dir: &Path) -> Option<u64> {
+    use std::os::unix::ffi::OsStrExt;
+    let c = std::ffi::CString::new(dir.as_os_str().as_bytes()).ok()?;
+    let mut st = std::mem::MaybeUninit::<libc::statvfs>::uninit();
+    // SAFETY: statvfs(3) with a NUL-terminated path and a buffer of its type.
+    if unsafe { libc::statvfs(c.as_ptr(), st.as_mut_ptr()) } != 0 {
+        return None;
+    }
+    // SAFETY: statvfs returned 0, so it filled the buffer.
+    let st = unsafe { st.assume_init() };
+    Some((st.f_bavail as u64).saturating_mul(st.f_frsize as u64))
+}
+
+/// Bytes free on the filesystem that holds `dir`: not known on this system.
+#[cfg(not(unix))]
+pub fn free_bytes(_: &Path) -> Option<u64> {
+    None
+}

@@ -12,6 +12,7 @@ use csgpix_draw::project::View;
 use csgpix_output::{Out, Outputs};
 use rtl_model::array::{check_program, program_cycles};
 use rtl_model::program::{translate, Op};
+use rtl_model::verilog::stimulus::StatesError;
 use rtl_model::verilog::{pixel, stimulus};
 use rtl_model::{ArrayConfig, CycleArray, Equations, WordFormat};
 use serde::{Deserialize, Serialize};
@@ -156,24 +157,24 @@ fn scene(a: &ExportVerilogJob) -> crate::Result<SceneFiles> {
     check_program(&ops, cfg.stack_depth)?;
     let cycles = program_cycles(&cfg, &set, &ops);
     bound(a, &cfg, cycles)?;
-    let want = stimulus::expected_states(cfg, &ops, &set)?;
+    room(&outs, out, &cfg, cycles)?;
     let control = pixel::control_stream(&cfg, &set, &ops);
     let mut files = stimulus::array_files(&cfg);
     let machine = stimulus::machine_files(&cfg, &ops);
     files.extend(machine.map_err(|e| Error::options("--scene", e.to_string()))?);
     files.push(("control.hex".into(), control));
+    let want = write_expected(&mut outs, out, cfg, &ops)?;
     files.push(("run.sh".into(), stimulus::run_script(&want.summary())));
     for (name, text) in &files {
         outs.write_in(out, name, |w| w.write_all(text.as_bytes()))?;
     }
     make_executable(&mut outs, out, "run.sh")?;
-    outs.write_in(out, "expected.hex", |w| w.write_all(want.text.as_bytes()))?;
     write_image(&mut outs, out, &cfg, &want.image())?;
     outs.commit()?;
     Ok(SceneFiles {
         dir: dir.clone(),
         files: files.into_iter().map(|(name, _)| name).collect(),
-        expected_bytes: want.text.len(),
+        expected_bytes: stimulus::expected_bytes(&cfg, want.cycles) as usize,
         clocks: want.cycles + 1,
         size: (cfg.width, cfg.height),
         summary: want.summary(),
@@ -244,12 +245,76 @@ fn check_window(
     Ok(())
 }
 
-/// Bytes the scene's run holds for a program of `cycles` clocks: the expected-state file
-/// ([`stimulus::expected_bytes`]), the control stream (a line of 13 bytes a clock), the
-/// cycle model, the process.
-fn need(cfg: &ArrayConfig, cycles: u64) -> u64 {
+/// `expected.hex`, written a clock at a time as the cycle model runs, into its staged file.
+fn write_expected(
+    outs: &mut Outputs,
+    out: Out,
+    cfg: ArrayConfig,
+    ops: &[Op],
+) -> crate::Result<stimulus::Expected<()>> {
+    let path = outs.stage_path(out, "expected.hex")?;
+    let io = |source| Error::Io {
+        path: path.clone(),
+        source,
+    };
+    let file = std::fs::File::create(&path).map_err(io)?;
+    let w = std::io::BufWriter::with_capacity(1 << 20, file);
+    let set = Equations::Derived.set();
+    let want = match stimulus::write_expected_states(cfg, ops, &set, w) {
+        Ok(want) => want,
+        Err(StatesError::Program(e)) => return Err(e.into()),
+        Err(StatesError::Io(e)) => return Err(io(e)),
+    };
+    want.text.into_inner().map_err(|e| io(e.into_error()))?;
+    Ok(stimulus::Expected {
+        text: (),
+        ends: want.ends,
+        cycles: want.cycles,
+        last: want.last,
+    })
+}
+
+/// Bytes the files of a program of `cycles` clocks take on disk: the expected states, the
+/// control stream (a line of 13 bytes a clock), and the Verilog sources and testbenches
+/// (under 100 bytes a pixel, plus 1 MiB).
+fn files_bytes(cfg: &ArrayConfig, cycles: u64) -> u64 {
     stimulus::expected_bytes(cfg, cycles)
         .saturating_add((cycles + 1) * 13)
+        .saturating_add(cfg.pixels() as u64 * 100 + (1 << 20))
+}
+
+/// Refuse, before simulating, files larger than the space free where they are staged.
+fn room(outs: &Outputs, out: Out, cfg: &ArrayConfig, cycles: u64) -> crate::Result<()> {
+    let dir = outs.stage_root(out)?;
+    let (need, free) = (files_bytes(cfg, cycles), csgpix_output::free_bytes(&dir));
+    match free {
+        Some(free) if need > free => {
+            let mb = |b: u64| b.div_ceil(1_000_000);
+            let message = format!(
+                "the files take about {} MB (expected.hex: {} clocks x {} pixels x {} bytes), \
+                 over the {} MB free where -o is: a smaller --size or fewer planes",
+                mb(need),
+                cycles + 1,
+                cfg.pixels(),
+                stimulus::line_bytes(cfg),
+                mb(free)
+            );
+            Err(Error::options("--size", message))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Bytes the scene's run holds for a program of `cycles` clocks: one clock's expected
+/// states (the file is written a clock at a time) and its write buffer, the control stream
+/// held whole (a line of 13 bytes a clock, as text and as a file), the generated sources
+/// and testbenches (under 100 bytes a pixel), the image, the cycle model, the process.
+fn need(cfg: &ArrayConfig, cycles: u64) -> u64 {
+    let pixels = cfg.pixels() as u64;
+    (pixels * stimulus::line_bytes(cfg))
+        .saturating_add(1 << 20)
+        .saturating_add((cycles + 1) * 13 * 2)
+        .saturating_add(pixels * (100 + 16))
         .saturating_add(CycleArray::memory_bytes(cfg))
         .saturating_add(16 << 20)
 }
@@ -265,10 +330,9 @@ fn bound(a: &ExportVerilogJob, cfg: &ArrayConfig, cycles: u64) -> crate::Result<
         return Err(Error::options("--scene", message));
     }
     let what = format!(
-        "expected.hex ({} clocks x {} pixels x {} bytes)",
-        cycles + 1,
+        "the cycle model of {} pixels, {} clocks",
         cfg.pixels(),
-        stimulus::line_bytes(cfg)
+        cycles + 1
     );
     Ok(a.max_memory
         .check(need(cfg, cycles), &what, "a smaller --size or fewer planes")?)

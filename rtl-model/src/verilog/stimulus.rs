@@ -7,6 +7,7 @@
 //! `state` word from [`state_bits`] and the comparator's counter from [`BitCounter`].
 
 use std::cell::RefCell;
+use std::io::Write;
 use std::rc::Rc;
 
 use super::hex;
@@ -93,10 +94,12 @@ pub fn expected_bytes(cfg: &ArrayConfig, cycles: u64) -> u64 {
 }
 
 /// What tb_array must see: every pixel's `state` after every clock, from the cycle model.
-pub struct Expected {
+/// `T` holds the expected-state text: a `String` ([`expected_states`]), or the sink it was
+/// written to ([`write_expected_states`]).
+pub struct Expected<T = String> {
     /// One hex line per pixel (row-major) per clock, clocks 1 ..= cycles + 1 (the idle clock
     /// that carries `last` changes nothing).
-    pub text: String,
+    pub text: T,
     /// The clock each operation ends with.
     pub ends: Vec<u64>,
     /// Clocks of the whole program, flush window included.
@@ -105,7 +108,22 @@ pub struct Expected {
     pub last: ArchState,
 }
 
-impl Expected {
+/// Why the expected states could not be written.
+#[derive(Debug)]
+pub enum StatesError {
+    /// The program does not run on the array.
+    Program(ProgramError),
+    /// The sink refused a write.
+    Io(std::io::Error),
+}
+
+impl From<ProgramError> for StatesError {
+    fn from(e: ProgramError) -> Self {
+        StatesError::Program(e)
+    }
+}
+
+impl<T> Expected<T> {
     /// The line `tb_array` prints when every register matched: the program's clocks and the
     /// idle one, its operations and the flush window when there is one.
     pub fn summary(&self) -> String {
@@ -218,12 +236,31 @@ fn rotate(v: u64, w: usize, moved: usize) -> u64 {
     }
 }
 
-/// Every pixel's `state` line, row-major.
-fn push_lines(cfg: &ArrayConfig, a: &CycleArray, k: u64, bit: Option<u32>, text: &mut String) {
+/// Every pixel's `state` line, row-major, into `text` (emptied first).
+fn clock_lines(cfg: &ArrayConfig, a: &CycleArray, k: u64, bit: Option<u32>, text: &mut String) {
+    text.clear();
     for y in 0..cfg.height {
         for x in 0..cfg.width {
             *text += &state_hex(cfg, &a.gather(x, y), &a.internal(x, y), k, bit);
             text.push('\n');
+        }
+    }
+}
+
+/// The sink of [`write_expected_states`] as its observer holds it: the comparator's bit
+/// counter, one clock's lines, and the first write that failed (nothing is written after it).
+struct Sink<W> {
+    out: W,
+    counter: BitCounter,
+    lines: String,
+    failed: Option<std::io::Error>,
+}
+
+impl<W: Write> Sink<W> {
+    fn clock(&mut self, cfg: &ArrayConfig, a: &CycleArray, k: u64, bit: Option<u32>) {
+        if self.failed.is_none() {
+            clock_lines(cfg, a, k, bit, &mut self.lines);
+            self.failed = self.out.write_all(self.lines.as_bytes()).err();
         }
     }
 }
@@ -237,20 +274,43 @@ pub fn expected_states(
     ops: &[Op],
     set: &EquationSet,
 ) -> Result<Expected, ProgramError> {
+    match write_expected_states(cfg, ops, set, Vec::new()) {
+        Ok(e) => Ok(Expected {
+            text: String::from_utf8(e.text).expect("hex lines are ASCII"),
+            ends: e.ends,
+            cycles: e.cycles,
+            last: e.last,
+        }),
+        Err(StatesError::Program(e)) => Err(e),
+        Err(StatesError::Io(e)) => unreachable!("a Vec takes every write: {e}"),
+    }
+}
+
+/// [`expected_states`] written to `out` a clock at a time as the model runs (one clock's
+/// lines held, not the file's), returned with the run. A file of [`expected_bytes`] this way
+/// costs memory for one clock only.
+pub fn write_expected_states<W: Write + 'static>(
+    cfg: ArrayConfig,
+    ops: &[Op],
+    set: &EquationSet,
+    out: W,
+) -> Result<Expected<W>, StatesError> {
     check_program(ops, cfg.stack_depth)?;
     let mut arr = CycleArray::new(cfg, set.clone());
-    // The comparator's bit counter and the lines so far.
-    let out = Rc::new((
-        RefCell::new(String::new()),
-        RefCell::new(BitCounter::new(&cfg)),
-    ));
-    let seen = Rc::clone(&out);
+    let sink = Rc::new(RefCell::new(Sink {
+        out,
+        counter: BitCounter::new(&cfg),
+        lines: String::new(),
+        failed: None,
+    }));
+    let seen = Rc::clone(&sink);
     let mut next = 1;
     arr.observe(Box::new(move |a: &CycleArray, c: Clock| {
         assert_eq!(c.t, next, "the observer sees every clock once, in order");
         next += 1;
-        let k = seen.1.borrow_mut().clock(&c);
-        push_lines(&cfg, a, k, c.bit, &mut seen.0.borrow_mut());
+        let mut s = seen.borrow_mut();
+        let k = s.counter.clock(&c);
+        s.clock(&cfg, a, k, c.bit);
     }));
     let mut ends = vec![];
     for op in ops {
@@ -258,15 +318,23 @@ pub fn expected_states(
         ends.push(arr.cycles());
     }
     arr.finish();
-    let k = out.1.borrow().k();
-    let mut text = out.0.take();
-    push_lines(&cfg, &arr, k, None, &mut text);
-    Ok(Expected {
-        text,
-        ends,
-        cycles: arr.cycles(),
-        last: arr.state(),
-    })
+    let k = sink.borrow().counter.k();
+    sink.borrow_mut().clock(&cfg, &arr, k, None);
+    let (cycles, last) = (arr.cycles(), arr.state());
+    drop(arr);
+    let sink = Rc::try_unwrap(sink)
+        .ok()
+        .expect("the array and its observer are gone")
+        .into_inner();
+    match sink.failed {
+        Some(e) => Err(StatesError::Io(e)),
+        None => Ok(Expected {
+            text: sink.out,
+            ends,
+            cycles,
+            last,
+        }),
+    }
 }
 
 /// `run.sh`: build and run `tb_array` in the script's directory under Icarus (`sh run.sh`)
