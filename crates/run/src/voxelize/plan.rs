@@ -215,6 +215,9 @@ impl Plan {
                 [usize::from(whole_volume)],
             false => crate::memory::slab_route_estimate(slicer, grid, threads),
         };
+        if job.outputs.preview.is_some() {
+            need = need.saturating_add(preview_bytes(grid.dims));
+        }
         if let Some(st) = job.outputs.store {
             need = need.saturating_add(octree::memory_estimate(st, grid.dims)?);
             if self.runs() {
@@ -262,6 +265,19 @@ impl Plan {
         })?;
         Ok(out)
     }
+}
+
+/// The memory of `--preview` beside the volume (`outputs::write_preview`): the three views'
+/// codes and depths (4 + 16 bytes a pixel), one view's colours, the image scaled towards 256
+/// pixels and the encoder's copy of it (3 bytes a pixel each).
+pub fn preview_bytes([nx, ny, nz]: [usize; 3]) -> u64 {
+    let views = [(nx, ny), (nx, nz), (ny, nz)].map(|(w, h)| (w as u64, h as u64));
+    let scale = (256 / nx.max(ny).max(nz).max(1)).max(1) as u64;
+    let codes: u64 = views.iter().map(|(w, h)| w * h * 20).sum();
+    let colours = views.iter().map(|(w, h)| w * h * 3).max().unwrap_or(0);
+    let width: u64 = views.iter().map(|(w, _)| w * scale + 4).sum();
+    let height = views.iter().map(|(_, h)| h * scale).max().unwrap_or(1);
+    codes + colours + 2 * 3 * width * height
 }
 
 /// Whether the NRRD file is written slice by slice as the run route sweeps them, the volume
