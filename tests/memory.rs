@@ -576,3 +576,70 @@ fn ten_thousand_primitives_fit_by_their_footprints() {
     let filled = voxels.iter().filter(|&&v| v != 0).count();
     assert_eq!(filled, want);
 }
+
+/// `text()` is charged by its outline's points while it is drawn (`TEXT_POINT_VERTICES`
+/// scene vertices each, within the vertex budget `--max-memory` gives the reader): 3,000
+/// characters under `--max-memory 50` are refused in one line before they are drawn (they
+/// passed at a 138 MiB peak), 500 characters pass below the limit.
+#[cfg(target_os = "linux")]
+#[test]
+fn text_is_drawn_within_the_memory_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let font = "vectors/fonts/LiberationSans-Regular.ttf";
+    std::fs::copy(font, dir.path().join("LiberationSans-Regular.ttf")).unwrap();
+    let scene = |n: usize| {
+        // Letters and digits in a fixed, varied order.
+        let chars: Vec<u8> = (b'a'..=b'z')
+            .chain(b'A'..=b'Z')
+            .chain(b'0'..=b'9')
+            .collect();
+        let s: String = (0..n).map(|i| chars[i * 7 % chars.len()] as char).collect();
+        let path = dir.path().join(format!("t{n}.csg"));
+        let text = format!(
+            "linear_extrude(height = 2) {{ text(text = \"{s}\", size = 5, \
+             font = \"Liberation Sans\"); }}\n"
+        );
+        std::fs::write(&path, text).unwrap();
+        path.to_str().unwrap().to_string()
+    };
+    let out = dir.path().join("v.nrrd");
+    let o = out.to_str().unwrap();
+    let long = scene(3000);
+    let args = [
+        "voxelize",
+        &long,
+        "--res",
+        "64",
+        "-o",
+        o,
+        "--max-memory",
+        "50",
+    ];
+    let refused = Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("points csgpix accepts"), "{err}");
+    assert!(!out.exists());
+    let short = scene(500);
+    let args = [
+        "voxelize",
+        &short,
+        "--res",
+        "64",
+        "-o",
+        o,
+        "--max-memory",
+        "50",
+    ];
+    let peak = peak_mib(&args);
+    assert!(out.exists(), "500 characters were not voxelized");
+    assert!(
+        peak <= 50,
+        "500 characters: peak {peak} MiB over --max-memory 50"
+    );
+}

@@ -15,6 +15,15 @@ pub const MAX_FRAGMENTS: usize = 10_000;
 /// a `$fn = 1080` pulley, past the million once kept here, are read.
 pub const MAX_SCENE_VERTICES: usize = 20_000_000;
 
+/// Scene vertices a point of a `text()` outline is charged while the text is drawn: the
+/// glyph outlines, their union and the cap's triangulation hold about 1,200 bytes a point with
+/// the point itself (voxelize peaks of 40 and 63 MB at 500 and 1,000 characters of about 38
+/// points each, 2026-11-29), and a scene vertex stands for [`crate::BYTES_PER_SCENE_VERTEX`]
+/// (64) bytes. Charged 1 (before), 3,000 characters passed `--max-memory 50` at a 138 MiB
+/// peak; charged 10, 1,000 characters at 61 MiB. The budget a text is drawn in leaves out
+/// the process's own [`crate::PROCESS_BYTES`].
+pub const TEXT_POINT_VERTICES: usize = 20;
+
 /// Most points a polyhedron may have (its convexity check takes points × faces steps).
 pub const MAX_POLYHEDRON_POINTS: usize = 10_000;
 

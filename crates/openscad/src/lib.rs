@@ -150,7 +150,7 @@ mod value;
 
 pub use consts_::{
     MAX_COORDINATE, MAX_FRAGMENTS, MAX_NESTING, MAX_POLYHEDRON_POINTS, MAX_SCENE_VERTICES,
-    MAX_VECTOR_NESTING, MIN_EXTENT,
+    MAX_VECTOR_NESTING, MIN_EXTENT, TEXT_POINT_VERTICES,
 };
 pub use export::{in_scad, read_scene, read_scene_with, scene_text, scene_text_with};
 pub use subprocess::DEFAULT_OPENSCAD_TIMEOUT;
@@ -237,6 +237,11 @@ impl Default for ReadOptions {
 /// triangles (a mesh primitive's triangles as f32 corners, a convex solid's f64 vertices and
 /// face lists, the copies a boolean or hull makes); measured scenes stay below it.
 pub const BYTES_PER_SCENE_VERTEX: u64 = 64;
+
+/// What the process holds before it reads a scene (its code, the allocator's arenas, the
+/// standard library): 11 MB measured, as the run layer's estimates count it. A `text()` is
+/// drawn within the vertex budget less this ([`TEXT_POINT_VERTICES`]).
+pub const PROCESS_BYTES: u64 = 16 << 20;
 
 impl ReadOptions {
     /// The vertex limit a memory limit of `bytes` allows ([`BYTES_PER_SCENE_VERTEX`] each).

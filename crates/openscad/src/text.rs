@@ -801,11 +801,18 @@ pub(crate) fn text_shape(
         valign: string(p, "valign", "baseline")?,
         segments: segments(size, res.fn_, res.fa, res.fs),
     };
-    let poly = render_noting(&spec, fonts, budget, notes).map_err(|problem| Fail {
+    // Drawing holds far more than the points drawn: each is charged as several vertices,
+    // within the budget less the process's own memory (a text is the one primitive whose
+    // drawing can outgrow the rest of a small run).
+    let process = (crate::PROCESS_BYTES / crate::BYTES_PER_SCENE_VERTEX) as usize;
+    let budget = budget.saturating_sub(process);
+    let points = budget / TEXT_POINT_VERTICES;
+    let poly = render_noting(&spec, fonts, points, notes).map_err(|problem| Fail {
         pos: p.pos,
         problem,
     })?;
-    check_budget(poly.points().count(), budget, p.pos)?;
+    let charged = poly.points().count().saturating_mul(TEXT_POINT_VERTICES);
+    check_budget(charged, budget, p.pos)?;
     Ok(poly)
 }
 
