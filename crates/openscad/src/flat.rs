@@ -1,11 +1,14 @@
 //! 2D shapes and the nodes over them: `square`, `circle`, `polygon`, `hull` and `offset` of
 //! 2D children, extrusion parameters.
 
+use csgpix_scene::error::{CsgError, Rule};
+use csgpix_scene::Error;
 use glam::DVec2;
 
 use crate::extrude::{
     default_slices, map_region, offset, region_points, Linear, Offset, Poly2, Region,
 };
+use crate::value::must;
 use crate::{consts_::*, frame::*, lex::*, linalg::*, node::*, primitives::*};
 
 /// A finished `hull()` of 2D shapes: the convex hull of their vertices.
@@ -27,13 +30,14 @@ pub(crate) fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {
 pub(crate) fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     let pos = frame.pos;
     if !frame.children.is_empty() {
-        return fail(pos, "`offset` takes 2D children, found a solid");
+        let node = "offset";
+        return fail(pos, CsgError::ChildDimension { node, flat: true });
     }
     if frame.flats.is_empty() {
         return Ok(None);
     }
     let Spec::Offset(o) = frame.spec else {
-        return fail(pos, "internal: an offset without its parameters");
+        return fail(pos, Error::Internal("an offset without its parameters"));
     };
     let at = frame.first_flat.unwrap_or(pos);
     let region = region_of(Op::Union, frame.flats);
@@ -97,7 +101,7 @@ pub(crate) fn flat_spec(head: &Head) -> Result<Spec, Fail> {
                 angle = 360.0;
             }
             if angle == 0.0 {
-                return fail(head.pos, "`rotate_extrude` needs a nonzero `angle`");
+                return fail(head.pos, CsgError::ZeroAngle);
             }
             Spec::Rotate { angle, res: res()? }
         }
@@ -137,7 +141,15 @@ pub(crate) fn finite(v: f64, at: Pos, what: &str) -> Result<f64, Fail> {
     if v.is_finite() && v.abs() <= MAX_COORDINATE {
         Ok(v)
     } else {
-        fail(at, format!("{what} must be a finite number"))
+        fail(at, must(what, Rule::FiniteNumber))
+    }
+}
+
+/// `what` past the coordinate limit.
+fn past_limit(what: &'static str) -> CsgError {
+    CsgError::CoordinateLimit {
+        what,
+        resized: false,
     }
 }
 
@@ -154,7 +166,7 @@ pub(crate) fn linear_args(p: &Params, res: (f64, f64, f64)) -> Result<LinearArgs
     let slices = match p.number("slices")? {
         Some((n, at)) => {
             if !(n.is_finite() && n < MAX_FRAGMENTS as f64) {
-                return fail(at, format!("`slices` must be below {MAX_FRAGMENTS}"));
+                return fail(at, must("`slices`", Rule::Below(MAX_FRAGMENTS)));
             }
             Some((n.max(1.0)) as usize)
         }
@@ -165,7 +177,7 @@ pub(crate) fn linear_args(p: &Params, res: (f64, f64, f64)) -> Result<LinearArgs
         Some(v) => {
             let s = v.pair("`scale`")?;
             if s.iter().any(|c| !(c.is_finite() && *c >= 0.0)) {
-                return fail(v.pos, "`scale` must not be negative");
+                return fail(v.pos, must("`scale`", Rule::NotNegative));
             }
             s
         }
@@ -201,7 +213,7 @@ pub(crate) fn flat_shape<'f>(
                         return Ok(None);
                     }
                     if s.iter().any(|c| c.is_nan() || *c > MAX_COORDINATE) {
-                        return fail(v.pos, "`size` exceeds the coordinate limit");
+                        return fail(v.pos, past_limit("`size`"));
                     }
                     s
                 }
@@ -233,11 +245,11 @@ pub(crate) fn polygon(p: &Params, budget: usize) -> Result<Poly2, Fail> {
             [x, y] | [x, y, _] => {
                 let q = DVec2::new(x.number("a point")?, y.number("a point")?);
                 if q.abs().max_element() > MAX_COORDINATE || !q.is_finite() {
-                    return fail(v.pos, "a point exceeds the coordinate limit");
+                    return fail(v.pos, past_limit("a point"));
                 }
                 Ok(q)
             }
-            _ => fail(v.pos, "a point must be [x, y]"),
+            _ => fail(v.pos, must("a point", Rule::Xy)),
         })
         .collect::<Result<Vec<_>, _>>()?;
     check_budget(pts.len(), budget, p.pos)?;
@@ -252,9 +264,8 @@ pub(crate) fn polygon(p: &Params, budget: usize) -> Result<Poly2, Fail> {
                     .map(|i| {
                         let k = i.number("a point index")?;
                         if k.fract() != 0.0 || k < 0.0 || k >= pts.len() as f64 {
-                            let msg =
-                                format!("point index {k} is not one of the {} points", pts.len());
-                            return fail(i.pos, msg);
+                            let count = pts.len();
+                            return fail(i.pos, CsgError::PointIndex { index: k, count });
                         }
                         Ok(pts[k as usize])
                     })
@@ -274,7 +285,7 @@ pub(crate) fn resize_args(p: &Params) -> Result<([f64; 3], [bool; 3]), Fail> {
     if let Some(v) = p.get("newsize") {
         let items = v.list("`newsize`")?;
         if items.len() > 3 {
-            return fail(v.pos, "`newsize` must be [x, y, z]");
+            return fail(v.pos, must("`newsize`", Rule::Xyz));
         }
         for (slot, item) in newsize.iter_mut().zip(items) {
             let s = finite(

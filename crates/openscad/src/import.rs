@@ -1,6 +1,7 @@
 //! `import()` of meshes and datasets.
 
 use crate::{frame::*, lex::*, node::*, value::*};
+use csgpix_scene::error::{CsgError, ImportArgument, Rule};
 use csgpix_scene::solid::Import;
 
 /// `import(file = "x.stl" | "x.obj" | "x.off" | "x.amf" | "x.3mf" | "x.nrrd", threshold = t)`:
@@ -11,7 +12,7 @@ pub(crate) fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
     let p = &head.params;
     let file = p.require("file", "a file name, e.g. import(\"part.stl\")")?;
     let Kind::Str(name) = &file.kind else {
-        return fail(file.pos, "`file` must be a string");
+        return fail(file.pos, must("`file`", Rule::Text));
     };
     let threshold = p.number("threshold")?;
     let lower = name.to_ascii_lowercase();
@@ -20,32 +21,25 @@ pub(crate) fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
         .iter()
         .any(|e| lower.rsplit_once('.').is_some_and(|(_, x)| x == *e));
     if !(dataset || mesh) {
-        return fail(
-            file.pos,
-            format!("`import(\"{name}\")`: csgpix imports .stl, .obj, .off, .amf and .3mf meshes, .nrrd datasets and .svg and .dxf drawings"),
-        );
+        let problem = CsgError::UnknownImportFormat { file: name.clone() };
+        return fail(file.pos, problem);
     }
     match (dataset, threshold) {
         (true, None) => {
-            return fail(
-                head.pos,
-                format!("`import(\"{name}\")` is a dataset: give its iso value, `threshold = t`"),
-            )
+            let file = name.clone();
+            return fail(head.pos, CsgError::NeedsThreshold { file });
         }
-        (false, Some((_, at))) => return fail(at, "`threshold` applies to datasets (.nrrd) only"),
+        (false, Some((_, at))) => return fail(at, refused(ImportArgument::Threshold)),
         _ => {}
     }
     if let Some((s, at)) = p.number("scale")? {
         if s != 1.0 {
-            return fail(
-                at,
-                "`scale` is not supported for 3D imports (use multmatrix)",
-            );
+            return fail(at, refused(ImportArgument::Scale));
         }
     }
     if let Some((t, at)) = threshold {
         if !t.is_finite() {
-            return fail(at, "`threshold` must be a finite number");
+            return fail(at, must("`threshold`", Rule::FiniteNumber));
         }
     }
     Ok(Import {
@@ -57,6 +51,11 @@ pub(crate) fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
         col: head.pos.col,
         mesh: None,
     })
+}
+
+/// An `import()` argument refused for the file's kind.
+fn refused(argument: ImportArgument) -> CsgError {
+    CsgError::ImportArgument(argument)
 }
 
 /// An `import` of an SVG file (a 2D shape, module [`crate::svg`]).
@@ -82,17 +81,14 @@ pub(crate) fn svg_args(head: &Head) -> Result<SvgArgs, Fail> {
     let p = &head.params;
     let file = p.require("file", "a file name")?;
     let Kind::Str(name) = &file.kind else {
-        return fail(file.pos, "`file` must be a string");
+        return fail(file.pos, must("`file`", Rule::Text));
     };
     if let Some(v) = p.get("id") {
-        return fail(
-            v.pos,
-            "`id` (one element of an SVG file) is not supported: OpenSCAD 2021.01 imports the whole file",
-        );
+        return fail(v.pos, refused(ImportArgument::SvgId));
     }
     if let Some(v) = p.get("layer") {
         if !matches!(&v.kind, Kind::Str(l) if l.is_empty()) {
-            return fail(v.pos, "`layer` applies to DXF files, not SVG");
+            return fail(v.pos, refused(ImportArgument::SvgLayer));
         }
     }
     let mut dpi = 72.0;
@@ -177,12 +173,12 @@ pub(crate) fn dxf_args(head: &Head) -> Result<DxfArgs, Fail> {
     let p = &head.params;
     let file = p.require("file", "a file name")?;
     let Kind::Str(name) = &file.kind else {
-        return fail(file.pos, "`file` must be a string");
+        return fail(file.pos, must("`file`", Rule::Text));
     };
     let layer = match p.get("layer").map(|v| (&v.kind, v.pos)) {
         None => String::new(),
         Some((Kind::Str(l), _)) => l.clone(),
-        Some((_, at)) => return fail(at, "`layer` must be a string (a DXF layer's name)"),
+        Some((_, at)) => return fail(at, must("`layer`", Rule::LayerName)),
     };
     let mut origin = [0.0, 0.0];
     let mut warning = None;
@@ -196,7 +192,7 @@ pub(crate) fn dxf_args(head: &Head) -> Result<DxfArgs, Fail> {
         };
         match pair {
             Some(o) if !o.iter().all(|c| c.is_finite()) => {
-                return fail(v.pos, "`origin` must be finite")
+                return fail(v.pos, must("`origin`", Rule::Finite))
             }
             Some(o) => origin = o,
             None => warning = Some(v.pos),
@@ -208,7 +204,9 @@ pub(crate) fn dxf_args(head: &Head) -> Result<DxfArgs, Fail> {
         (at, msg)
     });
     let scale = match p.get("scale").map(|v| (&v.kind, v.pos)) {
-        Some((Kind::Num(s), at)) if !s.is_finite() => return fail(at, "`scale` must be finite"),
+        Some((Kind::Num(s), at)) if !s.is_finite() => {
+            return fail(at, must("`scale`", Rule::Finite))
+        }
         Some((Kind::Num(s), _)) if *s > 0.0 => *s,
         _ => 1.0,
     };

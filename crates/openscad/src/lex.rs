@@ -1,5 +1,6 @@
 //! Tokens of the `.csg` text: numbers, names, strings, symbols, with 1-based positions.
 
+use csgpix_scene::CsgError;
 use std::fmt;
 
 // ---------------------------------------------------------------------------------------------
@@ -25,10 +26,11 @@ pub(crate) struct Fail {
     pub(crate) problem: csgpix_scene::Error,
 }
 
-pub(crate) fn fail<T>(pos: Pos, msg: impl Into<String>) -> Result<T, Fail> {
+/// `problem` at `pos`.
+pub(crate) fn fail<T>(pos: Pos, problem: impl Into<csgpix_scene::Error>) -> Result<T, Fail> {
     Err(Fail {
         pos,
-        problem: csgpix_scene::Error::invalid(msg),
+        problem: problem.into(),
     })
 }
 
@@ -120,7 +122,8 @@ impl<'a> Lexer<'a> {
             }
             Some(_) => {
                 let c = self.text.get(self.at..).and_then(|s| s.chars().next());
-                return fail(pos, format!("unexpected character {:?}", c.unwrap_or('?')));
+                let found = c.unwrap_or('?');
+                return fail(pos, CsgError::UnexpectedCharacter { found });
             }
         };
         Ok(Token {
@@ -155,7 +158,7 @@ impl<'a> Lexer<'a> {
                     return Ok(());
                 }
                 (Some(_), _) => self.bump(),
-                (None, _) => return fail(start, "unterminated comment (missing `*/`)"),
+                (None, _) => return fail(start, CsgError::Unterminated { comment: true }),
             }
         }
     }
@@ -190,17 +193,14 @@ impl<'a> Lexer<'a> {
         let text = &self.text[start..self.at];
         match text.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(Tok::Num(v)),
-            Ok(_) => fail(pos, format!("number `{text}` is out of range")),
+            Ok(_) => fail(pos, bad_number(text, true)),
             Err(_) => self.bad_number(start, pos),
         }
     }
 
     pub(crate) fn bad_number(&mut self, start: usize, pos: Pos) -> Result<Tok, Fail> {
         self.bump_while(continues_number);
-        fail(
-            pos,
-            format!("malformed number `{}`", &self.text[start..self.at]),
-        )
+        fail(pos, bad_number(&self.text[start..self.at], false))
     }
 
     pub(crate) fn string(&mut self, pos: Pos) -> Result<Tok, Fail> {
@@ -208,7 +208,7 @@ impl<'a> Lexer<'a> {
         let mut bytes = Vec::new();
         loop {
             let Some(b) = self.byte(0) else {
-                return fail(pos, "unterminated string (missing `\"`)");
+                return fail(pos, CsgError::Unterminated { comment: false });
             };
             self.bump();
             match b {
@@ -226,6 +226,14 @@ impl<'a> Lexer<'a> {
                 other => bytes.push(other),
             }
         }
+    }
+}
+
+/// A number token that does not parse, or parses to an infinity (`out_of_range`).
+fn bad_number(text: &str, out_of_range: bool) -> CsgError {
+    CsgError::BadNumber {
+        text: text.to_string(),
+        out_of_range,
     }
 }
 

@@ -1,5 +1,7 @@
 //! The nodes csgpix reads, their parameters, and arguments bound to them.
 
+use csgpix_scene::error::{CsgError, Rule};
+
 use crate::{lex::*, value::*};
 
 // Nodes and their parameters
@@ -217,30 +219,25 @@ impl Params {
                 None => match next_positional.next() {
                     Some(&name) => (name, arg.value.pos),
                     None => {
-                        let msg = format!("too many positional arguments for `{}`", node.name());
-                        return fail(arg.value.pos, msg);
+                        let node = node.name();
+                        return fail(arg.value.pos, CsgError::TooManyPositional { node });
                     }
                 },
             };
             if values.iter().any(|(n, _)| *n == name) {
-                return fail(at, format!("argument `{name}` given twice"));
+                return fail(at, CsgError::ArgumentTwice { name });
             }
             values.push((name, arg.value));
         }
         Ok(Params { node, pos, values })
     }
 
-    pub(crate) fn unknown(node: NodeKind, name: &str) -> String {
+    pub(crate) fn unknown(node: NodeKind, name: &str) -> CsgError {
         let (positional, named) = node.parameters();
-        let all: Vec<&str> = positional.iter().chain(named).copied().collect();
-        if all.is_empty() {
-            format!("`{}` takes no arguments, found `{name}`", node.name())
-        } else {
-            let list = all.join(", ");
-            format!(
-                "`{}` has no parameter `{name}` (it takes {list})",
-                node.name()
-            )
+        CsgError::UnknownParameter {
+            node: node.name(),
+            name: name.to_string(),
+            known: positional.iter().chain(named).copied().collect(),
         }
     }
 
@@ -266,7 +263,7 @@ impl Params {
                 kind: Kind::Bool(b),
                 ..
             }) => Ok(*b),
-            Some(v) => fail(v.pos, format!("`{name}` must be true or false")),
+            Some(v) => fail(v.pos, must(&format!("`{name}`"), Rule::Boolean)),
         }
     }
 

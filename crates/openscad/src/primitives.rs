@@ -1,5 +1,6 @@
 //! `cube`, `sphere`, `cylinder` and `polyhedron`, tessellated as OpenSCAD does.
 
+use csgpix_scene::error::{CsgError, Rule};
 use csgpix_scene::Error;
 use glam::DVec3;
 use std::collections::HashMap;
@@ -33,11 +34,10 @@ pub(crate) fn place(shape: Shape, ctx: &Ctx, pos: Pos) -> Result<ConvexSolid, Fa
         }
     }
     if vertices.iter().flatten().any(|&c| too_large(c)) {
-        let msg = format!("a coordinate exceeds {MAX_COORDINATE:e} in size");
-        return fail(pos, msg);
+        return fail(pos, coordinate_too_large(None));
     }
-    if let Some(msg) = degenerate_extent(vertices.iter().copied()) {
-        return fail(pos, msg);
+    if let Some(problem) = degenerate_extent(vertices.iter().copied()) {
+        return fail(pos, problem);
     }
     Ok(ConvexSolid {
         vertices,
@@ -49,7 +49,7 @@ pub(crate) fn place(shape: Shape, ctx: &Ctx, pos: Pos) -> Result<ConvexSolid, Fa
 
 /// `degenerate extent: …` when the box around `points` has a side that is positive but below
 /// [`MIN_EXTENT`].
-pub(crate) fn degenerate_extent(points: impl Iterator<Item = [f64; 3]>) -> Option<String> {
+pub(crate) fn degenerate_extent(points: impl Iterator<Item = [f64; 3]>) -> Option<CsgError> {
     let (lo, hi) = points.fold(
         ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
         |(lo, hi), p| {
@@ -63,10 +63,29 @@ pub(crate) fn degenerate_extent(points: impl Iterator<Item = [f64; 3]>) -> Optio
         .into_iter()
         .zip((0..3).map(|i| hi[i] - lo[i]))
         .find(|&(_, side)| side > 0.0 && side < MIN_EXTENT)?;
-    Some(format!(
-        "degenerate extent: the solid is {side:e} across in {axis}, under {MIN_EXTENT:e} \
-         (csgpix's smallest, as {MAX_COORDINATE:e} is its largest coordinate)"
-    ))
+    Some(CsgError::ThinSolid {
+        side,
+        axis,
+        min: MIN_EXTENT,
+        max: MAX_COORDINATE,
+    })
+}
+
+/// A coordinate past [`MAX_COORDINATE`], shown when given.
+pub(crate) fn coordinate_too_large(value: Option<f64>) -> CsgError {
+    CsgError::CoordinateTooLarge {
+        value,
+        limit: MAX_COORDINATE,
+    }
+}
+
+/// `fragments` past [`MAX_FRAGMENTS`] (`resolution`: counted from `$fn`, `$fa`, `$fs`).
+pub(crate) fn too_many_fragments(fragments: f64, resolution: bool) -> CsgError {
+    CsgError::TooManyFragments {
+        fragments,
+        limit: MAX_FRAGMENTS,
+        resolution,
+    }
 }
 
 /// Beyond [`MAX_COORDINATE`], or not a number at all.
@@ -78,11 +97,8 @@ pub(crate) fn too_large(c: f64) -> bool {
 /// ([`crate::ReadOptions::max_vertices`]).
 pub(crate) fn check_budget(vertices: usize, budget: usize, pos: Pos) -> Result<(), Fail> {
     if vertices > budget {
-        let msg = format!(
-            "the scene would pass its vertex limit: {vertices} more vertices, {budget} left \
-             (the limit follows the memory limit, e.g. --max-memory)"
-        );
-        return fail(pos, msg);
+        let left = budget;
+        return fail(pos, CsgError::VertexLimit { vertices, left });
     }
     Ok(())
 }
@@ -142,7 +158,7 @@ impl Resolution {
     pub(crate) fn read(params: &Params) -> Result<Self, Fail> {
         let get = |name: &str, default: f64| match params.number(name)? {
             None => Ok(default),
-            Some((v, pos)) if v < 0.0 => fail(pos, format!("`{name}` must not be negative")),
+            Some((v, pos)) if v < 0.0 => fail(pos, must(&format!("`{name}`"), Rule::NotNegative)),
             Some((v, _)) => Ok(v),
         };
         Ok(Resolution {
@@ -174,10 +190,7 @@ impl Resolution {
     pub(crate) fn fragments(&self, r: f64, pos: Pos) -> Result<usize, Fail> {
         let n = self.fragments_from_r(r);
         if n > MAX_FRAGMENTS as f64 {
-            let msg = format!(
-                "{n} fragments (from $fn, $fa, $fs) is more than the {MAX_FRAGMENTS} csgpix accepts"
-            );
-            return fail(pos, msg);
+            return fail(pos, too_many_fragments(n, true));
         }
         Ok(n as usize)
     }
@@ -338,9 +351,8 @@ pub(crate) fn polyhedron(
         return Ok(None);
     };
     check_budget(points.len(), budget, params.pos)?;
-    if let Some(p) = points.iter().flatten().find(|&&c| too_large(c)) {
-        let msg = format!("coordinate {p} exceeds {MAX_COORDINATE:e} in size");
-        return fail(params.pos, msg);
+    if let Some(&p) = points.iter().flatten().find(|&&c| too_large(c)) {
+        return fail(params.pos, coordinate_too_large(Some(p)));
     }
     let faces = match params.get("faces") {
         Some(faces) => faces,

@@ -24,7 +24,7 @@
 //! below `projection`, `hull`, `minkowski` and `resize` from the scene's folder); only a scene
 //! given as text, with no folder, leaves it a file, which is refused here.
 
-use csgpix_scene::Error;
+use csgpix_scene::{CsgError, Error};
 use glam::{DVec2, DVec3};
 
 use crate::cap::key;
@@ -415,11 +415,12 @@ pub(crate) fn projection(
 ) -> Result<(Item, CsgNode), Fail> {
     let pos = frame.pos;
     if !frame.flats.is_empty() {
-        return fail(pos, "`projection` takes 3D children, found a 2D shape");
+        let node = "projection";
+        return fail(pos, CsgError::ChildDimension { node, flat: false });
     }
     let cut = match frame.spec {
         Spec::Projection { cut } => cut,
-        _ => return fail(pos, "internal: a projection without its parameters"),
+        _ => return fail(pos, Error::Internal("a projection without its parameters")),
     };
     let node = combine(Op::Union, frame.children);
     let region = if cut {
@@ -443,7 +444,7 @@ pub(crate) fn resize(
 ) -> Result<Item, Fail> {
     let pos = frame.pos;
     let Spec::Resize { newsize, auto } = frame.spec else {
-        return fail(pos, "internal: a resize without its parameters");
+        return fail(pos, Error::Internal("a resize without its parameters"));
     };
     if !frame.flats.is_empty() {
         return Ok(resize_flat(frame, newsize, auto));
@@ -494,6 +495,12 @@ fn resize_flat(frame: Frame, newsize: [f64; 3], auto: [bool; 3]) -> Item {
     Item::Flat(region, at)
 }
 
+/// A coordinate a `resize` takes past the limit.
+const RESIZED_PAST_LIMIT: CsgError = CsgError::CoordinateLimit {
+    what: "a coordinate",
+    resized: true,
+};
+
 /// The solids and imports under `node` moved by `m` in place (faces reversed when `m`
 /// mirrors); an error when a coordinate then passes the limit.
 fn move_leaves(
@@ -514,10 +521,7 @@ fn move_leaves(
                 solid.faces.iter_mut().for_each(|f| f.reverse());
             }
             if solid.vertices.iter().flatten().any(|&c| too_large(c)) {
-                return fail(
-                    pos,
-                    "a coordinate exceeds the coordinate limit after resize",
-                );
+                return fail(pos, RESIZED_PAST_LIMIT);
             }
             continue;
         }
@@ -532,10 +536,7 @@ fn move_leaves(
                     }
                 }
                 if tris.iter().flatten().flatten().any(|&c| too_large(c)) {
-                    return fail(
-                        pos,
-                        "a coordinate exceeds the coordinate limit after resize",
-                    );
+                    return fail(pos, RESIZED_PAST_LIMIT);
                 }
             }
             None => {

@@ -25,7 +25,7 @@ use crate::{
 };
 use crate::{Fallback, ReadOptions};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
-use csgpix_scene::Error;
+use csgpix_scene::{CsgError, Error};
 
 /// An `import` of a DXF file, which `--fallback openscad` outlines when csgpix refuses it
 /// (`.svg` and `.dxf` are read natively, modules [`crate::svg`] and [`crate::dxf`]).
@@ -132,14 +132,10 @@ impl<'a> Reader<'a> {
                 let mut root = combine(Op::Union, std::mem::take(&mut self.top));
                 if let Some(at) = self.top_flat {
                     if self.top_dim == Some(Dim::Flat) && root != CsgNode::Empty {
-                        let msg = "the top level is 2D (its first object is a 2D shape): \
-                                   OpenSCAD renders a 2D drawing, csgpix voxelizes solids";
-                        return fail(at, msg);
+                        return fail(at, CsgError::FlatTopLevel { alone: false });
                     }
                     if root == CsgNode::Empty {
-                        let msg = "a 2D shape outside linear_extrude or rotate_extrude: \
-                                   csgpix voxelizes solids";
-                        return fail(at, msg);
+                        return fail(at, CsgError::FlatTopLevel { alone: true });
                     }
                     let msg = "Ignoring 2D child object for 3D operation (top level)";
                     self.warnings.push((at, msg.to_string()));
@@ -167,7 +163,7 @@ impl<'a> Reader<'a> {
 
     fn close_brace(&mut self, pos: Pos) -> Result<(), Fail> {
         match self.open.last() {
-            None => fail(pos, "unexpected '}' (no '{' is open)"),
+            None => fail(pos, CsgError::UnexpectedCloseBrace),
             Some(frame) if frame.closer == Closer::Single => fail(pos, unclosed(frame, "'}'")),
             Some(_) => {
                 self.parser.next()?;
@@ -188,10 +184,11 @@ impl<'a> Reader<'a> {
 
     fn statement(&mut self, pos: Pos) -> Result<(), Fail> {
         if self.open.len() >= MAX_NESTING {
-            return fail(
-                pos,
-                format!("statements nested deeper than {MAX_NESTING} levels"),
-            );
+            let problem = CsgError::NestedTooDeep {
+                what: "statements",
+                limit: MAX_NESTING,
+            };
+            return fail(pos, problem);
         }
         if self.options.fallback == Fallback::Openscad {
             if let Some(name) = self.unknown_node()? {
@@ -259,16 +256,13 @@ impl<'a> Reader<'a> {
             match token.tok {
                 Tok::Sym(b'%' | b'*') => skip = true,
                 Tok::Sym(b'#') => {}
-                Tok::Sym(b'!') => return fail(token.pos, "the root modifier '!' is not supported"),
+                Tok::Sym(b'!') => return fail(token.pos, CsgError::RootModifier),
                 _ => break token,
             }
         };
         let Tok::Ident(name) = &token.tok else {
-            let found = token.tok.describe();
-            return fail(
-                token.pos,
-                format!("expected a statement such as `group() {{`, found {found}"),
-            );
+            let expected = "a statement such as `group() {`";
+            return fail(token.pos, expected_found(expected, &token.tok));
         };
         let Some(kind) = NodeKind::from_name(name) else {
             return fail(token.pos, unsupported(name));
@@ -517,7 +511,7 @@ impl<'a> Reader<'a> {
                     }
                 }
                 Tok::Sym(b';') if depth == 0 => return Ok((start, end, skip)),
-                Tok::Eof => return fail(self.parser.peek()?.pos, "unexpected end of file"),
+                Tok::Eof => return fail(self.parser.peek()?.pos, CsgError::UnexpectedEof),
                 _ => {}
             }
             let t = self.parser.next()?;
@@ -852,16 +846,14 @@ impl<'a> Reader<'a> {
                 };
                 let f = (res.fragments_from_r(r) * angle.abs() / 360.0).max(1.0);
                 if f > MAX_FRAGMENTS as f64 {
-                    let msg =
-                        format!("{f} fragments is more than the {MAX_FRAGMENTS} csgpix accepts");
-                    return fail(pos, msg);
+                    return fail(pos, too_many_fragments(f, false));
                 }
                 Extrusion::Rotate {
                     angle,
                     fragments: f as usize,
                 }
             }
-            _ => return fail(pos, "internal: an extrusion without its parameters"),
+            _ => return fail(pos, Error::Internal("an extrusion without its parameters")),
         };
         let to = Placement {
             matrix: frame.placement,
@@ -972,11 +964,10 @@ impl<'a> Reader<'a> {
             .map(|t| t.map(|v| transform_point(&m, v.to_array())))
             .collect();
         if tris.iter().flatten().flatten().any(|&c| too_large(c)) {
-            let msg = format!("a coordinate exceeds {MAX_COORDINATE:e} in size");
-            return fail(to.pos, msg);
+            return fail(to.pos, coordinate_too_large(None));
         }
-        if let Some(msg) = degenerate_extent(tris.iter().flatten().copied()) {
-            return fail(to.pos, msg);
+        if let Some(problem) = degenerate_extent(tris.iter().flatten().copied()) {
+            return fail(to.pos, problem);
         }
         self.imports.push(Import {
             file: format!("{} at {}", to.name, to.pos),
@@ -1226,23 +1217,23 @@ enum Extrusion {
     Rotate { angle: f64, fragments: usize },
 }
 
-fn unsupported(name: &str) -> String {
-    let known: Vec<&str> = NODES.iter().map(|(n, _)| *n).collect();
-    format!(
-        "unsupported node `{name}` (csgpix reads {})",
-        known.join(", ")
-    )
+fn unsupported(name: &str) -> CsgError {
+    CsgError::UnsupportedNode {
+        name: name.to_string(),
+        known: NODES.iter().map(|(n, _)| *n).collect(),
+    }
 }
 
-fn unclosed(frame: &Frame, found: &str) -> String {
+/// `expected` what closes `frame`, `found` what came instead.
+fn unclosed(frame: &Frame, found: &str) -> Error {
     let name = frame.kind.name();
-    match frame.closer {
-        Closer::Brace(at) => {
-            format!("expected '}}' to close `{name}` opened at {at}, found {found}")
-        }
-        Closer::Single => {
-            format!("expected a child statement or ';' after `{name}(…)`, found {found}")
-        }
+    let expected = match frame.closer {
+        Closer::Brace(at) => format!("'}}' to close `{name}` opened at {at}"),
+        Closer::Single => format!("a child statement or ';' after `{name}(…)`"),
+    };
+    Error::Expected {
+        expected,
+        found: found.to_string(),
     }
 }
 

@@ -20,6 +20,7 @@
 use std::io::{BufRead, Read, Seek, SeekFrom};
 use std::path::Path;
 
+use csgpix_scene::error::Rule;
 use csgpix_scene::Error;
 use glam::DVec3;
 
@@ -524,7 +525,7 @@ pub(crate) fn surface_args(head: &Head) -> Result<SurfaceArgs, Fail> {
         Some(Value {
             kind: Kind::Str(s), ..
         }) => s.clone(),
-        Some(v) => return fail(v.pos, "`file` must be a string"),
+        Some(v) => return fail(v.pos, must("`file`", Rule::Text)),
     };
     let flag = |name: &str| matches!(p.get(name).map(|v| &v.kind), Some(Kind::Bool(true)));
     Ok(SurfaceArgs {

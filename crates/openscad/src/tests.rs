@@ -5,6 +5,8 @@ use crate::{consts_::*, linalg::*, primitives::*};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene};
 use proptest::prelude::*;
 
+mod messages;
+
 const EXAMPLE: &str = include_str!("../../../vectors/scenes/cube-minus-cylinder.csg");
 
 /// Every node kind, for the mutation fuzzing.

@@ -40,6 +40,7 @@
 //! the best match), and its answer is drawn with a warning naming the font substituted
 //! (`--strict` refuses instead); without fontconfig the font is refused.
 
+use csgpix_scene::error::Rule;
 use csgpix_scene::Error;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -50,6 +51,7 @@ use rustybuzz::ttf_parser;
 use crate::extrude::Poly2;
 use crate::node::Params;
 use crate::primitives::{check_budget, Resolution};
+use crate::value::must;
 use crate::{consts_::*, lex::*};
 
 /// OpenSCAD's default font (`FontCache::DEFAULT_FONT`).
@@ -761,7 +763,7 @@ fn string(p: &Params, name: &str, default: &str) -> Result<String, Fail> {
         None => Ok(default.into()),
         Some(v) => match &v.kind {
             crate::value::Kind::Str(s) => Ok(s.clone()),
-            _ => fail(v.pos, format!("`{name}` must be a string")),
+            _ => fail(v.pos, must(&format!("`{name}`"), Rule::Text)),
         },
     }
 }
@@ -777,14 +779,14 @@ pub(crate) fn text_shape(
     let size = match p.number("size")? {
         None => 10.0,
         Some((s, at)) if !(s > 0.0 && s <= MAX_COORDINATE) => {
-            return fail(at, format!("`size` must be positive, found {s}"))
+            return fail(at, must("`size`", Rule::Positive(s)))
         }
         Some((s, _)) => s,
     };
     let spacing = match p.number("spacing")? {
         None => 1.0,
         Some((s, at)) if !(s.is_finite() && s.abs() <= MAX_COORDINATE) => {
-            return fail(at, "`spacing` must be a finite number")
+            return fail(at, must("`spacing`", Rule::FiniteNumber))
         }
         Some((s, _)) => s,
     };

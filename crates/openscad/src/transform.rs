@@ -1,5 +1,7 @@
 //! `multmatrix` and `color`: transforms and colours the solids below a node inherit.
 
+use csgpix_scene::error::{CsgError, Rule};
+
 use crate::{lex::*, linalg::*, node::*, value::*};
 
 /// `multmatrix(m)`: 3 or 4 rows of 4 numbers, the last row `[0, 0, 0, w]` with the matrix
@@ -10,12 +12,12 @@ pub(crate) fn matrix(params: &Params) -> Result<Option<Mat4>, Fail> {
     };
     let rows = value.list("`m`")?;
     if !(3..=4).contains(&rows.len()) {
-        return fail(value.pos, "`m` must have 4 rows of 4 numbers");
+        return fail(value.pos, must("`m`", Rule::MatrixRows));
     }
     let mut m = IDENTITY;
     for (row, cells) in m.iter_mut().zip(rows) {
         let [a, b, c, d] = cells.list("a row of `m`")? else {
-            return fail(cells.pos, "a row of `m` must have 4 numbers");
+            return fail(cells.pos, must("a row of `m`", Rule::MatrixRow));
         };
         let entry = "an entry of `m`";
         *row = [
@@ -33,10 +35,7 @@ pub(crate) fn matrix(params: &Params) -> Result<Option<Mat4>, Fail> {
 /// they are placed ([`removal_3d`], [`removal_2d`]), as OpenSCAD removes them.
 pub(crate) fn normalise(mut m: Mat4, pos: Pos) -> Result<Mat4, Fail> {
     if m[3][..3].iter().any(|&v| v != 0.0) {
-        return fail(
-            pos,
-            "projective matrices are not supported: the last row of `m` must be [0, 0, 0, w]",
-        );
+        return fail(pos, CsgError::ProjectiveMatrix);
     }
     let w = m[3][3];
     if w != 1.0 {
@@ -91,14 +90,11 @@ pub(crate) fn colour(params: &Params, warnings: &mut Vec<(Pos, String)>) -> Resu
     let c = params.require("c", "a colour [r, g, b, a]")?;
     let items = match &c.kind {
         Kind::Str(name) => {
-            let msg = format!(
-                "colour \"{name}\" is not supported: give it as color([r, g, b, a]), \
-                 as OpenSCAD's CSG export writes it"
-            );
-            return fail(c.pos, msg);
+            let name = name.clone();
+            return fail(c.pos, CsgError::NamedColour { name });
         }
         Kind::List(items) if (3..=4).contains(&items.len()) => items,
-        _ => return fail(c.pos, "`c` must be [r, g, b] or [r, g, b, a]"),
+        _ => return fail(c.pos, must("`c`", Rule::Rgba)),
     };
     let mut rgba = [1.0; 4];
     for (slot, item) in rgba.iter_mut().zip(items) {

@@ -2,6 +2,9 @@
 
 use std::collections::VecDeque;
 
+use csgpix_scene::error::{CsgError, Rule};
+use csgpix_scene::Error;
+
 use crate::{consts_::*, lex::*, linalg::*};
 
 #[derive(Clone, Debug, PartialEq)]
@@ -24,14 +27,14 @@ impl Value {
     pub(crate) fn number(&self, what: &str) -> Result<f64, Fail> {
         match self.kind {
             Kind::Num(v) => Ok(v),
-            _ => fail(self.pos, format!("{what} must be a number")),
+            _ => fail(self.pos, must(what, Rule::Number)),
         }
     }
 
     pub(crate) fn list(&self, what: &str) -> Result<&[Value], Fail> {
         match &self.kind {
             Kind::List(items) => Ok(items),
-            _ => fail(self.pos, format!("{what} must be a vector")),
+            _ => fail(self.pos, must(what, Rule::Vector)),
         }
     }
 
@@ -41,7 +44,7 @@ impl Value {
             Kind::Num(s) => Ok([*s, *s]),
             _ => match self.list(what)? {
                 [x, y] => Ok([x.number(what)?, y.number(what)?]),
-                _ => fail(self.pos, format!("{what} must be a number or [x, y]")),
+                _ => fail(self.pos, must(what, Rule::NumberOrXy)),
             },
         }
     }
@@ -49,7 +52,7 @@ impl Value {
     pub(crate) fn vec3(&self, what: &str) -> Result<Vec3, Fail> {
         match self.list(what)? {
             [x, y, z] => Ok([x.number(what)?, y.number(what)?, z.number(what)?]),
-            _ => fail(self.pos, format!("{what} must be [x, y, z]")),
+            _ => fail(self.pos, must(what, Rule::Xyz)),
         }
     }
 }
@@ -116,11 +119,8 @@ impl<'a> Parser<'a> {
         if token.tok == Tok::Sym(c) {
             Ok(token.pos)
         } else {
-            let found = token.tok.describe();
-            fail(
-                token.pos,
-                format!("expected '{}' {context}, found {found}", c as char),
-            )
+            let expected = format!("'{}' {context}", c as char);
+            fail(token.pos, expected_found(expected, &token.tok))
         }
     }
 
@@ -140,11 +140,8 @@ impl<'a> Parser<'a> {
                 Tok::Sym(b',') => {}
                 Tok::Sym(b')') => return Ok(args),
                 other => {
-                    let msg = format!(
-                        "expected ',' or ')' in the arguments of `{node}`, found {}",
-                        other.describe()
-                    );
-                    return fail(token.pos, msg);
+                    let expected = format!("',' or ')' in the arguments of `{node}`");
+                    return fail(token.pos, expected_found(expected, &other));
                 }
             }
         }
@@ -171,8 +168,11 @@ impl<'a> Parser<'a> {
             let token = self.next()?;
             if token.tok == Tok::Sym(b'[') && !self.at_sym(b']')? {
                 if open.len() >= MAX_VECTOR_NESTING {
-                    let msg = format!("vectors nested deeper than {MAX_VECTOR_NESTING} levels");
-                    return fail(token.pos, msg);
+                    let problem = CsgError::NestedTooDeep {
+                        what: "vectors",
+                        limit: MAX_VECTOR_NESTING,
+                    };
+                    return fail(token.pos, problem);
                 }
                 open.push((token.pos, Vec::new()));
                 continue;
@@ -198,9 +198,8 @@ impl<'a> Parser<'a> {
                 Tok::Sym(b',') => self.eat_sym(b']')?.is_some(),
                 Tok::Sym(b']') => true,
                 other => {
-                    let found = other.describe();
-                    let msg = format!("expected ',' or ']' in a vector, found {found}");
-                    return fail(token.pos, msg);
+                    let expected = "',' or ']' in a vector";
+                    return fail(token.pos, expected_found(expected, &other));
                 }
             };
             if !closed {
@@ -236,12 +235,8 @@ impl<'a> Parser<'a> {
                     _ if v.is_some() && sign == b'-' => Kind::Num(-v.unwrap_or_default()),
                     _ if v.is_some() => Kind::Num(v.unwrap_or_default()),
                     other => {
-                        let msg = format!(
-                            "expected a number after '{}', found {}",
-                            sign as char,
-                            other.describe()
-                        );
-                        return fail(token.pos, msg);
+                        let expected = format!("a number after '{}'", sign as char);
+                        return fail(token.pos, expected_found(expected, &other));
                     }
                 }
             }
@@ -250,21 +245,31 @@ impl<'a> Parser<'a> {
                 "false" => Kind::Bool(false),
                 "undef" => Kind::Undef,
                 "inf" | "nan" => Kind::Num(non_finite(name.as_str()).unwrap_or(f64::NAN)),
-                _ => {
-                    let msg = format!(
-                        "expected a value, found `{name}` (csgpix reads numbers, true, false, \
-                         undef, strings and vectors, not expressions)"
-                    );
-                    return fail(pos, msg);
-                }
+                _ => return fail(pos, CsgError::NotAValue { name }),
             },
-            other => return fail(pos, format!("expected a value, found {}", other.describe())),
+            other => return fail(pos, expected_found("a value", &other)),
         };
         Ok(Value { kind, pos })
     }
 }
 
 // ---------------------------------------------------------------------------------------------
+
+/// `what must rule`.
+pub(crate) fn must(what: &str, rule: Rule) -> CsgError {
+    CsgError::Must {
+        what: what.to_string(),
+        rule,
+    }
+}
+
+/// `expected EXPECTED, found` the token.
+pub(crate) fn expected_found(expected: impl Into<String>, found: &Tok) -> Error {
+    Error::Expected {
+        expected: expected.into(),
+        found: found.describe(),
+    }
+}
 
 /// `inf` and `nan` as OpenSCAD's CSG export writes an infinite or undefined number (its
 /// `Value::toString` of a double): the nodes that take them decide, as OpenSCAD does, what

@@ -5,6 +5,10 @@
 
 use std::fmt;
 
+mod csg;
+
+pub use csg::{CsgError, ImportArgument, Rule};
+
 /// Where in an input a problem is: 1-based line and column (in characters). Binary inputs
 /// are located by byte offset instead, as line 0 and column = offset + 1.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -1067,11 +1071,11 @@ pub enum Error {
         limit: f64,
     },
 
-    // --- Not yet typed ---------------------------------------------------------------------
-    /// A message of the OpenSCAD lexer and parser, not yet given a variant of its own: what
-    /// is wrong, one line (the place, when it has one, is in an enclosing [`Error::At`]).
-    #[error("{}", OneLine(.0))]
-    Invalid(String),
+    // --- The OpenSCAD reader ---------------------------------------------------------------
+    /// A token, statement or argument the OpenSCAD `.csg` reader refuses (the place is in an
+    /// enclosing [`Error::At`]).
+    #[error(transparent)]
+    Csg(#[from] CsgError),
 }
 
 /// The cases of [`Error`] a caller may need to tell apart (to name its own option, say).
@@ -1154,11 +1158,6 @@ impl Error {
             at: Location { file, line, col },
             problem: Box::new(self),
         }
-    }
-
-    /// A parser's message that has no variant of its own yet ([`Error::Invalid`]).
-    pub fn invalid(message: impl Into<String>) -> Self {
-        Error::Invalid(message.into())
     }
 
     /// A failure of the system on `path`: `path: system message`.

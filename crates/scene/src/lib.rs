@@ -36,4 +36,4 @@ pub mod trimesh;
 pub mod winding;
 mod zipped;
 
-pub use error::{Error, IoError, Kind, Location, OneLine, Result};
+pub use error::{CsgError, Error, IoError, Kind, Location, OneLine, Result};
