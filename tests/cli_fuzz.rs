@@ -6,7 +6,9 @@
 //!
 //! - success: exit 0, nothing on standard error but notes and the report;
 //! - clean refusal: exit 2, exactly one line (`csgpix: …`, no control character) besides
-//!   notes, and no output written;
+//!   notes and the scene's warnings (`csgpix: warning: FILE:LINE:COL: …`, a line each, as
+//!   OpenSCAD warns: a file that draws nothing, then the refusal of an empty scene), and no
+//!   output written;
 //! - interrupted: killed by the signal it was sent (or finished before it);
 //! - failure: anything else (an abort, a panic, another status, a run past the time limit,
 //!   several lines, a control character echoed, a staging file or a partial output left, a
@@ -143,6 +145,19 @@ fn seeds() -> Vec<(&'static str, Vec<u8>)> {
         ("csv", "paths/carve.csv"),
         ("pla", "select/front.pla"),
         ("pla", "select/second.pla"),
+        // What a scene imports (`imported`): drawings, meshes, height maps, a font.
+        ("svg", "openscad/svg/rect.svg"),
+        ("svg", "openscad/svg/units.svg"),
+        ("dxf", "openscad/dxf/lines.dxf"),
+        ("dxf", "openscad/dxf/arcs.dxf"),
+        ("off", "openscad/imports/cube-off.off"),
+        ("amf", "openscad/imports/cube.amf"),
+        ("amf", "openscad/imports/zipped.amf"),
+        ("3mf", "openscad/imports/cube.3mf"),
+        ("png", "openscad/surface/grey.png"),
+        ("png", "openscad/surface/palette.png"),
+        ("dat", "openscad/surface/comments.dat"),
+        ("ttf", "fonts/LiberationSans-Regular.ttf"),
     ];
     let mut out: Vec<(&str, Vec<u8>)> = files
         .iter()
@@ -326,7 +341,9 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
     let mut args: Vec<Vec<u8>> = vec![];
     let mut inputs = vec![];
     let a = |s: &str| s.as_bytes().to_vec();
-    let out_ext: &str = match rng.below(9) {
+    let out_ext: &str = match rng.below(11) {
+        9 => return imported(rng, &of),
+        10 => return verilog_scene(rng, &of),
         0 | 1 => {
             args.push(a("render"));
             let ext = *rng.pick(&["dl", "dl", "csg"]);
@@ -638,6 +655,97 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
     finish(rng, args, inputs, out_ext.to_string())
 }
 
+/// `voxelize` of a scene that imports a file of another kind (its name relative to the
+/// scene's directory, as `in1.EXT` lies beside `in0.csg`), the scene itself mutated now and
+/// then: SVG, DXF, OFF, AMF, 3MF, `surface()` images and data, and `text()` in a font read from
+/// the scene's directory. With the reader's options: `--strict`, `--max-memory`,
+/// `--openscad-timeout`.
+fn imported(rng: &mut Rng, of: &dyn Fn(&str, &mut Rng) -> Input) -> Case {
+    let (ext, statement) = *rng.pick(&[
+        (
+            "svg",
+            "linear_extrude(height = 2) import(file = \"in1.svg\");",
+        ),
+        (
+            "dxf",
+            "linear_extrude(height = 2) import(file = \"in1.dxf\");",
+        ),
+        ("off", "import(file = \"in1.off\");"),
+        ("amf", "import(file = \"in1.amf\");"),
+        ("3mf", "import(file = \"in1.3mf\");"),
+        ("png", "surface(file = \"in1.png\", center = true);"),
+        ("dat", "surface(file = \"in1.dat\", invert = false);"),
+        (
+            "ttf",
+            "linear_extrude(height = 1) text(text = \"csgpix\", size = 4, \
+             font = \"Liberation Sans\");",
+        ),
+    ]);
+    let scene = match rng.chance(20) {
+        true => mutate(rng, statement.as_bytes()),
+        false => statement.as_bytes().to_vec(),
+    };
+    let csg = Input {
+        ext: "csg".into(),
+        bytes: scene,
+    };
+    let a = |s: &str| s.as_bytes().to_vec();
+    let mut args = vec![a("voxelize"), a("{IN0}")];
+    opt(&mut args, rng, 80, "--res", &["16", "32", "8x8x8"], BAD_RES);
+    flag(&mut args, rng, 20, "--strict");
+    opt(
+        &mut args,
+        rng,
+        20,
+        "--max-memory",
+        &["64", "512"],
+        &["0", "-1", "x"],
+    );
+    opt(
+        &mut args,
+        rng,
+        10,
+        "--openscad-timeout",
+        &["5", "0"],
+        &["-1", "1e99"],
+    );
+    flag(&mut args, rng, 10, "--json");
+    let inputs = vec![csg, of(ext, rng)];
+    finish(rng, args, inputs, "nrrd".to_string())
+}
+
+/// `export-verilog --scene` of one or two display lists or a `.csg` scene, into a directory.
+fn verilog_scene(rng: &mut Rng, of: &dyn Fn(&str, &mut Rng) -> Input) -> Case {
+    let a = |s: &str| s.as_bytes().to_vec();
+    let ext = *rng.pick(&["dl", "dl", "csg"]);
+    let mut args = vec![a("export-verilog"), a("--scene"), a("{IN0}")];
+    let mut inputs = vec![of(ext, rng)];
+    if ext == "dl" && rng.chance(30) {
+        inputs.push(of("dl", rng));
+        args.extend([a("--scene"), a("{IN1}")]);
+        opt(&mut args, rng, 50, "--clip", &["A.!B", "A+B"], &["A.", "C"]);
+    }
+    opt(
+        &mut args,
+        rng,
+        50,
+        "--size",
+        &["4x4", "16x16", "32x2"],
+        BAD_SIZE,
+    );
+    opt(
+        &mut args,
+        rng,
+        30,
+        "--origin",
+        &["56,90", "0,0"],
+        &["-1,0", "9999999,0"],
+    );
+    opt(&mut args, rng, 20, "--word", WORD, BAD_WORD);
+    opt(&mut args, rng, 10, "--max-memory", &["64"], &["0"]);
+    finish(rng, args, inputs, "dir".to_string())
+}
+
 /// A case of a command that writes no file (its report goes to standard output).
 fn no_output(args: Vec<Vec<u8>>, inputs: Vec<Input>) -> Case {
     Case {
@@ -870,10 +978,11 @@ fn classify(
             _ => Err(format!("killed by signal {sig}: {text}")),
         };
     }
-    let lines: Vec<&str> = text
-        .lines()
-        .filter(|l| !l.starts_with("csgpix: note: "))
-        .collect();
+    // Notes, and the warnings of a scene read as OpenSCAD reads it (one line each, before
+    // the report or the refusal), are not the refusal's line; none may echo a control
+    // character.
+    let said = |l: &&str| l.starts_with("csgpix: note: ") || l.starts_with("csgpix: warning: ");
+    let lines: Vec<&str> = text.lines().filter(|l| !said(l)).collect();
     match status.code() {
         Some(0) => Ok(Kind::Success),
         Some(2) => {
@@ -884,11 +993,12 @@ fn classify(
             if !line.starts_with("csgpix: ") {
                 return Err(format!("refusal not from csgpix: {line}"));
             }
-            if let Some(c) = line
-                .chars()
+            if let Some(c) = text
+                .lines()
+                .flat_map(str::chars)
                 .find(|c| c.is_control() || matches!(c, '\u{2028}' | '\u{2029}'))
             {
-                return Err(format!("control character {c:?} echoed: {line:?}"));
+                return Err(format!("control character {c:?} echoed: {text:?}"));
             }
             Ok(Kind::Refusal)
         }
