@@ -154,37 +154,99 @@ pub fn state_bits(
     k: u64,
     bit: Option<u32>,
 ) -> Vec<bool> {
-    let (nd, cb) = (cfg.fmt.bits() as usize, cfg.colour_bits as usize);
-    let moved = bit.map_or(0, |b| b as usize + 1);
     let mut bits: Vec<bool> = vec![];
     for (name, w) in state_fields(cfg) {
-        let v: u64 = match name {
-            "A" | "F" | "B" | "C" => {
-                let r = ["A", "F", "B", "C"].iter().position(|r| *r == name);
-                rotate(p.depth[r.unwrap()] as u64, nd, moved)
-            }
-            "D" | "E" | "G" => {
-                let r = ["D", "E", "G"].iter().position(|r| *r == name);
-                rotate(p.colour[r.unwrap()] as u64, cb, moved.min(cb))
-            }
-            "S_hi" => p.sel.0 as u64,
-            "S_lo" => p.sel.1 as u64,
-            "N" => p.flags.n as u64,
-            "J" => p.flags.j as u64,
-            "T" => p.flags.t as u64,
-            "M" => p.flags.m as u64,
-            "lt" => i.lt as u64,
-            "eq" => i.eq as u64,
-            "ovf" => i.ovf as u64,
-            "sign" => i.sign as u64,
-            "k" => k,
-            "carry" => i.carry as u64,
-            "stack" => p.stack,
-            other => panic!("state field {other} has no cycle-model register"),
-        };
+        let v = field_value(cfg, name, p, i, k, bit);
         bits.extend((0..w).map(|b| b < 64 && v >> b & 1 == 1));
     }
     bits
+}
+
+/// The value of `state` field `name` ([`state_fields`]) for [`state_bits`].
+fn field_value(
+    cfg: &ArrayConfig,
+    name: &str,
+    p: &Pixel,
+    i: &Internal,
+    k: u64,
+    bit: Option<u32>,
+) -> u64 {
+    let (nd, cb) = (cfg.fmt.bits() as usize, cfg.colour_bits as usize);
+    let moved = bit.map_or(0, |b| b as usize + 1);
+    match name {
+        "A" | "F" | "B" | "C" => {
+            let r = ["A", "F", "B", "C"].iter().position(|r| *r == name);
+            rotate(p.depth[r.unwrap()] as u64, nd, moved)
+        }
+        "D" | "E" | "G" => {
+            let r = ["D", "E", "G"].iter().position(|r| *r == name);
+            rotate(p.colour[r.unwrap()] as u64, cb, moved.min(cb))
+        }
+        "S_hi" => p.sel.0 as u64,
+        "S_lo" => p.sel.1 as u64,
+        "N" => p.flags.n as u64,
+        "J" => p.flags.j as u64,
+        "T" => p.flags.t as u64,
+        "M" => p.flags.m as u64,
+        "lt" => i.lt as u64,
+        "eq" => i.eq as u64,
+        "ovf" => i.ovf as u64,
+        "sign" => i.sign as u64,
+        "k" => k,
+        "carry" => i.carry as u64,
+        "stack" => p.stack,
+        other => panic!("state field {other} has no cycle-model register"),
+    }
+}
+
+/// Lines of the expected-state file written straight from the fields' values, without
+/// [`state_bits`]'s vector of bools and [`state_hex`]'s string per pixel: the same digits
+/// (`hex_lines_are_state_hex` checks it clock by clock).
+struct HexLines {
+    fields: Vec<(&'static str, usize)>,
+    words: Vec<u64>,
+    digits: usize,
+}
+
+impl HexLines {
+    fn new(cfg: &ArrayConfig) -> HexLines {
+        let fields = state_fields(cfg);
+        let width: usize = fields.iter().map(|f| f.1).sum();
+        HexLines {
+            fields,
+            words: vec![0; width / 64 + 2],
+            digits: width.div_ceil(4),
+        }
+    }
+
+    /// Append pixel `p`'s line (digits and a newline) to `out`.
+    fn push(
+        &mut self,
+        cfg: &ArrayConfig,
+        px: (&Pixel, &Internal),
+        k: u64,
+        bit: Option<u32>,
+        out: &mut String,
+    ) {
+        self.words.fill(0);
+        let mut at = 0;
+        for &(name, w) in &self.fields {
+            let v = field_value(cfg, name, px.0, px.1, k, bit);
+            // Bits past 64 of a wider field are 0, as in `state_bits`.
+            let v = if w >= 64 { v } else { v & ((1u64 << w) - 1) };
+            let (q, r) = (at / 64, at % 64);
+            self.words[q] |= v << r;
+            if r != 0 && r + w.min(64) > 64 {
+                self.words[q + 1] |= v >> (64 - r);
+            }
+            at += w;
+        }
+        for d in (0..self.digits).rev() {
+            let nibble = (self.words[d * 4 / 64] >> (d * 4 % 64)) & 0xF;
+            out.push(char::from_digit(nibble as u32, 16).expect("a nibble"));
+        }
+        out.push('\n');
+    }
 }
 
 /// [`state_bits`] in hex, most significant digit first: a line of the expected-state file.
@@ -237,12 +299,18 @@ fn rotate(v: u64, w: usize, moved: usize) -> u64 {
 }
 
 /// Every pixel's `state` line, row-major, into `text` (emptied first).
-fn clock_lines(cfg: &ArrayConfig, a: &CycleArray, k: u64, bit: Option<u32>, text: &mut String) {
+fn clock_lines(
+    lines: &mut HexLines,
+    cfg: &ArrayConfig,
+    a: &CycleArray,
+    (k, bit): (u64, Option<u32>),
+    text: &mut String,
+) {
     text.clear();
     for y in 0..cfg.height {
         for x in 0..cfg.width {
-            *text += &state_hex(cfg, &a.gather(x, y), &a.internal(x, y), k, bit);
-            text.push('\n');
+            let px = (&a.gather(x, y), &a.internal(x, y));
+            lines.push(cfg, px, k, bit, text);
         }
     }
 }
@@ -252,6 +320,7 @@ fn clock_lines(cfg: &ArrayConfig, a: &CycleArray, k: u64, bit: Option<u32>, text
 struct Sink<W> {
     out: W,
     counter: BitCounter,
+    hex: HexLines,
     lines: String,
     failed: Option<std::io::Error>,
 }
@@ -259,7 +328,7 @@ struct Sink<W> {
 impl<W: Write> Sink<W> {
     fn clock(&mut self, cfg: &ArrayConfig, a: &CycleArray, k: u64, bit: Option<u32>) {
         if self.failed.is_none() {
-            clock_lines(cfg, a, k, bit, &mut self.lines);
+            clock_lines(&mut self.hex, cfg, a, (k, bit), &mut self.lines);
             self.failed = self.out.write_all(self.lines.as_bytes()).err();
         }
     }
@@ -300,6 +369,7 @@ pub fn write_expected_states<W: Write + 'static>(
     let sink = Rc::new(RefCell::new(Sink {
         out,
         counter: BitCounter::new(&cfg),
+        hex: HexLines::new(&cfg),
         lines: String::new(),
         failed: None,
     }));
@@ -387,6 +457,55 @@ mod tests {
         let want = format!("CLOCKS {} OPS {} MISMATCHES 0", cycles + 1, ops.len() + 1);
         assert_eq!(e.summary(), want);
         assert!(run_script(&want).contains(&format!("want='{want}'")));
+    }
+
+    /// The expected-state lines are [`state_hex`]'s, pixel by pixel, after every clock of
+    /// a program, on arrays whose `state` words straddle 64-bit boundaries differently (the
+    /// thesis word, a short one, a deep stack).
+    #[test]
+    fn hex_lines_are_state_hex() {
+        let shapes = [
+            (5, 3, None, None),
+            (4, 2, Some(crate::WordFormat::new(3, 4, 2).unwrap()), Some(9)),
+        ];
+        for (w, h, fmt, stack) in shapes {
+            let mut cfg = ArrayConfig::new(w, h);
+            if let Some(fmt) = fmt {
+                cfg.fmt = fmt;
+                cfg.colour_bits = cfg.colour_bits.min(fmt.bits());
+            }
+            if let Some(depth) = stack {
+                cfg.stack_depth = depth;
+            }
+            let (ops, set) = (program(), Equations::Derived.set());
+            let mut arr = CycleArray::new(cfg, set);
+            let seen = Rc::new(RefCell::new((
+                0usize,
+                BitCounter::new(&cfg),
+                HexLines::new(&cfg),
+            )));
+            let check = Rc::clone(&seen);
+            arr.observe(Box::new(move |a: &CycleArray, c: Clock| {
+                let mut s = check.borrow_mut();
+                let k = s.1.clock(&c);
+                let mut fast = String::new();
+                clock_lines(&mut s.2, &cfg, a, (k, c.bit), &mut fast);
+                let mut slow = String::new();
+                for y in 0..cfg.height {
+                    for x in 0..cfg.width {
+                        slow += &state_hex(&cfg, &a.gather(x, y), &a.internal(x, y), k, c.bit);
+                        slow.push('\n');
+                    }
+                }
+                assert_eq!(fast, slow, "clock {}", c.t);
+                s.0 += 1;
+            }));
+            for op in &ops {
+                arr.step(op).unwrap();
+            }
+            arr.finish();
+            assert!(seen.borrow().0 > 50, "{} clocks checked", seen.borrow().0);
+        }
     }
 
     /// `pixel_array` takes every control field but the testbench's bookkeeping and `is_ovf`:
