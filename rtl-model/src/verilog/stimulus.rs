@@ -466,7 +466,12 @@ mod tests {
     fn hex_lines_are_state_hex() {
         let shapes = [
             (5, 3, None, None),
-            (4, 2, Some(crate::WordFormat::new(3, 4, 2).unwrap()), Some(9)),
+            (
+                4,
+                2,
+                Some(crate::WordFormat::new(3, 4, 2).unwrap()),
+                Some(9),
+            ),
         ];
         for (w, h, fmt, stack) in shapes {
             let mut cfg = ArrayConfig::new(w, h);
