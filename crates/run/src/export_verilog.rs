@@ -92,8 +92,9 @@ pub struct SceneFiles {
 }
 
 impl ExportVerilogJob {
-    /// The memory plan: with a scene, the expected states held in memory, the control
-    /// stream and the cycle model (`bound`); else nothing grows.
+    /// The memory plan: with a scene, the cycle model, the control stream, the sources and
+    /// one clock's expected states (the file is written a clock at a time; `need`); else
+    /// nothing grows.
     pub fn estimate(&self) -> crate::Result<u64> {
         if self.scene.is_empty() {
             return Ok(0);
