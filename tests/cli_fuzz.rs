@@ -21,6 +21,8 @@
 //! The test runs for `CSGPIX_CLI_FUZZ_SECONDS` (default 60) from seed
 //! `CSGPIX_CLI_FUZZ_SEED` (default 1, so CI is deterministic in what it tries), on
 //! `CSGPIX_CLI_FUZZ_JOBS` threads (default 2); `CSGPIX_CLI_FUZZ_CASES` caps the cases.
+//! `CSGPIX_CLI_FUZZ_BIN` runs another csgpix binary than the one built with the test (a
+//! copy, so a long campaign is not changed under it by a rebuild).
 
 use std::fs;
 use std::io::Read;
@@ -825,7 +827,9 @@ fn run(case: &Case, dir: &Path) -> Result<Kind, Failure> {
         .iter()
         .map(|a| fill(a, &ins, &out, dir, &vecdir))
         .collect();
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_csgpix"));
+    let bin = std::env::var_os("CSGPIX_CLI_FUZZ_BIN")
+        .unwrap_or_else(|| env!("CARGO_BIN_EXE_csgpix").into());
+    let mut cmd = Command::new(bin);
     cmd.args(&args)
         .current_dir(dir)
         .stdin(Stdio::null())

@@ -488,6 +488,24 @@ fn estimates_are_above_the_measured_peaks() {
             &png,
         ],
         vec!["phantom", "--size", "256", "-o", &phantom],
+        // A record and a bin a panel, 1,048,576 of them (the estimate was 0 before).
+        vec![
+            "throughput",
+            "--scene",
+            "vectors/scenes/twelve.csg",
+            "--screen",
+            "1024x1024",
+            "--panel",
+            "1x1",
+        ],
+        vec![
+            "throughput",
+            "--scene",
+            "vectors/scenes/twelve.csg",
+            "--screen",
+            "512x512",
+            "--simulate",
+        ],
         vec![
             "requirements",
             "vectors/scenes/twelve.csg",

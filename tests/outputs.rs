@@ -862,3 +862,54 @@ fn a_signal_ends_openscad_and_removes_its_scratch_files() {
         }
     }
 }
+
+/// A report whose standard output has no reader (`| head` gone) or no room (`/dev/full`): one
+/// line and exit status 2, naming the outputs already whole, for text and `--json` reports
+/// (a panic, exit 101 with a backtrace, before).
+#[cfg(unix)]
+#[test]
+fn a_closed_or_full_standard_output_is_one_line_not_a_panic() {
+    let dir = tempfile::tempdir().unwrap();
+    let nrrd = dir.path().join("v.nrrd");
+    let voxelize = ["voxelize", TWELVE, "--res", "16", "-o", s(&nrrd)];
+    let runs: Vec<Vec<&str>> = vec![
+        vec!["throughput"],
+        vec!["throughput", "--json"],
+        vec!["verify-select"],
+        voxelize.to_vec(),
+        [&voxelize[..], &["--json"]].concat(),
+    ];
+    for args in &runs {
+        for closed in [true, false] {
+            let out = if closed {
+                // A pipe whose reading end is closed before csgpix starts: every write fails.
+                let (reader, writer) = std::io::pipe().unwrap();
+                drop(reader);
+                Command::new(env!("CARGO_BIN_EXE_csgpix"))
+                    .args(args)
+                    .current_dir(env!("CARGO_MANIFEST_DIR"))
+                    .stdout(writer)
+                    .output()
+                    .unwrap()
+            } else {
+                let full = std::fs::OpenOptions::new()
+                    .write(true)
+                    .open("/dev/full")
+                    .unwrap();
+                Command::new(env!("CARGO_BIN_EXE_csgpix"))
+                    .args(args)
+                    .current_dir(env!("CARGO_MANIFEST_DIR"))
+                    .stdout(full)
+                    .output()
+                    .unwrap()
+            };
+            let err = one_line_error(&out);
+            assert!(
+                err.contains("cannot write to standard output"),
+                "{args:?}: {err}"
+            );
+            let whole = err.contains(&format!("already written whole: {}", s(&nrrd)));
+            assert_eq!(whole, args[0] == "voxelize", "{args:?}: {err}");
+        }
+    }
+}

@@ -38,7 +38,7 @@ impl Args {
 pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
     let report = a.job().run(&Bars::default())?;
     if a.json {
-        println!("{}", serde_json::to_string(&report)?);
+        outln!("{}", serde_json::to_string(&report)?);
     } else {
         print_text(&report);
     }
@@ -60,7 +60,7 @@ fn print_text(r: &BlistReport) {
     if r.trace.is_some() {
         head.push_str("  class  label");
     }
-    println!("{head}");
+    outln!("{head}");
     for (k, b) in r.rows.iter().enumerate() {
         let mut line = format!(
             "{:>3}  {:>4}  {:>4}  {:<width$}  {:>5}",
@@ -69,15 +69,16 @@ fn print_text(r: &BlistReport) {
         if let (Some(class), Some(labels)) = (b.class, &r.trace) {
             line.push_str(&format!("  {:>5}  {:>5}", u8::from(class), labels[k]));
         }
-        println!("{line}");
+        outln!("{line}");
     }
     let plural = if r.label_bits == 1 { "" } else { "s" };
-    println!(
+    outln!(
         "IN name {}; label register {} bit{plural}",
-        r.in_name, r.label_bits
+        r.in_name,
+        r.label_bits
     );
     if let Some(inside) = r.inside {
-        println!("{}", if inside { "inside" } else { "outside" });
+        outln!("{}", if inside { "inside" } else { "outside" });
     }
 }
 

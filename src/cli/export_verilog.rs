@@ -83,28 +83,28 @@ pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
 fn print_scene(s: &SceneFiles) {
     let dir = &s.dir;
     for name in &s.files {
-        println!("wrote {}", dir.join(name).display());
+        outln!("wrote {}", dir.join(name).display());
     }
     let mib = s.expected_bytes as f64 / (1 << 20) as f64;
     let (w, h) = s.size;
-    println!(
+    outln!(
         "wrote {} ({} clocks x {} pixels, {mib:.1} MiB)",
         dir.join("expected.hex").display(),
         s.clocks,
         w * h
     );
-    println!(
+    outln!(
         "wrote {} ({w}x{h}, G after the last clock)",
         dir.join("expected.png").display(),
     );
     let d = shell_word(&dir.display().to_string());
-    println!("run tb_array; it must print \"{}\":", s.summary);
-    println!("  icarus:    cd {d} && {}", stimulus::ICARUS);
-    println!("  verilator: cd {d} && {}", stimulus::VERILATOR);
-    println!("  or:        sh {d}/run.sh [icarus|verilator]   (exit 0 only on that line)");
-    println!("run tb_machine (the controller reads program.hex; every word and register checked):");
-    println!("  icarus:    cd {d} && {}", stimulus::MACHINE_ICARUS);
-    println!("  verilator: cd {d} && {}", stimulus::MACHINE_VERILATOR);
+    outln!("run tb_array; it must print \"{}\":", s.summary);
+    outln!("  icarus:    cd {d} && {}", stimulus::ICARUS);
+    outln!("  verilator: cd {d} && {}", stimulus::VERILATOR);
+    outln!("  or:        sh {d}/run.sh [icarus|verilator]   (exit 0 only on that line)");
+    outln!("run tb_machine (the controller reads program.hex; every word and register checked):");
+    outln!("  icarus:    cd {d} && {}", stimulus::MACHINE_ICARUS);
+    outln!("  verilator: cd {d} && {}", stimulus::MACHINE_VERILATOR);
 }
 
 /// `s` as one shell word: as it is when it needs no quoting, else in single quotes.

@@ -40,10 +40,10 @@ pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
 /// for each file written.
 pub fn print_generated(r: &GeneratedReport) -> ExitCode {
     for path in &r.differs {
-        println!("differs: {}", path.display());
+        outln!("differs: {}", path.display());
     }
     for path in &r.written {
-        println!("wrote {}", path.display());
+        outln!("wrote {}", path.display());
     }
     if r.differs.is_empty() {
         ExitCode::SUCCESS

@@ -16,6 +16,18 @@ macro_rules! parsed {
     }};
 }
 
+/// `println!` for what a command prints on standard output: a failed write (a reader gone,
+/// `| head`; a full disk) is one line on standard error and exit status 2 ([`out_line`]),
+/// not a panic.
+macro_rules! outln {
+    () => {
+        $crate::cli::out_line(format_args!(""))
+    };
+    ($($t:tt)*) => {
+        $crate::cli::out_line(format_args!($($t)*))
+    };
+}
+
 pub mod args_utf8;
 mod array;
 mod blist;
@@ -124,7 +136,7 @@ pub fn report_line(line: &str, to_stderr: bool) {
     if to_stderr {
         eprintln!("{line}");
     } else {
-        println!("{line}");
+        outln!("{line}");
     }
 }
 
@@ -142,8 +154,26 @@ pub fn print<T: serde::Serialize>(
     Ok(ExitCode::SUCCESS)
 }
 
-/// A report as `--json` prints it: pretty, one object.
+/// A report as `--json` prints it: pretty, one object, streamed (a panel-by-panel report can
+/// be hundreds of megabytes of text).
 pub fn print_json<T: serde::Serialize>(report: &T) -> run::Result<()> {
-    println!("{}", serde_json::to_string_pretty(report)?);
+    use std::io::Write;
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    let written = serde_json::to_writer_pretty(&mut out, report)
+        .map_err(std::io::Error::from)
+        .and_then(|()| writeln!(out))
+        .and_then(|()| out.flush());
+    if let Err(e) = written {
+        csgpix_output::stdout_failed(&e);
+    }
     Ok(())
+}
+
+/// One line of a report on standard output (see `outln!`).
+pub fn out_line(line: std::fmt::Arguments) {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = out.write_fmt(line).and_then(|()| out.write_all(b"\n")) {
+        csgpix_output::stdout_failed(&e);
+    }
 }

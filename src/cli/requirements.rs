@@ -80,8 +80,8 @@ pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
 }
 
 fn print_text(r: &RequirementsReport) {
-    println!("grid {}x{}x{}", r.dims[0], r.dims[1], r.dims[2]);
-    println!(
+    outln!("grid {}x{}x{}", r.dims[0], r.dims[1], r.dims[2]);
+    outln!(
         "panels: {} of {} touched ({})",
         r.panels_touched,
         r.panels_total,
@@ -91,16 +91,18 @@ fn print_text(r: &RequirementsReport) {
         ))
     );
     match r.slabs_with_geometry {
-        Some((f, l)) => println!("slabs with geometry: {f}..={l} of 0..={}", r.dims[2] - 1),
-        None => println!("slabs with geometry: none"),
+        Some((f, l)) => outln!("slabs with geometry: {f}..={l} of 0..={}", r.dims[2] - 1),
+        None => outln!("slabs with geometry: none"),
     }
-    println!(
+    outln!(
         "clipping stack: {} levels per slice, {} for the render program",
-        r.stack_levels_slice, r.stack_levels_render
+        r.stack_levels_slice,
+        r.stack_levels_render
     );
-    println!(
+    outln!(
         "Blist: {} rows, label register {} bits",
-        r.blist_rows, r.label_bits
+        r.blist_rows,
+        r.label_bits
     );
     print_words(r);
     print_clocks(r);
@@ -108,29 +110,29 @@ fn print_text(r: &RequirementsReport) {
 
 /// The word asked for and the word the precision needs.
 fn print_words(r: &RequirementsReport) {
-    println!(
+    outln!(
         "word {}: worst plane-word error {} scene units",
         r.word,
         r.word_error
             .map_or("- (slabs do not fit)".into(), |e| format!("{e:.3e}"))
     );
     match (&r.word_needed, r.word_needed_error) {
-        (Some(w), Some(e)) => println!("word for precision {}: {w}, error {e:.3e}", r.precision),
-        _ => println!("word for precision {}: none up to 62 bits", r.precision),
+        (Some(w), Some(e)) => outln!("word for precision {}: {w}, error {e:.3e}", r.precision),
+        _ => outln!("word for precision {}: none up to 62 bits", r.precision),
     }
 }
 
 /// The clocks of every frame against the pruned ones.
 fn print_clocks(r: &RequirementsReport) {
     let pct = |a: u64, b: u64| 100.0 * a as f64 / b.max(1) as f64;
-    println!(
+    outln!(
         "clocks: {} for every solid in every slab, {} for the slabs each meets ({:.1}%); render {}",
         r.cycles_all_frames,
         r.cycles_needed_frames,
         pct(r.cycles_needed_frames, r.cycles_all_frames),
         r.cycles_render
     );
-    println!(
+    outln!(
         "simulated pixel-clocks on the array route: {} of {} ({:.1}%)",
         r.simulated_pixel_clocks,
         r.full_pixel_clocks,

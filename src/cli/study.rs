@@ -93,7 +93,7 @@ pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
 
 fn print_text(r: &StudyReport) {
     let worst = r.points.iter().map(|p| p.diff_ref).max().unwrap_or(0);
-    println!(
+    outln!(
         "{}: {}, {} points, at most {worst} voxels differ from the reference; \
          charts beside it; {:.2} s wall",
         r.csv.display(),

@@ -113,15 +113,20 @@ pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
 
 fn print_text(r: &ThroughputReport) {
     let hw = &r.hardware;
-    println!(
+    outln!(
         "N_D = {} bits, clock {} Hz, t = {} s, screen {}x{}",
-        hw.bits, hw.clock_hz, hw.frame_s, r.screen.0, r.screen.1
+        hw.bits,
+        hw.clock_hz,
+        hw.frame_s,
+        r.screen.0,
+        r.screen.1
     );
-    println!("eq. 2.3  P   = {:.0} surfaces/s", r.surfaces_per_second);
-    println!("eq. 2.4  P_R = {:.1} surfaces/frame", r.surfaces_per_frame);
-    println!(
+    outln!("eq. 2.3  P   = {:.0} surfaces/s", r.surfaces_per_second);
+    outln!("eq. 2.4  P_R = {:.1} surfaces/frame", r.surfaces_per_frame);
+    outln!(
         "eq. 5.1  P_sp = {:.1} slices/s for N_s = {} on one array",
-        r.slices_per_second_one_array, r.surfaces_per_primitive
+        r.slices_per_second_one_array,
+        r.surfaces_per_primitive
     );
     print_panels(r);
     if let Some(s) = &r.scene {
@@ -137,8 +142,8 @@ fn print_text(r: &ThroughputReport) {
 
 /// Eq. 2.5 for each panel, every reading, and eq. 5.1.
 fn print_panels(r: &ThroughputReport) {
-    println!("eq. 2.5, surfaces per frame (Table 2.1 follows the last reading):");
-    println!(
+    outln!("eq. 2.5, surfaces per frame (Table 2.1 follows the last reading):");
+    outln!(
         "{:>11} {:>9} {:>16} {:>16} {:>16} {:>14}",
         "panel",
         "panels",
@@ -148,7 +153,7 @@ fn print_panels(r: &ThroughputReport) {
         "eq. 5.1 sl/s"
     );
     for (row, sp) in r.panels.iter().zip(&r.slices_per_second_panels) {
-        println!(
+        outln!(
             "{:>11} {:>9} {:>16} {:>16} {:>16} {:>14}",
             format!("{}x{}", row.panel.0, row.panel.1),
             fmt_num(row.panels),
@@ -161,7 +166,7 @@ fn print_panels(r: &ThroughputReport) {
 }
 
 fn print_area(r: &AreaReport) {
-    println!(
+    outln!(
         "\n--area {} LUT{}: {} pixel processors at {} LUT{} each (pixels only, docs/verilog.md)",
         r.budget_luts,
         r.lut_inputs,
@@ -173,12 +178,15 @@ fn print_area(r: &AreaReport) {
         },
         r.lut_inputs
     );
-    println!(
+    outln!(
         "{:>11} {:>14} {:>14} {:>6}",
-        "panel", "LUTs", "flip-flops", "fits"
+        "panel",
+        "LUTs",
+        "flip-flops",
+        "fits"
     );
     for row in &r.panels {
-        println!(
+        outln!(
             "{:>11} {:>14} {:>14} {:>6}",
             format!("{}x{}", row.panel.0, row.panel.1),
             row.luts,
@@ -189,11 +197,17 @@ fn print_area(r: &AreaReport) {
 }
 
 fn print_scene(s: &SceneReport) {
-    println!(
+    outln!(
         "\n{} ({} view, word {}): {} solids, {} surfaces; one array: {} clocks, {:.1} frames/s",
-        s.file, s.view, s.word, s.solids, s.surfaces, s.one_array_cycles, s.one_array_fps
+        s.file,
+        s.view,
+        s.word,
+        s.solids,
+        s.surfaces,
+        s.one_array_cycles,
+        s.one_array_fps
     );
-    println!(
+    outln!(
         "{:>11} {:>7} {:>7} {:>4} {:>9} {:>9} {:>9} {:>10} {:>10} {:>9} {:>10}",
         "panel",
         "panels",
@@ -208,7 +222,7 @@ fn print_scene(s: &SceneReport) {
         "sl/s eq5.1"
     );
     for e in &s.estimates {
-        println!(
+        outln!(
             "{:>11} {:>7} {:>7} {:>4} {:>9} {:>9} {:>9} {:>10} {:>10} {:>9} {:>10}",
             format!("{}x{}", e.panel.0, e.panel.1),
             e.panels,
@@ -228,7 +242,7 @@ fn print_scene(s: &SceneReport) {
 /// `--fpga`'s lines: the measured panel and clock, eq. 2.3 and 2.5 at it.
 fn print_fpga(r: &FpgaReport, screen: (usize, usize)) {
     let (n, m) = r.panel;
-    println!(
+    outln!(
         "\n--fpga {}: {}, a {n}x{m} panel ({} pixels, {:.1} LCs each) at {:.2} MHz \
          ({:.2}x the thesis's 10 MHz); critical path {}",
         r.report,
@@ -239,11 +253,14 @@ fn print_fpga(r: &FpgaReport, screen: (usize, usize)) {
         r.clock_ratio,
         r.critical_path
     );
-    println!(
+    outln!(
         "  eq. 2.3, one panel: {:.0} surfaces/s; devices for a {}x{} screen: {}",
-        r.surfaces_per_second, screen.0, screen.1, r.devices_for_screen
+        r.surfaces_per_second,
+        screen.0,
+        screen.1,
+        r.devices_for_screen
     );
-    println!(
+    outln!(
         "  eq. 2.5 (Table 2.1 reading), the screen: {:.0} surfaces/frame at {:.2} MHz, {:.0} at \
          10 MHz",
         r.screen_surfaces_per_frame,

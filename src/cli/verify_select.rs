@@ -51,28 +51,31 @@ pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
 }
 
 fn print_text(report: &VerifySelectReport) {
-    println!("equation set: {}", report.equations.name());
+    outln!("equation set: {}", report.equations.name());
     for r in &report.signals {
         let verdict = if r.mismatches.is_empty() {
             "ok"
         } else {
             "MISMATCH"
         };
-        println!(
+        outln!(
             "{:<10} {:>4} rows  {:>3} mismatches  {verdict}",
             r.signal,
             r.rows,
             r.mismatches.len()
         );
         for m in &r.mismatches {
-            println!(
+            outln!(
                 "    {}  expected {} got {}   [{}]",
-                m.inputs, m.expected as u8, m.got as u8, m.case
+                m.inputs,
+                m.expected as u8,
+                m.got as u8,
+                m.case
             );
         }
     }
     let rows: usize = report.signals.iter().map(|r| r.rows).sum();
-    println!(
+    outln!(
         "{} signals, {rows} rows checked, {} mismatches",
         report.signals.len(),
         report.mismatches()

@@ -382,35 +382,119 @@ pub fn project(
 /// Does the thesis's rule for back planes in front of the screen (a negative back plane puts
 /// maxdepth into B) draw convex list `dl` at some pixel of a `width`×`height` array where its
 /// exact half-space intersection shows nothing? (The rule of `float::ScreenRule::Thesis`.)
+///
+/// Only a pixel where some back plane is at or in front of the screen can differ (elsewhere
+/// the rule's B is the exact one), so each row is tried at a superset of those pixels: the
+/// ends of the row that back planes reach ([`Row::candidates`]), inside every perpendicular
+/// plane. A sphere's 80,000 planes then cost rows × planes, not pixels × planes.
 fn drawn_by_screen_rule(dl: &DisplayList, width: usize, height: usize, maxdepth: f64) -> bool {
-    if !dl.planes.iter().any(|p| !p.h && !p.y) {
+    if !dl.planes.iter().any(|p| !p.h && !p.y) || width == 0 {
         return false;
     }
+    let span = (width as f64, height as f64);
     (0..height).any(|y| {
-        (0..width).any(|x| {
-            let (x, y) = (x as f64, y as f64);
-            let (mut lo, mut hi, mut hi_rule) = (f64::NEG_INFINITY, f64::INFINITY, f64::INFINITY);
-            for p in &dl.planes {
-                let v = p.z0 + x * p.dzx + y * p.dzy;
-                if p.y {
-                    if v < 0.0 {
-                        return false;
-                    }
-                } else if p.h {
-                    lo = lo.max(v);
-                } else {
-                    hi = hi.min(v);
-                    hi_rule = if v < 0.0 {
-                        f64::INFINITY
-                    } else {
-                        hi_rule.min(v)
-                    };
+        Row::of(dl, y as f64, width, span)
+            .candidates()
+            .any(|x| drawn_at(dl, x as f64, y as f64, maxdepth))
+    })
+}
+
+/// Whether the rule draws `dl` at pixel (x, y) where the exact intersection does not.
+fn drawn_at(dl: &DisplayList, x: f64, y: f64, maxdepth: f64) -> bool {
+    let (mut lo, mut hi, mut hi_rule) = (f64::NEG_INFINITY, f64::INFINITY, f64::INFINITY);
+    for p in &dl.planes {
+        let v = p.z0 + x * p.dzx + y * p.dzy;
+        if p.y {
+            if v < 0.0 {
+                return false;
+            }
+        } else if p.h {
+            lo = lo.max(v);
+        } else {
+            hi = hi.min(v);
+            hi_rule = if v < 0.0 {
+                f64::INFINITY
+            } else {
+                hi_rule.min(v)
+            };
+        }
+    }
+    let exact = lo < hi && hi > 0.0;
+    !exact && lo < hi_rule && lo.max(0.0) < maxdepth
+}
+
+/// One row of the array seen from the planes of a list: the pixels worth trying, as whole
+/// pixel bounds that hold each plane's sign test with a margin for rounding.
+struct Row {
+    width: i64,
+    /// Back planes reach 0 at x ≤ `prefix` …
+    prefix: i64,
+    /// … and at x ≥ `suffix` (so with `prefix + 1 >= suffix` the whole row).
+    suffix: i64,
+    /// Every perpendicular plane is non-negative only within `inside.0 ..= inside.1`.
+    inside: (i64, i64),
+}
+
+impl Row {
+    fn of(dl: &DisplayList, y: f64, width: usize, span: (f64, f64)) -> Row {
+        let w = width as i64;
+        let mut row = Row {
+            width: w,
+            prefix: -1,
+            suffix: w,
+            inside: (0, w - 1),
+        };
+        for p in dl.planes.iter().filter(|p| !p.h) {
+            // v(x) = c + b·x along the row. The exact test computes it in another order, so
+            // both tests below hold `tol` more than the rounding either can make.
+            let (c, b) = (p.z0 + y * p.dzy, p.dzx);
+            let tol = 8.0 * f64::EPSILON * (p.z0.abs() + span.0 * b.abs() + span.1 * p.dzy.abs());
+            if p.y {
+                // Inside: v ≥ 0, so at least v ≥ -tol.
+                let (lo, hi) = half_line(c + tol, b, true, w);
+                row.inside = (row.inside.0.max(lo), row.inside.1.min(hi));
+            } else {
+                // In front of the screen: v < 0 (or 0), so at most v ≤ tol.
+                let (lo, hi) = half_line(c - tol, b, false, w);
+                if lo <= 0 {
+                    row.prefix = row.prefix.max(hi);
+                }
+                if hi >= w - 1 {
+                    row.suffix = row.suffix.min(lo);
                 }
             }
-            let exact = lo < hi && hi > 0.0;
-            !exact && lo < hi_rule && lo.max(0.0) < maxdepth
-        })
-    })
+        }
+        row
+    }
+
+    /// The pixels to try, left to right, within `inside`.
+    fn candidates(self) -> impl Iterator<Item = i64> {
+        let (lo, hi) = self.inside;
+        let left = lo..=hi.min(self.prefix);
+        let right = lo.max(self.suffix.max(self.prefix + 1))..=hi;
+        let width = self.width;
+        left.chain(right).filter(move |&x| x >= 0 && x < width)
+    }
+}
+
+/// The pixels of a row of `w` where c + b·x ≥ 0 (`above`) or ≤ 0, as `(lo, hi)` widened by a
+/// pixel; `(0, -1)`-like empty ranges when none, `(-1, w)` when every pixel.
+fn half_line(c: f64, b: f64, above: bool, w: i64) -> (i64, i64) {
+    let all = (-1, w);
+    let none = (w, -1);
+    if b == 0.0 || !c.is_finite() || !b.is_finite() {
+        let holds = if above { c >= 0.0 } else { c <= 0.0 };
+        return if holds || !c.is_finite() { all } else { none };
+    }
+    // The crossing, clamped so the conversion to whole pixels stays in range.
+    let x0 = (-c / b).clamp(-2.0, w as f64 + 2.0);
+    if (b > 0.0) == above {
+        // Holds for x ≥ x0.
+        (x0.floor() as i64 - 1, w)
+    } else {
+        // Holds for x ≤ x0.
+        (-1, x0.ceil() as i64 + 1)
+    }
 }
 
 /// The scene's CSG tree as a clipping function over the solids (None for an empty scene).
@@ -472,6 +556,7 @@ fn combine(n: &CsgNode, kids: Vec<Option<Clip>>) -> Option<Clip> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
 
     fn cube(lo: f64, hi: f64) -> ConvexSolid {
         let v = |x: bool, y: bool, z: bool| {
@@ -677,5 +762,97 @@ mod tests {
             deep = CsgNode::Union(vec![deep]);
         }
         assert_eq!(clip_of(&deep), Some(Clip::Obj(0)));
+    }
+
+    /// The whole-array scan [`drawn_by_screen_rule`] narrows: every pixel tried.
+    fn drawn_anywhere(dl: &DisplayList, width: usize, height: usize, maxdepth: f64) -> bool {
+        dl.planes.iter().any(|p| !p.h && !p.y)
+            && (0..height).any(|y| (0..width).any(|x| drawn_at(dl, x as f64, y as f64, maxdepth)))
+    }
+
+    /// A coefficient: often a small integer or a half (so a plane meets 0 exactly at a pixel
+    /// centre), sometimes any value, sometimes far beyond the array.
+    fn coefficient(scale: f64) -> impl Strategy<Value = f64> {
+        prop_oneof![
+            (-8i32..=8).prop_map(f64::from),
+            (-16i32..=16).prop_map(|k| f64::from(k) / 2.0),
+            -scale..scale,
+            (-1e9f64..1e9),
+        ]
+    }
+
+    fn plane() -> impl Strategy<Value = DlPlane> {
+        (
+            coefficient(60.0),
+            coefficient(6.0),
+            coefficient(6.0),
+            0u8..3,
+        )
+            .prop_map(|(z0, dzx, dzy, kind)| DlPlane {
+                z0,
+                dzx,
+                dzy,
+                colour: 1,
+                h: kind == 0,
+                y: kind == 2,
+                l: false,
+            })
+    }
+
+    proptest! {
+        /// The narrowed check agrees with trying every pixel, and tries every pixel the rule
+        /// draws, for random lists of front, back and perpendicular planes on small arrays.
+        #[test]
+        fn the_screen_rule_check_agrees_with_every_pixel(
+            planes in proptest::collection::vec(plane(), 1..8),
+            width in 1usize..24,
+            height in 1usize..24,
+            maxdepth in prop_oneof![Just(1024.0), 1.0f64..200.0],
+        ) {
+            let dl = DisplayList { planes, terminator: 1234 };
+            prop_assert_eq!(
+                drawn_by_screen_rule(&dl, width, height, maxdepth),
+                drawn_anywhere(&dl, width, height, maxdepth)
+            );
+            // Stronger: every pixel the rule draws is among its row's candidates.
+            let span = (width as f64, height as f64);
+            for y in 0..height {
+                let tried: Vec<i64> = Row::of(&dl, y as f64, width, span).candidates().collect();
+                for x in 0..width {
+                    if drawn_at(&dl, x as f64, y as f64, maxdepth) {
+                        prop_assert!(tried.contains(&(x as i64)), "({x}, {y}) not tried");
+                    }
+                }
+            }
+        }
+    }
+
+    /// A back plane that crosses the screen where no front plane covers: drawn by the rule
+    /// at the left of the array only, and found there.
+    #[test]
+    fn the_screen_rule_check_finds_a_single_column() {
+        let back = |z0: f64, dzx: f64| DlPlane {
+            z0,
+            dzx,
+            dzy: 0.0,
+            colour: 1,
+            h: false,
+            y: false,
+            l: false,
+        };
+        // Back plane 1 is negative at x = 0 only; back plane 2 is below the front there.
+        let front = DlPlane {
+            z0: 5.0,
+            h: true,
+            ..back(0.0, 0.0)
+        };
+        let dl = DisplayList {
+            planes: vec![back(3.0, 1.0), front, back(-0.5, 1.0)],
+            terminator: 1234,
+        };
+        assert!(drawn_at(&dl, 0.0, 0.0, 1024.0));
+        assert!(!(1..64).any(|x| drawn_at(&dl, x as f64, 0.0, 1024.0)));
+        assert!(drawn_by_screen_rule(&dl, 64, 64, 1024.0));
+        assert!(drawn_anywhere(&dl, 64, 64, 1024.0));
     }
 }

@@ -35,6 +35,30 @@ pub fn finish<T>(code: T) -> T {
     }
 }
 
+/// Standard output failed under a report (its reader gone, `| head`; a full disk): say so in
+/// one line, naming the outputs already in place whole, and exit with status 2. A signal's
+/// cleanup already under way ends the process instead.
+pub fn stdout_failed(e: &std::io::Error) -> ! {
+    if crate::signal_cleanup_installed()
+        && STATE
+            .compare_exchange(RUNNING, FINISHED, Ordering::SeqCst, Ordering::SeqCst)
+            .is_err()
+    {
+        loop {
+            std::thread::park();
+        }
+    }
+    let mut line = format!("csgpix: cannot write to standard output: {}", OneLine(e));
+    let written = WRITTEN.lock().unwrap_or_else(|e| e.into_inner());
+    if !written.is_empty() {
+        let names: Vec<String> = written.iter().map(|s| OneLine(s).to_string()).collect();
+        line += &format!("; already written whole: {}", names.join(", "));
+    }
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr(), "{line}");
+    std::process::exit(2)
+}
+
 /// The signal's cleanup takes the ending: false when the run has already claimed it.
 pub(crate) fn claim() -> bool {
     STATE

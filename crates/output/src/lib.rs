@@ -43,7 +43,7 @@ mod oom;
 mod scratch;
 mod sparse;
 
-pub use ending::finish;
+pub use ending::{finish, stdout_failed};
 pub use error::{Error, IoError, OneLine, Refusal, Result};
 pub use oom::{fallible, one_arena_under_address_limit, try_zeroed, AllocFailed, ExitOnOom};
 pub use scratch::{child, scratch, Child, Scratch};

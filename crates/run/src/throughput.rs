@@ -166,10 +166,20 @@ pub struct SceneReport {
 }
 
 impl ThroughputJob {
-    /// The memory plan: the figures are a few numbers a panel; with `simulate`, one panel's
-    /// cycle model at a time, checked against the limit before each run (`simulate`).
+    /// The memory plan (docs/memory.md): the process; with a scene, every panel's record and
+    /// the solids binned to it, for the panel size that has most (one size is held at a
+    /// time), and with `simulate` that panel's cycle model. The scene is read to know where
+    /// its solids fall.
     pub fn estimate(&self) -> crate::Result<u64> {
-        Ok(0)
+        let Some(path) = &self.scene else {
+            return Ok(BASE_BYTES);
+        };
+        let panels = self.panels()?;
+        let scene = read_scene(path, self.read, &crate::progress::Quiet)?;
+        let fmt = scene_word(self, &scene)?;
+        let ps = PanelScene::new(&scene, self.view, self.screen, fmt)
+            .map_err(|e| crate::lib_errors::draw(e).context(path.display().to_string()))?;
+        Ok(memory_need(&ps, &panels, self.simulate))
     }
 
     /// Read the FPGA report and the scene and compute every figure; a caller without a
@@ -334,6 +344,42 @@ fn scene_word(a: &ThroughputJob, scene: &CsgScene) -> crate::Result<WordFormat> 
     WordFormat::new(10, int, ovf as u32).map_err(|e| Error::options("--bits", e.to_string()))
 }
 
+/// The process, the scene's planes and the report's fixed figures.
+const BASE_BYTES: u64 = 16 << 20;
+/// A panel's record (`PanelWork`), its bin's vector and the allocator's share of both,
+/// besides the solids binned to it (8 bytes each): 4,194,304 panels of 1x1 with twelve.csg
+/// peak at 534 MB, about 123 bytes a panel with 3 solids each (tests/memory.rs).
+const PANEL_BYTES: u64 = 112;
+/// A plane of the scene as read, projected twice (drawn and sliced) and compiled: a sphere of
+/// 80,000 faces peaks at 40 MiB, about 410 bytes a plane over the process's 7 MiB.
+const PLANE_BYTES: u64 = 512;
+
+/// [`ThroughputJob::estimate`] of a projected scene.
+fn memory_need(ps: &PanelScene, panels: &[(usize, usize)], simulate: bool) -> u64 {
+    let planes: u64 = ps.lists.iter().map(|l| l.planes.len() as u64).sum();
+    let per_size = |p: (usize, usize)| {
+        let (cols, rows) = csgpix_draw::panels::tiling(ps.screen, p);
+        let records = (cols as u64 * rows as u64).saturating_mul(PANEL_BYTES);
+        let binned: u64 = ps
+            .footprints
+            .iter()
+            .flatten()
+            .map(|&(x0, y0, x1, y1)| ((x1 / p.0 - x0 / p.0 + 1) * (y1 / p.1 - y0 / p.1 + 1)) as u64)
+            .fold(0u64, u64::saturating_add);
+        let array = if simulate {
+            CycleArray::memory_bytes(&ps.panel_config(p))
+        } else {
+            0
+        };
+        records
+            .saturating_add(binned.saturating_mul(8))
+            .saturating_add(array)
+    };
+    let most = panels.iter().map(|&p| per_size(p)).max().unwrap_or(0);
+    most.saturating_add(planes.saturating_mul(PLANE_BYTES))
+        .saturating_add(BASE_BYTES)
+}
+
 fn scene_report(
     a: &ThroughputJob,
     path: &Path,
@@ -345,6 +391,9 @@ fn scene_report(
     let fmt = scene_word(a, &scene)?;
     let ps = PanelScene::new(&scene, a.view, a.screen, fmt)
         .map_err(|e| crate::lib_errors::draw(e).context(path.display().to_string()))?;
+    let need = memory_need(&ps, panels, a.simulate);
+    a.max_memory
+        .check(need, "this throughput", "use larger panels (--panel)")?;
     let set = Equations::Derived.set();
     let counted = count_cycles(&set);
     let simulated = |cfg: &ArrayConfig, ops: &[Op]| {

@@ -125,14 +125,41 @@ impl WordPlanes {
 /// behind every front plane, before every back plane, K ≥ 0 on every perpendicular plane.
 pub fn word_ranges(slicer: &Slicer, prim: usize) -> Result<SlabRanges> {
     let planes = WordPlanes::of(slicer, prim)?;
+    Ok(by_panel(
+        slicer,
+        |b| planes.in_panel(slicer, b),
+        |p, x, y| p.slabs(slicer, x as i64, y as i64),
+    ))
+}
+
+/// Side of the panels [`by_panel`] prunes the planes for.
+const PANEL: usize = 16;
+
+/// Every pixel's slabs, panel by panel: the planes pruned to those that decide a panel
+/// (`prune`, None when the solid is nowhere in it), then each pixel's slabs of those
+/// (`slabs`), as the thesis's panels draw only the planes that reach them (§2.5). A sphere's
+/// thousands of planes shrink to the few near each panel's patch of its surface; the slabs
+/// are those of all the planes ([`WordPlanes::in_panel`], tested).
+fn by_panel<P>(
+    slicer: &Slicer,
+    prune: impl Fn(PixelBox) -> Option<P>,
+    slabs: impl Fn(&P, usize, usize) -> (u32, u32),
+) -> SlabRanges {
     let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
-    let mut out = Vec::with_capacity(w * h);
-    for y in 0..h as i64 {
-        for x in 0..w as i64 {
-            out.push(planes.slabs(slicer, x, y));
+    // slabs_of's one empty run.
+    let mut out = vec![(1, 0); w * h];
+    for y0 in (0..h).step_by(PANEL) {
+        for x0 in (0..w).step_by(PANEL) {
+            let b = PixelBox::new(x0, y0, (x0 + PANEL).min(w), (y0 + PANEL).min(h));
+            let Some(planes) = prune(b) else { continue };
+            for y in b.y0..b.y1 {
+                for x in b.x0..b.x1 {
+                    out[y * w + x] = slabs(&planes, x, y);
+                }
+            }
         }
     }
-    Ok(SlabRanges(out))
+    SlabRanges(out)
 }
 
 /// A plane's (Y, H) flags and its smallest and largest value over a panel, if known.
@@ -296,12 +323,11 @@ fn raw_depth(slicer: &Slicer, v: f64, up: bool) -> i128 {
 
 /// [`Route::Float`](crate::Route::Float): the same slabs from the exact intervals.
 pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
-    let (w, h) = (slicer.grid.dims[0], slicer.grid.dims[1]);
     let planes = FloatPlanes::of(slicer, prim);
-    SlabRanges(
-        (0..w * h)
-            .map(|i| planes.slabs(slicer, i % w, i / w))
-            .collect(),
+    by_panel(
+        slicer,
+        |b| planes.in_panel(slicer, b),
+        |p, x, y| p.slabs(slicer, x, y),
     )
 }
 
@@ -401,6 +427,15 @@ mod tests {
             }
             if let Some(k) = kept {
                 prop_assert!(k.0.len() <= all.0.len());
+            }
+            // The routes' ranges, panel by panel, are every pixel's slabs of all the planes.
+            let ranges = word_ranges(&slicer, 0).unwrap();
+            let floats = float_ranges(&slicer, 0);
+            let all_f = FloatPlanes::of(&slicer, 0);
+            for i in 0..n * n {
+                let (x, y) = (i % n, i / n);
+                prop_assert_eq!(ranges.0[i], all.slabs(&slicer, x as i64, y as i64));
+                prop_assert_eq!(floats.0[i], all_f.slabs(&slicer, x, y));
             }
             let all = FloatPlanes::of(&slicer, 0);
             let kept = all.in_panel(&slicer, b);
