@@ -32,7 +32,10 @@ pub struct CompileError {
 
 impl std::fmt::Display for CompileError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "plane {}: {}", self.plane + 1, self.msg)
+        match self.field {
+            WHOLE_PROGRAM | WHOLE_LIST => f.write_str(&self.msg),
+            _ => write!(f, "plane {}: {}", self.plane + 1, self.msg),
+        }
     }
 }
 
@@ -291,15 +294,32 @@ fn clip_ops_bound_by(planes: &dyn Fn(usize) -> usize, products: &[Vec<(usize, bo
 
 /// Refuse a clipping program whose bound of operations is over [`MAX_CLIP_OPS`]:
 /// `bound` is an upper one (`"up to"`) or, before the lists are built, a lower one
-/// (`"at least"`).
-fn check_clip_bound(bound: u64, which: &str) -> Result<(), CompileError> {
+/// (`"at least"`). The reason given is the one that holds: products of many literals (a
+/// difference of many solids), or else solids of many planes.
+fn check_clip_bound(
+    bound: u64,
+    which: &str,
+    products: &[Vec<(usize, bool)>],
+    planes: u64,
+) -> Result<(), CompileError> {
     if bound <= MAX_CLIP_OPS {
         return Ok(());
     }
+    let longest = products.iter().map(Vec::len).max().unwrap_or(0);
+    let why = if longest > 2 {
+        format!(
+            "§5.2.1 draws every literal clipped by the rest of its product, so a difference \
+             of n solids costs n² (here {longest} in one product; voxelize evaluates it in \
+             Blist, linear in n)"
+        )
+    } else {
+        format!(
+            "its solids have {planes} planes, and the array draws each in about two \
+             operations (a solid of fewer faces: in OpenSCAD a lower $fn, larger $fa or $fs)"
+        )
+    };
     let msg = format!(
-        "the clipping program would have {which} {bound} operations, over {MAX_CLIP_OPS}: \
-         §5.2.1 draws every literal clipped by the rest of its product, so a difference \
-         of n solids costs n² (voxelize evaluates it in Blist, linear in n)"
+        "the clipping program would have {which} {bound} operations, over {MAX_CLIP_OPS}: {why}"
     );
     Err(CompileError {
         plane: 0,
@@ -317,7 +337,18 @@ pub fn check_clip_size(expr: &Clip) -> Result<(), CompileError> {
     let Ok(products) = expr.products() else {
         return Ok(());
     };
-    check_clip_bound(clip_ops_bound_by(&|_| 1, &products), "at least")
+    let solids = products
+        .iter()
+        .flatten()
+        .map(|&(o, _)| o + 1)
+        .max()
+        .unwrap_or(0);
+    check_clip_bound(
+        clip_ops_bound_by(&|_| 1, &products),
+        "at least",
+        &products,
+        solids as u64,
+    )
 }
 
 /// The thesis evaluation of a clipping function (§5.2.1): for every literal of every product
@@ -357,7 +388,9 @@ pub fn clip_scene_ops(
             },
         )
     })?;
-    check_clip_bound(clip_ops_bound(lists, &products), "up to").map_err(|e| (0, e))?;
+    let planes = lists.iter().map(|l| l.planes.len() as u64).sum();
+    check_clip_bound(clip_ops_bound(lists, &products), "up to", &products, planes)
+        .map_err(|e| (0, e))?;
     let mut ops = vec![];
     for prod in &products {
         for (k, &(obj, neg)) in prod.iter().enumerate() {
@@ -381,4 +414,33 @@ pub fn clip_scene_ops(
         }
     }
     Ok(ops)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A program too long for one solid's many planes is not blamed on a difference of many
+    /// solids (a sphere of $fn = 3000 was); a whole-program error names no plane.
+    #[test]
+    fn a_long_program_names_its_cause() {
+        let one = check_clip_bound(5_000_000, "up to", &[vec![(0, false)]], 2_500_000).unwrap_err();
+        assert_eq!(one.field, WHOLE_PROGRAM);
+        let text = one.to_string();
+        assert!(
+            text.starts_with("the clipping program would have up to 5000000"),
+            "{text}"
+        );
+        assert!(text.contains("its solids have 2500000 planes"), "{text}");
+        assert!(!text.contains("n²"), "{text}");
+        let many = vec![(0, false), (1, true), (2, true), (3, true)];
+        let text = check_clip_bound(5_000_000, "up to", &[many], 40)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            text.contains("a difference of n solids costs n² (here 4 in one product"),
+            "{text}"
+        );
+        assert!(check_clip_bound(MAX_CLIP_OPS, "up to", &[], 0).is_ok());
+    }
 }

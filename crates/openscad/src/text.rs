@@ -104,12 +104,32 @@ impl Fonts {
     pub fn scene(files: &[PathBuf]) -> Fonts {
         let mut db = fontdb::Database::new();
         for f in files {
-            let _ = db.load_font_file(f);
+            if std::fs::read(f).is_ok_and(|data| collection_fits(&data)) {
+                let _ = db.load_font_file(f);
+            }
         }
         Fonts {
             db,
             then: Some(Fonts::standard()),
         }
+    }
+
+    /// The faces of one font file's bytes, looked up alone (the fuzz target's: no file, no
+    /// other font).
+    pub fn of_data(data: Vec<u8>) -> Fonts {
+        let mut db = fontdb::Database::new();
+        if collection_fits(&data) {
+            db.load_font_data(data);
+        }
+        Fonts { db, then: None }
+    }
+
+    /// The family names of every face, in order.
+    pub fn families(&self) -> Vec<String> {
+        self.db
+            .faces()
+            .flat_map(|f| f.families.iter().map(|(n, _)| n.clone()))
+            .collect()
     }
 
     /// The sets of the lookup order: this one's faces, then those it defers to.
@@ -298,6 +318,17 @@ impl Fonts {
             m.file.display()
         );
         Ok((face, Some(note)))
+    }
+}
+
+/// Whether a font collection's header (`ttcf`) counts no more faces than its offset table
+/// has room for: fontdb reserves (and walks) as many faces as the count says, so a damaged
+/// count of 2^31 was a 33 GB allocation and an abort (found by the `fonts` fuzz target). A
+/// single font is not a collection and fits.
+fn collection_fits(data: &[u8]) -> bool {
+    match ttf_parser::fonts_in_collection(data) {
+        Some(n) => 12 + 4 * n as u64 <= data.len() as u64,
+        None => true,
     }
 }
 
@@ -530,6 +561,16 @@ pub fn render_noting(
 ) -> csgpix_scene::Result<Poly2> {
     let (id, note) = fonts.find_or_substitute(&spec.font)?;
     notes.extend(note);
+    render_in(spec, fonts, id, max_points)
+}
+
+/// [`render`] in face `id` of `fonts` (as [`Fonts::find`] found it).
+pub fn render_in(
+    spec: &TextSpec,
+    fonts: &Fonts,
+    id: FaceId,
+    max_points: usize,
+) -> csgpix_scene::Result<Poly2> {
     if !matches!(spec.halign.as_str(), "left" | "right" | "center") {
         return Err(Error::UnknownAlignment {
             axis: "halign",
@@ -890,6 +931,32 @@ mod tests {
             }
         }
         odd
+    }
+
+    /// A collection whose header counts 2^31 faces in a 16-byte file adds no face (fontdb
+    /// reserved 33 GB for it and aborted, or walked 2^31 indices), from a scene's file or
+    /// from bytes; a real collection's count fits.
+    #[test]
+    fn a_collection_counting_more_faces_than_it_holds_adds_none() {
+        let bad = [
+            b"ttcf".as_slice(),
+            &[0, 1, 0, 0],
+            &[0x7f, 0xff, 0xff, 0xff],
+            &[0; 4],
+        ]
+        .concat();
+        assert!(!collection_fits(&bad));
+        assert!(Fonts::of_data(bad.clone()).families().is_empty());
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("bad.ttc");
+        std::fs::write(&file, &bad).unwrap();
+        let fonts = Fonts::scene(&[file]);
+        assert!(fonts.families().is_empty());
+        let two = [b"ttcf".as_slice(), &[0, 1, 0, 0], &[0, 0, 0, 2], &[0; 8]].concat();
+        assert!(collection_fits(&two));
+        let sans = std::fs::read(magiera()).unwrap();
+        assert!(collection_fits(&sans));
+        assert_eq!(Fonts::of_data(sans).families().len(), 1);
     }
 
     #[test]

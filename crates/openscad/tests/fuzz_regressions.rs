@@ -54,6 +54,17 @@ fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
                 Ok(s) => s.warnings.into_iter().find(|w| w.contains('\n')),
             }
         }
+        "fonts" => {
+            use csgpix_openscad::text::{render_in, Fonts, TextSpec};
+            let fonts = Fonts::of_data(bytes.to_vec());
+            let family = fonts.families().into_iter().next()?;
+            let id = fonts.find(&family).ok()?;
+            let mut spec = TextSpec::new("Ag fi 1.5", 10.0);
+            spec.font = family;
+            render_in(&spec, &fonts, id, 200_000)
+                .err()
+                .map(|e| e.to_string())
+        }
         other => panic!("no checks for fuzz target {other}"),
     }
 }
