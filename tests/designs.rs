@@ -77,6 +77,7 @@ fn reference(tris: Vec<[[f64; 3]; 3]>) -> (CsgScene, DVec3, DVec3) {
         imports: vec![import],
         root: CsgNode::Solid(0),
         warnings: vec![],
+        reading_bytes: 0,
     };
     (scene, lo - pad, hi + pad)
 }

@@ -622,6 +622,7 @@ fn text_is_drawn_within_the_memory_limit() {
     };
     let out = dir.path().join("v.nrrd");
     let o = out.to_str().unwrap();
+    let stl = dir.path().join("s.stl").to_str().unwrap().to_string();
     let long = scene(3000);
     let args = [
         "voxelize",
@@ -660,4 +661,33 @@ fn text_is_drawn_within_the_memory_limit() {
         peak <= 50,
         "500 characters: peak {peak} MiB over --max-memory 50"
     );
+    // Without a limit, the run's estimate counts the text drawn (it was 42 MiB against a
+    // 138 MiB peak at 3,000 characters), for voxelize and for sculpt.
+    for n in [1000, 3000] {
+        let text = scene(n);
+        let voxelize = ["voxelize", &text, "--res", "64", "-o", o];
+        let sculpt = [
+            "sculpt",
+            &text,
+            "--res",
+            "64",
+            "--tool",
+            "sphere:4",
+            "--path",
+            "vectors/paths/carve.csv",
+            "-o",
+            stl.as_str(),
+        ];
+        for args in [&voxelize[..], &sculpt[..]] {
+            let (estimate, peak) = (json_estimate(args) >> 20, peak_mib(args));
+            eprintln!(
+                "{} at {n} characters: estimate {estimate} MiB, peak {peak} MiB",
+                args[0]
+            );
+            assert!(
+                estimate >= peak,
+                "{args:?}: estimate {estimate} MiB, peak {peak} MiB"
+            );
+        }
+    }
 }

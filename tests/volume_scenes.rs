@@ -149,6 +149,7 @@ fn as_meshes(scene: &CsgScene, dir: &Path) -> Loaded {
         imports,
         root: scene.root.clone(),
         warnings: vec![],
+        reading_bytes: 0,
     };
     let sampled = load_imports(&meshes, "meshes", dir).unwrap();
     Loaded {

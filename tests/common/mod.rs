@@ -217,6 +217,7 @@ pub fn compare_with_off(
         }],
         root: CsgNode::Solid(0),
         warnings: vec![],
+        reading_bytes: 0,
     };
     let b = scene_occupancy(&theirs, dir, &grid, Route::Float).unwrap();
     let a = scene_occupancy(&ours, dir, &grid, Route::Float).unwrap();

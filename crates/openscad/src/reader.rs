@@ -65,6 +65,8 @@ pub(crate) struct Reader<'a> {
     pub(crate) top_dim: Option<Dim>,
     /// Warnings as OpenSCAD gives them, with where they arose.
     pub(crate) warnings: Vec<(Pos, String)>,
+    /// What drawing the scene's text held at most, in bytes ([`CsgScene::reading_bytes`]).
+    drawing_bytes: u64,
     /// The scene's own fonts ([`ReadOptions::fonts`]) before the standard ones, loaded at the
     /// first `text()`; this scene's alone.
     pub(crate) scene_fonts: std::cell::OnceCell<crate::text::Fonts>,
@@ -91,6 +93,7 @@ impl<'a> Reader<'a> {
             top_flat: None,
             top_dim: None,
             warnings: Vec::new(),
+            drawing_bytes: 0,
             scene_fonts: std::cell::OnceCell::new(),
         }
     }
@@ -155,6 +158,7 @@ impl<'a> Reader<'a> {
                     imports,
                     root,
                     warnings,
+                    reading_bytes: self.drawing_bytes,
                 })
             }
             Some(frame) => fail(pos, unclosed(&frame, "end of file")),
@@ -779,6 +783,12 @@ impl<'a> Reader<'a> {
             return Ok(self.removed(Some(msg), head.pos, false, true));
         }
         self.vertices += n;
+        if head.params.node == NodeKind::Text {
+            // As text_shape charged it: TEXT_POINT_VERTICES scene vertices a point drawn.
+            let charged = (n * crate::TEXT_POINT_VERTICES) as u64;
+            let bytes = charged.saturating_mul(crate::BYTES_PER_SCENE_VERTEX);
+            self.drawing_bytes = self.drawing_bytes.saturating_add(bytes);
+        }
         let poly = poly.transformed(plane_part(ctx.matrix.as_ref()));
         Ok(Some(Item::Flat(Region::Poly(poly), head.pos)))
     }

@@ -420,7 +420,9 @@ impl SculptJob {
         let counts = csgpix_voxel::cells::cell_counts(&scene, &slicer, depth);
         let held = voxelizer.saturating_add(imports_bytes(&slicer));
         let frame = Frame::of_grid(&grid);
-        let (beside, need) = self.need(&counts, frame, grid.dims, path, (held, 0))?;
+        // Drawing the scene's text came first, and was freed.
+        let read = scene.reading_bytes.saturating_add(PROCESS_BYTES);
+        let (beside, need) = self.need(&counts, frame, grid.dims, path, (held, read))?;
         Ok(Planned {
             source: Source::Scene(Box::new((scene, slicer))),
             frame,

@@ -74,6 +74,10 @@ pub struct CsgScene {
     /// `FILE:LINE:COL: message`, the refusal `--strict` makes of it. The command line prints
     /// each as `csgpix: warning: …`, `--json` lists them, Python raises `warnings.warn`.
     pub warnings: Vec<crate::Error>,
+    /// The most memory (bytes) drawing the scene's outlines held besides the scene, as the
+    /// reader charged it against its budget (a `text()`'s glyphs and their union, freed once
+    /// drawn): a run's estimate is at least this beside the process's own.
+    pub reading_bytes: u64,
 }
 
 impl CsgScene {
@@ -84,6 +88,7 @@ impl CsgScene {
             imports: vec![],
             root,
             warnings: vec![],
+            reading_bytes: 0,
         }
     }
 

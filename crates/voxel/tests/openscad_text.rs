@@ -96,6 +96,7 @@ fn mesh_scene(tris: Vec<Tri>) -> CsgScene {
         }],
         root: CsgNode::Solid(0),
         warnings: vec![],
+        reading_bytes: 0,
     }
 }
 

@@ -171,8 +171,12 @@ impl Plan {
         let need = self
             .pool
             .install(|| self.estimate(job, stream, runs_nrrd))?;
+        // Drawing the scene's text came before, and was freed (CsgScene::reading_bytes).
+        let read = scene
+            .reading_bytes
+            .saturating_add(csgpix_voxel::PROCESS_BYTES);
         Ok(Budget {
-            need: need.saturating_add(store_nodes.unwrap_or(0)),
+            need: need.saturating_add(store_nodes.unwrap_or(0)).max(read),
             stream,
             store_nodes,
         })
