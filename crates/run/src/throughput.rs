@@ -397,7 +397,7 @@ fn scene_report(
     let set = Equations::Derived.set();
     let counted = count_cycles(&set);
     let simulated = |cfg: &ArrayConfig, ops: &[Op]| {
-        simulate(cfg, &set, ops, a.max_memory)
+        simulate(cfg, &set, ops, a.max_memory, progress)
             .map_err(|e| csgpix_draw::Error::Counter(e.to_string()))
     };
     let count: &csgpix_draw::panels::Counter = if a.simulate { &simulated } else { &counted };
@@ -433,17 +433,19 @@ fn scene_report(
 }
 
 /// Run a program on a cycle-model array of configuration `cfg` and read its clock counter,
-/// the array's memory checked against `--max-memory` first.
+/// the array's memory checked against `--max-memory` first; a long one shows its operations
+/// as a stage of `progress` (a sphere of 80,000 faces is 2.6 million clocks a panel size).
 fn simulate(
     cfg: &ArrayConfig,
     set: &rtl_model::EquationSet,
     ops: &[Op],
     mem: Limit,
+    progress: &dyn Progress,
 ) -> crate::Result<u64> {
     let what = format!("--simulate: a {}x{} panel", cfg.width, cfg.height);
     mem.check(CycleArray::memory_bytes(cfg), &what, "use smaller panels")?;
     let mut arr = CycleArray::new(*cfg, set.clone());
-    arr.run(ops)?;
+    crate::render::run_with_progress(&mut arr, ops, progress)?;
     Ok(arr.cycles())
 }
 
@@ -584,5 +586,79 @@ fn scene_chart(s: &SceneReport) -> Chart {
                 points: pts(&|e| e.fps),
             },
         ],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::progress::Quiet;
+    use std::sync::Mutex;
+
+    /// A sink that keeps the stages begun and the steps advanced.
+    #[derive(Default)]
+    struct Stages(Mutex<Vec<(String, u64, u64)>>);
+
+    impl Progress for Stages {
+        fn stage(&self, what: &str, total: u64) {
+            self.0.lock().unwrap().push((what.to_string(), total, 0));
+        }
+        fn advance(&self, n: u64) {
+            if let Some(s) = self.0.lock().unwrap().last_mut() {
+                s.2 += n;
+            }
+        }
+    }
+
+    fn twelve() -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../vectors/scenes/twelve.csg")
+    }
+
+    /// `--simulate` shows each long panel program's operations as a stage, run to its end,
+    /// and counts what the counter counts.
+    #[test]
+    fn simulated_panels_show_their_progress() {
+        let job = |simulate| ThroughputJob {
+            screen: (512, 512),
+            panel: Some((512, 512)),
+            scene: Some(twelve()),
+            simulate,
+            ..ThroughputJob::default()
+        };
+        let stages = Stages::default();
+        let simulated = job(true).run(&stages).unwrap();
+        let stages = stages.0.into_inner().unwrap();
+        assert!(!stages.is_empty());
+        for (what, total, done) in &stages {
+            assert_eq!(what, "operations");
+            assert!(*total > 0 && done == total, "{stages:?}");
+        }
+        let counted = job(false).run(&Quiet).unwrap();
+        let cycles = |r: &ThroughputReport| r.scene.as_ref().unwrap().one_array_cycles;
+        assert_eq!(cycles(&simulated), cycles(&counted));
+    }
+
+    /// The estimate grows with the panels a scene is binned to, and is what the run checks.
+    #[test]
+    fn the_estimate_counts_the_panels() {
+        let job = |panel| ThroughputJob {
+            screen: (1024, 1024),
+            panel: Some(panel),
+            scene: Some(twelve()),
+            ..ThroughputJob::default()
+        };
+        let (small, large) = (
+            job((2, 2)).estimate().unwrap(),
+            job((256, 256)).estimate().unwrap(),
+        );
+        // 262,144 panels of 2x2: their records alone.
+        assert!(small >= 262_144 * PANEL_BYTES + BASE_BYTES, "{small}");
+        assert!(large < small / 2, "{large} {small}");
+        let limited = ThroughputJob {
+            max_memory: Limit::new(Some(1), "--max-memory"),
+            ..job((2, 2))
+        };
+        let e = limited.run(&Quiet).unwrap_err().to_string();
+        assert!(e.contains("this throughput needs about"), "{e}");
     }
 }
