@@ -10,6 +10,8 @@
 //!   OpenSCAD warns: a file that draws nothing, then the refusal of an empty scene), and no
 //!   output written;
 //! - interrupted: killed by the signal it was sent (or finished before it);
+//! - standard output closed (some runs' standard output is a pipe without a reader): exit 2,
+//!   one line `csgpix: cannot write to standard output: …`, the outputs already whole kept;
 //! - failure: anything else (an abort, a panic, another status, a run past the time limit,
 //!   several lines, a control character echoed, a staging file or a partial output left, a
 //!   symlink replaced).
@@ -276,6 +278,8 @@ struct Case {
     target: Target,
     out_ext: String,
     signal: Option<(i32, u64)>,
+    /// Standard output is a pipe whose reader has gone (`| head` after it exits).
+    closed_stdout: bool,
 }
 
 /// Values of an option: mostly valid, some not.
@@ -589,7 +593,7 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
                 &["2", "x"],
             );
             flag(&mut args, rng, 20, "--json");
-            return no_output(args, inputs);
+            return no_output(rng, args, inputs);
         }
         6 => {
             args.push(a("requirements"));
@@ -600,7 +604,7 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
             opt(&mut args, rng, 20, "--word", WORD, BAD_WORD);
             opt(&mut args, rng, 20, "--view", &["top", "iso"], &["q"]);
             flag(&mut args, rng, 20, "--json");
-            return no_output(args, inputs);
+            return no_output(rng, args, inputs);
         }
         7 => {
             args.push(a("throughput"));
@@ -635,7 +639,7 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
                 &["0", "999999"],
             );
             flag(&mut args, rng, 20, "--json");
-            return no_output(args, inputs);
+            return no_output(rng, args, inputs);
         }
         _ => {
             args.push(a("verify-select"));
@@ -651,7 +655,7 @@ fn case(rng: &mut Rng, seeds: &[(&'static str, Vec<u8>)]) -> Case {
                 &["q"],
             );
             flag(&mut args, rng, 20, "--json");
-            return no_output(args, inputs);
+            return no_output(rng, args, inputs);
         }
     };
     finish(rng, args, inputs, out_ext.to_string())
@@ -748,13 +752,14 @@ fn verilog_scene(rng: &mut Rng, of: &dyn Fn(&str, &mut Rng) -> Input) -> Case {
 }
 
 /// A case of a command that writes no file (its report goes to standard output).
-fn no_output(args: Vec<Vec<u8>>, inputs: Vec<Input>) -> Case {
+fn no_output(rng: &mut Rng, args: Vec<Vec<u8>>, inputs: Vec<Input>) -> Case {
     Case {
         args,
         inputs,
         target: Target::New,
         out_ext: "none".into(),
         signal: None,
+        closed_stdout: rng.chance(5),
     }
 }
 
@@ -781,12 +786,15 @@ fn finish(rng: &mut Rng, mut args: Vec<Vec<u8>>, inputs: Vec<Input>, out_ext: St
         let sig = *rng.pick(&[libc::SIGINT, libc::SIGTERM, libc::SIGHUP]);
         (sig, rng.below(400) as u64)
     });
+    // Drawn last: the rest of the case is what the same seed drew before.
+    let closed_stdout = rng.chance(3);
     Case {
         args,
         inputs,
         target,
         out_ext,
         signal,
+        closed_stdout,
     }
 }
 
@@ -799,6 +807,8 @@ enum Kind {
     Success,
     Refusal,
     Interrupted,
+    /// Standard output closed under the report: one line, exit 2, the outputs whole.
+    StdoutClosed,
 }
 
 /// Lay out the case's files in `dir`, run it, and classify the run.
@@ -835,6 +845,11 @@ fn run(case: &Case, dir: &Path) -> Result<Kind, Failure> {
         .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::piped());
+    if case.closed_stdout {
+        let (reader, writer) = std::io::pipe().unwrap();
+        drop(reader);
+        cmd.stdout(writer);
+    }
     // SAFETY: setrlimit(2) between fork and exec, async-signal-safe, no allocation.
     unsafe {
         cmd.pre_exec(|| {
@@ -1003,6 +1018,9 @@ fn classify(
             {
                 return Err(format!("control character {c:?} echoed: {text:?}"));
             }
+            if case.closed_stdout && line.starts_with("csgpix: cannot write to standard output: ") {
+                return Ok(Kind::StdoutClosed);
+            }
             Ok(Kind::Refusal)
         }
         Some(c) if sent && c == 128 + case.signal.map_or(0, |s| s.0) => Ok(Kind::Interrupted),
@@ -1047,6 +1065,9 @@ fn save(case: &Case, why: &str, root: &Path, n: u64) -> PathBuf {
     if let Some((s, ms)) = case.signal {
         text += &format!("signal {s} {ms}\n");
     }
+    if case.closed_stdout {
+        text += "stdout closed\n";
+    }
     for a in &case.args {
         text += &format!("arg {}\n", hex(a));
     }
@@ -1073,6 +1094,7 @@ fn load(d: &Path) -> Case {
     let text = fs::read_to_string(d.join("case")).unwrap();
     let (mut args, mut inputs, mut target, mut out_ext, mut signal) =
         (vec![], vec![], Target::New, String::new(), None);
+    let mut closed_stdout = false;
     for line in text.lines().filter(|l| !l.starts_with('#')) {
         let f: Vec<&str> = line.split(' ').collect();
         match f[0] {
@@ -1089,6 +1111,7 @@ fn load(d: &Path) -> Case {
                 out_ext = f[2].to_string();
             }
             "signal" => signal = Some((f[1].parse().unwrap(), f[2].parse().unwrap())),
+            "stdout" => closed_stdout = f.get(1) == Some(&"closed"),
             "arg" => args.push(unhex(f.get(1).copied().unwrap_or(""))),
             "input" => inputs.push(Input {
                 ext: f[2].to_string(),
@@ -1103,6 +1126,7 @@ fn load(d: &Path) -> Case {
         target,
         out_ext,
         signal,
+        closed_stdout,
     }
 }
 
@@ -1137,7 +1161,7 @@ fn the_command_line_survives_fuzzing() {
     let seeds = seeds();
     let deadline = Instant::now() + Duration::from_secs(seconds);
     let next = AtomicU64::new(0);
-    let counts = Mutex::new([0u64; 4]);
+    let counts = Mutex::new([0u64; 5]);
     let found = Mutex::new(vec![]);
     std::thread::scope(|s| {
         for _ in 0..jobs {
@@ -1155,7 +1179,7 @@ fn the_command_line_survives_fuzzing() {
                 match outcome {
                     Ok(kind) => c[kind as usize] += 1,
                     Err(why) => {
-                        c[3] += 1;
+                        c[4] += 1;
                         let d = save(&case, &why, &failed_root, n);
                         found
                             .lock()
@@ -1166,11 +1190,12 @@ fn the_command_line_survives_fuzzing() {
             });
         }
     });
-    let [ok, refused, stopped, bad] = *counts.lock().unwrap();
+    let [ok, refused, stopped, closed, bad] = *counts.lock().unwrap();
     eprintln!(
         "cli fuzz: seed {seed}, {} cases: {ok} succeeded, {refused} refused cleanly, \
-         {stopped} interrupted cleanly, {bad} failed",
-        ok + refused + stopped + bad
+         {stopped} interrupted cleanly, {closed} ended cleanly on a closed standard output, \
+         {bad} failed",
+        ok + refused + stopped + closed + bad
     );
     failures.extend(found.into_inner().unwrap());
     assert!(
