@@ -881,28 +881,21 @@ fn a_closed_or_full_standard_output_is_one_line_not_a_panic() {
     ];
     for args in &runs {
         for closed in [true, false] {
-            let out = if closed {
+            let stdout: Stdio = if closed {
                 // A pipe whose reading end is closed before csgpix starts: every write fails.
                 let (reader, writer) = std::io::pipe().unwrap();
                 drop(reader);
-                Command::new(env!("CARGO_BIN_EXE_csgpix"))
-                    .args(args)
-                    .current_dir(env!("CARGO_MANIFEST_DIR"))
-                    .stdout(writer)
-                    .output()
-                    .unwrap()
+                writer.into()
             } else {
-                let full = std::fs::OpenOptions::new()
-                    .write(true)
-                    .open("/dev/full")
-                    .unwrap();
-                Command::new(env!("CARGO_BIN_EXE_csgpix"))
-                    .args(args)
-                    .current_dir(env!("CARGO_MANIFEST_DIR"))
-                    .stdout(full)
-                    .output()
-                    .unwrap()
+                let full = std::fs::OpenOptions::new().write(true).open("/dev/full");
+                full.unwrap().into()
             };
+            let out = Command::new(env!("CARGO_BIN_EXE_csgpix"))
+                .args(args)
+                .current_dir(env!("CARGO_MANIFEST_DIR"))
+                .stdout(stdout)
+                .output()
+                .unwrap();
             let err = one_line_error(&out);
             assert!(
                 err.contains("cannot write to standard output"),
