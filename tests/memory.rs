@@ -358,7 +358,7 @@ fn estimates_are_above_the_measured_peaks() {
     let dir = tempfile::tempdir().unwrap();
     let o = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
     let (png, nrrd, phantom, zarr) = (o("r.png"), o("v.nrrd"), o("p.nrrd"), o("v.zarr"));
-    let (stl, verilog) = (o("s.stl"), o("verilog"));
+    let (stl, verilog, study) = (o("s.stl"), o("verilog"), o("study"));
     let sculpt = |res| {
         vec![
             "sculpt",
@@ -488,6 +488,8 @@ fn estimates_are_above_the_measured_peaks() {
             &png,
         ],
         vec!["phantom", "--size", "256", "-o", &phantom],
+        // The sweep's largest voxelizations at once.
+        vec!["study", "vectors/scenes/twelve.csg", "-o", &study],
         // A record and a bin a panel, 1,048,576 of them (the estimate was 0 before).
         vec![
             "throughput",
