@@ -27,9 +27,10 @@
 //! and remove the scratch files a run registered ([`scratch`], [`child`]), before the process
 //! dies of the signal ([`install_signal_cleanup`]); they wait for a commit's renames, never for
 //! an output written through. A signal that comes after some outputs are in place says which
-//! ones; a signal that comes after the run has ended ([`finish`]) is not acted on. SIGKILL cannot be caught: what it leaves beside an output is
-//! cleared (or, for a replaced directory, restored) by the next run that names that output
-//! (`leftover`).
+//! ones; a signal that comes after the run has ended ([`finish`]) is not acted on, and a
+//! report whose standard output fails ends in one line ([`stdout_failed`]). SIGKILL cannot be
+//! caught: what it leaves beside an output is cleared (or, for a replaced directory,
+//! restored) by the next run that names that output (`leftover`).
 
 use std::fs::File;
 use std::io::{Seek, Write};

@@ -164,7 +164,7 @@ fn scene(a: &ExportVerilogJob) -> crate::Result<SceneFiles> {
     let machine = stimulus::machine_files(&cfg, &ops);
     files.extend(machine.map_err(|e| Error::options("--scene", e.to_string()))?);
     files.push(("control.hex".into(), control));
-    let want = write_expected(&mut outs, out, cfg, &ops)?;
+    let want = write_expected(&mut outs, out, cfg, &ops, &set)?;
     files.push(("run.sh".into(), stimulus::run_script(&want.summary())));
     for (name, text) in &files {
         outs.write_in(out, name, |w| w.write_all(text.as_bytes()))?;
@@ -252,6 +252,7 @@ fn write_expected(
     out: Out,
     cfg: ArrayConfig,
     ops: &[Op],
+    set: &rtl_model::EquationSet,
 ) -> crate::Result<stimulus::Expected<()>> {
     let path = outs.stage_path(out, "expected.hex")?;
     let io = |source| Error::Io {
@@ -260,8 +261,7 @@ fn write_expected(
     };
     let file = std::fs::File::create(&path).map_err(io)?;
     let w = std::io::BufWriter::with_capacity(1 << 20, file);
-    let set = Equations::Derived.set();
-    let want = match stimulus::write_expected_states(cfg, ops, &set, w) {
+    let want = match stimulus::write_expected_states(cfg, ops, set, w) {
         Ok(want) => want,
         Err(StatesError::Program(e)) => return Err(e.into()),
         Err(StatesError::Io(e)) => return Err(io(e)),

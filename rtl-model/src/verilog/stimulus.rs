@@ -156,16 +156,64 @@ pub fn state_bits(
 ) -> Vec<bool> {
     let mut bits: Vec<bool> = vec![];
     for (name, w) in state_fields(cfg) {
-        let v = field_value(cfg, name, p, i, k, bit);
+        let v = field_value(cfg, Field::of(name), p, i, k, bit);
         bits.extend((0..w).map(|b| b < 64 && v >> b & 1 == 1));
     }
     bits
 }
 
-/// The value of `state` field `name` ([`state_fields`]) for [`state_bits`].
+/// A field of `state` ([`state_fields`]) by the cycle-model register it reads, resolved from
+/// its name once rather than at every pixel.
+#[derive(Clone, Copy, Debug)]
+enum Field {
+    /// A depth register: A, F, B, C (§2.3).
+    Depth(usize),
+    /// A colour register: D, E, G.
+    Colour(usize),
+    SHi,
+    SLo,
+    N,
+    J,
+    T,
+    M,
+    Lt,
+    Eq,
+    Ovf,
+    Sign,
+    K,
+    Carry,
+    Stack,
+}
+
+impl Field {
+    fn of(name: &str) -> Field {
+        let depth = ["A", "F", "B", "C"].iter().position(|r| *r == name);
+        let colour = ["D", "E", "G"].iter().position(|r| *r == name);
+        match (depth, colour, name) {
+            (Some(r), _, _) => Field::Depth(r),
+            (_, Some(r), _) => Field::Colour(r),
+            (_, _, "S_hi") => Field::SHi,
+            (_, _, "S_lo") => Field::SLo,
+            (_, _, "N") => Field::N,
+            (_, _, "J") => Field::J,
+            (_, _, "T") => Field::T,
+            (_, _, "M") => Field::M,
+            (_, _, "lt") => Field::Lt,
+            (_, _, "eq") => Field::Eq,
+            (_, _, "ovf") => Field::Ovf,
+            (_, _, "sign") => Field::Sign,
+            (_, _, "k") => Field::K,
+            (_, _, "carry") => Field::Carry,
+            (_, _, "stack") => Field::Stack,
+            (_, _, other) => panic!("state field {other} has no cycle-model register"),
+        }
+    }
+}
+
+/// The value of `state` field `f` ([`state_fields`]) for [`state_bits`].
 fn field_value(
     cfg: &ArrayConfig,
-    name: &str,
+    f: Field,
     p: &Pixel,
     i: &Internal,
     k: u64,
@@ -173,29 +221,22 @@ fn field_value(
 ) -> u64 {
     let (nd, cb) = (cfg.fmt.bits() as usize, cfg.colour_bits as usize);
     let moved = bit.map_or(0, |b| b as usize + 1);
-    match name {
-        "A" | "F" | "B" | "C" => {
-            let r = ["A", "F", "B", "C"].iter().position(|r| *r == name);
-            rotate(p.depth[r.unwrap()] as u64, nd, moved)
-        }
-        "D" | "E" | "G" => {
-            let r = ["D", "E", "G"].iter().position(|r| *r == name);
-            rotate(p.colour[r.unwrap()] as u64, cb, moved.min(cb))
-        }
-        "S_hi" => p.sel.0 as u64,
-        "S_lo" => p.sel.1 as u64,
-        "N" => p.flags.n as u64,
-        "J" => p.flags.j as u64,
-        "T" => p.flags.t as u64,
-        "M" => p.flags.m as u64,
-        "lt" => i.lt as u64,
-        "eq" => i.eq as u64,
-        "ovf" => i.ovf as u64,
-        "sign" => i.sign as u64,
-        "k" => k,
-        "carry" => i.carry as u64,
-        "stack" => p.stack,
-        other => panic!("state field {other} has no cycle-model register"),
+    match f {
+        Field::Depth(r) => rotate(p.depth[r] as u64, nd, moved),
+        Field::Colour(r) => rotate(p.colour[r] as u64, cb, moved.min(cb)),
+        Field::SHi => p.sel.0 as u64,
+        Field::SLo => p.sel.1 as u64,
+        Field::N => p.flags.n as u64,
+        Field::J => p.flags.j as u64,
+        Field::T => p.flags.t as u64,
+        Field::M => p.flags.m as u64,
+        Field::Lt => i.lt as u64,
+        Field::Eq => i.eq as u64,
+        Field::Ovf => i.ovf as u64,
+        Field::Sign => i.sign as u64,
+        Field::K => k,
+        Field::Carry => i.carry as u64,
+        Field::Stack => p.stack,
     }
 }
 
@@ -203,14 +244,17 @@ fn field_value(
 /// [`state_bits`]'s vector of bools and [`state_hex`]'s string per pixel: the same digits
 /// (`hex_lines_are_state_hex` checks it clock by clock).
 struct HexLines {
-    fields: Vec<(&'static str, usize)>,
+    fields: Vec<(Field, usize)>,
     words: Vec<u64>,
     digits: usize,
 }
 
 impl HexLines {
     fn new(cfg: &ArrayConfig) -> HexLines {
-        let fields = state_fields(cfg);
+        let fields: Vec<(Field, usize)> = state_fields(cfg)
+            .into_iter()
+            .map(|(name, w)| (Field::of(name), w))
+            .collect();
         let width: usize = fields.iter().map(|f| f.1).sum();
         HexLines {
             fields,
@@ -230,8 +274,8 @@ impl HexLines {
     ) {
         self.words.fill(0);
         let mut at = 0;
-        for &(name, w) in &self.fields {
-            let v = field_value(cfg, name, px.0, px.1, k, bit);
+        for &(f, w) in &self.fields {
+            let v = field_value(cfg, f, px.0, px.1, k, bit);
             // Bits past 64 of a wider field are 0, as in `state_bits`.
             let v = if w >= 64 { v } else { v & ((1u64 << w) - 1) };
             let (q, r) = (at / 64, at % 64);
