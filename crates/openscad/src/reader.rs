@@ -784,8 +784,7 @@ impl<'a> Reader<'a> {
         }
         self.vertices += n;
         if head.params.node == NodeKind::Text {
-            // As text_shape charged it: TEXT_POINT_VERTICES scene vertices a point drawn.
-            let charged = (n * crate::TEXT_POINT_VERTICES) as u64;
+            let charged = crate::text::charged_vertices(n) as u64;
             let bytes = charged.saturating_mul(crate::BYTES_PER_SCENE_VERTEX);
             self.drawing_bytes = self.drawing_bytes.saturating_add(bytes);
         }

@@ -104,7 +104,7 @@ impl Fonts {
     pub fn scene(files: &[PathBuf]) -> Fonts {
         let mut db = fontdb::Database::new();
         for f in files {
-            if std::fs::read(f).is_ok_and(|data| collection_fits(&data)) {
+            if file_collection_fits(f) {
                 let _ = db.load_font_file(f);
             }
         }
@@ -326,10 +326,29 @@ impl Fonts {
 /// count of 2^31 was a 33 GB allocation and an abort (found by the `fonts` fuzz target). A
 /// single font is not a collection and fits.
 fn collection_fits(data: &[u8]) -> bool {
-    match ttf_parser::fonts_in_collection(data) {
-        Some(n) => 12 + 4 * n as u64 <= data.len() as u64,
+    header_fits(data, data.len() as u64)
+}
+
+/// Whether the faces a font file's `header` counts fit a file of `len` bytes.
+fn header_fits(header: &[u8], len: u64) -> bool {
+    match ttf_parser::fonts_in_collection(header) {
+        Some(n) => 12 + 4 * n as u64 <= len,
         None => true,
     }
+}
+
+/// [`collection_fits`] of a font file, from its header and its length (the file is not read
+/// twice); false when it cannot be read.
+fn file_collection_fits(path: &Path) -> bool {
+    use std::io::Read;
+    let Ok(file) = std::fs::File::open(path) else {
+        return false;
+    };
+    let Ok(len) = file.metadata().map(|m| m.len()) else {
+        return false;
+    };
+    let mut header = Vec::with_capacity(12);
+    file.take(12).read_to_end(&mut header).is_ok() && header_fits(&header, len)
 }
 
 /// Where a face's data comes from, when it is a file.
@@ -854,9 +873,15 @@ pub(crate) fn text_shape(
         pos: p.pos,
         problem,
     })?;
-    let charged = poly.points().count().saturating_mul(TEXT_POINT_VERTICES);
-    check_budget(charged, budget, p.pos)?;
+    check_budget(charged_vertices(poly.points().count()), budget, p.pos)?;
     Ok(poly)
+}
+
+/// The scene vertices a text outline of `points` points is charged while drawn
+/// ([`TEXT_POINT_VERTICES`] a point): against the reader's budget, and in the run's estimate
+/// ([`csgpix_scene::solid::CsgScene::reading_bytes`]).
+pub(crate) fn charged_vertices(points: usize) -> usize {
+    points.saturating_mul(TEXT_POINT_VERTICES)
 }
 
 #[cfg(test)]

@@ -49,10 +49,8 @@ pub fn stdout_failed(e: &std::io::Error) -> ! {
         }
     }
     let mut line = format!("csgpix: cannot write to standard output: {}", OneLine(e));
-    let written = WRITTEN.lock().unwrap_or_else(|e| e.into_inner());
-    if !written.is_empty() {
-        let names: Vec<String> = written.iter().map(|s| OneLine(s).to_string()).collect();
-        line += &format!("; already written whole: {}", names.join(", "));
+    if let Some(names) = written_names() {
+        line += &format!("; already written whole: {names}");
     }
     use std::io::Write;
     let _ = writeln!(std::io::stderr(), "{line}");
@@ -76,16 +74,18 @@ pub(crate) fn written(shown: &str) {
 
 /// The line a signal's cleanup prints when outputs were already in place, if any were.
 pub(crate) fn written_line(sig: i32) -> Option<String> {
-    let written = WRITTEN.lock().unwrap_or_else(|e| e.into_inner());
-    if written.is_empty() {
-        return None;
-    }
-    let names: Vec<String> = written.iter().map(|s| OneLine(s).to_string()).collect();
+    let names = written_names()?;
     Some(format!(
-        "csgpix: interrupted by {}; already written whole: {}",
+        "csgpix: interrupted by {}; already written whole: {names}",
         signal_name(sig),
-        names.join(", ")
     ))
+}
+
+/// The outputs already in place, escaped and comma-separated; None when there are none.
+fn written_names() -> Option<String> {
+    let written = WRITTEN.lock().unwrap_or_else(|e| e.into_inner());
+    let names: Vec<String> = written.iter().map(|s| OneLine(s).to_string()).collect();
+    (!names.is_empty()).then(|| names.join(", "))
 }
 
 /// Print `line` on standard error, waiting at most a second: a signal must end the run even

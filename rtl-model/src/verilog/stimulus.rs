@@ -187,25 +187,27 @@ enum Field {
 
 impl Field {
     fn of(name: &str) -> Field {
-        let depth = ["A", "F", "B", "C"].iter().position(|r| *r == name);
-        let colour = ["D", "E", "G"].iter().position(|r| *r == name);
-        match (depth, colour, name) {
-            (Some(r), _, _) => Field::Depth(r),
-            (_, Some(r), _) => Field::Colour(r),
-            (_, _, "S_hi") => Field::SHi,
-            (_, _, "S_lo") => Field::SLo,
-            (_, _, "N") => Field::N,
-            (_, _, "J") => Field::J,
-            (_, _, "T") => Field::T,
-            (_, _, "M") => Field::M,
-            (_, _, "lt") => Field::Lt,
-            (_, _, "eq") => Field::Eq,
-            (_, _, "ovf") => Field::Ovf,
-            (_, _, "sign") => Field::Sign,
-            (_, _, "k") => Field::K,
-            (_, _, "carry") => Field::Carry,
-            (_, _, "stack") => Field::Stack,
-            (_, _, other) => panic!("state field {other} has no cycle-model register"),
+        if let Some(r) = ["A", "F", "B", "C"].iter().position(|r| *r == name) {
+            return Field::Depth(r);
+        }
+        if let Some(r) = ["D", "E", "G"].iter().position(|r| *r == name) {
+            return Field::Colour(r);
+        }
+        match name {
+            "S_hi" => Field::SHi,
+            "S_lo" => Field::SLo,
+            "N" => Field::N,
+            "J" => Field::J,
+            "T" => Field::T,
+            "M" => Field::M,
+            "lt" => Field::Lt,
+            "eq" => Field::Eq,
+            "ovf" => Field::Ovf,
+            "sign" => Field::Sign,
+            "k" => Field::K,
+            "carry" => Field::Carry,
+            "stack" => Field::Stack,
+            other => panic!("state field {other} has no cycle-model register"),
         }
     }
 }
