@@ -6,7 +6,9 @@
 //!
 //! `cargo bench --features bench --bench voxelize` (full: the twelve.csg section at 128³ and
 //! 256³, median of 3, then the floor at 256³, 512³ and 1024³), `-- --quick` (64³ and 128³ for both, one run),
-//! `-- --floor` (the floor section only), `--sizes A,B,…` (the floor's sizes), `--cells A,B,…`
+//! `-- --floor` (the floor section only), `-- --process` (whole processes against the floor's
+//! process, new and replaced outputs, at 1024³ unless `--sizes`), `--sizes A,B,…` (the floor's
+//! sizes), `--cells A,B,…`
 //! (the pruned peer's cell sides, [`pruned::CELLS`] by default), `--no-dense` (the floor without
 //! the dense peer, about 200 s a run at 1024³); `--json` prints every figure
 //! as one JSON object instead of the table. Every figure comes from this run, measured back to
@@ -55,6 +57,8 @@ use serde_json::{json, Value};
 // In a folder of their own, which cargo does not take for bench targets.
 #[path = "voxelize/floor.rs"]
 mod floor;
+#[path = "voxelize/process.rs"]
+mod process;
 #[path = "voxelize/pruned.rs"]
 mod pruned;
 
@@ -831,6 +835,8 @@ struct Opts {
     json: bool,
     /// `--floor`: the floor section only.
     floor_only: bool,
+    /// `--process`: the whole-process section only, at `floor_sizes` (default 1024).
+    process_only: bool,
     /// `--sizes A,B,…`: the floor section's N.
     floor_sizes: Vec<usize>,
     /// `--cells A,B,…`: the pruned peer's cell sides, top level first.
@@ -843,12 +849,14 @@ impl Opts {
     fn parse() -> Opts {
         let args: Vec<String> = std::env::args().skip(1).collect();
         let quick = args.iter().any(|a| a == "--quick");
-        let default_sizes = if quick {
-            vec![64, 128]
-        } else {
-            vec![256, 512, 1024]
+        let process_only = args.iter().any(|a| a == "--process");
+        let default_sizes = match (quick, process_only) {
+            (true, _) => vec![64, 128],
+            (false, true) => vec![1024],
+            (false, false) => vec![256, 512, 1024],
         };
         Opts {
+            process_only,
             quick,
             json: args.iter().any(|a| a == "--json"),
             floor_only: args.iter().any(|a| a == "--floor"),
@@ -884,6 +892,10 @@ fn list_arg(args: &[String], name: &str) -> Option<Vec<usize>> {
 }
 
 fn main() {
+    if let Ok(spec) = std::env::var(process::FLOOR_CHILD) {
+        process::floor_child(&spec);
+        return;
+    }
     let opts = Opts::parse();
     let t_all = Instant::now();
     let say = |s: String| {
@@ -891,20 +903,26 @@ fn main() {
             println!("{s}");
         }
     };
-    let (mut report, mut summary) = if opts.floor_only {
+    let (mut report, mut summary) = if opts.floor_only || opts.process_only {
         Default::default()
     } else {
         word_section(&opts, &say)
     };
-    let floor = floor::floor(&floor::FloorArgs {
-        sizes: &opts.floor_sizes,
-        quick: opts.quick,
-        cells: &opts.cells,
-        dense: opts.dense,
-        say: &say,
-    });
-    summary.extend(floor::summary(&floor));
-    report.insert("floor".into(), floor);
+    if opts.process_only {
+        let v = process::process(&opts.floor_sizes, opts.quick, &say);
+        summary.extend(process::summary(&v));
+        report.insert("process".into(), v);
+    } else {
+        let floor = floor::floor(&floor::FloorArgs {
+            sizes: &opts.floor_sizes,
+            quick: opts.quick,
+            cells: &opts.cells,
+            dense: opts.dense,
+            say: &say,
+        });
+        summary.extend(floor::summary(&floor));
+        report.insert("floor".into(), floor);
+    }
     let total = t_all.elapsed().as_secs_f64();
     if opts.json {
         report.insert("summary".into(), json!(summary));

@@ -80,7 +80,7 @@ pub fn floor(a: &FloorArgs) -> Value {
     json!({"sizes": a.sizes, "runs": runs, "pruned_cells": a.cells, "scenes": scenes})
 }
 
-fn scene_path(name: &str) -> PathBuf {
+pub fn scene_path(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("vectors/scenes")
         .join(name)
@@ -236,7 +236,7 @@ fn peer_figures(
 
 /// N³ bytes allocated and every one written: each Z-slice filled with its index, slices in
 /// parallel (a memset each, the cheapest write of every byte).
-fn filled(grid: &Grid) -> Vec<u8> {
+pub fn filled(grid: &Grid) -> Vec<u8> {
     let [nx, ny, nz] = grid.dims;
     let mut v = vec![0u8; nx * ny * nz];
     v.par_chunks_mut(nx * ny)
@@ -275,24 +275,28 @@ enum Blocks {
 /// pages do not pile up across runs).
 fn write_nrrd(path: &Path, grid: &Grid, voxels: &[u8], comment: &str, blocks: Blocks) -> f64 {
     let t0 = Instant::now();
-    let mut file = File::create(path).expect("create the NRRD file");
-    let write = |w: &mut dyn Write| csgpix::scene::nrrd::write_volume(w, grid, voxels, comment);
     match blocks {
-        Blocks::Every => {
-            let mut w = BufWriter::new(&mut file);
-            write(&mut w).expect("write the NRRD file");
-            w.flush().expect("flush the NRRD file");
-        }
+        Blocks::Every => write_every_byte(path, grid, voxels, comment),
         Blocks::Sparse => {
-            let mut w = csgpix::output::Sparse::new(&mut file).expect("the NRRD file");
-            write(&mut w).expect("write the NRRD file");
+            let mut file = File::create(path).expect("create the NRRD file");
+            // csgpix voxelize's shortest hole (crates/run/src/voxelize/outputs.rs).
+            let mut w = csgpix::output::Sparse::new(&mut file, 1 << 20).expect("the NRRD file");
+            csgpix::scene::nrrd::write_volume(&mut w, grid, voxels, comment)
+                .expect("write the NRRD file");
             w.finish().expect("finish the NRRD file");
         }
     }
-    drop(file);
     let t = t0.elapsed().as_secs_f64();
     std::fs::remove_file(path).expect("remove the NRRD file");
     t
+}
+
+/// `voxels` as an NRRD file at `path`, every byte, through a `BufWriter`, and closed: the
+/// floor's write.
+pub fn write_every_byte(path: &Path, grid: &Grid, voxels: &[u8], comment: &str) {
+    let mut w = BufWriter::new(File::create(path).expect("create the NRRD file"));
+    csgpix::scene::nrrd::write_volume(&mut w, grid, voxels, comment).expect("write the NRRD file");
+    w.flush().expect("flush the NRRD file");
 }
 
 /// `f`'s seconds and result.

@@ -67,6 +67,11 @@ use csgpix_run as run;
 pub struct Cli {
     #[command(subcommand)]
     pub cmd: Cmd,
+    /// Put every output file on the disk (fsync) before it replaces the old one, and its
+    /// directory after, so that outputs survive a power cut; without it an output is whole or
+    /// absent while the machine runs and the system writes it out in its own time
+    #[arg(long, global = true)]
+    pub sync: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -101,6 +106,7 @@ pub enum Cmd {
 
 /// Run the command `cli` names: its exit code, or the error that stopped it.
 pub fn run(cli: Cli) -> run::Result<ExitCode> {
+    csgpix_output::sync_outputs(cli.sync);
     let result = match cli.cmd {
         Cmd::GenVectors(a) => gen_vectors::run(a),
         Cmd::Phantom(a) => phantom::run(a),

@@ -41,12 +41,14 @@ mod ending;
 mod error;
 mod leftover;
 mod oom;
+mod replace;
 mod scratch;
 mod sparse;
 
 pub use ending::{finish, stdout_failed};
 pub use error::{Error, IoError, OneLine, Refusal, Result};
 pub use oom::{fallible, one_arena_under_address_limit, try_zeroed, AllocFailed, ExitOnOom};
+pub use replace::{durable, sync_outputs};
 pub use scratch::{child, scratch, Child, Scratch};
 pub use sparse::{Sparse, BLOCK};
 
@@ -192,13 +194,15 @@ impl Staged {
     fn persist(mut self, target: &Path, mode: u32) -> Result<()> {
         let file = self.file.take().expect("staged file present");
         let tmp = file.path().to_path_buf();
-        let r = set_mode(file.as_file(), mode)
-            .map_err(|e| Error::io(target.display(), &e))
-            .and_then(|()| {
-                file.persist(target)
-                    .map(drop)
-                    .map_err(|e| Error::io(target.display(), &e.error))
-            });
+        // The file is moved by path from here: its name is no longer removed on drop.
+        let (file, path) = file.into_parts();
+        let r = set_mode(&file, mode)
+            .and_then(|()| replace::put_file(&file, &path, target))
+            .map_err(|e| Error::io(target.display(), &e));
+        if r.is_err() {
+            let _ = std::fs::remove_file(&path);
+        }
+        let _ = path.keep();
         forget(&tmp);
         r
     }
@@ -448,7 +452,11 @@ impl Outputs {
             Stage::Unnamed(f) => f,
             Stage::Dir(..) => return Err(Error::from(Refusal::DirectoryOutput).context(shown)),
         };
-        file.set_len(0).map_err(err)?;
+        // A new staged file is empty: truncating it would make ext4 flush it on close
+        // (`replace`).
+        if file.metadata().map_err(err)?.len() > 0 {
+            file.set_len(0).map_err(err)?;
+        }
         file.rewind().map_err(err)?;
         Ok((file, shown))
     }
@@ -466,17 +474,18 @@ impl Outputs {
         buf.flush().map_err(err)
     }
 
-    /// Stage the whole content of a file output, its [`BLOCK`]s of zeros left as holes
-    /// ([`Sparse`]): the same bytes read back, fewer written. For volumes, which are mostly
-    /// empty space. Returns the bytes written and skipped.
+    /// Stage the whole content of a file output, its runs of zeros of at least `hole` bytes
+    /// left as holes ([`Sparse`]): the same bytes read back, fewer written. For volumes,
+    /// which are mostly empty space (`hole`: a slice). Returns the bytes written and skipped.
     pub fn write_sparse(
         &mut self,
         out: Out,
+        hole: u64,
         fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
     ) -> Result<(u64, u64)> {
         let (file, shown) = self.emptied(out)?;
         let err = |e: std::io::Error| Error::io(shown, &e);
-        let mut sparse = Sparse::new(file).map_err(err)?;
+        let mut sparse = Sparse::new(file, hole).map_err(err)?;
         fill(&mut sparse).map_err(err)?;
         sparse.finish().map_err(err)
     }
@@ -659,10 +668,18 @@ fn commit_dir(target: &Path, dir: &Path, names: &[String]) -> std::io::Result<()
             std::fs::create_dir_all(parent)?;
         }
         set_dir_mode(dir)?;
-        return std::fs::rename(dir, target);
+        if replace::durable() {
+            sync_tree(dir)?;
+        }
+        std::fs::rename(dir, target)?;
+        return match replace::durable() {
+            true => replace::sync_parent(target),
+            false => Ok(()),
+        };
     }
     for name in names {
-        std::fs::rename(dir.join(name), target.join(name))?;
+        let staged = dir.join(name);
+        replace::put_file(&File::open(&staged)?, &staged, &target.join(name))?;
     }
     Ok(())
 }

@@ -9,12 +9,22 @@ use std::io::{Seek, SeekFrom, Write};
 /// system leaves unallocated.
 pub const BLOCK: u64 = 4096;
 
-/// A writer into `file` from its current offset that skips every [`BLOCK`]-aligned block of
-/// zeros and writes the rest. The file must hold zeros past that offset (a new or truncated
-/// file); [`Sparse::finish`] sets its length to what was written, so a trailing block of zeros
-/// reads back too. A block is aligned on the file's own offsets, whatever came before it.
+/// A writer into `file` from its current offset that skips every run of [`BLOCK`]-aligned
+/// blocks of zeros at least `hole` bytes long and writes the rest. The file must hold zeros
+/// past that offset (a new or truncated file); [`Sparse::finish`] sets its length to what was
+/// written, so trailing zeros read back too, and are a hole at any length. A block is aligned
+/// on the file's own offsets, whatever came before it.
+///
+/// Why a shortest hole: every run of data between holes is an extent of the file system, and
+/// each extent costs work when the file is removed or replaced (on ext4 mounted with
+/// `discard`, one discard request each: a 1024³ volume with a hole between every two slices'
+/// data had 1,400 extents and took 0.2 to 4.8 s to remove here, where the same bytes written
+/// whole took 0.02 to 0.4 s). A volume's writer makes `hole` one Z-slice, so that only empty
+/// slices become holes and the file has an extent per run of slices with something in them.
 pub struct Sparse<'f> {
     file: &'f mut File,
+    /// The shortest run of zeros left as a hole, a whole number of blocks.
+    hole: u64,
     /// Bytes of the block in hand, not yet written: they start at `at`, which is then not
     /// on a block boundary, or fill less than a block.
     head: Vec<u8>,
@@ -23,18 +33,23 @@ pub struct Sparse<'f> {
     /// Bytes written and bytes skipped, for reports and tests.
     written: u64,
     skipped: u64,
+    /// Zeros seen and not yet written, ending at `at`: a hole if the run reaches `hole`.
+    zeros: u64,
 }
 
 impl<'f> Sparse<'f> {
-    /// A sparse writer at `file`'s current offset.
-    pub fn new(file: &'f mut File) -> std::io::Result<Sparse<'f>> {
+    /// A sparse writer at `file`'s current offset whose holes are runs of zeros of at least
+    /// `hole` bytes (rounded up to whole [`BLOCK`]s, at least one).
+    pub fn new(file: &'f mut File, hole: u64) -> std::io::Result<Sparse<'f>> {
         let at = file.stream_position()?;
         Ok(Sparse {
             file,
+            hole: hole.max(1).div_ceil(BLOCK) * BLOCK,
             head: Vec::new(),
             at,
             written: 0,
             skipped: 0,
+            zeros: 0,
         })
     }
 
@@ -44,6 +59,8 @@ impl<'f> Sparse<'f> {
         let head = std::mem::take(&mut self.head);
         self.put(&head)?;
         self.at += head.len() as u64;
+        // Trailing zeros are a hole at any length: the file's length covers them.
+        self.skipped += std::mem::take(&mut self.zeros);
         if self.file.metadata()?.len() < self.at {
             self.file.set_len(self.at)?;
         }
@@ -51,15 +68,36 @@ impl<'f> Sparse<'f> {
         Ok((self.written, self.skipped))
     }
 
-    /// Writes `bytes` at `at` unless they are all zeros.
+    /// Writes `bytes` at `at` unless they are all zeros, which join the run of zeros in hand.
     fn put(&mut self, bytes: &[u8]) -> std::io::Result<()> {
         if zeros(bytes) {
-            self.skipped += bytes.len() as u64;
+            self.zeros += bytes.len() as u64;
             return Ok(());
         }
+        self.end_zeros()?;
         self.file.seek(SeekFrom::Start(self.at))?;
         self.file.write_all(bytes)?;
         self.written += bytes.len() as u64;
+        Ok(())
+    }
+
+    /// The run of zeros in hand, which ends at `at`: left as a hole when it is at least
+    /// `hole` long, written otherwise.
+    fn end_zeros(&mut self) -> std::io::Result<()> {
+        let n = std::mem::take(&mut self.zeros);
+        if n >= self.hole {
+            self.skipped += n;
+            return Ok(());
+        }
+        self.file.seek(SeekFrom::Start(self.at - n))?;
+        static ZEROS: [u8; 64 * 1024] = [0; 64 * 1024];
+        let mut left = n;
+        while left > 0 {
+            let k = left.min(ZEROS.len() as u64);
+            self.file.write_all(&ZEROS[..k as usize])?;
+            left -= k;
+        }
+        self.written += n;
         Ok(())
     }
 
@@ -123,9 +161,14 @@ mod tests {
 
     /// Writes `pieces` after `prefix` sparsely and returns the file's bytes and the counts.
     fn through(prefix: &[u8], pieces: &[Vec<u8>]) -> (Vec<u8>, (u64, u64)) {
+        through_with(BLOCK, prefix, pieces)
+    }
+
+    /// [`through`] with holes of at least `hole` bytes.
+    fn through_with(hole: u64, prefix: &[u8], pieces: &[Vec<u8>]) -> (Vec<u8>, (u64, u64)) {
         let mut file = tempfile::tempfile().unwrap();
         file.write_all(prefix).unwrap();
-        let mut s = Sparse::new(&mut file).unwrap();
+        let mut s = Sparse::new(&mut file, hole).unwrap();
         for p in pieces {
             s.write_all(p).unwrap();
         }
@@ -152,8 +195,8 @@ mod tests {
             (vec![], vec![vec![5; 1]; 9000]),
             (vec![2; block - 1], vec![vec![0; 2], mixed]),
         ];
-        for (prefix, pieces) in cases {
-            let (out, (written, skipped)) = through(&prefix, &pieces);
+        for ((prefix, pieces), hole) in cases.iter().flat_map(|c| [(c, 1), (c, 3 * BLOCK)]) {
+            let (out, (written, skipped)) = through_with(hole, prefix, pieces);
             let want: Vec<u8> = prefix
                 .iter()
                 .chain(pieces.iter().flatten())
@@ -162,6 +205,22 @@ mod tests {
             assert_eq!(out, want);
             assert_eq!(written + skipped + prefix.len() as u64, want.len() as u64);
         }
+    }
+
+    #[test]
+    fn only_runs_of_zeros_as_long_as_a_hole_are_skipped() {
+        let block = BLOCK as usize;
+        // Data, 2 blocks of zeros, data, 4 blocks of zeros, data, 5 trailing blocks of zeros.
+        let mut data = vec![0u8; 15 * block];
+        for b in [0, 3, 8, 9] {
+            data[b * block] = 1;
+        }
+        let (out, (written, skipped)) = through_with(4 * BLOCK, &[], std::slice::from_ref(&data));
+        assert_eq!(out, data);
+        // The 2-block run is written; the 4-block run and the trailing 5 blocks are holes.
+        assert_eq!((written, skipped), (6 * BLOCK, 9 * BLOCK));
+        let (_, (written, _)) = through_with(4 * BLOCK + 1, &[], &[data]);
+        assert_eq!(written, 10 * BLOCK, "a hole rounds up to whole blocks");
     }
 
     #[test]

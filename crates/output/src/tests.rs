@@ -250,3 +250,41 @@ fn character_devices_are_written_through() {
     use std::os::unix::fs::FileTypeExt;
     assert!(m.file_type().is_char_device());
 }
+
+/// Replacing a file (`replace`): the target holds the new bytes, with the old file's mode; the
+/// old file is swapped out whole, not rewritten (a hard link to it still reads the old
+/// bytes); no staged name stays; and the same with `sync_outputs`, and for the files of a
+/// directory output. A `write` that runs twice stages the second content only.
+#[cfg(unix)]
+#[test]
+fn a_replaced_file_is_swapped_whole_and_nothing_else_stays() {
+    use std::os::unix::fs::PermissionsExt;
+    for sync in [false, true] {
+        sync_outputs(sync);
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        let (a, link) = (d.join("a.nrrd"), d.join("old-link"));
+        std::fs::write(&a, b"old bytes").unwrap();
+        std::fs::set_permissions(&a, std::fs::Permissions::from_mode(0o640)).unwrap();
+        std::fs::hard_link(&a, &link).unwrap();
+        std::fs::create_dir(d.join("s")).unwrap();
+        std::fs::write(d.join("s/z0.png"), b"old slice").unwrap();
+        let mut outs = Outputs::new();
+        let o = outs.file("-o", &a, &["nrrd"]).unwrap();
+        let s = outs.dir("--slices", &d.join("s")).unwrap();
+        outs.write(o, |w| w.write_all(b"first, longer than the second"))
+            .unwrap();
+        outs.write(o, |w| w.write_all(b"new")).unwrap();
+        outs.write_in(s, "z0.png", |w| w.write_all(b"new slice"))
+            .unwrap();
+        outs.commit().unwrap();
+        sync_outputs(false);
+        assert_eq!(std::fs::read(&a).unwrap(), b"new", "sync {sync}");
+        assert_eq!(std::fs::read(&link).unwrap(), b"old bytes");
+        let mode = std::fs::metadata(&a).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode, 0o640);
+        assert_eq!(std::fs::read(d.join("s/z0.png")).unwrap(), b"new slice");
+        assert_eq!(names(d), ["a.nrrd", "old-link", "s"]);
+        assert_eq!(names(&d.join("s")), ["z0.png"]);
+    }
+}

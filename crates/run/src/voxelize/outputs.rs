@@ -152,7 +152,7 @@ impl Staged {
             Some(m) => Some(write_mesh(outs, m, grid, v, rest, &comment)?),
             None => None,
         };
-        outs.write_sparse(self.nrrd, |w| {
+        outs.write_sparse(self.nrrd, VOLUME_HOLE, |w| {
             csgpix_scene::nrrd::write_volume_as(w, grid, &v.voxels, &comment, &nrrd_format)
         })?;
         let to_stdout = outs.uses_stdout();
@@ -351,3 +351,10 @@ fn write_slices(outs: &mut Outputs, dir: Out, v: &Volume, grey: Values) -> crate
     }
     Ok(())
 }
+
+/// The shortest run of zeros a volume file leaves as a hole: 1 MiB. Every hole splits the
+/// file into one more extent, which the file system frees one by one when the file is
+/// replaced or removed (on ext4 mounted with `discard`, a discard request each: 0.1 to 3.5 ms
+/// here), while writing 1 MiB of zeros costs about 0.3 ms; `csgpix_output::Sparse` has the
+/// figures.
+pub(crate) const VOLUME_HOLE: u64 = 1 << 20;

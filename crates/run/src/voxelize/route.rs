@@ -259,7 +259,7 @@ fn stream_nrrd(
 ) -> crate::Result<Work> {
     let nz = slicer.grid.dims[2];
     let mut done: Option<Result<Work, Stop>> = None;
-    let written = outs.write_sparse(out, |w| {
+    let written = outs.write_sparse(out, super::outputs::VOLUME_HOLE, |w| {
         let head = csgpix_scene::nrrd::header_as(&slicer.grid, comment, format);
         w.write_all(head.as_bytes())?;
         let mut data = csgpix_scene::nrrd::data_writer(w, format.encoding);
