@@ -6,14 +6,33 @@
 //! new plane into A, and the comparator takes bit `k` of both operands. Here one clock for 64
 //! pixels is a handful of word operations.
 //!
-//! Pixels never talk to each other, so the order in which lanes are visited is free: the array
-//! is swept in chunks of rows, each chunk through all N_D clocks of a window before the next,
-//! which keeps a chunk's bit-planes in cache. Every clock is still simulated for every pixel;
-//! the clock count is the number of clocks a window takes, DEPGEN's fill included.
+//! Pixels never talk to each other, so the order in which lanes are visited is free; only the
+//! controller (clock count, stack pointer, the latched transfer) is global, and it is advanced
+//! as each operation is admitted. The simulator uses that freedom twice:
+//!
+//! - Chunks: a window is swept over a chunk of rows (about 64 words) through all N_D clocks
+//!   before the next chunk, which keeps the chunk's bit-planes in L1.
+//! - Panels: the machine is built of panels (§2.5, each its own array; §5.5 counts the
+//!   throughput panel by panel), and so is the simulation, a panel here being a block of whole
+//!   rows whose bit-planes fit in L2 (at most 256 KiB). The per-pixel work of up to 64 windows
+//!   and stack operations is deferred (each window's plan: transfer, DEPGEN's line bits,
+//!   colour, operands, decision, stack level) and then run panel by panel: every deferred
+//!   operation, in program order, over one panel before the next panel. An array larger than
+//!   the cache thus streams its state from memory once per batch rather than once per window.
+//!   The queue is run when it is full and before anything reads a pixel ([`CycleArray::pixel`],
+//!   `state`, `gather`, `internal`), at `finish`, and before an observer or a probe is
+//!   attached; an array of one panel is not deferred at all.
+//!
+//! Every clock is still simulated for every pixel; the clock count is the number of clocks a
+//! window takes, DEPGEN's fill included. With an observer ([`CycleArray::observe`]) or a probe
+//! attached, every window runs at once over the whole array, so that they see every pixel at
+//! the same clock (the observer: the whole array as one chunk).
 //!
 //! Layout: a row occupies `ceil(width/64)` words (lanes past the width are padding and are
-//! never read out); plane `k` of a register is the slice `[k·words .. (k+1)·words]`.
+//! never read out); plane `k` of a register is the slice `[k·words .. (k+1)·words]`, so a
+//! panel's part of a plane is one contiguous run of words.
 
+use std::cell::{Ref, RefCell};
 use std::ops::Range;
 
 use crate::array::{Array, Sequencer};
@@ -27,6 +46,18 @@ use crate::state::{ArchState, ArrayConfig, Pixel};
 
 /// Words of pixels swept through a window before moving on (about 64, whole rows).
 const CHUNK_WORDS: usize = 64;
+
+/// Bytes of bit-planes a panel holds at most (whole rows, at least one): well inside a core's
+/// L2 (an eighth of 2 MiB), so that a batch of windows finds a panel's state there. Measured
+/// with the thesis cube at 1024×1024 (2 MiB L2): 256 KiB ran faster than 128 KiB, 512 KiB or
+/// 1-2 MiB.
+const PANEL_BYTES: usize = 256 << 10;
+
+/// Windows and stack operations deferred before they are run panel by panel.
+const QUEUE_JOBS: usize = 64;
+
+/// Bytes of DEPGEN line bits the deferred windows may hold before they are run.
+const QUEUE_LINE_BYTES: usize = 4 << 20;
 
 /// The array as bit-planes.
 ///
@@ -69,6 +100,20 @@ pub struct CycleArray {
     cfg: ArrayConfig,
     set: EquationSet,
     depgen: DepGen,
+    /// Words per row.
+    wpr: usize,
+    /// Every pixel's registers, and the windows deferred on them. Readers that take `&self`
+    /// run the deferred windows first (hence the cell); nothing else borrows it.
+    planes: RefCell<Planes>,
+    seq: Sequencer,
+    ops: usize,
+    probe: Option<Recorder>,
+    observer: Option<Observer>,
+}
+
+/// Every register of every pixel as bit-planes, and the work not yet done on them.
+struct Planes {
+    cfg: ArrayConfig,
     /// Words per row and per plane.
     wpr: usize,
     nw: usize,
@@ -84,10 +129,15 @@ pub struct CycleArray {
     carry: Vec<u64>,
     /// Clipping stack, `stack_depth` planes.
     stack: Vec<u64>,
-    seq: Sequencer,
-    ops: usize,
-    probe: Option<Recorder>,
-    observer: Option<Observer>,
+    /// Rows of a panel.
+    panel_rows: usize,
+    /// Windows and stack operations admitted but not yet run, in program order.
+    queue: Vec<Job>,
+    /// Bytes of line bits in `queue`.
+    queued_bytes: usize,
+    /// Most jobs and line bits `queue` holds before it is run.
+    queue_jobs: usize,
+    queue_bytes: usize,
 }
 
 /// One clock as [`CycleArray::observe`] reports it.
@@ -140,190 +190,142 @@ impl Cmp {
 }
 
 /// What one window does, in the order a clock does it.
-struct Plan<'a> {
+struct Plan {
     transfer: Option<Transfer>,
     lines: Option<LineBits>,
     colour: Option<u32>,
     compare: Option<(Reg, Reg)>,
-    decide: Option<&'a Decide>,
+    decide: Option<Decide>,
+    /// The stack level a push writes.
+    sp: usize,
     /// Clock number of bit 0 of the window.
     start: u64,
     position: u8,
+}
+
+/// Per-pixel work in program order: a window, or a stack operation with the stack pointer
+/// before it.
+enum Job {
+    Window(Plan),
+    Stack(Op, usize),
 }
 
 fn bcast(v: u64, k: usize) -> u64 {
     0u64.wrapping_sub(v >> k & 1)
 }
 
-impl CycleArray {
-    /// A `cfg` array after reset (every depth register at the Put-1 word, colours 0, code
-    /// Keep), its SGENE built from `set`.
-    pub fn new(cfg: ArrayConfig, set: EquationSet) -> CycleArray {
-        let wpr = cfg.width.div_ceil(64);
-        let nw = wpr * cfg.height;
-        let nd = cfg.fmt.bits() as usize;
-        let ones = |planes: usize, bits: u64| -> Vec<u64> {
-            (0..planes)
-                .flat_map(|k| std::iter::repeat_n(bcast(bits, k), nw))
-                .collect()
-        };
-        let max = cfg.fmt.max_word() as u64;
-        let cb = cfg.colour_bits as usize;
-        CycleArray {
-            depgen: DepGen::new(cfg.width, cfg.height, cfg.fmt),
-            wpr,
-            nw,
-            depth: std::array::from_fn(|_| ones(nd, max)),
-            colour: std::array::from_fn(|_| ones(cb, 0)),
-            sel: [vec![0; nw], vec![!0; nw]],
-            cmp: Cmp {
-                lt: vec![0; nw],
-                eq: vec![!0; nw],
-                ovf: vec![0; nw],
-                sign: vec![0; nw],
-            },
-            carry: vec![0; nw],
-            stack: vec![0; cfg.stack_depth * nw],
-            seq: Sequencer::default(),
-            ops: 0,
-            probe: None,
-            observer: None,
-            cfg,
-            set,
-        }
-    }
+/// Bit-planes of one word of pixels (a bit each per plane): depth and colour registers,
+/// select latch, comparator, carry and stack.
+fn planes_per_word(cfg: &ArrayConfig) -> u64 {
+    4 * cfg.fmt.bits() as u64 + 3 * cfg.colour_bits as u64 + 2 + 4 + 1 + cfg.stack_depth as u64
+}
 
+/// Rows of a panel of a `cfg` array: as many as [`PANEL_BYTES`] holds, at least one.
+fn panel_rows(cfg: &ArrayConfig) -> usize {
+    let row = cfg.width.div_ceil(64) as u64 * 8 * planes_per_word(cfg);
+    ((PANEL_BYTES as u64 / row.max(1)) as usize).max(1)
+}
+
+impl Planes {
     fn nd(&self) -> usize {
         self.cfg.fmt.bits() as usize
     }
 
+    /// Rows of a chunk: about [`CHUNK_WORDS`] words.
     fn chunk_rows(&self) -> usize {
-        if self.observer.is_some() {
-            // Observed clock by clock: the whole array is one chunk, so that every pixel is at
-            // the same clock when the observer looks.
-            return self.cfg.height;
-        }
         (CHUNK_WORDS / self.wpr).max(1)
     }
 
-    /// Call `f` after every clock from now on, DEPGEN's fill and stack operations included,
-    /// with the array as it is after that clock (every register of every pixel: [`Self::pixel`],
-    /// [`Self::internal`]). The array is then swept as a whole, clock by clock, rather than in
-    /// chunks; the clocks and the results are the same. The stack pointer (the controller's, in
-    /// `state().sp`) moves after a clipping plane's last clock has been reported.
-    pub fn observe(&mut self, f: Observer) {
-        self.observer = Some(f);
+    /// Whether windows are deferred and run panel by panel: only when there is more than one
+    /// panel (one panel is the whole array, swept as it comes).
+    fn batched(&self) -> bool {
+        self.panel_rows < self.cfg.height
     }
 
-    fn notify(&mut self, clock: Clock) {
-        if let Some(mut f) = self.observer.take() {
-            f(self, clock);
-            self.observer = Some(f);
+    /// Defer `job`; run the queue when it is full.
+    fn defer(&mut self, job: Job) {
+        if let Job::Window(Plan { lines: Some(l), .. }) = &job {
+            self.queued_bytes += (l.col.len() + l.row.len()) * 8;
+        }
+        self.queue.push(job);
+        if self.queue.len() >= self.queue_jobs || self.queued_bytes >= self.queue_bytes {
+            self.flush();
         }
     }
 
-    /// Pixel (x, y)'s DEPGEN carry and comparator flip-flops.
-    pub fn internal(&self, x: usize, y: usize) -> Internal {
-        let (w, lane) = (y * self.wpr + x / 64, x % 64);
-        let b = |v: u64| v >> lane & 1 == 1;
-        let c = self.cmp.get(w);
-        Internal {
-            carry: b(self.carry[w]),
-            lt: b(c.lt),
-            eq: b(c.eq),
-            ovf: b(c.ovf),
-            sign: b(c.sign),
+    /// Run the deferred jobs panel by panel: every job over one panel's rows, in order, before
+    /// the next panel.
+    fn flush(&mut self) {
+        if self.queue.is_empty() {
+            return;
         }
-    }
-
-    fn window(&mut self, w: &Window) {
-        let clocks = self.seq.window_clocks(&self.cfg, w);
-        if self.observer.is_some() {
-            let nd = self.nd() as u64;
-            for t in self.seq.cycles + 1..=self.seq.cycles + clocks - nd {
-                self.notify(Clock {
-                    t,
-                    bit: None,
-                    compared: false,
-                });
-            }
-        }
-        let plan = Plan {
-            transfer: self.seq.pending.take(),
-            lines: w.stream.map(|(c, _)| self.depgen.stream(&c)),
-            colour: w.stream.and_then(|s| s.1),
-            compare: Some((w.lhs, w.rhs)),
-            decide: Some(&w.decide),
-            start: self.seq.cycles + clocks - self.nd() as u64,
-            position: w.position,
-        };
-        self.sweep(&plan);
-        self.seq.cycles += clocks;
-        if matches!(w.decide, Decide::Push(_)) {
-            self.seq.sp += 1;
-        }
-        self.seq.pending = w.transfer;
-    }
-
-    /// Run a window's clocks over the whole array, chunk by chunk.
-    fn sweep(&mut self, plan: &Plan) {
-        let rows_per = self.chunk_rows();
-        let mut masks = Vec::with_capacity(rows_per * self.wpr);
-        for y0 in (0..self.cfg.height).step_by(rows_per) {
-            let rows = y0..(y0 + rows_per).min(self.cfg.height);
-            let words = rows.start * self.wpr..rows.end * self.wpr;
-            if let Some(t) = &plan.transfer {
-                masks.clear();
-                masks.extend(
-                    words
-                        .clone()
-                        .map(|i| t.decode.masks(self.sel[0][i], self.sel[1][i])),
-                );
-            }
-            if plan.compare.is_some() {
-                for i in words.clone() {
-                    let c = Comparator::RESET;
-                    (
-                        self.cmp.lt[i],
-                        self.cmp.eq[i],
-                        self.cmp.ovf[i],
-                        self.cmp.sign[i],
-                    ) = (c.lt, c.eq, c.ovf, c.sign);
-                }
-            }
-            if plan.lines.is_some() {
-                // The adder starts each plane with carry 0; otherwise it holds its last carry.
-                self.carry[words.clone()].fill(0);
-            }
-            for k in 0..self.nd() {
-                if let Some(t) = &plan.transfer {
-                    self.transfer_bit(t, k, words.clone(), &masks);
-                }
-                if let Some(lines) = &plan.lines {
-                    self.stream_bit(k, lines, plan.colour, rows.clone());
-                }
-                if let Some((lhs, rhs)) = plan.compare {
-                    self.compare_bit(k, lhs, rhs, words.clone());
-                }
-                self.sample(plan, k, rows.clone());
-                if k + 1 == self.nd() {
-                    if let Some(d) = plan.decide {
-                        self.decide(d, words.clone());
+        let jobs = std::mem::take(&mut self.queue);
+        let (h, ph, cr) = (self.cfg.height, self.panel_rows, self.chunk_rows());
+        let mut masks = Vec::with_capacity(cr * self.wpr);
+        for y0 in (0..h).step_by(ph) {
+            let panel = y0..(y0 + ph).min(h);
+            for job in &jobs {
+                match job {
+                    Job::Window(plan) => {
+                        for c0 in panel.clone().step_by(cr) {
+                            let rows = c0..(c0 + cr).min(panel.end);
+                            self.begin(plan, rows.clone(), &mut masks);
+                            for k in 0..self.nd() {
+                                self.clock(plan, k, rows.clone(), &masks);
+                            }
+                        }
+                    }
+                    Job::Stack(op, sp) => {
+                        self.stack_op(op, *sp, panel.start * self.wpr..panel.end * self.wpr)
                     }
                 }
-                if self.observer.is_some() {
-                    self.notify(Clock {
-                        t: plan.start + k as u64 + 1,
-                        bit: Some(k as u32),
-                        compared: plan.compare.is_some(),
-                    });
-                }
             }
         }
-        let nd = self.nd();
-        if let Some(rec) = &mut self.probe {
-            for k in 0..nd {
-                rec.global(plan.start + k as u64 + 1, plan.position, k as u32);
+        self.queue = jobs;
+        self.queue.clear();
+        self.queued_bytes = 0;
+    }
+
+    /// A window's start on `rows`: decode the latched code, reset the comparator and the
+    /// adder's carry.
+    fn begin(&mut self, plan: &Plan, rows: Range<usize>, masks: &mut Vec<ActionMasks>) {
+        let words = rows.start * self.wpr..rows.end * self.wpr;
+        if let Some(t) = &plan.transfer {
+            masks.clear();
+            masks.extend(
+                words
+                    .clone()
+                    .map(|i| t.decode.masks(self.sel[0][i], self.sel[1][i])),
+            );
+        }
+        if plan.compare.is_some() {
+            let c = Comparator::RESET;
+            self.cmp.lt[words.clone()].fill(c.lt);
+            self.cmp.eq[words.clone()].fill(c.eq);
+            self.cmp.ovf[words.clone()].fill(c.ovf);
+            self.cmp.sign[words.clone()].fill(c.sign);
+        }
+        if plan.lines.is_some() {
+            // The adder starts each plane with carry 0; otherwise it holds its last carry.
+            self.carry[words].fill(0);
+        }
+    }
+
+    /// Clock `k` of a window on `rows` (SGENE's decision after the last).
+    fn clock(&mut self, plan: &Plan, k: usize, rows: Range<usize>, masks: &[ActionMasks]) {
+        let words = rows.start * self.wpr..rows.end * self.wpr;
+        if let Some(t) = &plan.transfer {
+            self.transfer_bit(t, k, words.clone(), masks);
+        }
+        if let Some(lines) = &plan.lines {
+            self.stream_bit(k, lines, plan.colour, rows);
+        }
+        if let Some((lhs, rhs)) = plan.compare {
+            self.compare_bit(k, lhs, rhs, words.clone());
+        }
+        if k + 1 == self.nd() {
+            if let Some(d) = &plan.decide {
+                self.decide(d, plan.sp, words);
             }
         }
     }
@@ -397,9 +399,8 @@ impl CycleArray {
         }
     }
 
-    /// SGENE at the end of a window: latch the code or push LL.
-    fn decide(&mut self, d: &Decide, words: Range<usize>) {
-        let sp = self.seq.sp;
+    /// SGENE at the end of a window: latch the code or push LL at level `sp`.
+    fn decide(&mut self, d: &Decide, sp: usize, words: Range<usize>) {
         for i in words {
             let f = self.cmp.get(i).flags();
             let mut vars = [0u64; 10];
@@ -417,14 +418,14 @@ impl CycleArray {
         }
     }
 
-    /// Postfix operators and the clipping result: one clock, whole planes at once.
-    fn stack_op(&mut self, op: &Op) {
-        let (sp, nw) = (self.seq.sp, self.nw);
-        let level = |l: usize| l * nw..(l + 1) * nw;
+    /// A postfix operator or the clipping result on `words`, the stack pointer at `sp`.
+    fn stack_op(&mut self, op: &Op, sp: usize, words: Range<usize>) {
+        let (nw, w0, w1) = (self.nw, words.start, words.end);
+        let level = |l: usize| l * nw + w0..l * nw + w1;
         match op {
             Op::ClipAnd | Op::ClipOr => {
                 let (lo, hi) = self.stack.split_at_mut((sp - 1) * nw);
-                let (under, top) = (&mut lo[level(sp - 2)], &hi[..nw]);
+                let (under, top) = (&mut lo[level(sp - 2)], &hi[words.clone()]);
                 for (u, t) in under.iter_mut().zip(top) {
                     *u = if matches!(op, Op::ClipAnd) {
                         *u & t
@@ -435,29 +436,17 @@ impl CycleArray {
             }
             Op::ClipNot => self.stack[level(sp - 1)].iter_mut().for_each(|v| *v = !*v),
             Op::ClipApply => {
-                for (i, ll) in self.stack[level(sp - 1)].iter().enumerate() {
+                for (i, ll) in words.zip(&self.stack[level(sp - 1)]) {
                     self.sel[0][i] = !ll;
                     self.sel[1][i] = !0;
                 }
-                self.seq.pending = Some(Transfer::clip_apply());
             }
             _ => {}
-        }
-        let (pop, push) = crate::program::stack_effect(op);
-        self.seq.sp = sp - pop + push;
-        self.seq.cycles += 1;
-        self.sample_all_probes();
-        if self.observer.is_some() {
-            self.notify(Clock {
-                t: self.seq.cycles,
-                bit: None,
-                compared: false,
-            });
         }
     }
 
     /// One pixel's registers gathered from the bit-planes.
-    pub fn gather(&self, x: usize, y: usize) -> Pixel {
+    fn gather(&self, x: usize, y: usize) -> Pixel {
         let (w, lane) = (y * self.wpr + x / 64, x % 64);
         let bit = |v: &[u64], k: usize| v[k * self.nw + w] >> lane & 1;
         let word = |v: &[u64], n: usize| (0..n).fold(0u64, |acc, k| acc | bit(v, k) << k);
@@ -478,30 +467,242 @@ impl CycleArray {
         }
     }
 
+    fn internal(&self, x: usize, y: usize) -> Internal {
+        let (w, lane) = (y * self.wpr + x / 64, x % 64);
+        let b = |v: u64| v >> lane & 1 == 1;
+        let c = self.cmp.get(w);
+        Internal {
+            carry: b(self.carry[w]),
+            lt: b(c.lt),
+            eq: b(c.eq),
+            ovf: b(c.ovf),
+            sign: b(c.sign),
+        }
+    }
+}
+
+impl CycleArray {
+    /// A `cfg` array after reset (every depth register at the Put-1 word, colours 0, code
+    /// Keep), its SGENE built from `set`.
+    pub fn new(cfg: ArrayConfig, set: EquationSet) -> CycleArray {
+        let wpr = cfg.width.div_ceil(64);
+        let nw = wpr * cfg.height;
+        let nd = cfg.fmt.bits() as usize;
+        let ones = |planes: usize, bits: u64| -> Vec<u64> {
+            (0..planes)
+                .flat_map(|k| std::iter::repeat_n(bcast(bits, k), nw))
+                .collect()
+        };
+        let max = cfg.fmt.max_word() as u64;
+        let cb = cfg.colour_bits as usize;
+        let planes = Planes {
+            cfg,
+            wpr,
+            nw,
+            depth: std::array::from_fn(|_| ones(nd, max)),
+            colour: std::array::from_fn(|_| ones(cb, 0)),
+            sel: [vec![0; nw], vec![!0; nw]],
+            cmp: Cmp {
+                lt: vec![0; nw],
+                eq: vec![!0; nw],
+                ovf: vec![0; nw],
+                sign: vec![0; nw],
+            },
+            carry: vec![0; nw],
+            stack: vec![0; cfg.stack_depth * nw],
+            panel_rows: panel_rows(&cfg),
+            queue: vec![],
+            queued_bytes: 0,
+            queue_jobs: QUEUE_JOBS,
+            queue_bytes: QUEUE_LINE_BYTES,
+        };
+        CycleArray {
+            depgen: DepGen::new(cfg.width, cfg.height, cfg.fmt),
+            wpr,
+            planes: RefCell::new(planes),
+            seq: Sequencer::default(),
+            ops: 0,
+            probe: None,
+            observer: None,
+            cfg,
+            set,
+        }
+    }
+
+    fn nd(&self) -> usize {
+        self.cfg.fmt.bits() as usize
+    }
+
+    fn chunk_rows(&self) -> usize {
+        if self.observer.is_some() {
+            // Observed clock by clock: the whole array is one chunk, so that every pixel is at
+            // the same clock when the observer looks.
+            return self.cfg.height;
+        }
+        (CHUNK_WORDS / self.wpr).max(1)
+    }
+
+    /// Whether the next window is deferred and run with others panel by panel: not when an
+    /// observer or a probe watches every clock, nor on an array of one panel.
+    fn deferring(&mut self) -> bool {
+        self.observer.is_none() && self.probe.is_none() && self.planes.get_mut().batched()
+    }
+
+    /// Run the deferred windows (panel by panel).
+    fn flush(&mut self) {
+        self.planes.get_mut().flush();
+    }
+
+    /// The planes with every admitted operation carried out.
+    fn planes(&self) -> Ref<'_, Planes> {
+        if !self.planes.borrow().queue.is_empty() {
+            self.planes.borrow_mut().flush();
+        }
+        self.planes.borrow()
+    }
+
+    /// Call `f` after every clock from now on, DEPGEN's fill and stack operations included,
+    /// with the array as it is after that clock (every register of every pixel: [`Self::pixel`],
+    /// [`Self::internal`]). The array is then swept as a whole, clock by clock, rather than in
+    /// chunks; the clocks and the results are the same. The stack pointer (the controller's, in
+    /// `state().sp`) moves after a clipping plane's last clock has been reported.
+    pub fn observe(&mut self, f: Observer) {
+        self.flush();
+        self.observer = Some(f);
+    }
+
+    fn notify(&mut self, clock: Clock) {
+        if let Some(mut f) = self.observer.take() {
+            f(self, clock);
+            self.observer = Some(f);
+        }
+    }
+
+    /// Pixel (x, y)'s DEPGEN carry and comparator flip-flops.
+    pub fn internal(&self, x: usize, y: usize) -> Internal {
+        self.planes().internal(x, y)
+    }
+
+    fn window(&mut self, w: Window) {
+        let clocks = self.seq.window_clocks(&self.cfg, &w);
+        if self.observer.is_some() {
+            let nd = self.nd() as u64;
+            for t in self.seq.cycles + 1..=self.seq.cycles + clocks - nd {
+                self.notify(Clock {
+                    t,
+                    bit: None,
+                    compared: false,
+                });
+            }
+        }
+        let push = matches!(w.decide, Decide::Push(_));
+        let plan = Plan {
+            transfer: self.seq.pending.take(),
+            lines: w.stream.map(|(c, _)| self.depgen.stream(&c)),
+            colour: w.stream.and_then(|s| s.1),
+            compare: Some((w.lhs, w.rhs)),
+            decide: Some(w.decide),
+            sp: self.seq.sp,
+            start: self.seq.cycles + clocks - self.nd() as u64,
+            position: w.position,
+        };
+        self.run_plan(plan);
+        self.seq.cycles += clocks;
+        if push {
+            self.seq.sp += 1;
+        }
+        self.seq.pending = w.transfer;
+    }
+
+    /// Carry out a window: deferred, or at once over the whole array.
+    fn run_plan(&mut self, plan: Plan) {
+        if self.deferring() {
+            self.planes.get_mut().defer(Job::Window(plan));
+        } else {
+            self.sweep(&plan);
+        }
+    }
+
+    /// Run a window's clocks over the whole array, chunk by chunk, sampling the probes and
+    /// telling the observer after every clock.
+    fn sweep(&mut self, plan: &Plan) {
+        self.flush();
+        let rows_per = self.chunk_rows();
+        let mut masks = Vec::with_capacity(rows_per * self.wpr);
+        for y0 in (0..self.cfg.height).step_by(rows_per) {
+            let rows = y0..(y0 + rows_per).min(self.cfg.height);
+            self.planes.get_mut().begin(plan, rows.clone(), &mut masks);
+            for k in 0..self.nd() {
+                self.planes.get_mut().clock(plan, k, rows.clone(), &masks);
+                self.sample(plan, k, rows.clone());
+                if self.observer.is_some() {
+                    self.notify(Clock {
+                        t: plan.start + k as u64 + 1,
+                        bit: Some(k as u32),
+                        compared: plan.compare.is_some(),
+                    });
+                }
+            }
+        }
+        let nd = self.nd();
+        if let Some(rec) = &mut self.probe {
+            for k in 0..nd {
+                rec.global(plan.start + k as u64 + 1, plan.position, k as u32);
+            }
+        }
+    }
+
+    /// Postfix operators and the clipping result: one clock, whole planes at once.
+    fn stack_op(&mut self, op: &Op) {
+        let sp = self.seq.sp;
+        if self.deferring() {
+            self.planes.get_mut().defer(Job::Stack(op.clone(), sp));
+        } else {
+            self.flush();
+            let p = self.planes.get_mut();
+            let nw = p.nw;
+            p.stack_op(op, sp, 0..nw);
+        }
+        if matches!(op, Op::ClipApply) {
+            self.seq.pending = Some(Transfer::clip_apply());
+        }
+        let (pop, push) = crate::program::stack_effect(op);
+        self.seq.sp = sp - pop + push;
+        self.seq.cycles += 1;
+        self.sample_all_probes();
+        if self.observer.is_some() {
+            self.notify(Clock {
+                t: self.seq.cycles,
+                bit: None,
+                compared: false,
+            });
+        }
+    }
+
+    /// One pixel's registers gathered from the bit-planes.
+    pub fn gather(&self, x: usize, y: usize) -> Pixel {
+        self.planes().gather(x, y)
+    }
+
     fn sample(&mut self, plan: &Plan, k: usize, rows: Range<usize>) {
-        let Some(rec) = &self.probe else { return };
-        let hits: Vec<(usize, usize, usize)> = rec
-            .probes()
-            .iter()
-            .enumerate()
-            .filter(|(_, p)| rows.contains(&p.1))
-            .map(|(i, p)| (i, p.0, p.1))
-            .collect();
+        let Some(rec) = &mut self.probe else { return };
+        let planes = self.planes.get_mut();
         let t = plan.start + k as u64 + 1;
-        for (i, x, y) in hits {
-            let px = self.gather(x, y);
-            self.probe.as_mut().unwrap().sample(t, i, px);
+        for i in 0..rec.probes().len() {
+            let (x, y) = rec.probes()[i];
+            if rows.contains(&y) {
+                rec.sample(t, i, planes.gather(x, y));
+            }
         }
     }
 
     fn sample_all_probes(&mut self) {
-        let Some(rec) = &self.probe else { return };
+        let Some(rec) = &mut self.probe else { return };
+        let planes = self.planes.get_mut();
         let t = self.seq.cycles;
-        let pts: Vec<(usize, usize)> = rec.probes().to_vec();
-        let pxs: Vec<Pixel> = pts.iter().map(|&(x, y)| self.gather(x, y)).collect();
-        let rec = self.probe.as_mut().unwrap();
-        for (i, px) in pxs.into_iter().enumerate() {
-            rec.sample(t, i, px);
+        for i in 0..rec.probes().len() {
+            let (x, y) = rec.probes()[i];
+            rec.sample(t, i, planes.gather(x, y));
         }
         rec.global(t, 1, 0);
     }
@@ -520,27 +721,28 @@ impl Array for CycleArray {
         self.seq.admit(op, self.ops, self.cfg.stack_depth)?;
         self.ops += 1;
         match Window::of(op, &self.set) {
-            Some(w) => self.window(&w),
+            Some(w) => self.window(w),
             None => self.stack_op(op),
         }
         Ok(())
     }
 
     fn finish(&mut self) {
-        let Some(t) = self.seq.pending.take() else {
-            return;
-        };
-        let plan = Plan {
-            transfer: Some(t),
-            lines: None,
-            colour: None,
-            compare: None,
-            decide: None,
-            start: self.seq.cycles,
-            position: 0,
-        };
-        self.sweep(&plan);
-        self.seq.cycles += self.nd() as u64;
+        if let Some(t) = self.seq.pending.take() {
+            let plan = Plan {
+                transfer: Some(t),
+                lines: None,
+                colour: None,
+                compare: None,
+                decide: None,
+                sp: self.seq.sp,
+                start: self.seq.cycles,
+                position: 0,
+            };
+            self.run_plan(plan);
+            self.seq.cycles += self.nd() as u64;
+        }
+        self.flush();
     }
 
     fn cycles(&self) -> u64 {
@@ -548,19 +750,22 @@ impl Array for CycleArray {
     }
 
     fn attach_probe(&mut self, rec: Recorder) {
+        self.flush();
         self.probe = Some(rec);
     }
 
     fn take_probe(&mut self) -> Option<Recorder> {
+        self.flush();
         self.probe.take()
     }
 
     fn state(&self) -> ArchState {
         let (w, h) = (self.cfg.width, self.cfg.height);
+        let planes = self.planes();
         ArchState {
             width: w,
             height: h,
-            pixels: (0..w * h).map(|i| self.gather(i % w, i / w)).collect(),
+            pixels: (0..w * h).map(|i| planes.gather(i % w, i / w)).collect(),
             sp: self.seq.sp,
         }
     }
@@ -571,10 +776,12 @@ impl CycleArray {
     /// comparator, carry and stack, one bit each per (padded) pixel.
     pub fn memory_bytes(cfg: &ArrayConfig) -> u64 {
         let words = (cfg.width.div_ceil(64) * cfg.height) as u64;
-        let planes = 4 * cfg.fmt.bits() as u64 + 3 * cfg.colour_bits as u64 + 2 + 4 + 1;
-        words * 8 * (planes + cfg.stack_depth as u64)
+        words * 8 * planes_per_word(cfg)
     }
 }
+
+#[cfg(test)]
+mod batched_tests;
 
 #[cfg(test)]
 mod tests {
