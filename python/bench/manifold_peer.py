@@ -5,6 +5,7 @@ turns the CSG scene into one mesh, which is then voxelized on the same grid.
     cargo build --release --bin csgpix --example scene_meshes
     pip install manifold3d numpy
     python python/bench/manifold_peer.py --res 64,256 --json
+    python python/bench/manifold_peer.py --generated 10000   # generated scenes of 10,000 primitives
 
 For every scene (default: every vectors/designs/meshes/*.csg and *.csg.gz, the latter gunzipped
 to a temporary file, plus vectors/scenes/{twelve,csg-logo,figure-5.2}.csg) and every grid:
@@ -252,6 +253,39 @@ def default_scenes():
     return scenes
 
 
+def generated_scenes(counts, work):
+    """Scenes of thousands of primitives, written into `work` (issue 41: thousands of primitives):
+    for each N, `generated-union-N.csg` (N/2 cubes and N/2 spheres of 12 segments scattered in a
+    100-unit box, one union, seed 1) and `generated-holes-N.csg` (a 100×100×4 slab minus N
+    cylinders of 8 segments on a square grid). The same N gives the same files."""
+    import random
+
+    out = []
+    for n in counts:
+        rnd = random.Random(1)
+        lines = ["union() {"]
+        for i in range(n):
+            x, y, z = (rnd.uniform(0, 100) for _ in range(3))
+            m = f"multmatrix([[1,0,0,{x:.4f}],[0,1,0,{y:.4f}],[0,0,1,{z:.4f}],[0,0,0,1]])"
+            prim = "cube(size = [2, 2, 2], center = false);" if i % 2 else "sphere(r = 1.2, $fn = 12);"
+            lines.append(f"  {m} {prim}")
+        lines.append("}")
+        union = work / f"generated-union-{n}.csg"
+        union.write_text("\n".join(lines) + "\n")
+        side = max(1, round(n ** 0.5))
+        pitch = 100.0 / side
+        lines = ["difference() {", "  cube(size = [100, 100, 4], center = false);"]
+        for i in range(n):
+            x, y = (i % side + 0.5) * pitch, (i // side + 0.5) * pitch
+            m = f"multmatrix([[1,0,0,{x:.4f}],[0,1,0,{y:.4f}],[0,0,1,-1],[0,0,0,1]])"
+            lines.append(f"  {m} cylinder(h = 6, r1 = {pitch / 3:.4f}, r2 = {pitch / 3:.4f}, center = false, $fn = 8);")
+        lines.append("}")
+        holes = work / f"generated-holes-{n}.csg"
+        holes.write_text("\n".join(lines) + "\n")
+        out += [union, holes]
+    return out
+
+
 def design_name(p):
     n = p.name
     for s in (".csg.gz", ".csg"):
@@ -362,6 +396,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("scenes", nargs="*", type=Path, help="scenes (default: the designs and three scenes)")
     ap.add_argument("--res", default="64,256", help="grid sides, comma-separated (default 64,256)")
+    ap.add_argument("--generated", default="", metavar="N,…",
+                    help="also generated scenes of N primitives each (a scattered union and a slab "
+                         "with N holes); with no scenes named, only these")
     ap.add_argument("--json", action="store_true", help="print every figure as JSON")
     ap.add_argument("--csgpix", type=Path, default=ROOT / "target/release/csgpix")
     ap.add_argument("--scene-meshes", type=Path, default=ROOT / "target/release/examples/scene_meshes")
@@ -383,11 +420,13 @@ def main():
                   file=sys.stderr)
             return 2
     resolutions = [int(x) for x in args.res.split(",")]
-    scenes = [p.resolve() for p in args.scenes] or default_scenes()
+    counts = [int(x) for x in args.generated.split(",") if x]
+    scenes = [p.resolve() for p in args.scenes] or ([] if counts else default_scenes())
     rows = []
     load_start = os.getloadavg()
     with tempfile.TemporaryDirectory(prefix="manifold_peer.") as tmp:
         work = Path(tmp)
+        scenes += generated_scenes(counts, work)
         for p in scenes:
             row = bench_scene(p, resolutions, args.csgpix, args.scene_meshes, work)
             rows.append(row)
