@@ -273,6 +273,7 @@ impl Planes {
                             for k in 0..self.nd() {
                                 self.clock(plan, k, rows.clone(), &masks);
                             }
+                            self.decide_at_end(plan, rows);
                         }
                     }
                     Job::Stack(op, sp) => {
@@ -311,7 +312,7 @@ impl Planes {
         }
     }
 
-    /// Clock `k` of a window on `rows` (SGENE's decision after the last).
+    /// Clock `k` of a window on `rows`; SGENE's decision comes after the last ([`Self::decide_at_end`]).
     fn clock(&mut self, plan: &Plan, k: usize, rows: Range<usize>, masks: &[ActionMasks]) {
         let words = rows.start * self.wpr..rows.end * self.wpr;
         if let Some(t) = &plan.transfer {
@@ -321,12 +322,16 @@ impl Planes {
             self.stream_bit(k, lines, plan.colour, rows);
         }
         if let Some((lhs, rhs)) = plan.compare {
-            self.compare_bit(k, lhs, rhs, words.clone());
+            self.compare_bit(k, lhs, rhs, words);
         }
-        if k + 1 == self.nd() {
-            if let Some(d) = &plan.decide {
-                self.decide(d, plan.sp, words);
-            }
+    }
+
+    /// SGENE's decision at the end of a window's last clock, on `rows`: after the probes have
+    /// sampled that clock, which sees the select code and stack from before it.
+    fn decide_at_end(&mut self, plan: &Plan, rows: Range<usize>) {
+        if let Some(d) = &plan.decide {
+            let words = rows.start * self.wpr..rows.end * self.wpr;
+            self.decide(d, plan.sp, words);
         }
     }
 
@@ -635,6 +640,9 @@ impl CycleArray {
             for k in 0..self.nd() {
                 self.planes.get_mut().clock(plan, k, rows.clone(), &masks);
                 self.sample(plan, k, rows.clone());
+                if k + 1 == self.nd() {
+                    self.planes.get_mut().decide_at_end(plan, rows.clone());
+                }
                 if self.observer.is_some() {
                     self.notify(Clock {
                         t: plan.start + k as u64 + 1,
