@@ -100,8 +100,6 @@ pub struct CycleArray {
     cfg: ArrayConfig,
     set: EquationSet,
     depgen: DepGen,
-    /// Words per row.
-    wpr: usize,
     /// Every pixel's registers, and the windows deferred on them. Readers that take `&self`
     /// run the deferred windows first (hence the cell); nothing else borrows it.
     planes: RefCell<Planes>,
@@ -523,7 +521,6 @@ impl CycleArray {
         };
         CycleArray {
             depgen: DepGen::new(cfg.width, cfg.height, cfg.fmt),
-            wpr,
             planes: RefCell::new(planes),
             seq: Sequencer::default(),
             ops: 0,
@@ -538,13 +535,13 @@ impl CycleArray {
         self.cfg.fmt.bits() as usize
     }
 
-    fn chunk_rows(&self) -> usize {
+    fn chunk_rows(&mut self) -> usize {
         if self.observer.is_some() {
             // Observed clock by clock: the whole array is one chunk, so that every pixel is at
             // the same clock when the observer looks.
             return self.cfg.height;
         }
-        (CHUNK_WORDS / self.wpr).max(1)
+        self.planes.get_mut().chunk_rows()
     }
 
     /// Whether the next window is deferred and run with others panel by panel: not when an
@@ -633,7 +630,7 @@ impl CycleArray {
     fn sweep(&mut self, plan: &Plan) {
         self.flush();
         let rows_per = self.chunk_rows();
-        let mut masks = Vec::with_capacity(rows_per * self.wpr);
+        let mut masks = Vec::with_capacity(rows_per * self.planes.get_mut().wpr);
         for y0 in (0..self.cfg.height).step_by(rows_per) {
             let rows = y0..(y0 + rows_per).min(self.cfg.height);
             self.planes.get_mut().begin(plan, rows.clone(), &mut masks);

@@ -48,7 +48,7 @@ mod sparse;
 pub use ending::{finish, stdout_failed};
 pub use error::{Error, IoError, OneLine, Refusal, Result};
 pub use oom::{fallible, one_arena_under_address_limit, try_zeroed, AllocFailed, ExitOnOom};
-pub use replace::{durable, sync_outputs};
+pub use replace::sync_outputs;
 pub use scratch::{child, scratch, Child, Scratch};
 pub use sparse::{Sparse, BLOCK};
 
@@ -197,7 +197,7 @@ impl Staged {
         // The file is moved by path from here: its name is no longer removed on drop.
         let (file, path) = file.into_parts();
         let r = set_mode(&file, mode)
-            .and_then(|()| replace::put_file(&file, &path, target))
+            .and_then(|()| replace::put_file(&path, target))
             .map_err(|e| Error::io(target.display(), &e));
         if r.is_err() {
             let _ = std::fs::remove_file(&path);
@@ -476,7 +476,7 @@ impl Outputs {
 
     /// Stage the whole content of a file output, its runs of zeros of at least `hole` bytes
     /// left as holes ([`Sparse`]): the same bytes read back, fewer written. For volumes,
-    /// which are mostly empty space (`hole`: a slice). Returns the bytes written and skipped.
+    /// which are mostly empty space. Returns the bytes written and skipped.
     pub fn write_sparse(
         &mut self,
         out: Out,
@@ -672,14 +672,13 @@ fn commit_dir(target: &Path, dir: &Path, names: &[String]) -> std::io::Result<()
             sync_tree(dir)?;
         }
         std::fs::rename(dir, target)?;
-        return match replace::durable() {
-            true => replace::sync_parent(target),
-            false => Ok(()),
-        };
+        if replace::durable() {
+            replace::sync_parent(target)?;
+        }
+        return Ok(());
     }
     for name in names {
-        let staged = dir.join(name);
-        replace::put_file(&File::open(&staged)?, &staged, &target.join(name))?;
+        replace::put_file(&dir.join(name), &target.join(name))?;
     }
     Ok(())
 }
@@ -791,12 +790,7 @@ fn sync_each(dir: &Path) -> std::io::Result<()> {
             _ => {}
         }
     }
-    // Windows cannot open a directory as a file: its entries are written with the files.
-    match File::open(dir) {
-        Ok(d) => d.sync_all(),
-        Err(_) if cfg!(windows) => Ok(()),
-        Err(e) => Err(e),
-    }
+    replace::sync_dir(dir)
 }
 
 #[cfg(unix)]

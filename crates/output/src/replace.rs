@@ -31,15 +31,15 @@ pub fn sync_outputs(on: bool) {
 }
 
 /// Whether [`sync_outputs`] is on.
-pub fn durable() -> bool {
+pub(crate) fn durable() -> bool {
     DURABLE.load(Ordering::SeqCst)
 }
 
-/// Put the staged file at `staged` (open as `file`) in place of `target`, whole: the target
-/// holds the old file or the new one at every moment. `staged` no longer exists afterwards.
-pub(crate) fn put_file(file: &File, staged: &Path, target: &Path) -> std::io::Result<()> {
+/// Put the staged file at `staged` in place of `target`, whole: the target holds the old
+/// file or the new one at every moment. `staged` no longer exists afterwards.
+pub(crate) fn put_file(staged: &Path, target: &Path) -> std::io::Result<()> {
     if durable() {
-        file.sync_all()?;
+        File::open(staged)?.sync_all()?;
     }
     match exchange(staged, target) {
         // The old file now has the staged name; were it left there (the system refusing to
@@ -90,10 +90,11 @@ fn exchange(_: &Path, _: &Path) -> std::io::Result<()> {
 
 /// Sync the directory that holds `p`, so that its new entry survives a power cut.
 pub(crate) fn sync_parent(p: &Path) -> std::io::Result<()> {
-    let dir = match p.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
+    sync_dir(&crate::split(p).0)
+}
+
+/// Sync directory `dir`'s entries to the disk.
+pub(crate) fn sync_dir(dir: &Path) -> std::io::Result<()> {
     // Windows cannot open a directory as a file: its entries are written with the files.
     match File::open(dir) {
         Ok(d) => d.sync_all(),
