@@ -38,6 +38,7 @@ mod gen_vectors;
 mod man;
 mod phantom;
 mod plot;
+mod print;
 pub mod progress;
 mod render;
 mod requirements;
@@ -96,6 +97,8 @@ pub enum Cmd {
     Throughput(throughput::Args),
     /// Sweep depth-word bits, tessellation, slabs and model; error against cost as CSV and PNG.
     Study(study::Args),
+    /// Slice a CSG scene onto a resin printer's display: Prusa SL1/SL1S archives or PNG layers
+    Print(print::Args),
     /// Write the project's CT-head phantom (Figure 5.6's dataset) as NRRD.
     Phantom(phantom::Args),
     /// Print the completion script of a shell (bash, zsh, fish, elvish, powershell).
@@ -114,6 +117,7 @@ pub fn run(cli: Cli) -> run::Result<ExitCode> {
         Cmd::ExportVerilog(a) => export_verilog::run(a),
         Cmd::Render(a) => render::run(a),
         Cmd::Voxelize(a) => voxelize::run(a),
+        Cmd::Print(a) => print::run(a),
         Cmd::Sculpt(a) => sculpt::run(a),
         Cmd::Blist(a) => blist::run(a),
         Cmd::Requirements(a) => requirements::run(a),

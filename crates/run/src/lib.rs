@@ -25,6 +25,7 @@ pub mod memory;
 pub mod phantom;
 pub mod plot;
 pub mod png;
+pub mod printer;
 pub mod progress;
 pub mod read;
 pub mod render;

@@ -1,0 +1,659 @@
+//! The print job: a CSG scene sliced straight onto a resin (MSLA) printer's display. The
+//! thesis's machine makes Z slices of the scene (§4.4); a resin printer shows exactly that,
+//! one image per layer. Each layer pixel's grey is the share of its k×k sub-pixel samples
+//! inside the part (`--aa k`; 1 thresholds), computed by the voxelizer's run route on a grid
+//! whose columns are the sub-pixels' centres and whose slabs are the layers, and written as
+//! the voxelizer sweeps the layers: memory holds the columns' runs, not the layers.
+//!
+//! By stage: [`profile`] is the printer, [`place`] puts the part on its display and makes
+//! the grid, [`raster`] turns a slab of samples into a layer image, [`png`] and [`zip`]
+//! encode it, [`archive`] writes Prusa's `.sl1`/`.sl1s` or a PNG stack with `print.json`.
+
+pub mod archive;
+pub mod place;
+pub mod png;
+pub mod profile;
+pub mod raster;
+pub mod zip;
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use csgpix_openscad::Fallback;
+use csgpix_scene::solid::CsgNode;
+use csgpix_voxel::sampled::Loaded;
+use csgpix_voxel::Grid;
+use glam::{DVec2, DVec3};
+use serde::Serialize;
+
+use csgpix_output::Outputs;
+
+use crate::memory::Limit;
+use crate::progress::Progress;
+use crate::read::ReadSettings;
+use crate::voxelize::{OutputOptions, VoxelizeJob};
+use crate::Error;
+pub use profile::{Printer, PROFILES};
+
+/// Most sub-pixel samples per pixel side (`--aa`): 16×16 gives every grey level.
+pub const MAX_AA: u32 = 16;
+
+/// A print job (`csgpix print`): the scene, the printer, the output.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PrintJob {
+    /// OpenSCAD `.csg` (or `.scad`) scene, in mm.
+    pub scene: PathBuf,
+    /// `*.sl1`/`*.sl1s`: Prusa's archive; anything else: a directory of layer PNGs.
+    pub out: PathBuf,
+    pub printer: Printer,
+    /// Samples per pixel side.
+    pub aa: u32,
+    /// The part's centre, mm from the display's centre.
+    pub centre: [f64; 2],
+    pub threads: Option<usize>,
+    pub max_memory: Limit,
+    pub read: ReadSettings,
+    pub fallback: Fallback,
+}
+
+/// What a print job made.
+#[derive(Serialize, Clone, Debug)]
+pub struct PrintReport {
+    pub printer: &'static str,
+    pub out: PathBuf,
+    pub archive: &'static str,
+    pub layers: usize,
+    /// The layer PNG's width and height.
+    pub image: [u32; 2],
+    /// The part's pixels on the display along X and Y (before any turn).
+    pub part_pixels: [usize; 2],
+    /// Its first pixel along X and Y.
+    pub part_origin: [u32; 2],
+    pub aa: u32,
+    /// Material, ml (the grey levels' sum × pixel area × layer height).
+    pub material_ml: f64,
+    /// The print's duration, s, by [`archive::print_seconds`].
+    pub print_seconds: f64,
+    /// Per material label (colour code), its stack's directory (PNG stacks of scenes with
+    /// more than one colour).
+    pub materials: Vec<u8>,
+    /// The voxelizer's grid of the layers (after the first, when it is of another height):
+    /// its voxels and box, scene units, for `csgpix requirements --res --bounds`.
+    pub grid_dims: [usize; 3],
+    pub grid_min: [f64; 3],
+    pub grid_max: [f64; 3],
+    /// The thesis's array slicing this print (one processor a sample, §2): its clocks and
+    /// P·Vz frames, and the seconds those clocks take at 10 MHz.
+    pub array_clocks: u64,
+    pub array_frames: u64,
+    pub array_seconds: f64,
+    pub memory_estimate: u64,
+    pub wall_seconds: f64,
+    pub warnings: Vec<String>,
+}
+
+impl PrintJob {
+    /// Read, place, slice and write.
+    pub fn run(&self, progress: &dyn Progress) -> crate::Result<PrintReport> {
+        let t0 = Instant::now();
+        self.check()?;
+        let kind = archive::Kind::of(&self.out);
+        let mut outs = Outputs::new();
+        let out = match kind {
+            archive::Kind::Prusa => outs.file("-o", &self.out, &["sl1", "sl1s"])?,
+            archive::Kind::Stack => outs.dir("-o", &self.out)?,
+        };
+        let vjob = self.voxelize_job();
+        let loaded = vjob.load(progress)?;
+        let part = part_box(&loaded).map_err(|m| Error::options("SCENE", m))?;
+        let part = match exact_box(&loaded.scene.root) {
+            true => part,
+            false => self.lit_box(&vjob, &loaded, part)?,
+        };
+        let placed = self.place(&vjob, part)?;
+        let passes = self.passes(&vjob, &loaded, &placed, self.aa as usize)?;
+        let grid = passes.last().map(|p| p.0.slicer.grid);
+        let grid = grid.ok_or_else(|| Error::options("SCENE", "the part has no layer"))?;
+        let codes = passes.first().map_or(&[][..], |p| &p.0.slicer.colours[..]);
+        let bytes = raster::Raster::bytes(&placed, codes.len().min(256));
+        let need = passes.iter().map(|p| p.1).max().unwrap_or(0);
+        let need = need.saturating_add(bytes);
+        self.max_memory
+            .check(need, "this print", "raise --max-memory")?;
+        let mut raster = raster::Raster::new(&self.printer, &placed, self.aa, codes);
+        let (w, h) = self.printer.png_size();
+        let png = png::LayerPng::new(w, h, raster.rows, raster.cols);
+        progress.stage("layers", placed.layers as u64);
+        let make = Make {
+            vjob: &vjob,
+            passes: &passes,
+            png: &png,
+            progress,
+        };
+        let summary = match kind {
+            archive::Kind::Prusa => self.write_prusa(&mut outs, out, &placed, &mut raster, make)?,
+            archive::Kind::Stack => self.write_stack(&mut outs, out, &placed, &mut raster, make)?,
+        };
+        progress.finish();
+        outs.commit()?;
+        Ok(PrintReport {
+            printer: self.printer.id,
+            out: self.out.clone(),
+            archive: kind.name(),
+            layers: placed.layers,
+            image: [w, h],
+            part_pixels: placed.pixels(),
+            part_origin: [placed.i.0, placed.j.0],
+            aa: self.aa,
+            material_ml: summary.material_ml,
+            print_seconds: summary.print_seconds,
+            materials: summary.materials,
+            grid_dims: grid.dims,
+            grid_min: grid.min.to_array(),
+            grid_max: grid.max.to_array(),
+            array_clocks: summary.array[0],
+            array_frames: summary.array[1],
+            array_seconds: summary.array[0] as f64 * 1e-7,
+            memory_estimate: need,
+            wall_seconds: t0.elapsed().as_secs_f64(),
+            warnings: loaded
+                .scene
+                .warnings
+                .iter()
+                .map(|w| w.to_string())
+                .collect(),
+        })
+    }
+
+    /// Prusa's archive: the layers as they come, then `config.ini`, `prusaslicer.ini` and
+    /// the thumbnails, which need every layer.
+    fn write_prusa(
+        &self,
+        outs: &mut Outputs,
+        out: csgpix_output::Out,
+        placed: &place::Placement,
+        raster: &mut raster::Raster,
+        make: Make,
+    ) -> crate::Result<archive::Summary> {
+        let job = archive::job_name(&self.out);
+        let (mut failed, mut summary) = (None, None);
+        let written = outs.write(out, |w| {
+            let mut z = zip::ZipOut::new(w);
+            let mut emit = |l: usize, pngs: &[Vec<u8>]| {
+                z.add(
+                    &archive::layer_name(archive::Kind::Prusa, &job, l),
+                    &pngs[0],
+                )
+            };
+            let array = match self.sweep(&make, raster, &mut emit) {
+                Ok(array) => array,
+                Err(e) => {
+                    failed = Some(e);
+                    return Err(std::io::Error::other("the slicing failed"));
+                }
+            };
+            let s = archive::Summary::of(&self.printer, raster, array);
+            let config = archive::config_ini(&self.printer, &job, &s, &stamp(&self.scene));
+            z.add("config.ini", config.as_bytes())?;
+            let ini = archive::prusaslicer_ini(&self.printer, placed);
+            z.add("prusaslicer.ini", ini.as_bytes())?;
+            for size in [(400, 400), (800, 480)] {
+                let img = archive::thumbnail(raster, placed.layers, size);
+                let name = format!("thumbnail/thumbnail{}x{}.png", size.0, size.1);
+                z.add(&name, &archive::png_bytes(&img)?)?;
+            }
+            summary = Some(s);
+            z.finish()
+        });
+        if let Some(e) = failed {
+            return Err(e);
+        }
+        written?;
+        summary.ok_or_else(|| self.io(std::io::Error::other("no summary")))
+    }
+
+    /// A directory of layer PNGs (and one stack per material where the scene has several),
+    /// `print.json` and `thumbnail.png`.
+    fn write_stack(
+        &self,
+        outs: &mut Outputs,
+        out: csgpix_output::Out,
+        placed: &place::Placement,
+        raster: &mut raster::Raster,
+        make: Make,
+    ) -> crate::Result<archive::Summary> {
+        let job = archive::job_name(&self.out);
+        let materials = raster.materials();
+        let mut emit = |l: usize, pngs: &[Vec<u8>]| {
+            let name = archive::layer_name(archive::Kind::Stack, &job, l);
+            let by_material = materials
+                .iter()
+                .map(|c| format!("material-{c}-layer-{l:05}.png"));
+            for (name, bytes) in std::iter::once(name).chain(by_material).zip(pngs) {
+                outs.write_in(out, &name, |w| w.write_all(bytes))
+                    .map_err(|e| std::io::Error::other(e.to_string()))?;
+            }
+            Ok(())
+        };
+        let array = self.sweep(&make, raster, &mut emit)?;
+        let s = archive::Summary::of(&self.printer, raster, array);
+        let info = archive::StackInfo::of(&self.printer, placed, self.aa, &s);
+        let text = serde_json::to_string_pretty(&info)?;
+        outs.write_in(out, "print.json", |w| w.write_all(text.as_bytes()))?;
+        let img = archive::thumbnail(raster, placed.layers, (400, 400));
+        let bytes = archive::png_bytes(&img).map_err(|e| self.io(e))?;
+        outs.write_in(out, "thumbnail.png", |w| w.write_all(&bytes))?;
+        Ok(s)
+    }
+
+    /// Every layer of every pass, in order, made by `raster`, encoded by `png` and handed
+    /// to `emit` on this thread: the voxelizer and the raster run on a thread of their own
+    /// (the voxelizer on its pool), the PNG encoder on another, so that slicing, encoding
+    /// and writing overlap.
+    fn sweep(
+        &self,
+        make: &Make,
+        raster: &mut raster::Raster,
+        emit: &mut dyn FnMut(usize, &[Vec<u8>]) -> std::io::Result<()>,
+    ) -> crate::Result<[u64; 2]> {
+        let Make {
+            vjob,
+            passes,
+            png,
+            progress,
+        } = *make;
+        let (tx, boxes) = std::sync::mpsc::sync_channel::<(usize, Vec<Vec<u8>>)>(4);
+        let (encoded, rx) = std::sync::mpsc::sync_channel::<(usize, Vec<Vec<u8>>)>(4);
+        let made = std::thread::scope(|scope| {
+            let maker = scope.spawn(move || make_layers(vjob, passes, raster, tx));
+            let encoder = scope.spawn(move || encode_layers(png, boxes, encoded));
+            let mut wrote = Ok(());
+            for (l, bytes) in rx.iter() {
+                wrote = emit(l, &bytes);
+                progress.advance(1);
+                if wrote.is_err() {
+                    break;
+                }
+            }
+            drop(rx);
+            let made = maker
+                .join()
+                .unwrap_or_else(|p| std::panic::resume_unwind(p));
+            let coded = encoder
+                .join()
+                .unwrap_or_else(|p| std::panic::resume_unwind(p));
+            wrote.map(|_| coded.map_err(Stop::Io).and(made))
+        });
+        match made {
+            Err(e) => Err(self.io(e)),
+            Ok(Err(Stop::Io(e))) => Err(self.io(e)),
+            Ok(Err(Stop::Voxel(e))) => Err(e.into()),
+            Ok(Ok(array)) => Ok(array),
+        }
+    }
+
+    /// An error writing the output.
+    fn io(&self, source: std::io::Error) -> Error {
+        Error::Io {
+            path: self.out.clone(),
+            source,
+        }
+    }
+
+    /// The settings, each in range, refused in one line.
+    fn check(&self) -> crate::Result<()> {
+        self.printer
+            .check()
+            .map_err(|(flag, m)| Error::options(flag, m))?;
+        if !(1..=MAX_AA).contains(&self.aa) {
+            let m = format!(
+                "--aa: {}: 1 (no anti-aliasing) to {MAX_AA} samples a side",
+                self.aa
+            );
+            return Err(Error::options("--aa", m));
+        }
+        if self.centre.iter().any(|c| !c.is_finite()) {
+            return Err(Error::options(
+                "--position",
+                "--position: not a finite point",
+            ));
+        }
+        Ok(())
+    }
+
+    /// The voxelize job whose reader, plan and memory limit this print uses.
+    fn voxelize_job(&self) -> VoxelizeJob {
+        VoxelizeJob {
+            scene: Some(self.scene.clone()),
+            outputs: OutputOptions {
+                out: self.out.clone(),
+                ..OutputOptions::default()
+            },
+            threads: self.threads,
+            max_memory: self.max_memory,
+            read: self.read,
+            fallback: self.fallback,
+            ..VoxelizeJob::default()
+        }
+    }
+
+    /// The part placed on the display, or the one-line refusal.
+    fn place(&self, vjob: &VoxelizeJob, part: Box3) -> crate::Result<place::Placement> {
+        let centre = DVec2::from_array(self.centre);
+        place::place(&self.printer, part, centre)
+            .map_err(|m| Error::options("--position", format!("{}: {m}", vjob.name())))
+    }
+
+    /// The box of what the voxelizer lights, for a tree whose box may be larger than the
+    /// part (a difference or intersection can cut its top or sides away): one pass on the
+    /// printer's pixels and layers within `part`, and `part` cut to the pixels and layers
+    /// lit. Where the part reaches a side of `part` that side stays exact; elsewhere it is
+    /// known to a pixel (a layer along Z).
+    fn lit_box(&self, vjob: &VoxelizeJob, loaded: &Loaded, part: Box3) -> crate::Result<Box3> {
+        let placed = self.place(vjob, part)?;
+        let passes = self.passes(vjob, loaded, &placed, 1)?;
+        let need = passes.iter().map(|p| p.1).max().unwrap_or(0);
+        self.max_memory
+            .check(need, "this print", "raise --max-memory")?;
+        let [fw, _] = placed.pixels();
+        let mut lit = Lit::default();
+        for (plan, _, layers) in &passes {
+            plan.pool.install(|| {
+                let set = vjob.voxels.equations.set();
+                let mut sink = |k: usize, s: &[u8]| -> Result<(), csgpix_voxel::Error> {
+                    lit.add(layers.start + k, s, fw);
+                    Ok(())
+                };
+                let (eval, slabs) = (plan.eval.as_ref(), 0..layers.len());
+                let sl = &plan.slicer;
+                csgpix_voxel::voxelize_slabs(sl, plan.route, set, eval, &|| {}, slabs, &mut sink)
+            })?;
+        }
+        let (lo, mut hi) = lit.cut(part, &placed, &self.printer);
+        // The top layer counts when the part reaches its top (PrusaSlicer's count): one
+        // thin slab just below that top says whether it does.
+        let reach = hi.z - 1e-6 * self.printer.layer_height;
+        if hi.z < part.1.z && !self.lit_at(vjob, loaded, &placed, reach)? {
+            hi.z -= self.printer.layer_height;
+        }
+        Ok((lo, hi))
+    }
+
+    /// Whether anything of the part is at height `z` (scene units) over its placed pixels.
+    fn lit_at(
+        &self,
+        vjob: &VoxelizeJob,
+        loaded: &Loaded,
+        placed: &place::Placement,
+        z: f64,
+    ) -> crate::Result<bool> {
+        let [lo, hi] = placed.grid(&self.printer, 0..1);
+        // One slab a layer high whose centre, where it samples, is at z.
+        let half = self.printer.layer_height / 2.0;
+        let (lo, hi) = (lo.with_z(z - half), hi.with_z(z + half));
+        let grid = Grid::new([placed.pixels()[0], placed.pixels()[1], 1], lo, hi)
+            .map_err(|e| Error::from(csgpix_voxel::Error::from(e)))?;
+        let plan = vjob.plan_on(loaded, grid).map_err(Error::from)??;
+        let mut any = false;
+        plan.pool.install(|| {
+            let set = vjob.voxels.equations.set();
+            let mut sink = |_: usize, s: &[u8]| -> Result<(), csgpix_voxel::Error> {
+                any |= s.iter().any(|&v| v != 0);
+                Ok(())
+            };
+            let eval = plan.eval.as_ref();
+            csgpix_voxel::voxelize_slabs(
+                &plan.slicer,
+                plan.route,
+                set,
+                eval,
+                &|| {},
+                0..1,
+                &mut sink,
+            )
+        })?;
+        Ok(any)
+    }
+
+    /// The voxelizer's plans: one over every layer, or one for the first layer and one for
+    /// the others when the first is not as high; each with its memory estimate.
+    fn passes(
+        &self,
+        vjob: &VoxelizeJob,
+        loaded: &Loaded,
+        placed: &place::Placement,
+        k: usize,
+    ) -> crate::Result<Vec<Pass>> {
+        let p = &self.printer;
+        let n = placed.layers;
+        let same = (p.initial_layer_height - p.layer_height).abs() <= 1e-12 * p.layer_height;
+        let ranges = match (same, n) {
+            (true, _) | (false, 1) => [0..n, n..n],
+            (false, _) => [0..1, 1..n],
+        };
+        let [w, h] = placed.pixels();
+        let mut out = vec![];
+        for layers in ranges.into_iter().filter(|r| !r.is_empty()) {
+            let [lo, hi] = placed.grid(p, layers.clone());
+            let dims = [w * k, h * k, layers.len()];
+            let grid =
+                Grid::new(dims, lo, hi).map_err(|e| Error::from(csgpix_voxel::Error::from(e)))?;
+            let plan = vjob.plan_on(loaded, grid).map_err(Error::from)??;
+            let need = plan.budget(vjob, &loaded.scene)?.need;
+            out.push((plan, need, layers));
+        }
+        Ok(out)
+    }
+}
+
+/// What makes the layers: the voxelizer's job and passes, the PNG encoder, the progress.
+#[derive(Clone, Copy)]
+struct Make<'a> {
+    vjob: &'a VoxelizeJob,
+    passes: &'a [Pass],
+    png: &'a png::LayerPng,
+    progress: &'a dyn Progress,
+}
+
+/// A voxelizer plan, its memory estimate and the layers it makes.
+type Pass = (crate::voxelize::plan::Plan, u64, std::ops::Range<usize>);
+
+/// The archive's creation time as PrusaSlicer writes it, from the scene file's
+/// modification time (so that the same scene makes the same archive).
+fn stamp(scene: &std::path::Path) -> String {
+    let t = std::fs::metadata(scene).and_then(|m| m.modified()).ok();
+    let secs = t
+        .and_then(|t| t.duration_since(std::time::UNIX_EPOCH).ok())
+        .map_or(0, |d| d.as_secs());
+    let (days, rest) = (secs / 86_400, secs % 86_400);
+    let (y, m, d) = civil(days as i64);
+    let (hh, mm, ss) = (rest / 3600, rest / 60 % 60, rest % 60);
+    format!("{y:04}-{m:02}-{d:02} at {hh:02}:{mm:02}:{ss:02} UTC")
+}
+
+/// The calendar date of a day count from 1970-01-01 (H. Hinnant's civil_from_days).
+fn civil(z: i64) -> (i64, u32, u32) {
+    let z = z + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = (doy - (153 * mp + 2) / 5 + 1) as u32;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
+    (yoe + era * 400 + i64::from(m <= 2), m, d)
+}
+
+/// The voxelizer's layers, pass by pass, each made into its PNG boxes (the part's, then
+/// each material's) and sent to the encoder.
+fn make_layers(
+    vjob: &VoxelizeJob,
+    passes: &[Pass],
+    raster: &mut raster::Raster,
+    tx: std::sync::mpsc::SyncSender<(usize, Vec<Vec<u8>>)>,
+) -> Result<[u64; 2], Stop> {
+    let mut array = [0, 0];
+    for (plan, _, layers) in passes {
+        let first = layers.start;
+        let work = plan.pool.install(|| {
+            let mut sink = |k: usize, s: &[u8]| -> Result<(), Stop> {
+                raster.layer(s);
+                let materials = (0..raster.materials().len()).map(|m| raster.material(m));
+                let boxes = std::iter::once(raster.lit()).chain(materials);
+                // The encoder stopped: the writer's error is the one to report.
+                tx.send((first + k, boxes.map(<[u8]>::to_vec).collect()))
+                    .map_err(|_| Stop::Io(std::io::Error::other("writer stopped")))
+            };
+            let set = vjob.voxels.equations.set();
+            let (eval, slabs) = (plan.eval.as_ref(), 0..layers.len());
+            let sl = &plan.slicer;
+            csgpix_voxel::voxelize_slabs(sl, plan.route, set, eval, &|| {}, slabs, &mut sink)
+        })?;
+        array[0] += work.cycles;
+        array[1] += work.frames;
+    }
+    Ok(array)
+}
+
+/// Each layer's boxes as PNG files, in order, to the writer.
+fn encode_layers(
+    png: &png::LayerPng,
+    boxes: std::sync::mpsc::Receiver<(usize, Vec<Vec<u8>>)>,
+    tx: std::sync::mpsc::SyncSender<(usize, Vec<Vec<u8>>)>,
+) -> std::io::Result<()> {
+    for (l, layer) in boxes {
+        let mut files = Vec::with_capacity(layer.len());
+        for b in &layer {
+            let mut f = Vec::with_capacity(8192);
+            png.write(&mut f, b)?;
+            files.push(f);
+        }
+        if tx.send((l, files)).is_err() {
+            break; // the writer stopped and says why
+        }
+    }
+    Ok(())
+}
+
+/// Why the sweep stopped: the output's write or the voxelizer.
+enum Stop {
+    Io(std::io::Error),
+    Voxel(csgpix_voxel::Error),
+}
+
+impl From<csgpix_voxel::Error> for Stop {
+    fn from(e: csgpix_voxel::Error) -> Stop {
+        Stop::Voxel(e)
+    }
+}
+
+impl From<crate::Error> for Stop {
+    fn from(e: crate::Error) -> Stop {
+        Stop::Io(std::io::Error::other(e.to_string()))
+    }
+}
+
+/// Whether the tree's box ([`part_box`]) is the part's: no difference, intersection or
+/// complement can cut it.
+fn exact_box(n: &CsgNode) -> bool {
+    match n {
+        CsgNode::Solid(_) | CsgNode::Empty => true,
+        CsgNode::Union(c) => c.iter().all(exact_box),
+        _ => false,
+    }
+}
+
+/// The pixels and layers lit in a pass: first and last along X, Y and Z.
+#[derive(Default)]
+struct Lit {
+    i: Option<(usize, usize)>,
+    j: Option<(usize, usize)>,
+    l: Option<(usize, usize)>,
+}
+
+fn widen(r: Option<(usize, usize)>, a: usize, b: usize) -> Option<(usize, usize)> {
+    Some(r.map_or((a, b), |(x, y)| (x.min(a), y.max(b))))
+}
+
+impl Lit {
+    /// Layer `l`'s samples `s`, rows `fw` wide.
+    fn add(&mut self, l: usize, s: &[u8], fw: usize) {
+        for (j, row) in s.chunks_exact(fw.max(1)).enumerate() {
+            let first = row.iter().position(|&v| v != 0);
+            if let Some(a) = first {
+                let b = row.iter().rposition(|&v| v != 0).unwrap_or(a);
+                self.i = widen(self.i, a, b);
+                self.j = widen(self.j, j, j);
+                self.l = widen(self.l, l, l);
+            }
+        }
+    }
+
+    /// `part` cut to the lit pixels' and layers' edges (scene units), where they are inside.
+    fn cut(&self, (lo, hi): Box3, at: &place::Placement, p: &Printer) -> Box3 {
+        let (Some(i), Some(j), Some(l)) = (self.i, self.j, self.l) else {
+            return (lo, hi);
+        };
+        let [px, py] = p.pitch();
+        let x = |i: usize| (f64::from(at.i.0) + i as f64) * px - at.shift.x;
+        let y = |j: usize| (f64::from(at.j.0) + j as f64) * py - at.shift.y;
+        let bottom = |l: usize| match l {
+            0 => 0.0,
+            _ => p.initial_layer_height + (l - 1) as f64 * p.layer_height,
+        };
+        let top = |l: usize| p.initial_layer_height + l as f64 * p.layer_height;
+        let a = DVec3::new(x(i.0), y(j.0), at.floor + bottom(l.0));
+        let b = DVec3::new(x(i.1 + 1), y(j.1 + 1), at.floor + top(l.1));
+        (lo.max(a), hi.min(b))
+    }
+}
+
+/// The box of the part itself: a union's is its children's together, an intersection's
+/// their overlap, a difference's its first child's (what is cut away cannot widen it);
+/// a primitive's its vertices' (an import's, its bounds).
+pub fn part_box(loaded: &Loaded) -> Result<(DVec3, DVec3), String> {
+    let scene = &loaded.scene;
+    let leaf = |i: usize| -> Option<(DVec3, DVec3)> {
+        match scene.solids.get(i) {
+            Some(s) => s.vertices.iter().fold(None, |b, v| {
+                let v = DVec3::from(*v);
+                Some(b.map_or((v, v), |(a, c): (DVec3, DVec3)| (a.min(v), c.max(v))))
+            }),
+            None => loaded
+                .sampled
+                .get(i - scene.solids.len())
+                .map(|s| s.bounds()),
+        }
+    };
+    match node_box(&scene.root, &leaf) {
+        Some((lo, hi)) if lo.is_finite() && hi.is_finite() && (hi - lo).min_element() > 0.0 => {
+            Ok((lo, hi))
+        }
+        _ => Err("the scene has no solid to print".into()),
+    }
+}
+
+type Box3 = (DVec3, DVec3);
+
+fn node_box(n: &CsgNode, leaf: &dyn Fn(usize) -> Option<Box3>) -> Option<Box3> {
+    let join = |a: Option<Box3>, b: Option<Box3>| match (a, b) {
+        (Some(a), Some(b)) => Some((a.0.min(b.0), a.1.max(b.1))),
+        (a, b) => a.or(b),
+    };
+    match n {
+        CsgNode::Solid(i) => leaf(*i),
+        CsgNode::Union(c) => c.iter().fold(None, |b, c| join(b, node_box(c, leaf))),
+        CsgNode::Intersection(c) => {
+            let mut it = c.iter().map(|c| node_box(c, leaf));
+            let first = it.next()??;
+            it.try_fold(first, |a, b| {
+                let b = b?;
+                let (lo, hi) = (a.0.max(b.0), a.1.min(b.1));
+                (lo.cmple(hi).all()).then_some((lo, hi))
+            })
+        }
+        CsgNode::Difference(c) => c.first().and_then(|c| node_box(c, leaf)),
+        // Everything outside a solid has no box; the voxel grid cannot hold it.
+        CsgNode::Complement(_) | CsgNode::Empty => None,
+    }
+}

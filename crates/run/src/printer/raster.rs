@@ -1,0 +1,291 @@
+//! A layer image from a slab of samples: each display pixel of the part's footprint takes
+//! the share of its k×k samples that are inside (8-bit grey, 255 all in), placed where the
+//! display shows it in the PNG; per material label too where the scene has several.
+
+use super::place::Placement;
+use super::profile::Printer;
+
+/// Put footprint greys `grey` (rows `fw` wide) in `lit` at `origin` + a·`step[0]` +
+/// b·`step[1]`. A landscape display keeps the footprint's rows as the PNG's (each a copy,
+/// reversed when mirrored); a portrait one turns them into the PNG's columns, 8×8 pixels
+/// at a time: eight words read along the footprint's rows, transposed, written along the
+/// PNG's.
+fn place(grey: &[u8], fw: usize, lit: &mut [u8], origin: isize, step: [isize; 2]) {
+    let fh = grey.len() / fw.max(1);
+    if step[0].abs() == 1 || fw <= 1 {
+        for (b, src) in grey.chunks_exact(fw.max(1)).enumerate() {
+            let start = (origin + b as isize * step[1]) as usize;
+            match step[0] >= 0 {
+                true => lit[start..start + fw].copy_from_slice(src),
+                false => {
+                    let dst = &mut lit[start + 1 - fw..=start];
+                    dst.iter_mut().rev().zip(src).for_each(|(d, &g)| *d = g);
+                }
+            }
+        }
+        return;
+    }
+    let whole = |n: usize| n - n % 8;
+    for b0 in (0..whole(fh)).step_by(8) {
+        for a0 in (0..whole(fw)).step_by(8) {
+            let rows: [u64; 8] = std::array::from_fn(|r| {
+                let at = (b0 + r) * fw + a0;
+                u64::from_le_bytes(grey[at..at + 8].try_into().unwrap_or([0; 8]))
+            });
+            for (c, word) in transpose8(rows).into_iter().enumerate() {
+                let row = origin + (a0 + c) as isize * step[0];
+                let bytes = word.to_le_bytes();
+                match step[1] >= 0 {
+                    true => {
+                        let at = (row + b0 as isize) as usize;
+                        lit[at..at + 8].copy_from_slice(&bytes);
+                    }
+                    false => {
+                        let at = (row - b0 as isize) as usize;
+                        lit[at - 7..=at]
+                            .iter_mut()
+                            .rev()
+                            .zip(bytes)
+                            .for_each(|(d, g)| *d = g);
+                    }
+                }
+            }
+        }
+    }
+    // The columns and rows the 8×8 blocks leave, one pixel at a time.
+    let at = |a: usize, b: usize| (origin + a as isize * step[0] + b as isize * step[1]) as usize;
+    for b in 0..fh {
+        let from = if b < whole(fh) { whole(fw) } else { 0 };
+        for a in from..fw {
+            lit[at(a, b)] = grey[b * fw + a];
+        }
+    }
+}
+
+/// An 8×8 block of bytes transposed: word r's byte c becomes word c's byte r (three rounds
+/// of swapping 1-, 2- and 4-byte blocks between words, Hacker's Delight §7-3).
+fn transpose8(mut w: [u64; 8]) -> [u64; 8] {
+    #[inline(always)]
+    fn swap(w: &mut [u64; 8], r: usize, span: usize, shift: u32, mask: u64) {
+        let t = ((w[r] >> shift) ^ w[r + span]) & mask;
+        w[r + span] ^= t;
+        w[r] ^= t << shift;
+    }
+    const M1: u64 = 0x00ff_00ff_00ff_00ff;
+    const M2: u64 = 0x0000_ffff_0000_ffff;
+    const M4: u64 = 0x0000_0000_ffff_ffff;
+    for r in [0, 2, 4, 6] {
+        swap(&mut w, r, 1, 8, M1);
+    }
+    for r in [0, 1, 4, 5] {
+        swap(&mut w, r, 2, 16, M2);
+    }
+    for r in [0, 1, 2, 3] {
+        swap(&mut w, r, 4, 32, M4);
+    }
+    w
+}
+
+/// The layer being made, and what the run keeps across layers.
+pub struct Raster {
+    printer: Printer,
+    k: usize,
+    /// The footprint's pixels along X and Y.
+    fw: usize,
+    fh: usize,
+    i0: u32,
+    j0: u32,
+    /// The PNG rows and columns the footprint covers.
+    pub rows: (u32, u32),
+    pub cols: (u32, u32),
+    /// The box `rows` × `cols` of the PNG, the current layer, row by row.
+    lit: Vec<u8>,
+    /// The footprint's greys of the layer being made.
+    grey: Vec<u8>,
+    /// Per footprint pixel, 1 + the highest layer that lit it (0: none), for thumbnails.
+    pub top: Vec<u32>,
+    /// Layers made.
+    layer: u32,
+    /// Per layer made, its grey levels' sum (255 a full pixel).
+    pub areas: Vec<u64>,
+    /// The scene's material labels (colour codes) when it has more than one, each with the
+    /// PNG rows of its own stack; else empty.
+    by_code: Vec<(u8, Vec<u8>)>,
+}
+
+impl Raster {
+    /// The raster of the part placed `at` on `p`'s display, `aa`×`aa` samples a pixel; a
+    /// stack per label of `codes` when there are several.
+    pub fn new(p: &Printer, at: &Placement, aa: u32, codes: &[u8]) -> Raster {
+        let [fw, fh] = at.pixels();
+        let corners = [(at.i.0, at.j.0), (at.i.1.max(1) - 1, at.j.1.max(1) - 1)];
+        let png = corners.map(|(i, j)| p.png_of(i, j));
+        let rows = (png[0].1.min(png[1].1), png[0].1.max(png[1].1) + 1);
+        let cols = (png[0].0.min(png[1].0), png[0].0.max(png[1].0) + 1);
+        let (rows, cols) = match fw * fh {
+            0 => ((0, 0), (0, 0)),
+            _ => (rows, cols),
+        };
+        let band = (rows.1 - rows.0) as usize * (cols.1 - cols.0) as usize;
+        let mut codes: Vec<u8> = codes.iter().copied().filter(|&c| c != 0).collect();
+        codes.sort_unstable();
+        codes.dedup();
+        if codes.len() < 2 {
+            codes.clear();
+        }
+        Raster {
+            printer: p.clone(),
+            k: aa as usize,
+            fw,
+            fh,
+            i0: at.i.0,
+            j0: at.j.0,
+            rows,
+            cols,
+            lit: vec![0; band],
+            grey: vec![],
+            top: vec![0; fw * fh],
+            layer: 0,
+            areas: vec![],
+            by_code: codes.into_iter().map(|c| (c, vec![0; band])).collect(),
+        }
+    }
+
+    /// Bytes a raster holds for `at` (the estimate beside the voxelizer's).
+    pub fn bytes(at: &Placement, codes: usize) -> u64 {
+        let [fw, fh] = at.pixels();
+        let band = (fw * fh) as u64;
+        band * (1 + codes as u64) + 4 * band + (1 << 20)
+    }
+
+    /// Make the layer whose samples are `s` (the voxelizer's slab: k·fw samples a row,
+    /// k·fh rows; a sample's colour code, 0 outside): its PNG box is then
+    /// [`Raster::lit`], and each material's [`Raster::material`].
+    pub fn layer(&mut self, s: &[u8]) {
+        let mut grey = std::mem::take(&mut self.grey);
+        self.greys(s, None, &mut grey);
+        let mut area = 0;
+        for (t, &g) in self.top.iter_mut().zip(&grey) {
+            area += u64::from(g);
+            if g != 0 {
+                *t = self.layer + 1;
+            }
+        }
+        let (origin, step) = self.strides();
+        place(&grey, self.fw, &mut self.lit, origin, step);
+        for m in 0..self.by_code.len() {
+            self.greys(s, Some(self.by_code[m].0), &mut grey);
+            place(&grey, self.fw, &mut self.by_code[m].1, origin, step);
+        }
+        self.grey = grey;
+        self.areas.push(area);
+        self.layer += 1;
+    }
+
+    /// Every footprint pixel's grey (row by row along Y, each along X): the share of its
+    /// samples inside, or of material `code` with one.
+    fn greys(&self, s: &[u8], code: Option<u8>, out: &mut Vec<u8>) {
+        let (k, fw) = (self.k, self.fw);
+        out.resize(fw * self.fh, 0);
+        let hit = |v: u8| u32::from(code.map_or(v != 0, |c| v == c));
+        if k == 1 {
+            for (g, &v) in out.iter_mut().zip(s) {
+                *g = (hit(v) * 255) as u8;
+            }
+            return;
+        }
+        let mut counts = vec![0u32; fw];
+        for (b, row_out) in out.chunks_exact_mut(fw).enumerate() {
+            counts.fill(0);
+            for sub in s.chunks_exact(fw * k).skip(b * k).take(k) {
+                for (c, px) in counts.iter_mut().zip(sub.chunks_exact(k)) {
+                    *c += px.iter().map(|&v| hit(v)).sum::<u32>();
+                }
+            }
+            for (g, &n) in row_out.iter_mut().zip(&counts) {
+                *g = self.grey(n);
+            }
+        }
+    }
+
+    /// Where footprint pixel (0, 0) is in the PNG box, and the steps to (1, 0) and (0, 1):
+    /// the display's placement in the PNG is a turn and flips, so these two steps give
+    /// every pixel's place.
+    fn strides(&self) -> (isize, [isize; 2]) {
+        let at = |a: u32, b: u32| {
+            let (c, r) = self.printer.png_of(self.i0 + a, self.j0 + b);
+            let bw = (self.cols.1 - self.cols.0) as isize;
+            (r - self.rows.0) as isize * bw + (c - self.cols.0) as isize
+        };
+        let o = at(0, 0);
+        let sa = if self.fw > 1 { at(1, 0) - o } else { 0 };
+        let sb = if self.fh > 1 { at(0, 1) - o } else { 0 };
+        (o, [sa, sb])
+    }
+
+    /// Grey of `n` samples in of k².
+    fn grey(&self, n: u32) -> u8 {
+        let full = (self.k * self.k) as u32;
+        ((n * 255 + full / 2) / full) as u8
+    }
+
+    /// The PNG box `rows` × `cols` of the last layer made.
+    pub fn lit(&self) -> &[u8] {
+        &self.lit
+    }
+
+    /// The material labels with a stack of their own (none for a scene of one colour).
+    pub fn materials(&self) -> Vec<u8> {
+        self.by_code.iter().map(|(c, _)| *c).collect()
+    }
+
+    /// Material `m`'s PNG box of the last layer made.
+    pub fn material(&self, m: usize) -> &[u8] {
+        &self.by_code[m].1
+    }
+
+    /// The footprint's size in pixels.
+    pub fn footprint(&self) -> [usize; 2] {
+        [self.fw, self.fh]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every placement (a turn or not, each mirror) puts each grey where the strides say,
+    /// for footprints of whole 8×8 blocks and of leftovers.
+    #[test]
+    fn place_puts_every_pixel_where_its_strides_say() {
+        for (fw, fh) in [(1, 1), (8, 8), (13, 21), (24, 3), (3, 17)] {
+            let grey: Vec<u8> = (0..fw * fh).map(|i| (i % 251) as u8 + 1).collect();
+            for turn in [false, true] {
+                for flip in [[1isize, 1], [-1, 1], [1, -1], [-1, -1]] {
+                    let (w, h) = if turn { (fh, fw) } else { (fw, fh) };
+                    let unit = |s: isize, n: usize| if s > 0 { 0 } else { n as isize - 1 };
+                    let (sa, sb, origin) = match turn {
+                        false => (
+                            flip[0],
+                            flip[1] * w as isize,
+                            unit(flip[0], w) + unit(flip[1], h) * w as isize,
+                        ),
+                        true => (
+                            flip[0] * w as isize,
+                            flip[1],
+                            unit(flip[0], h) * w as isize + unit(flip[1], w),
+                        ),
+                    };
+                    let mut lit = vec![0u8; w * h];
+                    place(&grey, fw, &mut lit, origin, [sa, sb]);
+                    for b in 0..fh {
+                        for a in 0..fw {
+                            let at = (origin + a as isize * sa + b as isize * sb) as usize;
+                            assert_eq!(lit[at], grey[b * fw + a], "{fw}x{fh} {turn} {flip:?}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,163 @@
+//! `csgpix print`: resin-printer layers (docs/printer.md). The archives read back with a
+//! standard zip reader and PNG decoder; the layers compared with PrusaSlicer 2.5's own
+//! (`vectors/printer/prusaslicer-*-sl1-layer10.png`, layer 10 of `prusa-slicer --export-sla`
+//! of the same part's STL on its SL1 profile, supports and pad off).
+
+use std::io::Read;
+use std::path::Path;
+use std::process::Command;
+
+fn csgpix(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_csgpix"))
+        .args(args)
+        .output()
+        .expect("csgpix runs")
+}
+
+fn member(archive: &Path, name: &str) -> Vec<u8> {
+    let f = std::fs::File::open(archive).unwrap();
+    let mut z = zip::ZipArchive::new(f).unwrap();
+    let mut m = z.by_name(name).unwrap();
+    let mut v = vec![];
+    m.read_to_end(&mut v).unwrap();
+    v
+}
+
+fn grey(png: &[u8]) -> image::GrayImage {
+    image::load_from_memory(png).unwrap().to_luma8()
+}
+
+/// Intersection over union of the pixels at or above 128.
+fn iou(a: &image::GrayImage, b: &image::GrayImage) -> f64 {
+    assert_eq!(a.dimensions(), b.dimensions());
+    let (mut both, mut any) = (0u64, 0u64);
+    for (p, q) in a.pixels().zip(b.pixels()) {
+        let (x, y) = (p.0[0] >= 128, q.0[0] >= 128);
+        both += u64::from(x && y);
+        any += u64::from(x || y);
+    }
+    both as f64 / any.max(1) as f64
+}
+
+#[test]
+fn layers_match_prusaslicers_on_its_sl1() {
+    let dir = tempfile::tempdir().unwrap();
+    for (scene, reference, min_iou) in [
+        ("box", "box", 1.0),
+        ("l-shape", "l", 1.0),
+        ("wedge", "wedge", 0.99),
+    ] {
+        let out = dir.path().join(format!("{scene}.sl1"));
+        let csg = format!("vectors/printer/{scene}.csg");
+        let r = csgpix(&["print", &csg, "-o", out.to_str().unwrap()]);
+        assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+        let ours = grey(&member(&out, &format!("{scene}00010.png")));
+        let path = format!("vectors/printer/prusaslicer-{reference}-sl1-layer10.png");
+        let theirs = image::open(path).unwrap().to_luma8();
+        let v = iou(&ours, &theirs);
+        assert!(
+            v >= min_iou,
+            "{scene}: IoU {v} against PrusaSlicer's layer 10"
+        );
+    }
+}
+
+#[test]
+fn an_archive_states_its_layers_and_material() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("part.sl1");
+    let r = csgpix(&[
+        "print",
+        "vectors/printer/box.csg",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(r.status.success());
+    let config = String::from_utf8(member(&out, "config.ini")).unwrap();
+    // 3 mm at 0.05 mm: 60 layers; 10 × 6 × 3 mm = 0.18 ml to within the pixels' snapping.
+    assert!(config.contains("numFast = 60\n"), "{config}");
+    assert!(config.contains("jobDir = part\n"), "{config}");
+    let ml: f64 = config
+        .lines()
+        .find_map(|l| l.strip_prefix("usedMaterial = "))
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((ml - 0.18).abs() < 0.005, "usedMaterial {ml}");
+    let thumb = grey(&member(&out, "thumbnail/thumbnail400x400.png"));
+    assert_eq!(thumb.dimensions(), (400, 400));
+    // The last layer is lit; there is no layer past it.
+    let last = grey(&member(&out, "part00059.png"));
+    assert!(last.pixels().any(|p| p.0[0] == 255));
+    let f = std::fs::File::open(&out).unwrap();
+    assert!(zip::ZipArchive::new(f)
+        .unwrap()
+        .by_name("part00060.png")
+        .is_err());
+}
+
+/// A 10 mm cube on a made-up 100 × 100 mm display of 10 × 10 pixels, placed so that its
+/// edges cut pixels in half: those pixels are grey 128 with --aa 4 (8 of 16 samples), 255
+/// inside, and thresholded away or kept whole without anti-aliasing.
+#[test]
+fn anti_aliasing_gives_the_covered_share() {
+    let dir = tempfile::tempdir().unwrap();
+    let stack = dir.path().join("stack");
+    let args = [
+        "print",
+        "vectors/printer/box.csg",
+        "--display",
+        "100x100",
+        "--pixels",
+        "100x100",
+        "--orientation",
+        "landscape",
+        "--mirror",
+        "none",
+        "--position",
+        "0.5,0",
+        "--aa",
+        "4",
+        "-o",
+        stack.to_str().unwrap(),
+    ];
+    let r = csgpix(&args);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let img = image::open(stack.join("layer-00000.png"))
+        .unwrap()
+        .to_luma8();
+    // 10 × 6 mm centred at (50.5, 50) on 1 mm pixels: x 45.5..55.5, y 47..53.
+    let row = 100 - 1 - 50; // a pixel row inside the part (y 50..51)
+    let at = |x: u32| img.get_pixel(x, row).0[0];
+    assert_eq!(
+        (at(44), at(45), at(46), at(54), at(55), at(56)),
+        (0, 128, 255, 255, 128, 0)
+    );
+    let info: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(stack.join("print.json")).unwrap()).unwrap();
+    assert_eq!(info["layers"], 60);
+}
+
+#[test]
+fn bad_printer_settings_are_one_line_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("x.sl1");
+    let o = out.to_str().unwrap();
+    for (args, says) in [
+        (vec!["--layer-height", "0"], "--layer-height"),
+        (vec!["--aa", "0"], "--aa"),
+        (vec!["--pixels", "0x10"], "--pixels"),
+        (vec!["--display", "5x5"], "does not fit"),
+    ] {
+        let mut all = vec!["print", "vectors/printer/box.csg", "-o", o];
+        all.extend(args);
+        let r = csgpix(&all);
+        let err = String::from_utf8_lossy(&r.stderr);
+        assert_eq!(r.status.code(), Some(2), "{all:?}: {err}");
+        assert!(
+            err.contains(says) && err.trim().lines().count() == 1,
+            "{err}"
+        );
+        assert!(!out.exists(), "no partial output");
+    }
+}
