@@ -161,3 +161,93 @@ fn bad_printer_settings_are_one_line_errors() {
         assert!(!out.exists(), "no partial output");
     }
 }
+
+/// A difference that cuts the top and a side away: the part is 10 × 6 × 5 mm, not the
+/// first child's 10 × 6 × 10, and sits where PrusaSlicer would put that part: 100 layers
+/// in an archive and in a stack alike, each layer the 10 × 6 mm footprint below z = 5.
+#[test]
+fn a_part_cut_by_a_difference_is_placed_by_what_remains() {
+    let dir = tempfile::tempdir().unwrap();
+    let archive = dir.path().join("cut.sl1");
+    let stack = dir.path().join("cut");
+    for out in [&archive, &stack] {
+        let r = csgpix(&[
+            "print",
+            "vectors/printer/cut-top.csg",
+            "-o",
+            out.to_str().unwrap(),
+            "--json",
+        ]);
+        assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+        let report: serde_json::Value = serde_json::from_slice(&r.stdout).unwrap();
+        assert_eq!(report["layers"], 100, "{out:?}");
+        // 10 mm over 0.04725 mm pixels: 212 columns of part, as for the uncut box.
+        assert_eq!(report["part_pixels"][0], 212, "{out:?}");
+    }
+    let box_layer = {
+        let r = csgpix(&[
+            "print",
+            "vectors/printer/box.csg",
+            "-o",
+            dir.path().join("box.sl1").to_str().unwrap(),
+        ]);
+        assert!(r.status.success());
+        grey(&member(&dir.path().join("box.sl1"), "box00010.png"))
+    };
+    let cut_layer = grey(&member(&archive, "cut00010.png"));
+    assert_eq!(iou(&box_layer, &cut_layer), 1.0);
+    let stacked = image::open(stack.join("layer-00010.png"))
+        .unwrap()
+        .to_luma8();
+    assert_eq!(iou(&box_layer, &stacked), 1.0);
+}
+
+/// A scene of two colours: besides the part's stack, one stack per colour code, each the
+/// pixels of its own cube, the two together the part.
+#[test]
+fn each_material_has_its_own_stack() {
+    let dir = tempfile::tempdir().unwrap();
+    let stack = dir.path().join("two");
+    let r = csgpix(&[
+        "print",
+        "vectors/printer/two-colours.csg",
+        "-o",
+        stack.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let report: serde_json::Value = serde_json::from_slice(&r.stdout).unwrap();
+    let codes: Vec<u64> = report["materials"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_u64().unwrap())
+        .collect();
+    assert_eq!(codes.len(), 2, "{report}");
+    // Layer 50 (z = 2.525) is above the 2 mm cube: only the 3 mm one is lit there.
+    for layer in [0, 50] {
+        let all = image::open(stack.join(format!("layer-{layer:05}.png")))
+            .unwrap()
+            .to_luma8();
+        let lit = |img: &image::GrayImage| img.pixels().filter(|p| p.0[0] > 0).count();
+        let parts: Vec<usize> = codes
+            .iter()
+            .map(|c| {
+                lit(
+                    &image::open(stack.join(format!("material-{c}-layer-{layer:05}.png")))
+                        .unwrap()
+                        .to_luma8(),
+                )
+            })
+            .collect();
+        assert_eq!(
+            parts.iter().sum::<usize>(),
+            lit(&all),
+            "layer {layer}: {parts:?}"
+        );
+        assert_eq!(
+            parts.iter().filter(|&&n| n > 0).count(),
+            if layer == 0 { 2 } else { 1 }
+        );
+    }
+}

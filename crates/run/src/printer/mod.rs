@@ -106,34 +106,31 @@ impl PrintJob {
         let vjob = self.voxelize_job();
         let loaded = vjob.load(progress)?;
         let part = part_box(&loaded).map_err(|m| Error::options("SCENE", m))?;
-        let part = match exact_box(&loaded.scene.root) {
-            true => part,
-            false => self.lit_box(&vjob, &loaded, part)?,
+        // A tree a difference or intersection can cut: its box, cut to what is lit. An
+        // archive is written on the tree's box first and again only if the cut differs (it
+        // seldom does); a stack's files cannot be unwritten, so its cut comes first.
+        let exact = exact_box(&loaded.scene.root);
+        let part = match (exact, kind) {
+            (false, archive::Kind::Stack) => self.lit_box(&vjob, &loaded, part)?,
+            _ => part,
         };
-        let placed = self.place(&vjob, part)?;
-        let passes = self.passes(&vjob, &loaded, &placed, self.aa as usize)?;
-        let grid = passes.last().map(|p| p.0.slicer.grid);
-        let grid = grid.ok_or_else(|| Error::options("SCENE", "the part has no layer"))?;
-        let codes = passes.first().map_or(&[][..], |p| &p.0.slicer.colours[..]);
-        let bytes = raster::Raster::bytes(&placed, codes.len().min(256));
-        let need = passes.iter().map(|p| p.1).max().unwrap_or(0);
-        let need = need.saturating_add(bytes);
-        self.max_memory
-            .check(need, "this print", "raise --max-memory")?;
-        let mut raster = raster::Raster::new(&self.printer, &placed, self.aa, codes);
+        let at = (&vjob, &loaded, progress);
+        let mut done = self.print_at(&mut outs, out, kind, at, part)?;
+        if !exact && kind == archive::Kind::Prusa {
+            let k = self.aa as usize;
+            let cut = self.cut_box((&vjob, &loaded), part, (&done.placed, k), &done.lit)?;
+            if cut != part {
+                done = self.print_at(&mut outs, out, kind, at, cut)?;
+            }
+        }
+        let Printed {
+            placed,
+            grid,
+            need,
+            summary,
+            ..
+        } = done;
         let (w, h) = self.printer.png_size();
-        let png = png::LayerPng::new(w, h, raster.rows, raster.cols);
-        progress.stage("layers", placed.layers as u64);
-        let make = Make {
-            vjob: &vjob,
-            passes: &passes,
-            png: &png,
-            progress,
-        };
-        let summary = match kind {
-            archive::Kind::Prusa => self.write_prusa(&mut outs, out, &placed, &mut raster, make)?,
-            archive::Kind::Stack => self.write_stack(&mut outs, out, &placed, &mut raster, make)?,
-        };
         progress.finish();
         outs.commit()?;
         Ok(PrintReport {
@@ -162,6 +159,48 @@ impl PrintJob {
                 .iter()
                 .map(|w| w.to_string())
                 .collect(),
+        })
+    }
+
+    /// The print of the part of box `part` staged in `out`.
+    fn print_at(
+        &self,
+        outs: &mut Outputs,
+        out: csgpix_output::Out,
+        kind: archive::Kind,
+        (vjob, loaded, progress): (&VoxelizeJob, &Loaded, &dyn Progress),
+        part: Box3,
+    ) -> crate::Result<Printed> {
+        let placed = self.place(vjob, part)?;
+        let passes = self.passes(vjob, loaded, &placed, self.aa as usize)?;
+        let grid = passes.last().map(|p| p.0.slicer.grid);
+        let grid = grid.ok_or_else(|| Error::options("SCENE", "the part has no layer"))?;
+        let codes = passes.first().map_or(&[][..], |p| &p.0.slicer.colours[..]);
+        let bytes = raster::Raster::bytes(&placed, codes.len().min(256));
+        let need = passes.iter().map(|p| p.1).max().unwrap_or(0);
+        let need = need.saturating_add(bytes);
+        self.max_memory
+            .check(need, "this print", "raise --max-memory")?;
+        let mut raster = raster::Raster::new(&self.printer, &placed, self.aa, codes);
+        let (w, h) = self.printer.png_size();
+        let png = png::LayerPng::new(w, h, raster.rows, raster.cols);
+        progress.stage("layers", placed.layers as u64);
+        let make = Make {
+            vjob,
+            passes: &passes,
+            png: &png,
+            progress,
+        };
+        let summary = match kind {
+            archive::Kind::Prusa => self.write_prusa(outs, out, &placed, &mut raster, make)?,
+            archive::Kind::Stack => self.write_stack(outs, out, &placed, &mut raster, make)?,
+        };
+        Ok(Printed {
+            placed,
+            grid,
+            need,
+            summary,
+            lit: raster.lit_extent,
         })
     }
 
@@ -254,7 +293,7 @@ impl PrintJob {
         &self,
         make: &Make,
         raster: &mut raster::Raster,
-        emit: &mut dyn FnMut(usize, &[Vec<u8>]) -> std::io::Result<()>,
+        emit: &mut Emit,
     ) -> crate::Result<[u64; 2]> {
         let Make {
             vjob,
@@ -369,11 +408,22 @@ impl PrintJob {
                 csgpix_voxel::voxelize_slabs(sl, plan.route, set, eval, &|| {}, slabs, &mut sink)
             })?;
         }
-        let (lo, mut hi) = lit.cut(part, &placed, &self.printer);
-        // The top layer counts when the part reaches its top (PrusaSlicer's count): one
-        // thin slab just below that top says whether it does.
+        self.cut_box((vjob, loaded), part, (&placed, 1), &lit)
+    }
+
+    /// `part` cut to the pixels and layers `lit` lit when placed `at`; its top a layer
+    /// lower when the part does not reach the top layer's top (PrusaSlicer's count): one
+    /// slab just below that top says whether it does.
+    fn cut_box(
+        &self,
+        (vjob, loaded): (&VoxelizeJob, &Loaded),
+        part: Box3,
+        (at, k): (&place::Placement, usize),
+        lit: &Lit,
+    ) -> crate::Result<Box3> {
+        let (lo, mut hi) = lit.cut(part, at, &self.printer, k);
         let reach = hi.z - 1e-6 * self.printer.layer_height;
-        if hi.z < part.1.z && !self.lit_at(vjob, loaded, &placed, reach)? {
+        if hi.z < part.1.z && !self.lit_at(vjob, loaded, at, reach)? {
             hi.z -= self.printer.layer_height;
         }
         Ok((lo, hi))
@@ -393,7 +443,11 @@ impl PrintJob {
         let (lo, hi) = (lo.with_z(z - half), hi.with_z(z + half));
         let grid = Grid::new([placed.pixels()[0], placed.pixels()[1], 1], lo, hi)
             .map_err(|e| Error::from(csgpix_voxel::Error::from(e)))?;
-        let plan = vjob.plan_on(loaded, grid).map_err(Error::from)??;
+        // The float model: the word's depths are a 1/1024 of the slab apart, coarser
+        // than the step below the top that this asks about.
+        let mut exact = vjob.clone();
+        exact.voxels.model = csgpix_draw::Model::Float;
+        let plan = exact.plan_on(loaded, grid).map_err(Error::from)??;
         let mut any = false;
         plan.pool.install(|| {
             let set = vjob.voxels.equations.set();
@@ -454,6 +508,9 @@ struct Make<'a> {
     png: &'a png::LayerPng,
     progress: &'a dyn Progress,
 }
+
+/// Where a layer's PNG files go: its index, the part's file, then each material's.
+type Emit<'e> = dyn FnMut(usize, &[Vec<u8>]) -> std::io::Result<()> + 'e;
 
 /// A voxelizer plan, its memory estimate and the layers it makes.
 type Pass = (crate::voxelize::plan::Plan, u64, std::ops::Range<usize>);
@@ -563,9 +620,19 @@ fn exact_box(n: &CsgNode) -> bool {
     }
 }
 
+/// What one print made: where, on which grid, its memory estimate, its totals, and the
+/// pixels and layers it lit.
+struct Printed {
+    placed: place::Placement,
+    grid: Grid,
+    need: u64,
+    summary: archive::Summary,
+    lit: Lit,
+}
+
 /// The pixels and layers lit in a pass: first and last along X, Y and Z.
-#[derive(Default)]
-struct Lit {
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Lit {
     i: Option<(usize, usize)>,
     j: Option<(usize, usize)>,
     l: Option<(usize, usize)>,
@@ -577,7 +644,7 @@ fn widen(r: Option<(usize, usize)>, a: usize, b: usize) -> Option<(usize, usize)
 
 impl Lit {
     /// Layer `l`'s samples `s`, rows `fw` wide.
-    fn add(&mut self, l: usize, s: &[u8], fw: usize) {
+    pub fn add(&mut self, l: usize, s: &[u8], fw: usize) {
         for (j, row) in s.chunks_exact(fw.max(1)).enumerate() {
             let first = row.iter().position(|&v| v != 0);
             if let Some(a) = first {
@@ -589,21 +656,42 @@ impl Lit {
         }
     }
 
-    /// `part` cut to the lit pixels' and layers' edges (scene units), where they are inside.
-    fn cut(&self, (lo, hi): Box3, at: &place::Placement, p: &Printer) -> Box3 {
+    /// `part` cut to what was lit with `k`×`k` samples a pixel when placed `at`. A side the
+    /// lit pixels reach to within a pixel of stays as it is: the part reaches it, as far as
+    /// the samples can tell. A side they stop short of moves in to the last unlit sample
+    /// before them (the part does not reach that far), half a sample outside the lit pixels:
+    /// there the box is known to that half sample, along Z to a layer.
+    fn cut(&self, (lo, hi): Box3, at: &place::Placement, p: &Printer, k: usize) -> Box3 {
         let (Some(i), Some(j), Some(l)) = (self.i, self.j, self.l) else {
             return (lo, hi);
         };
+        let [fw, fh] = at.pixels();
         let [px, py] = p.pitch();
         let x = |i: usize| (f64::from(at.i.0) + i as f64) * px - at.shift.x;
         let y = |j: usize| (f64::from(at.j.0) + j as f64) * py - at.shift.y;
-        let bottom = |l: usize| match l {
-            0 => 0.0,
-            _ => p.initial_layer_height + (l - 1) as f64 * p.layer_height,
-        };
-        let top = |l: usize| p.initial_layer_height + l as f64 * p.layer_height;
-        let a = DVec3::new(x(i.0), y(j.0), at.floor + bottom(l.0));
-        let b = DVec3::new(x(i.1 + 1), y(j.1 + 1), at.floor + top(l.1));
+        let (hx, hy) = (px / (2 * k) as f64, py / (2 * k) as f64);
+        let low = |first: usize, at: f64| if first <= 1 { f64::NEG_INFINITY } else { at };
+        let high = |last: usize, n: usize, at: f64| if last + 2 >= n { f64::INFINITY } else { at };
+        let sample = |l: usize| at.floor + place::sample_height(p, l);
+        let a = DVec3::new(
+            low(i.0, x(i.0) - hx),
+            low(j.0, y(j.0) - hy),
+            if l.0 == 0 {
+                f64::NEG_INFINITY
+            } else {
+                sample(l.0 - 1)
+            },
+        );
+        let top = at.floor + p.initial_layer_height + l.1 as f64 * p.layer_height;
+        let b = DVec3::new(
+            high(i.1, fw, x(i.1 + 1) + hx),
+            high(j.1, fh, y(j.1 + 1) + hy),
+            if l.1 + 1 >= at.layers {
+                f64::INFINITY
+            } else {
+                top
+            },
+        );
         (lo.max(a), hi.min(b))
     }
 }

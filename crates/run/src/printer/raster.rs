@@ -32,7 +32,13 @@ fn place(grey: &[u8], fw: usize, lit: &mut [u8], origin: isize, step: [isize; 2]
                 let at = (b0 + r) * fw + a0;
                 u64::from_le_bytes(grey[at..at + 8].try_into().unwrap_or([0; 8]))
             });
-            for (c, word) in transpose8(rows).into_iter().enumerate() {
+            // A block of one grey (inside or outside the part, most of a layer) is its own
+            // transpose.
+            let uniform = rows
+                .iter()
+                .all(|&w| w == u64::from_le_bytes([rows[0] as u8; 8]));
+            let words = if uniform { rows } else { transpose8(rows) };
+            for (c, word) in words.into_iter().enumerate() {
                 let row = origin + (a0 + c) as isize * step[0];
                 let bytes = word.to_le_bytes();
                 match step[1] >= 0 {
@@ -100,6 +106,8 @@ pub struct Raster {
     pub cols: (u32, u32),
     /// The box `rows` × `cols` of the PNG, the current layer, row by row.
     lit: Vec<u8>,
+    /// The pixels and layers lit so far.
+    pub lit_extent: super::Lit,
     /// The footprint's greys of the layer being made.
     grey: Vec<u8>,
     /// Per footprint pixel, 1 + the highest layer that lit it (0: none), for thumbnails.
@@ -143,6 +151,7 @@ impl Raster {
             rows,
             cols,
             lit: vec![0; band],
+            lit_extent: super::Lit::default(),
             grey: vec![],
             top: vec![0; fw * fh],
             layer: 0,
@@ -171,6 +180,7 @@ impl Raster {
                 *t = self.layer + 1;
             }
         }
+        self.lit_extent.add(self.layer as usize, &grey, self.fw);
         let (origin, step) = self.strides();
         place(&grey, self.fw, &mut self.lit, origin, step);
         for m in 0..self.by_code.len() {
