@@ -42,74 +42,9 @@ import tempfile
 import time
 from pathlib import Path
 
+from processes import SLOW, best_of, run_timed
+
 ROOT = Path(__file__).resolve().parents[2]
-SLOW = 30.0  # seconds: one run above this is not repeated
-CHILD_TIMEOUT = 900.0
-
-
-# ---------------------------------------------------------------- processes
-
-
-TIME = Path("/usr/bin/time")
-
-
-def run_timed(cmd, stdout_path=None, timeout=CHILD_TIMEOUT, rss=False):
-    """Run `cmd`; (wall seconds, peak RSS in MiB or None, exit status, stderr tail).
-
-    The peak RSS (`rss=True`) comes from `/usr/bin/time -f %M`, which adds its own exec to the
-    wall time; without it the RSS is None. `os.wait4`'s ru_maxrss is not used: a child
-    forked (vfork) from this process starts with this process's high-water mark, which the
-    scenes' JSON makes far larger than csgpix's own."""
-    out = open(stdout_path, "wb") if stdout_path else subprocess.DEVNULL
-    err = tempfile.TemporaryFile()
-    rss_file = None
-    if rss and TIME.exists():
-        fd, rss_file = tempfile.mkstemp(prefix="manifold_peer.rss.")
-        os.close(fd)
-        cmd = [str(TIME), "-f", "%M", "-o", rss_file] + list(cmd)
-    t0 = time.perf_counter()
-    p = subprocess.Popen(cmd, stdout=out, stderr=err)
-    deadline = t0 + timeout
-    while True:
-        pid, status, ru = os.wait4(p.pid, os.WNOHANG)
-        if pid:
-            break
-        if time.perf_counter() > deadline:
-            p.kill()
-            pid, status, ru = os.wait4(p.pid, 0)
-            status = -9
-            break
-        time.sleep(0.002)
-    wall = time.perf_counter() - t0
-    p.returncode = 0  # reaped by wait4; keep Popen from waiting again
-    if stdout_path:
-        out.close()
-    err.seek(0)
-    tail = err.read()[-2000:].decode("utf-8", "replace")
-    err.close()
-    code = os.waitstatus_to_exitcode(status) if status != -9 else -9
-    peak = None
-    if rss_file:
-        try:
-            peak = int(Path(rss_file).read_text().split()[-1]) / 1024.0
-        except (ValueError, IndexError):
-            pass
-        os.unlink(rss_file)
-    return wall, peak, code, tail
-
-
-def best_of(fn, runs=3):
-    """Best of `runs` calls of fn() -> (seconds, extra); one call when the first is slow."""
-    best = None
-    for k in range(runs):
-        r = fn()
-        if r is None:
-            return None
-        if best is None or r[0] < best[0]:
-            best = r
-        if k == 0 and r[0] > SLOW:
-            break
-    return best
 
 
 # ---------------------------------------------------------------- NRRD

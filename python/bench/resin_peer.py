@@ -73,70 +73,17 @@ import time
 import zipfile
 from pathlib import Path
 
+from processes import best_of, run_timed
+
 ROOT = Path(__file__).resolve().parents[2]
 DESIGNS = ROOT / "vectors/designs"
 MESHES = DESIGNS / "meshes"
 INI = Path(__file__).resolve().parent / "prusa-sl1.ini"
-SLOW = 30.0  # seconds: one run above this is not repeated
-CHILD_TIMEOUT = 900.0
-TIME = Path("/usr/bin/time")
 LAYER_H = 0.05  # the SL1 profile's layer height and initial layer height, mm
 LAYER_RE = re.compile(r"^[^/]*?(\d{5})\.png$")
 
 
 # ---------------------------------------------------------------- processes
-
-
-def run_timed(cmd, stdout_path=None, timeout=CHILD_TIMEOUT, rss=False, cwd=None, env=None):
-    """Run `cmd`; (wall seconds, peak RSS in MiB or None, exit status, stderr tail).
-
-    The peak RSS (`rss=True`) comes from `/usr/bin/time -f %M`, which adds its own exec to the
-    wall time; without it the RSS is None (os.wait4's ru_maxrss is not used: a child forked
-    from this process starts with this process's high-water mark)."""
-    out = open(stdout_path, "wb") if stdout_path else subprocess.DEVNULL
-    err = tempfile.TemporaryFile()
-    rss_file = None
-    if rss and TIME.exists():
-        fd, rss_file = tempfile.mkstemp(prefix="resin_peer.rss.")
-        os.close(fd)
-        cmd = [str(TIME), "-f", "%M", "-o", rss_file] + list(cmd)
-    t0 = time.perf_counter()
-    p = subprocess.Popen(cmd, stdout=out, stderr=err, stdin=subprocess.DEVNULL, cwd=cwd, env=env)
-    try:
-        p.wait(timeout=timeout)
-        code = p.returncode
-    except subprocess.TimeoutExpired:
-        p.kill()
-        p.wait()
-        code = -9
-    wall = time.perf_counter() - t0
-    if stdout_path:
-        out.close()
-    err.seek(0)
-    tail = err.read()[-4000:].decode("utf-8", "replace")
-    err.close()
-    peak = None
-    if rss_file:
-        try:
-            peak = int(Path(rss_file).read_text().split()[-1]) / 1024.0
-        except (ValueError, IndexError):
-            pass
-        os.unlink(rss_file)
-    return wall, peak, code, tail
-
-
-def best_of(fn, runs=3):
-    """Best of `runs` calls of fn() -> (seconds, ...) or None; one call when the first is slow."""
-    best = None
-    for k in range(runs):
-        r = fn()
-        if r is None:
-            return None
-        if best is None or r[0] < best[0]:
-            best = r
-        if k == 0 and r[0] > SLOW:
-            break
-    return best
 
 
 def last_line(text, code):

@@ -77,7 +77,7 @@ pub struct Args {
 /// `--printer`: a bundled profile.
 fn printer(s: &str) -> Result<Printer, String> {
     Printer::named(s).ok_or_else(|| {
-        let names: Vec<&str> = PROFILES.iter().map(|p| p.id).collect();
+        let names: Vec<&str> = PROFILES.iter().map(|p| &*p.id).collect();
         format!("{s:?}: not a printer; one of {}", names.join(", "))
     })
 }
@@ -96,7 +96,8 @@ where
 }
 
 impl Args {
-    /// The profile with every override the flags give.
+    /// The profile with every override the flags give: the `--printer`'s, else `sl1s` for an
+    /// `*.sl1s` output, else the job's default.
     fn printer(&self) -> Printer {
         let by_ext = self
             .out
@@ -162,4 +163,25 @@ fn print_text(r: &PrintReport) {
         r.wall_seconds
     );
     super::report_line(&line, false);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The required flags alone make the default job (the memory limit aside: its default
+    /// is the memory available when the flags are parsed).
+    #[test]
+    fn flags_make_the_default_job() {
+        let argv = ["csgpix", "print", "part.csg", "-o", "part.sl1"];
+        let a = parsed!(Print, argv);
+        let job = a.job();
+        let want = PrintJob {
+            scene: "part.csg".into(),
+            out: "part.sl1".into(),
+            max_memory: job.max_memory,
+            ..PrintJob::default()
+        };
+        assert_eq!(job, want);
+    }
 }

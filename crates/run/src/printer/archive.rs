@@ -249,7 +249,7 @@ impl StackInfo<'_> {
     pub fn of<'a>(p: &'a Printer, at: &Placement, aa: u32, s: &Summary) -> StackInfo<'a> {
         let (w, h) = p.png_size();
         StackInfo {
-            printer: p.id,
+            printer: &p.id,
             image: [w, h],
             display_mm: p.size,
             pixels: p.pixels,

@@ -24,7 +24,7 @@ use csgpix_scene::solid::CsgNode;
 use csgpix_voxel::sampled::Loaded;
 use csgpix_voxel::Grid;
 use glam::{DVec2, DVec3};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use csgpix_output::Outputs;
 
@@ -39,7 +39,8 @@ pub use profile::{Printer, PROFILES};
 pub const MAX_AA: u32 = 16;
 
 /// A print job (`csgpix print`): the scene, the printer, the output.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct PrintJob {
     /// OpenSCAD `.csg` (or `.scad`) scene, in mm.
     pub scene: PathBuf,
@@ -51,15 +52,40 @@ pub struct PrintJob {
     /// The part's centre, mm from the display's centre.
     pub centre: [f64; 2],
     pub threads: Option<usize>,
+    /// The memory limit; not serialized: the memory available is the machine's, now.
+    #[serde(skip, default = "default_limit")]
     pub max_memory: Limit,
     pub read: ReadSettings,
+    #[serde(with = "crate::named::by_name")]
     pub fallback: Fallback,
+}
+
+/// The default limit: the memory available now, named as the command line names it.
+fn default_limit() -> Limit {
+    Limit::new(None, "--max-memory")
+}
+
+impl Default for PrintJob {
+    /// The documented defaults: the SL1, no anti-aliasing (`--aa 1`), the part centred.
+    fn default() -> Self {
+        PrintJob {
+            scene: PathBuf::new(),
+            out: PathBuf::new(),
+            printer: PROFILES[0].clone(),
+            aa: 1,
+            centre: [0.0, 0.0],
+            threads: None,
+            max_memory: default_limit(),
+            read: ReadSettings::default(),
+            fallback: Fallback::default(),
+        }
+    }
 }
 
 /// What a print job made.
 #[derive(Serialize, Clone, Debug)]
 pub struct PrintReport {
-    pub printer: &'static str,
+    pub printer: String,
     pub out: PathBuf,
     pub archive: &'static str,
     pub layers: usize,
@@ -134,7 +160,7 @@ impl PrintJob {
         progress.finish();
         outs.commit()?;
         Ok(PrintReport {
-            printer: self.printer.id,
+            printer: self.printer.id.to_string(),
             out: self.out.clone(),
             archive: kind.name(),
             layers: placed.layers,

@@ -3,6 +3,10 @@
 //! bundled profiles (`PrusaResearch.ini`, "Original Prusa SL1" and "Original Prusa SL1S
 //! SPEED"); the two generic panels are the published sizes of common 4K and 8K LCDs.
 
+use std::borrow::Cow;
+
+use serde::{Deserialize, Serialize};
+
 /// How the archive is packed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Archive {
@@ -14,14 +18,14 @@ pub enum Archive {
 }
 
 /// A printer's display and layer settings.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Printer {
     /// The profile's name on the command line (`--printer`).
-    pub id: &'static str,
+    pub id: Cow<'static, str>,
     /// `printerModel` in `config.ini` (SL1, SL1S), or the panel's name.
-    pub model: &'static str,
+    pub model: Cow<'static, str>,
     /// PrusaSlicer's `printer_settings_id`.
-    pub settings_id: &'static str,
+    pub settings_id: Cow<'static, str>,
     /// The display's size, mm, along the bed's X and Y (`display_width`, `display_height`).
     pub size: [f64; 2],
     /// Pixels along X and Y (`display_pixels_x`, `display_pixels_y`).
@@ -52,9 +56,9 @@ pub struct Printer {
 /// `--printer`: the bundled profiles.
 pub const PROFILES: [Printer; 4] = [
     Printer {
-        id: "sl1",
-        model: "SL1",
-        settings_id: "Original Prusa SL1",
+        id: Cow::Borrowed("sl1"),
+        model: Cow::Borrowed("SL1"),
+        settings_id: Cow::Borrowed("Original Prusa SL1"),
         size: [120.96, 68.04],
         pixels: [2560, 1440],
         portrait: true,
@@ -69,9 +73,9 @@ pub const PROFILES: [Printer; 4] = [
         area_fill: 50.0,
     },
     Printer {
-        id: "sl1s",
-        model: "SL1S",
-        settings_id: "Original Prusa SL1S SPEED",
+        id: Cow::Borrowed("sl1s"),
+        model: Cow::Borrowed("SL1S"),
+        settings_id: Cow::Borrowed("Original Prusa SL1S SPEED"),
         size: [128.0, 81.0],
         pixels: [2560, 1620],
         portrait: true,
@@ -86,9 +90,9 @@ pub const PROFILES: [Printer; 4] = [
         area_fill: 45.0,
     },
     Printer {
-        id: "mono-4k",
-        model: "6.1-inch 4K mono LCD",
-        settings_id: "6.1-inch 4K mono LCD (3840x2400, 35 um)",
+        id: Cow::Borrowed("mono-4k"),
+        model: Cow::Borrowed("6.1-inch 4K mono LCD"),
+        settings_id: Cow::Borrowed("6.1-inch 4K mono LCD (3840x2400, 35 um)"),
         size: [134.4, 84.0],
         pixels: [3840, 2400],
         portrait: false,
@@ -103,9 +107,9 @@ pub const PROFILES: [Printer; 4] = [
         area_fill: 50.0,
     },
     Printer {
-        id: "mono-8k",
-        model: "10-inch 8K mono LCD",
-        settings_id: "10-inch 8K mono LCD (7680x4320, 28.5 um)",
+        id: Cow::Borrowed("mono-8k"),
+        model: Cow::Borrowed("10-inch 8K mono LCD"),
+        settings_id: Cow::Borrowed("10-inch 8K mono LCD (7680x4320, 28.5 um)"),
         size: [218.88, 123.12],
         pixels: [7680, 4320],
         portrait: false,
