@@ -55,7 +55,9 @@ lit boxes' corners meet, and the IoU against csgpix's mask mirrored.
 `--json` prints every figure as JSON on stdout instead of the table (`--table-from FILE` prints
 the table of such a file). Progress goes to stderr.
 If numpy or Pillow is missing, or PrusaSlicer is not installed, the script says so and exits
-0 (the peer is optional).
+0 (the peer is optional). Installing Debian's prusa-slicer brings the Noto fonts, which
+fontconfig then prefers for sans-serif bold: the text designs of tests/designs.rs leave their
+ledger on such a machine (remove fonts-noto-core, fonts-noto-hinted, fonts-noto-ui-core after).
 """
 
 import argparse
