@@ -263,16 +263,81 @@ pub(crate) fn pieces(
                     s.vertices.iter().map(|&v| DVec3::from(v)).collect(),
                 ));
             }
-            CsgNode::Solid(i) => out.push(Piece::Mesh(leaf_mesh(*i, solids, imports)?)),
+            CsgNode::Solid(i) => out.push(mesh_piece(leaf_mesh(*i, solids, imports)?)),
             _ => {
                 let m = mesh_of(n, solids, imports)?;
                 if !m.is_empty() {
-                    out.push(Piece::Mesh(m));
+                    out.push(mesh_piece(m));
                 }
             }
         }
     }
     Ok(out)
+}
+
+/// A closed mesh as a piece: convex by its hull's vertices when it is its own hull (a sphere
+/// cut by a plane, a box with a chamfer), so that its sum with a convex piece is one hull
+/// rather than one hull per triangle; else the mesh.
+fn mesh_piece(m: Mesh) -> Piece {
+    match convex_hull_of(&m) {
+        Some(v) => Piece::Convex(v),
+        None => Piece::Mesh(m),
+    }
+}
+
+/// Most vertex-plane tests [`convex_hull_of`] makes; past them a mesh stays a mesh.
+const CONVEX_TESTS: usize = 1 << 24;
+
+/// The hull's vertices when closed mesh `m` is convex: every vertex of `m` on the hull's
+/// surface and the volumes equal. The mesh lies within its hull, so equal volumes leave only
+/// a difference of no volume, and a cavity or dent, however thin, has a vertex inside the hull.
+/// Tolerances are relative, as the hull's ([`hull3`]).
+pub(crate) fn convex_hull_of(m: &Mesh) -> Option<Vec<DVec3>> {
+    const EPS: f64 = 1e-9;
+    let points = distinct(m.iter().flatten().copied());
+    let (v, faces) = hull3(&points).ok()?;
+    if points.len().saturating_mul(faces.len()) > CONVEX_TESTS {
+        return None;
+    }
+    let planes: Vec<(DVec3, f64)> = faces.iter().map(|f| face_plane(&v, f)).collect();
+    let extent = points
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), &p| {
+            (a.min(p), b.max(p))
+        });
+    let eps = EPS * (extent.1 - extent.0).max_element();
+    let on_surface = |p: &DVec3| {
+        planes
+            .iter()
+            .map(|(n, d)| n.dot(*p) - d)
+            .fold(f64::NEG_INFINITY, f64::max)
+            >= -eps
+    };
+    let vs = &v;
+    let hull_volume: f64 = faces
+        .iter()
+        .flat_map(|f| (1..f.len() - 1).map(move |i| [vs[f[0]], vs[f[i]], vs[f[i + 1]]]))
+        .map(|t| t[0].dot(t[1].cross(t[2])) / 6.0)
+        .sum();
+    let mesh_volume: f64 = m.iter().map(|t| t[0].dot(t[1].cross(t[2])) / 6.0).sum();
+    let same = (hull_volume - mesh_volume).abs() <= EPS * hull_volume;
+    (same && points.iter().all(on_surface)).then_some(v)
+}
+
+/// A convex face's unit outward normal n and offset d (n·x = d on it), by Newell's method.
+fn face_plane(v: &[DVec3], f: &[usize]) -> (DVec3, f64) {
+    let n = (0..f.len())
+        .map(|i| {
+            let (a, b) = (v[f[i]], v[f[(i + 1) % f.len()]]);
+            DVec3::new(
+                (a.y - b.y) * (a.z + b.z),
+                (a.z - b.z) * (a.x + b.x),
+                (a.x - b.x) * (a.y + b.y),
+            )
+        })
+        .sum::<DVec3>()
+        .normalize_or_zero();
+    (n, n.dot(v[f[0]]))
 }
 
 /// A 2D operand of `minkowski()` as a union of pieces: unions distributed, a convex outline
@@ -781,6 +846,39 @@ mod tests {
 
     fn volume(m: &Mesh) -> f64 {
         m.iter().map(|t| t[0].dot(t[1].cross(t[2]))).sum::<f64>() / 6.0
+    }
+
+    #[test]
+    fn a_convex_cut_is_one_convex_piece_and_a_dent_is_not() {
+        let s = [
+            cube([0.0; 3], [2.0; 3]),
+            cube([1.0, -1.0, -1.0], [3.0, 3.0, 3.0]), // cuts off a half: convex
+            cube([1.0, 1.0, -1.0], [3.0, 3.0, 3.0]),  // cuts out a corner: an L
+            cube([0.999, -1.0, 1.0], [1.001, 3.0, 3.0]), // a thin slot from the top
+        ];
+        let cut = |k| CsgNode::Difference(vec![CsgNode::Solid(0), CsgNode::Solid(k)]);
+        let p = pieces(&cut(1), &s, &[]).unwrap();
+        let [Piece::Convex(v)] = &p[..] else {
+            panic!("a half cube is one convex piece")
+        };
+        assert_eq!(v.len(), 8);
+        for k in [2, 3] {
+            let p = pieces(&cut(k), &s, &[]).unwrap();
+            assert!(matches!(&p[..], [Piece::Mesh(_)]), "cut {k} is not convex");
+        }
+        // Its sum with a cube is one hull: the box [0,1]x[0,2]x[0,2] grown by 1.
+        let q = [Piece::Convex(s[0].vertices.iter().map(|&v| DVec3::from(v)).collect())];
+        let sum = minkowski3(&p_half(&s), &q, 1 << 20).unwrap();
+        let [Piece::Convex(v)] = &sum[..] else {
+            panic!("one hull")
+        };
+        let hi = v.iter().fold(DVec3::NEG_INFINITY, |a, &b| a.max(b));
+        assert_eq!(hi, DVec3::new(3.0, 4.0, 4.0));
+    }
+
+    fn p_half(s: &[ConvexSolid]) -> Vec<Piece> {
+        let cut = CsgNode::Difference(vec![CsgNode::Solid(0), CsgNode::Solid(1)]);
+        pieces(&cut, s, &[]).unwrap()
     }
 
     #[test]
