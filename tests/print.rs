@@ -251,3 +251,41 @@ fn each_material_has_its_own_stack() {
         );
     }
 }
+
+/// Material stacks come from `color()` and only in a PNG stack: solids without a colour
+/// (which `voxelize` codes 1..6 in turn) are one material, and an archive (one resin) holds
+/// the part's layers alone.
+#[test]
+fn materials_only_where_the_scene_has_colours() {
+    let dir = tempfile::tempdir().unwrap();
+    let plain = dir.path().join("plain.csg");
+    std::fs::write(
+        &plain,
+        "cube(size = [10, 6, 3]);\nmultmatrix([[1, 0, 0, 12], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = [4, 6, 2]);\n",
+    )
+    .unwrap();
+    let report = |scene: &str, out: &Path| {
+        let r = csgpix(&["print", scene, "-o", out.to_str().unwrap(), "--json"]);
+        assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+        serde_json::from_slice::<serde_json::Value>(&r.stdout).unwrap()
+    };
+    let stack = dir.path().join("plain");
+    assert_eq!(
+        report(plain.to_str().unwrap(), &stack)["materials"],
+        serde_json::json!([])
+    );
+    let names: Vec<String> = std::fs::read_dir(&stack)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert!(
+        names.iter().all(|n| !n.starts_with("material-")),
+        "{names:?}"
+    );
+    let archive = dir.path().join("two.sl1");
+    let r = report("vectors/printer/two-colours.csg", &archive);
+    assert_eq!(r["materials"], serde_json::json!([]), "{r}");
+    let f = std::fs::File::open(&archive).unwrap();
+    let z = zip::ZipArchive::new(f).unwrap();
+    assert!(z.file_names().all(|n| !n.contains("material")));
+}

@@ -867,7 +867,9 @@ mod tests {
             assert!(matches!(&p[..], [Piece::Mesh(_)]), "cut {k} is not convex");
         }
         // Its sum with a cube is one hull: the box [0,1]x[0,2]x[0,2] grown by 1.
-        let q = [Piece::Convex(s[0].vertices.iter().map(|&v| DVec3::from(v)).collect())];
+        let q = [Piece::Convex(
+            s[0].vertices.iter().map(|&v| DVec3::from(v)).collect(),
+        )];
         let sum = minkowski3(&p_half(&s), &q, 1 << 20).unwrap();
         let [Piece::Convex(v)] = &sum[..] else {
             panic!("one hull")

@@ -100,8 +100,8 @@ pub struct PrintReport {
     pub material_ml: f64,
     /// The print's duration, s, by [`archive::print_seconds`].
     pub print_seconds: f64,
-    /// Per material label (colour code), its stack's directory (PNG stacks of scenes with
-    /// more than one colour).
+    /// The material labels (colour codes) that have a stack of their own: a PNG stack's, where
+    /// the scene's `color()`s give more than one code; else none.
     pub materials: Vec<u8>,
     /// The voxelizer's grid of the layers (after the first, when it is of another height):
     /// its voxels and box, scene units, for `csgpix requirements --res --bounds`.
@@ -201,7 +201,14 @@ impl PrintJob {
         let passes = self.passes(vjob, loaded, &placed, self.aa as usize)?;
         let grid = passes.last().map(|p| p.0.slicer.grid);
         let grid = grid.ok_or_else(|| Error::options("SCENE", "the part has no layer"))?;
-        let codes = passes.first().map_or(&[][..], |p| &p.0.slicer.colours[..]);
+        // Material stacks are a PNG stack's, and only where the scene has `color()`: the
+        // codes solids take by default (1..6 in turn) are not materials.
+        let codes = match kind {
+            archive::Kind::Stack if coloured(&loaded.scene) => {
+                passes.first().map_or(&[][..], |p| &p.0.slicer.colours[..])
+            }
+            _ => &[],
+        };
         let bytes = raster::Raster::bytes(&placed, codes.len().min(256));
         let need = passes.iter().map(|p| p.1).max().unwrap_or(0);
         let need = need.saturating_add(bytes);
@@ -537,6 +544,13 @@ struct Make<'a> {
 
 /// Where a layer's PNG files go: its index, the part's file, then each material's.
 type Emit<'e> = dyn FnMut(usize, &[Vec<u8>]) -> std::io::Result<()> + 'e;
+
+/// Whether any of the scene's primitives carries a colour of its own (`color()`).
+fn coloured(scene: &csgpix_scene::solid::CsgScene) -> bool {
+    let solids = scene.solids.iter().map(|s| s.colour);
+    let imports = scene.imports.iter().map(|i| i.colour);
+    solids.chain(imports).any(|c| c.is_some())
+}
 
 /// A voxelizer plan, its memory estimate and the layers it makes.
 type Pass = (crate::voxelize::plan::Plan, u64, std::ops::Range<usize>);
