@@ -223,49 +223,54 @@ impl<'a> Columns<'a> {
     }
 
     /// The runs of the columns of `columns` (a brick's, within the array), panel by panel: a
-    /// panel cut by the box computes only the columns inside it.
+    /// panel cut by the box computes only the columns inside it. A row of panels is made,
+    /// then its columns are copied out row by row.
     pub fn columns(&self, eval: &dyn SliceEval, columns: PixelBox) -> (ColumnRuns, OpCounts) {
         let [pw, ph] = self.panel;
         let across = self.panel_grid()[0];
-        let mut per_column: Vec<Vec<Run>> = vec![vec![]; columns.pixels()];
         let mut counts = OpCounts::default();
-        for py in columns.y0 / ph..columns.y1.div_ceil(ph) {
-            for px in columns.x0 / pw..columns.x1.div_ceil(pw) {
-                let b = PixelBox {
-                    x0: (px * pw).max(columns.x0),
-                    y0: (py * ph).max(columns.y0),
-                    x1: ((px + 1) * pw).min(columns.x1),
-                    y1: ((py + 1) * ph).min(columns.y1),
-                };
-                let prims = &self.panels[py * across + px];
-                let runs = self.panel_runs(eval, b, prims, &mut counts);
-                for (c, r) in runs.into_iter().enumerate() {
-                    let (x, y) = (b.x0 + c % b.width(), b.y0 + c / b.width());
-                    per_column[(y - columns.y0) * columns.width() + (x - columns.x0)] = r;
-                }
-            }
-        }
         let mut out = ColumnRuns {
             columns,
-            start: Vec::with_capacity(per_column.len() + 1),
+            start: Vec::with_capacity(columns.pixels() + 1),
             runs: vec![],
         };
         out.start.push(0);
-        for r in per_column {
-            out.runs.extend(r);
-            out.start.push(out.runs.len());
+        for py in columns.y0 / ph..columns.y1.div_ceil(ph) {
+            let made: Vec<(PixelBox, ColumnRuns)> = (columns.x0 / pw..columns.x1.div_ceil(pw))
+                .map(|px| {
+                    let b = PixelBox {
+                        x0: (px * pw).max(columns.x0),
+                        y0: (py * ph).max(columns.y0),
+                        x1: ((px + 1) * pw).min(columns.x1),
+                        y1: ((py + 1) * ph).min(columns.y1),
+                    };
+                    let prims = &self.panels[py * across + px];
+                    (b, self.panel_runs(eval, b, prims, &mut counts))
+                })
+                .collect();
+            let Some((first, _)) = made.first() else {
+                continue;
+            };
+            for y in first.y0..first.y1 {
+                for (b, runs) in &made {
+                    for x in b.x0..b.x1 {
+                        out.runs.extend_from_slice(runs.column(x, y));
+                        out.start.push(out.runs.len());
+                    }
+                }
+            }
         }
         (out, counts)
     }
 
-    /// The runs of the columns of box `b` (row-major), whose primitives are `prims`.
+    /// The runs of the columns of box `b`, whose primitives are `prims`.
     fn panel_runs(
         &self,
         eval: &dyn SliceEval,
         b: PixelBox,
         prims: &[u32],
         counts: &mut OpCounts,
-    ) -> Vec<Vec<Run>> {
+    ) -> ColumnRuns {
         let nz = self.slicer.grid.dims[2] as u32;
         let mut seg = Segments::default();
         let mut span = vec![];
@@ -301,19 +306,25 @@ impl<'a> Columns<'a> {
         }
         let masks = seg.masks(self.depths.len());
         let labels = eval.eval(&masks, counts);
-        seg.columns()
-            .map(|(starts, range)| {
-                let mut runs: Vec<Run> = vec![];
-                for (&k, i) in starts.iter().zip(range) {
-                    // A scene without primitives has no labels: nothing is inside.
-                    let colour = self.colour(labels.get(i).copied().unwrap_or(0));
-                    if runs.last().is_none_or(|r| r.colour != colour) {
-                        runs.push(Run { k, colour });
-                    }
+        let mut out = ColumnRuns {
+            columns: b,
+            start: Vec::with_capacity(b.pixels() + 1),
+            runs: Vec::with_capacity(seg.starts.len()),
+        };
+        out.start.push(0);
+        for (starts, range) in seg.columns() {
+            let from = out.runs.len();
+            for (&k, i) in starts.iter().zip(range) {
+                // A scene without primitives has no labels: nothing is inside.
+                let colour = self.colour(labels.get(i).copied().unwrap_or(0));
+                if out.runs.len() == from || out.runs.last().is_some_and(|r| r.colour != colour)
+                {
+                    out.runs.push(Run { k, colour });
                 }
-                runs
-            })
-            .collect()
+            }
+            out.start.push(out.runs.len());
+        }
+        out
     }
 
     /// A label's colour code (0: outside), as the slab routes colour it.
