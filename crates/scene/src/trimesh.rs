@@ -237,7 +237,7 @@ impl TriMesh {
     /// `x1`). Depths interpolate the unsnapped depth of the vertices barycentrically.
     ///
     /// Cost: one `Vec` per pixel (24 bytes each, plus 8 per crossing, plus 16 per crossing
-    /// while collecting); time proportional to the triangles' clamped pixel bounding boxes.
+    /// while collecting; [`TriMesh::crossings_flat_in`] holds 8 a pixel instead); time proportional to the triangles' clamped pixel bounding boxes.
     /// Triangles are rasterized in parallel; the result does not depend on the threads.
     /// Triangles with an index past the vertices are skipped.
     pub fn crossings(
@@ -253,6 +253,13 @@ impl TriMesh {
     /// the same lists those pixels have in the whole image, so a primitive's crossings can be
     /// kept over its own footprint (`crates/voxel/src/runs.rs`).
     pub fn crossings_in(&self, to_frame: impl Fn(DVec3) -> DVec3, win: Window) -> Vec<Vec<f64>> {
+        let flat = self.crossings_flat_in(to_frame, win);
+        (0..flat.pixels()).map(|i| flat.pixel(i).to_vec()).collect()
+    }
+
+    /// [`TriMesh::crossings_in`] as one buffer: no `Vec` per pixel (8 bytes a pixel and 8 a
+    /// crossing, plus 16 per crossing while collecting).
+    pub fn crossings_flat_in(&self, to_frame: impl Fn(DVec3) -> DVec3, win: Window) -> Crossings {
         let (w, h) = (win.w, win.h);
         let projected: Vec<Projected> = self
             .vertices
@@ -274,18 +281,57 @@ impl TriMesh {
                 out
             })
             .collect();
-        let mut pixels = vec![Vec::new(); w.saturating_mul(h)];
-        for (i, d) in hits.into_iter().flatten() {
-            pixels[i].push(d);
+        // A counting sort by pixel, then each pixel's depths in order.
+        let mut start = vec![0usize; w.saturating_mul(h) + 1];
+        for &(i, _) in hits.iter().flatten() {
+            start[i + 1] += 1;
         }
-        pixels
+        for i in 1..start.len() {
+            start[i] += start[i - 1];
+        }
+        let mut depths = vec![0.0; start[start.len() - 1]];
+        let mut next = start.clone();
+        for &(i, d) in hits.iter().flatten() {
+            depths[next[i]] = d;
+            next[i] += 1;
+        }
+        drop(hits);
+        let mut rest: &mut [f64] = &mut depths;
+        let mut lists = Vec::with_capacity(w.saturating_mul(h));
+        for c in start.windows(2) {
+            let (this, tail) = rest.split_at_mut(c[1] - c[0]);
+            lists.push(this);
+            rest = tail;
+        }
+        lists
             .par_iter_mut()
             .for_each(|p| p.sort_unstable_by(f64::total_cmp));
+        let out = Crossings { start, depths };
         #[cfg(debug_assertions)]
         if self.check_closed("").is_ok() {
-            debug_assert!(pixels.iter().all(|p| p.len() % 2 == 0));
+            debug_assert!((0..out.pixels()).all(|i| out.pixel(i).len() % 2 == 0));
         }
-        pixels
+        out
+    }
+}
+
+/// Per pixel of a window, the depths where its ray crosses a mesh, in order
+/// ([`TriMesh::crossings_flat_in`]): pixel i's are `depths[start[i]..start[i + 1]]`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Crossings {
+    start: Vec<usize>,
+    depths: Vec<f64>,
+}
+
+impl Crossings {
+    /// Pixels in the window.
+    pub fn pixels(&self) -> usize {
+        self.start.len().saturating_sub(1)
+    }
+
+    /// Pixel i's crossings, in order.
+    pub fn pixel(&self, i: usize) -> &[f64] {
+        &self.depths[self.start[i]..self.start[i + 1]]
     }
 }
 

@@ -343,17 +343,13 @@ pub fn mesh_runs(slicer: &Slicer, mesh: &TriMesh) -> SlabRuns {
 /// those pixels have over the whole array.
 pub fn mesh_runs_in(slicer: &Slicer, mesh: &TriMesh, win: Window) -> SlabRuns {
     let raw = |v, up| raw_depth(slicer, v, up);
-    let crossings = mesh.crossings_in(|p| slicer.frame.to_pixel(p), win);
-    SlabRuns::merged(
+    let crossings = mesh.crossings_flat_in(|p| slicer.frame.to_pixel(p), win);
+    SlabRuns::merged(crossings.pixels(), |i| {
         crossings
-            .iter()
-            .map(|c| {
-                c.chunks_exact(2)
-                    .map(|p| slabs_of(slicer, raw(p[0], true), raw(p[1], false)))
-                    .collect()
-            })
-            .collect(),
-    )
+            .pixel(i)
+            .chunks_exact(2)
+            .map(move |p| slabs_of(slicer, raw(p[0], true), raw(p[1], false)))
+    })
 }
 
 /// Per pixel of `win` (as [`mesh_runs_in`]), the slabs a mesh that is not closed fills: those
@@ -365,7 +361,7 @@ pub fn open_mesh_runs_in(slicer: &Slicer, mesh: &OpenMesh, win: Window) -> SlabR
     let depths: Vec<f64> = (0..slicer.grid.dims[2])
         .map(|k| slicer.fmt.to_real(slicer.z_plane(k) + slicer.slab_raw / 2))
         .collect();
-    SlabRuns(mesh.inside_runs_in(|p| slicer.frame.to_pixel(p), win, &depths))
+    SlabRuns::of_pixels(mesh.inside_runs_in(|p| slicer.frame.to_pixel(p), win, &depths))
 }
 
 #[cfg(test)]

@@ -145,7 +145,7 @@ impl SampledDepths<'_> {
         match self {
             SampledDepths::Mesh(runs, b) => {
                 if b.contains(x, y) {
-                    out.extend_from_slice(&runs.0[(y - b.y0) * b.width() + (x - b.x0)]);
+                    out.extend_from_slice(runs.pixel((y - b.y0) * b.width() + (x - b.x0)));
                 }
             }
             SampledDepths::Dataset(d) => d.runs(x, y, column, out),
@@ -317,8 +317,7 @@ impl<'a> Columns<'a> {
             for (&k, i) in starts.iter().zip(range) {
                 // A scene without primitives has no labels: nothing is inside.
                 let colour = self.colour(labels.get(i).copied().unwrap_or(0));
-                if out.runs.len() == from || out.runs.last().is_some_and(|r| r.colour != colour)
-                {
+                if out.runs.len() == from || out.runs.last().is_some_and(|r| r.colour != colour) {
                     out.runs.push(Run { k, colour });
                 }
             }

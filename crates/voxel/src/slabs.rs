@@ -31,33 +31,77 @@ impl SlabRanges {
 }
 
 /// Per pixel, the runs of slabs inside a primitive (disjoint, sorted, not touching:
-/// `first..=last`), for primitives whose ray meets them more than once (meshes).
+/// `first..=last`), for primitives whose ray meets them more than once (meshes): pixel i's
+/// are `runs[start[i]..start[i + 1]]`, one buffer for every pixel.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SlabRuns(pub Vec<Vec<(u32, u32)>>);
+pub struct SlabRuns {
+    start: Vec<usize>,
+    runs: Vec<(u32, u32)>,
+}
 
 impl SlabRuns {
-    /// From runs in any order per pixel: sorted and merged where they meet or touch.
-    pub fn merged(mut runs: Vec<Vec<(u32, u32)>>) -> SlabRuns {
-        for r in &mut runs {
-            r.retain(|(a, b)| a <= b);
-            r.sort_unstable();
-            let mut out: Vec<(u32, u32)> = Vec::with_capacity(r.len());
-            for &(a, b) in r.iter() {
-                match out.last_mut() {
-                    Some(last) if a <= last.1.saturating_add(1) => last.1 = last.1.max(b),
-                    _ => out.push((a, b)),
+    /// From each pixel's runs, in order and disjoint.
+    pub fn of_pixels(pixels: Vec<Vec<(u32, u32)>>) -> SlabRuns {
+        let mut out = SlabRuns {
+            start: vec![0],
+            runs: vec![],
+        };
+        for p in pixels {
+            out.runs.extend(p);
+            out.start.push(out.runs.len());
+        }
+        out
+    }
+
+    /// From runs in any order per pixel (pixel i's `runs` of `pixel(i)`, for `pixels`
+    /// pixels): sorted and merged where they meet or touch; empty runs left out.
+    pub fn merged<I: Iterator<Item = (u32, u32)>>(
+        pixels: usize,
+        pixel: impl Fn(usize) -> I,
+    ) -> SlabRuns {
+        let mut out = SlabRuns {
+            start: Vec::with_capacity(pixels + 1),
+            runs: vec![],
+        };
+        out.start.push(0);
+        for i in 0..pixels {
+            let from = out.runs.len();
+            out.runs.extend(pixel(i).filter(|(a, b)| a <= b));
+            out.runs[from..].sort_unstable();
+            let mut n = from;
+            for j in from..out.runs.len() {
+                let (a, b) = out.runs[j];
+                match n > from && a <= out.runs[n - 1].1.saturating_add(1) {
+                    true => out.runs[n - 1].1 = out.runs[n - 1].1.max(b),
+                    false => {
+                        out.runs[n] = (a, b);
+                        n += 1;
+                    }
                 }
             }
-            *r = out;
+            out.runs.truncate(n);
+            out.start.push(n);
         }
-        SlabRuns(runs)
+        out
+    }
+
+    /// Pixels.
+    pub fn pixels(&self) -> usize {
+        self.start.len().saturating_sub(1)
+    }
+
+    /// Pixel i's runs.
+    pub fn pixel(&self, i: usize) -> &[(u32, u32)] {
+        &self.runs[self.start[i]..self.start[i + 1]]
     }
 
     /// Per slab k, the pixels whose membership differs between slab k − 1 and slab k.
     pub fn toggles(&self, slabs: usize) -> Vec<Vec<u32>> {
         let mut t = vec![vec![]; slabs];
-        for (i, runs) in self.0.iter().enumerate() {
-            runs.iter().for_each(|&run| toggle_run(&mut t, i, run));
+        for i in 0..self.pixels() {
+            self.pixel(i)
+                .iter()
+                .for_each(|&run| toggle_run(&mut t, i, run));
         }
         t
     }
@@ -65,8 +109,8 @@ impl SlabRuns {
     /// The mask of slab k.
     pub fn mask(&self, k: usize) -> Mask {
         let k = k as u32;
-        Mask::from_fn(self.0.len(), |i| {
-            self.0[i].iter().any(|&(a, b)| a <= k && k <= b)
+        Mask::from_fn(self.pixels(), |i| {
+            self.pixel(i).iter().any(|&(a, b)| a <= k && k <= b)
         })
     }
 }
