@@ -334,11 +334,14 @@ impl PrintJob {
             png,
             progress,
         } = *make;
-        let (tx, boxes) = std::sync::mpsc::sync_channel::<(usize, Vec<Vec<u8>>)>(4);
-        let (encoded, rx) = std::sync::mpsc::sync_channel::<(usize, Vec<Vec<u8>>)>(4);
+        // Queues of [`raster::BOX_SETS`]: four layers' boxes to the encoder, two spare sets
+        // back; four encoded layers to the writer (compressed, small).
+        let (tx, boxes) = std::sync::mpsc::sync_channel::<Boxes>(4);
+        let (back, spare) = std::sync::mpsc::sync_channel::<Vec<Vec<u8>>>(2);
+        let (encoded, rx) = std::sync::mpsc::sync_channel::<Boxes>(4);
         let made = std::thread::scope(|scope| {
-            let maker = scope.spawn(move || make_layers(vjob, passes, raster, tx));
-            let encoder = scope.spawn(move || encode_layers(png, boxes, encoded));
+            let maker = scope.spawn(move || make_layers(vjob, passes, raster, (tx, spare)));
+            let encoder = scope.spawn(move || encode_layers(png, (boxes, back), encoded));
             let mut wrote = Ok(());
             for (l, bytes) in rx.iter() {
                 wrote = emit(l, &bytes);
@@ -545,6 +548,12 @@ struct Make<'a> {
 /// Where a layer's PNG files go: its index, the part's file, then each material's.
 type Emit<'e> = dyn FnMut(usize, &[Vec<u8>]) -> std::io::Result<()> + 'e;
 
+/// A layer's number and its boxes (or files): the part's, then each material's.
+type Boxes = (usize, Vec<Vec<u8>>);
+
+/// The sending end of a bounded queue between the print's threads.
+type Sender<T> = std::sync::mpsc::SyncSender<T>;
+
 /// Whether any of the scene's primitives carries a colour of its own (`color()`).
 fn coloured(scene: &csgpix_scene::solid::CsgScene) -> bool {
     let solids = scene.solids.iter().map(|s| s.colour);
@@ -587,18 +596,20 @@ fn make_layers(
     vjob: &VoxelizeJob,
     passes: &[Pass],
     raster: &mut raster::Raster,
-    tx: std::sync::mpsc::SyncSender<(usize, Vec<Vec<u8>>)>,
+    (tx, spare): (Sender<Boxes>, std::sync::mpsc::Receiver<Vec<Vec<u8>>>),
 ) -> Result<[u64; 2], Stop> {
+    // Shared with the voxelizer's pool, which runs the sink.
+    let spare = std::sync::Mutex::new(spare);
     let mut array = [0, 0];
     for (plan, _, layers) in passes {
         let first = layers.start;
         let work = plan.pool.install(|| {
             let mut sink = |k: usize, s: &[u8]| -> Result<(), Stop> {
                 raster.layer(s);
-                let materials = (0..raster.materials().len()).map(|m| raster.material(m));
-                let boxes = std::iter::once(raster.lit()).chain(materials);
+                let spare = spare.lock().ok().and_then(|r| r.try_recv().ok());
+                let boxes = raster.take_boxes(spare.unwrap_or_default());
                 // The encoder stopped: the writer's error is the one to report.
-                tx.send((first + k, boxes.map(<[u8]>::to_vec).collect()))
+                tx.send((first + k, boxes))
                     .map_err(|_| Stop::Io(std::io::Error::other("writer stopped")))
             };
             let set = vjob.voxels.equations.set();
@@ -615,8 +626,8 @@ fn make_layers(
 /// Each layer's boxes as PNG files, in order, to the writer.
 fn encode_layers(
     png: &png::LayerPng,
-    boxes: std::sync::mpsc::Receiver<(usize, Vec<Vec<u8>>)>,
-    tx: std::sync::mpsc::SyncSender<(usize, Vec<Vec<u8>>)>,
+    (boxes, spare): (std::sync::mpsc::Receiver<Boxes>, Sender<Vec<Vec<u8>>>),
+    tx: Sender<Boxes>,
 ) -> std::io::Result<()> {
     for (l, layer) in boxes {
         let mut files = Vec::with_capacity(layer.len());
@@ -625,6 +636,8 @@ fn encode_layers(
             png.write(&mut f, b)?;
             files.push(f);
         }
+        // Back to the raster for a later layer, unless two are waiting there already.
+        let _ = spare.try_send(layer);
         if tx.send((l, files)).is_err() {
             break; // the writer stopped and says why
         }

@@ -68,6 +68,10 @@ fn place(grey: &[u8], fw: usize, lit: &mut [u8], origin: isize, step: [isize; 2]
     }
 }
 
+/// Places a layer's boxes are held at once ([`Raster::bytes`]): the raster's, four queued
+/// for the encoder, one being encoded, two spares on their way back.
+pub const BOX_SETS: u64 = 8;
+
 /// An 8×8 block of bytes transposed: word r's byte c becomes word c's byte r (three rounds
 /// of swapping 1-, 2- and 4-byte blocks between words, Hacker's Delight §7-3).
 fn transpose8(mut w: [u64; 8]) -> [u64; 8] {
@@ -161,10 +165,14 @@ impl Raster {
     }
 
     /// Bytes a raster holds for `at` (the estimate beside the voxelizer's).
+    ///
+    /// A layer's boxes (the part's and each material's) are held in [`BOX_SETS`] places at
+    /// once: the raster's own, the encoder's queue, the one being encoded and the spares
+    /// coming back. Beside them, the footprint's greys (a byte a pixel) and `top` (four).
     pub fn bytes(at: &Placement, codes: usize) -> u64 {
         let [fw, fh] = at.pixels();
         let band = (fw * fh) as u64;
-        band * (1 + codes as u64) + 4 * band + (1 << 20)
+        band * (1 + codes as u64) * BOX_SETS + 5 * band + (1 << 20)
     }
 
     /// Make the layer whose samples are `s` (the voxelizer's slab: k·fw samples a row,
@@ -173,12 +181,16 @@ impl Raster {
     pub fn layer(&mut self, s: &[u8]) {
         let mut grey = std::mem::take(&mut self.grey);
         self.greys(s, None, &mut grey);
+        let (now, fw) = (self.layer + 1, self.fw.max(1));
         let mut area = 0;
-        for (t, &g) in self.top.iter_mut().zip(&grey) {
-            area += u64::from(g);
-            if g != 0 {
-                *t = self.layer + 1;
+        // Row by row, branch-free, so that the loop runs a vector at a time.
+        for (tops, greys) in self.top.chunks_exact_mut(fw).zip(grey.chunks_exact(fw)) {
+            let mut row = 0u64;
+            for (t, &g) in tops.iter_mut().zip(greys) {
+                row += u64::from(g);
+                *t = if g != 0 { now } else { *t };
             }
+            area += row;
         }
         self.lit_extent.add(self.layer as usize, &grey, self.fw);
         let (origin, step) = self.strides();
@@ -242,6 +254,24 @@ impl Raster {
     /// The PNG box `rows` × `cols` of the last layer made.
     pub fn lit(&self) -> &[u8] {
         &self.lit
+    }
+
+    /// The last layer's PNG boxes, the part's then each material's, handed over without a
+    /// copy; buffers of `spare` (any content: [`place`] writes every byte of a box) or new
+    /// ones take their place.
+    pub fn take_boxes(&mut self, spare: Vec<Vec<u8>>) -> Vec<Vec<u8>> {
+        let band = self.lit.len();
+        let mut spare = spare.into_iter();
+        let mut fresh = || {
+            let mut b = spare.next().unwrap_or_default();
+            b.resize(band, 0);
+            b
+        };
+        let mut out = vec![std::mem::replace(&mut self.lit, fresh())];
+        for (_, m) in &mut self.by_code {
+            out.push(std::mem::replace(m, fresh()));
+        }
+        out
     }
 
     /// The material labels with a stack of their own (none for a scene of one colour).
