@@ -4,6 +4,7 @@
 use std::io::Write;
 
 use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+use csgpix_openscad::Fallback;
 use csgpix_run::grid::{parse_bounds, GridOptions, Resolution};
 use csgpix_run::memory::{default_mib, Limit};
 use csgpix_run::named::Named;
@@ -44,6 +45,29 @@ impl From<ReadArgs> for ReadSettings {
             openscad_timeout: a.seconds,
             strict: a.strict,
         }
+    }
+}
+
+/// `--threads` and `--fallback`, flattened into each command that voxelizes a scene.
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct SweepArgs {
+    /// Worker threads, 1 to 256 (default: all cores). The output does not depend on it;
+    /// each thread holds a slab's masks, counted in the memory estimate.
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
+    threads: Option<u16>,
+    /// What becomes of a node csgpix does not draw (`surface()`, a 2D import, a node it
+    /// does not know): refused (`none`), or meshed by openscad, that subtree alone, and
+    /// drawn as a closed mesh primitive, reported on stderr and in --json's `warnings`
+    /// (a choice, so not with `--strict`, which refuses every warning).
+    #[arg(long, value_parser = named::<Fallback>(), default_value = "none",
+          conflicts_with = "strict")]
+    pub fallback: Fallback,
+}
+
+impl SweepArgs {
+    /// The job's worker threads (None: all cores).
+    pub fn threads(&self) -> Option<usize> {
+        self.threads.map(usize::from)
     }
 }
 

@@ -3,10 +3,9 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use csgpix_openscad::Fallback;
 use csgpix_run::printer::{PrintJob, PrintReport, Printer, PROFILES};
 
-use super::common::{named, MaxMemory, ReadArgs};
+use super::common::{MaxMemory, ReadArgs, SweepArgs};
 use super::progress::Bars;
 
 #[derive(clap::Args, Debug)]
@@ -58,17 +57,12 @@ pub struct Args {
     /// The part's centre X,Y, mm from the display's centre (default 0,0: centred).
     #[arg(long, value_parser = pair::<f64>, allow_hyphen_values = true)]
     position: Option<[f64; 2]>,
-    /// Worker threads, 1 to 256 (default: all cores). The output does not depend on it.
-    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
-    threads: Option<u16>,
+    #[command(flatten)]
+    sweep: SweepArgs,
     #[command(flatten)]
     mem: MaxMemory,
     #[command(flatten)]
     openscad: ReadArgs,
-    /// What becomes of a node csgpix does not draw: refused (`none`) or meshed by openscad.
-    #[arg(long, value_parser = named::<Fallback>(), default_value = "none",
-          conflicts_with = "strict")]
-    fallback: Fallback,
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
@@ -131,10 +125,10 @@ impl Args {
             printer: self.printer(),
             aa: self.aa,
             centre: self.position.unwrap_or([0.0, 0.0]),
-            threads: self.threads.map(usize::from),
+            threads: self.sweep.threads(),
             max_memory: self.mem.limit(),
             read: self.openscad.into(),
-            fallback: self.fallback,
+            fallback: self.sweep.fallback,
         }
     }
 }

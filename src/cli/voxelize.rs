@@ -4,7 +4,6 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use csgpix_draw::Model;
-use csgpix_openscad::Fallback;
 use csgpix_run::array_args::parse_word;
 use csgpix_run::grid::{parse_res, Resolution};
 use csgpix_run::voxelize::{
@@ -16,7 +15,7 @@ use csgpix_voxel::blend::Union;
 use csgpix_voxel::sampled::{parse_binding, Binding};
 use rtl_model::{Equations, WordFormat};
 
-use super::common::{named, GridArgs, MaxMemory, ReadArgs};
+use super::common::{named, GridArgs, MaxMemory, ReadArgs, SweepArgs};
 use super::progress::Bars;
 
 #[derive(clap::Args, Debug)]
@@ -126,10 +125,8 @@ pub struct Args {
     /// outward (outside the grid counts as empty); --json reports its triangles and open edges.
     #[arg(long)]
     mesh: Option<PathBuf>,
-    /// Worker threads, 1 to 256 (default: all cores). The output does not depend on it;
-    /// each thread holds a slab's masks, counted in the memory estimate.
-    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
-    threads: Option<u16>,
+    #[command(flatten)]
+    sweep: SweepArgs,
     #[command(flatten)]
     mem: MaxMemory,
     #[command(flatten)]
@@ -138,13 +135,6 @@ pub struct Args {
     /// (seed 000 Ch. 4; docs/octree.md), and report its nodes, bytes and build time.
     #[arg(long, value_parser = named::<StoreKind>())]
     store: Option<StoreKind>,
-    /// What becomes of a node csgpix does not draw (`surface()`, a 2D import, a node it
-    /// does not know): refused (`none`), or meshed by openscad, that subtree alone, and
-    /// drawn as a closed mesh primitive, reported on stderr and in --json's `warnings`
-    /// (a choice, so not with `--strict`, which refuses every warning).
-    #[arg(long, value_parser = named::<Fallback>(), default_value = "none",
-          conflicts_with = "strict")]
-    fallback: Fallback,
     /// Print figures as JSON.
     #[arg(long)]
     json: bool,
@@ -168,10 +158,10 @@ impl Args {
                 blend: self.blend,
             },
             outputs: self.outputs(),
-            threads: self.threads.map(usize::from),
+            threads: self.sweep.threads(),
             max_memory: self.mem.limit(),
             read: self.openscad.into(),
-            fallback: self.fallback,
+            fallback: self.sweep.fallback,
         }
     }
 
@@ -236,6 +226,7 @@ fn print_text(a: &Args, r: &VoxelizeReport) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use csgpix_openscad::Fallback;
 
     fn parse(args: &[&str]) -> Args {
         let a = parsed!(Voxelize, args);

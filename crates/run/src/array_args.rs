@@ -2,7 +2,7 @@
 //! ties, word format (§2.4.1), stack depth, memory limit, waveform probes; as data, the
 //! command line's `--size`, `--model`, `--equations`, … and Python's keyword arguments.
 
-use crate::memory::Limit;
+use crate::memory::{default_limit, Limit};
 use crate::Error;
 use std::path::PathBuf;
 
@@ -57,11 +57,6 @@ pub struct ArrayOptions {
     pub wave: Option<PathBuf>,
     /// Clocks the timing diagram shows, first and last (`--wave-clocks`).
     pub wave_clocks: (u64, u64),
-}
-
-/// The default memory limit: the memory available now, as `--max-memory` names it.
-pub fn default_limit() -> Limit {
-    Limit::new(None, "--max-memory")
 }
 
 impl Default for ArrayOptions {

@@ -17,8 +17,8 @@ use rtl_model::verilog::{pixel, stimulus};
 use rtl_model::{ArrayConfig, CycleArray, Equations, WordFormat};
 use serde::{Deserialize, Serialize};
 
-use crate::array_args::default_limit;
 use crate::generated::{write_generated, GeneratedReport};
+use crate::memory::default_limit;
 use crate::progress::Progress;
 use csgpix_draw::scenes::Scene;
 

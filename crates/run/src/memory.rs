@@ -29,6 +29,11 @@ pub struct OverMemory {
     pub fix: String,
 }
 
+/// The default memory limit of a job: the memory available now, as `--max-memory` names it.
+pub fn default_limit() -> Limit {
+    Limit::new(None, "--max-memory")
+}
+
 impl Limit {
     /// `mib` MiB (clamped to 1..=[`MAX_MIB`] and to what the process may hold,
     /// [`Cap::probe`]), or the default: the memory available now within that cap

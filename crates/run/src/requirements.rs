@@ -17,8 +17,8 @@ use rtl_model::array::{check_program, program_cycles};
 use rtl_model::{ArrayConfig, Equations, WordFormat};
 use serde::{Deserialize, Serialize};
 
-use crate::array_args::default_limit;
 use crate::grid::Resolution;
+use crate::memory::default_limit;
 use crate::progress::{warn_all, Progress};
 use crate::read::ReadSettings;
 

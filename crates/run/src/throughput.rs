@@ -21,7 +21,7 @@ use csgpix_scene::solid::CsgScene;
 use rtl_model::{Array, ArrayConfig, CycleArray, Equations, Op, WordFormat};
 use serde::{Deserialize, Serialize};
 
-use crate::array_args::default_limit;
+use crate::memory::default_limit;
 use crate::named::Named;
 use crate::progress::{warn_all, Progress};
 use crate::read::ReadSettings;

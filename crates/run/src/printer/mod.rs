@@ -28,7 +28,7 @@ use serde::{Deserialize, Serialize};
 
 use csgpix_output::Outputs;
 
-use crate::memory::Limit;
+use crate::memory::{default_limit, Limit};
 use crate::progress::Progress;
 use crate::read::ReadSettings;
 use crate::voxelize::{OutputOptions, VoxelizeJob};
@@ -58,11 +58,6 @@ pub struct PrintJob {
     pub read: ReadSettings,
     #[serde(with = "crate::named::by_name")]
     pub fallback: Fallback,
-}
-
-/// The default limit: the memory available now, named as the command line names it.
-fn default_limit() -> Limit {
-    Limit::new(None, "--max-memory")
 }
 
 impl Default for PrintJob {
@@ -433,15 +428,9 @@ impl PrintJob {
         let [fw, _] = placed.pixels();
         let mut lit = Lit::default();
         for (plan, _, layers) in &passes {
-            plan.pool.install(|| {
-                let set = vjob.voxels.equations.set();
-                let mut sink = |k: usize, s: &[u8]| -> Result<(), csgpix_voxel::Error> {
-                    lit.add(layers.start + k, s, fw);
-                    Ok(())
-                };
-                let (eval, slabs) = (plan.eval.as_ref(), 0..layers.len());
-                let sl = &plan.slicer;
-                csgpix_voxel::voxelize_slabs(sl, plan.route, set, eval, &|| {}, slabs, &mut sink)
+            sweep_plan(vjob, plan, 0..layers.len(), |k: usize, s: &[u8]| {
+                lit.add(layers.start + k, s, fw);
+                Ok::<(), csgpix_voxel::Error>(())
             })?;
         }
         self.cut_box((vjob, loaded), part, (&placed, 1), &lit)
@@ -485,22 +474,9 @@ impl PrintJob {
         exact.voxels.model = csgpix_draw::Model::Float;
         let plan = exact.plan_on(loaded, grid).map_err(Error::from)??;
         let mut any = false;
-        plan.pool.install(|| {
-            let set = vjob.voxels.equations.set();
-            let mut sink = |_: usize, s: &[u8]| -> Result<(), csgpix_voxel::Error> {
-                any |= s.iter().any(|&v| v != 0);
-                Ok(())
-            };
-            let eval = plan.eval.as_ref();
-            csgpix_voxel::voxelize_slabs(
-                &plan.slicer,
-                plan.route,
-                set,
-                eval,
-                &|| {},
-                0..1,
-                &mut sink,
-            )
+        sweep_plan(vjob, &plan, 0..1, |_: usize, s: &[u8]| {
+            any |= s.iter().any(|&v| v != 0);
+            Ok::<(), csgpix_voxel::Error>(())
         })?;
         Ok(any)
     }
@@ -603,24 +579,37 @@ fn make_layers(
     let mut array = [0, 0];
     for (plan, _, layers) in passes {
         let first = layers.start;
-        let work = plan.pool.install(|| {
-            let mut sink = |k: usize, s: &[u8]| -> Result<(), Stop> {
-                raster.layer(s);
-                let spare = spare.lock().ok().and_then(|r| r.try_recv().ok());
-                let boxes = raster.take_boxes(spare.unwrap_or_default());
-                // The encoder stopped: the writer's error is the one to report.
-                tx.send((first + k, boxes))
-                    .map_err(|_| Stop::Io(std::io::Error::other("writer stopped")))
-            };
-            let set = vjob.voxels.equations.set();
-            let (eval, slabs) = (plan.eval.as_ref(), 0..layers.len());
-            let sl = &plan.slicer;
-            csgpix_voxel::voxelize_slabs(sl, plan.route, set, eval, &|| {}, slabs, &mut sink)
+        let work = sweep_plan(vjob, plan, 0..layers.len(), |k: usize, s: &[u8]| {
+            raster.layer(s);
+            let spare = spare.lock().ok().and_then(|r| r.try_recv().ok());
+            let boxes = raster.take_boxes(spare.unwrap_or_default());
+            // The encoder stopped: the writer's error is the one to report.
+            tx.send((first + k, boxes))
+                .map_err(|_| Stop::Io(std::io::Error::other("writer stopped")))
         })?;
         array[0] += work.cycles;
         array[1] += work.frames;
     }
     Ok(array)
+}
+
+/// Slabs `slabs` of `plan` voxelized on its own pool, each slab's samples handed to `sink`
+/// in order (the three sweeps of a print: the layers, the lit box, the top probe).
+fn sweep_plan<E, F>(
+    vjob: &VoxelizeJob,
+    plan: &crate::voxelize::plan::Plan,
+    slabs: std::ops::Range<usize>,
+    mut sink: F,
+) -> Result<csgpix_voxel::work::Work, E>
+where
+    E: From<csgpix_voxel::Error> + Send,
+    F: FnMut(usize, &[u8]) -> Result<(), E> + Send,
+{
+    plan.pool.install(move || {
+        let set = vjob.voxels.equations.set();
+        let (sl, eval) = (&plan.slicer, plan.eval.as_ref());
+        csgpix_voxel::voxelize_slabs(sl, plan.route, set, eval, &|| {}, slabs, &mut sink)
+    })
 }
 
 /// Each layer's boxes as PNG files, in order, to the writer.

@@ -20,7 +20,7 @@ use rtl_model::{Equations, WordFormat};
 use serde::{Deserialize, Serialize};
 
 use crate::grid::GridOptions;
-use crate::memory::Limit;
+use crate::memory::{default_limit, Limit};
 use crate::read::ReadSettings;
 use crate::Error;
 
@@ -200,11 +200,6 @@ pub struct VoxelizeJob {
     /// What becomes of a node csgpix does not draw.
     #[serde(with = "crate::named::by_name")]
     pub fallback: Fallback,
-}
-
-/// The default limit: the memory available now, named as the command line names it.
-fn default_limit() -> Limit {
-    Limit::new(None, "--max-memory")
 }
 
 impl Default for VoxelizeJob {
