@@ -554,11 +554,52 @@ impl BlistEval {
         }
     }
 
+    /// The slice's program: the table's rows, where a stretch of rows whose primitives hold
+    /// no voxel of the slice is one [`Jump`] (see [`Step`]).
+    fn program(&self, prims: &[Mask], words: usize) -> Vec<Step> {
+        let t = &self.table;
+        let labels = 1usize << t.label_bits.min(31);
+        // A jump costs its labels to build once and a few operations per label and word to
+        // apply; rows cost a few per word each.
+        let jumps = labels <= JUMP_LABELS && labels <= 8 * words.max(1);
+        let absent = |p: usize| {
+            prims
+                .get(p)
+                .is_none_or(|m| m.words().iter().all(|&w| w == 0))
+        };
+        let mut steps = vec![];
+        let mut stretch = 0..0;
+        for (i, row) in t.rows.iter().enumerate() {
+            if jumps && absent(row.prim) {
+                stretch = if stretch.is_empty() {
+                    i..i + 1
+                } else {
+                    stretch.start..i + 1
+                };
+                continue;
+            }
+            self.push_stretch(&mut steps, std::mem::replace(&mut stretch, 0..0), labels);
+            steps.push(Step::Row(i));
+        }
+        self.push_stretch(&mut steps, stretch, labels);
+        steps
+    }
+
+    /// Rows `rows` (primitives absent from the slice) as steps: one row as itself, more as
+    /// one jump.
+    fn push_stretch(&self, steps: &mut Vec<Step>, rows: std::ops::Range<usize>, labels: usize) {
+        match rows.len() {
+            0 => {}
+            1 => steps.push(Step::Row(rows.start)),
+            _ => steps.push(Step::Jump(Jump::over(&self.table, rows, labels))),
+        }
+    }
+
     /// One word of 64 voxels: `valid` marks the voxels that exist; returns the inside mask and
     /// writes the colours of the classifying rows into `colour`.
     fn eval_word(
         &self,
-        prims: &[Mask],
+        (prims, steps): (&[Mask], &[Step]),
         w: usize,
         valid: u64,
         colour: &mut [u32; 64],
@@ -569,28 +610,125 @@ impl BlistEval {
         let bits = (t.label_bits as usize).min(32);
         let mut store = [0u64; 32];
         let planes = &mut store[..bits]; // label := 0
-        for row in &t.rows {
-            let zero = !planes.iter().fold(0, |a, &p| a | p);
-            let classify = (zero | equals(planes, row.name)) & valid;
-            if classify == 0 {
-                continue;
+        for step in steps {
+            match step {
+                Step::Row(r) => {
+                    self.row_word(&t.rows[*r], (prims, w), planes, valid, colour, counts)
+                }
+                Step::Jump(j) => j.apply(planes, valid, colour, counts),
             }
-            let inside = slice::prim_word(prims, row.prim, w);
-            let sign = if row.sign { !0 } else { 0 };
-            let hit = classify & !(inside ^ sign);
-            // label := stamp where the classification equals the sign, 0 elsewhere.
-            for (b, plane) in planes.iter_mut().enumerate() {
-                let stamp_bit = if row.stamp >> b & 1 == 1 { hit } else { 0 };
-                *plane = (*plane & !classify) | stamp_bit;
-            }
-            let to_in = if row.stamp == t.in_name { hit } else { 0 };
-            set_colour(colour, classify & inside, row.prim);
-            let uncoloured = colour_missing(colour, to_in & !inside);
-            set_colour(colour, uncoloured, row.prim);
-            counts.comparisons += u64::from(classify.count_ones());
-            counts.label_writes += u64::from(classify.count_ones());
         }
         equals(planes, t.in_name) & valid
+    }
+
+    /// Row `row` of §4.3.3 on one word's label planes.
+    fn row_word(
+        &self,
+        row: &BlistRow,
+        (prims, w): (&[Mask], usize),
+        planes: &mut [u64],
+        valid: u64,
+        colour: &mut [u32; 64],
+        counts: &mut OpCounts,
+    ) {
+        let zero = !planes.iter().fold(0, |a, &p| a | p);
+        let classify = (zero | equals(planes, row.name)) & valid;
+        if classify == 0 {
+            return;
+        }
+        let inside = slice::prim_word(prims, row.prim, w);
+        let sign = if row.sign { !0 } else { 0 };
+        let hit = classify & !(inside ^ sign);
+        // label := stamp where the classification equals the sign, 0 elsewhere.
+        for (b, plane) in planes.iter_mut().enumerate() {
+            let stamp_bit = if row.stamp >> b & 1 == 1 { hit } else { 0 };
+            *plane = (*plane & !classify) | stamp_bit;
+        }
+        let to_in = if row.stamp == self.table.in_name {
+            hit
+        } else {
+            0
+        };
+        set_colour(colour, classify & inside, row.prim);
+        let uncoloured = colour_missing(colour, to_in & !inside);
+        set_colour(colour, uncoloured, row.prim);
+        counts.comparisons += u64::from(classify.count_ones());
+        counts.label_writes += u64::from(classify.count_ones());
+    }
+}
+
+/// Largest label range (2^label_bits) for which stretches of absent rows become jumps.
+const JUMP_LABELS: usize = 64;
+
+/// A step of a slice's program: a row of the table, or a stretch of rows whose primitives
+/// hold no voxel of the slice.
+enum Step {
+    Row(usize),
+    Jump(Jump),
+}
+
+/// A stretch of rows whose primitives are absent from the slice (every voxel outside them).
+/// A voxel outside a row's primitive classifies the same way whatever the voxel, so the
+/// stretch is a function of the label alone: the label it leaves, the rows that classify
+/// it (the counts), and the row, if any, that first sends it to IN's name (the colour an
+/// uncoloured voxel takes there, [`BlistEval`]). Precomputed per label; labels the stretch
+/// leaves alone, with no row classifying them, are not listed.
+struct Jump {
+    /// (label before, label after, classifying rows, the first row's primitive sending it to
+    /// IN, or `usize::MAX`).
+    moves: Vec<(u32, u32, u64, usize)>,
+}
+
+impl Jump {
+    /// The jump over `rows` of `t` for labels `0..labels`.
+    fn over(t: &BlistTable, rows: std::ops::Range<usize>, labels: usize) -> Jump {
+        let mut moves = vec![];
+        for v in 0..labels as u32 {
+            let (mut label, mut n, mut to_in) = (v, 0u64, usize::MAX);
+            for row in &t.rows[rows.clone()] {
+                if label == 0 || label == row.name {
+                    n += 1;
+                    // Outside the primitive: the classification equals the sign iff it is −.
+                    label = if row.sign { 0 } else { row.stamp };
+                    if !row.sign && row.stamp == t.in_name && to_in == usize::MAX {
+                        to_in = row.prim;
+                    }
+                }
+            }
+            if label != v || n > 0 {
+                moves.push((v, label, n, to_in));
+            }
+        }
+        Jump { moves }
+    }
+
+    /// The stretch on one word's label planes.
+    fn apply(&self, planes: &mut [u64], valid: u64, colour: &mut [u32; 64], counts: &mut OpCounts) {
+        let mut set = [0u64; 32];
+        let mut moved = 0u64;
+        for &(from, to, n, to_in) in &self.moves {
+            let lanes = equals(planes, from) & valid;
+            if lanes == 0 {
+                continue;
+            }
+            counts.comparisons += n * u64::from(lanes.count_ones());
+            counts.label_writes += n * u64::from(lanes.count_ones());
+            if to_in != usize::MAX {
+                let uncoloured = colour_missing(colour, lanes);
+                set_colour(colour, uncoloured, to_in);
+            }
+            if to != from {
+                moved |= lanes;
+                for (b, s) in set.iter_mut().enumerate().take(planes.len()) {
+                    if to >> b & 1 == 1 {
+                        *s |= lanes;
+                    }
+                }
+            }
+        }
+        for (plane, s) in planes.iter_mut().zip(set) {
+            *plane = (*plane & !moved) | s;
+        }
     }
 }
 
@@ -629,6 +767,7 @@ impl SliceEval for BlistEval {
     /// number: every classifying row writes the stamp or 0).
     fn eval(&self, prims: &[Mask], counts: &mut OpCounts) -> Labels {
         let len = slice::slice_len(prims);
+        let steps = self.program(prims, len.div_ceil(64));
         let mut labels = vec![0u32; len];
         for (w, chunk) in labels.chunks_mut(64).enumerate() {
             let valid = if chunk.len() == 64 {
@@ -637,7 +776,7 @@ impl SliceEval for BlistEval {
                 (1u64 << chunk.len()) - 1
             };
             let mut colour = [0u32; 64];
-            let mut inside = self.eval_word(prims, w, valid, &mut colour, counts);
+            let mut inside = self.eval_word((prims, &steps), w, valid, &mut colour, counts);
             // A voxel can be in without any row classifying it only in a table without rows
             // (`!Empty`); it takes primitive 0's colour then, there being no better one.
             while inside != 0 {
@@ -756,6 +895,32 @@ mod tests {
         assert_eq!(u.classify_colour(|_| true), Some(0));
     }
 
+    /// A union of 1,000 primitives of which two hold voxels is five steps: the rows before,
+    /// between and after them are one jump each, and the labels are the rows' own.
+    #[test]
+    fn absent_rows_are_jumped() {
+        let tree = CsgNode::Union((0..1000).map(CsgNode::Solid).collect());
+        let e = BlistEval::new(&tree);
+        let mut prims: Vec<Mask> = (0..1000).map(|_| Mask::new(0)).collect();
+        prims[10] = Mask::from_fn(100, |i| i % 3 == 0);
+        prims[500] = Mask::from_fn(100, |i| i % 5 == 0);
+        assert_eq!(e.program(&prims, 2).len(), 5);
+        let mut counts = OpCounts::default();
+        let labels = e.eval(&prims, &mut counts);
+        for (i, &l) in labels.iter().enumerate() {
+            let want = match (i % 3 == 0, i % 5 == 0) {
+                (true, _) => 11,
+                (false, true) => 501,
+                _ => 0,
+            };
+            assert_eq!(l, want, "voxel {i}");
+        }
+        // Every row classifies a voxel still out: those in primitive 10 stop there.
+        let (in10, in500) = (34, 20 - 7);
+        let want = 11 * in10 + 501 * in500 + 1000 * (100 - in10 - in500);
+        assert_eq!(counts.comparisons, want);
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(500))]
         /// The precomputed walks stop where the WHILE loops of Match stop.
@@ -771,16 +936,23 @@ mod tests {
             t in tree(),
             len in 1usize..200,
             seed in prop::collection::vec(any::<u64>(), 12 * 4),
+            absent in prop::collection::vec(0u8..4, 12),
         ) {
+            // A quarter of the primitives hold no voxel (an empty mask, or one of zeros), so
+            // that stretches of rows become jumps.
             let prims: Vec<Mask> = (0..12)
-                .map(|p| Mask::from_fn(len, |i| seed[p * 4 + i / 64] >> (i % 64) & 1 == 1))
+                .map(|p| match absent[p] {
+                    0 if p % 2 == 0 => Mask::new(0),
+                    0 => Mask::new(len),
+                    _ => Mask::from_fn(len, |i| seed[p * 4 + i / 64] >> (i % 64) & 1 == 1),
+                })
                 .collect();
             let e = BlistEval::new(&t);
             let mut counts = OpCounts::default();
             let labels = e.eval(&prims, &mut counts);
             let mut classified = 0;
             for (i, &l) in labels.iter().enumerate() {
-                let inside = |p: usize| prims[p].get(i);
+                let inside = |p: usize| i < prims[p].len() && prims[p].get(i);
                 let want = e.table.classify_colour(inside).map_or(0, |p| p as u32 + 1);
                 prop_assert_eq!(l, want, "voxel {}", i);
                 prop_assert_eq!(l != 0, e.table.classify(inside, None));
