@@ -181,16 +181,11 @@ impl Raster {
     pub fn layer(&mut self, s: &[u8]) {
         let mut grey = std::mem::take(&mut self.grey);
         self.greys(s, None, &mut grey);
-        let (now, fw) = (self.layer + 1, self.fw.max(1));
-        let mut area = 0;
-        // Row by row, branch-free, so that the loop runs a vector at a time.
-        for (tops, greys) in self.top.chunks_exact_mut(fw).zip(grey.chunks_exact(fw)) {
-            let mut row = 0u64;
-            for (t, &g) in tops.iter_mut().zip(greys) {
-                row += u64::from(g);
-                *t = if g != 0 { now } else { *t };
-            }
-            area += row;
+        let now = self.layer + 1;
+        let area = grey.iter().map(|&g| u64::from(g)).sum();
+        // A select, not a branch, in a loop of its own: it runs a vector at a time.
+        for (t, &g) in self.top.iter_mut().zip(&grey) {
+            *t = if g != 0 { now } else { *t };
         }
         self.lit_extent.add(self.layer as usize, &grey, self.fw);
         let (origin, step) = self.strides();
