@@ -309,7 +309,7 @@ impl TriMesh {
         let out = Crossings { start, depths };
         #[cfg(debug_assertions)]
         if self.check_closed("").is_ok() {
-            debug_assert!((0..out.pixels()).all(|i| out.pixel(i).len() % 2 == 0));
+            debug_assert!((0..out.pixels()).all(|i| out.pixel(i).len().is_multiple_of(2)));
         }
         out
     }

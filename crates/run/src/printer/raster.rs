@@ -252,7 +252,7 @@ impl Raster {
     }
 
     /// The last layer's PNG boxes, the part's then each material's, handed over without a
-    /// copy; buffers of `spare` (any content: [`place`] writes every byte of a box) or new
+    /// copy; buffers of `spare` (any content: placing a layer writes every byte of a box) or new
     /// ones take their place.
     pub fn take_boxes(&mut self, spare: Vec<Vec<u8>>) -> Vec<Vec<u8>> {
         let band = self.lit.len();
