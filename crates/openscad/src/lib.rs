@@ -288,13 +288,14 @@ pub fn read_dxf(
 }
 
 /// The SVG file `text` (called `file` in messages) drawn as `import(file)` draws it at 72 dpi
-/// (module `svg`): the number of its shapes. The entry point of the SVG fuzz target.
+/// (module `svg`), its outlines at most `max_vertices` points: the number of its shapes. The
+/// entry point of the SVG fuzz target.
 ///
 /// # Errors
 ///
 /// A file csgpix refuses, one line.
-pub fn read_svg(text: &str, file: &str) -> csgpix_scene::Result<usize> {
-    svg::parse(text, file, 72.0, false).map(|s| s.len())
+pub fn read_svg(text: &str, file: &str, max_vertices: usize) -> csgpix_scene::Result<usize> {
+    svg::parse(text, file, 72.0, false, max_vertices).map(|s| s.len())
 }
 
 /// [`parse_csg`] with [`ReadOptions`].

@@ -569,13 +569,13 @@ impl<'a> Reader<'a> {
         }
         self.warnings.extend(args.warning.clone());
         let dir = self.options.dir.clone().unwrap_or_default();
-        let shapes =
-            crate::svg::read(&dir.join(&args.file), args.dpi, args.center).map_err(|e| Fail {
+        let budget = self.max_vertices().saturating_sub(self.vertices);
+        let shapes = crate::svg::read(&dir.join(&args.file), args.dpi, args.center, budget)
+            .map_err(|e| Fail {
                 pos: head.pos,
                 problem: e.context(format_args!("`import(\"{}\")` (an SVG file)", args.file)),
             })?;
         let n: usize = shapes.iter().map(|p| p.points().count()).sum();
-        let budget = self.max_vertices().saturating_sub(self.vertices);
         check_budget(n, budget, head.pos)?;
         if let Some(msg) = removal_2d(ctx.matrix.as_ref()) {
             return Ok(self.removed(Some(msg), head.pos, false, true));

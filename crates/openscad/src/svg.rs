@@ -20,6 +20,7 @@
 //!   flipped about the page height, or the shapes' box is centred with `center = true`.
 
 use csgpix_scene::Error;
+use std::cell::Cell;
 use std::path::Path;
 
 use glam::DVec2;
@@ -53,21 +54,35 @@ fn apply(m: &Affine, p: DVec2) -> DVec2 {
 
 /// The SVG file `path` as OpenSCAD's `import(file, dpi, center)` draws it: one even-odd shape
 /// per SVG element, their union. Err is one line.
-pub(crate) fn read(path: &Path, dpi: f64, center: bool) -> csgpix_scene::Result<Vec<Poly2>> {
+pub(crate) fn read(
+    path: &Path,
+    dpi: f64,
+    center: bool,
+    max_vertices: usize,
+) -> csgpix_scene::Result<Vec<Poly2>> {
     let text = std::fs::read_to_string(path).map_err(|e| Error::io("cannot read it", &e))?;
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
-    parse(&text, name.as_deref().unwrap_or("svg"), dpi, center)
+    parse(
+        &text,
+        name.as_deref().unwrap_or("svg"),
+        dpi,
+        center,
+        max_vertices,
+    )
 }
 
 /// [`read`] of the file's text (`file` names it in errors). Elements nested deeper than
 /// [`csgpix_scene::MAX_XML_DEPTH`] (libxml2's limit, so OpenSCAD's too) and more than
 /// [`csgpix_scene::MAX_XML_NODES`] nodes (entities included) are refused in one line, before
-/// roxmltree and [`walk`], which recurse once per level.
+/// roxmltree and [`walk`], which recurse once per level. The outlines may have at most
+/// `max_vertices` points in all: a stroke is refused before its outline is made when its
+/// round joins and caps would pass what is left (a width of 10¹⁶ has 10²⁰ arc steps).
 pub(crate) fn parse(
     text: &str,
     file: &str,
     dpi: f64,
     center: bool,
+    max_vertices: usize,
 ) -> csgpix_scene::Result<Vec<Poly2>> {
     csgpix_scene::check_xml_nesting(text, file)?;
     let opts = roxmltree::ParsingOptions {
@@ -85,8 +100,9 @@ pub(crate) fn parse(
     }
     let page = Page::read(&root)?;
     let mut shapes = vec![];
+    let left = Cell::new(max_vertices);
     for child in root.children() {
-        walk(child, &IDENTITY, &mut shapes, 1)?;
+        walk(child, &IDENTITY, &mut shapes, 1, &left)?;
     }
     place(&page, shapes, dpi, center)
 }
@@ -273,11 +289,13 @@ fn clean(paths: &[Vec<[f64; 2]>], fill: Fill) -> Poly2 {
 
 /// The elements under `node` (a child of a container whose transform is `m`), in document
 /// order: each drawing element's outlines, transformed.
+/// `left` counts down the outline points the file may still make.
 fn walk(
     node: roxmltree::Node,
     m: &Affine,
     out: &mut Vec<Vec<Vec<DVec2>>>,
     depth: usize,
+    left: &Cell<usize>,
 ) -> csgpix_scene::Result<()> {
     if !node.is_element() {
         return Ok(());
@@ -300,20 +318,32 @@ fn walk(
     let attr = |n: &str| at(node, n);
     let own = || compose(m, &parse_transform(attr("transform")));
     let style = Style {
+        element: name,
         width: attr("stroke-width"),
         cap: attr("stroke-linecap"),
         join: attr("stroke-linejoin"),
         style: attr("style"),
+        left,
     };
     if let "g" | "text" | "tspan" = name {
         let m = own();
         for child in node.children() {
-            walk(child, &m, out, depth + 1)?;
+            walk(child, &m, out, depth + 1, left)?;
         }
         return Ok(());
     }
+    let before = left.get();
     let paths = shape_outlines(node, name, &style)?;
     if let Some(paths) = paths {
+        // Strokes took their points as they were drawn.
+        let stroked = before - left.get();
+        style.spend(
+            paths
+                .iter()
+                .map(Vec::len)
+                .sum::<usize>()
+                .saturating_sub(stroked),
+        )?;
         let own = own();
         out.push(
             paths
@@ -325,7 +355,7 @@ fn walk(
     // Children of a drawing element or of an element libsvg does not know are read with the
     // nearest group's transform.
     for child in node.children() {
-        walk(child, m, out, depth + 1)?;
+        walk(child, m, out, depth + 1, left)?;
     }
     Ok(())
 }
@@ -354,7 +384,7 @@ fn shape_outlines(
         "line" => {
             let a = DVec2::new(parse_double(attr("x1")), parse_double(attr("y1")));
             let b = DVec2::new(parse_double(attr("x2")), parse_double(attr("y2")));
-            style.stroke(&[a, b])
+            style.stroke(&[a, b])?
         }
         "polygon" => {
             let mut pts = points(attr("points"));
@@ -363,7 +393,7 @@ fn shape_outlines(
             }
             vec![pts]
         }
-        "polyline" => style.stroke(&points(attr("points"))),
+        "polyline" => style.stroke(&points(attr("points")))?,
         _ => return Ok(None),
     }))
 }
@@ -660,12 +690,14 @@ fn g6(v: f64) -> String {
     }
 }
 
-/// The stroke attributes of an element.
+/// The stroke attributes of an element, its name, and the outline points the file has left.
 struct Style<'a> {
+    element: &'a str,
     width: &'a str,
     cap: &'a str,
     join: &'a str,
     style: &'a str,
+    left: &'a Cell<usize>,
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -702,8 +734,23 @@ impl Style<'_> {
         }
     }
 
-    /// The outline of an open polyline's stroke (libsvg's `offset_path`).
-    fn stroke(&self, path: &[DVec2]) -> Vec<Vec<DVec2>> {
+    /// `n` outline points taken from what the file has left, or the one-line refusal.
+    fn spend(&self, n: usize) -> csgpix_scene::Result<()> {
+        let left = self.left.get();
+        if n > left {
+            return Err(Error::SvgVertexLimit {
+                element: self.element.to_string(),
+                vertices: n as f64,
+                left,
+            });
+        }
+        self.left.set(left - n);
+        Ok(())
+    }
+
+    /// The outline of an open polyline's stroke (libsvg's `offset_path`), refused before it
+    /// is made when its points could pass what the file has left.
+    fn stroke(&self, path: &[DVec2]) -> csgpix_scene::Result<Vec<Vec<DVec2>>> {
         let w = parse_double(self.pick(self.width, "stroke-width"));
         let w = if w < 0.01 { 1.0 } else { w };
         let cap = match self.pick(self.cap, "stroke-linecap") {
@@ -716,7 +763,17 @@ impl Style<'_> {
             "round" => Join::Round,
             _ => Join::Miter,
         };
-        open_offset(path, w, cap, join)
+        let bound = outline_bound(path.len(), w * 5000.0, cap, join);
+        if bound > self.left.get() as f64 {
+            return Err(Error::SvgVertexLimit {
+                element: self.element.to_string(),
+                vertices: bound,
+                left: self.left.get(),
+            });
+        }
+        let outline = open_offset(path, w, cap, join);
+        self.spend(outline.iter().map(Vec::len).sum())?;
+        Ok(outline)
     }
 }
 
@@ -727,6 +784,23 @@ fn round(v: f64) -> f64 {
     } else {
         (v + 0.5).trunc()
     }
+}
+
+/// The most points [`ClipperOffset`] draws for an open path of `len` points offset by
+/// `delta` (Clipper's units): at each point on each side a round join or cap's arc (at most
+/// half a turn of [`ClipperOffset::new`]'s steps, plus its ends), or at most three points; a
+/// single point's round outline is a whole turn.
+fn outline_bound(len: usize, delta: f64, cap: Cap, join: Join) -> f64 {
+    let round = cap == Cap::Round || join == Join::Round;
+    let per = if round {
+        (ClipperOffset::arc_steps(delta) / 2.0 + 3.0).max(3.0)
+    } else {
+        3.0
+    };
+    if len == 1 {
+        return 2.0 * per;
+    }
+    2.0 * len as f64 * per
 }
 
 /// Clipper 6.4's `ClipperOffset` of one open path by half the stroke width, as libsvg calls
@@ -773,14 +847,18 @@ struct ClipperOffset<'a> {
 }
 
 impl<'a> ClipperOffset<'a> {
-    /// The arc steps for `delta` with arc tolerance 0.25 (at most one per unit of arc).
+    /// The steps in a full turn of an arc of radius `delta`, with arc tolerance 0.25 (at
+    /// most one per unit of arc).
+    fn arc_steps(delta: f64) -> f64 {
+        let y = 0.25f64.min(delta.abs() * 0.25);
+        let steps = std::f64::consts::PI / (1.0 - y / delta.abs()).acos();
+        steps.min(delta.abs() * std::f64::consts::PI)
+    }
+
+    /// The offset state for `delta`, its arc steps from [`Self::arc_steps`].
     fn new(src: &'a [DVec2], delta: f64, join: Join) -> Self {
         let two_pi = std::f64::consts::TAU;
-        let y = 0.25f64.min(delta.abs() * 0.25);
-        let mut steps = std::f64::consts::PI / (1.0 - y / delta.abs()).acos();
-        if steps > delta.abs() * std::f64::consts::PI {
-            steps = delta.abs() * std::f64::consts::PI;
-        }
+        let steps = Self::arc_steps(delta);
         ClipperOffset {
             src,
             delta,
@@ -973,7 +1051,7 @@ fn path_outlines(d: &str, style: &Style) -> csgpix_scene::Result<Vec<Vec<DVec2>>
         if let Some(last) = list.last() {
             if subpath_is_open(last) {
                 let open = list.pop().expect("the last subpath");
-                list.extend(style.stroke(&open));
+                list.extend(style.stroke(&open)?);
             }
         }
     }
@@ -1099,7 +1177,7 @@ impl PathPen {
             's' => self.smooth_cubic(back, rel, p),
             'q' => self.quadratic(back, rel, p),
             't' => self.smooth_quadratic(back, rel, p),
-            'm' => self.move_to(list, style, rel, p),
+            'm' => self.move_to(list, style, rel, p)?,
             'v' if self.point == 0 => {
                 self.y = if rel { self.y + p } else { p };
                 back.push(DVec2::new(self.x, self.y));
@@ -1282,7 +1360,13 @@ impl PathPen {
 
     /// `M x y`: a new subpath (the current one, if open, replaced by its stroke); further
     /// pairs are lines.
-    fn move_to(&mut self, list: &mut Vec<Vec<DVec2>>, style: &Style, rel: bool, p: f64) {
+    fn move_to(
+        &mut self,
+        list: &mut Vec<Vec<DVec2>>,
+        style: &Style,
+        rel: bool,
+        p: f64,
+    ) -> csgpix_scene::Result<()> {
         match self.point {
             0 => self.xx = self.abs_x(rel, p),
             1 => {
@@ -1292,7 +1376,7 @@ impl PathPen {
                 if !back.is_empty() {
                     if subpath_is_open(back) {
                         let open = list.pop().expect("the current subpath");
-                        list.extend(style.stroke(&open));
+                        list.extend(style.stroke(&open)?);
                     }
                     list.push(vec![]);
                 }
@@ -1303,6 +1387,7 @@ impl PathPen {
             }
             _ => {}
         }
+        Ok(())
     }
 
     /// `Z`: the current subpath closed back to its start, and a new one begun.
@@ -1473,11 +1558,14 @@ mod tests {
 
     #[test]
     fn path_tokens_as_libsvg() {
+        let left = Cell::new(1 << 20);
         let style = Style {
+            element: "path",
             width: "",
             cap: "",
             join: "",
             style: "",
+            left: &left,
         };
         // Relative numbers glued by minus signs and dots, an exponent split by the tokenizer.
         let p = path_outlines("m1-1h1e1v.5.5l-10-1z", &style).unwrap();
@@ -1512,8 +1600,13 @@ mod tests {
                 "</g>".repeat(n)
             )
         };
-        assert_eq!(parse(&nested(250), "t.svg", 72.0, false).unwrap().len(), 1);
-        let e = parse(&nested(10_000), "t.svg", 72.0, false)
+        assert_eq!(
+            parse(&nested(250), "t.svg", 72.0, false, 1 << 20)
+                .unwrap()
+                .len(),
+            1
+        );
+        let e = parse(&nested(10_000), "t.svg", 72.0, false, 1 << 20)
             .unwrap_err()
             .to_string();
         // The <svg> start tag is level 1: the 256th <g> is the first too deep.
@@ -1531,7 +1624,9 @@ mod tests {
             "<g>".repeat(200),
             "</g>".repeat(200)
         );
-        let e = parse(&dtd, "t.svg", 72.0, false).unwrap_err().to_string();
+        let e = parse(&dtd, "t.svg", 72.0, false, 1 << 20)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("nested more than 256"), "{e}");
     }
 
@@ -1539,16 +1634,61 @@ mod tests {
     fn page_scale_and_flip() {
         let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" width="20mm" height="10mm"
             viewBox="0 0 200 100"><rect x="10" y="10" width="50" height="20"/></svg>"#;
-        let shapes = parse(svg, "t.svg", 72.0, false).unwrap();
+        let shapes = parse(svg, "t.svg", 72.0, false, 1 << 20).unwrap();
         let pts: Vec<DVec2> = shapes[0].points().collect();
         let lo = pts.iter().fold(DVec2::MAX, |a, b| a.min(*b));
         let hi = pts.iter().fold(DVec2::MIN, |a, b| a.max(*b));
         assert!((lo - DVec2::new(1.0, 7.0)).length() < 1e-9, "{lo}");
         assert!((hi - DVec2::new(6.0, 9.0)).length() < 1e-9, "{hi}");
-        let c = parse(svg, "t.svg", 72.0, true).unwrap();
+        let c = parse(svg, "t.svg", 72.0, true, 1 << 20).unwrap();
         let lo = c[0].points().fold(DVec2::MAX, |a, b| a.min(b));
         assert!((lo - DVec2::new(-2.5, -1.0)).length() < 1e-9, "{lo}");
-        assert!(parse("<svg><svg/></svg>", "t.svg", 72.0, false).is_err());
-        assert!(parse("<svg viewBox='0 0 0 10'/>", "t.svg", 72.0, false).is_err());
+        assert!(parse("<svg><svg/></svg>", "t.svg", 72.0, false, 1 << 20).is_err());
+        assert!(parse("<svg viewBox='0 0 0 10'/>", "t.svg", 72.0, false, 1 << 20).is_err());
+    }
+
+    /// A stroke so wide that its round joins have more arc steps than memory holds is
+    /// refused before its outline is made (the svg fuzz target's input: 2.8·10¹⁶ wide, 10²⁰
+    /// steps a turn); the points the file may make are counted across its elements.
+    #[test]
+    fn outlines_past_the_vertex_limit_are_refused_before_they_are_made() {
+        let svg = |body: &str| format!(r#"<svg xmlns="http://www.w3.org/2000/svg">{body}</svg>"#);
+        let wide = svg(
+            r#"<polyline points="10,25 30,40 50,25" stroke-width="27777777777777777.5"
+            stroke-linejoin="round"/>"#,
+        );
+        let e = parse(&wide, "t.svg", 72.0, false, 1 << 20)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("the <polyline> element's outline would have"),
+            "{e}"
+        );
+        assert!(e.contains("(1048576 left"), "{e}");
+        assert_eq!(e.lines().count(), 1);
+        // A round-joined stroke 20 wide draws (its bound is above what it draws) ...
+        let line = r#"<polyline points="0,0 30,40 60,0" stroke-width="20" stroke-linejoin="round"
+            stroke-linecap="round"/>"#;
+        let one = parse(&svg(line), "t.svg", 72.0, false, 1 << 20).unwrap();
+        let drawn: usize = one[0].points().count();
+        let bound = outline_bound(3, 20.0 * 5000.0, Cap::Round, Join::Round);
+        assert!(
+            drawn as f64 <= bound && drawn > 100,
+            "{drawn} points, bound {bound}"
+        );
+        // ... and is refused when the budget is below that bound, even if above what it draws.
+        let e = parse(&svg(line), "t.svg", 72.0, false, drawn).unwrap_err();
+        assert!(e.to_string().contains("<polyline>"), "{e}");
+        // Plain shapes count too: three circles of 40 points in a budget of 100.
+        let circles = svg(&r#"<circle cx="0" cy="0" r="5"/>"#.repeat(3));
+        assert_eq!(parse(&circles, "t.svg", 72.0, false, 120).unwrap().len(), 3);
+        let e = parse(&circles, "t.svg", 72.0, false, 100)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("the <circle> element's outline would have 40 points")
+                && e.contains("(20 left"),
+            "{e}"
+        );
     }
 }

@@ -65,6 +65,12 @@ fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
                 .err()
                 .map(|e| e.to_string())
         }
+        "svg" => {
+            let text = std::str::from_utf8(bytes).ok()?;
+            csgpix_openscad::read_svg(text, "f.svg", 200_000)
+                .err()
+                .map(|e| e.to_string())
+        }
         other => panic!("no checks for fuzz target {other}"),
     }
 }

@@ -814,6 +814,21 @@ pub enum Error {
     /// An `<svg>` inside the `<svg>`.
     #[error("an <svg> inside the <svg> is not supported")]
     NestedSvg,
+    /// An SVG element whose outline (a stroke's, before it is drawn) would pass the scene's
+    /// vertex limit.
+    #[error(
+        "the <{}> element's outline would have {vertices:.0} points, past the scene's vertex \
+         limit ({left} left; the limit follows the memory limit, e.g. --max-memory)",
+        OneLine(element)
+    )]
+    SvgVertexLimit {
+        /// The element's name (at most as written).
+        element: String,
+        /// The points it would have (an upper bound for a stroke; it may be past `u64`).
+        vertices: f64,
+        /// The points left.
+        left: usize,
+    },
     /// An SVG path arc of radius 0.
     #[error("a path has an arc of radius 0")]
     ZeroRadiusArc,
