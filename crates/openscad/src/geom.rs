@@ -610,20 +610,25 @@ impl Fan {
         }
     }
 
-    /// For each of `dirs`, the largest d · v over this fan's vertices.
-    fn support(&self, dirs: &[DVec3]) -> Vec<f64> {
+    /// For each unit direction of `dirs`, the largest d · v over this fan's vertices. The
+    /// vertex that attains it has d in its cone, so in its cap: only the candidates `band`
+    /// (this fan's) gives for a cap of radius 0 at d are tried.
+    fn support(&self, dirs: &[DVec3], band: &CapBand) -> Vec<f64> {
+        let mut cand = vec![];
         dirs.iter()
             .map(|d| {
-                self.v
-                    .iter()
-                    .map(|v| d.dot(*v))
+                band.candidates(Some((*d, 0.0)), &mut cand);
+                cand.iter()
+                    .map(|&j| d.dot(self.v[j]))
                     .fold(f64::NEG_INFINITY, f64::max)
             })
             .collect()
     }
 
     /// The sums p + q of this fan's vertex p and `other`'s vertex q whose cones meet: all
-    /// the vertices of hull(P ⊕ Q) among them (the type's documentation).
+    /// the vertices of hull(P ⊕ Q) among them (the type's documentation). Pairs whose caps
+    /// lie more than their radii (and 10⁻⁶) apart are skipped unseen: for each p only the
+    /// q of [`CapBand::candidates`] are tried, in order.
     fn sum_vertices(&self, other: &Fan) -> Vec<DVec3> {
         let scale = self
             .v
@@ -633,13 +638,45 @@ impl Fan {
             .fold(0.0, f64::max);
         let tol = FAN_EPS * scale.max(f64::MIN_POSITIVE);
         // h_other[k]: the support of `other` along self.dirs[k], and the reverse.
-        let h_other = other.support(&self.dirs);
-        let h_self = self.support(&other.dirs);
+        let band = CapBand::of(&other.caps);
+        let h_other = other.support(&self.dirs, &band);
+        let h_self = self.support(&other.dirs, &CapBand::of(&self.caps));
+        {
+            let full = |f: &Fan, dirs: &[DVec3]| -> Vec<f64> {
+                dirs.iter()
+                    .map(|d| {
+                        f.v.iter()
+                            .map(|v| d.dot(*v))
+                            .fold(f64::NEG_INFINITY, f64::max)
+                    })
+                    .collect()
+            };
+            let a = full(other, &self.dirs);
+            let b = full(self, &other.dirs);
+            let da = a.iter().zip(&h_other).filter(|(x, y)| x != y).count();
+            let db = b.iter().zip(&h_self).filter(|(x, y)| x != y).count();
+            if da + db > 0 {
+                eprintln!("DBG support differs {da} {db} of {} {}", a.len(), b.len());
+            }
+        }
+        // cos and sin of each radius, this fan's widened by the 10⁻⁶ slack: caps at angle
+        // a apart are disjoint when a > r1 + r2 + 10⁻⁶, that is cos a < cos(r1' + r2).
+        let trig = |caps: &[Option<(DVec3, f64)>], slack: f64| -> Vec<(f64, f64)> {
+            caps.iter()
+                .map(|c| c.map_or((0.0, 0.0), |(_, r)| ((r + slack).cos(), (r + slack).sin())))
+                .collect()
+        };
+        let (trig_self, trig_other) = (trig(&self.caps, 1e-6), trig(&other.caps, 0.0));
         let mut out = vec![];
+        let mut cand = vec![];
         for (i, &p) in self.v.iter().enumerate() {
-            for (j, &q) in other.v.iter().enumerate() {
-                if let (Some((c1, r1)), Some((c2, r2))) = (self.caps[i], other.caps[j]) {
-                    if c1.dot(c2).clamp(-1.0, 1.0).acos() > r1 + r2 + 1e-6 {
+            band.candidates(self.caps[i], &mut cand);
+            for &j in &cand {
+                let q = other.v[j];
+                if let (Some((c1, _)), Some((c2, _))) = (self.caps[i], other.caps[j]) {
+                    let ((cos1, sin1), (cos2, sin2)) = (trig_self[i], trig_other[j]);
+                    // Both radii are below 90°, so the sum is below 180° and cos decreases.
+                    if c1.dot(c2) < cos1 * cos2 - sin1 * sin2 {
                         continue;
                     }
                 }
@@ -659,7 +696,118 @@ impl Fan {
                 }
             }
         }
+        {
+            let mut old = vec![];
+            for (i, &p) in self.v.iter().enumerate() {
+                for (j, &q) in other.v.iter().enumerate() {
+                    if let (Some((c1, r1)), Some((c2, r2))) = (self.caps[i], other.caps[j]) {
+                        if c1.dot(c2).clamp(-1.0, 1.0).acos() > r1 + r2 + 1e-6 {
+                            continue;
+                        }
+                    }
+                    let meet = self.gens[i]
+                        .iter()
+                        .any(|&k| self.dirs[k].dot(q) >= h_other[k] - tol)
+                        || other.gens[j]
+                            .iter()
+                            .any(|&k| other.dirs[k].dot(p) >= h_self[k] - tol)
+                        || self.arcs[i].iter().any(|&[a, b]| {
+                            other.arcs[j].iter().any(|&[c, d]| {
+                                arcs_cross(
+                                    [self.dirs[a], self.dirs[b]],
+                                    [other.dirs[c], other.dirs[d]],
+                                )
+                            })
+                        });
+                    if meet {
+                        old.push((i, j, p + q));
+                    }
+                }
+            }
+            if old.len() != out.len() {
+                eprintln!(
+                    "DBG out differs {} {} ({}x{})",
+                    old.len(),
+                    out.len(),
+                    self.v.len(),
+                    other.v.len()
+                );
+                for (i, j, _) in &old {
+                    let (c1, r1) = self.caps[*i].unwrap_or_default();
+                    let (c2, r2) = other.caps[*j].unwrap_or_default();
+                    let mut cand = vec![];
+                    band.candidates(self.caps[*i], &mut cand);
+                    if !cand.contains(j) {
+                        eprintln!(
+                            "DBG missing {i} {j} cap1 {c1} {r1} cap2 {c2} {r2} ang {}",
+                            c1.dot(c2).clamp(-1.0, 1.0).acos()
+                        );
+                    }
+                }
+            }
+        }
         out
+    }
+}
+
+/// A fan's vertices by where their caps can be: those with a cap of radius at most
+/// [`CapBand::NARROW`] sorted by the cap centre's z, the rest (wide or no cap) apart.
+///
+/// Caps within angle θ of each other have latitudes (asin z) within θ, so a cap of radius
+/// r₁ centred at c can meet only the narrow caps whose z lies in the band of latitudes
+/// asin(c.z) ± (r₁ + [`CapBand::NARROW`] + 10⁻⁶): on a sphere's many small caps a thin band.
+struct CapBand {
+    /// (z of the cap's centre, vertex), narrow caps only, by z.
+    by_z: Vec<(f64, usize)>,
+    /// The vertices with a wide cap or none: candidates for every query.
+    wide: Vec<usize>,
+}
+
+impl CapBand {
+    /// The widest cap kept in the band (radians); wider ones are tried with every vertex.
+    const NARROW: f64 = 0.25;
+
+    fn of(caps: &[Option<(DVec3, f64)>]) -> CapBand {
+        let (mut by_z, mut wide) = (vec![], vec![]);
+        for (j, cap) in caps.iter().enumerate() {
+            match cap {
+                Some((c, r)) if *r <= Self::NARROW => by_z.push((c.z, j)),
+                _ => wide.push(j),
+            }
+        }
+        by_z.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        CapBand { by_z, wide }
+    }
+
+    /// Into `out`, in increasing order: the vertices whose caps may meet `cap` (every
+    /// vertex when it is None).
+    fn candidates(&self, cap: Option<(DVec3, f64)>, out: &mut Vec<usize>) {
+        out.clear();
+        out.extend_from_slice(&self.wide);
+        let (lo, hi) = match cap {
+            Some((c, r)) => {
+                use std::f64::consts::FRAC_PI_2;
+                // The margin covers asin's and sin's rounding.
+                let theta = r + Self::NARROW + 1e-6 + 1e-9;
+                let lat = c.z.clamp(-1.0, 1.0).asin();
+                let lo = if lat - theta <= -FRAC_PI_2 {
+                    f64::NEG_INFINITY
+                } else {
+                    (lat - theta).sin() - 1e-12
+                };
+                let hi = if lat + theta >= FRAC_PI_2 {
+                    f64::INFINITY
+                } else {
+                    (lat + theta).sin() + 1e-12
+                };
+                (lo, hi)
+            }
+            None => (f64::NEG_INFINITY, f64::INFINITY),
+        };
+        let a = self.by_z.partition_point(|e| e.0 < lo);
+        let b = self.by_z.partition_point(|e| e.0 <= hi);
+        out.extend(self.by_z[a..b].iter().map(|e| e.1));
+        out.sort_unstable();
     }
 }
 
