@@ -986,3 +986,19 @@ fn geometry_operations_read_their_imported_meshes() {
         "{e}"
     );
 }
+
+/// boolmesh appended a result's halfedges in a `HashMap`'s order (its seed differs from map to
+/// map) and broke its ear-clipping queue's ties by address: the union inside this design's
+/// `minkowski()` came out triangulated one of two ways, and the sum's pieces (and the colour
+/// codes they carry) with it (vendor/README.md). Seven more reads in one process: the same.
+#[test]
+fn a_minkowski_of_a_mesh_boolean_is_the_same_in_every_run() {
+    let text = include_str!("../../../vectors/designs/meshes/corner-protector.csg");
+    let first = parse(text);
+    assert!(first.imports.len() + first.solids.len() > 100);
+    for _ in 0..7 {
+        let again = parse(text);
+        assert_eq!(again.solids, first.solids);
+        assert_eq!(again.imports, first.imports);
+    }
+}
