@@ -641,24 +641,6 @@ impl Fan {
         let band = CapBand::of(&other.caps);
         let h_other = other.support(&self.dirs, &band);
         let h_self = self.support(&other.dirs, &CapBand::of(&self.caps));
-        {
-            let full = |f: &Fan, dirs: &[DVec3]| -> Vec<f64> {
-                dirs.iter()
-                    .map(|d| {
-                        f.v.iter()
-                            .map(|v| d.dot(*v))
-                            .fold(f64::NEG_INFINITY, f64::max)
-                    })
-                    .collect()
-            };
-            let a = full(other, &self.dirs);
-            let b = full(self, &other.dirs);
-            let da = a.iter().zip(&h_other).filter(|(x, y)| x != y).count();
-            let db = b.iter().zip(&h_self).filter(|(x, y)| x != y).count();
-            if da + db > 0 {
-                eprintln!("DBG support differs {da} {db} of {} {}", a.len(), b.len());
-            }
-        }
         // cos and sin of each radius, this fan's widened by the 10⁻⁶ slack: caps at angle
         // a apart are disjoint when a > r1 + r2 + 10⁻⁶, that is cos a < cos(r1' + r2).
         let trig = |caps: &[Option<(DVec3, f64)>], slack: f64| -> Vec<(f64, f64)> {
@@ -693,56 +675,6 @@ impl Fan {
                     });
                 if meet {
                     out.push(p + q);
-                }
-            }
-        }
-        {
-            let mut old = vec![];
-            for (i, &p) in self.v.iter().enumerate() {
-                for (j, &q) in other.v.iter().enumerate() {
-                    if let (Some((c1, r1)), Some((c2, r2))) = (self.caps[i], other.caps[j]) {
-                        if c1.dot(c2).clamp(-1.0, 1.0).acos() > r1 + r2 + 1e-6 {
-                            continue;
-                        }
-                    }
-                    let meet = self.gens[i]
-                        .iter()
-                        .any(|&k| self.dirs[k].dot(q) >= h_other[k] - tol)
-                        || other.gens[j]
-                            .iter()
-                            .any(|&k| other.dirs[k].dot(p) >= h_self[k] - tol)
-                        || self.arcs[i].iter().any(|&[a, b]| {
-                            other.arcs[j].iter().any(|&[c, d]| {
-                                arcs_cross(
-                                    [self.dirs[a], self.dirs[b]],
-                                    [other.dirs[c], other.dirs[d]],
-                                )
-                            })
-                        });
-                    if meet {
-                        old.push((i, j, p + q));
-                    }
-                }
-            }
-            if old.len() != out.len() {
-                eprintln!(
-                    "DBG out differs {} {} ({}x{})",
-                    old.len(),
-                    out.len(),
-                    self.v.len(),
-                    other.v.len()
-                );
-                for (i, j, _) in &old {
-                    let (c1, r1) = self.caps[*i].unwrap_or_default();
-                    let (c2, r2) = other.caps[*j].unwrap_or_default();
-                    let mut cand = vec![];
-                    band.candidates(self.caps[*i], &mut cand);
-                    if !cand.contains(j) {
-                        eprintln!(
-                            "DBG missing {i} {j} cap1 {c1} {r1} cap2 {c2} {r2} ang {}",
-                            c1.dot(c2).clamp(-1.0, 1.0).acos()
-                        );
-                    }
                 }
             }
         }
