@@ -176,8 +176,8 @@ impl Raster {
     }
 
     /// Make the layer whose samples are `s` (the voxelizer's slab: k·fw samples a row,
-    /// k·fh rows; a sample's colour code, 0 outside): its PNG box is then
-    /// [`Raster::lit`], and each material's [`Raster::material`].
+    /// k·fh rows; a sample's colour code, 0 outside): its PNG box, then each material's,
+    /// are what [`Raster::take_boxes`] hands over next.
     pub fn layer(&mut self, s: &[u8]) {
         let mut grey = std::mem::take(&mut self.grey);
         self.greys(s, None, &mut grey);
@@ -246,11 +246,6 @@ impl Raster {
         ((n * 255 + full / 2) / full) as u8
     }
 
-    /// The PNG box `rows` × `cols` of the last layer made.
-    pub fn lit(&self) -> &[u8] {
-        &self.lit
-    }
-
     /// The last layer's PNG boxes, the part's then each material's, handed over without a
     /// copy; buffers of `spare` (any content: placing a layer writes every byte of a box) or new
     /// ones take their place.
@@ -272,11 +267,6 @@ impl Raster {
     /// The material labels with a stack of their own (none for a scene of one colour).
     pub fn materials(&self) -> Vec<u8> {
         self.by_code.iter().map(|(c, _)| *c).collect()
-    }
-
-    /// Material `m`'s PNG box of the last layer made.
-    pub fn material(&self, m: usize) -> &[u8] {
-        &self.by_code[m].1
     }
 
     /// The footprint's size in pixels.
