@@ -44,6 +44,24 @@ pub struct BlistRow {
     pub stamp: u32,
 }
 
+impl BlistRow {
+    /// Whether the row classifies a voxel labelled `label` (§4.3.3): the label is 0 or the
+    /// row's name.
+    fn classifies(&self, label: u32) -> bool {
+        label == 0 || label == self.name
+    }
+
+    /// The label the row writes for classification `c` against its primitive: the stamp when
+    /// `c` equals the sign, else 0.
+    fn write(&self, c: bool) -> u32 {
+        if c == self.sign {
+            self.stamp
+        } else {
+            0
+        }
+    }
+}
+
 /// The Blist table BL of a CSG tree (§4.3), ready for ClassifyAgainstBlist (§4.3.3).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct BlistTable {
@@ -150,15 +168,14 @@ impl BlistTable {
         let mut colour = None;
         for row in &self.rows {
             t.zero_tests += 1;
-            let classify = label == 0 || {
+            if label != 0 {
                 t.name_tests += 1;
-                label == row.name
-            };
-            if classify {
+            }
+            if row.classifies(label) {
                 t.sign_tests += 1;
                 t.label_writes += 1;
                 let c = inside(row.prim);
-                label = if c == row.sign { row.stamp } else { 0 };
+                label = row.write(c);
                 if c || (label == self.in_name && colour.is_none()) {
                     colour = Some(row.prim);
                 }
@@ -675,8 +692,8 @@ enum Step {
 /// leaves alone, with no row classifying them, are not listed.
 struct Jump {
     /// (label before, label after, classifying rows, the first row's primitive sending it to
-    /// IN, or `usize::MAX`).
-    moves: Vec<(u32, u32, u64, usize)>,
+    /// IN, if any).
+    moves: Vec<(u32, u32, u64, Option<usize>)>,
 }
 
 impl Jump {
@@ -684,14 +701,15 @@ impl Jump {
     fn over(t: &BlistTable, rows: std::ops::Range<usize>, labels: usize) -> Jump {
         let mut moves = vec![];
         for v in 0..labels as u32 {
-            let (mut label, mut n, mut to_in) = (v, 0u64, usize::MAX);
+            let (mut label, mut n, mut to_in) = (v, 0u64, None);
             for row in &t.rows[rows.clone()] {
-                if label == 0 || label == row.name {
+                if row.classifies(label) {
                     n += 1;
-                    // Outside the primitive: the classification equals the sign iff it is −.
-                    label = if row.sign { 0 } else { row.stamp };
-                    if !row.sign && row.stamp == t.in_name && to_in == usize::MAX {
-                        to_in = row.prim;
+                    // The voxel is outside the absent primitive; [`BlistTable::run`]'s colour
+                    // rule for that case.
+                    label = row.write(false);
+                    if label == t.in_name && to_in.is_none() {
+                        to_in = Some(row.prim);
                     }
                 }
             }
@@ -713,9 +731,9 @@ impl Jump {
             }
             counts.comparisons += n * u64::from(lanes.count_ones());
             counts.label_writes += n * u64::from(lanes.count_ones());
-            if to_in != usize::MAX {
+            if let Some(prim) = to_in {
                 let uncoloured = colour_missing(colour, lanes);
-                set_colour(colour, uncoloured, to_in);
+                set_colour(colour, uncoloured, prim);
             }
             if to != from {
                 moved |= lanes;
