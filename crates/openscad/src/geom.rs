@@ -509,6 +509,13 @@ struct Fan {
     arcs: Vec<Vec<[usize; 2]>>,
     /// Per vertex, a cap holding its cone (unit centre, angular radius), None past 90°.
     caps: Vec<Option<(DVec3, f64)>>,
+    /// The caps by latitude, built once: a fan is summed with many others (a mesh's
+    /// triangles, each with the same convex operand).
+    band: CapBand,
+    /// Per vertex, the cosine and sine of its cap's radius ((0, 0) without a cap).
+    trig: Vec<(f64, f64)>,
+    /// The largest coordinate magnitude over the vertices.
+    reach: f64,
 }
 
 impl Fan {
@@ -589,7 +596,7 @@ impl Fan {
         gens: Vec<Vec<usize>>,
         arcs: Vec<Vec<[usize; 2]>>,
     ) -> Fan {
-        let caps = gens
+        let caps: Vec<_> = gens
             .iter()
             .map(|g| {
                 let c = g
@@ -601,23 +608,29 @@ impl Fan {
                 (c != DVec3::ZERO && cos > 1e-3).then(|| (c, cos.clamp(-1.0, 1.0).acos()))
             })
             .collect();
+        let band = CapBand::of(&caps);
+        let trig = cap_trig(&caps, 0.0);
+        let reach = v.iter().map(|v| v.abs().max_element()).fold(0.0, f64::max);
         Fan {
             v,
             dirs,
             gens,
             arcs,
             caps,
+            band,
+            trig,
+            reach,
         }
     }
 
     /// For each unit direction of `dirs`, the largest d · v over this fan's vertices. The
-    /// vertex that attains it has d in its cone, so in its cap: only the candidates `band`
-    /// (this fan's) gives for a cap of radius 0 at d are tried.
-    fn support(&self, dirs: &[DVec3], band: &CapBand) -> Vec<f64> {
+    /// vertex that attains it has d in its cone, so in its cap: only the candidates the
+    /// band gives for a cap of radius 0 at d are tried.
+    fn support(&self, dirs: &[DVec3]) -> Vec<f64> {
         let mut cand = vec![];
         dirs.iter()
             .map(|d| {
-                band.candidates(Some((*d, 0.0)), &mut cand);
+                self.band.candidates(Some((*d, 0.0)), &mut cand);
                 cand.iter()
                     .map(|&j| d.dot(self.v[j]))
                     .fold(f64::NEG_INFINITY, f64::max)
@@ -630,29 +643,17 @@ impl Fan {
     /// lie more than their radii (and 10⁻⁶) apart are skipped unseen: for each p only the
     /// q of [`CapBand::candidates`] are tried, in order.
     fn sum_vertices(&self, other: &Fan) -> Vec<DVec3> {
-        let scale = self
-            .v
-            .iter()
-            .chain(&other.v)
-            .map(|v| v.abs().max_element())
-            .fold(0.0, f64::max);
-        let tol = FAN_EPS * scale.max(f64::MIN_POSITIVE);
+        let tol = FAN_EPS * self.reach.max(other.reach).max(f64::MIN_POSITIVE);
         // h_other[k]: the support of `other` along self.dirs[k], and the reverse.
-        let band = CapBand::of(&other.caps);
-        let h_other = other.support(&self.dirs, &band);
-        let h_self = self.support(&other.dirs, &CapBand::of(&self.caps));
-        // cos and sin of each radius, this fan's widened by the 10⁻⁶ slack: caps at angle
-        // a apart are disjoint when a > r1 + r2 + 10⁻⁶, that is cos a < cos(r1' + r2).
-        let trig = |caps: &[Option<(DVec3, f64)>], slack: f64| -> Vec<(f64, f64)> {
-            caps.iter()
-                .map(|c| c.map_or((0.0, 0.0), |(_, r)| ((r + slack).cos(), (r + slack).sin())))
-                .collect()
-        };
-        let (trig_self, trig_other) = (trig(&self.caps, 1e-6), trig(&other.caps, 0.0));
+        let h_other = other.support(&self.dirs);
+        let h_self = self.support(&other.dirs);
+        // This fan's radii widened by the 10⁻⁶ slack: caps at angle a apart are disjoint
+        // when a > r1 + r2 + 10⁻⁶, that is cos a < cos(r1' + r2).
+        let (trig_self, trig_other) = (cap_trig(&self.caps, 1e-6), &other.trig);
         let mut out = vec![];
         let mut cand = vec![];
         for (i, &p) in self.v.iter().enumerate() {
-            band.candidates(self.caps[i], &mut cand);
+            other.band.candidates(self.caps[i], &mut cand);
             for &j in &cand {
                 let q = other.v[j];
                 if let (Some((c1, _)), Some((c2, _))) = (self.caps[i], other.caps[j]) {
@@ -680,6 +681,13 @@ impl Fan {
         }
         out
     }
+}
+
+/// The cosine and sine of each cap's radius plus `slack` ((0, 0) without a cap).
+fn cap_trig(caps: &[Option<(DVec3, f64)>], slack: f64) -> Vec<(f64, f64)> {
+    caps.iter()
+        .map(|c| c.map_or((0.0, 0.0), |(_, r)| ((r + slack).cos(), (r + slack).sin())))
+        .collect()
 }
 
 /// A fan's vertices by where their caps can be: those with a cap of radius at most
