@@ -738,14 +738,19 @@ impl Style<'_> {
     fn spend(&self, n: usize) -> csgpix_scene::Result<()> {
         let left = self.left.get();
         if n > left {
-            return Err(Error::SvgVertexLimit {
-                element: self.element.to_string(),
-                vertices: n as f64,
-                left,
-            });
+            return Err(self.refuse(n as f64));
         }
         self.left.set(left - n);
         Ok(())
+    }
+
+    /// The error for an element whose outline needs `vertices` points, past those left.
+    fn refuse(&self, vertices: f64) -> Error {
+        Error::SvgVertexLimit {
+            element: self.element.to_string(),
+            vertices,
+            left: self.left.get(),
+        }
     }
 
     /// The outline of an open polyline's stroke (libsvg's `offset_path`), refused before it
@@ -765,11 +770,7 @@ impl Style<'_> {
         };
         let bound = outline_bound(path.len(), w * 5000.0, cap, join);
         if bound > self.left.get() as f64 {
-            return Err(Error::SvgVertexLimit {
-                element: self.element.to_string(),
-                vertices: bound,
-                left: self.left.get(),
-            });
+            return Err(self.refuse(bound));
         }
         let outline = open_offset(path, w, cap, join);
         self.spend(outline.iter().map(Vec::len).sum())?;
