@@ -272,8 +272,9 @@ impl StackInfo<'_> {
 
 /// Thumbnails as PrusaSlicer names them, of the part seen from above: each pixel of the
 /// footprint shaded by the height of its top layer, fitted into `w`×`h`.
-pub fn thumbnail(raster: &Raster, layers: usize, (w, h): (u32, u32)) -> image::RgbImage {
+pub fn thumbnail(raster: &mut Raster, layers: usize, (w, h): (u32, u32)) -> image::RgbImage {
     let [fw, fh] = raster.footprint();
+    let top = raster.top();
     let mut img = image::RgbImage::from_pixel(w, h, image::Rgb([32, 32, 36]));
     if fw == 0 || fh == 0 || layers == 0 {
         return img;
@@ -285,7 +286,7 @@ pub fn thumbnail(raster: &Raster, layers: usize, (w, h): (u32, u32)) -> image::R
         for x in 0..dw.min(w) {
             let a = ((f64::from(x) / scale) as usize).min(fw - 1);
             let b = fh - 1 - ((f64::from(y) / scale) as usize).min(fh - 1);
-            let top = raster.top[b * fw + a];
+            let top = top[b * fw + a];
             if top == 0 {
                 continue;
             }

@@ -581,8 +581,14 @@ fn make_layers(
         let first = layers.start;
         let work = sweep_plan(vjob, plan, 0..layers.len(), |k: usize, s: &[u8]| {
             raster.layer(s);
-            let spare = spare.lock().ok().and_then(|r| r.try_recv().ok());
-            let boxes = raster.take_boxes(spare.unwrap_or_default());
+            // No boxes: the encoder's files of the layer before, again.
+            let boxes = match raster.repeated() {
+                true => vec![],
+                false => {
+                    let spare = spare.lock().ok().and_then(|r| r.try_recv().ok());
+                    raster.take_boxes(spare.unwrap_or_default())
+                }
+            };
             // The encoder stopped: the writer's error is the one to report.
             tx.send((first + k, boxes))
                 .map_err(|_| Stop::Io(std::io::Error::other("writer stopped")))
@@ -618,13 +624,22 @@ fn encode_layers(
     (boxes, spare): (std::sync::mpsc::Receiver<Boxes>, Sender<Vec<Vec<u8>>>),
     tx: Sender<Boxes>,
 ) -> std::io::Result<()> {
+    let mut last: Vec<Vec<u8>> = vec![];
     for (l, layer) in boxes {
+        // A layer with no boxes repeats the one before (`Raster::repeated`).
+        if layer.is_empty() {
+            if tx.send((l, last.clone())).is_err() {
+                break;
+            }
+            continue;
+        }
         let mut files = Vec::with_capacity(layer.len());
         for b in &layer {
             let mut f = Vec::with_capacity(8192);
             png.write(&mut f, b)?;
             files.push(f);
         }
+        last.clone_from(&files);
         // Back to the raster for a later layer, unless two are waiting there already.
         let _ = spare.try_send(layer);
         if tx.send((l, files)).is_err() {
@@ -696,6 +711,11 @@ impl Lit {
                 self.l = widen(self.l, l, l);
             }
         }
+    }
+
+    /// Layer `l`, lit where the layer before it was.
+    pub fn add_layer(&mut self, l: usize) {
+        self.l = widen(self.l, l, l);
     }
 
     /// `part` cut to what was lit with `k`×`k` samples a pixel when placed `at`. A side the

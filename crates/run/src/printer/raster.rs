@@ -112,12 +112,17 @@ pub struct Raster {
     lit: Vec<u8>,
     /// The pixels and layers lit so far.
     pub lit_extent: super::Lit,
-    /// The footprint's greys of the layer being made.
+    /// The footprint's greys of the last layer made, and a buffer for the next one's.
     grey: Vec<u8>,
-    /// Per footprint pixel, 1 + the highest layer that lit it (0: none), for thumbnails.
-    pub top: Vec<u32>,
+    next: Vec<u8>,
+    /// Per footprint pixel, 1 + the highest layer that lit it (0: none), for thumbnails,
+    /// up to the layers before the greys in `grey` ([`Raster::top`] adds them).
+    top: Vec<u32>,
     /// Layers made.
     layer: u32,
+    /// Whether the last layer made is the one before it again: its boxes are the ones
+    /// already handed over, and [`Raster::take_boxes`] is not to be called for it.
+    repeated: bool,
     /// Per layer made, its grey levels' sum (255 a full pixel).
     pub areas: Vec<u64>,
     /// The scene's material labels (colour codes) when it has more than one, each with the
@@ -157,8 +162,10 @@ impl Raster {
             lit: vec![0; band],
             lit_extent: super::Lit::default(),
             grey: vec![],
+            next: vec![],
             top: vec![0; fw * fh],
             layer: 0,
+            repeated: false,
             areas: vec![],
             by_code: codes.into_iter().map(|c| (c, vec![0; band])).collect(),
         }
@@ -168,35 +175,77 @@ impl Raster {
     ///
     /// A layer's boxes (the part's and each material's) are held in [`BOX_SETS`] places at
     /// once: the raster's own, the encoder's queue, the one being encoded and the spares
-    /// coming back. Beside them, the footprint's greys (a byte a pixel) and `top` (four).
+    /// coming back. Beside them, the footprint's greys of two layers (a byte a pixel each)
+    /// and `top` (four).
     pub fn bytes(at: &Placement, codes: usize) -> u64 {
         let [fw, fh] = at.pixels();
         let band = (fw * fh) as u64;
-        band * (1 + codes as u64) * BOX_SETS + 5 * band + (1 << 20)
+        band * (1 + codes as u64) * BOX_SETS + 6 * band + (1 << 20)
     }
 
     /// Make the layer whose samples are `s` (the voxelizer's slab: k·fw samples a row,
     /// k·fh rows; a sample's colour code, 0 outside): its PNG box, then each material's,
-    /// are what [`Raster::take_boxes`] hands over next.
+    /// are what [`Raster::take_boxes`] hands over next, unless the layer repeats the one
+    /// before ([`Raster::repeated`]).
     pub fn layer(&mut self, s: &[u8]) {
-        let mut grey = std::mem::take(&mut self.grey);
+        let mut grey = std::mem::take(&mut self.next);
         self.greys(s, None, &mut grey);
-        let now = self.layer + 1;
+        // Most of a part's layers are the one below again (walls run straight between
+        // the tops and bottoms of its features): such a layer keeps the boxes, the area and
+        // the extent it had. With materials, equal greys can hide a change of colour.
+        self.repeated = self.layer > 0 && self.by_code.is_empty() && grey == self.grey;
+        if self.repeated {
+            self.next = grey;
+            self.repeat();
+            return;
+        }
+        self.settle_top();
+        self.next = std::mem::replace(&mut self.grey, grey);
+        let grey = &self.grey;
         let area = grey.iter().map(|&g| u64::from(g)).sum();
-        // A select, not a branch, in a loop of its own: it runs a vector at a time.
-        for (t, &g) in self.top.iter_mut().zip(&grey) {
-            *t = if g != 0 { now } else { *t };
-        }
-        self.lit_extent.add(self.layer as usize, &grey, self.fw);
+        self.lit_extent.add(self.layer as usize, grey, self.fw);
         let (origin, step) = self.strides();
-        place(&grey, self.fw, &mut self.lit, origin, step);
+        place(grey, self.fw, &mut self.lit, origin, step);
+        let mut mat = std::mem::take(&mut self.next);
         for m in 0..self.by_code.len() {
-            self.greys(s, Some(self.by_code[m].0), &mut grey);
-            place(&grey, self.fw, &mut self.by_code[m].1, origin, step);
+            self.greys(s, Some(self.by_code[m].0), &mut mat);
+            place(&mat, self.fw, &mut self.by_code[m].1, origin, step);
         }
-        self.grey = grey;
+        self.next = mat;
         self.areas.push(area);
         self.layer += 1;
+    }
+
+    /// The layer just made is the one before again.
+    fn repeat(&mut self) {
+        let area = self.areas.last().copied().unwrap_or(0);
+        if area > 0 {
+            self.lit_extent.add_layer(self.layer as usize);
+        }
+        self.areas.push(area);
+        self.layer += 1;
+    }
+
+    /// Whether the last layer made repeats the one before: its PNG boxes are that layer's,
+    /// not handed over again.
+    pub fn repeated(&self) -> bool {
+        self.repeated
+    }
+
+    /// `top` up to the last layer made: the pixels the greys in `grey` light were lit last
+    /// by that layer (the layers since they were made repeat them).
+    fn settle_top(&mut self) {
+        let last = self.layer;
+        // A select, not a branch, in a loop of its own: it runs a vector at a time.
+        for (t, &g) in self.top.iter_mut().zip(&self.grey) {
+            *t = if g != 0 { last } else { *t };
+        }
+    }
+
+    /// Per footprint pixel, 1 + the highest layer that lit it (0: none), for thumbnails.
+    pub fn top(&mut self) -> &[u32] {
+        self.settle_top();
+        &self.top
     }
 
     /// Every footprint pixel's grey (row by row along Y, each along X): the share of its
@@ -278,6 +327,59 @@ impl Raster {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Layers that repeat the one before hand over no boxes, and the raster's areas,
+    /// extent and thumbnail heights are those of making every layer afresh: the boxes each
+    /// layer would have are the last ones handed over, checked pixel by pixel against the
+    /// samples, and `top` against the highest layer lighting each pixel.
+    #[test]
+    fn repeated_layers_keep_the_boxes_areas_extent_and_tops_of_the_layers_they_repeat() {
+        let p = Printer::named("sl1").unwrap();
+        let (fw, fh) = (13usize, 11usize);
+        let at = Placement {
+            shift: glam::DVec2::ZERO,
+            floor: 0.0,
+            i: (100, 100 + fw as u32),
+            j: (200, 200 + fh as u32),
+            layers: 8,
+        };
+        // Layer samples (aa 1): a disc of radius r at (cx, cy); 0 = empty.
+        let disc = |r: f64, cx: f64| -> Vec<u8> {
+            (0..fw * fh)
+                .map(|n| {
+                    let (a, b) = ((n % fw) as f64 - cx, (n / fw) as f64 - 5.0);
+                    u8::from(a * a + b * b <= r * r)
+                })
+                .collect()
+        };
+        let (a, b, e) = (disc(4.0, 6.0), disc(2.5, 3.0), vec![0u8; fw * fh]);
+        let layers = [&a, &a, &b, &b, &b, &e, &a, &a];
+        let mut r = Raster::new(&p, &at, 1, &[]);
+        let mut last: Vec<u8> = vec![];
+        let mut top = vec![0u32; fw * fh];
+        let (origin, step) = r.strides();
+        for (l, s) in layers.iter().enumerate() {
+            r.layer(s);
+            assert_eq!(r.repeated(), l > 0 && layers[l - 1] == *s, "layer {l}");
+            if !r.repeated() {
+                last = r.take_boxes(vec![]).remove(0);
+            }
+            for (n, &v) in s.iter().enumerate() {
+                let (i, j) = (n % fw, n / fw);
+                let at = (origin + i as isize * step[0] + j as isize * step[1]) as usize;
+                assert_eq!(last[at], v * 255, "layer {l} pixel {i},{j}");
+                top[n] = if v != 0 { l as u32 + 1 } else { top[n] };
+            }
+            let area: u64 = s.iter().map(|&v| u64::from(v) * 255).sum();
+            assert_eq!(r.areas[l], area, "layer {l}");
+        }
+        assert_eq!(r.top(), &top[..]);
+        let mut fresh = super::super::Lit::default();
+        for (l, s) in layers.iter().enumerate() {
+            fresh.add(l, s, fw);
+        }
+        assert_eq!(r.lit_extent, fresh);
+    }
 
     /// Every placement (a turn or not, each mirror) puts each grey where the strides say,
     /// for footprints of whole 8×8 blocks and of leftovers.
