@@ -57,7 +57,9 @@ the table of such a file). Progress goes to stderr.
 If numpy or Pillow is missing, or PrusaSlicer is not installed, the script says so and exits
 0 (the peer is optional). Installing Debian's prusa-slicer brings the Noto fonts, which
 fontconfig then prefers for sans-serif bold: the text designs of tests/designs.rs leave their
-ledger on such a machine (remove fonts-noto-core, fonts-noto-hinted, fonts-noto-ui-core after).
+ledger on such a machine, and fridge-magnet-letters is drawn in another font than its cached
+mesh. `dpkg --remove --force-depends fonts-noto-core fonts-noto-hinted fonts-noto-ui-core`
+after the install removes them and keeps prusa-slicer (`apt-get remove` takes it too).
 """
 
 import argparse

@@ -475,7 +475,7 @@ impl Raster {
     /// Along a row each edge function falls by `dy` per pixel ([`Edge::at`] is linear), so
     /// the pixels an edge covers are an interval found by one division ([`Edge::span`]); a
     /// row visits only the pixels of all three intervals, and the values, the coverage and
-    /// the depths are those of [`Raster::depth_at`] at every pixel.
+    /// the depths are those of `depth_at` (the tests' reference) at every pixel.
     pub(crate) fn rasterize(&self, win: Window, out: &mut Vec<(usize, f64)>) {
         let Some((x0, x1)) = pixel_span(self.lo.0, self.hi.0, win.x0, win.w) else {
             return;
