@@ -338,8 +338,13 @@ impl PrintJob {
             let maker = scope.spawn(move || make_layers(vjob, passes, raster, (tx, spare)));
             let encoder = scope.spawn(move || encode_layers(png, (boxes, back), encoded));
             let mut wrote = Ok(());
+            // A layer with no files repeats the one before (`Raster::repeated`).
+            let mut last = vec![];
             for (l, bytes) in rx.iter() {
-                wrote = emit(l, &bytes);
+                if !bytes.is_empty() {
+                    last = bytes;
+                }
+                wrote = emit(l, &last);
                 progress.advance(1);
                 if wrote.is_err() {
                     break;
@@ -581,7 +586,7 @@ fn make_layers(
         let first = layers.start;
         let work = sweep_plan(vjob, plan, 0..layers.len(), |k: usize, s: &[u8]| {
             raster.layer(s);
-            // No boxes: the encoder's files of the layer before, again.
+            // No boxes: the writer writes the layer before's files again.
             let boxes = match raster.repeated() {
                 true => vec![],
                 false => {
@@ -624,24 +629,18 @@ fn encode_layers(
     (boxes, spare): (std::sync::mpsc::Receiver<Boxes>, Sender<Vec<Vec<u8>>>),
     tx: Sender<Boxes>,
 ) -> std::io::Result<()> {
-    let mut last: Vec<Vec<u8>> = vec![];
     for (l, layer) in boxes {
-        // A layer with no boxes repeats the one before (`Raster::repeated`).
-        if layer.is_empty() {
-            if tx.send((l, last.clone())).is_err() {
-                break;
-            }
-            continue;
-        }
+        // A layer with no boxes repeats the one before: no files, the writer's again.
         let mut files = Vec::with_capacity(layer.len());
         for b in &layer {
             let mut f = Vec::with_capacity(8192);
             png.write(&mut f, b)?;
             files.push(f);
         }
-        last.clone_from(&files);
         // Back to the raster for a later layer, unless two are waiting there already.
-        let _ = spare.try_send(layer);
+        if !layer.is_empty() {
+            let _ = spare.try_send(layer);
+        }
         if tx.send((l, files)).is_err() {
             break; // the writer stopped and says why
         }

@@ -343,7 +343,7 @@ mod tests {
             j: (200, 200 + fh as u32),
             layers: 8,
         };
-        // Layer samples (aa 1): a disc of radius r at (cx, cy); 0 = empty.
+        // Layer samples (aa 1): a disc of radius r at (cx, 5); 0 = empty.
         let disc = |r: f64, cx: f64| -> Vec<u8> {
             (0..fw * fh)
                 .map(|n| {
