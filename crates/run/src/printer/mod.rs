@@ -131,8 +131,9 @@ impl PrintJob {
         let loaded = vjob.load(progress)?;
         let part = part_box(&loaded).map_err(|m| Error::options("SCENE", m))?;
         // A tree a difference or intersection can cut: its box, cut to what is lit. An
-        // archive is written on the tree's box first and again only if the cut differs (it
-        // seldom does); a stack's files cannot be unwritten, so its cut comes first.
+        // archive is written on the tree's box first and again only if the cut places the
+        // part otherwise (by more than 1/256 of a pixel or a layer: it seldom does); a
+        // stack's files cannot be unwritten, so its cut comes first.
         let exact = exact_box(&loaded.scene.root);
         let part = match (exact, kind) {
             (false, archive::Kind::Stack) => self.lit_box(&vjob, &loaded, part)?,
@@ -143,7 +144,8 @@ impl PrintJob {
         if !exact && kind == archive::Kind::Prusa {
             let k = self.aa as usize;
             let cut = self.cut_box((&vjob, &loaded), part, (&done.placed, k), &done.lit)?;
-            if cut != part {
+            let moved = !self.place(&vjob, cut)?.near(&done.placed, &self.printer);
+            if moved {
                 done = self.print_at(&mut outs, out, kind, at, cut)?;
             }
         }
@@ -432,15 +434,9 @@ impl PrintJob {
         k: usize,
     ) -> crate::Result<Vec<Pass>> {
         let p = &self.printer;
-        let n = placed.layers;
-        let same = (p.initial_layer_height - p.layer_height).abs() <= 1e-12 * p.layer_height;
-        let ranges = match (same, n) {
-            (true, _) | (false, 1) => [0..n, n..n],
-            (false, _) => [0..1, 1..n],
-        };
         let [w, h] = placed.pixels();
         let mut out = vec![];
-        for layers in ranges.into_iter().filter(|r| !r.is_empty()) {
+        for layers in layer_runs(p, 0..placed.layers) {
             let [lo, hi] = placed.grid(p, layers.clone());
             let dims = [w * k, h * k, layers.len()];
             let grid =
@@ -451,6 +447,17 @@ impl PrintJob {
         }
         Ok(out)
     }
+}
+
+/// The runs of evenly spaced layers among `layers`: the first layer is a run of its own
+/// when it is not as high as the others.
+fn layer_runs(p: &Printer, layers: std::ops::Range<usize>) -> Vec<std::ops::Range<usize>> {
+    let same = (p.initial_layer_height - p.layer_height).abs() <= 1e-12 * p.layer_height;
+    let runs = match same || layers.start > 0 || layers.len() < 2 {
+        true => [layers.clone(), layers.end..layers.end],
+        false => [0..1, 1..layers.end],
+    };
+    runs.into_iter().filter(|r| !r.is_empty()).collect()
 }
 
 /// What makes the layers: the voxelizer's job and passes, the PNG encoder, the progress.

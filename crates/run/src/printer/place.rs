@@ -106,6 +106,18 @@ pub fn sample_height(p: &Printer, l: usize) -> f64 {
 }
 
 impl Placement {
+    /// Whether `other` samples the part where this placement does, to 1/256 of a pixel
+    /// along X and Y and of a layer along Z: the same pixels, layers and (so nearly that no
+    /// sample can tell) the same shift and floor.
+    pub fn near(&self, other: &Placement, p: &Printer) -> bool {
+        let [px, py] = p.pitch();
+        let d = (self.shift - other.shift).abs();
+        (self.i, self.j, self.layers) == (other.i, other.j, other.layers)
+            && d.x <= px / 256.0
+            && d.y <= py / 256.0
+            && (self.floor - other.floor).abs() <= p.layer_height / 256.0
+    }
+
     /// The part's pixels along X and Y.
     pub fn pixels(&self) -> [usize; 2] {
         [
