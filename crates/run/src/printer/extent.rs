@@ -48,8 +48,10 @@ impl PrintJob {
     }
 
     /// `part` cut to what `lit` lit when placed `at` with `k`×`k` samples a pixel: each side
-    /// the samples stop short of found to 1/[`FINE`] of a sample step by one pass over the
-    /// step it lies in; the top set for PrusaSlicer's layer count over the new floor.
+    /// whose last unlit sample before the lit ones lies inside `part` ([`Lit::sides`]) found
+    /// by [`Probe::side`], the top set for PrusaSlicer's layer count over the new floor
+    /// ([`PrintJob::top`]). Elsewhere the side stays: the part reaches it, as far as the
+    /// samples can tell.
     pub(super) fn cut_box(
         &self,
         (vjob, loaded): (&VoxelizeJob, &Loaded),
@@ -57,7 +59,7 @@ impl PrintJob {
         (at, k): (&place::Placement, usize),
         lit: &Lit,
     ) -> crate::Result<Box3> {
-        let (mut lo, mut hi) = lit.cut(part, at, &self.printer, k);
+        let (mut lo, mut hi) = part;
         let probe = Probe {
             job: self,
             vjob,
@@ -173,28 +175,6 @@ impl Lit {
         self.l = widen(self.l, l, l);
     }
 
-    /// `part` cut to what was lit with `k`×`k` samples a pixel when placed `at`: a side
-    /// whose last unlit sample before the lit ones lies inside `part` moves in to that
-    /// sample (the part does not reach it); along Z the floor moves up to the sample height
-    /// of the last unlit layer, the top down to the top of the last lit one. Elsewhere the
-    /// side stays: the part reaches it, as far as the samples can tell.
-    fn cut(&self, (lo, hi): Box3, at: &place::Placement, p: &Printer, k: usize) -> Box3 {
-        let (Some(_), Some(l)) = (self.i, self.l) else {
-            return (lo, hi);
-        };
-        let (mut a, mut b) = (lo, hi);
-        for side in self.sides((lo, hi), at, p, k) {
-            match side.low {
-                true => a[side.axis] = side.span.0,
-                false => b[side.axis] = side.span.1,
-            }
-        }
-        if l.1 + 1 < at.layers {
-            b.z = at.floor + p.initial_layer_height + l.1 as f64 * p.layer_height;
-        }
-        (lo.max(a), hi.min(b))
-    }
-
     /// The sides of `part` the samples lit when placed `at` stop short of, each with the
     /// span it lies in: from the last unlit sample, inside `part`, to the first lit one
     /// (along X and Y the pixel's samples, `k` a pixel; along Z the floor only: the top is
@@ -281,7 +261,8 @@ impl Probe<'_> {
 
     /// The second look at a side along X or Y that the first pass narrowed to `span` and
     /// saw lit at the samples `r` along (of `grids`): a pixel across, out from the lit
-    /// sample, by [`FINE`] samples a pixel along, over the samples `r` and one either side.
+    /// sample, by [`FINE`] samples along for each of the first pass's, over the samples `r`
+    /// and one either side (at most [`ALONG`]).
     fn window(
         &self,
         side: &Side,
