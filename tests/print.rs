@@ -27,6 +27,21 @@ fn grey(png: &[u8]) -> image::GrayImage {
     image::load_from_memory(png).unwrap().to_luma8()
 }
 
+/// `csgpix print SCENE -o OUT --aa AA --json`, which must succeed: its report.
+fn print_aa(scene: &Path, out: &Path, aa: &str) -> serde_json::Value {
+    let r = csgpix(&[
+        "print",
+        scene.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--aa",
+        aa,
+        "--json",
+    ]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    serde_json::from_slice(&r.stdout).unwrap()
+}
+
 /// Intersection over union of the pixels at or above 128.
 fn iou(a: &image::GrayImage, b: &image::GrayImage) -> f64 {
     assert_eq!(a.dimensions(), b.dimensions());
@@ -242,26 +257,13 @@ fn a_part_cut_on_every_side_is_placed_as_the_same_part_uncut() {
          {\n\tcube(size = [7.541, 4.4287, 6.5986], center = false);\n}\n",
     )
     .unwrap();
-    let print = |scene: &Path, out: &Path, aa: &str| -> serde_json::Value {
-        let r = csgpix(&[
-            "print",
-            scene.to_str().unwrap(),
-            "-o",
-            out.to_str().unwrap(),
-            "--aa",
-            aa,
-            "--json",
-        ]);
-        assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
-        serde_json::from_slice(&r.stdout).unwrap()
-    };
     for aa in ["1", "4"] {
         let (a, b) = (dir.path().join("a"), dir.path().join("b"));
         std::fs::create_dir_all(&a).unwrap();
         std::fs::create_dir_all(&b).unwrap();
         let (ra, rb) = (
-            print(&cut, &a.join("p.sl1"), aa),
-            print(&solid, &b.join("p.sl1"), aa),
+            print_aa(&cut, &a.join("p.sl1"), aa),
+            print_aa(&solid, &b.join("p.sl1"), aa),
         );
         assert_eq!(ra["layers"], 131);
         assert_eq!(ra["layers"], rb["layers"]);
@@ -276,13 +278,72 @@ fn a_part_cut_on_every_side_is_placed_as_the_same_part_uncut() {
         }
     }
     let (a, b) = (dir.path().join("sa"), dir.path().join("sb"));
-    assert_eq!(print(&cut, &a, "1")["layers"], 131);
-    print(&solid, &b, "1");
+    assert_eq!(print_aa(&cut, &a, "1")["layers"], 131);
+    print_aa(&solid, &b, "1");
     for l in [0, 1, 65, 130] {
         let name = format!("layer-{l:05}.png");
         let x = image::open(a.join(&name)).unwrap().to_luma8();
         let y = image::open(b.join(&name)).unwrap().to_luma8();
         assert!(x == y, "stack layer {l} differs");
+    }
+}
+
+/// A diamond cut by a difference so that the part's highest and lowest points are
+/// corners where the cut meets its 45° edges, at different heights on either side: along
+/// a column of samples the lit extent falls short of such a corner by up to half a
+/// sample, so finding those sides needs the second, finer look around where the first
+/// saw them. Printed as the same outline extruded (whose box is exact): the same greys on
+/// every layer, at `--aa 1` and `--aa 4`.
+#[test]
+fn a_part_whose_cut_sides_are_corners_is_placed_as_the_same_part_uncut() {
+    let dir = tempfile::tempdir().unwrap();
+    let cut = dir.path().join("cut.csg");
+    let solid = dir.path().join("solid.csg");
+    let (c, s) = (
+        std::f64::consts::FRAC_1_SQRT_2,
+        2.5 * std::f64::consts::SQRT_2,
+    );
+    std::fs::write(
+        &cut,
+        format!(
+            "difference() {{\n\tmultmatrix([[{c}, -{c}, 0, 0], [{c}, {c}, 0, 0], [0, 0, 1, 1.5], \
+             [0, 0, 0, 1]]) {{\n\t\tcube(size = [5, 5, 3], center = true);\n\t}}\n\t\
+             multmatrix([[1, 0, 0, -1], [0, 1, 0, 0], [0, 0, 1, -5], [0, 0, 0, 1]]) {{\n\t\t\
+             cube(size = [10, 10, 10], center = false);\n\t}}\n\tmultmatrix([[1, 0, 0, -1.7], \
+             [0, 1, 0, -10], [0, 0, 1, -5], [0, 0, 0, 1]]) {{\n\t\t\
+             cube(size = [10, 10, 10], center = false);\n\t}}\n}}\n"
+        ),
+    )
+    .unwrap();
+    let outline = [
+        (-s, 0.0),
+        (-1.7, 1.7 - s),
+        (-1.7, 0.0),
+        (-1.0, 0.0),
+        (-1.0, s - 1.0),
+    ];
+    let points: Vec<String> = outline.iter().map(|(x, y)| format!("[{x}, {y}]")).collect();
+    std::fs::write(
+        &solid,
+        format!(
+            "linear_extrude(height = 3, center = false, convexity = 1, scale = [1, 1]) {{\n\t\
+             polygon(points = [{}], paths = undef, convexity = 1);\n}}\n",
+            points.join(", ")
+        ),
+    )
+    .unwrap();
+    for aa in ["1", "4"] {
+        let (a, b) = (dir.path().join("a.sl1"), dir.path().join("b.sl1"));
+        for (scene, out) in [(&cut, &a), (&solid, &b)] {
+            print_aa(scene, out, aa);
+        }
+        for l in 0..60 {
+            let (x, y) = (
+                member(&a, &format!("a{l:05}.png")),
+                member(&b, &format!("b{l:05}.png")),
+            );
+            assert!(grey(&x) == grey(&y), "--aa {aa}: layer {l} differs");
+        }
     }
 }
 
