@@ -532,12 +532,20 @@ impl Raster {
 }
 
 /// `v` rounded to the nearest f64, as `v as f64`; through i64 where it fits, whose
-/// conversion is one instruction and rounds the same value the same way.
+/// conversion is one instruction and rounds the same value the same way. The wide case is
+/// a call of its own: with both arms `as f64`, the optimiser sees them equal and makes the
+/// whole match one call of the i128 conversion (`__floattidf`).
 fn to_f64(v: i128) -> f64 {
     match i64::try_from(v) {
         Ok(v) => v as f64,
-        Err(_) => v as f64,
+        Err(_) => wide_to_f64(v),
     }
+}
+
+#[cold]
+#[inline(never)]
+fn wide_to_f64(v: i128) -> f64 {
+    v as f64
 }
 
 /// Pixel indices `[first, last]` within `0..n` whose centres lie in fixed-point `[lo, hi]`.
@@ -935,6 +943,21 @@ mod tests {
             x: x << FRAC_BITS,
             y: y << FRAC_BITS,
             z: 0.0,
+        }
+    }
+
+    /// `to_f64` rounds as `as f64` does, on both sides of the i64 range it takes the short
+    /// way in.
+    #[test]
+    fn to_f64_rounds_as_the_i128_conversion() {
+        let edge = [i128::from(i64::MAX), i128::from(i64::MIN)];
+        let mut values = vec![0, 1, -1, (1 << 100) + 12345, -(1 << 90) - 7];
+        values.extend([i128::MAX, i128::MIN, (1 << 53) + 1, -(1 << 60) - 3]);
+        for e in edge {
+            values.extend((-3..=3).map(|d| e + d));
+        }
+        for v in values {
+            assert_eq!(to_f64(v).to_bits(), (v as f64).to_bits(), "{v}");
         }
     }
 

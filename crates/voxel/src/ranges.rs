@@ -318,6 +318,18 @@ fn raw_depth(slicer: &Slicer, v: f64, up: bool) -> i128 {
     } else {
         (v * one).floor()
     };
+    // A whole number below 2^62 in size converts exactly through i64, in one instruction;
+    // the wide case is a call of its own so that the optimiser keeps the two apart (as one
+    // `as i128` the whole of it would be a call of `__fixdfti`).
+    match r.abs() < (1u64 << 62) as f64 {
+        true => i128::from(r as i64),
+        false => wide_raw(r),
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn wide_raw(r: f64) -> i128 {
     r.clamp(-1e30, 1e30) as i128
 }
 

@@ -19,12 +19,12 @@ const FINE: usize = 32;
 
 /// At most this many samples along a cut side in [`Probe::window`]'s pass.
 const ALONG: usize = 4096;
+
 impl PrintJob {
     /// The box of what the voxelizer lights, for a tree whose box may be larger than the
     /// part (a difference or intersection can cut its top or sides away): one pass on the
-    /// printer's pixels and layers within `part`, and `part` cut to the pixels and layers
-    /// lit. Where the part reaches a side of `part` that side stays exact; elsewhere it is
-    /// known to a pixel (a layer along Z).
+    /// printer's pixels and layers within `part`, and `part` cut to what it lit
+    /// ([`PrintJob::cut_box`]).
     pub(super) fn lit_box(
         &self,
         vjob: &VoxelizeJob,
