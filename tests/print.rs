@@ -42,6 +42,29 @@ fn print_aa(scene: &Path, out: &Path, aa: &str) -> serde_json::Value {
     serde_json::from_slice(&r.stdout).unwrap()
 }
 
+/// Prints `cut` and `solid` into archives at `--aa AA` and asserts they are the same
+/// print: the same layer count, the part at the same pixels, every layer's greys equal.
+/// The layer count.
+fn prints_alike(cut: &Path, solid: &Path, aa: &str) -> usize {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("p.sl1"), dir.path().join("q.sl1"));
+    let (ra, rb) = (print_aa(cut, &a, aa), print_aa(solid, &b, aa));
+    assert_eq!(ra["layers"], rb["layers"], "--aa {aa}: layer counts");
+    assert_eq!(
+        ra["part_origin"], rb["part_origin"],
+        "--aa {aa}: part origins"
+    );
+    let layers = ra["layers"].as_u64().unwrap() as usize;
+    for l in 0..layers {
+        let (x, y) = (
+            member(&a, &format!("p{l:05}.png")),
+            member(&b, &format!("q{l:05}.png")),
+        );
+        assert!(grey(&x) == grey(&y), "--aa {aa}: layer {l} differs");
+    }
+    layers
+}
+
 /// Intersection over union of the pixels at or above 128.
 fn iou(a: &image::GrayImage, b: &image::GrayImage) -> f64 {
     assert_eq!(a.dimensions(), b.dimensions());
@@ -258,24 +281,7 @@ fn a_part_cut_on_every_side_is_placed_as_the_same_part_uncut() {
     )
     .unwrap();
     for aa in ["1", "4"] {
-        let (a, b) = (dir.path().join("a"), dir.path().join("b"));
-        std::fs::create_dir_all(&a).unwrap();
-        std::fs::create_dir_all(&b).unwrap();
-        let (ra, rb) = (
-            print_aa(&cut, &a.join("p.sl1"), aa),
-            print_aa(&solid, &b.join("p.sl1"), aa),
-        );
-        assert_eq!(ra["layers"], 131);
-        assert_eq!(ra["layers"], rb["layers"]);
-        assert_eq!(ra["part_origin"], rb["part_origin"]);
-        for l in 0..131 {
-            let name = format!("p{l:05}.png");
-            let (x, y) = (
-                member(&a.join("p.sl1"), &name),
-                member(&b.join("p.sl1"), &name),
-            );
-            assert!(grey(&x) == grey(&y), "--aa {aa}: layer {l} differs");
-        }
+        assert_eq!(prints_alike(&cut, &solid, aa), 131);
     }
     let (a, b) = (dir.path().join("sa"), dir.path().join("sb"));
     assert_eq!(print_aa(&cut, &a, "1")["layers"], 131);
@@ -333,17 +339,57 @@ fn a_part_whose_cut_sides_are_corners_is_placed_as_the_same_part_uncut() {
     )
     .unwrap();
     for aa in ["1", "4"] {
-        let (a, b) = (dir.path().join("a.sl1"), dir.path().join("b.sl1"));
-        for (scene, out) in [(&cut, &a), (&solid, &b)] {
-            print_aa(scene, out, aa);
-        }
-        for l in 0..60 {
-            let (x, y) = (
-                member(&a, &format!("a{l:05}.png")),
-                member(&b, &format!("b{l:05}.png")),
-            );
-            assert!(grey(&x) == grey(&y), "--aa {aa}: layer {l} differs");
-        }
+        assert_eq!(prints_alike(&cut, &solid, aa), 60);
+    }
+}
+
+/// A part whose box a difference cuts on four sides, beyond which two fins and two pillars
+/// stick out, each 0.06 mm thick (1.3 pixels on the SL1): the print's box is found before
+/// the print by a first look at every eighth sample along X and Y, which steps over such a
+/// fin or pillar, and then by every sample between the box's sides and what that look lit
+/// (along Z, in the layers it lit none of). Printed as the same part uncut (the cube, the
+/// fins and the pillars, whose box is exact): the same layers and greys.
+#[test]
+fn thin_features_between_the_first_looks_samples_still_place_the_part() {
+    let dir = tempfile::tempdir().unwrap();
+    let (cut, solid) = (dir.path().join("cut.csg"), dir.path().join("solid.csg"));
+    let cube = |at: [f64; 3], size: [f64; 3]| {
+        format!(
+            "\tmultmatrix([[1, 0, 0, {}], [0, 1, 0, {}], [0, 0, 1, {}], [0, 0, 0, 1]]) \
+             {{\n\t\tcube(size = [{}, {}, {}], center = false);\n\t}}\n",
+            at[0], at[1], at[2], size[0], size[1], size[2]
+        )
+    };
+    let part = [
+        cube([0.0, 0.0, 0.0], [6.0, 4.0, 2.0]),
+        cube([6.0, 2.013, 0.0], [1.317, 0.06, 2.0]),
+        cube([3.021, -1.139, 0.0], [0.06, 1.139, 2.0]),
+        cube([1.5, 1.0, 0.0], [0.06, 0.06, 2.8]),
+        cube([4.5, 3.0, -0.4], [0.06, 0.06, 0.4]),
+    ]
+    .concat();
+    let far = [
+        cube([9.0, 0.0, 0.0], [2.0, 4.0, 2.0]),
+        cube([0.0, -4.0, 0.0], [6.0, 1.5, 2.0]),
+        cube([0.0, 0.0, 3.5], [6.0, 4.0, 1.0]),
+        cube([0.0, 0.0, -2.0], [6.0, 4.0, 0.5]),
+    ]
+    .concat();
+    let cutters = [
+        cube([8.1, -10.0, -5.0], [10.0, 20.0, 15.0]),
+        cube([-10.0, -10.0, -5.0], [20.0, 8.3, 15.0]),
+        cube([-10.0, -10.0, 3.3], [30.0, 30.0, 5.0]),
+        cube([-10.0, -10.0, -10.0], [30.0, 30.0, 9.5]),
+    ]
+    .concat();
+    std::fs::write(
+        &cut,
+        format!("difference() {{\n\tunion() {{\n{part}{far}\t}}\n{cutters}}}\n"),
+    )
+    .unwrap();
+    std::fs::write(&solid, format!("union() {{\n{part}}}\n")).unwrap();
+    for aa in ["1", "4"] {
+        assert_eq!(prints_alike(&cut, &solid, aa), 64);
     }
 }
 

@@ -22,29 +22,55 @@ const ALONG: usize = 4096;
 
 impl PrintJob {
     /// The box of what the voxelizer lights, for a tree whose box may be larger than the
-    /// part (a difference or intersection can cut its top or sides away): one pass on the
-    /// printer's pixels and layers within `part`, and `part` cut to what it lit
-    /// ([`PrintJob::cut_box`]).
+    /// part (a difference or intersection can cut its top or sides away): what the print's
+    /// samples (`k` a pixel) would light with the part placed on `part` ([`Scan::lit`]),
+    /// and `part` cut to that ([`PrintJob::cut_box`]). Found before the print, so that the
+    /// print is made once, where the part sits.
     pub(super) fn lit_box(
         &self,
         vjob: &VoxelizeJob,
         loaded: &Loaded,
         part: Box3,
+        k: usize,
     ) -> crate::Result<Box3> {
         let placed = self.place(vjob, part)?;
-        let passes = self.passes(vjob, loaded, &placed, 1)?;
-        let need = passes.iter().map(|p| p.1).max().unwrap_or(0);
+        let scan = Scan {
+            job: self,
+            vjob,
+            loaded,
+            at: &placed,
+            k,
+        };
+        let lit = scan.lit()?;
+        self.cut_box((vjob, loaded), part, (&placed, k), &lit)
+    }
+
+    /// The voxelizer's plan on `grid` in the float model, within the memory limit: the
+    /// looks at the part's box ask about the part itself (a side between two samples, a
+    /// height below a layer's top), not about the depth word's rounding.
+    fn float_plan(
+        &self,
+        vjob: &VoxelizeJob,
+        loaded: &Loaded,
+        grid: Grid,
+    ) -> crate::Result<crate::voxelize::plan::Plan> {
+        let mut exact = vjob.clone();
+        exact.voxels.model = csgpix_draw::Model::Float;
+        self.plan(&exact, loaded, grid)
+    }
+
+    /// `vjob`'s plan on `grid`, within the memory limit.
+    fn plan(
+        &self,
+        vjob: &VoxelizeJob,
+        loaded: &Loaded,
+        grid: Grid,
+    ) -> crate::Result<crate::voxelize::plan::Plan> {
+        let plan = vjob.plan_on(loaded, grid)??;
+        let need = plan.budget(vjob, &loaded.scene)?.need;
         self.max_memory
             .check(need, "this print", "raise --max-memory")?;
-        let [fw, _] = placed.pixels();
-        let mut lit = Lit::default();
-        for (plan, _, layers) in &passes {
-            sweep_plan(vjob, plan, 0..layers.len(), |k: usize, s: &[u8]| {
-                lit.add(layers.start + k, s, fw);
-                Ok::<(), csgpix_voxel::Error>(())
-            })?;
-        }
-        self.cut_box((vjob, loaded), part, (&placed, 1), &lit)
+        Ok(plan)
     }
 
     /// `part` cut to what `lit` lit when placed `at` with `k`×`k` samples a pixel: each side
@@ -122,9 +148,7 @@ impl PrintJob {
             .map_err(|e| Error::from(csgpix_voxel::Error::from(e)))?;
         // The float model: the word's depths are a 1/1024 of the slab apart, coarser
         // than the step below the top that this asks about.
-        let mut exact = vjob.clone();
-        exact.voxels.model = csgpix_draw::Model::Float;
-        let plan = exact.plan_on(loaded, grid).map_err(Error::from)??;
+        let plan = self.float_plan(vjob, loaded, grid)?;
         let mut any = false;
         sweep_plan(vjob, &plan, 0..1, |_: usize, s: &[u8]| {
             any |= s.iter().any(|&v| v != 0);
@@ -157,22 +181,38 @@ fn widen(r: Option<(usize, usize)>, a: usize, b: usize) -> Option<(usize, usize)
 }
 
 impl Lit {
-    /// Layer `l`'s samples `s`, rows `fw` wide.
-    pub fn add(&mut self, l: usize, s: &[u8], fw: usize) {
-        for (j, row) in s.chunks_exact(fw.max(1)).enumerate() {
+    /// Layer `l`'s samples `s`, rows `w` wide, whose first is column `x0` and row `y0`
+    /// and which lie `step` columns and rows apart.
+    fn add(&mut self, l: usize, s: &[u8], w: usize, (x0, y0, step): (usize, usize, usize)) {
+        for (r, row) in s.chunks_exact(w.max(1)).enumerate() {
             let first = row.iter().position(|&v| v != 0);
             if let Some(a) = first {
                 let b = row.iter().rposition(|&v| v != 0).unwrap_or(a);
-                self.i = widen(self.i, a, b);
-                self.j = widen(self.j, j, j);
+                self.i = widen(self.i, x0 + a * step, x0 + b * step);
+                self.j = widen(self.j, y0 + r * step, y0 + r * step);
                 self.l = widen(self.l, l, l);
             }
         }
     }
 
-    /// Layer `l`, lit where the layer before it was.
-    pub fn add_layer(&mut self, l: usize) {
-        self.l = widen(self.l, l, l);
+    /// What either lit.
+    fn join(&mut self, o: Lit) {
+        let pairs = [(&mut self.i, o.i), (&mut self.j, o.j), (&mut self.l, o.l)];
+        for (r, o) in pairs {
+            if let Some((a, b)) = o {
+                *r = widen(*r, a, b);
+            }
+        }
+    }
+
+    /// The pixels of samples lit `k` a pixel side.
+    fn pixels(self, k: usize) -> Lit {
+        let px = |r: Option<(usize, usize)>| r.map(|(a, b)| (a / k, b / k));
+        Lit {
+            i: px(self.i),
+            j: px(self.j),
+            l: self.l,
+        }
     }
 
     /// The sides of `part` the samples lit when placed `at` stop short of, each with the
@@ -383,25 +423,12 @@ impl Probe<'_> {
     /// (as [`PrintJob::lit_at`]); None when a plane of the scene does not fit the depth
     /// word on a grid that fine or placed there.
     fn lit_along(&self, axis: usize, grid: Grid) -> crate::Result<Option<Vec<Lit1>>> {
-        match self.sweep_lit(axis, grid) {
-            Ok(seen) => Ok(Some(seen)),
-            Err(Error::Voxel(
-                csgpix_voxel::Error::Plane { .. }
-                | csgpix_voxel::Error::Draw(csgpix_draw::Error::Solid { .. }),
-            )) => Ok(None),
-            Err(e) => Err(e),
-        }
+        fits(self.sweep_lit(axis, grid))
     }
 
     fn sweep_lit(&self, axis: usize, grid: Grid) -> crate::Result<Vec<Lit1>> {
         let [w, _, slabs] = grid.dims;
-        let mut exact = self.vjob.clone();
-        exact.voxels.model = csgpix_draw::Model::Float;
-        let plan = exact.plan_on(self.loaded, grid)??;
-        let need = plan.budget(self.vjob, &self.loaded.scene)?.need;
-        self.job
-            .max_memory
-            .check(need, "this print", "raise --max-memory")?;
+        let plan = self.job.float_plan(self.vjob, self.loaded, grid)?;
         let mut seen: Vec<Lit1> = vec![None; grid.dims[axis]];
         sweep_plan(self.vjob, &plan, 0..slabs, |z: usize, s: &[u8]| {
             for (r, row) in s.chunks_exact(w).enumerate() {
@@ -420,6 +447,204 @@ impl Probe<'_> {
             Ok::<(), csgpix_voxel::Error>(())
         })?;
         Ok(seen)
+    }
+}
+
+/// Samples apart, along X and Y, of [`Scan::lit`]'s first look.
+const COARSE: usize = 8;
+
+/// A look, before a print, at what its samples would light: the print's placement and
+/// samples a pixel side, the scene.
+struct Scan<'a> {
+    job: &'a PrintJob,
+    vjob: &'a VoxelizeJob,
+    loaded: &'a Loaded,
+    at: &'a place::Placement,
+    k: usize,
+}
+
+/// Some of a print's samples: every `step`-th of the columns `x` and rows `y` (samples,
+/// `k` a pixel side) in the layers `layers`.
+#[derive(Clone, Debug)]
+struct Region {
+    x: std::ops::Range<usize>,
+    y: std::ops::Range<usize>,
+    layers: std::ops::Range<usize>,
+    step: usize,
+}
+
+impl Region {
+    fn is_empty(&self) -> bool {
+        self.x.is_empty() || self.y.is_empty() || self.layers.is_empty()
+    }
+
+    /// Every `step`-th of its samples along X and Y, from the middle of the first `step`.
+    fn every(&self, step: usize) -> Region {
+        let from = |r: &std::ops::Range<usize>| r.start + (step / 2).min(r.len().saturating_sub(1));
+        Region {
+            x: from(&self.x)..self.x.end,
+            y: from(&self.y)..self.y.end,
+            layers: self.layers.clone(),
+            step,
+        }
+    }
+
+    /// Its samples along X and Y.
+    fn dims(&self) -> [usize; 2] {
+        [self.x.len(), self.y.len()].map(|n| n.div_ceil(self.step))
+    }
+}
+
+impl Scan<'_> {
+    /// The pixels and layers the print's samples light, in the float model. A first look
+    /// takes every [`COARSE`]-th sample along X and Y, in every layer. What it lit can
+    /// reach further out only by a feature that fits between its samples, so then every
+    /// sample is looked at between each side of the box and the first look's outermost
+    /// lit one, along X and along Y in every layer; along Z, in the layers below and above
+    /// those lit so far, every second sample and then, in the layers still unlit beyond
+    /// what that lit, every sample. The part's surface costs the first look a sample in 64
+    /// and the strips along X and Y what the box holds outside the part; the layers along
+    /// Z cost a look at the whole footprint, where the first look lit none of them (a
+    /// chamfered or rounded bottom or top, a cut floor or top). Where the first look lit
+    /// nothing, or a plane does not fit the depth word on a look's grid, every sample is
+    /// looked at.
+    fn lit(&self) -> crate::Result<Lit> {
+        let [fw, fh] = self.at.pixels();
+        let all = Region {
+            x: 0..fw * self.k,
+            y: 0..fh * self.k,
+            layers: 0..self.at.layers,
+            step: 1,
+        };
+        match self.sides_lit(&all)? {
+            Some(lit) => Ok(lit.pixels(self.k)),
+            None => self.everything(all),
+        }
+    }
+
+    /// [`Scan::lit`]'s looks, in samples along X and Y; None when the first look lit
+    /// nothing or a look's grid does not fit the word.
+    fn sides_lit(&self, all: &Region) -> crate::Result<Option<Lit>> {
+        let float = csgpix_draw::Model::Float;
+        let Some(mut lit) = self.look(&all.every(COARSE), float)? else {
+            return Ok(None);
+        };
+        let (Some(i), Some(j)) = (lit.i, lit.j) else {
+            return Ok(None);
+        };
+        let (w, h) = (all.x.end, all.y.end);
+        let strips = [
+            Region {
+                x: 0..i.0,
+                ..all.clone()
+            },
+            Region {
+                x: i.1 + 1..w,
+                ..all.clone()
+            },
+            Region {
+                y: 0..j.0,
+                ..all.clone()
+            },
+            Region {
+                y: j.1 + 1..h,
+                ..all.clone()
+            },
+        ];
+        for r in strips.iter().filter(|r| !r.is_empty()) {
+            let Some(seen) = self.look(r, float)? else {
+                return Ok(None);
+            };
+            lit.join(seen);
+        }
+        let Some(l) = lit.l else {
+            return Ok(None);
+        };
+        for (low, mut rest) in [(true, 0..l.0), (false, l.1 + 1..all.layers.end)] {
+            for step in [2, 1] {
+                if rest.is_empty() {
+                    break;
+                }
+                let r = Region {
+                    layers: rest.clone(),
+                    ..all.clone()
+                };
+                let Some(seen) = self.look(&r.every(step), float)? else {
+                    return Ok(None);
+                };
+                lit.join(seen);
+                if let Some((a, b)) = seen.l {
+                    rest = match low {
+                        true => rest.start..a,
+                        false => b + 1..rest.end,
+                    };
+                }
+            }
+        }
+        Ok(Some(lit))
+    }
+
+    /// Every sample's look, in the float model, or where a plane does not fit the word on
+    /// that grid, in the print's own.
+    fn everything(&self, all: Region) -> crate::Result<Lit> {
+        let lit = match self.look(&all, csgpix_draw::Model::Float)? {
+            Some(lit) => lit,
+            None => self.look(&all, self.vjob.voxels.model)?.unwrap_or_default(),
+        };
+        Ok(lit.pixels(self.k))
+    }
+
+    /// What the samples of `r` light in `model`: sample indices along X and Y, layers
+    /// along Z; None when a plane of the scene does not fit the depth word on its grid.
+    fn look(&self, r: &Region, model: csgpix_draw::Model) -> crate::Result<Option<Lit>> {
+        let p = &self.job.printer;
+        let [fw, fh] = self.at.pixels();
+        let [nx, ny] = r.dims();
+        let mut vjob = self.vjob.clone();
+        vjob.voxels.model = model;
+        let mut lit = Lit::default();
+        for layers in super::layer_runs(p, r.layers.clone()) {
+            let [lo, hi] = self.at.grid(p, layers.clone());
+            // The samples of X's `q`-th column and Y's row (of `fw`·k and `fh`·k) are
+            // at lo + (q + ½)·d: a grid of every `step`-th from the range's start has
+            // its cells `step`·d wide, the first centred on it.
+            let axis = |lo: f64, hi: f64, n: usize, q: &std::ops::Range<usize>, m: usize| {
+                let d = (hi - lo) / n as f64;
+                let a = lo + (q.start as f64 + 0.5 - 0.5 * r.step as f64) * d;
+                (a, a + (m * r.step) as f64 * d)
+            };
+            let (x0, x1) = axis(lo.x, hi.x, fw * self.k, &r.x, nx);
+            let (y0, y1) = axis(lo.y, hi.y, fh * self.k, &r.y, ny);
+            let grid = Grid::new(
+                [nx, ny, layers.len()],
+                DVec3::new(x0, y0, lo.z),
+                DVec3::new(x1, y1, hi.z),
+            )
+            .map_err(|e| Error::from(csgpix_voxel::Error::from(e)))?;
+            let swept = self.job.plan(&vjob, self.loaded, grid).and_then(|plan| {
+                sweep_plan(&vjob, &plan, 0..layers.len(), |z: usize, s: &[u8]| {
+                    lit.add(layers.start + z, s, nx, (r.x.start, r.y.start, r.step));
+                    Ok::<(), Error>(())
+                })
+                .map(|_| ())
+            });
+            if fits(swept)?.is_none() {
+                return Ok(None);
+            }
+        }
+        Ok(Some(lit))
+    }
+}
+
+/// `r`, or None when it failed because a plane does not fit the depth word on that grid.
+fn fits<T>(r: crate::Result<T>) -> crate::Result<Option<T>> {
+    match r {
+        Ok(t) => Ok(Some(t)),
+        Err(Error::Voxel(
+            csgpix_voxel::Error::Plane { .. }
+            | csgpix_voxel::Error::Draw(csgpix_draw::Error::Solid { .. }),
+        )) => Ok(None),
+        Err(e) => Err(e),
     }
 }
 

@@ -33,7 +33,7 @@ use crate::progress::Progress;
 use crate::read::ReadSettings;
 use crate::voxelize::{OutputOptions, VoxelizeJob};
 use crate::Error;
-pub use extent::{part_box, Lit};
+pub use extent::part_box;
 pub use profile::{Printer, PROFILES};
 
 use extent::{exact_box, Box3};
@@ -130,25 +130,8 @@ impl PrintJob {
         let vjob = self.voxelize_job();
         let loaded = vjob.load(progress)?;
         let part = part_box(&loaded).map_err(|m| Error::options("SCENE", m))?;
-        // A tree a difference or intersection can cut: its box, cut to what is lit. An
-        // archive is written on the tree's box first and again only if the cut places the
-        // part otherwise (by more than 1/256 of a pixel or a layer: it seldom does); a
-        // stack's files cannot be unwritten, so its cut comes first.
-        let exact = exact_box(&loaded.scene.root);
-        let part = match (exact, kind) {
-            (false, archive::Kind::Stack) => self.lit_box(&vjob, &loaded, part)?,
-            _ => part,
-        };
-        let at = (&vjob, &loaded, progress);
-        let mut done = self.print_at(&mut outs, out, kind, at, part)?;
-        if !exact && kind == archive::Kind::Prusa {
-            let k = self.aa as usize;
-            let cut = self.cut_box((&vjob, &loaded), part, (&done.placed, k), &done.lit)?;
-            let moved = !self.place(&vjob, cut)?.near(&done.placed, &self.printer);
-            if moved {
-                done = self.print_at(&mut outs, out, kind, at, cut)?;
-            }
-        }
+        let part = self.placed_box(&vjob, &loaded, part)?;
+        let done = self.print_at(&mut outs, out, kind, (&vjob, &loaded, progress), part)?;
         let Printed {
             placed,
             grid,
@@ -186,6 +169,20 @@ impl PrintJob {
                 .map(|w| w.to_string())
                 .collect(),
         })
+    }
+
+    /// The box the part is placed on: the tree's `part` where nothing can cut it (or where
+    /// what the print's samples light, cut to a fraction of a pixel, places the part within
+    /// 1/256 of a pixel and a layer of where `part` does: it seldom moves); else that cut.
+    fn placed_box(&self, vjob: &VoxelizeJob, loaded: &Loaded, part: Box3) -> crate::Result<Box3> {
+        if exact_box(&loaded.scene.root) {
+            return Ok(part);
+        }
+        let cut = self.lit_box(vjob, loaded, part, self.aa as usize)?;
+        let moved = !self
+            .place(vjob, cut)?
+            .near(&self.place(vjob, part)?, &self.printer);
+        Ok(if moved { cut } else { part })
     }
 
     /// The print of the part of box `part` staged in `out`.
@@ -233,7 +230,6 @@ impl PrintJob {
             grid,
             need,
             summary,
-            lit: raster.lit_extent,
         })
     }
 
@@ -609,12 +605,10 @@ impl From<crate::Error> for Stop {
     }
 }
 
-/// What one print made: where, on which grid, its memory estimate, its totals, and the
-/// pixels and layers it lit.
+/// What one print made: where, on which grid, its memory estimate and its totals.
 struct Printed {
     placed: place::Placement,
     grid: Grid,
     need: u64,
     summary: archive::Summary,
-    lit: Lit,
 }

@@ -26,8 +26,11 @@ fn place(grey: &[u8], fw: usize, lit: &mut [u8], origin: isize, step: [isize; 2]
         return;
     }
     let whole = |n: usize| n - n % 8;
-    for b0 in (0..whole(fh)).step_by(8) {
-        for a0 in (0..whole(fw)).step_by(8) {
+    // By tiles of 64 footprint columns: the 64 PNG rows a tile writes stay in the first
+    // cache level (and its pages in the TLB) while the tile's footprint rows go by.
+    let tiles = (0..whole(fw)).step_by(64);
+    for (t0, b0) in tiles.flat_map(|t| (0..whole(fh)).step_by(8).map(move |b| (t, b))) {
+        for a0 in (t0..(t0 + 64).min(whole(fw))).step_by(8) {
             let rows: [u64; 8] = std::array::from_fn(|r| {
                 let at = (b0 + r) * fw + a0;
                 u64::from_le_bytes(grey[at..at + 8].try_into().unwrap_or([0; 8]))
@@ -67,6 +70,16 @@ fn place(grey: &[u8], fw: usize, lit: &mut [u8], origin: isize, step: [isize; 2]
         }
     }
 }
+
+/// The sum of `b`'s bytes, in 64 KiB chunks whose sums fit a `u32`: a loop the compiler
+/// runs 16 or 32 bytes a step, where widening each byte to a `u64` it runs one.
+fn byte_sum(b: &[u8]) -> u64 {
+    let chunk = |c: &[u8]| u64::from(c.iter().map(|&v| u32::from(v)).sum::<u32>());
+    b.chunks(1 << 16).map(chunk).sum()
+}
+
+// `Raster::top` holds 1 + a layer's index in a `u16`.
+const _: () = assert!(super::zip::MAX_MEMBERS <= u16::MAX as usize);
 
 /// Places a layer's boxes are held at once ([`Raster::bytes`]): the raster's, four queued
 /// for the encoder, one being encoded, two spares on their way back.
@@ -110,14 +123,14 @@ pub struct Raster {
     pub cols: (u32, u32),
     /// The box `rows` × `cols` of the PNG, the current layer, row by row.
     lit: Vec<u8>,
-    /// The pixels and layers lit so far.
-    pub lit_extent: super::Lit,
     /// The footprint's greys of the last layer made, and a buffer for the next one's.
     grey: Vec<u8>,
     next: Vec<u8>,
     /// Per footprint pixel, 1 + the highest layer that lit it (0: none), for thumbnails,
-    /// up to the layers before the greys in `grey` ([`Raster::top`] adds them).
-    top: Vec<u32>,
+    /// up to the layers before the greys in `grey` ([`Raster::top`] adds them). A `u16`:
+    /// a print has fewer layers than an archive has members (`place::place` refuses more),
+    /// and the select that updates it every layer moves half the bytes of a `u32`'s.
+    top: Vec<u16>,
     /// Layers made.
     layer: u32,
     /// Whether the last layer made is the one before it again: its boxes are the ones
@@ -160,7 +173,6 @@ impl Raster {
             rows,
             cols,
             lit: vec![0; band],
-            lit_extent: super::Lit::default(),
             grey: vec![],
             next: vec![],
             top: vec![0; fw * fh],
@@ -202,8 +214,7 @@ impl Raster {
         self.settle_top();
         self.next = std::mem::replace(&mut self.grey, grey);
         let grey = &self.grey;
-        let area = grey.iter().map(|&g| u64::from(g)).sum();
-        self.lit_extent.add(self.layer as usize, grey, self.fw);
+        let area = byte_sum(grey);
         let (origin, step) = self.strides();
         place(grey, self.fw, &mut self.lit, origin, step);
         let mut mat = std::mem::take(&mut self.next);
@@ -219,9 +230,6 @@ impl Raster {
     /// The layer just made is the one before again.
     fn repeat(&mut self) {
         let area = self.areas.last().copied().unwrap_or(0);
-        if area > 0 {
-            self.lit_extent.add_layer(self.layer as usize);
-        }
         self.areas.push(area);
         self.layer += 1;
     }
@@ -235,7 +243,7 @@ impl Raster {
     /// `top` up to the last layer made: the pixels the greys in `grey` light were lit last
     /// by that layer (the layers since they were made repeat them).
     fn settle_top(&mut self) {
-        let last = self.layer;
+        let last = u16::try_from(self.layer).unwrap_or(u16::MAX);
         // A select, not a branch, in a loop of its own: it runs a vector at a time.
         for (t, &g) in self.top.iter_mut().zip(&self.grey) {
             *t = if g != 0 { last } else { *t };
@@ -243,7 +251,7 @@ impl Raster {
     }
 
     /// Per footprint pixel, 1 + the highest layer that lit it (0: none), for thumbnails.
-    pub fn top(&mut self) -> &[u32] {
+    pub fn top(&mut self) -> &[u16] {
         self.settle_top();
         &self.top
     }
@@ -255,8 +263,12 @@ impl Raster {
         out.resize(fw * self.fh, 0);
         let hit = |v: u8| u32::from(code.map_or(v != 0, |c| v == c));
         if k == 1 {
-            for (g, &v) in out.iter_mut().zip(s) {
-                *g = (hit(v) * 255) as u8;
+            // 255 or 0, written as a byte mask so that the loop runs 16 or 32 samples a step.
+            let mask = |b: bool| u8::from(b).wrapping_neg();
+            let pairs = out.iter_mut().zip(s);
+            match code {
+                None => pairs.for_each(|(g, &v)| *g = mask(v != 0)),
+                Some(c) => pairs.for_each(|(g, &v)| *g = mask(v == c)),
             }
             return;
         }
@@ -356,7 +368,7 @@ mod tests {
         let layers = [&a, &a, &b, &b, &b, &e, &a, &a];
         let mut r = Raster::new(&p, &at, 1, &[]);
         let mut last: Vec<u8> = vec![];
-        let mut top = vec![0u32; fw * fh];
+        let mut top = vec![0u16; fw * fh];
         let (origin, step) = r.strides();
         for (l, s) in layers.iter().enumerate() {
             r.layer(s);
@@ -368,24 +380,27 @@ mod tests {
                 let (i, j) = (n % fw, n / fw);
                 let at = (origin + i as isize * step[0] + j as isize * step[1]) as usize;
                 assert_eq!(last[at], v * 255, "layer {l} pixel {i},{j}");
-                top[n] = if v != 0 { l as u32 + 1 } else { top[n] };
+                top[n] = if v != 0 { l as u16 + 1 } else { top[n] };
             }
             let area: u64 = s.iter().map(|&v| u64::from(v) * 255).sum();
             assert_eq!(r.areas[l], area, "layer {l}");
         }
         assert_eq!(r.top(), &top[..]);
-        let mut fresh = super::super::Lit::default();
-        for (l, s) in layers.iter().enumerate() {
-            fresh.add(l, s, fw);
-        }
-        assert_eq!(r.lit_extent, fresh);
     }
 
     /// Every placement (a turn or not, each mirror) puts each grey where the strides say,
     /// for footprints of whole 8×8 blocks and of leftovers.
     #[test]
     fn place_puts_every_pixel_where_its_strides_say() {
-        for (fw, fh) in [(1, 1), (8, 8), (13, 21), (24, 3), (3, 17)] {
+        for (fw, fh) in [
+            (1, 1),
+            (8, 8),
+            (13, 21),
+            (24, 3),
+            (3, 17),
+            (150, 19),
+            (70, 131),
+        ] {
             let grey: Vec<u8> = (0..fw * fh).map(|i| (i % 251) as u8 + 1).collect();
             for turn in [false, true] {
                 for flip in [[1isize, 1], [-1, 1], [1, -1], [-1, -1]] {
