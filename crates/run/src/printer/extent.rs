@@ -225,8 +225,8 @@ impl Lit {
         };
         let [fw, fh] = at.pixels();
         let [px, py] = p.pitch();
-        let x = |i: usize| (f64::from(at.i.0) + i as f64) * px - at.shift.x;
-        let y = |j: usize| (f64::from(at.j.0) + j as f64) * py - at.shift.y;
+        let x = |i: usize| at.edge(p, 0, i);
+        let y = |j: usize| at.edge(p, 1, j);
         let (hx, hy) = (px / (2 * k) as f64, py / (2 * k) as f64);
         let sample = |l: usize| at.floor + place::sample_height(p, l);
         let mut spans = vec![];
@@ -393,10 +393,9 @@ impl Probe<'_> {
             return vec![];
         };
         let p = &self.job.printer;
-        let [px, py] = p.pitch();
         let at = self.at;
-        let x = |i: usize| (f64::from(at.i.0) + i as f64) * px - at.shift.x;
-        let y = |j: usize| (f64::from(at.j.0) + j as f64) * py - at.shift.y;
+        let x = |i: usize| at.edge(p, 0, i);
+        let y = |j: usize| at.edge(p, 1, j);
         let dims = |n: usize| [(i.1 + 1 - i.0) * self.k, (j.1 + 1 - j.0) * self.k, n];
         let box_at = |z0: f64, z1: f64| {
             (

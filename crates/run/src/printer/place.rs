@@ -118,6 +118,13 @@ impl Placement {
             && (self.floor - other.floor).abs() <= p.layer_height / 256.0
     }
 
+    /// The scene's X (`axis` 0) or Y (1) of the low edge of the part's `n`-th pixel along
+    /// that axis (`n` = its pixels: the high edge of the last).
+    pub fn edge(&self, p: &Printer, axis: usize, n: usize) -> f64 {
+        let first = [self.i.0, self.j.0][axis];
+        (f64::from(first) + n as f64) * p.pitch()[axis] - self.shift[axis]
+    }
+
     /// The part's pixels along X and Y.
     pub fn pixels(&self) -> [usize; 2] {
         [
@@ -131,9 +138,7 @@ impl Placement {
     /// and a slab per layer. Layers after the first are evenly spaced; the first shares
     /// their grid only when it is as high (else it is a grid of its own, `layers` 0..1).
     pub fn grid(&self, p: &Printer, layers: std::ops::Range<usize>) -> [DVec3; 2] {
-        let [px, py] = p.pitch();
-        let x = |i: u32| f64::from(i) * px - self.shift.x;
-        let y = |j: u32| f64::from(j) * py - self.shift.y;
+        let [w, h] = self.pixels();
         let step = match layers.start == 0 && layers.len() == 1 {
             true => p.initial_layer_height,
             false => p.layer_height,
@@ -141,8 +146,8 @@ impl Placement {
         let z0 = sample_height(p, layers.start) - step / 2.0;
         let z1 = z0 + step * layers.len() as f64;
         [
-            DVec3::new(x(self.i.0), y(self.j.0), self.floor + z0),
-            DVec3::new(x(self.i.1), y(self.j.1), self.floor + z1),
+            DVec3::new(self.edge(p, 0, 0), self.edge(p, 1, 0), self.floor + z0),
+            DVec3::new(self.edge(p, 0, w), self.edge(p, 1, h), self.floor + z1),
         ]
     }
 }
