@@ -42,6 +42,15 @@ fn print_aa(scene: &Path, out: &Path, aa: &str) -> serde_json::Value {
     serde_json::from_slice(&r.stdout).unwrap()
 }
 
+/// A `.csg` cube of `size` with its lowest corner at `at`, one tab in.
+fn cube_at(at: [f64; 3], size: [f64; 3]) -> String {
+    format!(
+        "\tmultmatrix([[1, 0, 0, {}], [0, 1, 0, {}], [0, 0, 1, {}], [0, 0, 0, 1]]) \
+         {{\n\t\tcube(size = [{}, {}, {}], center = false);\n\t}}\n",
+        at[0], at[1], at[2], size[0], size[1], size[2]
+    )
+}
+
 /// Prints `cut` and `solid` into archives at `--aa AA` and asserts they are the same
 /// print: the same layer count, the part at the same pixels, every layer's greys equal.
 /// The layer count.
@@ -251,13 +260,7 @@ fn a_part_cut_on_every_side_is_placed_as_the_same_part_uncut() {
     let dir = tempfile::tempdir().unwrap();
     let cut = dir.path().join("cut.csg");
     let solid = dir.path().join("solid.csg");
-    let slab = |at: [f64; 3], size: [f64; 3]| {
-        format!(
-            "\tmultmatrix([[1, 0, 0, {}], [0, 1, 0, {}], [0, 0, 1, {}], [0, 0, 0, 1]]) \
-             {{\n\t\tcube(size = [{}, {}, {}], center = false);\n\t}}\n",
-            at[0], at[1], at[2], size[0], size[1], size[2]
-        )
-    };
+    let slab = cube_at;
     let slabs = [
         slab([-1.0, -1.0, -1.0], [2.37, 8.0, 12.0]),
         slab([8.911, -1.0, -1.0], [5.0, 8.0, 12.0]),
@@ -353,13 +356,7 @@ fn a_part_whose_cut_sides_are_corners_is_placed_as_the_same_part_uncut() {
 fn thin_features_between_the_first_looks_samples_still_place_the_part() {
     let dir = tempfile::tempdir().unwrap();
     let (cut, solid) = (dir.path().join("cut.csg"), dir.path().join("solid.csg"));
-    let cube = |at: [f64; 3], size: [f64; 3]| {
-        format!(
-            "\tmultmatrix([[1, 0, 0, {}], [0, 1, 0, {}], [0, 0, 1, {}], [0, 0, 0, 1]]) \
-             {{\n\t\tcube(size = [{}, {}, {}], center = false);\n\t}}\n",
-            at[0], at[1], at[2], size[0], size[1], size[2]
-        )
-    };
+    let cube = cube_at;
     let part = [
         cube([0.0, 0.0, 0.0], [6.0, 4.0, 2.0]),
         cube([6.0, 2.013, 0.0], [1.317, 0.06, 2.0]),
