@@ -206,7 +206,7 @@ impl PrintJob {
             }
             _ => &[],
         };
-        let bytes = raster::Raster::bytes(&placed, codes.len().min(256));
+        let bytes = raster::Raster::bytes(&placed, self.aa, codes.len().min(256));
         let need = passes.iter().map(|p| p.1).max().unwrap_or(0);
         let need = need.saturating_add(bytes);
         self.max_memory

@@ -141,6 +141,8 @@ pub struct Raster {
     /// The scene's material labels (colour codes) when it has more than one, each with the
     /// PNG rows of its own stack; else empty.
     by_code: Vec<(u8, Vec<u8>)>,
+    /// With materials, the last layer's samples (their codes), to tell a repeated layer.
+    samples: Vec<u8>,
 }
 
 impl Raster {
@@ -180,6 +182,7 @@ impl Raster {
             repeated: false,
             areas: vec![],
             by_code: codes.into_iter().map(|c| (c, vec![0; band])).collect(),
+            samples: vec![],
         }
     }
 
@@ -188,11 +191,16 @@ impl Raster {
     /// A layer's boxes (the part's and each material's) are held in [`BOX_SETS`] places at
     /// once: the raster's own, the encoder's queue, the one being encoded and the spares
     /// coming back. Beside them, the footprint's greys of two layers (a byte a pixel each)
-    /// and `top` (four).
-    pub fn bytes(at: &Placement, codes: usize) -> u64 {
+    /// and `top` (two), and with materials the last layer's `aa`² samples a pixel.
+    pub fn bytes(at: &Placement, aa: u32, codes: usize) -> u64 {
         let [fw, fh] = at.pixels();
         let band = (fw * fh) as u64;
-        band * (1 + codes as u64) * BOX_SETS + 6 * band + (1 << 20)
+        let samples = if codes > 1 {
+            band * u64::from(aa * aa)
+        } else {
+            0
+        };
+        band * (1 + codes as u64) * BOX_SETS + 4 * band + samples + (1 << 20)
     }
 
     /// Make the layer whose samples are `s` (the voxelizer's slab: k·fw samples a row,
@@ -204,8 +212,14 @@ impl Raster {
         self.greys(s, None, &mut grey);
         // Most of a part's layers are the one below again (walls run straight between
         // the tops and bottoms of its features): such a layer keeps the boxes, the area and
-        // the extent it had. With materials, equal greys can hide a change of colour.
-        self.repeated = self.layer > 0 && self.by_code.is_empty() && grey == self.grey;
+        // the extent it had. With materials, equal greys can hide a change of colour, so
+        // the samples themselves (their codes) must be the layer before's.
+        let same_codes = self.by_code.is_empty() || s == &self.samples[..];
+        self.repeated = self.layer > 0 && same_codes && grey == self.grey;
+        if !same_codes {
+            self.samples.clear();
+            self.samples.extend_from_slice(s);
+        }
         if self.repeated {
             self.next = grey;
             self.repeat();
@@ -386,6 +400,54 @@ mod tests {
             assert_eq!(r.areas[l], area, "layer {l}");
         }
         assert_eq!(r.top(), &top[..]);
+    }
+
+    /// With materials, a layer repeats the one before only when its codes do: the same
+    /// part in another colour is made afresh, and every material's box handed over is the
+    /// one its samples give.
+    #[test]
+    fn with_materials_a_layer_repeats_only_when_its_colours_do() {
+        let p = Printer::named("sl1").unwrap();
+        let (fw, fh) = (11usize, 9usize);
+        let at = Placement {
+            shift: glam::DVec2::ZERO,
+            floor: 0.0,
+            i: (300, 300 + fw as u32),
+            j: (500, 500 + fh as u32),
+            layers: 6,
+        };
+        let block = |code: u8, x0: usize| -> Vec<u8> {
+            (0..fw * fh)
+                .map(|n| {
+                    if (x0..x0 + 5).contains(&(n % fw)) && n / fw > 2 {
+                        code
+                    } else {
+                        0
+                    }
+                })
+                .collect()
+        };
+        let (a, b, c) = (block(1, 2), block(2, 2), block(2, 5));
+        let layers = [&a, &a, &b, &b, &c, &a];
+        let mut r = Raster::new(&p, &at, 1, &[1, 2]);
+        let mut last: Vec<Vec<u8>> = vec![];
+        let (origin, step) = r.strides();
+        for (l, s) in layers.iter().enumerate() {
+            r.layer(s);
+            assert_eq!(r.repeated(), l > 0 && layers[l - 1] == *s, "layer {l}");
+            if !r.repeated() {
+                last = r.take_boxes(vec![]);
+            }
+            assert_eq!(last.len(), 3, "the part's box and two materials'");
+            for (n, &v) in s.iter().enumerate() {
+                let at =
+                    (origin + (n % fw) as isize * step[0] + (n / fw) as isize * step[1]) as usize;
+                let want = [v != 0, v == 1, v == 2].map(|b| u8::from(b) * 255);
+                for (m, w) in want.iter().enumerate() {
+                    assert_eq!(last[m][at], *w, "layer {l} box {m} pixel {n}");
+                }
+            }
+        }
     }
 
     /// Every placement (a turn or not, each mirror) puts each grey where the strides say,
