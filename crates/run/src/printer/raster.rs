@@ -354,6 +354,17 @@ impl Raster {
 mod tests {
     use super::*;
 
+    /// A part of `w`×`h` pixels from pixel `(i, j)`, `layers` high.
+    fn footprint((i, j): (u32, u32), (w, h): (usize, usize), layers: usize) -> Placement {
+        Placement {
+            shift: glam::DVec2::ZERO,
+            floor: 0.0,
+            i: (i, i + w as u32),
+            j: (j, j + h as u32),
+            layers,
+        }
+    }
+
     /// Layers that repeat the one before hand over no boxes, and the raster's areas,
     /// extent and thumbnail heights are those of making every layer afresh: the boxes each
     /// layer would have are the last ones handed over, checked pixel by pixel against the
@@ -362,13 +373,7 @@ mod tests {
     fn repeated_layers_keep_the_boxes_areas_extent_and_tops_of_the_layers_they_repeat() {
         let p = Printer::named("sl1").unwrap();
         let (fw, fh) = (13usize, 11usize);
-        let at = Placement {
-            shift: glam::DVec2::ZERO,
-            floor: 0.0,
-            i: (100, 100 + fw as u32),
-            j: (200, 200 + fh as u32),
-            layers: 8,
-        };
+        let at = footprint((100, 200), (fw, fh), 8);
         // Layer samples (aa 1): a disc of radius r at (cx, 5); 0 = empty.
         let disc = |r: f64, cx: f64| -> Vec<u8> {
             (0..fw * fh)
@@ -409,13 +414,7 @@ mod tests {
     fn with_materials_a_layer_repeats_only_when_its_colours_do() {
         let p = Printer::named("sl1").unwrap();
         let (fw, fh) = (11usize, 9usize);
-        let at = Placement {
-            shift: glam::DVec2::ZERO,
-            floor: 0.0,
-            i: (300, 300 + fw as u32),
-            j: (500, 500 + fh as u32),
-            layers: 6,
-        };
+        let at = footprint((300, 500), (fw, fh), 6);
         let block = |code: u8, x0: usize| -> Vec<u8> {
             (0..fw * fh)
                 .map(|n| {
