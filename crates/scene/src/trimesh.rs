@@ -258,7 +258,9 @@ impl TriMesh {
     }
 
     /// [`TriMesh::crossings_in`] as one buffer: no `Vec` per pixel (8 bytes a pixel and 8 a
-    /// crossing, plus 16 per crossing while collecting).
+    /// crossing, plus 16 per crossing while collecting). The depths are placed by a counting
+    /// sort whose cursors are the pixels' starts themselves, and put in order by chunks of
+    /// pixels: nothing more a pixel, even for a moment.
     pub fn crossings_flat_in(&self, to_frame: impl Fn(DVec3) -> DVec3, win: Window) -> Crossings {
         let (w, h) = (win.w, win.h);
         let projected: Vec<Projected> = self
@@ -282,30 +284,25 @@ impl TriMesh {
             })
             .collect();
         // A counting sort by pixel, then each pixel's depths in order.
-        let mut start = vec![0usize; w.saturating_mul(h) + 1];
+        let n = w.saturating_mul(h);
+        let mut start = vec![0usize; n + 1];
         for &(i, _) in hits.iter().flatten() {
             start[i + 1] += 1;
         }
         for i in 1..start.len() {
             start[i] += start[i - 1];
         }
-        let mut depths = vec![0.0; start[start.len() - 1]];
-        let mut next = start.clone();
+        let mut depths = vec![0.0; start[n]];
+        // `start[i]` is pixel i's cursor while the depths are placed: after, it is where
+        // pixel i + 1 starts, and the list is shifted back one place.
         for &(i, d) in hits.iter().flatten() {
-            depths[next[i]] = d;
-            next[i] += 1;
+            depths[start[i]] = d;
+            start[i] += 1;
         }
         drop(hits);
-        let mut rest: &mut [f64] = &mut depths;
-        let mut lists = Vec::with_capacity(w.saturating_mul(h));
-        for c in start.windows(2) {
-            let (this, tail) = rest.split_at_mut(c[1] - c[0]);
-            lists.push(this);
-            rest = tail;
-        }
-        lists
-            .par_iter_mut()
-            .for_each(|p| p.sort_unstable_by(f64::total_cmp));
+        start.copy_within(0..n, 1);
+        start[0] = 0;
+        sort_pixels(&start, &mut depths);
         let out = Crossings { start, depths };
         #[cfg(debug_assertions)]
         if self.check_closed("").is_ok() {
@@ -313,6 +310,36 @@ impl TriMesh {
         }
         out
     }
+}
+
+/// Each pixel's depths in `depths` (pixel i's at `start[i]..start[i + 1]`) put in order, by
+/// chunks of pixels in parallel. Most pixels hold two (a mesh's front and back).
+fn sort_pixels(start: &[usize], depths: &mut [f64]) {
+    const CHUNK: usize = 4096;
+    let n = start.len() - 1;
+    let mut pieces = Vec::with_capacity(n.div_ceil(CHUNK));
+    let mut rest = depths;
+    for c in (0..n).step_by(CHUNK) {
+        let e = (c + CHUNK).min(n);
+        let (this, tail) = rest.split_at_mut(start[e] - start[c]);
+        pieces.push((c..e, this));
+        rest = tail;
+    }
+    pieces.into_par_iter().for_each(|(pixels, piece)| {
+        let base = start[pixels.start];
+        for i in pixels {
+            let p = &mut piece[start[i] - base..start[i + 1] - base];
+            match p.len() {
+                0 | 1 => {}
+                2 => {
+                    if p[0].total_cmp(&p[1]).is_gt() {
+                        p.swap(0, 1);
+                    }
+                }
+                _ => p.sort_unstable_by(f64::total_cmp),
+            }
+        }
+    });
 }
 
 /// Per pixel of a window, the depths where its ray crosses a mesh, in order
