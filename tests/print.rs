@@ -390,6 +390,27 @@ fn thin_features_between_the_first_looks_samples_still_place_the_part() {
     }
 }
 
+/// A cut part so thin (a pillar 0.06 mm square, beside a block the cut removes) that the
+/// first look at every eighth sample lights none of it: then every sample is looked at, and
+/// the pillar is placed as the pillar alone (at `--aa 1` that is the fallback's path).
+#[test]
+fn a_part_the_first_look_misses_altogether_is_still_placed() {
+    let dir = tempfile::tempdir().unwrap();
+    let (cut, solid) = (dir.path().join("cut.csg"), dir.path().join("solid.csg"));
+    let pillar = cube_at([3.021, 1.013, 0.0], [0.06, 0.06, 1.0]);
+    let far = cube_at([9.0, -2.0, 0.0], [2.0, 6.0, 1.0]);
+    let cutter = cube_at([8.0, -10.0, -5.0], [10.0, 20.0, 15.0]);
+    std::fs::write(
+        &cut,
+        format!("difference() {{\n\tunion() {{\n{pillar}{far}\t}}\n{cutter}}}\n"),
+    )
+    .unwrap();
+    std::fs::write(&solid, format!("union() {{\n{pillar}}}\n")).unwrap();
+    for aa in ["1", "4"] {
+        assert_eq!(prints_alike(&cut, &solid, aa), 20);
+    }
+}
+
 /// A scene of two colours: besides the part's stack, one stack per colour code, each the
 /// pixels of its own cube, the two together the part.
 #[test]
