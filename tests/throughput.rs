@@ -141,8 +141,7 @@ fn check_panels_through_the_simulator(
     panel: (usize, usize),
 ) -> Vec<csgpix::draw::panels::PanelWork> {
     let ps = PanelScene::new(&scene(name), View::Iso, screen, thesis_word()).unwrap();
-    let set = Equations::Derived.set();
-    let work = panel_work(&ps, panel, &count_cycles(&set)).unwrap();
+    let work = panel_work(&ps, panel, &count_cycles).unwrap();
     let cfg = ps.panel_config(panel);
     let whole = run(
         &ps.panel_config(screen),
@@ -191,16 +190,11 @@ fn panel_clocks_and_images_agree_with_the_cycle_model_partial_panels() {
 #[test]
 fn the_slowest_panel_is_the_frame() {
     let hw = Hardware::default();
-    let set = Equations::Derived.set();
     for name in ["csg-logo.csg", "twelve.csg", "figure-5.2.csg"] {
         let ps = PanelScene::new(&scene(name), View::Iso, (128, 128), thesis_word()).unwrap();
         let all = vec![true; ps.lists.len()];
-        let one = program_cycles(
-            &ps.panel_config((128, 128)),
-            &set,
-            &ps.frame_ops(&all).unwrap(),
-        );
-        let work = panel_work(&ps, (32, 32), &count_cycles(&set)).unwrap();
+        let one = program_cycles(&ps.panel_config((128, 128)), &ps.frame_ops(&all).unwrap());
+        let work = panel_work(&ps, (32, 32), &count_cycles).unwrap();
         let e = estimate(&ps, &hw, (32, 32), &work, one);
         assert!(
             work.iter().all(|w| w.frame_cycles <= e.frame_cycles),
@@ -243,8 +237,7 @@ fn a_scene_in_two_corners_touches_only_those_panels() {
         };
         assert_eq!(prims, &want, "panel {},{}", k % 8, k / 8);
     }
-    let set = Equations::Derived.set();
-    let work = panel_work(&ps, (8, 8), &count_cycles(&set)).unwrap();
+    let work = panel_work(&ps, (8, 8), &count_cycles).unwrap();
     let busy: Vec<(usize, usize)> = work
         .iter()
         .filter(|w| w.frame_cycles > 0)

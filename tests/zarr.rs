@@ -560,17 +560,8 @@ fn bricks_give_the_files_of_whole_rows() {
             // Tasks of a row range × a tile, last first, two at once.
             let task = |rows: std::ops::Range<usize>, tile: PixelBox| {
                 let store = ZarrVolume::open(&bricks_path).unwrap();
-                let w = voxelize_bricks(
-                    &slicer,
-                    false,
-                    set.clone(),
-                    &eval,
-                    &|| {},
-                    &store,
-                    rows,
-                    &[tile],
-                )
-                .unwrap();
+                let w =
+                    voxelize_bricks(&slicer, false, &eval, &|| {}, &store, rows, &[tile]).unwrap();
                 (w, store.chunks_held())
             };
             let mut done = vec![];

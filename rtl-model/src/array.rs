@@ -64,8 +64,13 @@ impl Sequencer {
 
     /// Clocks of a streaming window: N_D, plus DEPGEN's fill before the first one that streams.
     pub fn window_clocks(&mut self, cfg: &ArrayConfig, w: &Window) -> u64 {
+        self.clocks(cfg, w.stream.is_some())
+    }
+
+    /// [`Sequencer::window_clocks`] of a window that streams or not.
+    fn clocks(&mut self, cfg: &ArrayConfig, streams: bool) -> u64 {
         let mut c = cfg.fmt.bits() as u64;
-        if w.stream.is_some() && !self.streamed {
+        if streams && !self.streamed {
             self.streamed = true;
             c += cfg.depgen_latency();
         }
@@ -77,23 +82,23 @@ impl Sequencer {
 /// the windows' N_D clocks (with DEPGEN's fill before the first that streams), one clock per
 /// stack operation, and a last window for a transfer still latched at the end. Equal to
 /// [`Array::cycles`] after [`Array::run`] (tested against both models).
-pub fn program_cycles(cfg: &ArrayConfig, set: &crate::EquationSet, ops: &[Op]) -> u64 {
+/// Only the windows' shapes count ([`Window::shape`]): the select equations are not built.
+pub fn program_cycles(cfg: &ArrayConfig, ops: &[Op]) -> u64 {
     let mut seq = Sequencer::default();
+    let mut pending = false;
     for op in ops {
-        match Window::of(op, set) {
+        match Window::shape(op) {
             Some(w) => {
-                seq.cycles += seq.window_clocks(cfg, &w);
-                seq.pending = w.transfer;
+                seq.cycles += seq.clocks(cfg, w.streams);
+                pending = w.transfers;
             }
             None => {
                 seq.cycles += 1;
-                if matches!(op, Op::ClipApply) {
-                    seq.pending = Some(crate::program::Transfer::clip_apply());
-                }
+                pending |= matches!(op, Op::ClipApply);
             }
         }
     }
-    if seq.pending.is_some() {
+    if pending {
         seq.cycles += cfg.fmt.bits() as u64;
     }
     seq.cycles

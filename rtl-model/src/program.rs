@@ -211,7 +211,29 @@ fn spec(set: &EquationSet, s: Signal, ext: &[(Var, bool)]) -> Sop {
     set.sop(s).specialize(fixed, value)
 }
 
+/// What of a window its clocks depend on: whether DEPGEN streams in it, whether it leaves a
+/// transfer pending ([`Window::stream`] and [`Window::transfer`] are `Some`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Shape {
+    /// DEPGEN streams coefficients into A.
+    pub streams: bool,
+    /// The code latched at its end transfers in the next window.
+    pub transfers: bool,
+}
+
 impl Window {
+    /// [`Window::of`]'s shape without its select equations (which a clock count does not
+    /// read), or `None` for the one-clock stack operations.
+    pub fn shape(op: &Op) -> Option<Shape> {
+        let (streams, transfers) = match op {
+            Op::Plane { .. } => (true, true),
+            Op::ClipPlane { .. } => (true, false),
+            Op::Close { .. } | Op::Compose { .. } => (false, true),
+            Op::ClipAnd | Op::ClipOr | Op::ClipNot | Op::ClipApply => return None,
+        };
+        Some(Shape { streams, transfers })
+    }
+
     /// The window of a streaming op, or `None` for the one-clock stack operations.
     pub fn of(op: &Op, set: &EquationSet) -> Option<Window> {
         use Signal::*;
@@ -356,3 +378,50 @@ impl std::fmt::Display for ProgramError {
 }
 
 impl std::error::Error for ProgramError {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Equations;
+
+    /// Every kind of operation with every external that changes its window.
+    fn every_op() -> Vec<Op> {
+        let coeffs = Coeffs {
+            c0: 5,
+            dx: -1,
+            dy: 2,
+        };
+        let mut ops = vec![Op::ClipAnd, Op::ClipOr, Op::ClipNot, Op::ClipApply];
+        for bits in 0..16u8 {
+            let [l, s, h, y] = [0, 1, 2, 3].map(|i| bits >> i & 1 == 1);
+            ops.push(Op::Plane {
+                coeffs,
+                colour: 3,
+                interior: 2,
+                l,
+                s,
+                h,
+                y,
+            });
+            ops.push(Op::ClipPlane { coeffs, h, y, x: l });
+            ops.push(Op::Close { l });
+            ops.push(Op::Compose { p: s });
+        }
+        ops
+    }
+
+    /// A clock count reads a window's shape alone; it is the shape of the window itself.
+    #[test]
+    fn a_windows_shape_is_the_window_s() {
+        for eq in [Equations::Derived, Equations::Printed] {
+            let set = eq.set();
+            for op in every_op() {
+                let whole = Window::of(&op, &set).map(|w| Shape {
+                    streams: w.stream.is_some(),
+                    transfers: w.transfer.is_some(),
+                });
+                assert_eq!(Window::shape(&op), whole, "{op:?}");
+            }
+        }
+    }
+}

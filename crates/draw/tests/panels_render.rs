@@ -64,11 +64,9 @@ fn check(
         "{view:?} {screen:?} {panel:?}: {differ} pixels differ"
     );
     let cfg = ps.panel_config(screen);
-    let full = rtl_model::array::program_cycles(
-        &cfg,
-        &Equations::Derived.set(),
-        &ps.frame_ops(&vec![true; ps.lists.len()]).unwrap(),
-    ) * cfg.pixels() as u64;
+    let full =
+        rtl_model::array::program_cycles(&cfg, &ps.frame_ops(&vec![true; ps.lists.len()]).unwrap())
+            * cfg.pixels() as u64;
     img.simulated_pixel_clocks as f64 / full.max(1) as f64
 }
 

@@ -101,7 +101,7 @@ impl ExportVerilogJob {
         }
         let cfg = config(self)?;
         let ops = program(self, &cfg)?;
-        let cycles = program_cycles(&cfg, &Equations::Derived.set(), &ops);
+        let cycles = program_cycles(&cfg, &ops);
         Ok(need(&cfg, cycles))
     }
 
@@ -156,7 +156,7 @@ fn scene(a: &ExportVerilogJob) -> crate::Result<SceneFiles> {
     let ops = program(a, &cfg)?;
     let set = Equations::Derived.set();
     check_program(&ops, cfg.stack_depth)?;
-    let cycles = program_cycles(&cfg, &set, &ops);
+    let cycles = program_cycles(&cfg, &ops);
     bound(a, &cfg, cycles)?;
     room(&outs, out, &cfg, cycles)?;
     let control = pixel::control_stream(&cfg, &set, &ops);

@@ -178,7 +178,7 @@ impl RenderJob {
                 .iter()
                 .map(|&c| Some(cfg.fmt.to_real(c)))
                 .collect();
-            let cycles = rtl_model::array::program_cycles(cfg, &self.array.equations()?, ops);
+            let cycles = rtl_model::array::program_cycles(cfg, ops);
             let drawn = Drawn {
                 colour: img.colour,
                 depth,

@@ -14,7 +14,7 @@ use csgpix_voxel::requirements::DepthLayout;
 use csgpix_voxel::{footprints, touched_panels, Footprint, PixelBox};
 use csgpix_voxel::{slice_ops, Grid, Sampling, Slicer, SlicerOptions};
 use rtl_model::array::{check_program, program_cycles};
-use rtl_model::{ArrayConfig, Equations, WordFormat};
+use rtl_model::{ArrayConfig, WordFormat};
 use serde::{Deserialize, Serialize};
 
 use crate::grid::Resolution;
@@ -188,17 +188,16 @@ fn analyse(
     let [w, h, nz] = slicer.grid.dims;
     let panel = a.panel.unwrap_or([w, h]);
     let fps = footprints(slicer)?;
-    let set = Equations::Derived.set();
     let cfg = slicer.config();
     let mut solids = vec![];
     let (mut all, mut needed, mut simulated, mut levels) = (0, 0, 0, 0);
     for (p, fp) in fps.iter().enumerate() {
         let ops = slice_ops(slicer, p, 0)?;
         levels = levels.max(check_program(&ops, cfg.stack_depth)?);
-        let frame_clocks = program_cycles(&cfg, &set, &ops);
+        let frame_clocks = program_cycles(&cfg, &ops);
         all += frame_clocks * nz as u64;
         needed += frame_clocks * fp.slab_count() as u64;
-        simulated += pruned_pixel_clocks(&cfg, &set, &ops, fp, panel, fp.slab_count());
+        simulated += pruned_pixel_clocks(&cfg, &ops, fp, panel, fp.slab_count());
         solids.push(Solid {
             solid: p + 1,
             pixels: fp.pixels,
@@ -250,7 +249,6 @@ fn analyse(
 /// Pixel-clocks of simulating `slabs` frames of a solid on the panels of its footprint only.
 fn pruned_pixel_clocks(
     cfg: &ArrayConfig,
-    set: &rtl_model::EquationSet,
     ops: &[rtl_model::Op],
     fp: &Footprint,
     panel: [usize; 2],
@@ -264,7 +262,7 @@ fn pruned_pixel_clocks(
         height: b.height(),
         ..*cfg
     };
-    program_cycles(&sub, set, ops) * b.pixels() as u64 * slabs as u64
+    program_cycles(&sub, ops) * b.pixels() as u64 * slabs as u64
 }
 
 fn slab_union(fps: &[Footprint]) -> Option<(u32, u32)> {
@@ -294,10 +292,7 @@ fn render_program(a: &RequirementsJob, scene: &CsgScene) -> crate::Result<(usize
         }
     })?;
     let levels = check_program(&ops, 64)?;
-    Ok((
-        levels,
-        program_cycles(&cfg, &Equations::Derived.set(), &ops),
-    ))
+    Ok((levels, program_cycles(&cfg, &ops)))
 }
 
 fn word_name(f: &WordFormat) -> String {

@@ -395,7 +395,7 @@ fn scene_report(
     a.max_memory
         .check(need, "this throughput", "use larger panels (--panel)")?;
     let set = Equations::Derived.set();
-    let counted = count_cycles(&set);
+    let counted = count_cycles;
     let simulated = |cfg: &ArrayConfig, ops: &[Op]| {
         simulate(cfg, &set, ops, a.max_memory, progress)
             .map_err(|e| csgpix_draw::Error::Counter(e.to_string()))

@@ -196,7 +196,7 @@ pub fn voxelize(
 ) -> Result<(Volume, Work)> {
     use rayon::prelude::*;
     let [nx, ny, nz] = slicer.grid.dims;
-    let mut work = counted_work(slicer, &set, nz)?;
+    let mut work = counted_work(slicer, nz)?;
     if let Route::Runs { float } = route {
         if crate::runs::applies(slicer) {
             return crate::runs::voxelize_runs(slicer, float, eval, tick, work);
@@ -314,7 +314,7 @@ pub fn voxelize_slabs<E: From<crate::Error>>(
         }
         .into());
     }
-    let mut work = counted_work(slicer, &set, slabs.len())?;
+    let mut work = counted_work(slicer, slabs.len())?;
     if let Route::Runs { float } = route {
         if crate::runs::applies(slicer) {
             return crate::runs::sweep_slices(slicer, float, eval, tick, slabs, sink, work);
@@ -403,15 +403,24 @@ fn convex_source(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Con
 }
 
 /// The clocks and frames of a run over `slabs` slabs, counted from the programs: the same on
-/// every route.
-pub fn counted_work(slicer: &Slicer, set: &EquationSet, slabs: usize) -> Result<Work> {
+/// every route. Primitives are counted in parallel; an error is the first primitive's.
+pub fn counted_work(slicer: &Slicer, slabs: usize) -> Result<Work> {
+    use rayon::prelude::*;
     let cfg = slicer.config();
     let [nx, ny, _] = slicer.grid.dims;
     let (prims, nz) = (slicer.lists.len(), slabs);
+    let each: Vec<Result<u64>> = (0..prims)
+        .into_par_iter()
+        .map(|p| {
+            Ok(rtl_model::array::program_cycles(
+                &cfg,
+                &slice_ops(slicer, p, 0)?,
+            ))
+        })
+        .collect();
     let mut cycles = 0;
-    for p in 0..prims {
-        cycles +=
-            rtl_model::array::program_cycles(&cfg, set, &slice_ops(slicer, p, 0)?) * nz as u64;
+    for c in each {
+        cycles += c? * nz as u64;
     }
     Ok(Work {
         cycles,

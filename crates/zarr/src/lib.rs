@@ -864,7 +864,6 @@ pub fn voxelize_rows(
 pub fn voxelize_bricks(
     slicer: &Slicer,
     float: bool,
-    set: EquationSet,
     eval: &dyn SliceEval,
     tick: &(dyn Fn() + Sync),
     volume: &ZarrVolume,
@@ -886,7 +885,7 @@ pub fn voxelize_bricks(
         for row in rows.clone() {
             let slabs = all[row].clone();
             if tile.x0 == 0 && tile.y0 == 0 {
-                let counted = csgpix_voxel::drive::counted_work(slicer, &set, slabs.len())?;
+                let counted = csgpix_voxel::drive::counted_work(slicer, slabs.len())?;
                 work.frames += counted.frames;
                 work.cycles += counted.cycles;
                 work.full_pixel_clocks += counted.full_pixel_clocks;

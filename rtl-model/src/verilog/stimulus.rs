@@ -494,7 +494,7 @@ mod tests {
         let cfg = ArrayConfig::new(5, 3);
         let (ops, set) = (program(), Equations::Derived.set());
         let e = expected_states(cfg, &ops, &set).unwrap();
-        let cycles = program_cycles(&cfg, &set, &ops);
+        let cycles = program_cycles(&cfg, &ops);
         assert_eq!(e.cycles, cycles);
         assert_eq!(e.text.len() as u64, expected_bytes(&cfg, cycles));
         assert_eq!(e.text.lines().count() as u64, (cycles + 1) * 15);

@@ -188,7 +188,7 @@ pub fn write_bricks(
     let work = match route {
         Route::Runs { float } => {
             let tiles = &all[tiles];
-            voxelize_bricks(slicer, float, set, eval, tick, store, rows, tiles)
+            voxelize_bricks(slicer, float, eval, tick, store, rows, tiles)
         }
         _ => voxelize_rows(slicer, route, set, eval, tick, store, rows),
     };
