@@ -294,34 +294,37 @@ pub fn display_lists(scene: &CsgScene, frame: &Frame, slope_limit: f64) -> Vec<D
         .solids
         .iter()
         .enumerate()
-        .map(|(i, s)| {
-            let colour = s.colour.map_or(1 + (i % 6) as u32, colour_code);
-            let mut planes: Vec<DlPlane> = s
-                .faces
-                .iter()
-                .filter_map(|f| face_plane(frame, s, f, colour, slope_limit))
-                .collect();
-            if planes.is_empty() {
-                // Every face is degenerate at this scale (a solid far smaller than a pixel): a
-                // list without planes would be all of space to the float model and to the
-                // clipping stack, and nothing to the array. Say "nothing" to all three: one
-                // perpendicular plane with K = -1 everywhere (outside).
-                planes.push(DlPlane {
-                    z0: -1.0,
-                    dzx: 0.0,
-                    dzy: 0.0,
-                    colour,
-                    h: false,
-                    y: true,
-                    l: false,
-                });
-            }
-            DisplayList {
-                planes,
-                terminator: 1234,
-            }
-        })
+        .map(|(i, s)| display_list(frame, i, s, slope_limit))
         .collect()
+}
+
+/// [`display_lists`]' list of solid `s`, the scene's `i`-th.
+pub fn display_list(frame: &Frame, i: usize, s: &ConvexSolid, slope_limit: f64) -> DisplayList {
+    let colour = s.colour.map_or(1 + (i % 6) as u32, colour_code);
+    let mut planes: Vec<DlPlane> = s
+        .faces
+        .iter()
+        .filter_map(|f| face_plane(frame, s, f, colour, slope_limit))
+        .collect();
+    if planes.is_empty() {
+        // Every face is degenerate at this scale (a solid far smaller than a pixel): a list
+        // without planes would be all of space to the float model and to the clipping stack,
+        // and nothing to the array. Say "nothing" to all three: one perpendicular plane with
+        // K = -1 everywhere (outside).
+        planes.push(DlPlane {
+            z0: -1.0,
+            dzx: 0.0,
+            dzy: 0.0,
+            colour,
+            h: false,
+            y: true,
+            l: false,
+        });
+    }
+    DisplayList {
+        planes,
+        terminator: 1234,
+    }
 }
 
 /// A scene projected for one array: a display list per solid and the clipping function of

@@ -5,7 +5,7 @@ use glam::{DMat3, DVec3};
 use rtl_model::{ArrayConfig, WordFormat};
 
 use csgpix_draw::project::{
-    display_lists, max_slope, scale_perpendicular, silhouette_planes, Frame, DEPTH_MARGIN,
+    display_list, max_slope, scale_perpendicular, silhouette_planes, Frame, DEPTH_MARGIN,
 };
 use csgpix_scene::display_list::DisplayList;
 use csgpix_scene::grid::Grid;
@@ -322,13 +322,19 @@ fn solid_lists(
     w: usize,
     h: usize,
 ) -> Vec<DisplayList> {
-    let mut lists = display_lists(scene, frame, slope_limit);
-    for (dl, solid) in lists.iter_mut().zip(&scene.solids) {
-        let colour = dl.planes.first().map_or(1, |p| p.colour);
-        dl.planes.extend(silhouette_planes(frame, solid, colour));
-        scale_perpendicular(dl, fmt, w, h);
-    }
-    lists
+    use rayon::prelude::*;
+    scene
+        .solids
+        .par_iter()
+        .enumerate()
+        .map(|(i, solid)| {
+            let mut dl = display_list(frame, i, solid, slope_limit);
+            let colour = dl.planes.first().map_or(1, |p| p.colour);
+            dl.planes.extend(silhouette_planes(frame, solid, colour));
+            scale_perpendicular(&mut dl, fmt, w, h);
+            dl
+        })
+        .collect()
 }
 
 /// The pixels of a `w`×`h` array whose rays can meet the points' convex hull: their
