@@ -41,6 +41,11 @@ pub(crate) fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
 pub(crate) struct WordPlanes(Vec<(rtl_model::Coeffs, bool, bool)>);
 
 impl WordPlanes {
+    /// Planes held.
+    pub(crate) fn len(&self) -> usize {
+        self.0.len()
+    }
+
     /// Solid `prim`'s planes in the slicer's word; an error names a plane that does not fit.
     pub(crate) fn of(slicer: &Slicer, prim: usize) -> Result<WordPlanes> {
         let fmt = &slicer.fmt;
@@ -222,6 +227,11 @@ struct Decisive<P, T> {
 pub(crate) struct FloatPlanes(Vec<(f64, f64, f64, bool, bool)>);
 
 impl FloatPlanes {
+    /// Planes held.
+    pub(crate) fn len(&self) -> usize {
+        self.0.len()
+    }
+
     /// Solid `prim`'s planes.
     pub(crate) fn of(slicer: &Slicer, prim: usize) -> FloatPlanes {
         let planes = slicer.lists[prim].planes.iter();
@@ -377,14 +387,14 @@ pub fn open_mesh_runs_in(slicer: &Slicer, mesh: &OpenMesh, win: Window) -> SlabR
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::slicer::SlicerOptions;
     use csgpix_scene::grid::Grid;
     use proptest::prelude::*;
 
     /// A sphere or cone of many faces, turned and placed anywhere on the grid.
-    fn solid() -> impl Strategy<Value = String> {
+    pub(crate) fn solid() -> impl Strategy<Value = String> {
         let shape = prop_oneof![
             (6usize..40, 2.0..9.0f64).prop_map(|(n, r)| format!("sphere($fn = {n}, r = {r:.3});")),
             (3usize..40, 2.0..12.0f64, 0.0..6.0f64).prop_map(|(n, h, r)| format!(

@@ -277,7 +277,7 @@ impl<'a> Columns<'a> {
         let mut column = Column::default();
         // Each primitive on the columns of its outline within the panel, its planes pruned
         // to those columns.
-        let here: Vec<(u32, PixelBox, Pruned)> = prims
+        let here: Vec<(u32, PixelBox, Tiles)> = prims
             .iter()
             .filter_map(|&p| {
                 let o = self.slicer.outlines[p as usize].and_then(|o| o.intersect(b))?;
@@ -286,16 +286,19 @@ impl<'a> Columns<'a> {
                     Depths::Float(f) => Pruned::Float(f.in_panel(self.slicer, o)?),
                     Depths::Sampled(d) => Pruned::Sampled(d),
                 };
-                Some((p, o, pruned))
+                Some((p, o, Tiles::of(self.slicer, pruned, o)))
             })
             .collect();
         for y in b.y0..b.y1 {
             for x in b.x0..b.x1 {
                 seg.open_column();
-                for (p, o, pruned) in &here {
+                for (p, o, tiles) in &here {
                     if !o.contains(x, y) {
                         continue;
                     }
+                    let Some(pruned) = tiles.at(*o, x, y) else {
+                        continue;
+                    };
                     span.clear();
                     pruned.slabs(self.slicer, x, y, &mut column, &mut span);
                     span.retain(|(a, b)| a <= b);
@@ -343,6 +346,25 @@ enum Pruned<'d, 'a> {
 }
 
 impl Pruned<'_, '_> {
+    /// Its planes pruned again to box `t` (None: the solid is nowhere in it); an import's
+    /// runs as they are.
+    fn in_box(&self, slicer: &Slicer, t: PixelBox) -> Option<Self> {
+        match self {
+            Pruned::Word(w) => w.in_panel(slicer, t).map(Pruned::Word),
+            Pruned::Float(f) => f.in_panel(slicer, t).map(Pruned::Float),
+            Pruned::Sampled(d) => Some(Pruned::Sampled(d)),
+        }
+    }
+
+    /// Planes left (0 for an import).
+    fn planes(&self) -> usize {
+        match self {
+            Pruned::Word(w) => w.len(),
+            Pruned::Float(f) => f.len(),
+            Pruned::Sampled(_) => 0,
+        }
+    }
+
     /// The primitive's runs of slabs (first, last) along column (x, y), in order; `column`
     /// is a dataset's scratch space.
     fn slabs(
@@ -357,6 +379,54 @@ impl Pruned<'_, '_> {
             Pruned::Word(w) => out.push(w.slabs(slicer, x as i64, y as i64)),
             Pruned::Float(f) => out.push(f.slabs(slicer, x, y)),
             Pruned::Sampled(d) => d.slabs(x, y, column, out),
+        }
+    }
+}
+
+/// Side of the tiles a panel's planes are pruned to again where many are left.
+const TILE: usize = 4;
+
+/// Planes left over a panel above which they are pruned again tile by tile.
+const RETILE: usize = 8;
+
+/// A primitive's planes over its outline `o` in a panel: pruned to it, and where many are
+/// left (a solid of many faces, whose faces each decide only a few pixels) pruned again to
+/// each TILE×TILE tile of it. Pruning a box's planes to a box inside it keeps what every
+/// pixel of the smaller box is decided by ([`WordPlanes::in_panel`]), so a column's slabs are
+/// the same from either; a pixel then evaluates its tile's few planes, not the panel's many.
+enum Tiles<'d, 'a> {
+    One(Pruned<'d, 'a>),
+    /// Row-major over the tiles of `o` from its corner, `across` a row; None: nothing there.
+    Grid {
+        across: usize,
+        tiles: Vec<Option<Pruned<'d, 'a>>>,
+    },
+}
+
+impl<'d, 'a> Tiles<'d, 'a> {
+    fn of(slicer: &Slicer, pruned: Pruned<'d, 'a>, o: PixelBox) -> Self {
+        if pruned.planes() <= RETILE || o.width().max(o.height()) <= TILE {
+            return Tiles::One(pruned);
+        }
+        let (across, down) = (o.width().div_ceil(TILE), o.height().div_ceil(TILE));
+        let tiles = (0..across * down)
+            .map(|i| {
+                let (tx, ty) = (o.x0 + i % across * TILE, o.y0 + i / across * TILE);
+                let t = PixelBox::new(tx, ty, (tx + TILE).min(o.x1), (ty + TILE).min(o.y1));
+                pruned.in_box(slicer, t)
+            })
+            .collect();
+        Tiles::Grid { across, tiles }
+    }
+
+    /// The planes for pixel (x, y) of outline `o`; None where the solid is nowhere.
+    fn at(&self, o: PixelBox, x: usize, y: usize) -> Option<&Pruned<'d, 'a>> {
+        match self {
+            Tiles::One(p) => Some(p),
+            Tiles::Grid { across, tiles } => {
+                let i = (y - o.y0) / TILE * across + (x - o.x0) / TILE;
+                tiles[i].as_ref()
+            }
         }
     }
 }
@@ -968,5 +1038,76 @@ impl PanelBytes {
         held.saturating_add(meshes)
             .saturating_add((threads as u64).saturating_mul(self.band))
             .saturating_add(PROCESS_BYTES)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ranges::tests::solid;
+    use crate::slicer::SlicerOptions;
+    use csgpix_scene::grid::Grid;
+    use proptest::prelude::*;
+
+    /// Column (x, y)'s runs of slabs from `p`, empty ones dropped.
+    fn slabs(p: &Pruned, slicer: &Slicer, x: usize, y: usize) -> Vec<(u32, u32)> {
+        let mut out = vec![];
+        p.slabs(slicer, x, y, &mut Column::default(), &mut out);
+        out.retain(|(a, b)| a <= b);
+        out
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// A solid's planes pruned to a box, then again tile by tile, give every pixel of the
+        /// box the slabs all its planes give, in the word and in f64.
+        #[test]
+        fn planes_pruned_tile_by_tile_decide_as_all_do(
+            text in solid(),
+            n in 8usize..80,
+            at in prop::array::uniform2(0usize..80),
+            size in prop::array::uniform2(1usize..40),
+        ) {
+            let scene = csgpix_openscad::parse_csg(&text, "s.csg").unwrap();
+            let lo = glam::DVec3::splat(-12.0);
+            let grid = Grid::new([n, n, n], lo, -lo).unwrap();
+            let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
+            let (x0, y0) = (at[0] % n, at[1] % n);
+            let b = PixelBox::new(x0, y0, (x0 + size[0]).min(n), (y0 + size[1]).min(n));
+            let word = Pruned::Word(WordPlanes::of(&slicer, 0).unwrap());
+            let float = Pruned::Float(FloatPlanes::of(&slicer, 0));
+            for all in [word, float] {
+                let tiles = all.in_box(&slicer, b).map(|p| Tiles::of(&slicer, p, b));
+                for y in b.y0..b.y1 {
+                    for x in b.x0..b.x1 {
+                        let got = tiles
+                            .as_ref()
+                            .and_then(|t| t.at(b, x, y))
+                            .map_or(vec![], |p| slabs(p, &slicer, x, y));
+                        prop_assert_eq!(got, slabs(&all, &slicer, x, y), "pixel {},{}", x, y);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The test above reaches the tiles: a sphere of many faces over a panel is tiled, and
+    /// its tiles hold fewer planes than the panel.
+    #[test]
+    fn a_many_faced_solid_is_pruned_tile_by_tile() {
+        let scene = csgpix_openscad::parse_csg("sphere($fn = 40, r = 9);", "s.csg").unwrap();
+        let lo = glam::DVec3::splat(-10.0);
+        let grid = Grid::new([64, 64, 64], lo, -lo).unwrap();
+        let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
+        let b = PixelBox::new(0, 0, 32, 32);
+        let panel = Pruned::Word(WordPlanes::of(&slicer, 0).unwrap())
+            .in_box(&slicer, b)
+            .unwrap();
+        let most = panel.planes();
+        let Tiles::Grid { tiles, .. } = Tiles::of(&slicer, panel, b) else {
+            panic!("{most} planes over the panel, not tiled");
+        };
+        let fewest = tiles.iter().flatten().map(Pruned::planes).min().unwrap();
+        assert!(fewest < most, "{fewest} of {most}");
     }
 }
