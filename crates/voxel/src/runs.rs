@@ -384,7 +384,7 @@ impl Pruned<'_, '_> {
 }
 
 /// Side of the tiles a panel's planes are pruned to again where many are left.
-const TILE: usize = 4;
+const TILE: usize = 8;
 
 /// Planes left over a panel above which they are pruned again tile by tile.
 const RETILE: usize = 8;
