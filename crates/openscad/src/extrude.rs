@@ -244,8 +244,11 @@ pub fn convex_prism(outline: &[DVec2], l: &Linear) -> (Vec<[f64; 3]>, Vec<Vec<us
     let n = outline.len();
     let (z0, z1) = l.z();
     let s = l.scale[0];
-    let mut v: Vec<[f64; 3]> = outline.iter().map(|p| [p.x, p.y, z0]).collect();
-    let mut faces: Vec<Vec<usize>> = vec![(0..n).rev().collect()];
+    // Sized once: a circle of many fragments is thousands of faces.
+    let mut v: Vec<[f64; 3]> = Vec::with_capacity(2 * n);
+    v.extend(outline.iter().map(|p| [p.x, p.y, z0]));
+    let mut faces: Vec<Vec<usize>> = Vec::with_capacity(n + 2);
+    faces.push((0..n).rev().collect());
     if s == 0.0 {
         v.push([0.0, 0.0, z1]);
         faces.extend((0..n).map(|i| vec![i, (i + 1) % n, n]));
