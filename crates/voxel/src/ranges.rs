@@ -410,6 +410,23 @@ pub(crate) mod tests {
         })
     }
 
+    /// A slicer of scene `text` on an n³ grid over [-12, 12]³, and the box of up to `size`
+    /// pixels at `at` (wrapped onto the grid), cut by the grid's edge.
+    pub(crate) fn slicer_and_box(
+        text: &str,
+        n: usize,
+        at: [usize; 2],
+        size: [usize; 2],
+    ) -> (Slicer, PixelBox) {
+        let scene = csgpix_openscad::parse_csg(text, "s.csg").unwrap();
+        let lo = glam::DVec3::splat(-12.0);
+        let grid = Grid::new([n, n, n], lo, -lo).unwrap();
+        let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
+        let (x0, y0) = (at[0] % n, at[1] % n);
+        let b = PixelBox::new(x0, y0, (x0 + size[0]).min(n), (y0 + size[1]).min(n));
+        (slicer, b)
+    }
+
     /// An empty run of slabs.
     fn empty((first, last): (u32, u32)) -> bool {
         first > last
@@ -425,13 +442,8 @@ pub(crate) mod tests {
             at in prop::array::uniform2(0usize..80),
             size in prop::array::uniform2(1usize..24),
         ) {
-            let scene = csgpix_openscad::parse_csg(&text, "s.csg").unwrap();
-            let lo = glam::DVec3::splat(-12.0);
-            let grid = Grid::new([n, n, n], lo, -lo).unwrap();
-            let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
+            let (slicer, b) = slicer_and_box(&text, n, at, size);
             let all = WordPlanes::of(&slicer, 0).unwrap();
-            let (x0, y0) = (at[0] % n, at[1] % n);
-            let b = PixelBox { x0, y0, x1: (x0 + size[0]).min(n), y1: (y0 + size[1]).min(n) };
             let kept = all.in_panel(&slicer, b);
             for y in b.y0..b.y1 {
                 for x in b.x0..b.x1 {

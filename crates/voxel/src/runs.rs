@@ -1044,7 +1044,7 @@ impl PanelBytes {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ranges::tests::solid;
+    use crate::ranges::tests::{slicer_and_box, solid};
     use crate::slicer::SlicerOptions;
     use csgpix_scene::grid::Grid;
     use proptest::prelude::*;
@@ -1068,12 +1068,7 @@ mod tests {
             at in prop::array::uniform2(0usize..80),
             size in prop::array::uniform2(1usize..40),
         ) {
-            let scene = csgpix_openscad::parse_csg(&text, "s.csg").unwrap();
-            let lo = glam::DVec3::splat(-12.0);
-            let grid = Grid::new([n, n, n], lo, -lo).unwrap();
-            let slicer = Slicer::new(&scene, grid, SlicerOptions::default()).unwrap();
-            let (x0, y0) = (at[0] % n, at[1] % n);
-            let b = PixelBox::new(x0, y0, (x0 + size[0]).min(n), (y0 + size[1]).min(n));
+            let (slicer, b) = slicer_and_box(&text, n, at, size);
             let word = Pruned::Word(WordPlanes::of(&slicer, 0).unwrap());
             let float = Pruned::Float(FloatPlanes::of(&slicer, 0));
             for all in [word, float] {
