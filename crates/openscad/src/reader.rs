@@ -870,52 +870,49 @@ impl<'a> Reader<'a> {
             pos,
             name: frame.kind.name(),
         };
-        let node = self.extrude_region(&region, &how, &to)?;
+        let mut prisms = convex_prisms(&region, &how, &to).into_iter();
+        let node = self.extrude_region(&region, &how, &to, &mut prisms)?;
         Ok(Item::Solid(node))
     }
 
-    /// One 2D tree extruded: its operations kept, its shapes extruded.
+    /// One 2D tree extruded: its operations kept, its shapes extruded, each taking the next
+    /// of [`convex_prisms`]' results.
     fn extrude_region(
         &mut self,
         r: &Region,
         how: &Extrusion,
         to: &Placement,
+        prisms: &mut impl Iterator<Item = Option<Result<ConvexSolid, Fail>>>,
     ) -> Result<CsgNode, Fail> {
         let (op, parts) = match r {
-            Region::Poly(p) => return self.extrude_shape(p, how, to),
+            Region::Poly(p) => return self.extrude_shape(p, how, to, prisms.next().flatten()),
             Region::Union(c) => (Op::Union, c),
             Region::Intersection(c) => (Op::Intersection, c),
             Region::Difference(c) => (Op::Difference, c),
         };
         let nodes = parts
             .iter()
-            .map(|c| self.extrude_region(c, how, to))
+            .map(|c| self.extrude_region(c, how, to, prisms))
             .collect::<Result<Vec<_>, _>>()?;
         Ok(combine(op, nodes))
     }
 
-    /// One shape extruded: a convex solid when it stays convex, else a closed mesh primitive.
+    /// One shape extruded: its convex prism when it stays convex (`prism`, made by
+    /// [`convex_prisms`]), else a closed mesh primitive.
     fn extrude_shape(
         &mut self,
         p: &Poly2,
         how: &Extrusion,
         to: &Placement,
+        prism: Option<Result<ConvexSolid, Fail>>,
     ) -> Result<CsgNode, Fail> {
         let budget = self.max_vertices().saturating_sub(self.vertices);
         let n = p.points().count();
-        if let Extrusion::Linear(l) = how {
-            if let Some(outline) = p.convex_outline().filter(|_| l.keeps_convex()) {
-                let (vertices, faces) = convex_prism(&outline, l);
-                let ctx = Ctx {
-                    matrix: to.matrix,
-                    colour: to.colour,
-                    skip: false,
-                };
-                let solid = place(Shape { vertices, faces }, &ctx, to.pos)?;
-                self.vertices += solid.vertices.len();
-                self.solids.push(solid);
-                return Ok(CsgNode::Solid(self.solids.len() - 1));
-            }
+        if let Some(solid) = prism {
+            let solid = solid?;
+            self.vertices += solid.vertices.len();
+            self.solids.push(solid);
+            return Ok(CsgNode::Solid(self.solids.len() - 1));
         }
         let rings = match how {
             Extrusion::Linear(l) => l.slices + 1,
@@ -1268,3 +1265,44 @@ fn child_ctx(parent: &Ctx, head: &Head, warnings: &mut Vec<(Pos, String)>) -> Re
 
 // ---------------------------------------------------------------------------------------------
 // CSG tree
+
+/// The convex prism of every shape of 2D tree `r` that stays convex under extrusion `how`
+/// (None for the others), in the order [`Reader::extrude_region`] meets the shapes, made in
+/// parallel: a tree of thousands of circles of many fragments is as many prisms of as many
+/// faces. A shape's error is kept for the moment the reader reaches it, so errors come in the
+/// order they did one shape at a time.
+fn convex_prisms(
+    r: &Region,
+    how: &Extrusion,
+    to: &Placement,
+) -> Vec<Option<Result<ConvexSolid, Fail>>> {
+    use rayon::prelude::*;
+    let Extrusion::Linear(l) = how else {
+        return vec![];
+    };
+    let mut shapes = vec![];
+    region_shapes(r, &mut shapes);
+    let ctx = Ctx {
+        matrix: to.matrix,
+        colour: to.colour,
+        skip: false,
+    };
+    shapes
+        .par_iter()
+        .map(|p| {
+            let outline = p.convex_outline().filter(|_| l.keeps_convex())?;
+            let (vertices, faces) = convex_prism(&outline, l);
+            Some(place(Shape { vertices, faces }, &ctx, to.pos))
+        })
+        .collect()
+}
+
+/// The shapes of 2D tree `r`, depth first, in order.
+fn region_shapes<'r>(r: &'r Region, out: &mut Vec<&'r Poly2>) {
+    match r {
+        Region::Poly(p) => out.push(p),
+        Region::Union(c) | Region::Intersection(c) | Region::Difference(c) => {
+            c.iter().for_each(|c| region_shapes(c, out))
+        }
+    }
+}

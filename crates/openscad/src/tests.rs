@@ -563,6 +563,31 @@ fn degenerate_extents_are_refused_at_the_primitive() {
     assert_eq!(parse("cube(1e-12);").solids.len(), 1);
 }
 
+/// An extrusion's convex prisms are made all at once, in parallel; the error is still the
+/// first shape's, as when they were made one at a time.
+#[test]
+fn an_extrusions_first_failing_shape_is_the_one_reported() {
+    let shapes = [
+        "square(1);",
+        "square([1e-300, 1]);",
+        "multmatrix([[1, 0, 0, 1e300], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) square(1);",
+        "square([1, 1e-307]);",
+    ];
+    for first in 1..3 {
+        let body: String = shapes[..1]
+            .iter()
+            .chain(&shapes[first..])
+            .cloned()
+            .collect();
+        let text = format!("linear_extrude(height = 1) union() {{ {body} }}");
+        let want = ["", "1e-300 across in x", "coordinate"][first];
+        assert_err(&text, 1, 1, want);
+    }
+    let many = "square(1); ".repeat(300);
+    let text = format!("linear_extrude(height = 2) union() {{ {many} }}");
+    assert_eq!(parse(&text).solids.len(), 300);
+}
+
 #[test]
 fn all_nodes_seed_parses() {
     let scene = parse(ALL_NODES);
