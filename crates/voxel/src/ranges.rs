@@ -206,6 +206,8 @@ fn decisive<P: Copy, T: PartialOrd + Copy + Default>(
             kept.push(p);
         }
     }
+    // Sized to what is kept, not to all: a panel's tiles each keep a few of its planes.
+    kept.shrink_to_fit();
     Some(Decisive {
         kept,
         lo: front.map(|(m, _)| m),
