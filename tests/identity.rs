@@ -16,7 +16,10 @@
 //! dataset's runs came to be counted (its memory estimate, 18,197,312 → 17,368,484; the volume
 //! unchanged), and the `--json` reports of `voxelize-fig52` and `voxelize-fig56-grey` when
 //! `--preview` came to be counted in the estimate (17,463,104 → 18,725,696 and 16,950,016 →
-//! 18,104,896, by `plan::preview_bytes` exactly; every other byte unchanged).
+//! 18,104,896, by `plan::preview_bytes` exactly; every other byte unchanged), and the five
+//! voxelize cases' `--json` reports when the planes a run holds came to be counted in the
+//! estimate (`Slicer::planes_bytes`; figure-5.2's 17,672,768 → 17,707,616; every other byte
+//! unchanged).
 //! A refactoring that changes no behaviour leaves every line equal. Timings (`*seconds*`, `*_s` JSON fields, `time` lines) are removed from
 //! standard output before digesting: they are the only bytes that differ from run to run.
 //!

@@ -7,7 +7,7 @@ use rtl_model::{ArrayConfig, WordFormat};
 use csgpix_draw::project::{
     display_list, max_slope, scale_perpendicular, silhouette_planes, Frame, DEPTH_MARGIN,
 };
-use csgpix_scene::display_list::DisplayList;
+use csgpix_scene::display_list::{DisplayList, DlPlane};
 use csgpix_scene::grid::Grid;
 use csgpix_scene::solid::CsgScene;
 
@@ -234,6 +234,39 @@ impl Slicer {
         })
     }
 
+    /// The bytes a run holds for the scene's solids whatever its route (docs/memory.md,
+    /// "Planes held"): `scene`'s vertices and face lists, the display lists, with `runs` the
+    /// run route's planes as words (or f64), and per thread one solid's program while its
+    /// clocks are counted. A scene of millions of planes (thousands of circles of many
+    /// fragments) holds them all three times; a scene of a few solids, next to nothing.
+    pub fn planes_bytes(&self, scene: &CsgScene, runs: bool, threads: usize) -> u64 {
+        use std::mem::size_of;
+        let solids: u64 = scene
+            .solids
+            .iter()
+            .map(|s| {
+                let faces: u64 = s.faces.iter().map(|f| heap(f.capacity() * 8)).sum();
+                heap(s.vertices.capacity() * 24) + heap(s.faces.capacity() * 24) + faces
+            })
+            .sum();
+        let planes: Vec<u64> = self.lists.iter().map(|l| l.planes.len() as u64).collect();
+        let lists: u64 = self
+            .lists
+            .iter()
+            .map(|l| heap(l.planes.capacity() * size_of::<DlPlane>()))
+            .sum();
+        // A word plane is (Coeffs, Y, H), an f64 one (Z0, dZx, dZy, Y, H): 32 bytes either way.
+        let words = if runs {
+            planes.iter().sum::<u64>() * 32
+        } else {
+            0
+        };
+        // counted_work: a copy of the list, and the program of its planes and the slab's.
+        let most = planes.iter().copied().max().unwrap_or(0) + 8;
+        let program = most * (size_of::<DlPlane>() + size_of::<rtl_model::Op>()) as u64 * 2;
+        solids + lists + words + program * threads as u64
+    }
+
     /// Primitives of every kind.
     pub fn primitive_count(&self) -> usize {
         self.lists.len() + self.sampled.len()
@@ -363,4 +396,13 @@ fn outline(
         y1: end(hi.y, h).max(0.0) as usize,
     };
     (b.x0 < b.x1 && b.y0 < b.y1).then_some(b)
+}
+
+/// Heap bytes of an allocation of `bytes` (glibc: an 8-byte header, 16-byte chunks of at least
+/// 32); nothing for an empty one.
+fn heap(bytes: usize) -> u64 {
+    match bytes {
+        0 => 0,
+        b => ((b + 8).div_ceil(16) * 16).max(32) as u64,
+    }
 }

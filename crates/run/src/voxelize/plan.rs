@@ -170,7 +170,8 @@ impl Plan {
         let store_nodes = self.store_nodes(job, scene)?;
         let need = self
             .pool
-            .install(|| self.estimate(job, stream, runs_nrrd))?;
+            .install(|| self.estimate(job, stream, runs_nrrd))?
+            .saturating_add(slicer.planes_bytes(scene, self.runs(), threads));
         // Drawing the scene's text came before, and was freed (CsgScene::reading_bytes).
         let read = scene
             .reading_bytes
