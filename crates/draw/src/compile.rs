@@ -333,10 +333,7 @@ fn check_clip_bound(
 /// onto a large screen costs seconds that a refusal should not wait for. The bound it gives
 /// is that lower one; the compiler checks the full one.
 pub fn check_clip_size(expr: &Clip) -> Result<(), CompileError> {
-    // Products too many to list are refused by the compiler, with their own message.
-    let Ok(products) = expr.products() else {
-        return Ok(());
-    };
+    let products = products_of(expr)?;
     let solids = products
         .iter()
         .flatten()
@@ -349,6 +346,23 @@ pub fn check_clip_size(expr: &Clip) -> Result<(), CompileError> {
         &products,
         solids as u64,
     )
+}
+
+/// `expr`'s sum of products, or the refusal of a function with more than
+/// [`csgpix_scene::clip_expr::MAX_PRODUCTS`].
+fn products_of(expr: &Clip) -> Result<Vec<Vec<(usize, bool)>>, CompileError> {
+    expr.products().map_err(|e| {
+        let msg = format!(
+            "{}: §5.2.1 draws a clipping function product by product, so write it with \
+             fewer (voxelize evaluates a .csg tree in Blist, without products)",
+            e.problem()
+        );
+        CompileError {
+            plane: 0,
+            field: WHOLE_PROGRAM,
+            msg,
+        }
+    })
 }
 
 /// The thesis evaluation of a clipping function (§5.2.1): for every literal of every product
@@ -373,21 +387,7 @@ pub fn clip_scene_ops(
             },
         ));
     }
-    let products = expr.products().map_err(|e| {
-        let msg = format!(
-            "{}: §5.2.1 draws a clipping function product by product, so write it with \
-             fewer (voxelize evaluates a .csg tree in Blist, without products)",
-            e.problem()
-        );
-        (
-            0,
-            CompileError {
-                plane: 0,
-                field: WHOLE_PROGRAM,
-                msg,
-            },
-        )
-    })?;
+    let products = products_of(expr).map_err(|e| (0, e))?;
     let planes = lists.iter().map(|l| l.planes.len() as u64).sum();
     check_clip_bound(clip_ops_bound(lists, &products), "up to", &products, planes)
         .map_err(|e| (0, e))?;
@@ -419,6 +419,34 @@ pub fn clip_scene_ops(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A function of too many products is refused before lists are built, with the
+    /// compiler's own message (`render`, `requirements` and `throughput` waited minutes for
+    /// the projection of a plate of 4,956 many-sided prisms before this refusal).
+    #[test]
+    fn too_many_products_are_refused_before_the_lists() {
+        let pair = |i: usize| Clip::Or(Box::new(Clip::Obj(2 * i)), Box::new(Clip::Obj(2 * i + 1)));
+        let and = |a, b| Clip::And(Box::new(a), Box::new(b));
+        let twelve = (1..12).fold(pair(0), |e, i| and(e, pair(i)));
+        assert!(check_clip_size(&twelve).is_ok(), "2^12 = 4096 products");
+        let thirteen = and(twelve, pair(12));
+        let e = check_clip_size(&thirteen).unwrap_err();
+        assert_eq!(e.field, WHOLE_PROGRAM);
+        let text = e.to_string();
+        assert!(
+            text.starts_with("the expression expands to more than 4096 products"),
+            "{text}"
+        );
+        let lists = vec![
+            DisplayList {
+                planes: vec![],
+                terminator: 0
+            };
+            26
+        ];
+        let compiled = clip_scene_ops(&lists, &thirteen, &WordFormat::default(), 4).unwrap_err();
+        assert_eq!(compiled.1.to_string(), text);
+    }
 
     /// A program too long for one solid's many planes is not blamed on a difference of many
     /// solids (a sphere of $fn = 3000 was); a whole-program error names no plane.
