@@ -22,9 +22,7 @@ use rtl_model::{ArrayConfig, EquationSet, WordFormat};
 use serde::Serialize;
 
 use crate::compile::clip_scene_ops;
-use crate::project::{
-    clip_of, display_lists, max_slope, project, silhouette_planes, Frame, View, DEPTH_MARGIN,
-};
+use crate::project::{clip_of, closed_list, max_slope, project, Frame, View, DEPTH_MARGIN};
 use csgpix_scene::clip_expr::Clip;
 use csgpix_scene::display_list::DisplayList;
 use csgpix_scene::solid::{CsgNode, CsgScene};
@@ -67,14 +65,9 @@ impl PanelScene {
         // silhouette plane, as `voxelize` draws them.
         let lists = project(scene, view, w, h, &fmt)?.lists;
         let frame = Frame::fit(scene, view, w, h)?;
-        let slice_lists = display_lists(scene, &frame, max_slope(&fmt, w, h))
-            .into_iter()
-            .zip(&scene.solids)
-            .map(|(mut dl, s)| {
-                let colour = dl.planes.first().map_or(1, |p| p.colour);
-                dl.planes.extend(silhouette_planes(&frame, s, colour));
-                dl
-            })
+        let slope = max_slope(&fmt, w, h);
+        let slice_lists = (scene.solids.iter().enumerate())
+            .map(|(i, s)| closed_list(&frame, i, s, slope))
             .collect();
         // A tree that simplifies to nothing (a difference from an empty solid) draws no
         // solid: no panel lists any.

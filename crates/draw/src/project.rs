@@ -298,6 +298,15 @@ pub fn display_lists(scene: &CsgScene, frame: &Frame, slope_limit: f64) -> Vec<D
         .collect()
 }
 
+/// [`display_list`] closed by every silhouette plane of the solid ([`silhouette_planes`], in
+/// the list's colour): the list a slice draws, whatever the screen rule would do (§5.3.1).
+pub fn closed_list(frame: &Frame, i: usize, s: &ConvexSolid, slope_limit: f64) -> DisplayList {
+    let mut dl = display_list(frame, i, s, slope_limit);
+    let colour = dl.planes.first().map_or(1, |p| p.colour);
+    dl.planes.extend(silhouette_planes(frame, s, colour));
+    dl
+}
+
 /// [`display_lists`]' list of solid `s`, the scene's `i`-th.
 pub fn display_list(frame: &Frame, i: usize, s: &ConvexSolid, slope_limit: f64) -> DisplayList {
     let colour = s.colour.map_or(1 + (i % 6) as u32, colour_code);

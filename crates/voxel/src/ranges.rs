@@ -40,6 +40,18 @@ pub(crate) fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
 /// dKy) in raw words, with each plane's Y and H flags (§2.3).
 pub(crate) struct WordPlanes(Vec<(rtl_model::Coeffs, bool, bool)>);
 
+/// Bytes of one plane as the run route holds it, a word's or an f64's, whichever is larger
+/// (for [`crate::Slicer::planes_bytes`]).
+pub(crate) const PLANE_BYTES: usize = {
+    let word = std::mem::size_of::<(rtl_model::Coeffs, bool, bool)>();
+    let float = std::mem::size_of::<(f64, f64, f64, bool, bool)>();
+    if word > float {
+        word
+    } else {
+        float
+    }
+};
+
 impl WordPlanes {
     /// Planes held.
     pub(crate) fn len(&self) -> usize {

@@ -4,9 +4,7 @@
 use glam::{DMat3, DVec3};
 use rtl_model::{ArrayConfig, WordFormat};
 
-use csgpix_draw::project::{
-    display_list, max_slope, scale_perpendicular, silhouette_planes, Frame, DEPTH_MARGIN,
-};
+use csgpix_draw::project::{closed_list, max_slope, scale_perpendicular, Frame, DEPTH_MARGIN};
 use csgpix_scene::display_list::{DisplayList, DlPlane};
 use csgpix_scene::grid::Grid;
 use csgpix_scene::solid::CsgScene;
@@ -249,20 +247,19 @@ impl Slicer {
                 heap(s.vertices.capacity() * 24) + heap(s.faces.capacity() * 24) + faces
             })
             .sum();
-        let planes: Vec<u64> = self.lists.iter().map(|l| l.planes.len() as u64).collect();
-        let lists: u64 = self
-            .lists
-            .iter()
-            .map(|l| heap(l.planes.capacity() * size_of::<DlPlane>()))
-            .sum();
-        // A word plane is (Coeffs, Y, H), an f64 one (Z0, dZx, dZy, Y, H): 32 bytes either way.
+        // The display lists' bytes, their planes, the most planes of one.
+        let (lists, planes, most) = self.lists.iter().fold((0, 0, 0), |(b, n, m), l| {
+            let len = l.planes.len() as u64;
+            let bytes = heap(l.planes.capacity() * size_of::<DlPlane>());
+            (b + bytes, n + len, m.max(len))
+        });
         let words = if runs {
-            planes.iter().sum::<u64>() * 32
+            planes * crate::ranges::PLANE_BYTES as u64
         } else {
             0
         };
         // counted_work: a copy of the list, and the program of its planes and the slab's.
-        let most = planes.iter().copied().max().unwrap_or(0) + 8;
+        let most = most + 8;
         let program = most * (size_of::<DlPlane>() + size_of::<rtl_model::Op>()) as u64 * 2;
         solids + lists + words + program * threads as u64
     }
@@ -361,9 +358,7 @@ fn solid_lists(
         .par_iter()
         .enumerate()
         .map(|(i, solid)| {
-            let mut dl = display_list(frame, i, solid, slope_limit);
-            let colour = dl.planes.first().map_or(1, |p| p.colour);
-            dl.planes.extend(silhouette_planes(frame, solid, colour));
+            let mut dl = closed_list(frame, i, solid, slope_limit);
             scale_perpendicular(&mut dl, fmt, w, h);
             dl
         })
