@@ -40,16 +40,11 @@ pub(crate) fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
 /// dKy) in raw words, with each plane's Y and H flags (§2.3).
 pub(crate) struct WordPlanes(Vec<(rtl_model::Coeffs, bool, bool)>);
 
-/// Bytes of one plane as the run route holds it, a word's or an f64's, whichever is larger
-/// (for [`crate::Slicer::planes_bytes`]).
-pub(crate) const PLANE_BYTES: usize = {
+// The slicer's estimate counts RUN_PLANE_BYTES a plane: a word's and an f64's must fit.
+const _: () = {
     let word = std::mem::size_of::<(rtl_model::Coeffs, bool, bool)>();
     let float = std::mem::size_of::<(f64, f64, f64, bool, bool)>();
-    if word > float {
-        word
-    } else {
-        float
-    }
+    assert!(word <= crate::slicer::RUN_PLANE_BYTES && float <= crate::slicer::RUN_PLANE_BYTES);
 };
 
 impl WordPlanes {

@@ -154,6 +154,10 @@ pub struct Slicer {
 /// exact to 1.5e-5 pixel (`solid_lists`), so one pixel is room enough; two for margin.
 pub const OUTLINE_MARGIN: f64 = 2.0;
 
+/// Bytes of one plane as the run route holds it (`ranges`: a word's coefficients or an f64's,
+/// and the Y and H flags), for [`Slicer::planes_bytes`]; `ranges` checks that both fit.
+pub(crate) const RUN_PLANE_BYTES: usize = 32;
+
 impl Slicer {
     /// Lay the grid on the array (§4.4): X, Y to pixels (voxel centres at integer pixel
     /// coordinates), Z to depth, slab k at DEPTH_MARGIN + k·q depth units, q as large as the
@@ -254,7 +258,7 @@ impl Slicer {
             (b + bytes, n + len, m.max(len))
         });
         let words = if runs {
-            planes * crate::ranges::PLANE_BYTES as u64
+            planes * RUN_PLANE_BYTES as u64
         } else {
             0
         };
