@@ -936,6 +936,30 @@ pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<()> {
     Ok(())
 }
 
+/// The heap bytes a 2D tree's outlines hold (each outline's points and vector, each shape's
+/// list of outlines, with an allocator's 16 bytes a block), walked without recursion.
+pub(crate) fn region_bytes(r: &Region) -> u64 {
+    let block = |bytes: usize| bytes as u64 + 16;
+    let (mut total, mut stack) = (0u64, vec![r]);
+    while let Some(r) = stack.pop() {
+        match r {
+            Region::Poly(p) => {
+                total += block(p.paths.capacity() * 24);
+                total += p
+                    .paths
+                    .iter()
+                    .map(|c| block(c.capacity() * 16))
+                    .sum::<u64>();
+            }
+            Region::Union(c) | Region::Intersection(c) | Region::Difference(c) => {
+                total += block(c.capacity() * std::mem::size_of::<Region>());
+                stack.extend(c.iter());
+            }
+        }
+    }
+    total
+}
+
 /// Every shape of a 2D tree through `f`.
 pub(crate) fn map_region(r: Region, f: &dyn Fn(Poly2) -> Poly2) -> Region {
     match r {

@@ -59,25 +59,31 @@ pub(crate) fn region_of(op: Op, mut parts: Vec<Region>) -> Region {
     }
 }
 
-/// Every vertex of every shape of a 2D tree (for the slice and fragment counts).
-pub(crate) fn collect_points(r: &Region, out: &mut Vec<DVec2>) {
-    match r {
-        Region::Poly(p) => out.extend(p.points()),
-        Region::Union(c) | Region::Intersection(c) | Region::Difference(c) => {
-            c.iter().for_each(|c| collect_points(c, out))
+/// Every vertex of every shape of a 2D tree, to `f` (for the slice and fragment counts).
+pub(crate) fn for_each_point(r: &Region, f: &mut impl FnMut(DVec2)) {
+    let mut stack = vec![r];
+    while let Some(r) = stack.pop() {
+        match r {
+            Region::Poly(p) => p.points().for_each(&mut *f),
+            Region::Union(c) | Region::Intersection(c) | Region::Difference(c) => {
+                stack.extend(c.iter())
+            }
         }
     }
 }
 
 /// `linear_extrude`'s slices: as given, or OpenSCAD 2021.01's count from the outlines.
-pub(crate) fn linear_slices(a: LinearArgs, pts: &[DVec2]) -> Linear {
+pub(crate) fn linear_slices(a: LinearArgs, region: &Region) -> Linear {
     let mut l = a.linear;
     l.slices = match a.slices {
         Some(n) => n,
         None => {
-            let r = pts.iter().map(|p| p.length()).fold(0.0, f64::max);
             let ds = DVec2::new(l.scale[0] - 1.0, l.scale[1] - 1.0);
-            let delta = pts.iter().map(|p| (*p * ds).length()).fold(0.0, f64::max);
+            let (mut r, mut delta) = (0.0f64, 0.0f64);
+            for_each_point(region, &mut |p| {
+                r = r.max(p.length());
+                delta = delta.max((p * ds).length());
+            });
             let (fn_, fa, fs) = a.res;
             default_slices(&l, r, fn_, fa, fs, delta).min(MAX_FRAGMENTS as f64) as usize
         }

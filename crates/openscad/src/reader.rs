@@ -3,7 +3,8 @@
 use glam::DVec3;
 
 use crate::extrude::{
-    convex_prism, flatten, linear_mesh, map_region, rotate_mesh, Linear, Poly2, Region,
+    convex_prism, flatten, linear_mesh, map_region, region_bytes, rotate_mesh, Linear, Poly2,
+    Region,
 };
 use crate::geom::{
     convex_solid, leaf_mesh, mesh_of, minkowski2, minkowski3, pieces, pieces2, Piece, Piece2,
@@ -67,6 +68,9 @@ pub(crate) struct Reader<'a> {
     pub(crate) warnings: Vec<(Pos, String)>,
     /// What drawing the scene's text held at most, in bytes ([`CsgScene::reading_bytes`]).
     drawing_bytes: u64,
+    /// The most bytes one extrusion's 2D outlines held until it was made
+    /// ([`CsgScene::reading_bytes`]).
+    flat_bytes: u64,
     /// The scene's own fonts ([`ReadOptions::fonts`]) before the standard ones, loaded at the
     /// first `text()`; this scene's alone.
     pub(crate) scene_fonts: std::cell::OnceCell<crate::text::Fonts>,
@@ -94,6 +98,7 @@ impl<'a> Reader<'a> {
             top_dim: None,
             warnings: Vec::new(),
             drawing_bytes: 0,
+            flat_bytes: 0,
             scene_fonts: std::cell::OnceCell::new(),
         }
     }
@@ -158,7 +163,7 @@ impl<'a> Reader<'a> {
                     imports,
                     root,
                     warnings,
-                    reading_bytes: self.drawing_bytes,
+                    reading_bytes: self.drawing_bytes.saturating_add(self.flat_bytes),
                 })
             }
             Some(frame) => fail(pos, unclosed(&frame, "end of file")),
@@ -829,25 +834,28 @@ impl<'a> Reader<'a> {
             return Ok(Item::Solid(CsgNode::Empty));
         }
         let mut region = region_of(Op::Union, frame.flats);
+        self.flat_bytes = self.flat_bytes.max(region_bytes(&region));
         // Twisted or unevenly scaled walls are triangulated between slices, which does not
         // commute with booleans: those take the booleans in the plane first, as OpenSCAD.
         let triangulated = matches!(frame.spec, Spec::Linear(a) if !a.linear.keeps_convex());
         // A shape reaching across the axis may leave only one side after the 2D booleans
         // (OpenSCAD revolves their result): those are taken in the plane first too.
-        let mut xs = vec![];
-        collect_points(&region, &mut xs);
-        let across = matches!(frame.spec, Spec::Rotate { .. })
-            && xs.iter().any(|p| p.x < 0.0)
-            && xs.iter().any(|p| p.x > 0.0);
+        // (The points are visited where they are: a plate of thousands of circles has
+        // millions, and a copy of them, twice, had doubled the reader's peak.)
+        let (mut left, mut right) = (false, false);
+        for_each_point(&region, &mut |p| {
+            left |= p.x < 0.0;
+            right |= p.x > 0.0;
+        });
+        let across = matches!(frame.spec, Spec::Rotate { .. }) && left && right;
         if (triangulated || across) && !matches!(region, Region::Poly(_)) {
             region = Region::Poly(flatten(&region));
         }
-        let mut pts = vec![];
-        collect_points(&region, &mut pts);
         let how = match frame.spec {
-            Spec::Linear(a) => Extrusion::Linear(linear_slices(a, &pts)),
+            Spec::Linear(a) => Extrusion::Linear(linear_slices(a, &region)),
             Spec::Rotate { angle, res } => {
-                let r = pts.iter().map(|p| p.x.abs()).fold(0.0, f64::max);
+                let mut r = 0.0f64;
+                for_each_point(&region, &mut |p| r = r.max(p.x.abs()));
                 let res = Resolution {
                     fn_: res.0,
                     fa: res.1,

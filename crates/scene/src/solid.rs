@@ -74,9 +74,12 @@ pub struct CsgScene {
     /// `FILE:LINE:COL: message`, the refusal `--strict` makes of it. The command line prints
     /// each as `csgpix: warning: …`, `--json` lists them, Python raises `warnings.warn`.
     pub warnings: Vec<crate::Error>,
-    /// The most memory (bytes) drawing the scene's outlines held besides the scene, as the
-    /// reader charged it against its budget (a `text()`'s glyphs and their union, freed once
-    /// drawn): a run's estimate is at least this beside the process's own.
+    /// The memory (bytes) the reader held besides the scene and freed: what drawing `text()`
+    /// charged against its budget (its glyphs and their union), and the most one extrusion's
+    /// 2D outlines held before they were extruded. Freed blocks stay with the process (the
+    /// allocator keeps their pages for later blocks: the 4,956 circles of
+    /// `vectors/scenes/pulley-plate.scad`, 86 MB, left the run's resident size that much
+    /// above what the run holds), so a voxelize run's estimate counts this beside its own.
     pub reading_bytes: u64,
 }
 

@@ -172,10 +172,11 @@ impl Plan {
             .pool
             .install(|| self.estimate(job, stream, runs_nrrd))?
             .saturating_add(slicer.planes_bytes(scene, self.runs(), threads));
-        // Drawing the scene's text came before, and was freed (CsgScene::reading_bytes).
+        // What the reader freed stays with the process (CsgScene::reading_bytes).
         let read = scene
             .reading_bytes
             .saturating_add(csgpix_voxel::PROCESS_BYTES);
+        let need = need.saturating_add(scene.reading_bytes);
         Ok(Budget {
             need: need.saturating_add(store_nodes.unwrap_or(0)).max(read),
             stream,
