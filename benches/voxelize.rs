@@ -170,8 +170,8 @@ fn inside_of(v: &Volume) -> Vec<bool> {
 
 /// Newell's normal of face `f` (not normalized; outward, the face being CCW seen from
 /// outside) and the mean of its vertices.
-fn newell(s: &ConvexSolid, f: &[usize]) -> (DVec3, DVec3) {
-    let p = |i: usize| DVec3::from(s.vertices[f[i]]);
+fn newell(s: &ConvexSolid, f: &[u32]) -> (DVec3, DVec3) {
+    let p = |i: usize| DVec3::from(s.vertices[f[i] as usize]);
     let (mut n, mut c) = (DVec3::ZERO, DVec3::ZERO);
     for i in 0..f.len() {
         let (a, b) = (p(i), p((i + 1) % f.len()));

@@ -39,7 +39,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let mut tris = Vec::new();
         for f in &s.faces {
             for k in 1..f.len().saturating_sub(1) {
-                tris.push([f[0], f[k], f[k + 1]]);
+                tris.push([f[0], f[k], f[k + 1]].map(|i| i as usize));
             }
         }
         primitive(&mut out, s.vertices.iter().copied(), &tris)?;

@@ -117,7 +117,7 @@ fn figure_5_6_keeps_the_phantoms_cavities_and_the_bores() {
 
 /// Triangles of a convex solid's faces (fans), in scene units.
 fn faces_of(s: &csgpix::scene::solid::ConvexSolid) -> Vec<csgpix::scene::mesh::Tri> {
-    let v = |i: usize| s.vertices[i].map(|c| c as f32);
+    let v = |i: u32| s.vertices[i as usize].map(|c| c as f32);
     s.faces
         .iter()
         .flat_map(|f| (1..f.len() - 1).map(move |k| [v(f[0]), v(f[k]), v(f[k + 1])]))

@@ -57,9 +57,6 @@ impl PanelScene {
         fmt: WordFormat,
     ) -> Result<PanelScene> {
         let (w, h) = screen;
-        if let Some(clip) = clip_of(&scene.root) {
-            crate::compile::check_clip_size(&clip).map_err(Error::Clip)?;
-        }
         // The lists `render` draws (with the outline planes projection adds where the screen
         // rule would draw a solid beside itself), and for slices the faces with every
         // silhouette plane, as `voxelize` draws them.

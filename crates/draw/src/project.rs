@@ -160,22 +160,24 @@ fn face_plane(p: &[DVec3], colour: u32, slope_limit: f64) -> Option<DlPlane> {
 /// row "A < 0 ≤ B: Put 1" of §2.3.3 would otherwise turn into a solid reaching to maxdepth
 /// (docs/voxelization.md). None when the solid projects to less than an area.
 pub fn silhouette_planes(frame: &Frame, s: &ConvexSolid, colour: u32) -> Vec<DlPlane> {
-    outline_planes(frame, s, colour, |_, _| true)
+    outline_planes(&pixels(frame, s), colour, |_, _| true)
+}
+
+/// Solid `s`'s vertices in `frame`'s pixels and depth, in its order: projected once for all
+/// the faces that share them (three on a prism's side) and for its outline.
+pub fn pixels(frame: &Frame, s: &ConvexSolid) -> Vec<DVec3> {
+    (s.vertices.iter())
+        .map(|v| frame.to_pixel(DVec3::from(*v)))
+        .collect()
 }
 
 /// [`silhouette_planes`] of the edges `keep` keeps.
 fn outline_planes(
-    frame: &Frame,
-    s: &ConvexSolid,
+    pixels: &[DVec3],
     colour: u32,
     keep: impl Fn(glam::DVec2, glam::DVec2) -> bool,
 ) -> Vec<DlPlane> {
-    let pts: Vec<glam::DVec2> = s
-        .vertices
-        .iter()
-        .map(|v| frame.to_pixel(DVec3::from(*v)).truncate())
-        .collect();
-    let hull = convex_hull(pts);
+    let hull = convex_hull(pixels.iter().map(|p| p.truncate()).collect());
     if hull.len() < 3 {
         return vec![];
     }
@@ -250,16 +252,18 @@ pub fn scale_perpendicular(dl: &mut DisplayList, fmt: &WordFormat, width: usize,
 /// Convex hull, counter-clockwise (positive signed area), without collinear points
 /// (Andrew's monotone chain).
 fn convex_hull(mut pts: Vec<glam::DVec2>) -> Vec<glam::DVec2> {
-    pts.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    // Equal keys are equal points, bit for bit: a stable sort would give the same order.
+    pts.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
     pts.dedup();
     if pts.len() < 3 {
         return pts;
     }
     let cross = |o: glam::DVec2, a: glam::DVec2, b: glam::DVec2| (a - o).perp_dot(b - o);
     let mut hull: Vec<glam::DVec2> = Vec::with_capacity(2 * pts.len());
-    for pass in [pts.clone(), pts.into_iter().rev().collect()] {
+    for pass in 0..2 {
         let start = hull.len();
-        for p in pass {
+        for i in 0..pts.len() {
+            let p = pts[if pass == 0 { i } else { pts.len() - 1 - i }];
             while hull.len() >= start + 2
                 && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
             {
@@ -304,12 +308,22 @@ pub fn display_lists(scene: &CsgScene, frame: &Frame, slope_limit: f64) -> Vec<D
 /// along the view) has that face's plane in the list, the same line; it gets no second one
 /// (found as `face_list` makes the list): a prism of 1,080 sides had 2,162 planes, now 1,082.
 pub fn closed_list(frame: &Frame, i: usize, s: &ConvexSolid, slope_limit: f64) -> DisplayList {
+    closed_list_at(&pixels(frame, s), i, s, slope_limit)
+}
+
+/// [`closed_list`] from the solid's vertices already projected ([`pixels`]).
+pub fn closed_list_at(
+    pixels: &[DVec3],
+    i: usize,
+    s: &ConvexSolid,
+    slope_limit: f64,
+) -> DisplayList {
     let mut sides = vec![];
-    let mut dl = face_list(frame, i, s, slope_limit, Some(&mut sides));
+    let mut dl = face_list(pixels, i, s, slope_limit, Some(&mut sides));
     let colour = dl.planes.first().map_or(1, |p| p.colour);
     sides.sort_unstable();
     let open = |a, b| sides.binary_search(&segment_key(a, b)).is_err();
-    dl.planes.extend(outline_planes(frame, s, colour, open));
+    dl.planes.extend(outline_planes(pixels, colour, open));
     dl
 }
 
@@ -324,7 +338,7 @@ fn segment_key(a: glam::DVec2, b: glam::DVec2) -> [u64; 4] {
 
 /// [`display_lists`]' list of solid `s`, the scene's `i`-th.
 pub fn display_list(frame: &Frame, i: usize, s: &ConvexSolid, slope_limit: f64) -> DisplayList {
-    face_list(frame, i, s, slope_limit, None)
+    face_list(&pixels(frame, s), i, s, slope_limit, None)
 }
 
 /// [`display_list`], and into `sides` the segment each face perpendicular to the screen
@@ -333,7 +347,7 @@ pub fn display_list(frame: &Frame, i: usize, s: &ConvexSolid, slope_limit: f64) 
 /// 0 (its terms cancel in pairs), so [`face_plane`] makes it a perpendicular plane: the line
 /// through the two points.
 fn face_list(
-    frame: &Frame,
+    pixels: &[DVec3],
     i: usize,
     s: &ConvexSolid,
     slope_limit: f64,
@@ -344,10 +358,7 @@ fn face_list(
     let mut planes: Vec<DlPlane> = Vec::with_capacity(s.faces.len());
     for f in &s.faces {
         p.clear();
-        p.extend(
-            f.iter()
-                .map(|&v| frame.to_pixel(DVec3::from(s.vertices[v]))),
-        );
+        p.extend(f.iter().map(|&v| pixels[v as usize]));
         let Some(plane) = face_plane(&p, colour, slope_limit) else {
             continue;
         };
@@ -398,7 +409,8 @@ pub struct Projected {
 
 /// Project `scene` in `view` onto a `width`×`height` array with word format `fmt`: the bounds
 /// fill the array, and the scene must fit in depth (nearest point at [`DEPTH_MARGIN`], deepest
-/// under maxdepth).
+/// under maxdepth). A clipping function of more products than the compiler takes is refused
+/// first ([`crate::compile::check_clip_size`]), before any solid is projected.
 pub fn project(
     scene: &CsgScene,
     view: View,
@@ -407,12 +419,14 @@ pub fn project(
     fmt: &WordFormat,
 ) -> Result<Projected> {
     let clip = clip_of(&scene.root);
-    if clip.is_none() || scene.solids.is_empty() {
+    let Some(expr) = clip.as_ref().filter(|_| !scene.solids.is_empty()) else {
         return Ok(Projected {
             lists: vec![],
             clip: None,
         });
-    }
+    };
+    // A function too big to compile is refused before thousands of solids are projected.
+    crate::compile::check_clip_size(expr).map_err(Error::Clip)?;
     let frame = Frame::fit(scene, view, width, height)?;
     let maxdepth = fmt.to_real(fmt.maxdepth());
     let deepest = frame.deepest(scene);
@@ -659,7 +673,7 @@ mod tests {
         ];
         ConvexSolid {
             vertices,
-            faces,
+            faces: faces.into(),
             colour: None,
             line: 1,
         }
@@ -695,7 +709,7 @@ mod tests {
         faces.extend((0..n).map(|i| vec![i, (i + 1) % n, n + (i + 1) % n, n + i]));
         ConvexSolid {
             vertices,
-            faces,
+            faces: faces.into(),
             colour: None,
             line: 1,
         }

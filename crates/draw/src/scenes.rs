@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::compile::CompileError;
-use crate::project::{clip_of, project, Projected, View};
+use crate::project::{project, Projected, View};
 use csgpix_scene::clip_expr::Clip;
 use csgpix_scene::display_list::{field_position, DisplayList};
 use csgpix_scene::solid::CsgScene;
@@ -125,13 +125,6 @@ impl Scene {
         let scene = csgpix_openscad::read_scene_with(path, options)?;
         scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);
-        // A function too big to compile is refused before thousands of solids are projected.
-        if let Some(clip) = clip_of(&scene.root) {
-            crate::compile::check_clip_size(&clip).map_err(|e| LoadError::Draw {
-                path: path.display().to_string(),
-                error: crate::Error::Clip(e),
-            })?;
-        }
         let Projected { lists, clip } =
             project(&scene, view, w, h, &cfg.fmt).map_err(|error| LoadError::Draw {
                 path: path.display().to_string(),

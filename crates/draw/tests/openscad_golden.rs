@@ -3,6 +3,7 @@
 //! exported CSG to OFF; here csgpix reads the same CSG and must produce the same vertices
 //! (OFF prints 6 significant digits) and a closed, outward mesh of the same volume.
 
+use csgpix_scene::solid::Faces;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
@@ -42,7 +43,7 @@ fn read_off(path: &Path) -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
 }
 
 /// Signed volume of a closed mesh (faces counter-clockwise seen from outside: positive).
-fn volume(vertices: &[[f64; 3]], faces: &[Vec<usize>]) -> f64 {
+fn volume(vertices: &[[f64; 3]], faces: &Faces) -> f64 {
     let det = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
         a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
             + a[2] * (b[0] * c[1] - b[1] * c[0])
@@ -50,12 +51,18 @@ fn volume(vertices: &[[f64; 3]], faces: &[Vec<usize>]) -> f64 {
     faces
         .iter()
         .flat_map(|f| (1..f.len() - 1).map(move |i| (f[0], f[i], f[i + 1])))
-        .map(|(a, b, c)| det(vertices[a], vertices[b], vertices[c]) / 6.0)
+        .map(|(a, b, c)| {
+            det(
+                vertices[a as usize],
+                vertices[b as usize],
+                vertices[c as usize],
+            ) / 6.0
+        })
         .sum()
 }
 
 /// Every directed edge appears once and its reverse once: the mesh is closed and consistent.
-fn closed(faces: &[Vec<usize>]) -> bool {
+fn closed(faces: &Faces) -> bool {
     let mut edges = BTreeSet::new();
     for f in faces {
         for i in 0..f.len() {
@@ -93,7 +100,7 @@ fn every_primitive_matches_openscad() {
         assert!(closed(&ours.faces), "{name}: our mesh is not closed");
         let (v_ours, v_theirs) = (
             volume(&ours.vertices, &ours.faces),
-            volume(&theirs, &their_faces),
+            volume(&theirs, &Faces::from(their_faces.clone())),
         );
         assert!(v_ours > 0.0, "{name}: our faces point inward");
         assert!(

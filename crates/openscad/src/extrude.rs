@@ -17,6 +17,7 @@
 
 use glam::{DVec2, DVec3};
 
+use csgpix_scene::solid::Faces;
 use csgpix_scene::{Error, Result};
 
 use crate::cap;
@@ -240,25 +241,25 @@ fn helix_length(l: &Linear, r: f64) -> f64 {
 /// The convex solid of `linear_extrude` over one convex outline (counter-clockwise), no
 /// twist, scale `s` for both axes: vertices and faces counter-clockwise seen from outside.
 /// A zero scale makes the top a single apex.
-pub fn convex_prism(outline: &[DVec2], l: &Linear) -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
+pub fn convex_prism(outline: &[DVec2], l: &Linear) -> (Vec<[f64; 3]>, Faces) {
     let n = outline.len();
     let (z0, z1) = l.z();
     let s = l.scale[0];
     // Sized once: a circle of many fragments is thousands of faces.
     let mut v: Vec<[f64; 3]> = Vec::with_capacity(2 * n);
     v.extend(outline.iter().map(|p| [p.x, p.y, z0]));
-    let mut faces: Vec<Vec<usize>> = Vec::with_capacity(n + 2);
-    faces.push((0..n).rev().collect());
+    let mut faces = Faces::with_capacity(n + 2, 6 * n);
+    faces.push((0..n).rev());
     if s == 0.0 {
         v.push([0.0, 0.0, z1]);
-        faces.extend((0..n).map(|i| vec![i, (i + 1) % n, n]));
+        (0..n).for_each(|i| faces.push([i, (i + 1) % n, n]));
     } else {
         v.extend(outline.iter().map(|p| [p.x * s, p.y * s, z1]));
-        faces.push((n..2 * n).collect());
-        faces.extend((0..n).map(|i| {
+        faces.push(n..2 * n);
+        for i in 0..n {
             let j = (i + 1) % n;
-            vec![i, j, n + j, n + i]
-        }));
+            faces.push([i, j, n + j, n + i]);
+        }
     }
     (v, faces)
 }

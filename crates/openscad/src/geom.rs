@@ -194,7 +194,7 @@ pub(crate) fn leaf_mesh(
 
 /// A convex solid's faces as fans of triangles.
 pub(crate) fn solid_triangles(s: &ConvexSolid) -> Mesh {
-    let v = |i: usize| DVec3::from(s.vertices[i]);
+    let v = |i: u32| DVec3::from(s.vertices[i as usize]);
     let mut out = Vec::new();
     for f in &s.faces {
         for k in 1..f.len().saturating_sub(1) {
@@ -790,7 +790,7 @@ pub(crate) fn convex_solid(
     let (vertices, faces) = hull3(v)?;
     Ok(ConvexSolid {
         vertices: vertices.iter().map(|v| v.to_array()).collect(),
-        faces,
+        faces: faces.into(),
         colour,
         line,
     })
@@ -926,7 +926,8 @@ mod tests {
                 vec![2, 6, 7, 3],
                 vec![0, 4, 6, 2],
                 vec![1, 3, 7, 5],
-            ],
+            ]
+            .into(),
             colour: None,
             line: 1,
         }

@@ -7,7 +7,7 @@ use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use crate::{consts_::*, frame::*, lex::*, linalg::*, node::*, value::*};
-use csgpix_scene::solid::ConvexSolid;
+use csgpix_scene::solid::{ConvexSolid, Faces};
 
 // ---------------------------------------------------------------------------------------------
 // Primitives
@@ -16,7 +16,7 @@ use csgpix_scene::solid::ConvexSolid;
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Shape {
     pub(crate) vertices: Vec<Vec3>,
-    pub(crate) faces: Vec<Vec<usize>>,
+    pub(crate) faces: Faces,
 }
 
 /// Moves a shape into the scene: transform, keep faces outward, colour.
@@ -30,7 +30,7 @@ pub(crate) fn place(shape: Shape, ctx: &Ctx, pos: Pos) -> Result<ConvexSolid, Fa
             *v = transform_point(m, *v);
         }
         if det3(m) < 0.0 {
-            faces.iter_mut().for_each(|f| f.reverse());
+            faces.reverse_each();
         }
     }
     if vertices.iter().flatten().any(|&c| too_large(c)) {
@@ -141,7 +141,7 @@ pub(crate) fn cube(params: &Params) -> Result<Option<Shape>, Fail> {
     ];
     Ok(Some(Shape {
         vertices,
-        faces: faces.iter().map(|f| f.to_vec()).collect(),
+        faces: Faces::from(faces.iter().map(|f| f.to_vec()).collect::<Vec<_>>()),
     }))
 }
 
@@ -237,7 +237,10 @@ pub(crate) fn sphere(params: &Params, budget: usize) -> Result<Option<Shape>, Fa
         }
     }
     faces.push((0..fragments).map(|j| rings * fragments - j - 1).collect());
-    Ok(Some(Shape { vertices, faces }))
+    Ok(Some(Shape {
+        vertices,
+        faces: faces.into(),
+    }))
 }
 
 /// `cylinder(h, r1, r2, center, r, d, d1, d2, $fn, $fa, $fs)` as `CylinderNode::createGeometry`:
@@ -306,7 +309,10 @@ pub(crate) fn cylinder_shape(r1: f64, r2: f64, z1: f64, z2: f64, n: usize) -> Sh
         let offset = if inverted_cone { 1 } else { n };
         faces.push((offset..offset + n).collect());
     }
-    Shape { vertices, faces }
+    Shape {
+        vertices,
+        faces: faces.into(),
+    }
 }
 
 /// OpenSCAD's `generate_circle`: point `i` at angle `360 i / fragments`, counter-clockwise from
@@ -478,7 +484,10 @@ pub(crate) fn compact(points: Vec<Vec3>, mut faces: Vec<Vec<usize>>) -> Shape {
         }
     }
     faces.iter_mut().flatten().for_each(|i| *i = new_index[*i]);
-    Shape { vertices, faces }
+    Shape {
+        vertices,
+        faces: faces.into(),
+    }
 }
 
 // ---------------------------------------------------------------------------------------------

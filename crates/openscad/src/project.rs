@@ -94,7 +94,7 @@ pub(crate) fn section(
 /// A convex solid's closed section at z = 0 (its face there, when it has one): the hull of its
 /// vertices in the plane and of its edges' crossings; None when it has no area.
 pub(crate) fn convex_section(s: &ConvexSolid) -> Option<Vec<DVec2>> {
-    let v = |k: usize| DVec3::from(s.vertices[k]);
+    let v = |k: u32| DVec3::from(s.vertices[k as usize]);
     let mut pts: Vec<DVec2> = s
         .vertices
         .iter()
@@ -518,7 +518,7 @@ fn move_leaves(
                 *v = transform_point(m, *v);
             }
             if flip {
-                solid.faces.iter_mut().for_each(|f| f.reverse());
+                solid.faces.reverse_each();
             }
             if solid.vertices.iter().flatten().any(|&c| too_large(c)) {
                 return fail(pos, RESIZED_PAST_LIMIT);

@@ -840,14 +840,16 @@ impl<'a> Reader<'a> {
         let triangulated = matches!(frame.spec, Spec::Linear(a) if !a.linear.keeps_convex());
         // A shape reaching across the axis may leave only one side after the 2D booleans
         // (OpenSCAD revolves their result): those are taken in the plane first too.
-        // (The points are visited where they are: a plate of thousands of circles has
-        // millions, and a copy of them, twice, had doubled the reader's peak.)
-        let (mut left, mut right) = (false, false);
-        for_each_point(&region, &mut |p| {
-            left |= p.x < 0.0;
-            right |= p.x > 0.0;
-        });
-        let across = matches!(frame.spec, Spec::Rotate { .. }) && left && right;
+        // (The points are visited where they are, and only for a revolution: a plate of
+        // thousands of circles has millions, which two copies had held only to be looked at.)
+        let across = matches!(frame.spec, Spec::Rotate { .. }) && {
+            let (mut left, mut right) = (false, false);
+            for_each_point(&region, &mut |p| {
+                left |= p.x < 0.0;
+                right |= p.x > 0.0;
+            });
+            left && right
+        };
         if (triangulated || across) && !matches!(region, Region::Poly(_)) {
             region = Region::Poly(flatten(&region));
         }
@@ -1074,7 +1076,7 @@ impl<'a> Reader<'a> {
         let (vertices, faces) = hull3(&pts).map_err(at)?;
         let solid = ConvexSolid {
             vertices: vertices.iter().map(|v| v.to_array()).collect(),
-            faces,
+            faces: faces.into(),
             colour: frame.ctx.colour,
             line: pos.line,
         };

@@ -6,8 +6,8 @@ use crate::memory::Limit;
 use crate::Error;
 use std::path::PathBuf;
 
-use csgpix_draw::compile::{check_clip_size, clip_scene_ops};
-use csgpix_draw::project::{clip_of, project, Projected, View};
+use csgpix_draw::compile::clip_scene_ops;
+use csgpix_draw::project::{project, Projected, View};
 use csgpix_scene::solid::CsgScene;
 use csgpix_voxel::blist::BlistTable;
 use csgpix_voxel::requirements::DepthLayout;
@@ -280,14 +280,6 @@ fn render_program(a: &RequirementsJob, scene: &CsgScene) -> crate::Result<(usize
         fmt: a.word,
         ..ArrayConfig::new(w, h)
     };
-    let whole = |e| Error::Compile {
-        solid: None,
-        error: e,
-    };
-    // A function too big to compile is refused before thousands of solids are projected.
-    if let Some(clip) = clip_of(&scene.root) {
-        check_clip_size(&clip).map_err(whole)?;
-    }
     let Projected { lists, clip } =
         project(scene, a.view, w, h, &cfg.fmt).map_err(super::lib_errors::draw)?;
     let Some(clip) = clip else {

@@ -81,7 +81,7 @@ pub fn face_planes(s: &ConvexSolid) -> Vec<(DVec3, f64)> {
     s.faces
         .iter()
         .map(|f| {
-            let v = |i: usize| DVec3::from(s.vertices[f[i % f.len()]]);
+            let v = |i: usize| DVec3::from(s.vertices[f[i % f.len()] as usize]);
             let n: DVec3 = (0..f.len()).map(|i| v(i).cross(v(i + 1))).sum();
             let n = n.normalize();
             let c: DVec3 = (0..f.len()).map(v).sum::<DVec3>() / f.len() as f64;

@@ -122,12 +122,20 @@ pub fn applies(slicer: &Slicer) -> bool {
 
 /// Where each primitive's runs come from along a column.
 enum Depths<'a> {
-    /// A convex solid's plane words (the array's depths).
-    Word(WordPlanes),
-    /// A convex solid's exact depths.
-    Float(FloatPlanes),
+    /// A convex solid's plane words (the array's depths), held when its outline meets more
+    /// than [`HELD_PANELS`](crate::slicer::HELD_PANELS) panels, else compiled again from its display list in each panel
+    /// it meets ([`Slicer::holds_planes`]).
+    Word(Option<WordPlanes>),
+    /// A convex solid's exact depths, held or not as the words are.
+    Float(Option<FloatPlanes>),
     /// An import: a mesh or a dataset.
     Sampled(SampledDepths<'a>),
+}
+
+/// Solid `prim`'s words, compiled again where [`Columns::new`] compiled them without error
+/// and did not keep them.
+fn compiled(slicer: &Slicer, prim: usize) -> WordPlanes {
+    WordPlanes::of(slicer, prim).expect("the same list compiled without error in Columns::new")
 }
 
 /// Where an import's runs come from along a column.
@@ -167,11 +175,18 @@ impl<'a> Columns<'a> {
     /// in parallel) and the primitives of each panel.
     pub fn new(slicer: &'a Slicer, float: bool) -> Result<Columns<'a>> {
         let solids = slicer.lists.len();
+        // Every solid's words are compiled here, so a plane the word cannot hold is refused
+        // before the run; only those of solids over many panels are kept.
         let mut depths: Vec<Depths> = (0..solids)
             .into_par_iter()
-            .map(|p| match float {
-                true => Ok(Depths::Float(FloatPlanes::of(slicer, p))),
-                false => WordPlanes::of(slicer, p).map(Depths::Word),
+            .map(|p| {
+                let held = slicer.holds_planes(p);
+                match float {
+                    true => Ok(Depths::Float(held.then(|| FloatPlanes::of(slicer, p)))),
+                    false => Ok(Depths::Word(
+                        Some(WordPlanes::of(slicer, p)?).filter(|_| held),
+                    )),
+                }
             })
             .collect::<Result<_>>()?;
         for (j, s) in slicer.sampled.iter().enumerate() {
@@ -281,9 +296,14 @@ impl<'a> Columns<'a> {
             .iter()
             .filter_map(|&p| {
                 let o = self.slicer.outlines[p as usize].and_then(|o| o.intersect(b))?;
-                let pruned = match &self.depths[p as usize] {
-                    Depths::Word(w) => Pruned::Word(w.in_panel(self.slicer, o)?),
-                    Depths::Float(f) => Pruned::Float(f.in_panel(self.slicer, o)?),
+                let (slicer, prim) = (self.slicer, p as usize);
+                let pruned = match &self.depths[prim] {
+                    Depths::Word(Some(w)) => Pruned::Word(w.in_panel(slicer, o)?),
+                    Depths::Word(None) => Pruned::Word(compiled(slicer, prim).in_panel(slicer, o)?),
+                    Depths::Float(Some(f)) => Pruned::Float(f.in_panel(slicer, o)?),
+                    Depths::Float(None) => {
+                        Pruned::Float(FloatPlanes::of(slicer, prim).in_panel(slicer, o)?)
+                    }
                     Depths::Sampled(d) => Pruned::Sampled(d),
                 };
                 Some((p, o, Tiles::of(self.slicer, pruned, o)))

@@ -4,7 +4,9 @@
 use glam::{DMat3, DVec3};
 use rtl_model::{ArrayConfig, WordFormat};
 
-use csgpix_draw::project::{closed_list, max_slope, scale_perpendicular, Frame, DEPTH_MARGIN};
+use csgpix_draw::project::{
+    closed_list_at, max_slope, pixels, scale_perpendicular, Frame, DEPTH_MARGIN,
+};
 use csgpix_scene::display_list::{DisplayList, DlPlane};
 use csgpix_scene::grid::Grid;
 use csgpix_scene::solid::CsgScene;
@@ -150,6 +152,10 @@ pub struct Slicer {
     pub outlines: Vec<Option<PixelBox>>,
 }
 
+/// Panels a solid's outline may meet before the run route holds its planes for the whole
+/// run ([`Slicer::holds_planes`]).
+pub const HELD_PANELS: usize = 4;
+
 /// Pixels an outline box is grown by beyond the projected vertices: silhouette planes are
 /// exact to 1.5e-5 pixel (`solid_lists`), so one pixel is room enough; two for margin.
 pub const OUTLINE_MARGIN: f64 = 2.0;
@@ -204,16 +210,12 @@ impl Slicer {
             Sampling::Slab => max_slope(&fmt, w, h),
             Sampling::Centre => voxel_slope(&fmt, w, h),
         };
-        let lists = solid_lists(scene, &frame, slope_limit, &fmt, w, h);
-        let outlines = scene
-            .solids
-            .iter()
-            .map(|s| outline(&frame, s.vertices.iter().map(|&v| DVec3::from(v)), w, h))
-            .chain(sampled.iter().map(|s| {
-                let (lo, hi) = s.bounds();
-                outline(&frame, crate::sampled::corners(lo, hi), w, h)
-            }))
-            .collect();
+        let (lists, mut outlines) = solid_lists(scene, &frame, slope_limit, &fmt, w, h);
+        outlines.extend(sampled.iter().map(|s| {
+            let (lo, hi) = s.bounds();
+            let corners = crate::sampled::corners(lo, hi).map(|p| frame.to_pixel(p));
+            outline(corners, w, h)
+        }));
         let colours = lists
             .iter()
             .map(|dl| dl.planes.first().map_or(1, |p| p.colour.min(255) as u8))
@@ -237,35 +239,56 @@ impl Slicer {
     }
 
     /// The bytes a run holds for the scene's solids whatever its route (docs/memory.md,
-    /// "Planes held"): `scene`'s vertices and face lists, the display lists, with `runs` the
-    /// run route's planes as words (or f64), and per thread one solid's program while its
-    /// clocks are counted. A scene of millions of planes (thousands of circles of many
-    /// fragments) holds them all three times; a scene of a few solids, next to nothing.
+    /// "Planes held"): `scene`'s vertices and faces, the display lists, with `runs` the run
+    /// route's planes as words (or f64) for the solids it holds them of
+    /// ([`Slicer::holds_planes`]) and per thread one solid's, and per thread one solid's
+    /// program while its clocks are counted. A scene of millions of planes (thousands of
+    /// circles of many fragments) holds them twice, as faces and in the lists; a scene of a
+    /// few solids, next to nothing.
     pub fn planes_bytes(&self, scene: &CsgScene, runs: bool, threads: usize) -> u64 {
         use std::mem::size_of;
         let solids: u64 = scene
             .solids
             .iter()
             .map(|s| {
-                let faces: u64 = s.faces.iter().map(|f| heap(f.capacity() * 8)).sum();
-                heap(s.vertices.capacity() * 24) + heap(s.faces.capacity() * 24) + faces
+                let [index, ends] = s.faces.capacity_bytes();
+                heap(s.vertices.capacity() * 24) + heap(index) + heap(ends)
             })
             .sum();
-        // The display lists' bytes, their planes, the most planes of one.
-        let (lists, planes, most) = self.lists.iter().fold((0, 0, 0), |(b, n, m), l| {
-            let len = l.planes.len() as u64;
-            let bytes = heap(l.planes.capacity() * size_of::<DlPlane>());
-            (b + bytes, n + len, m.max(len))
-        });
-        let words = if runs {
-            planes * RUN_PLANE_BYTES as u64
-        } else {
-            0
+        // The display lists' bytes, the planes the run route holds, the most planes of one.
+        let (lists, held, most) = self
+            .lists
+            .iter()
+            .enumerate()
+            .fold((0, 0, 0), |acc, (p, l)| {
+                let (b, n, m) = acc;
+                let len = l.planes.len() as u64;
+                let bytes = heap(l.planes.capacity() * size_of::<DlPlane>());
+                (b + bytes, n + len * self.holds_planes(p) as u64, m.max(len))
+            });
+        // The run route's held planes, and per thread one solid's compiled as it meets a panel.
+        let words = match runs {
+            true => (held + most * threads as u64) * RUN_PLANE_BYTES as u64,
+            false => 0,
         };
         // counted_work: a copy of the list, and the program of its planes and the slab's.
         let most = most + 8;
         let program = most * (size_of::<DlPlane>() + size_of::<rtl_model::Op>()) as u64 * 2;
         solids + lists + words + program * threads as u64
+    }
+
+    /// Whether the run route holds solid `p`'s planes (as words or f64) for the whole run:
+    /// when its outline meets more than [`HELD_PANELS`] of the route's panels. A smaller
+    /// solid's are made again from its display list in each panel it meets, so a scene of
+    /// thousands of small many-sided solids holds its planes once (the lists), not twice;
+    /// a large one is not compiled again panel after panel.
+    pub fn holds_planes(&self, p: usize) -> bool {
+        let [pw, ph] = self.panel.unwrap_or(DEFAULT_PANEL).map(|n| n.max(1));
+        self.outlines[p].is_some_and(|o| {
+            let across = (o.x1 - 1) / pw - o.x0 / pw + 1;
+            let down = (o.y1 - 1) / ph - o.y0 / ph + 1;
+            across * down > HELD_PANELS
+        })
     }
 
     /// Primitives of every kind.
@@ -347,7 +370,8 @@ fn slab_raw(grid: &Grid, fmt: &WordFormat, sampling: Sampling) -> Result<i64> {
 /// shows nothing outside its outline at any depth, every perpendicular plane's K scaled to
 /// the word on a `w`×`h` array ([`scale_perpendicular`]: the array reads only K's sign, and
 /// the scale s takes the rounding of K0, dKx, dKy from up to 2^-(F+1)·(1 + x + y) pixels off
-/// the trace to that over s, s ≥ 4096 at 64×64 with the thesis's word: 1.5e-5 pixel).
+/// the trace to that over s, s ≥ 4096 at 64×64 with the thesis's word: 1.5e-5 pixel); and
+/// each solid's [`outline`], from the same projected vertices.
 fn solid_lists(
     scene: &CsgScene,
     frame: &Frame,
@@ -355,32 +379,27 @@ fn solid_lists(
     fmt: &WordFormat,
     w: usize,
     h: usize,
-) -> Vec<DisplayList> {
+) -> (Vec<DisplayList>, Vec<Option<PixelBox>>) {
     use rayon::prelude::*;
     scene
         .solids
         .par_iter()
         .enumerate()
         .map(|(i, solid)| {
-            let mut dl = closed_list(frame, i, solid, slope_limit);
+            let pixels = pixels(frame, solid);
+            let mut dl = closed_list_at(&pixels, i, solid, slope_limit);
             scale_perpendicular(&mut dl, fmt, w, h);
-            dl
+            (dl, outline(pixels.into_iter(), w, h))
         })
-        .collect()
+        .unzip()
 }
 
-/// The pixels of a `w`×`h` array whose rays can meet the points' convex hull: their
-/// projection's box grown by [`OUTLINE_MARGIN`] (None when it misses the array or there are no
-/// points, or a point is not finite).
-fn outline(
-    frame: &Frame,
-    pts: impl Iterator<Item = DVec3>,
-    w: usize,
-    h: usize,
-) -> Option<PixelBox> {
+/// The pixels of a `w`×`h` array whose rays can meet the convex hull of points projected
+/// to pixels and depth (`Frame::to_pixel`): their box grown by [`OUTLINE_MARGIN`] (None when
+/// it misses the array or there are no points, or a point is not finite).
+fn outline(pts: impl Iterator<Item = DVec3>, w: usize, h: usize) -> Option<PixelBox> {
     let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
-    for p in pts {
-        let q = frame.to_pixel(p);
+    for q in pts {
         (lo, hi) = (lo.min(q), hi.max(q));
     }
     if !(lo.is_finite() && hi.is_finite()) {

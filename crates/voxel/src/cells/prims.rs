@@ -21,7 +21,10 @@ pub(super) fn planes(
     let mean = v.iter().copied().sum::<DVec3>() / v.len() as f64;
     let mut out = vec![];
     for f in &s.faces {
-        let pts: Vec<DVec3> = f.iter().filter_map(|&i| v.get(i).copied()).collect();
+        let pts: Vec<DVec3> = f
+            .iter()
+            .filter_map(|&i| v.get(i as usize).copied())
+            .collect();
         if pts.len() < 3 {
             continue;
         }
