@@ -177,7 +177,18 @@ fn outline_planes(
     colour: u32,
     keep: impl Fn(glam::DVec2, glam::DVec2) -> bool,
 ) -> Vec<DlPlane> {
-    let hull = convex_hull(pixels.iter().map(|p| p.truncate()).collect());
+    // A prism along the view (its bottom's corners, then its top's) projects each top corner
+    // onto the bottom one, bit for bit: those repeats are left out before the hull's sort,
+    // whose dedup would drop them anyway, so the hull is the same and the sort half as long.
+    let half = pixels.len() / 2;
+    let repeats = |j: usize, p: &DVec3| {
+        let q = j.checked_sub(half).map(|i| pixels[i]);
+        q.is_some_and(|q| p.x.to_bits() == q.x.to_bits() && p.y.to_bits() == q.y.to_bits())
+    };
+    let pts = (pixels.iter().enumerate())
+        .filter(|&(j, p)| !repeats(j, p))
+        .map(|(_, p)| p.truncate());
+    let hull = convex_hull(pts.collect());
     if hull.len() < 3 {
         return vec![];
     }
