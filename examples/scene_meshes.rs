@@ -29,7 +29,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let path = std::env::args()
         .nth(1)
         .ok_or("usage: scene_meshes SCENE.csg")?;
-    let loaded = csgpix::voxel::sampled::load_scene(std::path::Path::new(&path))?;
+    // Straight extrusions as prisms and meshes, never as footprints (a 2D tree, no mesh).
+    let options = csgpix::openscad::ReadOptions {
+        footprints: None,
+        ..Default::default()
+    };
+    let loaded = csgpix::voxel::sampled::load_scene_with(std::path::Path::new(&path), &options)?;
     let (lo, hi) = loaded.bounds()?;
     let mut out = String::new();
     out.push_str("{\"primitives\": [");
@@ -50,7 +55,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             Shape::Mesh(m) => Some(m),
             // A mesh that is not closed: its welded, consistently wound triangles.
             Shape::OpenMesh(m, _) => Some(m.mesh()),
-            Shape::Dataset { .. } => None,
+            Shape::Dataset { .. } | Shape::Footprint(_) => None,
         };
         match mesh {
             Some(m) => {

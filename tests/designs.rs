@@ -70,6 +70,7 @@ fn reference(tris: Vec<[[f64; 3]; 3]>) -> (CsgScene, DVec3, DVec3) {
         colour: None,
         line: 1,
         col: 1,
+        footprint: None,
         mesh: Some(std::sync::Arc::new(tris)),
     };
     let scene = CsgScene {

@@ -556,7 +556,8 @@ fn estimates_are_above_the_measured_peaks() {
     assert!(estimate >= peak, "estimate {estimate} MiB, peak {peak} MiB");
     // 900 circles of 1,080 fragments in one extrusion (the pulley plate's make-up): the
     // reader's outlines, freed before the run, stay with the process (CsgScene::reading_bytes):
-    // 218 and 211 MiB estimated for peaks of 223 and 221 MiB before they were counted.
+    // 218 and 211 MiB estimated for peaks of 223 and 221 MiB before they were counted. Read as
+    // one footprint (972,000 points, the default) and as prisms (`--footprints off`).
     let plate = o("plate.scad");
     std::fs::write(
         &plate,
@@ -564,13 +565,29 @@ fn estimates_are_above_the_measured_peaks() {
          translate([x * 3, y * 3]) circle(1);\n",
     )
     .unwrap();
-    for res in ["64", "256"] {
-        let args = ["voxelize", &plate, "--res", res, "-o", &nrrd];
+    for (res, fp) in [
+        ("64", "100000"),
+        ("256", "100000"),
+        ("64", "off"),
+        ("256", "off"),
+    ] {
+        let args = [
+            "voxelize",
+            &plate,
+            "--res",
+            res,
+            "--footprints",
+            fp,
+            "-o",
+            &nrrd,
+        ];
         let (estimate, peak) = (json_estimate(&args) >> 20, peak_mib(&args));
-        eprintln!("900 circles at {res}: estimate {estimate} MiB, peak {peak} MiB");
+        eprintln!(
+            "900 circles at {res}, --footprints {fp}: estimate {estimate} MiB, peak {peak} MiB"
+        );
         assert!(
             estimate >= peak,
-            "{res}: estimate {estimate} MiB, peak {peak} MiB"
+            "{res} --footprints {fp}: estimate {estimate} MiB, peak {peak} MiB"
         );
     }
 }

@@ -140,6 +140,7 @@ fn as_meshes(scene: &CsgScene, dir: &Path) -> Loaded {
                 colour: s.colour,
                 line: s.line,
                 col: 1,
+                footprint: None,
                 mesh: None,
             }
         })

@@ -44,6 +44,7 @@ impl From<ReadArgs> for ReadSettings {
         ReadSettings {
             openscad_timeout: a.seconds,
             strict: a.strict,
+            ..ReadSettings::default()
         }
     }
 }
@@ -62,9 +63,48 @@ pub struct SweepArgs {
     #[arg(long, value_parser = named::<Fallback>(), default_value = "none",
           conflicts_with = "strict")]
     pub fallback: Fallback,
+    /// A straight `linear_extrude` (no twist or scale) of more outline points than this is
+    /// voxelized from its 2D tree, evaluated over the pixel centres once for every slab (a
+    /// footprint), instead of as a convex prism or mesh per shape; `off` keeps prisms. The
+    /// same voxels are filled either way; the shapes of an uncoloured footprint share one
+    /// colour code, as one primitive (docs/voxelize-bench.md, "Footprints").
+    #[arg(long, value_name = "POINTS|off", value_parser = parse_footprints,
+          default_value_t = Footprints(Some(csgpix_openscad::DEFAULT_FOOTPRINT_POINTS)))]
+    pub footprints: Footprints,
+}
+
+/// `--footprints`: a count of outline points, or `off`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Footprints(pub Option<usize>);
+
+impl std::fmt::Display for Footprints {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        match self.0 {
+            Some(n) => write!(f, "{n}"),
+            None => f.write_str("off"),
+        }
+    }
+}
+
+fn parse_footprints(s: &str) -> Result<Footprints, String> {
+    match s {
+        "off" => Ok(Footprints(None)),
+        _ => s
+            .parse()
+            .map(|n| Footprints(Some(n)))
+            .map_err(|_| format!("`{s}`: give a count of outline points or `off`")),
+    }
 }
 
 impl SweepArgs {
+    /// `read` with this command's `--footprints`.
+    pub fn reading(&self, read: ReadSettings) -> ReadSettings {
+        ReadSettings {
+            footprints: self.footprints.0,
+            ..read
+        }
+    }
+
     /// The job's worker threads (None: all cores).
     pub fn threads(&self) -> Option<usize> {
         self.threads.map(usize::from)

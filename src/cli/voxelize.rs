@@ -160,7 +160,7 @@ impl Args {
             outputs: self.outputs(),
             threads: self.sweep.threads(),
             max_memory: self.mem.limit(),
-            read: self.openscad.into(),
+            read: self.sweep.reading(self.openscad.into()),
             fallback: self.sweep.fallback,
         }
     }

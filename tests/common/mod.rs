@@ -213,6 +213,7 @@ pub fn compare_with_off(
             colour: None,
             line: 1,
             col: 1,
+            footprint: None,
             mesh: Some(std::sync::Arc::new(tris)),
         }],
         root: CsgNode::Solid(0),

@@ -122,7 +122,7 @@ impl Scene {
         cfg: &ArrayConfig,
         options: &csgpix_openscad::ReadOptions,
     ) -> Result<Scene, LoadError> {
-        let scene = csgpix_openscad::read_scene_with(path, options)?;
+        let scene = csgpix_openscad::read_scene_with(path, &options.clone().for_the_array())?;
         scene.require_convex(&path.display().to_string(), "the array")?;
         let (w, h) = (cfg.width, cfg.height);
         let Projected { lists, clip } =

@@ -66,11 +66,17 @@ impl Poly2 {
     /// `circle(r)` with `fragments` points, point i at 360·i/fragments degrees (OpenSCAD's
     /// `generate_circle`), from the exact-at-30°-and-45° sine and cosine `sincos`.
     pub fn circle(r: f64, fragments: usize, sincos: impl Fn(f64) -> (f64, f64)) -> Poly2 {
-        let path = (0..fragments)
-            .map(|i| {
-                let (s, c) = sincos(360.0 * i as f64 / fragments as f64);
-                DVec2::new(r * c, r * s)
-            })
+        let unit: Vec<(f64, f64)> = (0..fragments)
+            .map(|i| sincos(360.0 * i as f64 / fragments as f64))
+            .collect();
+        Poly2::circle_of(r, &unit)
+    }
+
+    /// [`Poly2::circle`] from its angles' sines and cosines, `unit[i]` = sincos(360°·i/n).
+    pub fn circle_of(r: f64, unit: &[(f64, f64)]) -> Poly2 {
+        let path = unit
+            .iter()
+            .map(|&(s, c)| DVec2::new(r * c, r * s))
             .collect();
         Poly2 { paths: vec![path] }
     }
@@ -148,7 +154,7 @@ pub struct Linear {
 
 impl Linear {
     /// Bottom and top heights.
-    fn z(&self) -> (f64, f64) {
+    pub(crate) fn z(&self) -> (f64, f64) {
         if self.center {
             (-self.height / 2.0, self.height / 2.0)
         } else {

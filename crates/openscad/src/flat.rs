@@ -77,6 +77,8 @@ pub(crate) fn linear_slices(a: LinearArgs, region: &Region) -> Linear {
     let mut l = a.linear;
     l.slices = match a.slices {
         Some(n) => n,
+        // Straight walls: one slice (`default_slices`), without a walk over the points.
+        None if l.twist == 0.0 && l.scale[0] == l.scale[1] => 1,
         None => {
             let ds = DVec2::new(l.scale[0] - 1.0, l.scale[1] - 1.0);
             let (mut r, mut delta) = (0.0f64, 0.0f64);
@@ -234,11 +236,27 @@ pub(crate) fn flat_shape<'f>(
             };
             let n = Resolution::read(p)?.fragments(r, p.pos)?;
             check_budget(n, budget, p.pos)?;
-            Ok(Some(Poly2::circle(r, n, sin_cos_degrees)))
+            Ok(Some(unit_circle(n, |unit| Poly2::circle_of(r, unit))))
         }
         NodeKind::Text => crate::text::text_shape(p, fonts(), budget, notes).map(Some),
         _ => polygon(p, budget).map(Some),
     }
+}
+
+/// `f` of the sines and cosines of `circle()`'s `n` fragment angles (360°·i/n), computed
+/// once for a run of circles of the same `n`: a plate of thousands of circles of a thousand
+/// fragments each computed millions.
+fn unit_circle<T>(n: usize, f: impl FnOnce(&[(f64, f64)]) -> T) -> T {
+    thread_local! {
+        static LAST: std::cell::RefCell<Vec<(f64, f64)>> = const { std::cell::RefCell::new(Vec::new()) };
+    }
+    LAST.with_borrow_mut(|unit| {
+        if unit.len() != n {
+            unit.clear();
+            unit.extend((0..n).map(|i| sin_cos_degrees(360.0 * i as f64 / n as f64)));
+        }
+        f(unit)
+    })
 }
 
 /// `polygon(points, paths)`: one outline of all points, or one per path (even-odd fill).

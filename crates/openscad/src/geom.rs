@@ -1034,6 +1034,7 @@ mod tests {
             line: 3,
             col: 1,
             mesh,
+            footprint: None,
         };
         let tris: Vec<[[f64; 3]; 3]> = solid_triangles(&s[0])
             .iter()
@@ -1087,6 +1088,7 @@ mod tests {
                         colour: None,
                         line: 1,
                         col: 1,
+                        footprint: None,
                         mesh: Some(std::sync::Arc::new(
                             m.iter().map(|t| t.map(|v| v.to_array())).collect(),
                         )),

@@ -49,6 +49,7 @@ pub(crate) fn import(head: &Head, ctx: &Ctx) -> Result<Import, Fail> {
         colour: ctx.colour,
         line: head.pos.line,
         col: head.pos.col,
+        footprint: None,
         mesh: None,
     })
 }

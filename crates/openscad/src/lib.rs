@@ -217,7 +217,17 @@ pub struct ReadOptions {
     /// read scenes before it followed OpenSCAD's leniency. False by default: where OpenSCAD
     /// warns and goes on, so does the reader.
     pub strict: bool,
+    /// A straight `linear_extrude` (no twist, no scale) of more outline points than this is
+    /// one footprint primitive (its 2D tree and height, [`csgpix_scene::footprint`]) instead
+    /// of a convex prism or mesh per shape; None: never. [`DEFAULT_FOOTPRINT_POINTS`] by
+    /// default. A footprint is sampled, not drawn by the array (`render`, `requirements` and
+    /// `throughput` refuse it, as a mesh).
+    pub footprints: Option<usize>,
 }
+
+/// Outline points past which a straight extrusion is read as a footprint
+/// ([`ReadOptions::footprints`]).
+pub const DEFAULT_FOOTPRINT_POINTS: usize = 100_000;
 
 impl Default for ReadOptions {
     fn default() -> ReadOptions {
@@ -229,6 +239,19 @@ impl Default for ReadOptions {
             samples: Default::default(),
             openscad_timeout: Some(DEFAULT_OPENSCAD_TIMEOUT),
             strict: false,
+            footprints: Some(DEFAULT_FOOTPRINT_POINTS),
+        }
+    }
+}
+
+impl ReadOptions {
+    /// These options for a scene the array draws (`render`, `requirements`, `throughput`,
+    /// `study`): every extrusion as convex prisms and meshes, never a footprint, which the
+    /// array cannot draw.
+    pub fn for_the_array(self) -> ReadOptions {
+        ReadOptions {
+            footprints: None,
+            ..self
         }
     }
 }

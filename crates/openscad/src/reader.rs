@@ -25,6 +25,7 @@ use crate::{
     value::*,
 };
 use crate::{Fallback, ReadOptions};
+use csgpix_scene::footprint::{keeps_z, Footprint, Op as FootOp};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, CsgScene, Import, IMPORTED};
 use csgpix_scene::{CsgError, Error};
 
@@ -406,7 +407,7 @@ impl<'a> Reader<'a> {
         let leaves = below.iter().flat_map(crate::project::leaves);
         for i in leaves.filter_map(|i| i.checked_sub(IMPORTED)) {
             let import = &self.imports[i];
-            if import.mesh.is_some() || import.threshold.is_some() {
+            if import.mesh.is_some() || import.footprint.is_some() || import.threshold.is_some() {
                 continue;
             }
             let pos = Pos {
@@ -880,9 +881,70 @@ impl<'a> Reader<'a> {
             pos,
             name: frame.kind.name(),
         };
+        let region = match self.footprint(region, &how, &to)? {
+            Ok(node) => return Ok(Item::Solid(node)),
+            Err(region) => region,
+        };
         let mut prisms = convex_prisms(&region, &how, &to).into_iter();
         let node = self.extrude_region(&region, &how, &to, &mut prisms)?;
         Ok(Item::Solid(node))
+    }
+
+    /// A straight extrusion of a large 2D tree as one footprint primitive
+    /// ([`csgpix_scene::footprint`]), when [`ReadOptions::footprints`] asks for it: no twist,
+    /// no scale, more outline points than the option's count, a placement that keeps the Z
+    /// axis, and no operation above it that needs its geometry while the scene is read
+    /// (`hull`, `minkowski`, `projection`, `resize` take prisms and meshes). The region
+    /// back otherwise.
+    fn footprint(
+        &mut self,
+        region: Region,
+        how: &Extrusion,
+        to: &Placement,
+    ) -> Result<Result<CsgNode, Region>, Fail> {
+        let Extrusion::Linear(l) = how else {
+            return Ok(Err(region));
+        };
+        let straight = l.twist == 0.0 && l.scale == [1.0, 1.0] && l.height > 0.0;
+        let matrix = to.matrix.unwrap_or(IDENTITY);
+        let Some(least) = self.options.footprints else {
+            return Ok(Err(region));
+        };
+        if !straight || !keeps_z(&matrix) || self.open.iter().any(|f| f.kind.needs_geometry()) {
+            return Ok(Err(region));
+        }
+        let mut n = 0usize;
+        for_each_point(&region, &mut |_| n += 1);
+        if n <= least {
+            return Ok(Err(region));
+        }
+        // Its points were counted against the budget as the shapes were read; a prism's
+        // two rings are not made.
+        let (z0, z1) = l.z();
+        let mut f = Footprint::new([z0, z1], matrix);
+        postfix(region, &mut f);
+        // The placed box's corners lie farthest out: every point is within the limit when
+        // they are.
+        // (An empty box, the tree empty by its shapes' boxes, is nothing to check.)
+        let corners = <[DVec3; 2]>::from(f.bounds()).map(|p| p.to_array());
+        let empty = corners[0][0] > corners[1][0];
+        if !empty && corners.iter().flatten().any(|&c| too_large(c)) {
+            return fail(to.pos, coordinate_too_large(None));
+        }
+        if let Some(problem) = degenerate_extent(corners.into_iter()) {
+            return fail(to.pos, problem);
+        }
+        self.imports.push(Import {
+            file: format!("{} at {}", to.name, to.pos),
+            threshold: None,
+            matrix: None,
+            colour: to.colour,
+            line: to.pos.line,
+            col: to.pos.col,
+            mesh: None,
+            footprint: Some(std::sync::Arc::new(f)),
+        });
+        Ok(Ok(CsgNode::Solid(IMPORTED + self.imports.len() - 1)))
     }
 
     /// One 2D tree extruded: its operations kept, its shapes extruded, each taking the next
@@ -992,6 +1054,7 @@ impl<'a> Reader<'a> {
             colour: to.colour,
             line: to.pos.line,
             col: to.pos.col,
+            footprint: None,
             mesh: Some(std::sync::Arc::new(tris)),
         });
         Ok(CsgNode::Solid(IMPORTED + self.imports.len() - 1))
@@ -1152,6 +1215,7 @@ impl<'a> Reader<'a> {
                         colour: frame.ctx.colour,
                         line: pos.line,
                         col: pos.col,
+                        footprint: None,
                         mesh: Some(std::sync::Arc::new(
                             m.iter().map(|t| t.map(|v| v.to_array())).collect(),
                         )),
@@ -1225,6 +1289,33 @@ struct Placement {
     colour: Option<[f64; 4]>,
     pos: Pos,
     name: &'static str,
+}
+
+/// Tree `r`'s shapes and operations onto `f` in postfix order, with an explicit stack; each
+/// shape is freed once copied, so the tree and the footprint are not both held whole.
+fn postfix(r: Region, f: &mut Footprint) {
+    enum Visit {
+        Enter(Region),
+        Leave(FootOp, usize),
+    }
+    let mut stack = vec![Visit::Enter(r)];
+    while let Some(v) = stack.pop() {
+        let (op, c) = match v {
+            Visit::Leave(op, n) => {
+                f.push_op(op, n);
+                continue;
+            }
+            Visit::Enter(Region::Poly(p)) => {
+                f.push_shape(p.paths.iter().map(|p| p.as_slice()));
+                continue;
+            }
+            Visit::Enter(Region::Union(c)) => (FootOp::Union, c),
+            Visit::Enter(Region::Intersection(c)) => (FootOp::Intersection, c),
+            Visit::Enter(Region::Difference(c)) => (FootOp::Difference, c),
+        };
+        stack.push(Visit::Leave(op, c.len()));
+        stack.extend(c.into_iter().rev().map(Visit::Enter));
+    }
 }
 
 /// An extrusion, its slice or fragment count settled.

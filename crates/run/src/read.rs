@@ -1,6 +1,7 @@
 //! How every job that reads a scene reads it, as data: openscad's time limit (a `.scad`
 //! file's export to CSG, `--fallback openscad`'s meshes) and strictness (OpenSCAD's
-//! warnings as refusals); the command line's `--openscad-timeout` and `--strict`.
+//! warnings as refusals), and when a straight extrusion is read as a footprint; the command
+//! line's `--openscad-timeout`, `--strict` and `--footprints`.
 
 use std::time::Duration;
 
@@ -16,6 +17,10 @@ pub struct ReadSettings {
     pub openscad_timeout: u64,
     /// Refuse the scene at its first warning instead of going on as OpenSCAD does.
     pub strict: bool,
+    /// A straight extrusion of more outline points than this is voxelized from its 2D tree
+    /// (a footprint, `csgpix_scene::footprint`); None keeps every extrusion as prisms and
+    /// meshes. The commands that draw on the array always keep prisms.
+    pub footprints: Option<usize>,
 }
 
 impl Default for ReadSettings {
@@ -23,6 +28,7 @@ impl Default for ReadSettings {
         ReadSettings {
             openscad_timeout: csgpix_openscad::DEFAULT_OPENSCAD_TIMEOUT.as_secs(),
             strict: false,
+            footprints: Some(csgpix_openscad::DEFAULT_FOOTPRINT_POINTS),
         }
     }
 }
@@ -38,6 +44,7 @@ impl ReadSettings {
         csgpix_openscad::ReadOptions {
             openscad_timeout: self.limit(),
             strict: self.strict,
+            footprints: self.footprints,
             ..Default::default()
         }
     }

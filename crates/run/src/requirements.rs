@@ -136,14 +136,20 @@ impl RequirementsJob {
     /// The memory plan: per pixel of a slice of the grid over the scene's bounds (or
     /// `bounds`), and the process; the scene is read to know its bounds.
     pub fn estimate(&self) -> crate::Result<u64> {
-        let scene = csgpix_openscad::read_scene_with(&self.scene, &self.read.read_options())?;
+        let scene = csgpix_openscad::read_scene_with(
+            &self.scene,
+            &self.read.read_options().for_the_array(),
+        )?;
         Ok(memory_estimate(self.grid(&scene)?.dims))
     }
 
     /// Read the scene, check the estimate, analyse.
     pub fn run(&self, progress: &dyn Progress) -> crate::Result<RequirementsReport> {
         let at = |e: Error| e.context(self.scene.display().to_string());
-        let scene = csgpix_openscad::read_scene_with(&self.scene, &self.read.read_options())?;
+        let scene = csgpix_openscad::read_scene_with(
+            &self.scene,
+            &self.read.read_options().for_the_array(),
+        )?;
         warn_all(progress, &scene.warnings);
         scene.require_convex(&self.scene.display().to_string(), "`requirements`")?;
         if !(self.precision > 0.0 && self.precision.is_finite()) {

@@ -513,6 +513,7 @@ fn imports_bytes(slicer: &Slicer) -> u64 {
                 let m = m.mesh();
                 m.vertices.len() as u64 * 24 + m.triangles.len() as u64 * 12
             }
+            csgpix_voxel::sampled::Shape::Footprint(f) => f.bytes(),
         })
         .sum()
 }

@@ -40,7 +40,7 @@ use serde::{Deserialize, Serialize};
 use crate::plot::{Chart, Series};
 use csgpix_draw::compile::CompileError;
 use csgpix_draw::float::rounding_bound;
-use csgpix_openscad::parse_csg;
+use csgpix_openscad::{parse_csg_with, ReadOptions};
 use csgpix_scene::solid::CsgScene;
 use csgpix_voxel::blist::BlistEval;
 use csgpix_voxel::{
@@ -387,6 +387,11 @@ pub struct Prepared {
     pub min: DVec3,
     /// The grid box's high corner.
     pub max: DVec3,
+}
+
+/// A study's scene as the array draws it: every extrusion as prisms and meshes.
+fn parse_csg(text: &str, file: &str) -> csgpix_scene::Result<csgpix_scene::solid::CsgScene> {
+    parse_csg_with(text, file, &ReadOptions::default().for_the_array())
 }
 
 /// Read every tessellation of the scene and lay every grid and word on it, so that any bad

@@ -309,7 +309,7 @@ fn area_report(budget: u64, lut: u8, panels: &[(usize, usize)]) -> AreaReport {
 }
 
 fn read_scene(path: &Path, read: ReadSettings, progress: &dyn Progress) -> crate::Result<CsgScene> {
-    let scene = csgpix_openscad::read_scene_with(path, &read.read_options())?;
+    let scene = csgpix_openscad::read_scene_with(path, &read.read_options().for_the_array())?;
     warn_all(progress, &scene.warnings);
     scene.require_convex(&path.display().to_string(), "`throughput`")?;
     Ok(scene)

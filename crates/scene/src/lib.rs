@@ -20,6 +20,7 @@ pub mod display_list;
 pub mod error;
 pub mod expr;
 pub mod facet;
+pub mod footprint;
 pub mod grid;
 pub mod input;
 pub mod mesh;

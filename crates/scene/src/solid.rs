@@ -196,6 +196,9 @@ pub struct Import {
     /// A mesh the scene itself made (an extrusion the array cannot draw as a convex solid,
     /// `csgpix_openscad::extrude`): closed triangles in scene coordinates; `file` then names the node.
     pub mesh: Option<std::sync::Arc<Vec<[[f64; 3]; 3]>>>,
+    /// A straight extrusion of a large 2D tree the scene made, kept as its footprint
+    /// ([`crate::footprint`]); `file` then names the node.
+    pub footprint: Option<std::sync::Arc<crate::footprint::Footprint>>,
 }
 
 /// Leaf numbers from which imports count while a scene is assembled (no scene holds this many
@@ -249,9 +252,9 @@ impl CsgScene {
         match self.imports.first() {
             None => Ok(()),
             Some(i) => {
-                let name = match i.mesh {
-                    Some(_) => format!("`{}` (not a convex solid)", i.file),
-                    None => format!("`import(\"{}\")`", i.file),
+                let name = match i.mesh.is_some() || i.footprint.is_some() {
+                    true => format!("`{}` (not a convex solid)", i.file),
+                    false => format!("`import(\"{}\")`", i.file),
                 };
                 let problem = crate::Error::ConvexOnly {
                     primitive: name,

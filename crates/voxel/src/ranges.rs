@@ -1,8 +1,10 @@
 //! The interval routes to slab masks: the array's plane words, or exact f64, reduced once
 //! per pixel to the slabs a primitive meets.
 
+use csgpix_scene::footprint::Footprint;
 use csgpix_scene::trimesh::{TriMesh, Window};
 use csgpix_scene::winding::OpenMesh;
+use glam::DVec2;
 
 use crate::error::Result;
 use crate::pixel_box::PixelBox;
@@ -393,6 +395,32 @@ pub fn open_mesh_runs_in(slicer: &Slicer, mesh: &OpenMesh, win: Window) -> SlabR
         .map(|k| slicer.fmt.to_real(slicer.z_plane(k) + slicer.slab_raw / 2))
         .collect();
     SlabRuns::of_pixels(mesh.inside_runs_in(|p| slicer.frame.to_pixel(p), win, &depths))
+}
+
+/// Per pixel of `win` (as [`mesh_runs_in`]), the slabs a footprint fills: its depth range,
+/// rounded as a mesh's crossings are, where its 2D tree holds the pixel's centre
+/// ([`Footprint::mask_in`]). The footprint's placement keeps the Z axis and the slicer looks
+/// along it, so a pixel's depth range is the same everywhere.
+pub fn footprint_runs_in(slicer: &Slicer, f: &Footprint, win: Window) -> SlabRuns {
+    let m = f.to_scene();
+    let at = |p: DVec2, z: f64| slicer.frame.to_pixel(m.transform_point3(p.extend(z)));
+    debug_assert!(at(DVec2::ZERO, f.z[0])
+        .truncate()
+        .abs_diff_eq(at(DVec2::ZERO, f.z[1]).truncate(), 1e-6));
+    // Plane → pixels is affine: its origin and two axes, for every outline point.
+    let o = at(DVec2::ZERO, f.z[0]).truncate();
+    let (ex, ey) = (
+        at(DVec2::X, f.z[0]).truncate() - o,
+        at(DVec2::Y, f.z[0]).truncate() - o,
+    );
+    let mask = f.mask_in(|p| o + ex * p.x + ey * p.y, win);
+    let (a, b) = (at(DVec2::ZERO, f.z[0]).z, at(DVec2::ZERO, f.z[1]).z);
+    let run = slabs_of(
+        slicer,
+        raw_depth(slicer, a.min(b), true),
+        raw_depth(slicer, a.max(b), false),
+    );
+    SlabRuns::merged(mask.len(), |i| mask[i].then_some(run).into_iter())
 }
 
 #[cfg(test)]

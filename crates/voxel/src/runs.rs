@@ -30,7 +30,7 @@ use csgpix_scene::dataset::Column;
 use crate::dataset_runs::DatasetColumns;
 use crate::error::Result;
 use crate::pixel_box::PixelBox;
-use crate::ranges::{mesh_runs_in, open_mesh_runs_in, FloatPlanes, WordPlanes};
+use crate::ranges::{footprint_runs_in, mesh_runs_in, open_mesh_runs_in, FloatPlanes, WordPlanes};
 use crate::sampled::Shape;
 use crate::slabs::SlabRuns;
 use crate::slice::{Mask, OpCounts, SliceEval};
@@ -198,6 +198,11 @@ impl<'a> Columns<'a> {
                 Shape::OpenMesh(m, _) => {
                     let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
                     let runs = open_mesh_runs_in(slicer, m, window(b));
+                    Depths::Sampled(SampledDepths::Mesh(runs, b))
+                }
+                Shape::Footprint(f) => {
+                    let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
+                    let runs = footprint_runs_in(slicer, f, window(b));
                     Depths::Sampled(SampledDepths::Mesh(runs, b))
                 }
                 Shape::Dataset { .. } => {

@@ -19,6 +19,7 @@
 //!   naming its open edges ([`Sampled::warning`]).
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use glam::{DMat4, DVec3};
 
@@ -28,6 +29,7 @@ pub use crate::slabs::SlabRuns;
 use crate::slice::Mask;
 use csgpix_draw::project::colour_code;
 use csgpix_scene::dataset::Dataset;
+use csgpix_scene::footprint::Footprint;
 use csgpix_scene::grid::Grid;
 use csgpix_scene::nrrd::{read_nrrd_limited, SampleLimit};
 use csgpix_scene::solid::{CsgNode, CsgScene, Import, IMPORTED};
@@ -55,6 +57,10 @@ pub enum Shape {
     /// where the scene or the command line names the file (None when the scene's reader
     /// warned of it already, as for a `polyhedron()`).
     OpenMesh(Box<OpenMesh>, Option<csgpix_scene::Error>),
+    /// A straight extrusion of a large 2D tree, kept as its footprint (the 2D tree, its
+    /// height and placement, [`csgpix_scene::footprint`]): a pixel is inside over the
+    /// extrusion's depth range where the tree holds its centre.
+    Footprint(Arc<Footprint>),
 }
 
 /// A loaded import.
@@ -82,6 +88,7 @@ impl Sampled {
         match &self.shape {
             Shape::Mesh(m) => m.bounds(),
             Shape::OpenMesh(m, _) => m.mesh().bounds(),
+            Shape::Footprint(f) => f.bounds(),
             Shape::Dataset { data, to_file, .. } => {
                 let (lo, hi) = data.bounds();
                 let to_scene = to_file.inverse();
@@ -98,7 +105,7 @@ impl Sampled {
     pub fn sample(&self, p: DVec3) -> Option<f64> {
         match &self.shape {
             Shape::Dataset { data, to_file, .. } => data.sample(to_file.transform_point3(p)),
-            Shape::Mesh(_) | Shape::OpenMesh(..) => None,
+            Shape::Mesh(_) | Shape::OpenMesh(..) | Shape::Footprint(_) => None,
         }
     }
 
@@ -106,7 +113,7 @@ impl Sampled {
     pub fn inside(&self, p: DVec3) -> bool {
         match &self.shape {
             Shape::Dataset { threshold, .. } => self.sample(p).is_some_and(|v| v >= *threshold),
-            Shape::Mesh(_) | Shape::OpenMesh(..) => false,
+            Shape::Mesh(_) | Shape::OpenMesh(..) | Shape::Footprint(_) => false,
         }
     }
 
@@ -114,7 +121,7 @@ impl Sampled {
     pub fn grey(&self, p: DVec3) -> Option<u8> {
         match &self.shape {
             Shape::Dataset { data, .. } => self.sample(p).map(|v| data.grey(v)),
-            Shape::Mesh(_) | Shape::OpenMesh(..) => None,
+            Shape::Mesh(_) | Shape::OpenMesh(..) | Shape::Footprint(_) => None,
         }
     }
 
@@ -134,6 +141,9 @@ impl Sampled {
             Shape::OpenMesh(m, _) => {
                 pixels * (24 + 2 * 24 + 24 + 2 * 8) + m.mesh().triangles.len() as u64 * 64
             }
+            // The pixel mask (a byte each, and as much again while the tree's operands are
+            // combined) and one slab run per pixel.
+            Shape::Footprint(f) => pixels * (24 + 2 + 8) + f.bytes(),
             Shape::Dataset { .. } => 0,
         }
     }
@@ -330,6 +340,13 @@ fn load_import(
         .colour
         .map_or(1 + (index % 6) as u32, colour_code)
         .min(255) as u8;
+    if let Some(f) = &imp.footprint {
+        return Ok(Sampled {
+            shape: Shape::Footprint(f.clone()),
+            colour,
+            file: imp.file.clone(),
+        });
+    }
     if let Some(tris) = &imp.mesh {
         // A mesh the scene made itself (an extrusion): named by the node, not a file.
         let at = match origin {
@@ -574,6 +591,7 @@ fn add_part(
         colour: None,
         line: 1,
         col: 1,
+        footprint: None,
         mesh: None,
     };
     let index = IMPORTED + scene.imports.len();

@@ -92,6 +92,7 @@ fn mesh_scene(tris: Vec<Tri>) -> CsgScene {
             colour: None,
             line: 1,
             col: 1,
+            footprint: None,
             mesh: Some(Arc::new(tris)),
         }],
         root: CsgNode::Solid(0),

@@ -78,6 +78,10 @@ pub(super) fn sampled_prim<'a>(
             let (lo, hi) = m.mesh().bounds();
             (Prim::Unknown(to_voxel(lo), to_voxel(hi)), tol.mesh())
         }
+        Shape::Footprint(f) => {
+            let (lo, hi) = f.bounds();
+            (Prim::Unknown(to_voxel(lo), to_voxel(hi)), tol.mesh())
+        }
         Shape::Dataset {
             data,
             threshold,

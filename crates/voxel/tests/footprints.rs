@@ -1,0 +1,168 @@
+//! Straight extrusions read as footprints (`csgpix_scene::footprint`) against the same
+//! extrusions read as convex prisms and meshes: random 2D trees of circles, squares and
+//! polygons, extruded, placed by rotations about Z, mirrors and moves, voxelized by every
+//! route. The two readings are the same solid, so they must give the same voxels, except
+//! where a voxel centre lies on (within rounding of) a wall, which the two decide by
+//! different arithmetic (an outline's crossing of a pixel row against a plane's word).
+
+use csgpix_openscad::{parse_csg_with, ReadOptions};
+use csgpix_scene::grid::Grid;
+use csgpix_voxel::blist::BlistEval;
+use csgpix_voxel::sampled::{load_imports, Shape};
+use csgpix_voxel::{voxelize, Route, Slicer, SlicerOptions};
+use glam::DVec3;
+use proptest::prelude::*;
+use rtl_model::Equations;
+
+/// The scene's voxels on `grid` by `route`, read with footprints from `least` outline
+/// points (None: never).
+fn voxels(text: &str, grid: Grid, route: Route, least: Option<usize>) -> (Vec<u8>, usize) {
+    let options = ReadOptions {
+        footprints: least,
+        ..ReadOptions::default()
+    };
+    let scene = parse_csg_with(text, "t.csg", &options).unwrap_or_else(|e| panic!("{e}"));
+    let sampled = load_imports(&scene, "t.csg", std::path::Path::new(".")).unwrap();
+    let footprints = sampled
+        .iter()
+        .filter(|s| matches!(s.shape, Shape::Footprint(_)))
+        .count();
+    let opts = SlicerOptions {
+        sampled,
+        ..SlicerOptions::default()
+    };
+    let slicer = Slicer::new(&scene, grid, opts).unwrap();
+    let eval = BlistEval::new(&scene.root);
+    let (v, _) = voxelize(&slicer, route, Equations::Derived.set(), &eval, &|| {}).unwrap();
+    (v.voxels, footprints)
+}
+
+fn shape() -> impl Strategy<Value = String> {
+    prop_oneof![
+        (0.3..6.0f64, 3usize..60, -8.0..8.0f64, -8.0..8.0f64).prop_map(|(r, n, x, y)| format!(
+            "multmatrix([[1, 0, 0, {x}], [0, 1, 0, {y}], [0, 0, 1, 0], [0, 0, 0, 1]]) circle(r = {r}, $fn = {n});"
+        )),
+        (0.3..9.0f64, 0.3..9.0f64, -8.0..8.0f64, -8.0..8.0f64, -3.2..3.2f64).prop_map(
+            |(w, h, x, y, a)| {
+                let (s, c) = a.sin_cos();
+                format!(
+                    "multmatrix([[{c}, {}, 0, {x}], [{s}, {c}, 0, {y}], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = [{w}, {h}], center = true);",
+                    -s
+                )
+            }
+        ),
+        // Any points: concave or crossing itself (even-odd).
+        prop::collection::vec((-9.0..9.0f64, -9.0..9.0f64), 3..8).prop_map(|v| {
+            let pts: Vec<String> = v.iter().map(|(x, y)| format!("[{x}, {y}]")).collect();
+            format!("polygon(points = [{}], paths = undef, convexity = 1);", pts.join(", "))
+        }),
+    ]
+}
+
+fn tree() -> impl Strategy<Value = String> {
+    shape().prop_recursive(3, 16, 4, |inner| {
+        (
+            prop_oneof![Just("union"), Just("intersection"), Just("difference")],
+            prop::collection::vec(inner, 1..4),
+        )
+            .prop_map(|(op, c)| format!("{op}() {{ {} }}", c.join(" ")))
+    })
+}
+
+/// A placement that keeps the Z axis: a turn about Z, maybe a mirror, a move.
+fn placement() -> impl Strategy<Value = String> {
+    (
+        -3.2..3.2f64,
+        any::<bool>(),
+        prop::array::uniform3(-3.0..3.0f64),
+    )
+        .prop_map(|(a, m, t)| {
+            let (s, c) = a.sin_cos();
+            let f = if m { -1.0 } else { 1.0 };
+            format!(
+                "multmatrix([[{}, {}, 0, {}], [{}, {}, 0, {}], [0, 0, 1, {}], [0, 0, 0, 1]])",
+                c * f,
+                -s,
+                t[0],
+                s * f,
+                c,
+                t[1],
+                t[2]
+            )
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(160))]
+
+    #[test]
+    fn footprints_are_the_prisms_voxels(
+        t in tree(),
+        at in placement(),
+        h in 0.5..9.0f64,
+        center in any::<bool>(),
+        n in 16usize..40,
+    ) {
+        let text = format!("{at} {{ linear_extrude(height = {h}, center = {center}) {{ {t} }} }}");
+        let grid = Grid::new([n; 3], DVec3::splat(-14.1), DVec3::splat(13.9)).unwrap();
+        for route in [Route::Float, Route::Runs { float: false }, Route::Intervals] {
+            let (a, fa) = voxels(&text, grid, route, Some(0));
+            let (b, fb) = voxels(&text, grid, route, None);
+            prop_assert_eq!((fa, fb), (1, 0));
+            let differ = a.iter().zip(&b).filter(|(p, q)| (**p != 0) != (**q != 0)).count();
+            prop_assert_eq!(differ, 0, "{:?}: {} of {} voxels differ\n{}", route, differ, a.len(), text);
+        }
+    }
+}
+
+/// Which extrusions become footprints: straight ones of more outline points than asked,
+/// placed keeping the Z axis, under no operation that needs their geometry while the scene is
+/// read.
+#[test]
+fn only_straight_extrusions_outside_hulls_are_footprints() {
+    let options = |least| ReadOptions {
+        footprints: least,
+        ..ReadOptions::default()
+    };
+    let footprints = |text: &str, least| {
+        let s = parse_csg_with(text, "t.csg", &options(least)).unwrap_or_else(|e| panic!("{e}"));
+        s.imports.iter().filter(|i| i.footprint.is_some()).count()
+    };
+    let disc = "circle(r = 2, $fn = 100);";
+    let straight = format!("linear_extrude(height = 2) {{ {disc} }}");
+    assert_eq!(footprints(&straight, Some(99)), 1);
+    assert_eq!(footprints(&straight, Some(100)), 0, "100 points, not more");
+    assert_eq!(footprints(&straight, None), 0);
+    let twisted = format!("linear_extrude(height = 2, twist = 30) {{ {disc} }}");
+    assert_eq!(footprints(&twisted, Some(0)), 0);
+    let scaled = format!("linear_extrude(height = 2, scale = 0.5) {{ {disc} }}");
+    assert_eq!(footprints(&scaled, Some(0)), 0);
+    let tilted = format!(
+        "multmatrix([[1, 0, 0, 0], [0, 0, -1, 0], [0, 1, 0, 0], [0, 0, 0, 1]]) {{ {straight} }}"
+    );
+    assert_eq!(footprints(&tilted, Some(0)), 0);
+    let turned = format!(
+        "multmatrix([[0, -1, 0, 4], [1, 0, 0, 0], [0, 0, 2, 1], [0, 0, 0, 1]]) {{ {straight} }}"
+    );
+    assert_eq!(footprints(&turned, Some(0)), 1);
+    let hulled = format!("hull() {{ {straight} cube(size = [1, 1, 1]); }}");
+    assert_eq!(footprints(&hulled, Some(0)), 0);
+    let summed = format!("minkowski() {{ {straight} cube(size = [1, 1, 1]); }}");
+    assert_eq!(footprints(&summed, Some(0)), 0);
+    // The vertex budget counts a footprint's outline points as its shapes are read: where
+    // 150 are allowed, one extrusion of 100 points is read, and a second is refused.
+    let small = ReadOptions {
+        footprints: Some(0),
+        max_vertices: Some(150),
+        ..ReadOptions::default()
+    };
+    let two = format!("{straight}\n{straight}");
+    let e = parse_csg_with(&two, "t.csg", &small)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("t.csg:2:") && e.contains("vertex limit"),
+        "{e}"
+    );
+    assert!(parse_csg_with(&straight, "t.csg", &small).is_ok());
+}
