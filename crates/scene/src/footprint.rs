@@ -57,10 +57,12 @@ pub struct Footprint {
     shape_ends: Vec<usize>,
     /// The tree, postfix.
     steps: Vec<Step>,
-    /// While the tree is built, the box of each result on its stack: a shape's points, a
-    /// union's operands together, an intersection's overlap, a difference's first operand
-    /// (lo > hi for an empty one). The last is the tree's box.
+    /// While the tree is built, the scene XY box of each result on its stack: a shape's
+    /// placed points, a union's operands together, an intersection's overlap, a difference's
+    /// first operand (lo > hi for an empty one). The last is the tree's box.
     boxes: Vec<(DVec2, DVec2)>,
+    /// The scene XY box of every placed outline point, subtracted shapes' too.
+    points_box: (DVec2, DVec2),
     /// Bottom and top of the extrusion in its plane's frame (bottom ≤ top).
     pub z: [f64; 2],
     /// Scene ← plane, row-major 4×4 (affine). It keeps the Z axis: the plane's X and Y map
@@ -140,6 +142,7 @@ impl Footprint {
             shape_ends: vec![],
             steps: vec![],
             boxes: vec![],
+            points_box: EMPTY_BOX,
             z: [z[0].min(z[1]), z[0].max(z[1])],
             matrix,
         }
@@ -148,14 +151,20 @@ impl Footprint {
     /// Adds a shape (its outlines, even-odd) as the next leaf.
     pub fn push_shape<'a>(&mut self, paths: impl IntoIterator<Item = &'a [DVec2]>) {
         let mut b = EMPTY_BOX;
+        let m = self.matrix;
+        // Placed as the reader places a prism's vertices (row · (x, y, z, 1), the Z term
+        // zero), so the boxes are those of the prisms' vertices to the bit.
+        let row = |r: &[f64; 4], q: DVec2| r[0] * q.x + r[1] * q.y + r[2] * self.z[0] + r[3];
         for p in paths {
             for &q in p {
-                b = (b.0.min(q), b.1.max(q));
+                let s = DVec2::new(row(&m[0], q), row(&m[1], q));
+                b = (b.0.min(s), b.1.max(s));
             }
             self.points.extend_from_slice(p);
             self.path_ends.push(self.points.len());
         }
         self.boxes.push(b);
+        self.points_box = (self.points_box.0.min(b.0), self.points_box.1.max(b.1));
         self.shape_ends.push(self.path_ends.len());
         self.steps.push(Step::Shape);
     }
@@ -210,39 +219,32 @@ impl Footprint {
         DMat4::from_cols_array_2d(&self.matrix).transpose()
     }
 
-    /// A box in the plane around the tree's set, from the boxes of its shapes' points as
-    /// the operations combine them (lo > hi when the set is empty by its boxes).
-    pub fn plane_box(&self) -> (DVec2, DVec2) {
-        self.boxes.last().copied().unwrap_or(EMPTY_BOX)
+    /// The placed heights of the bottom and the top, in order.
+    fn scene_z(&self) -> [f64; 2] {
+        let r = &self.matrix[2];
+        let z = self.z.map(|z| r[0] * 0.0 + r[1] * 0.0 + r[2] * z + r[3]);
+        [z[0].min(z[1]), z[0].max(z[1])]
     }
 
-    /// Scene-space box: the plane box's corners at both heights, placed.
-    /// An empty box (lo > hi, infinite) when the plane box is empty.
+    /// Scene box around every placed outline point (subtracted shapes' too, as a scene's
+    /// box counts every primitive), the same as the box of its shapes' prisms.
     pub fn bounds(&self) -> (DVec3, DVec3) {
-        let (lo, hi) = self.plane_box();
+        self.at_heights(self.points_box)
+    }
+
+    /// Scene box around the tree's set: a union's operands' boxes together, an
+    /// intersection's overlap, a difference's first operand (what is cut away does not widen
+    /// it). Empty (lo > hi, infinite) when the set is empty by its boxes.
+    pub fn set_bounds(&self) -> (DVec3, DVec3) {
+        self.at_heights(self.boxes.last().copied().unwrap_or(EMPTY_BOX))
+    }
+
+    fn at_heights(&self, (lo, hi): (DVec2, DVec2)) -> (DVec3, DVec3) {
         if !(lo.x <= hi.x && lo.y <= hi.y) {
             return (DVec3::INFINITY, DVec3::NEG_INFINITY);
         }
-        let m = self.to_scene();
-        let mut out = (DVec3::INFINITY, DVec3::NEG_INFINITY);
-        for c in 0..8 {
-            let p = DVec3::new(
-                if c & 1 == 0 { lo.x } else { hi.x },
-                if c & 2 == 0 { lo.y } else { hi.y },
-                self.z[c >> 2],
-            );
-            let q = m.transform_point3(p);
-            out = (out.0.min(q), out.1.max(q));
-        }
-        out
-    }
-
-    /// Every outline point, placed in the scene at the bottom height.
-    pub fn placed_points(&self) -> impl Iterator<Item = DVec3> + '_ {
-        let m = self.to_scene();
-        self.points
-            .iter()
-            .map(move |p| m.transform_point3(p.extend(self.z[0])))
+        let [z0, z1] = self.scene_z();
+        (lo.extend(z0), hi.extend(z1))
     }
 
     /// Per pixel of `win` (index `(y − y0)·w + (x − x0)`), whether the 2D tree holds the

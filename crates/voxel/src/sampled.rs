@@ -101,6 +101,16 @@ impl Sampled {
         }
     }
 
+    /// Scene-space box around what it fills, as far as its own structure tells: a
+    /// footprint's follows its 2D operations ([`Footprint::set_bounds`]); any other's is
+    /// [`Sampled::bounds`].
+    pub fn set_bounds(&self) -> (DVec3, DVec3) {
+        match &self.shape {
+            Shape::Footprint(f) => f.set_bounds(),
+            _ => self.bounds(),
+        }
+    }
+
     /// Datasets: the sample at scene point `p` (None outside the dataset's lattice).
     pub fn sample(&self, p: DVec3) -> Option<f64> {
         match &self.shape {

@@ -658,7 +658,7 @@ type Lit1 = Option<(usize, usize)>;
 
 /// The box of the part itself: a union's is its children's together, an intersection's
 /// their overlap, a difference's its first child's (what is cut away cannot widen it);
-/// a primitive's its vertices' (an import's, its bounds).
+/// a primitive's its vertices' (an import's, its bounds; a footprint's, its 2D tree's).
 pub fn part_box(loaded: &Loaded) -> Result<(DVec3, DVec3), String> {
     let scene = &loaded.scene;
     let leaf = |i: usize| -> Option<(DVec3, DVec3)> {
@@ -670,7 +670,7 @@ pub fn part_box(loaded: &Loaded) -> Result<(DVec3, DVec3), String> {
             None => loaded
                 .sampled
                 .get(i - scene.solids.len())
-                .map(|s| s.bounds()),
+                .map(|s| s.set_bounds()),
         }
     };
     match node_box(&scene.root, &leaf) {

@@ -224,11 +224,18 @@ fn the_box_follows_the_operations() {
     f.push_shape([sq(0.0, 0.0, 4.0).as_slice()]);
     f.push_shape([sq(3.0, 3.0, 2.0).as_slice()]);
     f.push_op(Op::Difference, 2);
-    assert_eq!(f.plane_box(), (DVec2::ZERO, DVec2::splat(4.0)));
+    assert_eq!(
+        f.set_bounds(),
+        (DVec3::new(0.0, 0.0, 0.0), DVec3::new(4.0, 4.0, 1.0))
+    );
+    assert_eq!(
+        f.bounds(),
+        (DVec3::new(0.0, 0.0, 0.0), DVec3::new(5.0, 5.0, 1.0))
+    );
     // Intersected with a square apart from it: empty, and so is the box in the scene.
     f.push_shape([sq(10.0, 10.0, 1.0).as_slice()]);
     f.push_op(Op::Intersection, 2);
-    let (lo, hi) = f.bounds();
+    let (lo, hi) = f.set_bounds();
     assert!(lo.x > hi.x);
     // United with another: that one's box.
     f.push_shape([sq(-2.0, 1.0, 1.0).as_slice()]);
