@@ -241,7 +241,12 @@ fn the_box_follows_the_operations() {
     f.push_shape([sq(-2.0, 1.0, 1.0).as_slice()]);
     f.push_op(Op::Union, 2);
     assert_eq!(
-        f.plane_box(),
-        (DVec2::new(-2.0, 1.0), DVec2::new(-1.0, 2.0))
+        f.set_bounds(),
+        (DVec3::new(-2.0, 1.0, 0.0), DVec3::new(-1.0, 2.0, 1.0))
+    );
+    // The scene's box counts every point, the cut-away and the empty too.
+    assert_eq!(
+        f.bounds(),
+        (DVec3::new(-2.0, 0.0, 0.0), DVec3::new(11.0, 11.0, 1.0))
     );
 }
