@@ -925,26 +925,14 @@ impl<'a> Reader<'a> {
         postfix(region, &mut f);
         // The placed box's corners lie farthest out: every point is within the limit when
         // they are.
-        // (An empty box, the tree empty by its shapes' boxes, is nothing to check.)
-        let corners = <[DVec3; 2]>::from(f.bounds()).map(|p| p.to_array());
-        let empty = corners[0][0] > corners[1][0];
-        if !empty && corners.iter().flatten().any(|&c| too_large(c)) {
-            return fail(to.pos, coordinate_too_large(None));
-        }
-        if let Some(problem) = degenerate_extent(corners.into_iter()) {
-            return fail(to.pos, problem);
-        }
-        self.imports.push(Import {
-            file: format!("{} at {}", to.name, to.pos),
-            threshold: None,
-            matrix: None,
-            colour: to.colour,
-            line: to.pos.line,
-            col: to.pos.col,
-            mesh: None,
-            footprint: Some(std::sync::Arc::new(f)),
-        });
-        Ok(Ok(CsgNode::Solid(IMPORTED + self.imports.len() - 1)))
+        // Every point lies within the placed box's corners (none for an empty tree).
+        let (lo, hi) = f.bounds();
+        let corners = match lo.x <= hi.x {
+            true => vec![lo.to_array(), hi.to_array()],
+            false => vec![],
+        };
+        check_placed(to, corners.into_iter())?;
+        Ok(Ok(self.push_made(to, (None, Some(std::sync::Arc::new(f))))))
     }
 
     /// One 2D tree extruded: its operations kept, its shapes extruded, each taking the next
@@ -1041,12 +1029,13 @@ impl<'a> Reader<'a> {
             .iter()
             .map(|t| t.map(|v| transform_point(&m, v.to_array())))
             .collect();
-        if tris.iter().flatten().flatten().any(|&c| too_large(c)) {
-            return fail(to.pos, coordinate_too_large(None));
-        }
-        if let Some(problem) = degenerate_extent(tris.iter().flatten().copied()) {
-            return fail(to.pos, problem);
-        }
+        check_placed(to, tris.iter().flatten().copied())?;
+        Ok(self.push_made(to, (Some(std::sync::Arc::new(tris)), None)))
+    }
+
+    /// A primitive the scene made, a mesh or a footprint in scene coordinates (checked by
+    /// [`check_placed`]), as an import leaf named by its node and position.
+    fn push_made(&mut self, to: &Placement, (mesh, footprint): Made) -> CsgNode {
         self.imports.push(Import {
             file: format!("{} at {}", to.name, to.pos),
             threshold: None,
@@ -1054,10 +1043,10 @@ impl<'a> Reader<'a> {
             colour: to.colour,
             line: to.pos.line,
             col: to.pos.col,
-            footprint: None,
-            mesh: Some(std::sync::Arc::new(tris)),
+            footprint,
+            mesh,
         });
-        Ok(CsgNode::Solid(IMPORTED + self.imports.len() - 1))
+        CsgNode::Solid(IMPORTED + self.imports.len() - 1)
     }
 
     /// The solids and imports, less those a `hull()` took in, and the tree's leaves renumbered
@@ -1317,6 +1306,27 @@ fn postfix(r: Region, f: &mut Footprint) {
         stack.extend(c.into_iter().rev().map(Visit::Enter));
     }
 }
+
+/// The checks every placed primitive passes, on `points` (all it reaches): coordinates
+/// within the limit, no degenerate extent.
+fn check_placed(
+    to: &Placement,
+    points: impl Iterator<Item = [f64; 3]> + Clone,
+) -> Result<(), Fail> {
+    if points.clone().flatten().any(too_large) {
+        return fail(to.pos, coordinate_too_large(None));
+    }
+    match degenerate_extent(points) {
+        Some(problem) => fail(to.pos, problem),
+        None => Ok(()),
+    }
+}
+
+/// What the scene made of a node that is not a convex solid: a closed mesh or a footprint.
+type Made = (
+    Option<std::sync::Arc<Vec<[Vec3; 3]>>>,
+    Option<std::sync::Arc<Footprint>>,
+);
 
 /// An extrusion, its slice or fragment count settled.
 enum Extrusion {

@@ -4,6 +4,24 @@
 use super::*;
 use proptest::prelude::*;
 
+/// The identity placement.
+const ID: [[f64; 4]; 4] = [
+    [1.0, 0.0, 0.0, 0.0],
+    [0.0, 1.0, 0.0, 0.0],
+    [0.0, 0.0, 1.0, 0.0],
+    [0.0, 0.0, 0.0, 1.0],
+];
+
+/// The square of side `w` from (x, y), counter-clockwise.
+fn sq(x: f64, y: f64, w: f64) -> Vec<DVec2> {
+    vec![
+        DVec2::new(x, y),
+        DVec2::new(x + w, y),
+        DVec2::new(x + w, y + w),
+        DVec2::new(x, y + w),
+    ]
+}
+
 /// The same tree, as the test evaluates it.
 #[derive(Clone, Debug)]
 enum Tree {
@@ -112,12 +130,7 @@ proptest! {
             DVec2::new(c * p.x - s * p.y, s * p.x + c * p.y) * scale
                 + DVec2::new(shift.0 + 20.0, shift.1 + 20.0)
         };
-        let mut f = Footprint::new([0.0, 1.0], [
-            [1.0, 0.0, 0.0, 0.0],
-            [0.0, 1.0, 0.0, 0.0],
-            [0.0, 0.0, 1.0, 0.0],
-            [0.0, 0.0, 0.0, 1.0],
-        ]);
+        let mut f = Footprint::new([0.0, 1.0], ID);
         t.push_to(&mut f);
         prop_assert!(f.is_complete());
         let win = Window { x0: win.0, y0: win.1, w: win.2, h: win.3 };
@@ -133,23 +146,7 @@ proptest! {
 
 #[test]
 fn a_square_minus_a_hole_on_a_grid() {
-    let sq = |x: f64, y: f64, w: f64| {
-        vec![
-            DVec2::new(x, y),
-            DVec2::new(x + w, y),
-            DVec2::new(x + w, y + w),
-            DVec2::new(x, y + w),
-        ]
-    };
-    let mut f = Footprint::new(
-        [2.0, -1.0],
-        [
-            [1.0, 0.0, 0.0, 0.0],
-            [0.0, 1.0, 0.0, 0.0],
-            [0.0, 0.0, 1.0, 0.0],
-            [0.0, 0.0, 0.0, 1.0],
-        ],
-    );
+    let mut f = Footprint::new([2.0, -1.0], ID);
     assert_eq!(f.z, [-1.0, 2.0]);
     f.push_shape([sq(0.5, 0.5, 4.0).as_slice()]);
     f.push_shape([sq(1.5, 1.5, 1.0).as_slice()]);
@@ -183,13 +180,7 @@ fn a_square_minus_a_hole_on_a_grid() {
 
 #[test]
 fn incomplete_steps_are_found() {
-    let id = [
-        [1.0, 0.0, 0.0, 0.0],
-        [0.0, 1.0, 0.0, 0.0],
-        [0.0, 0.0, 1.0, 0.0],
-        [0.0, 0.0, 0.0, 1.0],
-    ];
-    let mut f = Footprint::new([0.0, 1.0], id);
+    let mut f = Footprint::new([0.0, 1.0], ID);
     assert!(!f.is_complete());
     let tri = [DVec2::ZERO, DVec2::X, DVec2::Y];
     f.push_shape([tri.as_slice()]);
@@ -197,30 +188,16 @@ fn incomplete_steps_are_found() {
     assert!(!f.is_complete());
     f.push_op(Op::Union, 3);
     assert!(!f.is_complete());
-    assert!(keeps_z(&id));
-    let mut tilted = id;
+    assert!(keeps_z(&ID));
+    let mut tilted = ID;
     tilted[0][2] = 0.5;
     assert!(!keeps_z(&tilted));
 }
 
 #[test]
 fn the_box_follows_the_operations() {
-    let id = [
-        [1.0, 0.0, 0.0, 0.0],
-        [0.0, 1.0, 0.0, 0.0],
-        [0.0, 0.0, 1.0, 0.0],
-        [0.0, 0.0, 0.0, 1.0],
-    ];
-    let sq = |x: f64, y: f64, w: f64| {
-        vec![
-            DVec2::new(x, y),
-            DVec2::new(x + w, y),
-            DVec2::new(x + w, y + w),
-            DVec2::new(x, y + w),
-        ]
-    };
     // A disc minus a groove reaching past it: the disc's box.
-    let mut f = Footprint::new([0.0, 1.0], id);
+    let mut f = Footprint::new([0.0, 1.0], ID);
     f.push_shape([sq(0.0, 0.0, 4.0).as_slice()]);
     f.push_shape([sq(3.0, 3.0, 2.0).as_slice()]);
     f.push_op(Op::Difference, 2);
