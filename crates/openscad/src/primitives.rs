@@ -141,7 +141,7 @@ pub(crate) fn cube(params: &Params) -> Result<Option<Shape>, Fail> {
     ];
     Ok(Some(Shape {
         vertices,
-        faces: Faces::from(faces.iter().map(|f| f.to_vec()).collect::<Vec<_>>()),
+        faces: faces.iter().map(|f| f.iter().copied()).collect(),
     }))
 }
 

@@ -70,8 +70,13 @@ impl Faces {
 
     /// Face `i`'s vertex indices.
     pub fn get(&self, i: usize) -> &[u32] {
+        &self.index[self.span(i)]
+    }
+
+    /// Where face `i`'s indices lie in `index`.
+    fn span(&self, i: usize) -> std::ops::Range<usize> {
         let start = i.checked_sub(1).map_or(0, |j| self.end[j] as usize);
-        &self.index[start..self.end[i] as usize]
+        start..self.end[i] as usize
     }
 
     /// The faces in order.
@@ -85,8 +90,8 @@ impl Faces {
     /// Turn every face around (a mirroring placement).
     pub fn reverse_each(&mut self) {
         for i in 0..self.len() {
-            let start = i.checked_sub(1).map_or(0, |j| self.end[j] as usize);
-            self.index[start..self.end[i] as usize].reverse();
+            let span = self.span(i);
+            self.index[span].reverse();
         }
     }
 
@@ -137,19 +142,24 @@ impl DoubleEndedIterator for FaceIter<'_> {
 impl ExactSizeIterator for FaceIter<'_> {}
 
 impl From<Vec<Vec<usize>>> for Faces {
+    /// Sized once for all the faces, then [`Faces::push`]ed as [`FromIterator`] does.
     fn from(faces: Vec<Vec<usize>>) -> Faces {
         let mut out = Faces::with_capacity(faces.len(), faces.iter().map(Vec::len).sum());
-        for f in faces {
-            out.push(f);
-        }
+        out.extend(faces);
         out
+    }
+}
+
+impl<F: IntoIterator<Item = usize>> Extend<F> for Faces {
+    fn extend<I: IntoIterator<Item = F>>(&mut self, faces: I) {
+        faces.into_iter().for_each(|f| self.push(f));
     }
 }
 
 impl<F: IntoIterator<Item = usize>> FromIterator<F> for Faces {
     fn from_iter<I: IntoIterator<Item = F>>(faces: I) -> Faces {
         let mut out = Faces::default();
-        faces.into_iter().for_each(|f| out.push(f));
+        out.extend(faces);
         out
     }
 }
