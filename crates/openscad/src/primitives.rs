@@ -139,9 +139,11 @@ pub(crate) fn cube(params: &Params) -> Result<Option<Shape>, Fail> {
         [3, 2, 6, 7], // back
         [2, 0, 4, 6], // left
     ];
+    let mut out = Faces::with_capacity(6, 24);
+    out.extend(faces.iter().map(|f| f.iter().copied()));
     Ok(Some(Shape {
         vertices,
-        faces: faces.iter().map(|f| f.iter().copied()).collect(),
+        faces: out,
     }))
 }
 
