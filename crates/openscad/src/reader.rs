@@ -923,8 +923,6 @@ impl<'a> Reader<'a> {
         let (z0, z1) = l.z();
         let mut f = Footprint::new([z0, z1], matrix);
         postfix(region, &mut f);
-        // The placed box's corners lie farthest out: every point is within the limit when
-        // they are.
         // Every point lies within the placed box's corners (none for an empty tree).
         let (lo, hi) = f.bounds();
         let corners = match lo.x <= hi.x {
