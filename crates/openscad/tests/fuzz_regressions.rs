@@ -41,6 +41,17 @@ fn error_of(target: &str, bytes: &[u8]) -> Option<String> {
         "obj" => csgpix_scene::trimesh::TriMesh::parse(bytes, "f.obj", true)
             .err()
             .map(|e| e.to_string()),
+        "amf" | "threemf" | "off" => {
+            let format = if target == "threemf" { "3mf" } else { target };
+            let name = format!("f.{format}");
+            match csgpix_scene::trimesh::TriMesh::parse_format(bytes, &name, format) {
+                Err(e) => Some(e.to_string()),
+                Ok((_, warnings)) => warnings
+                    .into_iter()
+                    .map(|w| w.to_string())
+                    .find(|w| w.contains('\n')),
+            }
+        }
         "surface" => {
             let invert = bytes.last().is_some_and(|b| b & 1 == 1);
             let read = csgpix_openscad::surface::read_from(

@@ -220,6 +220,10 @@ mod tests {
         assert!(o.warnings[0]
             .to_string()
             .contains("its only entry `d/t.amf` is read"));
+        // An entry's name is the archive's text: quoted on one line (a fuzzer's find).
+        let z = crate::zipped::testing::archive(&[("d/t.\namf", text.as_bytes())]);
+        let w = parse(&z, "other.amf").unwrap().warnings[0].to_string();
+        assert!(w.contains("its only entry `d/t.\\namf` is read"), "{w}");
         let z2 = crate::zipped::testing::archive(&[("a", b""), ("b", b"")]);
         assert!(parse(&z2, "t.amf")
             .err()

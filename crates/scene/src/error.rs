@@ -442,7 +442,7 @@ pub enum Error {
     #[error("a mesh is read from .stl, .obj, .off, .amf or .3mf (the extension names the format)")]
     MeshReadExtension,
     /// A mesh format name csgpix does not read.
-    #[error("no mesh format `{format}`: one of {known:?}")]
+    #[error("no mesh format `{}`: one of {known:?}", OneLine(format))]
     UnknownMeshFormat {
         /// The name given.
         format: String,
@@ -464,8 +464,10 @@ pub enum Error {
     /// A zipped AMF whose entry named as the archive is missing, its only entry read instead
     /// (a warning).
     #[error(
-        "the zipped AMF has no entry `{expected}`: its only entry `{read}` is read, as OpenSCAD \
-         2021.01 does"
+        "the zipped AMF has no entry `{}`: its only entry `{}` is read, as OpenSCAD 2021.01 \
+         does",
+        OneLine(expected),
+        OneLine(read)
     )]
     AmfEntryGuessed {
         /// The entry looked for (the archive's name).
@@ -475,8 +477,9 @@ pub enum Error {
     },
     /// A zipped AMF of several entries, none named as the archive.
     #[error(
-        "the zipped AMF has {entries} entries and none is named `{expected}`: OpenSCAD reads \
-         the entry named as the archive"
+        "the zipped AMF has {entries} entries and none is named `{}`: OpenSCAD reads the \
+         entry named as the archive",
+        OneLine(expected)
     )]
     AmfEntryMissing {
         /// The entries there are.
@@ -485,7 +488,7 @@ pub enum Error {
         expected: String,
     },
     /// A 3MF package without the model part it names.
-    #[error("the 3MF package has no model part `{part}`")]
+    #[error("the 3MF package has no model part `{}`", OneLine(part))]
     No3mfModel {
         /// The part's path.
         part: String,
@@ -526,8 +529,9 @@ pub enum Error {
     // --- Scenes ----------------------------------------------------------------------------
     /// A scene with imported primitives given to a command that draws convex solids only.
     #[error(
-        "{primitive}: {command} draws convex solids only; datasets and meshes are voxelized \
-         (`csgpix voxelize`)"
+        "{}: {command} draws convex solids only; datasets and meshes are voxelized \
+         (`csgpix voxelize`)",
+        OneLine(primitive)
     )]
     ConvexOnly {
         /// The first imported primitive, as the message names it.
@@ -565,8 +569,9 @@ pub enum Error {
     },
     /// An operation on an imported file that csgpix does not do.
     #[error(
-        "{operation} of `import(\"{file}\")` is not supported (csgpix loads imported files only \
-         to voxelize)"
+        "{operation} of `import(\"{}\")` is not supported (csgpix loads imported files only \
+         to voxelize)",
+        OneLine(file)
     )]
     ImportNotSupported {
         /// The operation (`projection(cut = true)`).
@@ -576,7 +581,8 @@ pub enum Error {
     },
     /// An import whose geometry is not read with the scene (a dataset or mesh file).
     #[error(
-        "`import(\"{file}\")` has no geometry while the scene is read (a dataset or mesh file)"
+        "`import(\"{}\")` has no geometry while the scene is read (a dataset or mesh file)",
+        OneLine(file)
     )]
     ImportWithoutGeometry {
         /// The imported file.
