@@ -411,6 +411,26 @@ fn a_part_the_first_look_misses_altogether_is_still_placed() {
     }
 }
 
+/// Text and other concave outlines are footprints in a print (their 2D tree sampled, not
+/// meshed); where the tree subtracts, its box is not the part's and the print finds the
+/// part's as it does for a difference of solids: an L less a strip along its foot prints as
+/// the L's remaining outline does, at the same place.
+#[test]
+fn a_footprint_that_subtracts_is_placed_by_what_it_lights() {
+    let dir = tempfile::tempdir().unwrap();
+    let (cut, solid) = (dir.path().join("cut.csg"), dir.path().join("solid.csg"));
+    let extrude = |s: &str| format!("linear_extrude(height = 1.2) {{\n{s}\n}}\n");
+    let ell = "polygon(points = [[0, 0], [6, 0], [6, 1], [1, 1], [1, 4], [0, 4]]);";
+    let strip = "square(size = [7, 0.513]);";
+    let rest = "polygon(points = [[0, 0.513], [6, 0.513], [6, 1], [1, 1], [1, 4], [0, 4]]);";
+    let cut_text = extrude(&format!("difference() {{ {ell} {strip} }}"));
+    std::fs::write(&cut, cut_text).unwrap();
+    std::fs::write(&solid, extrude(rest)).unwrap();
+    for aa in ["1", "4"] {
+        assert_eq!(prints_alike(&cut, &solid, aa), 24);
+    }
+}
+
 /// A scene of two colours: besides the part's stack, one stack per colour code, each the
 /// pixels of its own cube, the two together the part.
 #[test]

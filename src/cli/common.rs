@@ -65,9 +65,11 @@ pub struct SweepArgs {
     pub fallback: Fallback,
     /// A straight `linear_extrude` (no twist or scale) of more outline points than this is
     /// voxelized from its 2D tree, evaluated over the pixel centres once for every slab (a
-    /// footprint), instead of as a convex prism or mesh per shape; `off` keeps prisms. The
-    /// same voxels are filled either way; the shapes of an uncoloured footprint share one
-    /// colour code, as one primitive (docs/voxelize-bench.md, "Footprints").
+    /// footprint), instead of as a convex prism or mesh per shape; `print` also reads so
+    /// every straight extrusion with a shape that is not convex (text, say); `off` keeps
+    /// prisms and meshes. The same voxels are filled either way; the shapes of an uncoloured
+    /// footprint share one colour code, as one primitive (docs/voxelize-bench.md,
+    /// "Footprints").
     #[arg(long, value_name = "POINTS|off", value_parser = parse_footprints,
           default_value_t = Footprints(Some(csgpix_openscad::DEFAULT_FOOTPRINT_POINTS)))]
     pub footprints: Footprints,

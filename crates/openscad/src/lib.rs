@@ -223,6 +223,11 @@ pub struct ReadOptions {
     /// default. A footprint is sampled, not drawn by the array (`render`, `requirements` and
     /// `throughput` refuse it, as a mesh).
     pub footprints: Option<usize>,
+    /// Also read as a footprint every straight extrusion with a shape that is not convex
+    /// (one that would be a mesh), whatever its points, when [`ReadOptions::footprints`] is
+    /// not None. False by default: each such shape is a mesh primitive of its own colour
+    /// code; `print`, whose layers carry no codes, sets it (docs/printer.md, "Footprints").
+    pub concave_footprints: bool,
 }
 
 /// Outline points past which a straight extrusion is read as a footprint
@@ -240,6 +245,7 @@ impl Default for ReadOptions {
             openscad_timeout: Some(DEFAULT_OPENSCAD_TIMEOUT),
             strict: false,
             footprints: Some(DEFAULT_FOOTPRINT_POINTS),
+            concave_footprints: false,
         }
     }
 }

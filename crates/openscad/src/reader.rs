@@ -915,7 +915,7 @@ impl<'a> Reader<'a> {
         }
         let mut n = 0usize;
         for_each_point(&region, &mut |_| n += 1);
-        if n <= least {
+        if n <= least && !(self.options.concave_footprints && has_concave_shape(&region)) {
             return Ok(Err(region));
         }
         // Its points were counted against the budget as the shapes were read; a prism's
@@ -1404,6 +1404,13 @@ fn convex_prisms(
             Some(place(Shape { vertices, faces }, &ctx, to.pos))
         })
         .collect()
+}
+
+/// Whether a shape of 2D tree `r` is not convex: extruded, it would be a mesh primitive.
+fn has_concave_shape(r: &Region) -> bool {
+    let mut shapes = vec![];
+    region_shapes(r, &mut shapes);
+    shapes.iter().any(|p| p.convex_outline().is_none())
 }
 
 /// The shapes of 2D tree `r`, depth first, in order.

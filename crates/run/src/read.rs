@@ -21,6 +21,10 @@ pub struct ReadSettings {
     /// (a footprint, `csgpix_scene::footprint`); None keeps every extrusion as prisms and
     /// meshes. The commands that draw on the array always keep prisms.
     pub footprints: Option<usize>,
+    /// Also read as a footprint every straight extrusion with a shape that is not convex,
+    /// whatever its points (`csgpix_openscad::ReadOptions::concave_footprints`): a print's
+    /// default ([`ReadSettings::printing`]).
+    pub concave_footprints: bool,
 }
 
 impl Default for ReadSettings {
@@ -29,6 +33,7 @@ impl Default for ReadSettings {
             openscad_timeout: csgpix_openscad::DEFAULT_OPENSCAD_TIMEOUT.as_secs(),
             strict: false,
             footprints: Some(csgpix_openscad::DEFAULT_FOOTPRINT_POINTS),
+            concave_footprints: false,
         }
     }
 }
@@ -39,12 +44,23 @@ impl ReadSettings {
         (self.openscad_timeout > 0).then(|| Duration::from_secs(self.openscad_timeout))
     }
 
+    /// These settings for a print: every straight extrusion with a concave shape is a
+    /// footprint, as fast as its outline's edges where a mesh's triangles cost more (a
+    /// layer holds no colour codes, so the shapes sharing one changes nothing printed).
+    pub fn printing(self) -> ReadSettings {
+        ReadSettings {
+            concave_footprints: true,
+            ..self
+        }
+    }
+
     /// The reader's options with this limit and strictness, the others their defaults.
     pub fn read_options(self) -> csgpix_openscad::ReadOptions {
         csgpix_openscad::ReadOptions {
             openscad_timeout: self.limit(),
             strict: self.strict,
             footprints: self.footprints,
+            concave_footprints: self.concave_footprints,
             ..Default::default()
         }
     }

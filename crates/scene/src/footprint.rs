@@ -239,6 +239,14 @@ impl Footprint {
         self.at_heights(self.boxes.last().copied().unwrap_or(EMPTY_BOX))
     }
 
+    /// Whether [`Footprint::set_bounds`] is the set's own box: no intersection or difference
+    /// can cut the set inside it (a union's and a shape's boxes are their points').
+    pub fn set_bounds_exact(&self) -> bool {
+        self.steps
+            .iter()
+            .all(|s| matches!(s, Step::Shape | Step::Op(Op::Union, _)))
+    }
+
     fn at_heights(&self, (lo, hi): (DVec2, DVec2)) -> (DVec3, DVec3) {
         if !(lo.x <= hi.x && lo.y <= hi.y) {
             return (DVec3::INFINITY, DVec3::NEG_INFINITY);

@@ -111,6 +111,15 @@ impl Sampled {
         }
     }
 
+    /// Whether [`Sampled::set_bounds`] is the box of what it fills: false for a footprint
+    /// whose 2D tree intersects or subtracts ([`Footprint::set_bounds_exact`]).
+    pub fn set_bounds_exact(&self) -> bool {
+        match &self.shape {
+            Shape::Footprint(f) => f.set_bounds_exact(),
+            _ => true,
+        }
+    }
+
     /// Datasets: the sample at scene point `p` (None outside the dataset's lattice).
     pub fn sample(&self, p: DVec3) -> Option<f64> {
         match &self.shape {

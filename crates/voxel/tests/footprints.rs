@@ -22,7 +22,12 @@ fn voxels(text: &str, grid: Grid, route: Route, least: Option<usize>) -> (Vec<u8
         footprints: least,
         ..ReadOptions::default()
     };
-    let scene = parse_csg_with(text, "t.csg", &options).unwrap_or_else(|e| panic!("{e}"));
+    voxels_with(text, grid, route, &options)
+}
+
+/// [`voxels`] read with `options`.
+fn voxels_with(text: &str, grid: Grid, route: Route, options: &ReadOptions) -> (Vec<u8>, usize) {
+    let scene = parse_csg_with(text, "t.csg", options).unwrap_or_else(|e| panic!("{e}"));
     let sampled = load_imports(&scene, "t.csg", std::path::Path::new(".")).unwrap();
     let footprints = sampled
         .iter()
@@ -217,4 +222,40 @@ fn only_straight_extrusions_outside_hulls_are_footprints() {
         "{e}"
     );
     assert!(parse_csg_with(&straight, "t.csg", &small).is_ok());
+}
+
+/// A print's rule (`concave_footprints`): a straight extrusion with a shape that is not
+/// convex is a footprint whatever its points; one of convex shapes only stays prisms; `off`
+/// (no count) turns both off. The footprint fills the same voxels as the mesh it replaces.
+#[test]
+fn a_print_reads_concave_extrusions_as_footprints() {
+    let options = |least| ReadOptions {
+        footprints: least,
+        concave_footprints: true,
+        ..ReadOptions::default()
+    };
+    let footprints = |text: &str, least| {
+        let s = parse_csg_with(text, "t.csg", &options(least)).unwrap_or_else(|e| panic!("{e}"));
+        s.imports.iter().filter(|i| i.footprint.is_some()).count()
+    };
+    let ell = "polygon(points = [[0, 0], [3, 0], [3, 1], [1, 1], [1, 3], [0, 3]]);";
+    let square = "square(size = [3, 3]);";
+    let extrude = |s: &str| format!("linear_extrude(height = 2) {{ {s} }}");
+    assert_eq!(footprints(&extrude(ell), Some(1000)), 1);
+    assert_eq!(footprints(&extrude(square), Some(1000)), 0);
+    let moved = "multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])";
+    let both = format!("union() {{ {square} {moved} {ell} }}");
+    assert_eq!(footprints(&extrude(&both), Some(1000)), 1);
+    assert_eq!(footprints(&extrude(ell), None), 0);
+    let twisted = format!("linear_extrude(height = 2, twist = 30) {{ {ell} }}");
+    assert_eq!(footprints(&twisted, Some(1000)), 0);
+    let (lo, hi) = (DVec3::new(-1.0, -1.0, -0.5), DVec3::new(9.0, 4.0, 2.5));
+    let grid = Grid::new([40, 20, 6], lo, hi).unwrap();
+    let text = extrude(&both);
+    let filled = |v: Vec<u8>| v.iter().map(|&c| c != 0).collect::<Vec<_>>();
+    let (mesh, none) = voxels(&text, grid, Route::Float, None);
+    let (footprint, one) = voxels_with(&text, grid, Route::Float, &options(Some(1000)));
+    assert_eq!((none, one), (0, 1));
+    assert!(mesh.iter().any(|&c| c != 0));
+    assert_eq!(filled(mesh), filled(footprint));
 }

@@ -159,11 +159,24 @@ impl PrintJob {
 }
 
 /// Whether the tree's box ([`part_box`]) is the part's: no difference, intersection or
-/// complement can cut it.
-pub(super) fn exact_box(n: &CsgNode) -> bool {
+/// complement can cut it, in the tree or in a footprint's 2D tree.
+pub(super) fn exact_box(loaded: &Loaded) -> bool {
+    let solids = loaded.scene.solids.len();
+    let leaf = |i: usize| {
+        i < solids
+            || loaded
+                .sampled
+                .get(i - solids)
+                .is_none_or(|s| s.set_bounds_exact())
+    };
+    exact_node(&loaded.scene.root, &leaf)
+}
+
+fn exact_node(n: &CsgNode, leaf: &dyn Fn(usize) -> bool) -> bool {
     match n {
-        CsgNode::Solid(_) | CsgNode::Empty => true,
-        CsgNode::Union(c) => c.iter().all(exact_box),
+        CsgNode::Solid(i) => leaf(*i),
+        CsgNode::Empty => true,
+        CsgNode::Union(c) => c.iter().all(|c| exact_node(c, leaf)),
         _ => false,
     }
 }

@@ -74,7 +74,7 @@ impl Default for PrintJob {
             centre: [0.0, 0.0],
             threads: None,
             max_memory: default_limit(),
-            read: ReadSettings::default(),
+            read: ReadSettings::default().printing(),
             fallback: Fallback::default(),
         }
     }
@@ -175,7 +175,7 @@ impl PrintJob {
     /// what the print's samples light, cut to a fraction of a pixel, places the part within
     /// 1/256 of a pixel and a layer of where `part` does: it seldom moves); else that cut.
     fn placed_box(&self, vjob: &VoxelizeJob, loaded: &Loaded, part: Box3) -> crate::Result<Box3> {
-        if exact_box(&loaded.scene.root) {
+        if exact_box(loaded) {
             return Ok(part);
         }
         let cut = self.lit_box(vjob, loaded, part, self.aa as usize)?;
