@@ -172,19 +172,24 @@ proptest! {
     }
 }
 
+/// How many of the scene's primitives are footprints, read with footprints from `least`
+/// outline points (None: never) and, if `concave`, every concave straight extrusion.
+fn footprints_read(text: &str, least: Option<usize>, concave: bool) -> usize {
+    let options = ReadOptions {
+        footprints: least,
+        concave_footprints: concave,
+        ..ReadOptions::default()
+    };
+    let s = parse_csg_with(text, "t.csg", &options).unwrap_or_else(|e| panic!("{e}"));
+    s.imports.iter().filter(|i| i.footprint.is_some()).count()
+}
+
 /// Which extrusions become footprints: straight ones of more outline points than asked,
 /// placed keeping the Z axis, under no operation that needs their geometry while the scene is
 /// read.
 #[test]
 fn only_straight_extrusions_outside_hulls_are_footprints() {
-    let options = |least| ReadOptions {
-        footprints: least,
-        ..ReadOptions::default()
-    };
-    let footprints = |text: &str, least| {
-        let s = parse_csg_with(text, "t.csg", &options(least)).unwrap_or_else(|e| panic!("{e}"));
-        s.imports.iter().filter(|i| i.footprint.is_some()).count()
-    };
+    let footprints = |text: &str, least| footprints_read(text, least, false);
     let disc = "circle(r = 2, $fn = 100);";
     let straight = format!("linear_extrude(height = 2) {{ {disc} }}");
     assert_eq!(footprints(&straight, Some(99)), 1);
@@ -229,15 +234,7 @@ fn only_straight_extrusions_outside_hulls_are_footprints() {
 /// (no count) turns both off. The footprint fills the same voxels as the mesh it replaces.
 #[test]
 fn a_print_reads_concave_extrusions_as_footprints() {
-    let options = |least| ReadOptions {
-        footprints: least,
-        concave_footprints: true,
-        ..ReadOptions::default()
-    };
-    let footprints = |text: &str, least| {
-        let s = parse_csg_with(text, "t.csg", &options(least)).unwrap_or_else(|e| panic!("{e}"));
-        s.imports.iter().filter(|i| i.footprint.is_some()).count()
-    };
+    let footprints = |text: &str, least| footprints_read(text, least, true);
     let ell = "polygon(points = [[0, 0], [3, 0], [3, 1], [1, 1], [1, 3], [0, 3]]);";
     let square = "square(size = [3, 3]);";
     let extrude = |s: &str| format!("linear_extrude(height = 2) {{ {s} }}");
@@ -254,7 +251,12 @@ fn a_print_reads_concave_extrusions_as_footprints() {
     let text = extrude(&both);
     let filled = |v: Vec<u8>| v.iter().map(|&c| c != 0).collect::<Vec<_>>();
     let (mesh, none) = voxels(&text, grid, Route::Float, None);
-    let (footprint, one) = voxels_with(&text, grid, Route::Float, &options(Some(1000)));
+    let options = ReadOptions {
+        footprints: Some(1000),
+        concave_footprints: true,
+        ..ReadOptions::default()
+    };
+    let (footprint, one) = voxels_with(&text, grid, Route::Float, &options);
     assert_eq!((none, one), (0, 1));
     assert!(mesh.iter().any(|&c| c != 0));
     assert_eq!(filled(mesh), filled(footprint));
