@@ -10,8 +10,7 @@ use crate::error::Result;
 use crate::footprint::{footprints, Footprint};
 use crate::masks::{array_mask_in, slice_ops};
 use crate::pixel_box::PixelBox;
-use crate::ranges::{float_ranges, footprint_runs_in, mesh_runs, open_mesh_runs_in, word_ranges};
-use crate::sampled::Shape;
+use crate::ranges::{float_ranges, sampled_runs_in, word_ranges};
 use crate::slabs::{SlabRanges, SlabRuns};
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::slicer::{Route, Slicer};
@@ -352,25 +351,15 @@ fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source
         .sampled
         .iter()
         .enumerate()
-        .map(|(j, s)| match &s.shape {
-            Shape::Mesh(m) => {
-                let runs = mesh_runs(slicer, m);
-                let toggles = runs.toggles(nz);
-                SampledSource::Runs(runs, toggles)
+        .map(|(j, s)| {
+            let [w, h, _] = slicer.grid.dims;
+            match sampled_runs_in(slicer, &s.shape, Window { x0: 0, y0: 0, w, h }) {
+                Some(runs) => {
+                    let toggles = runs.toggles(nz);
+                    SampledSource::Runs(runs, toggles)
+                }
+                None => SampledSource::Dataset(j),
             }
-            Shape::OpenMesh(m, _) => {
-                let [w, h, _] = slicer.grid.dims;
-                let runs = open_mesh_runs_in(slicer, m, Window { x0: 0, y0: 0, w, h });
-                let toggles = runs.toggles(nz);
-                SampledSource::Runs(runs, toggles)
-            }
-            Shape::Footprint(f) => {
-                let [w, h, _] = slicer.grid.dims;
-                let runs = footprint_runs_in(slicer, f, Window { x0: 0, y0: 0, w, h });
-                let toggles = runs.toggles(nz);
-                SampledSource::Runs(runs, toggles)
-            }
-            Shape::Dataset { .. } => SampledSource::Dataset(j),
         })
         .collect();
     Ok(Source {

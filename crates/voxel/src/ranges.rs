@@ -10,6 +10,7 @@ use crate::error::Result;
 use crate::pixel_box::PixelBox;
 use crate::slicer::Slicer;
 // Here before crate::slabs took them: the public paths stay.
+use crate::sampled::Shape;
 use crate::slabs::SlabRuns;
 pub use crate::slabs::{toggle_run, SlabRanges};
 
@@ -370,6 +371,18 @@ pub fn float_ranges(slicer: &Slicer, prim: usize) -> SlabRanges {
 pub fn mesh_runs(slicer: &Slicer, mesh: &TriMesh) -> SlabRuns {
     let [w, h, _] = slicer.grid.dims;
     mesh_runs_in(slicer, mesh, Window { x0: 0, y0: 0, w, h })
+}
+
+/// The runs of a sampled primitive that is a surface or a footprint over the pixels of `win`
+/// (as [`mesh_runs_in`]): a closed mesh's, an open mesh's or a footprint's; None for a
+/// dataset, which is sampled voxel by voxel.
+pub fn sampled_runs_in(slicer: &Slicer, shape: &Shape, win: Window) -> Option<SlabRuns> {
+    match shape {
+        Shape::Mesh(m) => Some(mesh_runs_in(slicer, m, win)),
+        Shape::OpenMesh(m, _) => Some(open_mesh_runs_in(slicer, m, win)),
+        Shape::Footprint(f) => Some(footprint_runs_in(slicer, f, win)),
+        Shape::Dataset { .. } => None,
+    }
 }
 
 /// [`mesh_runs`] on the pixels of `win` only (index `(y − y0)·w + (x − x0)`): the same runs

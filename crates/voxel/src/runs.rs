@@ -30,8 +30,7 @@ use csgpix_scene::dataset::Column;
 use crate::dataset_runs::DatasetColumns;
 use crate::error::Result;
 use crate::pixel_box::PixelBox;
-use crate::ranges::{footprint_runs_in, mesh_runs_in, open_mesh_runs_in, FloatPlanes, WordPlanes};
-use crate::sampled::Shape;
+use crate::ranges::{sampled_runs_in, FloatPlanes, WordPlanes};
 use crate::slabs::SlabRuns;
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::slicer::{Slicer, DEFAULT_PANEL};
@@ -190,22 +189,10 @@ impl<'a> Columns<'a> {
             })
             .collect::<Result<_>>()?;
         for (j, s) in slicer.sampled.iter().enumerate() {
-            depths.push(match &s.shape {
-                Shape::Mesh(m) => {
-                    let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
-                    Depths::Sampled(SampledDepths::Mesh(mesh_runs_in(slicer, m, window(b)), b))
-                }
-                Shape::OpenMesh(m, _) => {
-                    let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
-                    let runs = open_mesh_runs_in(slicer, m, window(b));
-                    Depths::Sampled(SampledDepths::Mesh(runs, b))
-                }
-                Shape::Footprint(f) => {
-                    let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
-                    let runs = footprint_runs_in(slicer, f, window(b));
-                    Depths::Sampled(SampledDepths::Mesh(runs, b))
-                }
-                Shape::Dataset { .. } => {
+            let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
+            depths.push(match sampled_runs_in(slicer, &s.shape, window(b)) {
+                Some(runs) => Depths::Sampled(SampledDepths::Mesh(runs, b)),
+                None => {
                     let d = DatasetColumns::new(s, &slicer.grid).expect("a dataset");
                     Depths::Sampled(SampledDepths::Dataset(d))
                 }
