@@ -127,7 +127,7 @@ impl Args {
             centre: self.position.unwrap_or([0.0, 0.0]),
             threads: self.sweep.threads(),
             max_memory: self.mem.limit(),
-            read: self.sweep.reading(self.openscad.into()).printing(),
+            read: self.sweep.reading(self.openscad.into()),
             fallback: self.sweep.fallback,
         }
     }

@@ -22,8 +22,9 @@ pub struct ReadSettings {
     /// meshes. The commands that draw on the array always keep prisms.
     pub footprints: Option<usize>,
     /// Also read as a footprint every straight extrusion with a shape that is not convex,
-    /// whatever its points (`csgpix_openscad::ReadOptions::concave_footprints`): a print's
-    /// default ([`ReadSettings::printing`]).
+    /// whatever its points (`csgpix_openscad::ReadOptions::concave_footprints`). A print
+    /// always reads so ([`ReadSettings::printing`], whatever its job file says); for a
+    /// voxelize job it is a choice (false by default: it changes label codes).
     pub concave_footprints: bool,
 }
 

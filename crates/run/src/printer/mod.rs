@@ -74,7 +74,7 @@ impl Default for PrintJob {
             centre: [0.0, 0.0],
             threads: None,
             max_memory: default_limit(),
-            read: ReadSettings::default().printing(),
+            read: ReadSettings::default(),
             fallback: Fallback::default(),
         }
     }
@@ -407,7 +407,7 @@ impl PrintJob {
             },
             threads: self.threads,
             max_memory: self.max_memory,
-            read: self.read,
+            read: self.read.printing(),
             fallback: self.fallback,
             ..VoxelizeJob::default()
         }
