@@ -226,7 +226,8 @@ pub struct ReadOptions {
     /// Also read as a footprint every straight extrusion with a shape that is not convex
     /// (one that would be a mesh), whatever its points, when [`ReadOptions::footprints`] is
     /// not None. False by default: each such shape is a mesh primitive of its own colour
-    /// code; `print`, whose layers carry no codes, sets it (docs/printer.md, "Footprints").
+    /// code; `print`, whose layers carry no codes, sets it (docs/printer.md, "Concave
+    /// outlines are footprints").
     pub concave_footprints: bool,
 }
 

@@ -346,21 +346,20 @@ pub fn voxelize_slabs<E: From<crate::Error>>(
 
 /// Where a run's per-slab masks come from, by route.
 fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source> {
-    let nz = slicer.grid.dims[2];
+    let [w, h, nz] = slicer.grid.dims;
     let sampled = slicer
         .sampled
         .iter()
         .enumerate()
-        .map(|(j, s)| {
-            let [w, h, _] = slicer.grid.dims;
-            match sampled_runs_in(slicer, &s.shape, Window { x0: 0, y0: 0, w, h }) {
+        .map(
+            |(j, s)| match sampled_runs_in(slicer, &s.shape, Window { x0: 0, y0: 0, w, h }) {
                 Some(runs) => {
                     let toggles = runs.toggles(nz);
                     SampledSource::Runs(runs, toggles)
                 }
                 None => SampledSource::Dataset(j),
-            }
-        })
+            },
+        )
         .collect();
     Ok(Source {
         convex: convex_source(slicer, route, set)?,
