@@ -776,7 +776,8 @@ impl BrickRuns {
 
 /// Slices `slabs` of the run route handed to `sink` in order of k, as
 /// [`crate::voxelize_slabs`] does for the slab routes: the runs of every column computed
-/// first (bands in parallel), then swept along z.
+/// and turned into the first slab's colours and each later slab's changes band by band, in
+/// parallel ([`BandSweep`]); then the changes applied slab by slab.
 pub fn sweep_slices<E: From<crate::Error>>(
     slicer: &Slicer,
     float: bool,
@@ -788,45 +789,70 @@ pub fn sweep_slices<E: From<crate::Error>>(
 ) -> Result<Work, E> {
     let [nx, ny, _] = slicer.grid.dims;
     let columns = Columns::new(slicer, float)?;
-    let banded: Vec<(ColumnRuns, OpCounts)> = bands(slicer)
+    let mut cur = vec![0u8; nx * ny];
+    let bands = bands(slicer);
+    // The bands are whole panels of rows, so each writes its own rows of `cur`.
+    let rows = bands.first().map_or(1, |&(y0, y1)| y1 - y0).max(1);
+    let swept: Vec<BandSweep> = bands
         .into_par_iter()
-        .map(|(y0, y1)| {
-            let r = columns.rows(eval, y0, y1);
+        .zip(cur.par_chunks_mut((rows * nx).max(1)))
+        .map(|((y0, y1), first)| {
+            let runs = columns.rows(eval, y0, y1);
             tick();
-            r
+            BandSweep::of(runs, first, slabs.clone())
         })
         .collect();
-    let mut cur = vec![0u8; nx * ny];
-    // Per slab in slabs (after the first), the pixels whose colour changes there.
-    let mut changes: Vec<Vec<(u32, u8)>> = vec![vec![]; slabs.len()];
-    for (runs, ops) in &banded {
-        work.ops += *ops;
-        work.filled += runs.filled(slabs.clone());
-        let b = runs.columns;
-        for y in b.y0..b.y1 {
-            for x in 0..nx {
-                let col = runs.column(x, y);
-                let i = y * nx + x;
-                let at = col.partition_point(|r| (r.k as usize) <= slabs.start);
-                cur[i] = at.checked_sub(1).map_or(0, |a| col[a].colour);
-                for r in &col[at..] {
-                    let k = r.k as usize;
-                    if k >= slabs.end {
-                        break;
-                    }
-                    changes[k - slabs.start].push((i as u32, r.colour));
-                }
-            }
-        }
+    for band in &swept {
+        work.ops += band.ops;
+        work.filled += band.filled;
     }
-    drop(banded);
-    for (k, ch) in slabs.zip(changes) {
-        for (i, c) in ch {
-            cur[i as usize] = c;
+    for (k, at) in slabs.clone().zip(0..) {
+        for band in &swept {
+            for &(i, c) in &band.changes[at] {
+                cur[i as usize] = c;
+            }
         }
         sink(k, &cur)?;
     }
     Ok(work)
+}
+
+/// A band of rows ready to sweep: its columns' colours at the first slab written, and per
+/// later slab the pixels (indices into the whole slice) whose colour changes there.
+struct BandSweep {
+    changes: Vec<Vec<(u32, u8)>>,
+    ops: OpCounts,
+    filled: usize,
+}
+
+impl BandSweep {
+    /// Band `runs` (its [`OpCounts`] beside) over `slabs`, its first slab's colours written
+    /// to `first` (the band's rows of the slice).
+    fn of(
+        (runs, ops): (ColumnRuns, OpCounts),
+        first: &mut [u8],
+        slabs: std::ops::Range<usize>,
+    ) -> Self {
+        let nx = runs.columns.width();
+        let b = runs.columns;
+        let mut changes: Vec<Vec<(u32, u8)>> = vec![vec![]; slabs.len()];
+        for y in b.y0..b.y1 {
+            for x in b.x0..b.x1 {
+                let col = runs.column(x, y);
+                let at = col.partition_point(|r| (r.k as usize) <= slabs.start);
+                first[(y - b.y0) * nx + x - b.x0] = at.checked_sub(1).map_or(0, |a| col[a].colour);
+                let i = (y * nx + x) as u32;
+                for r in col[at..].iter().take_while(|r| (r.k as usize) < slabs.end) {
+                    changes[r.k as usize - slabs.start].push((i, r.colour));
+                }
+            }
+        }
+        BandSweep {
+            changes,
+            ops,
+            filled: runs.filled(slabs),
+        }
+    }
 }
 
 /// Segments the columns of a panel can have: per column one, plus two per run of each of its
