@@ -71,6 +71,9 @@ fn place(grey: &[u8], fw: usize, lit: &mut [u8], origin: isize, step: [isize; 2]
     }
 }
 
+/// Samples [`Raster::layer_by_changes`] compares to the last layer's greys at once.
+const CHANGE_SCAN: usize = 64;
+
 /// The sum of `b`'s bytes, in 64 KiB chunks whose sums fit a `u32`: a loop the compiler
 /// runs 16 or 32 bytes a step, where widening each byte to a `u64` it runs one.
 fn byte_sum(b: &[u8]) -> u64 {
@@ -208,6 +211,9 @@ impl Raster {
     /// are what [`Raster::take_boxes`] hands over next, unless the layer repeats the one
     /// before ([`Raster::repeated`]).
     pub fn layer(&mut self, s: &[u8]) {
+        if self.k == 1 && self.by_code.is_empty() && self.layer > 0 {
+            return self.layer_by_changes(s);
+        }
         let mut grey = std::mem::take(&mut self.next);
         self.greys(s, None, &mut grey);
         // Most of a part's layers are the one below again (walls run straight between
@@ -237,6 +243,48 @@ impl Raster {
             place(&mat, self.fw, &mut self.by_code[m].1, origin, step);
         }
         self.next = mat;
+        self.areas.push(area);
+        self.layer += 1;
+    }
+
+    /// [`Raster::layer`] at one sample a pixel and of one material, after the first layer:
+    /// a pixel's grey is 255 where its sample is inside and 0 where not, so the last layer's
+    /// greys tell its samples, and only the pixels whose sample went in or out are made
+    /// again, in `grey`, the PNG box, the area and `top` (a pixel's top settles when it goes
+    /// dark). The samples are compared [`CHANGE_SCAN`] at a time, a loop that runs a vector
+    /// at a time: most of a layer is the one before again, even where the part's outline
+    /// moves.
+    fn layer_by_changes(&mut self, s: &[u8]) {
+        let mask = |v: u8| u8::from(v != 0).wrapping_neg();
+        let last = u16::try_from(self.layer).unwrap_or(u16::MAX);
+        let (origin, step) = self.strides();
+        let (fw, lit, top) = (self.fw.max(1), &mut self.lit, &mut self.top);
+        let mut area = self.areas.last().copied().unwrap_or(0);
+        let chunks = s.chunks(CHANGE_SCAN).zip(self.grey.chunks_mut(CHANGE_SCAN));
+        let mut changed = false;
+        for (c, (samples, greys)) in chunks.enumerate() {
+            let pairs = samples.iter().zip(greys.iter());
+            if pairs.fold(0, |d, (&v, &g)| d | (mask(v) ^ g)) == 0 {
+                continue;
+            }
+            changed = true;
+            for (j, (&v, g)) in samples.iter().zip(greys.iter_mut()).enumerate() {
+                let (new, i) = (mask(v), c * CHANGE_SCAN + j);
+                if new == *g {
+                    continue;
+                }
+                let (a, b) = ((i % fw) as isize, (i / fw) as isize);
+                lit[(origin + a * step[0] + b * step[1]) as usize] = new;
+                if new == 0 {
+                    area -= 255;
+                    top[i] = last;
+                } else {
+                    area += 255;
+                }
+                *g = new;
+            }
+        }
+        self.repeated = !changed;
         self.areas.push(area);
         self.layer += 1;
     }
@@ -321,9 +369,10 @@ impl Raster {
         ((n * 255 + full / 2) / full) as u8
     }
 
-    /// The last layer's PNG boxes, the part's then each material's, handed over without a
-    /// copy; buffers of `spare` (any content: placing a layer writes every byte of a box) or new
-    /// ones take their place.
+    /// The last layer's PNG boxes, the part's then each material's: the part's a copy in a
+    /// buffer of `spare` (or a new one), the raster keeping its own for the next layer; each
+    /// material's handed over without a copy, a buffer of `spare` or a new one taking its
+    /// place (any content: placing a layer writes every byte of a material's box).
     pub fn take_boxes(&mut self, spare: Vec<Vec<u8>>) -> Vec<Vec<u8>> {
         let band = self.lit.len();
         let mut spare = spare.into_iter();
@@ -332,7 +381,11 @@ impl Raster {
             b.resize(band, 0);
             b
         };
-        let mut out = vec![std::mem::replace(&mut self.lit, fresh())];
+        // The part's box stays, for the next layer to change where its samples do
+        // ([`Raster::layer_by_changes`]).
+        let mut part = fresh();
+        part.copy_from_slice(&self.lit);
+        let mut out = vec![part];
         for (_, m) in &mut self.by_code {
             out.push(std::mem::replace(m, fresh()));
         }
