@@ -365,45 +365,76 @@ pub(crate) fn pieces2(r: &Region) -> Vec<Piece2> {
 }
 
 /// The Minkowski sum of two unions of pieces, as a union of pieces (module documentation).
-/// `budget` is the most vertices the result may have; Err("budget") past it.
+/// `budget` is the most vertices the result may have; Err("budget") past it. The pairs'
+/// sums are made in parallel (a sphere's sum with each part of a union is a hull of its
+/// own) and kept in order; an error is the one the pairs met first, in order, as if summed
+/// one after another.
 pub(crate) fn minkowski3(
     a: &[Piece],
     b: &[Piece],
     budget: usize,
 ) -> csgpix_scene::Result<Vec<Piece>> {
-    let mut out = Vec::new();
+    use rayon::prelude::*;
+    let pairs: Vec<(&Piece, &Piece)> = a
+        .iter()
+        .flat_map(|p| b.iter().map(move |q| (p, q)))
+        .collect();
+    // The pairs within the budget, the vertices each may bring counted before it is made.
     let mut spend = spender(budget);
-    for p in a {
-        for q in b {
-            match (p, q) {
-                (Piece::Convex(x), Piece::Convex(y)) => {
-                    spend(x.len().saturating_mul(y.len()))?;
-                    out.push(convex_sum(x, y)?);
-                }
-                (Piece::Mesh(x), Piece::Convex(c)) | (Piece::Convex(c), Piece::Mesh(x)) => {
-                    spend(x.len().saturating_mul(3 * c.len() + 3))?;
-                    mesh_plus_convex(x, c, &mut out)?;
-                }
-                (Piece::Mesh(x), Piece::Mesh(y)) => {
-                    let verts = distinct(x.iter().flatten().copied());
-                    spend(
-                        x.len()
-                            .saturating_mul(y.len())
-                            .saturating_mul(9)
-                            .saturating_add(verts.len().saturating_mul(3 * y.len()))
-                            .saturating_add(3 * x.len()),
-                    )?;
-                    out.push(Piece::Mesh(translated(x, y[0][0])));
-                    for &v in &verts {
-                        out.push(Piece::Mesh(translated(y, v)));
-                    }
-                    for t in x {
-                        for u in y {
-                            // Parallel triangles sum to a flat hull: dropped (module docs).
-                            if let Ok(p) = convex_sum(t, u) {
-                                out.push(p);
-                            }
-                        }
+    let within = pairs
+        .iter()
+        .position(|&(p, q)| spend(pair_vertices(p, q)).is_err())
+        .unwrap_or(pairs.len());
+    let sums: Vec<csgpix_scene::Result<Vec<Piece>>> = pairs[..within]
+        .par_iter()
+        .map(|&(p, q)| pair_sum(p, q))
+        .collect();
+    let mut out = Vec::new();
+    for s in sums {
+        out.extend(s?);
+    }
+    match within < pairs.len() {
+        true => Err(over_budget()),
+        false => Ok(out),
+    }
+}
+
+/// The most vertices the sum of pieces `p` and `q` brings (the budget's count).
+fn pair_vertices(p: &Piece, q: &Piece) -> usize {
+    match (p, q) {
+        (Piece::Convex(x), Piece::Convex(y)) => x.len().saturating_mul(y.len()),
+        (Piece::Mesh(x), Piece::Convex(c)) | (Piece::Convex(c), Piece::Mesh(x)) => {
+            x.len().saturating_mul(3 * c.len() + 3)
+        }
+        (Piece::Mesh(x), Piece::Mesh(y)) => {
+            let verts = distinct(x.iter().flatten().copied());
+            x.len()
+                .saturating_mul(y.len())
+                .saturating_mul(9)
+                .saturating_add(verts.len().saturating_mul(3 * y.len()))
+                .saturating_add(3 * x.len())
+        }
+    }
+}
+
+/// The sum of pieces `p` and `q`, as pieces.
+fn pair_sum(p: &Piece, q: &Piece) -> csgpix_scene::Result<Vec<Piece>> {
+    let mut out = vec![];
+    match (p, q) {
+        (Piece::Convex(x), Piece::Convex(y)) => out.push(convex_sum(x, y)?),
+        (Piece::Mesh(x), Piece::Convex(c)) | (Piece::Convex(c), Piece::Mesh(x)) => {
+            mesh_plus_convex(x, c, &mut out)?;
+        }
+        (Piece::Mesh(x), Piece::Mesh(y)) => {
+            out.push(Piece::Mesh(translated(x, y[0][0])));
+            for &v in &distinct(x.iter().flatten().copied()) {
+                out.push(Piece::Mesh(translated(y, v)));
+            }
+            for t in x {
+                for u in y {
+                    // Parallel triangles sum to a flat hull: dropped (module docs).
+                    if let Ok(p) = convex_sum(t, u) {
+                        out.push(p);
                     }
                 }
             }
@@ -434,15 +465,22 @@ fn mesh_plus_convex(x: &Mesh, c: &[DVec3], out: &mut Vec<Piece>) -> csgpix_scene
     let Some(&c0) = c.first() else {
         return Ok(());
     };
+    use rayon::prelude::*;
     out.push(Piece::Mesh(translated(x, c0)));
-    // C's normal fan once, for every triangle.
+    // C's normal fan once, for every triangle; the triangles' hulls in parallel, in order.
     let fan = Fan::of(c);
-    for t in x {
-        let points = match (&fan, Fan::of(t)) {
-            (Some(f), Some(ft)) => ft.sum_vertices(f),
-            _ => all_sums(t, c),
-        };
-        out.push(hull_piece(&points)?);
+    let hulls: Vec<csgpix_scene::Result<Piece>> = x
+        .par_iter()
+        .map(|t| {
+            let points = match (&fan, Fan::of(t)) {
+                (Some(f), Some(ft)) => ft.sum_vertices(f),
+                _ => all_sums(t, c),
+            };
+            hull_piece(&points)
+        })
+        .collect();
+    for h in hulls {
+        out.push(h?);
     }
     Ok(())
 }
