@@ -460,6 +460,78 @@ mod tests {
         assert_eq!(r.top(), &top[..]);
     }
 
+    /// At one sample a pixel a layer is made from the pixels that changed
+    /// ([`Raster::layer_by_changes`]); over random layers, on every turn and mirror, each
+    /// box handed over, area and top is what the layer's samples give directly.
+    #[test]
+    fn layers_made_from_their_changes_are_the_layers_their_samples_give() {
+        let (fw, fh) = (150usize, 37usize);
+        let at = footprint((40, 60), (fw, fh), 40);
+        let mut seed = 0x2005_u64;
+        let mut next = move |n: u64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) % n
+        };
+        // Layers of one to three random boxes, a layer repeating the one before one time
+        // in four; codes 1 to 3 (one material: any code is inside).
+        let mut layers: Vec<Vec<u8>> = vec![];
+        for l in 0..40 {
+            if l > 0 && next(4) == 0 {
+                layers.push(layers[l - 1].clone());
+                continue;
+            }
+            let mut s = vec![0u8; fw * fh];
+            for _ in 0..=next(3) {
+                let (x0, y0) = (next(fw as u64) as usize, next(fh as u64) as usize);
+                let (x1, y1) = (
+                    (x0 + 1 + next(90) as usize).min(fw),
+                    (y0 + 1 + next(30) as usize).min(fh),
+                );
+                let code = 1 + next(3) as u8;
+                for y in y0..y1 {
+                    s[y * fw + x0..y * fw + x1].fill(code);
+                }
+            }
+            layers.push(s);
+        }
+        for (portrait, mirror) in [
+            (true, [true, false]),
+            (false, [false, false]),
+            (true, [false, true]),
+            (false, [true, true]),
+        ] {
+            let mut p = Printer::named("sl1").unwrap();
+            (p.portrait, p.mirror) = (portrait, mirror);
+            let mut r = Raster::new(&p, &at, 1, &[]);
+            let (origin, step) = r.strides();
+            let (mut last, mut top) = (vec![], vec![0u16; fw * fh]);
+            for (l, s) in layers.iter().enumerate() {
+                r.layer(s);
+                let inside = |s: &[u8]| s.iter().map(|&v| v != 0).collect::<Vec<_>>();
+                let same = l > 0 && inside(&layers[l - 1]) == inside(s);
+                assert_eq!(r.repeated(), same, "layer {l}");
+                if !r.repeated() {
+                    last = r.take_boxes(vec![vec![7; 3]]).remove(0);
+                }
+                for (n, &v) in s.iter().enumerate() {
+                    let (i, j) = ((n % fw) as isize, (n / fw) as isize);
+                    let grey = u8::from(v != 0) * 255;
+                    assert_eq!(
+                        last[(origin + i * step[0] + j * step[1]) as usize],
+                        grey,
+                        "layer {l} pixel {n}"
+                    );
+                    top[n] = if v != 0 { l as u16 + 1 } else { top[n] };
+                }
+                let area = s.iter().filter(|&&v| v != 0).count() as u64 * 255;
+                assert_eq!(r.areas[l], area, "layer {l} {portrait} {mirror:?}");
+            }
+            assert_eq!(r.top(), &top[..]);
+        }
+    }
+
     /// With materials, a layer repeats the one before only when its codes do: the same
     /// part in another colour is made afresh, and every material's box handed over is the
     /// one its samples give.
