@@ -56,6 +56,12 @@ impl WordPlanes {
         self.0.len()
     }
 
+    /// Whether every plane held is level (dZx = dZy = 0): the same values, so the same
+    /// slabs, at every pixel.
+    pub(crate) fn level(&self) -> bool {
+        self.0.iter().all(|(c, _, _)| c.dx == 0 && c.dy == 0)
+    }
+
     /// Solid `prim`'s planes in the slicer's word; an error names a plane that does not fit.
     pub(crate) fn of(slicer: &Slicer, prim: usize) -> Result<WordPlanes> {
         let fmt = &slicer.fmt;
@@ -242,6 +248,14 @@ impl FloatPlanes {
     /// Planes held.
     pub(crate) fn len(&self) -> usize {
         self.0.len()
+    }
+
+    /// Whether every plane held is level (dZx = dZy = 0): Z0 + x·0 + y·0 is Z0 at every
+    /// pixel, so the slabs are the same at every pixel.
+    pub(crate) fn level(&self) -> bool {
+        self.0
+            .iter()
+            .all(|&(_, dx, dy, _, _)| dx == 0.0 && dy == 0.0)
     }
 
     /// Solid `prim`'s planes.

@@ -298,12 +298,18 @@ impl<'a> Columns<'a> {
                     }
                     Depths::Sampled(d) => Pruned::Sampled(d),
                 };
+                let pruned = pruned.settled(slicer, o);
                 Some((p, o, Tiles::of(self.slicer, pruned, o)))
             })
             .collect();
+        // Each column's primitive runs (primitive, first, last); a column whose runs are
+        // the column's before it in its row has its labels too (a label is a function of
+        // which primitives hold a segment), so only its runs are copied.
+        let (mut held, mut before) = (vec![], vec![]);
+        let mut again = Vec::with_capacity(b.pixels());
         for y in b.y0..b.y1 {
             for x in b.x0..b.x1 {
-                seg.open_column();
+                held.clear();
                 for (p, o, tiles) in &here {
                     if !o.contains(x, y) {
                         continue;
@@ -313,10 +319,15 @@ impl<'a> Columns<'a> {
                     };
                     span.clear();
                     pruned.slabs(self.slicer, x, y, &mut column, &mut span);
-                    span.retain(|(a, b)| a <= b);
-                    seg.add(*p, &span, nz);
+                    let runs = span.iter().filter(|(a, b)| a <= b);
+                    held.extend(runs.map(|&(a, b)| (*p, a, b)));
                 }
-                seg.close_column();
+                let same = x > b.x0 && held == before;
+                again.push(same);
+                if !same {
+                    seg.column(&held, nz);
+                }
+                std::mem::swap(&mut held, &mut before);
             }
         }
         let masks = seg.masks(self.depths.len());
@@ -327,13 +338,23 @@ impl<'a> Columns<'a> {
             runs: Vec::with_capacity(seg.starts.len()),
         };
         out.start.push(0);
-        for (starts, range) in seg.columns() {
+        let mut made = seg.columns();
+        for same in again {
             let from = out.runs.len();
-            for (&k, i) in starts.iter().zip(range) {
-                // A scene without primitives has no labels: nothing is inside.
-                let colour = self.colour(labels.get(i).copied().unwrap_or(0));
-                if out.runs.len() == from || out.runs.last().is_some_and(|r| r.colour != colour) {
-                    out.runs.push(Run { k, colour });
+            match (same, out.start.len()) {
+                (true, n) if n >= 2 => out.runs.extend_from_within(out.start[n - 2]..from),
+                _ => {
+                    let Some((starts, range)) = made.next() else {
+                        break;
+                    };
+                    for (&k, i) in starts.iter().zip(range) {
+                        // A scene without primitives has no labels: nothing is inside.
+                        let colour = self.colour(labels.get(i).copied().unwrap_or(0));
+                        let last = out.runs.last().filter(|_| out.runs.len() > from);
+                        if last.is_none_or(|r| r.colour != colour) {
+                            out.runs.push(Run { k, colour });
+                        }
+                    }
                 }
             }
             out.start.push(out.runs.len());
@@ -355,16 +376,41 @@ enum Pruned<'d, 'a> {
     Word(WordPlanes),
     Float(FloatPlanes),
     Sampled(&'d SampledDepths<'a>),
+    /// The one run of slabs of every pixel, where the planes left are level
+    /// ([`Pruned::settled`]).
+    Level((u32, u32)),
 }
 
 impl Pruned<'_, '_> {
     /// Its planes pruned again to box `t` (None: the solid is nowhere in it); an import's
     /// runs as they are.
     fn in_box(&self, slicer: &Slicer, t: PixelBox) -> Option<Self> {
-        match self {
+        let pruned = match self {
             Pruned::Word(w) => w.in_panel(slicer, t).map(Pruned::Word),
             Pruned::Float(f) => f.in_panel(slicer, t).map(Pruned::Float),
             Pruned::Sampled(d) => Some(Pruned::Sampled(d)),
+            Pruned::Level(r) => Some(Pruned::Level(*r)),
+        };
+        pruned.map(|p| p.settled(slicer, t))
+    }
+
+    /// Where every plane left over box `b` is level (a prism's caps over the tiles inside
+    /// its walls, a box's over its inside), the one run of slabs they give every pixel of
+    /// it, found once; else itself.
+    fn settled(self, slicer: &Slicer, b: PixelBox) -> Self {
+        let level = match &self {
+            Pruned::Word(w) => w.level(),
+            Pruned::Float(f) => f.level(),
+            Pruned::Sampled(_) | Pruned::Level(_) => false,
+        };
+        if !level {
+            return self;
+        }
+        let mut run = vec![];
+        self.slabs(slicer, b.x0, b.y0, &mut Column::default(), &mut run);
+        match run[..] {
+            [r] => Pruned::Level(r),
+            _ => self,
         }
     }
 
@@ -373,7 +419,7 @@ impl Pruned<'_, '_> {
         match self {
             Pruned::Word(w) => w.len(),
             Pruned::Float(f) => f.len(),
-            Pruned::Sampled(_) => 0,
+            Pruned::Sampled(_) | Pruned::Level(_) => 0,
         }
     }
 
@@ -391,6 +437,7 @@ impl Pruned<'_, '_> {
             Pruned::Word(w) => out.push(w.slabs(slicer, x as i64, y as i64)),
             Pruned::Float(f) => out.push(f.slabs(slicer, x, y)),
             Pruned::Sampled(d) => d.slabs(x, y, column, out),
+            Pruned::Level(r) => out.push(*r),
         }
     }
 }
@@ -500,29 +547,24 @@ struct Segments {
 }
 
 impl Segments {
-    fn open_column(&mut self) {
-        self.column.push(self.starts.len());
+    /// A column whose primitives fill runs `held` (primitive, first slab, last slab), on a
+    /// grid `nz` slabs deep.
+    fn column(&mut self, held: &[(u32, u32, u32)], nz: u32) {
+        let at = self.starts.len();
+        let c = self.column.len() as u32;
+        self.column.push(at);
         self.starts.push(0);
-    }
-
-    /// Primitive p fills `runs` of the open column, on a grid `nz` slabs deep.
-    fn add(&mut self, p: u32, runs: &[(u32, u32)], nz: u32) {
-        let c = (self.column.len() - 1) as u32;
-        for &(a, b) in runs {
+        for &(p, a, b) in held {
             self.starts.push(a);
             if b + 1 < nz {
                 self.starts.push(b + 1);
             }
             self.held.push((p, c, a, b));
         }
-    }
-
-    fn close_column(&mut self) {
-        let c = *self.column.last().unwrap_or(&0);
-        let col = &mut self.starts[c..];
+        let col = &mut self.starts[at..];
         col.sort_unstable();
         let n = dedup_sorted(col);
-        self.starts.truncate(c + n);
+        self.starts.truncate(at + n);
     }
 
     /// One mask per primitive over every segment of the panel: set where it holds the
