@@ -270,11 +270,30 @@ impl StackInfo<'_> {
     }
 }
 
-/// Thumbnails as PrusaSlicer names them, of the part seen from above: each pixel of the
-/// footprint shaded by the height of its top layer, fitted into `w`×`h`.
-pub fn thumbnail(raster: &mut Raster, layers: usize, (w, h): (u32, u32)) -> image::RgbImage {
-    let [fw, fh] = raster.footprint();
+/// The thumbnails of `sizes` as PNG bytes, made in parallel ([`thumbnail`]).
+pub fn thumbnail_pngs(
+    raster: &mut Raster,
+    layers: usize,
+    sizes: &[(u32, u32)],
+) -> std::io::Result<Vec<Vec<u8>>> {
+    use rayon::prelude::*;
+    let footprint = raster.footprint();
     let top = raster.top();
+    sizes
+        .par_iter()
+        .map(|&size| png_bytes(&thumbnail(top, footprint, layers, size)))
+        .collect()
+}
+
+/// Thumbnails as PrusaSlicer names them, of the part seen from above: each pixel of the
+/// footprint (`fw`×`fh`, 1 + its top layer in `top`, 0 where none lights it) shaded by the
+/// height of its top layer, fitted into `w`×`h`.
+pub fn thumbnail(
+    top: &[u16],
+    [fw, fh]: [usize; 2],
+    layers: usize,
+    (w, h): (u32, u32),
+) -> image::RgbImage {
     let mut img = image::RgbImage::from_pixel(w, h, image::Rgb([32, 32, 36]));
     if fw == 0 || fh == 0 || layers == 0 {
         return img;

@@ -265,10 +265,11 @@ impl PrintJob {
             z.add("config.ini", config.as_bytes())?;
             let ini = archive::prusaslicer_ini(&self.printer, placed);
             z.add("prusaslicer.ini", ini.as_bytes())?;
-            for size in [(400, 400), (800, 480)] {
-                let img = archive::thumbnail(raster, placed.layers, size);
+            let sizes = [(400, 400), (800, 480)];
+            let pngs = archive::thumbnail_pngs(raster, placed.layers, &sizes)?;
+            for (size, png) in sizes.iter().zip(pngs) {
                 let name = format!("thumbnail/thumbnail{}x{}.png", size.0, size.1);
-                z.add(&name, &archive::png_bytes(&img)?)?;
+                z.add(&name, &png)?;
             }
             summary = Some(s);
             z.finish()
@@ -308,8 +309,8 @@ impl PrintJob {
         let info = archive::StackInfo::of(&self.printer, placed, self.aa, &s);
         let text = serde_json::to_string_pretty(&info)?;
         outs.write_in(out, "print.json", |w| w.write_all(text.as_bytes()))?;
-        let img = archive::thumbnail(raster, placed.layers, (400, 400));
-        let bytes = archive::png_bytes(&img).map_err(|e| self.io(e))?;
+        let pngs = archive::thumbnail_pngs(raster, placed.layers, &[(400, 400)]);
+        let bytes = pngs.map_err(|e| self.io(e))?.concat();
         outs.write_in(out, "thumbnail.png", |w| w.write_all(&bytes))?;
         Ok(s)
     }
