@@ -819,7 +819,7 @@ impl BrickRuns {
 /// Slices `slabs` of the run route handed to `sink` in order of k, as
 /// [`crate::voxelize_slabs`] does for the slab routes: the runs of every column computed
 /// and turned into the first slab's colours and each later slab's changes band by band, in
-/// parallel ([`BandSweep`]); then the changes applied slab by slab.
+/// parallel; then the changes applied slab by slab.
 pub fn sweep_slices<E: From<crate::Error>>(
     slicer: &Slicer,
     float: bool,
