@@ -462,10 +462,10 @@ fn over_budget() -> Error {
 
 /// X ⊕ C = (X + c0) ∪ ⋃ hull(T ⊕ C).
 fn mesh_plus_convex(x: &Mesh, c: &[DVec3], out: &mut Vec<Piece>) -> csgpix_scene::Result<()> {
+    use rayon::prelude::*;
     let Some(&c0) = c.first() else {
         return Ok(());
     };
-    use rayon::prelude::*;
     out.push(Piece::Mesh(translated(x, c0)));
     // C's normal fan once, for every triangle; the triangles' hulls in parallel, in order.
     let fan = Fan::of(c);

@@ -875,6 +875,7 @@ impl BandSweep {
         first: &mut [u8],
         slabs: std::ops::Range<usize>,
     ) -> Self {
+        // A band spans whole rows: its width is the slice's.
         let nx = runs.columns.width();
         let b = runs.columns;
         let mut changes: Vec<Vec<(u32, u8)>> = vec![vec![]; slabs.len()];
