@@ -327,6 +327,52 @@ def bench_scene(path, resolutions, csgpix, meshes_bin, work):
     return row
 
 
+# Issue 41's target: designs whose Manifold mesh takes at least this long (seconds).
+SLOW_MESH = 0.05
+
+
+def floor_s(n, csgpix, work):
+    """The floor of a whole `csgpix voxelize` at n³: one cube filling the grid, so the process
+    is its start, the n³ volume and its write (best of 3)."""
+    scene = work / "floor.csg"
+    scene.write_text("cube(size = [1, 1, 1], center = false);\n")
+    out = work / "floor.nrrd"
+    cmd = [str(csgpix), "voxelize", str(scene), "--res", f"{n}x{n}x{n}", "-o", str(out)]
+
+    def once():
+        wall, _, code, _ = run_timed(cmd)
+        return (wall,) if code == 0 else None
+
+    b = best_of(once)
+    out.unlink(missing_ok=True)
+    return b[0] if b else None
+
+
+def target_summary(rows, n, floor):
+    """On the designs whose mesh takes at least SLOW_MESH: the median of mesh / csgpix at n³,
+    how many are below 1× and 2×, the lowest three, and the same ratios were every csgpix run
+    at the floor (`floor` seconds): the most any whole process writing the volume can show."""
+    gs = [(r["design"], r["mesh_s"], r["grids"][str(n)]) for r in rows
+          if "vectors/designs/" in r["file"] and r.get("mesh_s", 0) >= SLOW_MESH
+          and "ratio_mesh" in r["grids"].get(str(n), {})]
+    if not gs:
+        return None
+    ratios = sorted((g["ratio_mesh"], d) for d, _, g in gs)
+    out = {
+        "designs": len(gs),
+        "median_mesh_over_csgpix": statistics.median(x for x, _ in ratios),
+        "below_1x": sum(x < 1 for x, _ in ratios),
+        "below_2x": sum(x < 2 for x, _ in ratios),
+        "lowest": [[d, x] for x, d in ratios[:3]],
+    }
+    if floor:
+        bound = [m / floor for _, m, _ in gs]
+        out["floor_s"] = floor
+        out["median_mesh_over_floor"] = statistics.median(bound)
+        out["below_2x_at_floor"] = sum(x < 2 for x in bound)
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("scenes", nargs="*", type=Path, help="scenes (default: the designs and three scenes)")
@@ -378,6 +424,12 @@ def main():
                 "iou": statistics.median(g["iou"] for g in gs),
                 "iou_min": min(g["iou"] for g in gs),
             }
+    targets = {}
+    with tempfile.TemporaryDirectory(prefix="manifold_peer.floor.") as tmp:
+        for n in resolutions:
+            t = target_summary(rows, n, floor_s(n, args.csgpix, Path(tmp)))
+            if t:
+                targets[str(n)] = t
     report = {
         "date": time.strftime("%Y-%m-%d %H:%M:%S %Z"),
         "nproc": os.cpu_count(),
@@ -385,9 +437,11 @@ def main():
         "manifold3d": manifold_version(),
         "resolutions": resolutions,
         "medians_designs": medians,
+        "target": targets,
         "rows": rows,
     }
     print_table(rows, resolutions, medians)
+    print_targets(targets)
     if args.json:
         print(json.dumps(report, indent=1))
     return 0
@@ -435,6 +489,17 @@ def print_table(rows, resolutions, medians):
             m = medians[str(n)]
             print(f"median over {m['designs']} designs at {n}³: full {m['ratio_full']:.2f}, "
                   f"mesh step {m['ratio_mesh']:.2f}, IoU {m['iou']:.4f} (min {m['iou_min']:.4f})")
+
+
+def print_targets(targets):
+    for n, t in targets.items():
+        low = ", ".join(f"{d} {x:.2f}" for d, x in t["lowest"])
+        print(f"\n{n}³, the {t['designs']} designs whose Manifold mesh takes ≥ {SLOW_MESH * 1000:.0f} ms: "
+              f"median mesh / csgpix {t['median_mesh_over_csgpix']:.2f}, {t['below_1x']} below 1×, "
+              f"{t['below_2x']} below 2× (lowest: {low})")
+        if "floor_s" in t:
+            print(f"  floor (one cube, the whole process) {t['floor_s']:.3f} s: at the floor the median "
+                  f"would be {t['median_mesh_over_floor']:.2f}, {t['below_2x_at_floor']} below 2×")
 
 
 if __name__ == "__main__":

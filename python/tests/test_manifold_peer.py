@@ -1,0 +1,44 @@
+"""The Manifold bench's summary of issue 41's target (python/bench/manifold_peer.py)."""
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "python" / "bench"))
+
+from manifold_peer import floor_s, target_summary  # noqa: E402
+
+from conftest import cli_binary  # noqa: E402
+
+
+def row(design, mesh_s, csgpix_s, n=256):
+    return {"design": design, "file": f"vectors/designs/meshes/{design}.csg", "mesh_s": mesh_s,
+            "grids": {str(n): {"csgpix_s": csgpix_s, "ratio_mesh": mesh_s / csgpix_s}}}
+
+
+def test_the_target_counts_only_designs_whose_mesh_takes_50_ms():
+    rows = [
+        row("a", 0.10, 0.05),   # 2×
+        row("b", 0.06, 0.12),   # 0.5×
+        row("c", 0.30, 0.03),   # 10×
+        row("quick", 0.01, 0.10),  # mesh under 50 ms: not counted
+        {"design": "s", "file": "vectors/scenes/twelve.csg", "mesh_s": 1.0,
+         "grids": {"256": {"ratio_mesh": 0.1}}},  # not a design
+    ]
+    t = target_summary(rows, 256, 0.02)
+    assert t["designs"] == 3
+    assert t["median_mesh_over_csgpix"] == 2.0
+    assert (t["below_1x"], t["below_2x"]) == (1, 1)
+    assert [d for d, _ in t["lowest"]] == ["b", "a", "c"]
+    # At a 20 ms floor: 5×, 3×, 15×; the median 5×, none below 2×.
+    assert abs(t["median_mesh_over_floor"] - 5.0) < 1e-12
+    assert t["below_2x_at_floor"] == 0
+
+
+def test_no_design_over_50_ms_gives_no_summary():
+    assert target_summary([row("quick", 0.01, 0.10)], 256, 0.02) is None
+
+
+def test_the_floor_is_a_whole_process_writing_the_volume(tmp_path):
+    f = floor_s(32, cli_binary(), tmp_path)
+    assert f is not None and 0 < f < 30
+    assert not (tmp_path / "floor.nrrd").exists()
