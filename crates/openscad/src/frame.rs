@@ -45,8 +45,12 @@ pub(crate) struct Frame {
     pub(crate) pos: Pos,
     /// An extrusion's or offset's parameters, read when it opened.
     pub(crate) spec: Spec,
-    /// The transform above an extrusion (its children start from the identity).
+    /// The transform above an extrusion, a `minkowski()`, … (their children start from the
+    /// identity).
     pub(crate) placement: Option<Mat4>,
+    /// Where the statement's text starts, for a result kept by its text
+    /// ([`crate::reader::Reader`]'s sums).
+    pub(crate) start: usize,
 }
 
 /// The dimension of an operation's children.

@@ -364,26 +364,28 @@ pub(crate) fn pieces2(r: &Region) -> Vec<Piece2> {
     out
 }
 
-/// The Minkowski sum of two unions of pieces, as a union of pieces (module documentation).
-/// `budget` is the most vertices the result may have; Err("budget") past it. The pairs'
-/// sums are made in parallel (a sphere's sum with each part of a union is a hull of its
-/// own) and kept in order; an error is the one the pairs met first, in order, as if summed
-/// one after another.
+/// The Minkowski sum of two unions of pieces, as a union of pieces (module documentation),
+/// and the vertices it was counted to bring (what `budget` had to hold). `budget` is the
+/// most vertices the result may have; Err("budget") past it. The pairs' sums are made in
+/// parallel (a sphere's sum with each part of a union is a hull of its own) and kept in
+/// order; an error is the one the pairs met first, in order, as if summed one after another.
 pub(crate) fn minkowski3(
     a: &[Piece],
     b: &[Piece],
     budget: usize,
-) -> csgpix_scene::Result<Vec<Piece>> {
+) -> csgpix_scene::Result<(Vec<Piece>, usize)> {
     use rayon::prelude::*;
     let pairs: Vec<(&Piece, &Piece)> = a
         .iter()
         .flat_map(|p| b.iter().map(move |q| (p, q)))
         .collect();
     // The pairs within the budget, the vertices each may bring counted before it is made.
+    let counts: Vec<usize> = pairs.iter().map(|&(p, q)| pair_vertices(p, q)).collect();
+    let need = counts.iter().fold(0usize, |n, &c| n.saturating_add(c));
     let mut spend = spender(budget);
-    let within = pairs
+    let within = counts
         .iter()
-        .position(|&(p, q)| spend(pair_vertices(p, q)).is_err())
+        .position(|&c| spend(c).is_err())
         .unwrap_or(pairs.len());
     let sums: Vec<csgpix_scene::Result<Vec<Piece>>> = pairs[..within]
         .par_iter()
@@ -395,7 +397,7 @@ pub(crate) fn minkowski3(
     }
     match within < pairs.len() {
         true => Err(over_budget()),
-        false => Ok(out),
+        false => Ok((out, need)),
     }
 }
 
@@ -456,7 +458,7 @@ fn spender(budget: usize) -> impl FnMut(usize) -> csgpix_scene::Result<()> {
     }
 }
 
-fn over_budget() -> Error {
+pub(crate) fn over_budget() -> Error {
     Error::MinkowskiTooLarge
 }
 
@@ -922,26 +924,6 @@ fn shifted(p: &Poly2, d: DVec2) -> Poly2 {
     }
 }
 
-impl Piece {
-    /// The piece moved by `d`.
-    pub(crate) fn moved(self, d: DVec3) -> Piece {
-        match self {
-            Piece::Convex(v) => Piece::Convex(v.into_iter().map(|p| p + d).collect()),
-            Piece::Mesh(m) => Piece::Mesh(translated(&m, d)),
-        }
-    }
-}
-
-impl Piece2 {
-    /// The piece moved by `d`.
-    pub(crate) fn moved(self, d: DVec2) -> Piece2 {
-        match self {
-            Piece2::Convex(v) => Piece2::Convex(v.into_iter().map(|p| p + d).collect()),
-            Piece2::Shape(s) => Piece2::Shape(shifted(&s, d)),
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -997,7 +979,7 @@ mod tests {
         let q = [Piece::Convex(
             s[0].vertices.iter().map(|&v| DVec3::from(v)).collect(),
         )];
-        let sum = minkowski3(&p_half(&s), &q, 1 << 20).unwrap();
+        let (sum, _) = minkowski3(&p_half(&s), &q, 1 << 20).unwrap();
         let [Piece::Convex(v)] = &sum[..] else {
             panic!("one hull")
         };
@@ -1106,7 +1088,7 @@ mod tests {
             .iter()
             .map(|&v| DVec3::from(v))
             .collect();
-        let pieces = minkowski3(&[Piece::Mesh(x)], &[Piece::Convex(c)], 1 << 20).unwrap();
+        let (pieces, _) = minkowski3(&[Piece::Mesh(x)], &[Piece::Convex(c)], 1 << 20).unwrap();
         // The union of the pieces, through mesh_of: the L of arms 3 wide... = 3×3×2 minus
         // the 1×1×2 corner at [2,3]².
         let mut solids = vec![];

@@ -470,7 +470,7 @@ pub(crate) fn resize(
     if let Some(outer) = &frame.placement {
         m = mat_mul(outer, &m);
     }
-    move_leaves(&node, solids, imports, &m, pos)?;
+    move_leaves(&node, solids, imports, &m, (pos, RESIZED_PAST_LIMIT))?;
     Ok(Item::Solid(node))
 }
 
@@ -502,13 +502,13 @@ const RESIZED_PAST_LIMIT: CsgError = CsgError::CoordinateLimit {
 };
 
 /// The solids and imports under `node` moved by `m` in place (faces reversed when `m`
-/// mirrors); an error when a coordinate then passes the limit.
-fn move_leaves(
+/// mirrors); `past_limit` when a coordinate then passes the limit.
+pub(crate) fn move_leaves(
     node: &CsgNode,
     solids: &mut [ConvexSolid],
     imports: &mut [Import],
     m: &Mat4,
-    pos: Pos,
+    (pos, past_limit): (Pos, CsgError),
 ) -> Result<(), Fail> {
     let flip = det3(m) < 0.0;
     for i in leaves(node) {
@@ -521,7 +521,7 @@ fn move_leaves(
                 solid.faces.reverse_each();
             }
             if solid.vertices.iter().flatten().any(|&c| too_large(c)) {
-                return fail(pos, RESIZED_PAST_LIMIT);
+                return fail(pos, past_limit);
             }
             continue;
         }
@@ -536,7 +536,7 @@ fn move_leaves(
                     }
                 }
                 if tris.iter().flatten().flatten().any(|&c| too_large(c)) {
-                    return fail(pos, RESIZED_PAST_LIMIT);
+                    return fail(pos, past_limit);
                 }
             }
             None => {

@@ -19,7 +19,7 @@ use crate::{
     linalg::*,
     node::*,
     primitives::*,
-    project::{projection, resize},
+    project::{move_leaves, projection, resize},
     transform::*,
     tree::*,
     value::*,
@@ -75,6 +75,56 @@ pub(crate) struct Reader<'a> {
     /// The scene's own fonts ([`ReadOptions::fonts`]) before the standard ones, loaded at the
     /// first `text()`; this scene's alone.
     pub(crate) scene_fonts: std::cell::OnceCell<crate::text::Fonts>,
+    /// Each `minkowski()` of solids summed so far, by its text (runs of white space as one
+    /// space: a module called again gives the same statement, indented by its depth), whose
+    /// sum in its own coordinates is the same (the sum is placed after, [`Self::minkowski3`]).
+    sums: std::collections::HashMap<String, Sum>,
+    /// The bytes [`Self::sums`] holds ([`CsgScene::reading_bytes`]).
+    sum_bytes: u64,
+}
+
+/// A `minkowski()`'s sum in its own coordinates, as the scene's solids and meshes (without
+/// their colour and line, which are each statement's), and the vertices the budget had to
+/// hold for it ([`crate::geom::minkowski3`]'s count, the most of any step of the fold).
+struct Sum {
+    parts: Vec<SumPart>,
+    need: usize,
+}
+
+/// One piece of a sum, made: a convex solid (its hull taken) or a closed mesh.
+enum SumPart {
+    Convex(ConvexSolid),
+    Mesh(std::sync::Arc<Vec<[[f64; 3]; 3]>>),
+}
+
+impl Sum {
+    /// The pieces made: each convex piece's hull taken once.
+    fn of(pieces: Vec<Piece>, need: usize) -> Result<Sum, Error> {
+        let parts = pieces
+            .into_iter()
+            .map(|p| match p {
+                Piece::Convex(v) => convex_solid(&v, None, 0).map(SumPart::Convex),
+                Piece::Mesh(m) => Ok(SumPart::Mesh(std::sync::Arc::new(
+                    m.iter().map(|t| t.map(|v| v.to_array())).collect(),
+                ))),
+            })
+            .collect::<Result<_, _>>()?;
+        Ok(Sum { parts, need })
+    }
+
+    fn bytes(&self) -> u64 {
+        let vertex = std::mem::size_of::<[f64; 3]>() as u64;
+        self.parts
+            .iter()
+            .map(|p| match p {
+                SumPart::Convex(s) => {
+                    let indices: usize = s.faces.iter().map(|f| f.len() + 1).sum();
+                    s.vertices.len() as u64 * vertex + indices as u64 * 4
+                }
+                SumPart::Mesh(m) => m.len() as u64 * 3 * vertex,
+            })
+            .sum()
+    }
 }
 
 impl<'a> Reader<'a> {
@@ -101,6 +151,8 @@ impl<'a> Reader<'a> {
             drawing_bytes: 0,
             flat_bytes: 0,
             scene_fonts: std::cell::OnceCell::new(),
+            sums: std::collections::HashMap::new(),
+            sum_bytes: 0,
         }
     }
 
@@ -164,7 +216,10 @@ impl<'a> Reader<'a> {
                     imports,
                     root,
                     warnings,
-                    reading_bytes: self.drawing_bytes.saturating_add(self.flat_bytes),
+                    reading_bytes: self
+                        .drawing_bytes
+                        .saturating_add(self.flat_bytes)
+                        .saturating_add(self.sum_bytes),
                 })
             }
             Some(frame) => fail(pos, unclosed(&frame, "end of file")),
@@ -230,12 +285,14 @@ impl<'a> Reader<'a> {
         let mut ctx = ctx;
         let placement = match head.kind {
             // Their children start from the identity: the result is placed afterwards (an
-            // offset's distance is in its own coordinates, which a scale above it changes).
+            // offset's distance is in its own coordinates, which a scale above it changes; a
+            // Minkowski sum is made where OpenSCAD makes it, and kept by its text).
             NodeKind::LinearExtrude
             | NodeKind::RotateExtrude
             | NodeKind::Projection
             | NodeKind::Resize
-            | NodeKind::Offset => ctx.matrix.take(),
+            | NodeKind::Offset
+            | NodeKind::Minkowski => ctx.matrix.take(),
             _ => None,
         };
         self.open.push(Frame {
@@ -254,6 +311,7 @@ impl<'a> Reader<'a> {
             pos: head.pos,
             spec,
             placement,
+            start,
         });
         Ok(())
     }
@@ -1146,8 +1204,10 @@ impl<'a> Reader<'a> {
     }
 
     /// A finished `minkowski()` of solids: the left fold of its children's sums
-    /// ([`crate::geom`]), each a union of convex solids and closed mesh primitives; the
-    /// children's leaves leave the scene. One child is itself.
+    /// ([`crate::geom`]) in their own coordinates, each a union of convex solids and closed
+    /// mesh primitives, placed by the transform above; the children's leaves leave the scene.
+    /// One child is itself. The same statement met again takes the sum already made
+    /// ([`Self::sums`]), or the same error when the budget left is smaller than it needed.
     fn minkowski3(&mut self, mut frame: Frame) -> Result<Item, Fail> {
         let pos = frame.pos;
         let at = |e: Error| Fail {
@@ -1157,62 +1217,102 @@ impl<'a> Reader<'a> {
         // OpenSCAD leaves empty children out of the sum.
         frame.children.retain(|c| !matches!(c, CsgNode::Empty));
         if frame.children.len() < 2 {
-            return Ok(Item::Solid(frame.children.pop().unwrap_or(CsgNode::Empty)));
+            let node = frame.children.pop().unwrap_or(CsgNode::Empty);
+            self.place(&node, frame.placement.as_ref(), pos)?;
+            return Ok(Item::Solid(node));
         }
         let budget = self.max_vertices().saturating_sub(self.vertices);
-        let mut acc: Option<Vec<Piece>> = None;
-        // The operands are placed (M x = L x + t) before they are summed, and M(A) ⊕ M(B) =
-        // M(A ⊕ B) + t: each operand after the first brings the translation once too often.
-        let t = frame
-            .ctx
-            .matrix
-            .map_or(DVec3::ZERO, |m| DVec3::new(m[0][3], m[1][3], m[2][3]));
+        let key = spaced_once(&self.text[frame.start..self.parser.last_end]);
+        let sum = match self.sums.remove(&key) {
+            Some(sum) if sum.need > budget => return Err(at(crate::geom::over_budget())),
+            Some(sum) => sum,
+            None => {
+                let sum = self.sum_children(&frame.children, budget).map_err(at)?;
+                self.sum_bytes = self.sum_bytes.saturating_add(sum.bytes());
+                sum
+            }
+        };
         for c in &frame.children {
-            let p = pieces(c, &self.solids, &self.imports).map_err(at)?;
+            self.consume(c);
+        }
+        let node = self.sum_leaves(&sum.parts, frame.ctx.colour, pos);
+        self.sums.insert(key, sum);
+        self.place(&node, frame.placement.as_ref(), pos)?;
+        check_budget(self.vertices, self.max_vertices(), pos)?;
+        Ok(Item::Solid(node))
+    }
+
+    /// The left fold of `children`'s sums, and the most vertices a step was counted to bring.
+    fn sum_children(&self, children: &[CsgNode], budget: usize) -> Result<Sum, Error> {
+        let mut acc: Option<Vec<Piece>> = None;
+        let mut need = 0;
+        for c in children {
+            let p = pieces(c, &self.solids, &self.imports)?;
             if p.is_empty() {
                 continue;
             }
             acc = Some(match acc {
                 None => p,
-                Some(a) => minkowski3(&a, &p, budget)
-                    .map_err(at)?
-                    .into_iter()
-                    .map(|q| q.moved(-t))
-                    .collect(),
+                Some(a) => {
+                    let (sum, step) = minkowski3(&a, &p, budget)?;
+                    need = need.max(step);
+                    sum
+                }
             });
         }
-        for c in &frame.children {
-            self.consume(c);
-        }
+        Sum::of(acc.unwrap_or_default(), need)
+    }
+
+    /// A sum's parts as the scene's leaves, in `colour`, made by the statement at `pos`:
+    /// convex solids and closed meshes, in a union.
+    fn sum_leaves(&mut self, parts: &[SumPart], colour: Option<[f64; 4]>, pos: Pos) -> CsgNode {
         let mut leaves = vec![];
-        for p in acc.unwrap_or_default() {
+        for p in parts {
             match p {
-                Piece::Convex(v) => {
-                    let solid = convex_solid(&v, frame.ctx.colour, pos.line).map_err(at)?;
+                SumPart::Convex(s) => {
+                    let line = pos.line;
+                    let solid = ConvexSolid {
+                        colour,
+                        line,
+                        ..s.clone()
+                    };
                     self.vertices += solid.vertices.len();
                     self.solids.push(solid);
                     leaves.push(CsgNode::Solid(self.solids.len() - 1));
                 }
-                Piece::Mesh(m) => {
+                SumPart::Mesh(m) => {
                     self.vertices += m.len() * 3;
                     self.imports.push(Import {
                         file: format!("minkowski at {pos}"),
                         threshold: None,
                         matrix: None,
-                        colour: frame.ctx.colour,
+                        colour,
                         line: pos.line,
                         col: pos.col,
                         footprint: None,
-                        mesh: Some(std::sync::Arc::new(
-                            m.iter().map(|t| t.map(|v| v.to_array())).collect(),
-                        )),
+                        mesh: Some(m.clone()),
                     });
                     leaves.push(CsgNode::Solid(IMPORTED + self.imports.len() - 1));
                 }
             }
         }
-        check_budget(self.vertices, self.max_vertices(), pos)?;
-        Ok(Item::Solid(combine(Op::Union, leaves)))
+        combine(Op::Union, leaves)
+    }
+
+    /// The leaves under `node`, made in their own coordinates, moved by `placement` (the
+    /// transform above the node that made them).
+    fn place(&mut self, node: &CsgNode, placement: Option<&Mat4>, pos: Pos) -> Result<(), Fail> {
+        let Some(m) = placement else {
+            return Ok(());
+        };
+        let past_limit = coordinate_too_large(None);
+        move_leaves(
+            node,
+            &mut self.solids,
+            &mut self.imports,
+            m,
+            (pos, past_limit),
+        )
     }
 
     /// A finished `minkowski()` of 2D shapes: the left fold of the sums, a 2D union of
@@ -1221,13 +1321,11 @@ impl<'a> Reader<'a> {
         let pos = frame.pos;
         let flat_at = frame.first_flat.unwrap_or(pos);
         if frame.flats.len() < 2 {
-            return Ok(frame.flats.pop().map(|r| Item::Flat(r, flat_at)));
+            let placed = |r| placed_flat(r, frame.placement.as_ref());
+            return Ok(frame.flats.pop().map(|r| Item::Flat(placed(r), flat_at)));
         }
         let budget = self.max_vertices().saturating_sub(self.vertices);
         let mut acc: Option<Vec<Piece2>> = None;
-        // As in 3D: the placed operands carry the plane translation once each.
-        let [[_, _, tx], [_, _, ty]] = plane_part(frame.ctx.matrix.as_ref());
-        let t = glam::DVec2::new(tx, ty);
         for r in &frame.flats {
             let p = pieces2(r);
             if p.is_empty() {
@@ -1235,14 +1333,10 @@ impl<'a> Reader<'a> {
             }
             acc = Some(match acc {
                 None => p,
-                Some(a) => minkowski2(&a, &p, budget)
-                    .map_err(|e| Fail {
-                        pos,
-                        problem: e.context("minkowski()"),
-                    })?
-                    .into_iter()
-                    .map(|q| q.moved(-t))
-                    .collect(),
+                Some(a) => minkowski2(&a, &p, budget).map_err(|e| Fail {
+                    pos,
+                    problem: e.context("minkowski()"),
+                })?,
             });
         }
         let parts: Vec<Region> = acc
@@ -1265,7 +1359,48 @@ impl<'a> Reader<'a> {
         if parts.is_empty() {
             return Ok(None);
         }
-        Ok(Some(Item::Flat(region_of(Op::Union, parts), flat_at)))
+        let region = region_of(Op::Union, parts);
+        Ok(Some(Item::Flat(
+            placed_flat(region, frame.placement.as_ref()),
+            flat_at,
+        )))
+    }
+}
+
+/// `text` with each run of white space outside string literals as one space: two statements
+/// differ in it only where their tokens differ.
+pub(crate) fn spaced_once(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let (mut in_string, mut escaped, mut space) = (false, false, false);
+    for c in text.chars() {
+        if !in_string && c.is_ascii_whitespace() {
+            space = true;
+            continue;
+        }
+        if space && !out.is_empty() {
+            out.push(' ');
+        }
+        space = false;
+        out.push(c);
+        match (in_string, escaped, c) {
+            (true, true, _) => escaped = false,
+            (true, false, '\\') => escaped = true,
+            (_, _, '"') => in_string = !in_string,
+            _ => {}
+        }
+    }
+    out
+}
+
+/// A 2D result made in its own coordinates, moved in the plane by `placement` (the transform
+/// above the node that made it).
+fn placed_flat(region: Region, placement: Option<&Mat4>) -> Region {
+    match placement {
+        Some(m) => {
+            let m = plane_part(Some(m));
+            map_region(region, &|p| p.transformed(m))
+        }
+        None => region,
     }
 }
 

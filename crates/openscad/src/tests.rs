@@ -889,6 +889,117 @@ fn a_minkowski_sum_past_the_vertex_budget_is_refused_where_it_stands() {
     );
 }
 
+/// A solid's vertices as bits, and its faces.
+type SolidBits = (Vec<[u64; 3]>, Vec<Vec<usize>>);
+
+/// The solids of `scene` after its first `skip`, as bits: vertices and faces.
+fn solid_bits(scene: &CsgScene, skip: usize) -> Vec<SolidBits> {
+    scene.solids[skip..]
+        .iter()
+        .map(|s| {
+            let v = s.vertices.iter().map(|p| p.map(f64::to_bits)).collect();
+            (v, s.faces.to_vecs())
+        })
+        .collect()
+}
+
+const MINKOWSKI: &str = "minkowski() {\n  cube(size = [3, 1, 2]);\n  sphere(r = 0.5, $fn = 12);\n}";
+
+/// A `minkowski()` met again (a module called twice: the same statement, indented by its
+/// depth) takes the sum made the first time, placed by its own transform: its solids are
+/// those the statement gives alone, bit for bit, under a move, a turn, a scale and a mirror.
+#[test]
+fn a_minkowski_met_again_is_the_sum_made_alone() {
+    let deeper = MINKOWSKI.replace('\n', "\n\t\t");
+    for m in [
+        "[[1, 0, 0, 5], [0, 1, 0, -2], [0, 0, 1, 1], [0, 0, 0, 1]]",
+        "[[0, -1, 0, 0], [1, 0, 0, 3], [0, 0, 1, 0], [0, 0, 0, 1]]",
+        "[[2, 0, 0, 0], [0, 0.5, 0, 0], [0, 0, 3, 0], [0, 0, 0, 1]]",
+        "[[-1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]",
+    ] {
+        let alone = parse(&format!("multmatrix({m}) {{ {MINKOWSKI} }}"));
+        let text = format!(
+            "multmatrix([[1, 0, 0, 9], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {MINKOWSKI}\n\
+             group() {{ multmatrix({m}) {{ {deeper} }} }}"
+        );
+        let again = parse(&text);
+        let n = alone.solids.len();
+        assert_eq!(again.solids.len(), 2 * n, "{m}");
+        assert_eq!(solid_bits(&again, n), solid_bits(&alone, 0), "{m}");
+        again.solids[n..].iter().for_each(assert_outward);
+        // One sum held for both (the reading's bytes count what the sums held).
+        assert!(alone.reading_bytes > 0);
+        assert_eq!(again.reading_bytes, alone.reading_bytes, "{m}");
+    }
+}
+
+/// A sum made in its own coordinates and placed is the sum of the placed operands: a box
+/// ⊕ a box under a scale is the box of the scaled sizes.
+#[test]
+fn a_minkowski_under_a_scale_is_the_sum_of_the_scaled_operands() {
+    let s = parse(
+        "multmatrix([[2, 0, 0, 1], [0, 3, 0, 0], [0, 0, -1, 0], [0, 0, 0, 1]]) minkowski() { \
+         cube(size = [1, 1, 1]); cube(size = [2, 1, 3]); }",
+    );
+    assert_eq!(s.solids.len(), 1);
+    let v = &s.solids[0].vertices;
+    let lo = v
+        .iter()
+        .fold([f64::INFINITY; 3], |a, p| [0, 1, 2].map(|k| a[k].min(p[k])));
+    let hi = v.iter().fold([f64::NEG_INFINITY; 3], |a, p| {
+        [0, 1, 2].map(|k| a[k].max(p[k]))
+    });
+    assert_eq!((lo, hi), ([1.0, 0.0, -4.0], [7.0, 6.0, 0.0]));
+    assert_outward(&s.solids[0]);
+}
+
+/// The sum met again is refused where the budget left could not hold it, as it is when made.
+#[test]
+fn a_minkowski_met_again_past_the_budget_is_refused_as_when_made() {
+    let other = MINKOWSKI.replace("minkowski() {", "minkowski(convexity = 2) {");
+    let options = |max| ReadOptions {
+        max_vertices: Some(max),
+        ..ReadOptions::default()
+    };
+    let sum = parse(MINKOWSKI).solids[0].vertices.len();
+    // The operands bring 8 + 72 vertices and the sum is counted at 8 × 72 before it is made:
+    // room for the first sum, not for the second (its operands' 80 more leave 496).
+    let room = 80 + 8 * 72 + sum;
+    assert!(parse_csg_with(MINKOWSKI, "t.csg", &options(room)).is_ok());
+    let whole = parse_csg_with(
+        &format!("{MINKOWSKI}\n{MINKOWSKI}"),
+        "t.csg",
+        &options(1 << 20),
+    );
+    for second in [MINKOWSKI.to_string(), other] {
+        let text = format!("{MINKOWSKI}\n{second}");
+        let e = parse_csg_with(&text, "t.csg", &options(room))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("t.csg:5:1: minkowski(): the Minkowski sum would pass"),
+            "{e}"
+        );
+    }
+    assert_eq!(whole.unwrap().solids.len(), 2);
+}
+
+#[test]
+fn statements_are_keyed_by_their_tokens_not_their_indentation() {
+    use crate::reader::spaced_once;
+    assert_eq!(spaced_once("a(x = 1) {\n\t\tb();\n}"), "a(x = 1) { b(); }");
+    assert_eq!(spaced_once("a(x = 1)   {  b(); }"), "a(x = 1) { b(); }");
+    // White space inside a string is the string's.
+    assert_ne!(
+        spaced_once("t(text = \"a  b\");"),
+        spaced_once("t(text = \"a b\");")
+    );
+    assert_eq!(
+        spaced_once("t(text = \"a \\\"  b\")  ;"),
+        "t(text = \"a \\\"  b\") ;"
+    );
+}
+
 /// OpenSCAD reports a `rotate_extrude` of a shape on both sides of the axis as an error but
 /// draws the rest of the design: csgpix warns and goes on.
 #[test]
