@@ -5,9 +5,7 @@ use csgpix_scene::error::{CsgError, Rule};
 use csgpix_scene::Error;
 use glam::DVec2;
 
-use crate::extrude::{
-    default_slices, map_region, offset, region_points, Linear, Offset, Poly2, Region,
-};
+use crate::extrude::{default_slices, offset, region_points, Linear, Offset, Poly2, Region};
 use crate::value::must;
 use crate::{consts_::*, frame::*, lex::*, linalg::*, node::*, primitives::*};
 
@@ -26,8 +24,9 @@ pub(crate) fn hull_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     Ok(Some(Item::Flat(Region::Poly(Poly2 { paths: vec![h] }), at)))
 }
 
-/// A finished `offset()`.
-pub(crate) fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
+/// A finished `offset()`, in its own coordinates (the caller places it): the outline and
+/// where its first 2D child stands.
+pub(crate) fn offset_flat(frame: Frame) -> Result<Option<(Region, Pos)>, Fail> {
     let pos = frame.pos;
     if !frame.children.is_empty() {
         let node = "offset";
@@ -42,9 +41,7 @@ pub(crate) fn offset_flat(frame: Frame) -> Result<Option<Item>, Fail> {
     let at = frame.first_flat.unwrap_or(pos);
     let region = region_of(Op::Union, frame.flats);
     let r = offset(&region, o, &sin_cos_degrees).map_err(|problem| Fail { pos, problem })?;
-    let m = plane_part(frame.placement.as_ref());
-    let r = map_region(r, &|p| p.transformed(m));
-    Ok(Some(Item::Flat(r, at)))
+    Ok(Some((r, at)))
 }
 
 /// The 2D tree an operation makes of its 2D children.

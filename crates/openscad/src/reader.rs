@@ -79,8 +79,10 @@ pub(crate) struct Reader<'a> {
     /// space: a module called again gives the same statement, indented by its depth), whose
     /// sum in its own coordinates is the same (the sum is placed after, [`Self::minkowski3`]).
     sums: std::collections::HashMap<String, Sum>,
-    /// The bytes [`Self::sums`] holds ([`CsgScene::reading_bytes`]).
-    sum_bytes: u64,
+    /// Each `offset()`'s outline in its own coordinates, by its text as [`Self::sums`].
+    outlines: std::collections::HashMap<String, Region>,
+    /// The bytes [`Self::sums`] and [`Self::outlines`] hold ([`CsgScene::reading_bytes`]).
+    kept_bytes: u64,
 }
 
 /// A `minkowski()`'s sum in its own coordinates, as the scene's solids and meshes (without
@@ -152,7 +154,8 @@ impl<'a> Reader<'a> {
             flat_bytes: 0,
             scene_fonts: std::cell::OnceCell::new(),
             sums: std::collections::HashMap::new(),
-            sum_bytes: 0,
+            outlines: std::collections::HashMap::new(),
+            kept_bytes: 0,
         }
     }
 
@@ -219,7 +222,7 @@ impl<'a> Reader<'a> {
                     reading_bytes: self
                         .drawing_bytes
                         .saturating_add(self.flat_bytes)
-                        .saturating_add(self.sum_bytes),
+                        .saturating_add(self.kept_bytes),
                 })
             }
             Some(frame) => fail(pos, unclosed(&frame, "end of file")),
@@ -428,7 +431,7 @@ impl<'a> Reader<'a> {
             NodeKind::Hull => hull_flat(frame),
             NodeKind::Minkowski if frame.flats.is_empty() => self.minkowski3(frame).map(Some),
             NodeKind::Minkowski => self.minkowski2(frame),
-            NodeKind::Offset => offset_flat(frame),
+            NodeKind::Offset => self.offset(frame),
             NodeKind::Projection => {
                 let (item, below) = projection(frame, &self.solids, &self.imports)?;
                 self.consume(&below);
@@ -1228,7 +1231,7 @@ impl<'a> Reader<'a> {
             Some(sum) => sum,
             None => {
                 let sum = self.sum_children(&frame.children, budget).map_err(at)?;
-                self.sum_bytes = self.sum_bytes.saturating_add(sum.bytes());
+                self.kept_bytes = self.kept_bytes.saturating_add(sum.bytes());
                 sum
             }
         };
@@ -1240,6 +1243,28 @@ impl<'a> Reader<'a> {
         self.place(&node, frame.placement.as_ref(), pos)?;
         check_budget(self.vertices, self.max_vertices(), pos)?;
         Ok(Item::Solid(node))
+    }
+
+    /// A finished `offset()`: its outline in its own coordinates, the one made before when the
+    /// same statement was met (a module called again), placed by the transform above it.
+    fn offset(&mut self, frame: Frame) -> Result<Option<Item>, Fail> {
+        let key = spaced_once(&self.text[frame.start..self.parser.last_end]);
+        let m = plane_part(frame.placement.as_ref());
+        let (region, at) = match self.outlines.get(&key) {
+            Some(r) => (r.clone(), frame.first_flat.unwrap_or(frame.pos)),
+            None => match offset_flat(frame)? {
+                Some((r, at)) => {
+                    self.kept_bytes = self.kept_bytes.saturating_add(region_bytes(&r));
+                    self.outlines.insert(key, r.clone());
+                    (r, at)
+                }
+                None => return Ok(None),
+            },
+        };
+        Ok(Some(Item::Flat(
+            map_region(region, &|p| p.transformed(m)),
+            at,
+        )))
     }
 
     /// The left fold of `children`'s sums, and the most vertices a step was counted to bring.

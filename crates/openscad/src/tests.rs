@@ -984,6 +984,28 @@ fn a_minkowski_met_again_past_the_budget_is_refused_as_when_made() {
     assert_eq!(whole.unwrap().solids.len(), 2);
 }
 
+/// An `offset()` met again (a module called twice) takes the outline made the first time,
+/// placed by its own transform: the prism over it is the one the statement gives alone.
+#[test]
+fn an_offset_met_again_is_the_outline_made_alone() {
+    let offset = "offset(r = 0.5, $fn = 16) {\n  square(size = [2, 1]);\n}";
+    let deeper = offset.replace('\n', "\n\t\t\t");
+    let m = "[[0, -2, 0, 3], [1, 0, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]";
+    let alone = parse(&format!(
+        "linear_extrude(height = 1) {{ multmatrix({m}) {offset} }}"
+    ));
+    let again = parse(&format!(
+        "linear_extrude(height = 1) {{ {offset} }}\n\
+         linear_extrude(height = 1) {{ group() {{ multmatrix({m}) {{ {deeper} }} }} }}"
+    ));
+    let n = alone.solids.len();
+    assert_eq!(again.solids.len(), 2 * n);
+    assert_eq!(solid_bits(&again, n), solid_bits(&alone, 0));
+    // One outline held for both.
+    assert!(alone.reading_bytes > 0);
+    assert_eq!(again.reading_bytes, alone.reading_bytes);
+}
+
 #[test]
 fn statements_are_keyed_by_their_tokens_not_their_indentation() {
     use crate::reader::spaced_once;
