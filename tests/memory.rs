@@ -153,6 +153,62 @@ fn a_streamed_volume_is_larger_than_the_address_space() {
     }
 }
 
+/// The NRRD file is streamed wherever the runs' bound fits the limit, though it pass the
+/// whole volume's (forty layers over every column of a 64³ grid: a run each, a bound above the
+/// 256 KiB volume), and the volume is held only under a limit between the two bounds; a limit
+/// below both is refused with the smaller. The same file either way.
+#[test]
+fn the_volume_is_held_only_where_the_streamed_bound_does_not_fit() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("layers.csg");
+    let layers: String = (0..40)
+        .map(|i| format!(" multmatrix([[1,0,0,0],[0,1,0,0],[0,0,1,{}],[0,0,0,1]]) cube(size = [10, 10, 1]);\n", 2 * i))
+        .collect();
+    std::fs::write(&scene, format!("union() {{\n{layers}}}\n")).unwrap();
+    let out = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
+    let run = |o: &str, limit: Option<u64>| {
+        let mut args = vec![
+            "voxelize",
+            scene.to_str().unwrap(),
+            "--res",
+            "64x64x64",
+            "-o",
+            o,
+        ];
+        let limit = limit.map(|m| m.to_string());
+        if let Some(m) = &limit {
+            args.extend(["--max-memory", m.as_str()]);
+        }
+        json_estimate(&args)
+    };
+    let streamed = run(&out("s.nrrd"), None);
+    // A limit just below the streamed bound (MiB, rounded down).
+    let between = (streamed >> 20) - u64::from(streamed % (1 << 20) == 0);
+    let held = run(&out("h.nrrd"), Some(between));
+    assert!(held < streamed, "held {held}, streamed {streamed}");
+    assert!(held <= between << 20, "held {held} over {between} MiB");
+    let (a, b) = (
+        std::fs::read(out("s.nrrd")).unwrap(),
+        std::fs::read(out("h.nrrd")).unwrap(),
+    );
+    assert!(a == b && a.len() > 64 * 64 * 64);
+    let below = (held >> 20).saturating_sub(1).to_string();
+    let o = out("r.nrrd");
+    let args = [
+        "voxelize",
+        scene.to_str().unwrap(),
+        "--res",
+        "64x64x64",
+        "-o",
+        &o,
+    ];
+    let refused_run = common::csgpix(&[&args[..], &["--max-memory", &below]].concat());
+    refused(
+        &refused_run,
+        &format!("about {} MiB", held.div_ceil(1 << 20)),
+    );
+}
+
 #[test]
 fn a_difference_of_thousands_of_solids_is_refused_by_render_and_voxelized_in_blist() {
     let dir = tempfile::tempdir().unwrap();

@@ -278,6 +278,43 @@ impl<'a> Columns<'a> {
         prims: &[u32],
         counts: &mut OpCounts,
     ) -> ColumnRuns {
+        let (seg, again) = self.panel_segments(b, prims);
+        let masks = seg.masks(self.depths.len());
+        let labels = eval.eval(&masks, counts);
+        let mut out = ColumnRuns {
+            columns: b,
+            start: Vec::with_capacity(b.pixels() + 1),
+            runs: Vec::with_capacity(seg.starts.len()),
+        };
+        out.start.push(0);
+        let mut made = seg.columns();
+        for same in again {
+            let from = out.runs.len();
+            match (same, out.start.len()) {
+                (true, n) if n >= 2 => out.runs.extend_from_within(out.start[n - 2]..from),
+                _ => {
+                    let Some((starts, range)) = made.next() else {
+                        break;
+                    };
+                    for (&k, i) in starts.iter().zip(range) {
+                        // A scene without primitives has no labels: nothing is inside.
+                        let colour = self.colour(labels.get(i).copied().unwrap_or(0));
+                        let last = out.runs.last().filter(|_| out.runs.len() > from);
+                        if last.is_none_or(|r| r.colour != colour) {
+                            out.runs.push(Run { k, colour });
+                        }
+                    }
+                }
+            }
+            out.start.push(out.runs.len());
+        }
+        out
+    }
+
+    /// The segments of the columns of box `b`, whose primitives are `prims`, and per column
+    /// (row-major) whether its primitive runs are the column's before it in its row (its
+    /// segments then not made again).
+    fn panel_segments(&self, b: PixelBox, prims: &[u32]) -> (Segments, Vec<bool>) {
         let nz = self.slicer.grid.dims[2] as u32;
         let mut seg = Segments::default();
         let mut span = vec![];
@@ -330,36 +367,7 @@ impl<'a> Columns<'a> {
                 std::mem::swap(&mut held, &mut before);
             }
         }
-        let masks = seg.masks(self.depths.len());
-        let labels = eval.eval(&masks, counts);
-        let mut out = ColumnRuns {
-            columns: b,
-            start: Vec::with_capacity(b.pixels() + 1),
-            runs: Vec::with_capacity(seg.starts.len()),
-        };
-        out.start.push(0);
-        let mut made = seg.columns();
-        for same in again {
-            let from = out.runs.len();
-            match (same, out.start.len()) {
-                (true, n) if n >= 2 => out.runs.extend_from_within(out.start[n - 2]..from),
-                _ => {
-                    let Some((starts, range)) = made.next() else {
-                        break;
-                    };
-                    for (&k, i) in starts.iter().zip(range) {
-                        // A scene without primitives has no labels: nothing is inside.
-                        let colour = self.colour(labels.get(i).copied().unwrap_or(0));
-                        let last = out.runs.last().filter(|_| out.runs.len() > from);
-                        if last.is_none_or(|r| r.colour != colour) {
-                            out.runs.push(Run { k, colour });
-                        }
-                    }
-                }
-            }
-            out.start.push(out.runs.len());
-        }
-        out
+        (seg, again)
     }
 
     /// A label's colour code (0: outside), as the slab routes colour it.
@@ -898,33 +906,41 @@ impl BandSweep {
     }
 }
 
-/// Segments the columns of a panel can have: per column one, plus two per run of each of its
-/// `prims` primitives (a convex solid has one run, a mesh about one per two crossings: taken
-/// as [`MESH_RUNS`], as [`crate::sampled::Sampled::memory_estimate`] takes two crossings, a
-/// dataset as many as the slabs unless `counts` counted its runs, then those), never more
-/// than the slabs.
+/// Segments the columns of panel `i` can have: per column one, plus two per primitive run
+/// ([`primitive_runs`]), never more than the slabs.
 fn segments_bound(slicer: &Slicer, prims: &[u32], counts: &DatasetCounts, i: usize) -> u64 {
     let [pw, ph] = counts.panel.map(|p| p as u64);
     let (columns, nz) = (pw.saturating_mul(ph), slicer.grid.dims[2] as u64);
+    let runs = primitive_runs(slicer, prims, counts, i);
+    columns
+        .saturating_add(runs.saturating_mul(2))
+        .min(columns.saturating_mul(nz.max(1)))
+}
+
+/// The primitive runs the columns of panel `i` can hold: a primitive has runs only on the
+/// columns of its outline ([`Columns::panel_runs`] visits no others), a convex solid one
+/// there, a mesh about one per two crossings (taken as [`MESH_RUNS`], as
+/// [`crate::sampled::Sampled::memory_estimate`] takes two crossings), a dataset as many as
+/// the slabs unless `counts` counted its runs, then those.
+fn primitive_runs(slicer: &Slicer, prims: &[u32], counts: &DatasetCounts, i: usize) -> u64 {
+    let nz = slicer.grid.dims[2] as u64;
     let solids = slicer.lists.len();
-    let runs: u64 = prims
+    let b = panel_box(slicer, counts.panel, i);
+    let bounded: u64 = prims
         .iter()
         .map(|&p| {
             let j = (p as usize).wrapping_sub(solids);
-            match slicer.sampled.get(j) {
+            let per_column = match slicer.sampled.get(j) {
                 None => 1,
                 Some(_) if counts.counted[j] => 0,
                 Some(s) if s.is_dataset() => nz,
                 Some(_) => MESH_RUNS,
-            }
+            };
+            let covered = slicer.outlines[p as usize].and_then(|o| o.intersect(b));
+            per_column.saturating_mul(covered.map_or(0, |o| o.pixels() as u64))
         })
-        .sum();
-    let each = runs.saturating_mul(2).saturating_add(1);
-    let counted = counts.per_panel[i].saturating_mul(2);
-    columns
-        .saturating_mul(each)
-        .saturating_add(counted)
-        .min(columns.saturating_mul(nz.max(1)))
+        .fold(0u64, u64::saturating_add);
+    bounded.saturating_add(counts.per_panel[i])
 }
 
 /// The runs of the datasets that go a lattice cell at a time ([`DatasetColumns::by_cells`]),
@@ -1163,6 +1179,32 @@ mod tests {
                         prop_assert_eq!(got, slabs(&all, &slicer, x, y), "pixel {},{}", x, y);
                     }
                 }
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// The estimate's bounds hold every panel's primitive runs and segments: each
+        /// primitive counted on the columns of its outline only.
+        #[test]
+        fn a_panel_holds_no_more_runs_and_segments_than_its_bounds(
+            text in csgpix_testkit::random_scene(),
+            dims in prop::array::uniform3(1usize..40),
+            panel in prop::array::uniform2(1usize..12),
+        ) {
+            let scene = csgpix_openscad::parse_csg(&text, "random").unwrap();
+            let grid = Grid::of_scene(&scene, dims).unwrap();
+            let opts = SlicerOptions { panel: Some(panel), ..SlicerOptions::default() };
+            let slicer = Slicer::new(&scene, grid, opts).unwrap();
+            let columns = Columns::new(&slicer, false).unwrap();
+            let lists = panel_lists(&slicer, panel);
+            let counts = DatasetCounts::of(&slicer, panel, &lists);
+            for (i, l) in lists.iter().enumerate() {
+                let (seg, _) = columns.panel_segments(panel_box(&slicer, panel, i), l);
+                let (runs, segs) = (seg.held.len() as u64, seg.starts.len() as u64);
+                prop_assert!(runs <= primitive_runs(&slicer, l, &counts, i), "panel {}", i);
+                prop_assert!(segs <= segments_bound(&slicer, l, &counts, i), "panel {}", i);
             }
         }
     }

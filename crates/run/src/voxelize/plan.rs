@@ -166,17 +166,21 @@ impl Plan {
             let each = || csgpix_voxel::runs::memory_estimates(slicer, e, threads);
             self.pool.install(each)
         });
-        let stream = streams(job, self.route, runs_nrrd);
+        // Beside the route's own memory: the planes held and what the reader freed, which
+        // stays with the process (CsgScene::reading_bytes).
+        let beside = slicer
+            .planes_bytes(scene, self.runs(), threads)
+            .saturating_add(scene.reading_bytes);
+        let room = job.max_memory.bytes().saturating_sub(beside);
+        let stream = streams(job, self.route, runs_nrrd, room);
         let store_nodes = self.store_nodes(job, scene)?;
         let need = self
             .pool
             .install(|| self.estimate(job, stream, runs_nrrd))?
-            .saturating_add(slicer.planes_bytes(scene, self.runs(), threads));
-        // What the reader freed stays with the process (CsgScene::reading_bytes).
+            .saturating_add(beside);
         let read = scene
             .reading_bytes
             .saturating_add(csgpix_voxel::PROCESS_BYTES);
-        let need = need.saturating_add(scene.reading_bytes);
         Ok(Budget {
             need: need.saturating_add(store_nodes.unwrap_or(0)).max(read),
             stream,
@@ -288,15 +292,18 @@ pub fn preview_bytes([nx, ny, nz]: [usize; 3]) -> u64 {
 
 /// Whether the NRRD file is written slice by slice as the run route sweeps them, the volume
 /// never held: when nothing else needs it (no --slices, --preview, --mesh or --store) and the
-/// columns' runs, held for the sweep, are estimated below the volume (thousands of small
-/// primitives can make them the larger). `runs_nrrd`: the run route's NRRD estimates,
-/// without and with the volume.
-fn streams(job: &VoxelizeJob, route: Route, runs_nrrd: Option<[u64; 2]>) -> bool {
+/// estimate of the columns' runs, held for the sweep, is below the whole volume's or within
+/// `room` (the memory limit less what either way holds beside). Swept, the run is faster and
+/// its peak lower on every design measured (docs/memory.md, "Written slice by slice"): its
+/// bound counts each primitive on every column of its outline box, so it can pass the volume
+/// where the runs do not; the volume is held only where that bound does not fit. `runs_nrrd`:
+/// the run route's NRRD estimates, without and with the volume.
+fn streams(job: &VoxelizeJob, route: Route, runs_nrrd: Option<[u64; 2]>, room: u64) -> bool {
     let o = &job.outputs;
     let alone = o.slices.is_none() && o.preview.is_none() && o.mesh.is_none();
     let runs = matches!(route, Route::Runs { .. });
     let eligible = job.format() == Format::Nrrd && o.store.is_none() && alone && runs;
-    eligible && runs_nrrd.is_some_and(|[swept, whole]| swept <= whole)
+    eligible && runs_nrrd.is_some_and(|[swept, whole]| swept <= whole || swept <= room)
 }
 
 /// Whether the store is written brick by brick (a chunk row of one XY tile: the run route)
