@@ -497,12 +497,19 @@ pub(crate) fn compact(points: Vec<Vec3>, mut faces: Vec<Vec<usize>>) -> Shape {
 
 /// Checks that faces (counter-clockwise seen from outside) close a convex solid: every
 /// directed edge once and its reverse once, no degenerate face, positive volume, and no used
-/// point outside any face plane by more than [`CONVEXITY_TOLERANCE`].
+/// point outside any face plane by more than [`CONVEXITY_TOLERANCE`]. The edges are checked
+/// last: a large concave polyhedron (a thread) fails at its first faces' planes, before
+/// the edges of every face are hashed.
 pub(crate) fn check_convex_closed(
     vertices: &[Vec3],
     faces: &[Vec<usize>],
 ) -> csgpix_scene::Result<()> {
-    check_closed(faces)?;
+    check_convex(vertices, faces)?;
+    check_closed(faces)
+}
+
+/// [`check_convex_closed`] but the edges.
+fn check_convex(vertices: &[Vec3], faces: &[Vec<usize>]) -> csgpix_scene::Result<()> {
     let mut used: Vec<usize> = faces.iter().flatten().copied().collect();
     used.sort_unstable();
     used.dedup();
@@ -514,18 +521,32 @@ pub(crate) fn check_convex_closed(
         return Err(Error::WrongWinding);
     }
     let tolerance = CONVEXITY_TOLERANCE * magnitude;
-    for (k, plane) in planes.iter().enumerate() {
-        let unit = plane.normal.map(|c| c / norm(plane.normal));
-        for &i in &used {
-            let d = dot(unit, sub(vertices[i], plane.centre));
-            if d > tolerance {
-                return Err(Error::NotConvex {
-                    point: i,
-                    distance: d,
-                    face: k,
-                });
-            }
+    let units: Vec<Vec3> = planes
+        .iter()
+        .map(|p| p.normal.map(|c| c / norm(p.normal)))
+        .collect();
+    let outside = |k: usize, i: usize| -> csgpix_scene::Result<()> {
+        let d = dot(units[k], sub(vertices[i], planes[k].centre));
+        match d > tolerance {
+            true => Err(Error::NotConvex {
+                point: i,
+                distance: d,
+                face: k,
+            }),
+            false => Ok(()),
         }
+    };
+    // The corners of the next faces first (in a file, mostly the face's neighbours): a
+    // concave polyhedron is found out there in a pass over its faces, not a face against
+    // every point. The same test, so the same answer.
+    const NEAR: usize = 4;
+    for k in 0..faces.len() {
+        for f in (1..=NEAR).map(|j| &faces[(k + j) % faces.len()]) {
+            f.iter().try_for_each(|&i| outside(k, i))?;
+        }
+    }
+    for k in 0..faces.len() {
+        used.iter().try_for_each(|&i| outside(k, i))?;
     }
     Ok(())
 }

@@ -1159,3 +1159,50 @@ fn a_minkowski_of_a_mesh_boolean_is_the_same_in_every_run() {
         assert_eq!(again.imports, first.imports);
     }
 }
+
+/// The direct statement of [`check_convex_closed`]: closed, a volume, and no used point in
+/// front of any face's plane by more than the tolerance, every face against every point.
+fn convex_closed_directly(vertices: &[Vec3], faces: &[Vec<usize>]) -> bool {
+    let mut used: Vec<usize> = faces.iter().flatten().copied().collect();
+    used.sort_unstable();
+    used.dedup();
+    let (extent, magnitude) = scale(vertices, &used);
+    let Ok(planes) = face_planes(vertices, faces, extent) else {
+        return false;
+    };
+    let volume: f64 = planes.iter().map(|p| dot(p.centre, p.normal) / 6.0).sum();
+    let tolerance = CONVEXITY_TOLERANCE * magnitude;
+    let behind = planes.iter().all(|p| {
+        let unit = p.normal.map(|c| c / norm(p.normal));
+        used.iter()
+            .all(|&i| dot(unit, sub(vertices[i], p.centre)) <= tolerance)
+    });
+    check_closed(faces).is_ok() && volume > 1e-12 * extent.powi(3) && behind
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+    /// A hull of random points, one of its vertices moved in or out (a dent, a bump, or
+    /// nothing), and its faces in a random turn: judged convex and closed exactly as the
+    /// direct test judges it, though concave ones are found out by their neighbours first.
+    #[test]
+    fn a_polyhedron_is_convex_as_the_direct_test_says(
+        points in prop::collection::vec(prop::array::uniform3(-10.0f64..10.0), 5..40),
+        moved in any::<prop::sample::Index>(),
+        by in -0.5f64..0.5,
+        turn in 0usize..64,
+    ) {
+        let pts: Vec<glam::DVec3> = points.iter().map(|&p| glam::DVec3::from(p)).collect();
+        let Ok((v, mut faces)) = crate::hull::hull3(&pts) else { return Ok(()) };
+        let mut vertices: Vec<Vec3> = v.iter().map(|p| p.to_array()).collect();
+        let i = moved.index(vertices.len());
+        let c = v.iter().sum::<glam::DVec3>() / v.len() as f64;
+        vertices[i] = (v[i] + (v[i] - c) * by).to_array();
+        let k = turn % faces.len();
+        faces.rotate_left(k);
+        prop_assert_eq!(
+            check_convex_closed(&vertices, &faces).is_ok(),
+            convex_closed_directly(&vertices, &faces)
+        );
+    }
+}
