@@ -207,6 +207,49 @@ mod tests {
         }
     }
 
+    /// Pieces of every size (zeros, data, a block's tail) after prefixes of any length, with
+    /// holes of one block and of sixteen: the file reads back as every byte written, and
+    /// each byte is counted written or skipped.
+    #[test]
+    fn pieces_of_any_size_read_back_as_written() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |n: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % n
+        };
+        for _ in 0..200 {
+            let prefix = vec![1u8; next(3 * BLOCK) as usize];
+            let pieces: Vec<Vec<u8>> = (0..next(12) + 1)
+                .map(|_| {
+                    let scale = [2, 40, 200][next(3) as usize];
+                    let len = next(scale * BLOCK) as usize;
+                    let fill = [0u8, 0, 7][next(3) as usize];
+                    let mut p = vec![fill; len];
+                    if len > 0 && next(2) == 0 {
+                        p[next(len as u64) as usize] = 3;
+                    }
+                    p
+                })
+                .collect();
+            let hole = [1, 16 * BLOCK][next(2) as usize];
+            let (out, (written, skipped)) = through_with(hole, &prefix, &pieces);
+            let want: Vec<u8> = prefix
+                .iter()
+                .chain(pieces.iter().flatten())
+                .copied()
+                .collect();
+            assert!(
+                out == want,
+                "{} bytes read back, {} written",
+                out.len(),
+                want.len()
+            );
+            assert_eq!(written + skipped + prefix.len() as u64, want.len() as u64);
+        }
+    }
+
     #[test]
     fn only_runs_of_zeros_as_long_as_a_hole_are_skipped() {
         let block = BLOCK as usize;
