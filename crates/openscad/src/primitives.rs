@@ -334,8 +334,9 @@ pub(crate) enum Polyhedron {
     /// Closed, convex, faces counter-clockwise seen from outside.
     Convex(Shape),
     /// Its triangles, in the file's coordinates: closed or not
-    /// (`csgpix_scene::winding`; the reader warns of one that is not).
-    Mesh(Vec<[Vec3; 3]>),
+    /// (`csgpix_scene::winding`; the reader warns of one that is not, from the same
+    /// triangles on the points welded, [`welded`]).
+    Mesh(Vec<[Vec3; 3]>, csgpix_scene::trimesh::TriMesh),
 }
 
 /// `polyhedron(points, faces | triangles)` as OpenSCAD takes it: faces listed clockwise seen
@@ -386,14 +387,38 @@ pub(crate) fn polyhedron(
     if small && check_convex_closed(&points, &faces).is_ok() {
         return Ok(Some(Polyhedron::Convex(compact(points, faces))));
     }
-    let mut tris = Vec::new();
+    let (mut tris, mut indices) = (Vec::new(), Vec::new());
     for f in &faces {
         let corners: Vec<DVec3> = f.iter().map(|&i| DVec3::from(points[i])).collect();
         for t in csgpix_scene::facet::triangulate(&corners) {
             tris.push(t.map(|j| points[f[j]]));
+            indices.push(t.map(|j| f[j]));
         }
     }
-    Ok(Some(Polyhedron::Mesh(tris)))
+    Ok(Some(Polyhedron::Mesh(tris, welded(&points, &indices))))
+}
+
+/// Triangles `indices` into `points` as the mesh `TriMesh::from_f64` welds from their
+/// corners (equal coordinates one vertex, `-0.0` as `0.0`, numbered as first met, with the
+/// coordinates first met), each point looked up once rather than every corner.
+pub(crate) fn welded(points: &[Vec3], indices: &[[usize; 3]]) -> csgpix_scene::trimesh::TriMesh {
+    let mut at: HashMap<[u64; 3], u32> = HashMap::with_capacity(points.len());
+    let (mut vertices, mut id) = (Vec::new(), vec![u32::MAX; points.len()]);
+    let mut vertex = |i: usize| {
+        if id[i] == u32::MAX {
+            let key = points[i].map(|c| (c + 0.0).to_bits());
+            id[i] = *at.entry(key).or_insert_with(|| {
+                vertices.push(DVec3::from(points[i]));
+                (vertices.len() - 1) as u32
+            });
+        }
+        id[i]
+    };
+    let triangles = indices.iter().map(|t| t.map(&mut vertex)).collect();
+    csgpix_scene::trimesh::TriMesh {
+        vertices,
+        triangles,
+    }
 }
 
 /// `points` as finite `[x, y, z]`s, or `None` (with OpenSCAD's words) where

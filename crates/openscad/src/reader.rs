@@ -790,8 +790,8 @@ impl<'a> Reader<'a> {
             _ => match polyhedron(&head.params, budget, &mut self.warnings)? {
                 None => return Ok(self.removed(None, head.pos, ctx.skip, false)),
                 Some(Polyhedron::Convex(shape)) => Some(shape),
-                Some(Polyhedron::Mesh(tris)) => {
-                    return self.mesh_polyhedron(&tris, head, ctx, budget);
+                Some(Polyhedron::Mesh(tris, welded)) => {
+                    return self.mesh_polyhedron(&tris, &welded, head, ctx, budget);
                 }
             },
         };
@@ -864,6 +864,7 @@ impl<'a> Reader<'a> {
     fn mesh_polyhedron(
         &mut self,
         tris: &[[[f64; 3]; 3]],
+        welded: &csgpix_scene::trimesh::TriMesh,
         head: &Head,
         ctx: &Ctx,
         budget: usize,
@@ -879,7 +880,7 @@ impl<'a> Reader<'a> {
             name: "polyhedron",
         };
         self.vertices += tris.len() * 3;
-        self.warn_open_polyhedron(tris, head.pos);
+        self.warn_open_polyhedron(welded, head.pos);
         let tris = tris.iter().map(|t| t.map(DVec3::from)).collect();
         self.push_mesh(tris, &to).map(|n| Some(Item::Solid(n)))
     }
@@ -1066,8 +1067,7 @@ impl<'a> Reader<'a> {
     /// render drops it with an error (`createNefPolyhedronFromPolySet`, src/cgalutils.cc: "The
     /// given mesh is not closed!"); csgpix voxelizes it by its winding number
     /// (`csgpix_scene::winding`) and warns, naming the open edges.
-    fn warn_open_polyhedron(&mut self, tris: &[[[f64; 3]; 3]], pos: Pos) {
-        let mesh = csgpix_scene::trimesh::TriMesh::from_f64(tris);
+    fn warn_open_polyhedron(&mut self, mesh: &csgpix_scene::trimesh::TriMesh, pos: Pos) {
         if let Ok(Some(what)) = mesh.open_edges_summary("polyhedron") {
             let msg = format!(
                 "polyhedron is not closed: {what}; OpenSCAD's render drops it, csgpix \

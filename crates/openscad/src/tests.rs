@@ -1206,3 +1206,41 @@ proptest! {
         );
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+    /// A polyhedron's points welded (equal coordinates, `-0.0` and `0.0`, made one) make the
+    /// mesh its triangles' corners welded make, bit for bit, and so the same words of its
+    /// open edges.
+    #[test]
+    fn points_welded_tell_the_open_edges_of_corners_welded(
+        points in prop::collection::vec(prop::array::uniform3(-2i8..2), 4..24),
+        picks in prop::collection::vec(prop::array::uniform3(any::<prop::sample::Index>()), 1..40),
+        negative in any::<bool>(),
+    ) {
+        // Coarse coordinates, so points repeat; every other point's zeros negative.
+        let points: Vec<Vec3> = points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                p.map(|c| match (c, negative && i % 2 == 0) {
+                    (0, true) => -0.0,
+                    _ => f64::from(c) / 2.0,
+                })
+            })
+            .collect();
+        let indices: Vec<[usize; 3]> =
+            picks.iter().map(|t| t.map(|i| i.index(points.len()))).collect();
+        let tris: Vec<[Vec3; 3]> = indices.iter().map(|t| t.map(|i| points[i])).collect();
+        let (a, b) = (welded(&points, &indices), csgpix_scene::trimesh::TriMesh::from_f64(&tris));
+        let bits = |m: &csgpix_scene::trimesh::TriMesh| {
+            m.vertices.iter().map(|v| v.to_array().map(f64::to_bits)).collect::<Vec<_>>()
+        };
+        prop_assert_eq!(bits(&a), bits(&b));
+        prop_assert_eq!(&a.triangles, &b.triangles);
+        prop_assert_eq!(
+            a.open_edges_summary("polyhedron").ok(),
+            b.open_edges_summary("polyhedron").ok()
+        );
+    }
+}
