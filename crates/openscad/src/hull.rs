@@ -14,11 +14,15 @@
 
 use csgpix_scene::Error;
 use glam::{DVec2, DVec3};
+use std::mem::take;
 
 use csgpix_scene::Result;
 
 /// Relative tolerance: a point closer than this times the extent to a face's plane is on it.
 const EPS: f64 = 1e-9;
+
+/// Most points of room a removed face's conflict list keeps for the face put in its slot.
+const REUSED: usize = 16;
 
 /// No face (an unset adjacency) or no point.
 const NONE: usize = usize::MAX;
@@ -94,6 +98,14 @@ struct Hull<'a> {
     pass: u32,
     /// Per point: the new face whose horizon edge starts there, during one step.
     starts: Vec<usize>,
+    /// One step's scratch, kept from step to step (a sum's hull adds thousands of points,
+    /// nearly all of them vertices): the faces seen, their horizon, the faces a new face
+    /// would fold over, the points handed on, the new faces.
+    visible: Vec<usize>,
+    horizon: Vec<(usize, usize, usize)>,
+    folds: Vec<usize>,
+    moved: Vec<usize>,
+    new: Vec<usize>,
 }
 
 impl<'a> Hull<'a> {
@@ -107,6 +119,11 @@ impl<'a> Hull<'a> {
             free: Vec::new(),
             pass: 0,
             starts: vec![NONE; points.len()],
+            visible: vec![],
+            horizon: vec![],
+            folds: vec![],
+            moved: vec![],
+            new: vec![],
         };
         let centre = tet.iter().map(|&i| points[i]).sum::<DVec3>() / 4.0;
         for f in [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]] {
@@ -146,9 +163,9 @@ impl<'a> Hull<'a> {
     }
 
     /// The edges from the `visible` faces (marked `pass`) to the others, each with the face
-    /// across it.
-    fn horizon(&self, visible: &[usize], pass: u32) -> Vec<(usize, usize, usize)> {
-        let mut horizon = vec![];
+    /// across it, into `horizon`.
+    fn horizon(&self, visible: &[usize], pass: u32, horizon: &mut Vec<(usize, usize, usize)>) {
+        horizon.clear();
         for &g in visible {
             let face = &self.faces[g];
             for k in 0..3 {
@@ -158,13 +175,19 @@ impl<'a> Hull<'a> {
                 }
             }
         }
-        horizon
     }
 
     fn add_face(&mut self, face: Face) -> usize {
         match self.free.pop() {
             Some(f) => {
-                self.faces[f] = face;
+                // The slot's conflict list (emptied when its face was removed) keeps its
+                // room for the new face's when small: at most REUSED points a slot, so the
+                // room kept stays within a few times the faces' own.
+                let outside = take(&mut self.faces[f].outside);
+                self.faces[f] = match outside.capacity() <= REUSED {
+                    true => Face { outside, ..face },
+                    false => face,
+                };
                 f
             }
             None => {
@@ -181,19 +204,10 @@ impl<'a> Hull<'a> {
             if !self.faces[f].alive || self.faces[f].outside.is_empty() {
                 continue;
             }
-            let face = &self.faces[f];
-            let far = face
-                .outside
-                .iter()
-                .copied()
-                .max_by(|&a, &b| {
-                    face.distance(self.points[a])
-                        .total_cmp(&face.distance(self.points[b]))
-                })
-                .expect("not empty");
+            let far = self.farthest(f);
             match self.add_point(f, far) {
-                Some(new) => pending.extend(new),
-                None => {
+                true => pending.extend_from_slice(&self.new),
+                false => {
                     // The faces it sees do not bound a disc, which only rounding among
                     // nearly coplanar faces could cause (no test meets it): the point is left
                     // out rather than the surface broken.
@@ -204,24 +218,50 @@ impl<'a> Hull<'a> {
         }
     }
 
-    /// Replaces the faces point `p` sees, starting from face `f`, by a fan from their horizon
-    /// to `p`; the new faces, or None when the horizon is not one loop (nothing changed).
-    fn add_point(&mut self, f: usize, p: usize) -> Option<Vec<usize>> {
-        let (visible, horizon) = self.visible_region(f, self.points[p]);
-        if !self.is_one_loop(&horizon) {
-            return None;
+    /// The point of face `f`'s (non-empty) conflict list farthest outside it, the last of
+    /// equals (as `Iterator::max_by`), each distance computed once.
+    fn farthest(&self, f: usize) -> usize {
+        let face = &self.faces[f];
+        let mut best = (face.outside[0], face.distance(self.points[face.outside[0]]));
+        for &i in &face.outside[1..] {
+            let d = face.distance(self.points[i]);
+            if best.1.total_cmp(&d) != std::cmp::Ordering::Greater {
+                best = (i, d);
+            }
         }
-        Some(self.replace_by_fan(&visible, &horizon, p))
+        best.0
+    }
+
+    /// Replaces the faces point `p` sees, starting from face `f`, by a fan from their horizon
+    /// to `p`, the new faces in `self.new`; false when the horizon is not one loop (nothing
+    /// changed).
+    fn add_point(&mut self, f: usize, p: usize) -> bool {
+        let (mut visible, mut horizon) = (take(&mut self.visible), take(&mut self.horizon));
+        self.visible_region(f, self.points[p], &mut visible, &mut horizon);
+        let simple = self.is_one_loop(&horizon);
+        if simple {
+            self.replace_by_fan(&visible, &horizon, p);
+        }
+        (self.visible, self.horizon) = (visible, horizon);
+        simple
     }
 
     /// The faces point `at` sees from face `f` on (marked with a new pass), grown until no
-    /// new face would fold over the faces beyond, with their horizon: the edges `(a, b, h)`
-    /// to the unseen faces `h`.
-    fn visible_region(&mut self, f: usize, at: DVec3) -> (Vec<usize>, Vec<(usize, usize, usize)>) {
+    /// new face would fold over the faces beyond, into `visible`, with their horizon: the
+    /// edges `(a, b, h)` to the unseen faces `h`.
+    fn visible_region(
+        &mut self,
+        f: usize,
+        at: DVec3,
+        visible: &mut Vec<usize>,
+        horizon: &mut Vec<(usize, usize, usize)>,
+    ) {
         self.pass += 1;
         let pass = self.pass;
         self.faces[f].mark = pass;
-        let mut visible = vec![f];
+        visible.clear();
+        visible.push(f);
+        let mut folds = take(&mut self.folds);
         let mut i = 0;
         loop {
             // The faces `at` is above (by more than the tolerance), over adjacency.
@@ -234,12 +274,13 @@ impl<'a> Hull<'a> {
                 }
                 i += 1;
             }
-            let horizon = self.horizon(&visible, pass);
-            let folds = self.folds(&horizon, at);
+            self.horizon(visible, pass, horizon);
+            self.folds(horizon, at, &mut folds);
             if folds.is_empty() {
-                return (visible, horizon);
+                self.folds = folds;
+                return;
             }
-            for h in folds {
+            for &h in &folds {
                 if self.faces[h].mark != pass {
                     self.faces[h].mark = pass;
                     visible.push(h);
@@ -250,9 +291,10 @@ impl<'a> Hull<'a> {
 
     /// The unseen faces of `horizon` a new face to `at` would fold back over: that face's
     /// third corner above it, or, `at` all but on that face's plane, facing the other way
-    /// (`at` on the face's side of the edge). Those faces go too.
-    fn folds(&self, horizon: &[(usize, usize, usize)], at: DVec3) -> Vec<usize> {
-        horizon
+    /// (`at` on the face's side of the edge). Those faces go too, into `folds`.
+    fn folds(&self, horizon: &[(usize, usize, usize)], at: DVec3, folds: &mut Vec<usize>) {
+        folds.clear();
+        let found = horizon
             .iter()
             .filter(|&&(a, b, h)| {
                 let [pa, pb] = [a, b].map(|i| self.points[i]);
@@ -262,8 +304,8 @@ impl<'a> Hull<'a> {
                 c.is_some_and(|c| n.dot(self.points[c] - pa) > self.eps)
                     || (face.distance(at) > -self.eps && n.dot(face.n) < 0.0)
             })
-            .map(|&(_, _, h)| h)
-            .collect()
+            .map(|&(_, _, h)| h);
+        folds.extend(found);
     }
 
     /// Whether `horizon` is one loop: every horizon vertex starts exactly one edge, and the
@@ -297,23 +339,19 @@ impl<'a> Hull<'a> {
 
     /// The `visible` faces removed and a fan of new faces from each `horizon` edge to point
     /// `p` added, linked to each other (through `starts`, cleared after) and to the unseen
-    /// faces; their outside points handed to the new faces. The new faces.
-    fn replace_by_fan(
-        &mut self,
-        visible: &[usize],
-        horizon: &[(usize, usize, usize)],
-        p: usize,
-    ) -> Vec<usize> {
-        let mut moved: Vec<usize> = vec![];
+    /// faces; their outside points handed to the new faces. The new faces in `self.new`.
+    fn replace_by_fan(&mut self, visible: &[usize], horizon: &[(usize, usize, usize)], p: usize) {
+        let (mut moved, mut new) = (take(&mut self.moved), take(&mut self.new));
+        moved.clear();
         for &g in visible {
             moved.append(&mut self.faces[g].outside);
             self.faces[g].alive = false;
             self.free.push(g);
         }
-        let new: Vec<usize> = horizon
-            .iter()
-            .map(|&(a, b, _)| self.add_face(Face::new(self.points, [a, b, p])))
-            .collect();
+        new.clear();
+        for &(a, b, _) in horizon {
+            new.push(self.add_face(Face::new(self.points, [a, b, p])));
+        }
         for (n, &(a, b, h)) in horizon.iter().enumerate() {
             let face = new[n];
             let k = self.faces[h]
@@ -329,8 +367,8 @@ impl<'a> Hull<'a> {
             self.starts[a] = NONE;
         }
         moved.retain(|&i| i != p);
-        self.assign(moved, &new);
-        new
+        self.assign(moved.iter().copied(), &new);
+        (self.moved, self.new) = (moved, new);
     }
 
     /// The faces left, the triangles of one plane merged into one polygon: the outline of the
@@ -356,15 +394,15 @@ impl<'a> Hull<'a> {
             index[i]
         };
         let mut out = vec![];
-        for (outline, group) in outlines.iter().zip(&groups) {
-            match outline {
-                Some(ring) => out.push(
+        for (ring, group) in outlines.iter().zip(groups.iter()) {
+            match ring.is_empty() {
+                false => out.push(
                     ring.iter()
                         .filter(|&&i| corner(i, &keep))
                         .map(|&i| number(i))
                         .collect(),
                 ),
-                None => out.extend(
+                true => out.extend(
                     group
                         .iter()
                         .map(|&g| self.faces[g].v.iter().map(|&i| number(i)).collect()),
@@ -377,69 +415,68 @@ impl<'a> Hull<'a> {
     /// The live faces grouped by plane: each seed's group the faces on its plane (their
     /// corners within the tolerance of it), over adjacency, as on a convex hull the
     /// triangles of one plane are connected. Each face's group, and the groups.
-    fn coplanar_groups(&self) -> (Vec<usize>, Vec<Vec<usize>>) {
+    fn coplanar_groups(&self) -> (Vec<usize>, Lists) {
         let (points, eps) = (self.points, self.eps);
         let mut group_of = vec![NONE; self.faces.len()];
-        let mut groups: Vec<Vec<usize>> = vec![];
+        let mut groups = Lists::default();
         for seed in 0..self.faces.len() {
             if !self.faces[seed].alive || group_of[seed] != NONE {
                 continue;
             }
             let (n, d) = (self.faces[seed].n, self.faces[seed].d);
-            group_of[seed] = groups.len();
-            let mut group = vec![seed];
-            let mut i = 0;
-            while i < group.len() {
-                for g in self.faces[group[i]].adj {
+            let id = groups.len();
+            group_of[seed] = id;
+            let mut i = groups.items.len();
+            groups.items.push(seed);
+            while i < groups.items.len() {
+                for g in self.faces[groups.items[i]].adj {
                     let face = &self.faces[g];
                     if group_of[g] == NONE
                         && n.dot(face.n) > 0.0
                         && face.v.iter().all(|&i| (n.dot(points[i]) - d).abs() <= eps)
                     {
-                        group_of[g] = groups.len();
-                        group.push(g);
+                        group_of[g] = id;
+                        groups.items.push(g);
                     }
                 }
                 i += 1;
             }
-            groups.push(group);
+            groups.close();
         }
         (group_of, groups)
     }
 
     /// Each group's outline, when its edges to other groups form one loop (else, only
-    /// within the tolerance, its triangles stay apart).
-    fn group_outlines(&self, group_of: &[usize], groups: &[Vec<usize>]) -> Vec<Option<Vec<usize>>> {
-        groups
-            .iter()
-            .enumerate()
-            .map(|(id, group)| {
-                let mut edges: Vec<(usize, usize)> = group
-                    .iter()
-                    .flat_map(|&g| {
-                        let face = &self.faces[g];
-                        (0..3)
-                            .filter(|&k| group_of[face.adj[k]] != id)
-                            .map(|k| (face.v[k], face.v[(k + 1) % 3]))
-                    })
-                    .collect();
-                edges.sort_unstable();
-                one_loop(&edges)
-            })
-            .collect()
+    /// within the tolerance, its triangles stay apart: an empty outline).
+    fn group_outlines(&self, group_of: &[usize], groups: &Lists) -> Lists {
+        let mut outlines = Lists::default();
+        let mut edges: Vec<(usize, usize)> = vec![];
+        for (id, group) in groups.iter().enumerate() {
+            edges.clear();
+            edges.extend(group.iter().flat_map(|&g| {
+                let face = &self.faces[g];
+                (0..3)
+                    .filter(|&k| group_of[face.adj[k]] != id)
+                    .map(|k| (face.v[k], face.v[(k + 1) % 3]))
+            }));
+            edges.sort_unstable();
+            one_loop(&edges, &mut outlines.items);
+            outlines.close();
+        }
+        outlines
     }
 
     /// Per point, how many outlines hold it (saturating; the most for a point of a group
     /// left as triangles): a point two outlines hold and that lies on the line of its
     /// neighbours there is on the edge between the two faces.
-    fn holders(&self, outlines: &[Option<Vec<usize>>], groups: &[Vec<usize>]) -> Vec<u8> {
+    fn holders(&self, outlines: &Lists, groups: &Lists) -> Vec<u8> {
         let mut holders = vec![0u8; self.points.len()];
-        for (outline, group) in outlines.iter().zip(groups) {
-            match outline {
-                Some(ring) => ring
+        for (ring, group) in outlines.iter().zip(groups.iter()) {
+            match ring.is_empty() {
+                false => ring
                     .iter()
                     .for_each(|&i| holders[i] = holders[i].saturating_add(1)),
-                None => group
+                true => group
                     .iter()
                     .flat_map(|&g| self.faces[g].v)
                     .for_each(|i| holders[i] = u8::MAX),
@@ -449,10 +486,10 @@ impl<'a> Hull<'a> {
     }
 
     /// The outline points off the line of their neighbours (by more than the tolerance).
-    fn off_line_points(&self, outlines: &[Option<Vec<usize>>]) -> Vec<bool> {
+    fn off_line_points(&self, outlines: &Lists) -> Vec<bool> {
         let points = self.points;
         let mut keep = vec![false; points.len()];
-        for ring in outlines.iter().flatten() {
+        for ring in outlines.iter() {
             for (k, &i) in ring.iter().enumerate() {
                 let (u, w) = (
                     ring[(k + ring.len() - 1) % ring.len()],
@@ -469,16 +506,40 @@ impl<'a> Hull<'a> {
     }
 }
 
+/// Lists of indices in one vector (a hull's thousands of groups and outlines without an
+/// allocation each): list `i` is `items[ends[i - 1]..ends[i]]`, the first from 0.
+#[derive(Default)]
+struct Lists {
+    items: Vec<usize>,
+    ends: Vec<usize>,
+}
+
+impl Lists {
+    fn len(&self) -> usize {
+        self.ends.len()
+    }
+
+    /// Ends the list being built: the items pushed since the last one.
+    fn close(&mut self) {
+        self.ends.push(self.items.len());
+    }
+
+    fn iter(&self) -> impl Iterator<Item = &[usize]> {
+        let starts = std::iter::once(0).chain(self.ends.iter().copied());
+        starts.zip(&self.ends).map(|(a, &b)| &self.items[a..b])
+    }
+}
+
 /// `keep` with every point of an outline that would be left with fewer than three corners
 /// (by `corner`) kept, until no outline is.
 fn keep_three_corners(
-    outlines: &[Option<Vec<usize>>],
+    outlines: &Lists,
     mut keep: Vec<bool>,
     corner: impl Fn(usize, &[bool]) -> bool,
 ) -> Vec<bool> {
     loop {
         let mut changed = false;
-        for ring in outlines.iter().flatten() {
+        for ring in outlines.iter().filter(|r| !r.is_empty()) {
             if ring.iter().filter(|&&i| corner(i, &keep)).count() < 3 {
                 for &i in ring {
                     changed |= !keep[i];
@@ -492,23 +553,37 @@ fn keep_three_corners(
     }
 }
 
-/// The points of directed `edges` (sorted) in order along them, when they form one loop.
-fn one_loop(edges: &[(usize, usize)]) -> Option<Vec<usize>> {
-    if edges.windows(2).any(|w| w[0].0 == w[1].0) {
-        return None;
+/// The points of directed `edges` (sorted) in order along them, pushed onto `ring`, when
+/// they form one loop; else `ring` as it was.
+fn one_loop(edges: &[(usize, usize)], ring: &mut Vec<usize>) {
+    let start = ring.len();
+    if !walk_loop(edges, ring) {
+        ring.truncate(start);
     }
-    let first = edges.first()?.0;
-    let mut ring = vec![first];
-    let mut at = edges[0].1;
+}
+
+/// [`one_loop`]'s walk: whether it met every edge once, back where it started.
+fn walk_loop(edges: &[(usize, usize)], ring: &mut Vec<usize>) -> bool {
+    if edges.windows(2).any(|w| w[0].0 == w[1].0) {
+        return false;
+    }
+    let Some(&(first, next)) = edges.first() else {
+        return false;
+    };
+    let start = ring.len();
+    ring.push(first);
+    let mut at = next;
     while at != first {
-        if ring.len() == edges.len() {
-            return None;
+        if ring.len() - start == edges.len() {
+            return false;
         }
         ring.push(at);
-        let k = edges.binary_search_by_key(&at, |e| e.0).ok()?;
+        let Ok(k) = edges.binary_search_by_key(&at, |e| e.0) else {
+            return false;
+        };
         at = edges[k].1;
     }
-    (ring.len() == edges.len()).then_some(ring)
+    ring.len() - start == edges.len()
 }
 
 /// Four points spanning a volume: the extremes along X, the farthest from their line, the

@@ -100,10 +100,12 @@ enum SumPart {
 }
 
 impl Sum {
-    /// The pieces made: each convex piece's hull taken once.
+    /// The pieces made: each convex piece's hull taken once, the pieces in parallel (a
+    /// concave operand's sum has hundreds of hulls of thousands of vertices), in order.
     fn of(pieces: Vec<Piece>, need: usize) -> Result<Sum, Error> {
+        use rayon::prelude::*;
         let parts = pieces
-            .into_iter()
+            .into_par_iter()
             .map(|p| match p {
                 Piece::Convex(v) => convex_solid(&v, None, 0).map(SumPart::Convex),
                 Piece::Mesh(m) => Ok(SumPart::Mesh(std::sync::Arc::new(
