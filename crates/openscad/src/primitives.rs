@@ -389,6 +389,12 @@ pub(crate) fn polyhedron(
     }
     let (mut tris, mut indices) = (Vec::new(), Vec::new());
     for f in &faces {
+        // A triangle is its own ([`csgpix_scene::facet::triangulate`]'s fan of three).
+        if let [a, b, c] = f[..] {
+            tris.push([a, b, c].map(|i| points[i]));
+            indices.push([a, b, c]);
+            continue;
+        }
         let corners: Vec<DVec3> = f.iter().map(|&i| DVec3::from(points[i])).collect();
         for t in csgpix_scene::facet::triangulate(&corners) {
             tris.push(t.map(|j| points[f[j]]));
@@ -402,7 +408,8 @@ pub(crate) fn polyhedron(
 /// corners (equal coordinates one vertex, `-0.0` as `0.0`, numbered as first met, with the
 /// coordinates first met), each point looked up once rather than every corner.
 pub(crate) fn welded(points: &[Vec3], indices: &[[usize; 3]]) -> csgpix_scene::trimesh::TriMesh {
-    let mut at: HashMap<[u64; 3], u32> = HashMap::with_capacity(points.len());
+    let mut at: HashMap<[u64; 3], u32, _> =
+        HashMap::with_capacity_and_hasher(points.len(), foldhash::fast::RandomState::default());
     let (mut vertices, mut id) = (Vec::new(), vec![u32::MAX; points.len()]);
     let mut vertex = |i: usize| {
         if id[i] == u32::MAX {
@@ -535,45 +542,61 @@ pub(crate) fn check_convex_closed(
 
 /// [`check_convex_closed`] but the edges.
 fn check_convex(vertices: &[Vec3], faces: &[Vec<usize>]) -> csgpix_scene::Result<()> {
-    let mut used: Vec<usize> = faces.iter().flatten().copied().collect();
-    used.sort_unstable();
-    used.dedup();
+    let used = used_points(vertices.len(), faces);
     let (extent, magnitude) = scale(vertices, &used);
-    let planes = face_planes(vertices, faces, extent)?;
+    let tolerance = CONVEXITY_TOLERANCE * magnitude;
+    // Each face's plane as it is met, tested first against the corners of the next faces
+    // (in a file, mostly the face's neighbours): a concave polyhedron is found out there,
+    // in a pass over some of its faces, before every plane is made or the volume summed.
+    // The same test as the last pass, so the same answer.
+    const NEAR: usize = 4;
+    let (mut planes, mut units) = (Vec::with_capacity(faces.len()), vec![]);
+    for (k, face) in faces.iter().enumerate() {
+        let p = face_plane(vertices, face, extent).ok_or(Error::FaceWithoutArea { face: k })?;
+        units.push(p.normal.map(|c| c / norm(p.normal)));
+        planes.push(p);
+        for f in (1..=NEAR).map(|j| &faces[(k + j) % faces.len()]) {
+            f.iter()
+                .try_for_each(|&i| outside(vertices, (&units[k], &planes[k]), tolerance, k, i))?;
+        }
+    }
     let volume: f64 = planes.iter().map(|p| dot(p.centre, p.normal) / 6.0).sum();
     let has_volume = volume > 1e-12 * extent * extent * extent;
     if !has_volume {
         return Err(Error::WrongWinding);
     }
-    let tolerance = CONVEXITY_TOLERANCE * magnitude;
-    let units: Vec<Vec3> = planes
-        .iter()
-        .map(|p| p.normal.map(|c| c / norm(p.normal)))
-        .collect();
-    let outside = |k: usize, i: usize| -> csgpix_scene::Result<()> {
-        let d = dot(units[k], sub(vertices[i], planes[k].centre));
-        match d > tolerance {
-            true => Err(Error::NotConvex {
-                point: i,
-                distance: d,
-                face: k,
-            }),
-            false => Ok(()),
-        }
-    };
-    // The corners of the next faces first (in a file, mostly the face's neighbours): a
-    // concave polyhedron is found out there in a pass over its faces, not a face against
-    // every point. The same test, so the same answer.
-    const NEAR: usize = 4;
     for k in 0..faces.len() {
-        for f in (1..=NEAR).map(|j| &faces[(k + j) % faces.len()]) {
-            f.iter().try_for_each(|&i| outside(k, i))?;
-        }
-    }
-    for k in 0..faces.len() {
-        used.iter().try_for_each(|&i| outside(k, i))?;
+        used.iter()
+            .try_for_each(|&i| outside(vertices, (&units[k], &planes[k]), tolerance, k, i))?;
     }
     Ok(())
+}
+
+/// The points some face uses, in order.
+fn used_points(points: usize, faces: &[Vec<usize>]) -> Vec<usize> {
+    let mut used = vec![false; points];
+    faces.iter().flatten().for_each(|&i| used[i] = true);
+    (0..points).filter(|&i| used[i]).collect()
+}
+
+/// Err when point `i` lies outside face `k` (its unit normal and plane) by more than
+/// `tolerance`.
+fn outside(
+    vertices: &[Vec3],
+    (unit, plane): (&Vec3, &Plane),
+    tolerance: f64,
+    k: usize,
+    i: usize,
+) -> csgpix_scene::Result<()> {
+    let d = dot(*unit, sub(vertices[i], plane.centre));
+    match d > tolerance {
+        true => Err(Error::NotConvex {
+            point: i,
+            distance: d,
+            face: k,
+        }),
+        false => Ok(()),
+    }
 }
 
 /// A face's Newell normal (twice its area long) and its centroid.
@@ -582,24 +605,14 @@ pub(crate) struct Plane {
     pub(crate) centre: Vec3,
 }
 
-pub(crate) fn face_planes(
-    vertices: &[Vec3],
-    faces: &[Vec<usize>],
-    extent: f64,
-) -> csgpix_scene::Result<Vec<Plane>> {
-    faces
-        .iter()
-        .enumerate()
-        .map(|(k, face)| {
-            let normal = newell(vertices, face);
-            let has_area = norm(normal) > 1e-12 * extent * extent;
-            if !has_area {
-                return Err(Error::FaceWithoutArea { face: k });
-            }
-            let centre = centroid(vertices, face);
-            Ok(Plane { normal, centre })
-        })
-        .collect()
+/// A face's plane; None when it has no area (relative to `extent`).
+fn face_plane(vertices: &[Vec3], face: &[usize], extent: f64) -> Option<Plane> {
+    let normal = newell(vertices, face);
+    let has_area = norm(normal) > 1e-12 * extent * extent;
+    has_area.then(|| Plane {
+        normal,
+        centre: centroid(vertices, face),
+    })
 }
 
 pub(crate) fn check_closed(faces: &[Vec<usize>]) -> csgpix_scene::Result<()> {

@@ -1167,15 +1167,20 @@ fn convex_closed_directly(vertices: &[Vec3], faces: &[Vec<usize>]) -> bool {
     used.sort_unstable();
     used.dedup();
     let (extent, magnitude) = scale(vertices, &used);
-    let Ok(planes) = face_planes(vertices, faces, extent) else {
-        return false;
-    };
-    let volume: f64 = planes.iter().map(|p| dot(p.centre, p.normal) / 6.0).sum();
+    let mut planes = vec![];
+    for f in faces {
+        let normal = newell(vertices, f);
+        if norm(normal) <= 1e-12 * extent * extent {
+            return false;
+        }
+        planes.push((normal, centroid(vertices, f)));
+    }
+    let volume: f64 = planes.iter().map(|(n, c)| dot(*c, *n) / 6.0).sum();
     let tolerance = CONVEXITY_TOLERANCE * magnitude;
-    let behind = planes.iter().all(|p| {
-        let unit = p.normal.map(|c| c / norm(p.normal));
+    let behind = planes.iter().all(|(n, c)| {
+        let unit = n.map(|x| x / norm(*n));
         used.iter()
-            .all(|&i| dot(unit, sub(vertices[i], p.centre)) <= tolerance)
+            .all(|&i| dot(unit, sub(vertices[i], *c)) <= tolerance)
     });
     check_closed(faces).is_ok() && volume > 1e-12 * extent.powi(3) && behind
 }
@@ -1183,14 +1188,16 @@ fn convex_closed_directly(vertices: &[Vec3], faces: &[Vec<usize>]) -> bool {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(128))]
     /// A hull of random points, one of its vertices moved in or out (a dent, a bump, or
-    /// nothing), and its faces in a random turn: judged convex and closed exactly as the
-    /// direct test judges it, though concave ones are found out by their neighbours first.
+    /// nothing), its faces in a random turn and maybe all turned inside out: judged convex
+    /// and closed exactly as the direct test judges it, though concave ones are found out by
+    /// their neighbours first, before the volume is summed.
     #[test]
     fn a_polyhedron_is_convex_as_the_direct_test_says(
         points in prop::collection::vec(prop::array::uniform3(-10.0f64..10.0), 5..40),
         moved in any::<prop::sample::Index>(),
         by in -0.5f64..0.5,
         turn in 0usize..64,
+        inside_out in any::<bool>(),
     ) {
         let pts: Vec<glam::DVec3> = points.iter().map(|&p| glam::DVec3::from(p)).collect();
         let Ok((v, mut faces)) = crate::hull::hull3(&pts) else { return Ok(()) };
@@ -1200,6 +1207,9 @@ proptest! {
         vertices[i] = (v[i] + (v[i] - c) * by).to_array();
         let k = turn % faces.len();
         faces.rotate_left(k);
+        if inside_out {
+            faces.iter_mut().for_each(|f| f.reverse());
+        }
         prop_assert_eq!(
             check_convex_closed(&vertices, &faces).is_ok(),
             convex_closed_directly(&vertices, &faces)

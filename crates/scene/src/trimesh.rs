@@ -42,7 +42,7 @@ pub struct TriMesh {
 /// Shares vertices with equal coordinates (`-0.0` and `0.0` are one vertex).
 #[derive(Default)]
 struct Welder {
-    at: HashMap<[u64; 3], u32>,
+    at: HashMap<[u64; 3], u32, foldhash::fast::RandomState>,
     mesh: TriMesh,
 }
 
@@ -156,11 +156,21 @@ impl TriMesh {
 
     /// The open edges of `tris` (proper triangles of this mesh) in words, if any.
     fn open_edges(&self, tris: &[[u32; 3]]) -> Option<String> {
-        let mut uses: HashMap<(u32, u32), u32> = HashMap::with_capacity(tris.len() * 3 / 2);
-        for e in tris.iter().flat_map(edges) {
-            *uses.entry(undirected(e)).or_default() += 1;
+        // Each undirected edge with how many triangles use it, by sorting (not hashing).
+        let mut all: Vec<(u32, u32)> = tris.iter().flat_map(edges).map(undirected).collect();
+        all.sort_unstable();
+        let mut uses: Vec<((u32, u32), u32)> = Vec::with_capacity(all.len() / 2 + 1);
+        for e in all {
+            match uses.last_mut() {
+                Some((last, n)) if *last == e => *n += 1,
+                _ => uses.push((e, 1)),
+            }
         }
-        let count = |f: fn(u32) -> bool| uses.values().filter(|&&n| f(n)).count();
+        let uses_of = |e: (u32, u32)| {
+            uses.binary_search_by_key(&e, |u| u.0)
+                .map_or(0, |k| uses[k].1)
+        };
+        let count = |f: fn(u32) -> bool| uses.iter().filter(|u| f(u.1)).count();
         let (open, many) = (count(|n| n == 1), count(|n| n > 2 && n % 2 == 1));
         if open == 0 && many == 0 {
             return None;
@@ -170,7 +180,7 @@ impl TriMesh {
             let (a, b) = tris
                 .iter()
                 .flat_map(edges)
-                .find(|&e| f(uses[&undirected(e)]))
+                .find(|&e| f(uses_of(undirected(e))))
                 .unwrap_or_default();
             let (a, b) = (self.vertices[a as usize], self.vertices[b as usize]);
             format!(
@@ -1128,5 +1138,41 @@ mod tests {
         assert!(obj::reference(b"6", 5).is_err());
         assert!(obj::reference(b"x", 5).is_err());
         assert!(obj::reference(b"-9223372036854775808", 5).is_err());
+    }
+
+    proptest::proptest! {
+        /// The open-edge words counted by sorting are those of counting every undirected
+        /// edge's uses in a map: the same counts and the same first offending edge.
+        #[test]
+        fn open_edges_sorted_count_as_a_map_does(
+            tris in proptest::collection::vec(proptest::array::uniform3(0u32..12), 1..60),
+        ) {
+            let mesh = TriMesh {
+                vertices: (0..12).map(|i| DVec3::new(i as f64, (i * i) as f64, 0.5)).collect(),
+                triangles: tris.clone(),
+            };
+            let mut uses: HashMap<(u32, u32), u32> = HashMap::new();
+            for e in tris.iter().flat_map(edges) {
+                *uses.entry(undirected(e)).or_default() += 1;
+            }
+            let count = |f: fn(u32) -> bool| uses.values().filter(|&&n| f(n)).count();
+            let (open, many) = (count(|n| n == 1), count(|n| n > 2 && n % 2 == 1));
+            let got = mesh.open_edges(&tris);
+            proptest::prop_assert_eq!(got.is_none(), open == 0 && many == 0);
+            if let Some(words) = got {
+                let kind: fn(u32) -> bool = match open > 0 {
+                    true => |n| n == 1,
+                    false => |n| n > 2 && n % 2 == 1,
+                };
+                let (a, b) = tris.iter().flat_map(edges).find(|&e| kind(uses[&undirected(e)])).unwrap();
+                let (a, b) = (mesh.vertices[a as usize], mesh.vertices[b as usize]);
+                let first = format!("(first from ({},{},{}) to ({},{},{}))", a.x, a.y, a.z, b.x, b.y, b.z);
+                let lead = format!("{open} edges belong to one triangle");
+                proptest::prop_assert!(words.starts_with(&lead));
+                let odd = format!(", {many} to another odd");
+                proptest::prop_assert!(words.contains(&odd));
+                proptest::prop_assert!(words.contains(&first), "{} lacks {}", words, first);
+            }
+        }
     }
 }
