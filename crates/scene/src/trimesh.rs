@@ -156,10 +156,12 @@ impl TriMesh {
 
     /// The open edges of `tris` (proper triangles of this mesh) in words, if any.
     fn open_edges(&self, tris: &[[u32; 3]]) -> Option<String> {
-        // Each undirected edge with how many triangles use it, by sorting (not hashing).
-        let mut all: Vec<(u32, u32)> = tris.iter().flat_map(edges).map(undirected).collect();
+        // Each undirected edge with how many triangles use it, by sorting (not hashing) the
+        // edges as one number each, in the order of (lower, higher) corner.
+        let key = |(a, b): (u32, u32)| (u64::from(a) << 32) | u64::from(b);
+        let mut all: Vec<u64> = tris.iter().flat_map(edges).map(|e| key(undirected(e))).collect();
         all.sort_unstable();
-        let mut uses: Vec<((u32, u32), u32)> = Vec::with_capacity(all.len() / 2 + 1);
+        let mut uses: Vec<(u64, u32)> = Vec::with_capacity(all.len() / 2 + 1);
         for e in all {
             match uses.last_mut() {
                 Some((last, n)) if *last == e => *n += 1,
@@ -167,8 +169,8 @@ impl TriMesh {
             }
         }
         let uses_of = |e: (u32, u32)| {
-            uses.binary_search_by_key(&e, |u| u.0)
-                .map_or(0, |k| uses[k].1)
+            let k = key(e);
+            uses.binary_search_by_key(&k, |u| u.0).map_or(0, |i| uses[i].1)
         };
         let count = |f: fn(u32) -> bool| uses.iter().filter(|u| f(u.1)).count();
         let (open, many) = (count(|n| n == 1), count(|n| n > 2 && n % 2 == 1));
