@@ -159,7 +159,11 @@ impl TriMesh {
         // Each undirected edge with how many triangles use it, by sorting (not hashing) the
         // edges as one number each, in the order of (lower, higher) corner.
         let key = |(a, b): (u32, u32)| (u64::from(a) << 32) | u64::from(b);
-        let mut all: Vec<u64> = tris.iter().flat_map(edges).map(|e| key(undirected(e))).collect();
+        let mut all: Vec<u64> = tris
+            .iter()
+            .flat_map(edges)
+            .map(|e| key(undirected(e)))
+            .collect();
         all.sort_unstable();
         let mut uses: Vec<(u64, u32)> = Vec::with_capacity(all.len() / 2 + 1);
         for e in all {
@@ -170,7 +174,8 @@ impl TriMesh {
         }
         let uses_of = |e: (u32, u32)| {
             let k = key(e);
-            uses.binary_search_by_key(&k, |u| u.0).map_or(0, |i| uses[i].1)
+            uses.binary_search_by_key(&k, |u| u.0)
+                .map_or(0, |i| uses[i].1)
         };
         let count = |f: fn(u32) -> bool| uses.iter().filter(|u| f(u.1)).count();
         let (open, many) = (count(|n| n == 1), count(|n| n > 2 && n % 2 == 1));

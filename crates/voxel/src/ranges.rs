@@ -39,6 +39,9 @@ pub(crate) fn slabs_of(slicer: &Slicer, lo: i128, hi: i128) -> (u32, u32) {
     (first as u32, last as u32)
 }
 
+/// Pixels of a row [`WordPlanes::row_slabs`] reduces together.
+const ROW_CHUNK: usize = 8;
+
 /// A solid's planes as the array's depth generator holds them: Z0, dZx, dZy (or K0, dKx,
 /// dKy) in raw words, with each plane's Y and H flags (§2.3).
 pub(crate) struct WordPlanes(Vec<(rtl_model::Coeffs, bool, bool)>);
@@ -129,6 +132,39 @@ impl WordPlanes {
     pub(crate) fn slabs(&self, slicer: &Slicer, x: i64, y: i64) -> (u32, u32) {
         let (lo, hi) = self.interval(&slicer.fmt, x, y).unwrap_or((1, 0));
         slabs_of(slicer, lo, hi)
+    }
+
+    /// [`WordPlanes::slabs`] of pixels `xs` of row `y`, pushed onto `out` in order: the same
+    /// values (Z0 + y·dZy + x·dZx is Z0 + x·dZx + y·dZy modulo 2^64, then wrapped to the
+    /// word) reduced a plane at a time over up to [`ROW_CHUNK`] pixels, so the same slabs,
+    /// without a branch on each plane's kind at every pixel.
+    pub(crate) fn row_slabs(
+        &self,
+        slicer: &Slicer,
+        y: i64,
+        xs: std::ops::Range<usize>,
+        out: &mut Vec<(u32, u32)>,
+    ) {
+        let fmt = &slicer.fmt;
+        for x0 in xs.clone().step_by(ROW_CHUNK) {
+            let n = (xs.end - x0).min(ROW_CHUNK);
+            let (mut lo, mut hi) = ([i64::MIN; ROW_CHUNK], [i64::MAX; ROW_CHUNK]);
+            let mut refused = [false; ROW_CHUNK];
+            for (c, perpendicular, front) in &self.0 {
+                let row = c.c0.wrapping_add(y.wrapping_mul(c.dy));
+                let value = |i: usize| fmt.wrap(row.wrapping_add((x0 + i) as i64 * c.dx));
+                match (perpendicular, front) {
+                    (true, _) => (0..n).for_each(|i| refused[i] |= value(i) < 0),
+                    (false, true) => (0..n).for_each(|i| lo[i] = lo[i].max(value(i))),
+                    (false, false) => (0..n).for_each(|i| hi[i] = hi[i].min(value(i))),
+                }
+            }
+            // As `ray_interval`'s None, an empty interval meets no slab.
+            out.extend((0..n).map(|i| match refused[i] || lo[i] > hi[i] {
+                true => (1, 0),
+                false => slabs_of(slicer, lo[i].into(), hi[i].into()),
+            }));
+        }
     }
 
     /// The depths (raw words) inside the solid along pixel (x, y)'s ray; None when none are.

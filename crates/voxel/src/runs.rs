@@ -346,14 +346,28 @@ impl<'a> Columns<'a> {
             .collect();
         // Each column's primitive runs (primitive, first, last); a column whose runs are
         // the column's before it in its row has its labels too (a label is a function of
-        // which primitives hold a segment), so only its runs are copied.
+        // which primitives hold a segment), so only its runs are copied. A solid's slabs
+        // are made a row of its outline at a time ([`Tiles::row`]), an import's per column.
         let (mut held, mut before) = (vec![], vec![]);
+        let mut rows: Vec<Vec<(u32, u32)>> = vec![vec![]; here.len()];
+        let mut by_row = vec![false; here.len()];
         let mut again = Vec::with_capacity(b.pixels());
         for y in b.y0..b.y1 {
+            for (k, (_, o, tiles)) in here.iter().enumerate() {
+                let inside = (o.y0..o.y1).contains(&y);
+                by_row[k] = inside && tiles.row(self.slicer, *o, y, &mut rows[k]);
+            }
             for x in b.x0..b.x1 {
                 held.clear();
-                for (p, o, tiles) in &here {
+                for (k, (p, o, tiles)) in here.iter().enumerate() {
                     if !o.contains(x, y) {
+                        continue;
+                    }
+                    if by_row[k] {
+                        let (first, last) = rows[k][x - o.x0];
+                        if first <= last {
+                            held.push((*p, first, last));
+                        }
                         continue;
                     }
                     let Some(pruned) = tiles.at(*o, x, y) else {
@@ -427,6 +441,24 @@ impl Pruned<'_, '_> {
         }
     }
 
+    /// The slabs of columns `xs` of row `y`, one run each (`(1, 0)` where none), onto
+    /// `out`; false (nothing pushed) for an import, whose columns can hold several runs.
+    fn row(
+        &self,
+        slicer: &Slicer,
+        y: usize,
+        xs: std::ops::Range<usize>,
+        out: &mut Vec<(u32, u32)>,
+    ) -> bool {
+        match self {
+            Pruned::Word(w) => w.row_slabs(slicer, y as i64, xs, out),
+            Pruned::Float(f) => out.extend(xs.map(|x| f.slabs(slicer, x, y))),
+            Pruned::Level(r) => out.extend(xs.map(|_| *r)),
+            Pruned::Sampled(_) => return false,
+        }
+        true
+    }
+
     /// Planes left (0 for an import).
     fn planes(&self) -> usize {
         match self {
@@ -489,6 +521,31 @@ impl<'d, 'a> Tiles<'d, 'a> {
             })
             .collect();
         Tiles::Grid { across, tiles }
+    }
+
+    /// The slabs of row `y` of outline `o`, one run a column (`(1, 0)` where none), into
+    /// `row`; false for an import's runs (several a column, taken column by column).
+    fn row(&self, slicer: &Slicer, o: PixelBox, y: usize, row: &mut Vec<(u32, u32)>) -> bool {
+        row.clear();
+        match self {
+            Tiles::One(p) => p.row(slicer, y, o.x0..o.x1, row),
+            Tiles::Grid { across, tiles } => {
+                let down = (y - o.y0) / TILE;
+                for (k, tile) in tiles[down * across..][..*across].iter().enumerate() {
+                    let x0 = o.x0 + k * TILE;
+                    let xs = x0..(x0 + TILE).min(o.x1);
+                    match tile {
+                        None => row.extend(xs.map(|_| (1, 0))),
+                        Some(p) => {
+                            if !p.row(slicer, y, xs, row) {
+                                return false;
+                            }
+                        }
+                    }
+                }
+                true
+            }
+        }
     }
 
     /// The planes for pixel (x, y) of outline `o`; None where the solid is nowhere.
@@ -1162,7 +1219,8 @@ mod tests {
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(48))]
         /// A solid's planes pruned to a box, then again tile by tile, give every pixel of the
-        /// box the slabs all its planes give, in the word and in f64.
+        /// box the slabs all its planes give, in the word and in f64, pixel by pixel and a
+        /// row at a time.
         #[test]
         fn planes_pruned_tile_by_tile_decide_as_all_do(
             text in solid(),
@@ -1175,13 +1233,23 @@ mod tests {
             let float = Pruned::Float(FloatPlanes::of(&slicer, 0));
             for all in [word, float] {
                 let tiles = all.in_box(&slicer, b).map(|p| Tiles::of(&slicer, p, b));
+                let mut row = vec![];
                 for y in b.y0..b.y1 {
+                    let by_row = tiles.as_ref().is_some_and(|t| t.row(&slicer, b, y, &mut row));
+                    prop_assert!(by_row || tiles.is_none());
                     for x in b.x0..b.x1 {
                         let got = tiles
                             .as_ref()
                             .and_then(|t| t.at(b, x, y))
                             .map_or(vec![], |p| slabs(p, &slicer, x, y));
-                        prop_assert_eq!(got, slabs(&all, &slicer, x, y), "pixel {},{}", x, y);
+                        let want = slabs(&all, &slicer, x, y);
+                        prop_assert_eq!(&got, &want, "pixel {},{}", x, y);
+                        // The row's run, made a plane at a time, is the pixel's.
+                        if by_row {
+                            let (first, last) = row[x - b.x0];
+                            let got: Vec<_> = [(first, last)].into_iter().filter(|(a, b)| a <= b).collect();
+                            prop_assert_eq!(got, want, "row pixel {},{}", x, y);
+                        }
                     }
                 }
             }
