@@ -361,6 +361,7 @@ fn source_path(s: &fontdb::Source) -> Option<&Path> {
 }
 
 /// Fontconfig's answer for a pattern.
+#[derive(Clone)]
 struct Match {
     file: PathBuf,
     index: u32,
@@ -380,7 +381,34 @@ impl Match {
 /// Asks fontconfig (`fc-match`) for the font it matches to `pattern`; None without fontconfig
 /// or an answer. OpenSCAD's own configuration also registers its font path
 /// (`OPENSCAD_FONT_PATH`), which `FONTCONFIG_PATH`/`FONTCONFIG_FILE` can give fc-match.
+///
+/// Each pattern is asked once a process, as [`Fonts::standard`] scans the fonts once: a
+/// design naming a missing font in every `text()` started an `fc-match` (15-20 ms) for each.
 fn fontconfig_match(pattern: &str) -> Option<Match> {
+    use std::collections::HashMap;
+    use std::sync::{Mutex, OnceLock};
+    static ASKED: OnceLock<Mutex<HashMap<String, Option<Match>>>> = OnceLock::new();
+    let asked = ASKED.get_or_init(Mutex::default);
+    if let Some(m) = asked.lock().ok().and_then(|a| a.get(pattern).cloned()) {
+        return m;
+    }
+    let m = ask_fontconfig(pattern);
+    if let Ok(mut a) = asked.lock() {
+        a.insert(pattern.to_string(), m.clone());
+    }
+    m
+}
+
+/// The patterns [`ask_fontconfig`] ran `fc-match` for, in the tests.
+#[cfg(test)]
+static ASKED_FONTCONFIG: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+
+/// [`fontconfig_match`] without its memory: one `fc-match` run.
+fn ask_fontconfig(pattern: &str) -> Option<Match> {
+    #[cfg(test)]
+    if let Ok(mut asked) = ASKED_FONTCONFIG.lock() {
+        asked.push(pattern.to_string());
+    }
     let out = std::process::Command::new("fc-match")
         .arg("--format=%{file}\\t%{index}\\t%{family[0]}\\t%{style[0]}")
         .arg("--")
@@ -926,6 +954,26 @@ mod tests {
         assert!(direct.warnings.is_empty(), "{:?}", direct.warnings);
         assert_eq!(s.imports, direct.imports);
         assert_eq!(s.solids, direct.solids);
+    }
+
+    /// A missing font named by three `text()`s: fontconfig is asked once (each ask starts an
+    /// `fc-match`), and each `text()` warns and is drawn in the match.
+    #[test]
+    fn a_missing_font_is_asked_of_fontconfig_once() {
+        let name = "Csgpix Absent Sans Thrice";
+        if fontconfig_match(name).is_none() {
+            eprintln!("fc-match is not on PATH: skipped");
+            return;
+        }
+        let one = format!("linear_extrude(height = 1) text(text = \"ab\", font = \"{name}\");\n");
+        let s = crate::parse_csg(&one.repeat(3), "t.csg").unwrap();
+        assert_eq!(s.warnings.len(), 3, "{:?}", s.warnings);
+        assert!(s
+            .warnings
+            .iter()
+            .all(|w| w.to_string().contains("fontconfig's match")));
+        let asked = ASKED_FONTCONFIG.lock().unwrap();
+        assert_eq!(asked.iter().filter(|p| *p == name).count(), 1, "{asked:?}");
     }
 
     fn draw(spec: &TextSpec) -> Poly2 {
