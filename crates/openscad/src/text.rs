@@ -383,7 +383,7 @@ impl Match {
 /// (`OPENSCAD_FONT_PATH`), which `FONTCONFIG_PATH`/`FONTCONFIG_FILE` can give fc-match.
 ///
 /// Each pattern is asked once a process, as [`Fonts::standard`] scans the fonts once: a
-/// design naming a missing font in every `text()` started an `fc-match` (15-20 ms) for each.
+/// design naming a missing font in every `text()` started an `fc-match` (about 8 ms) for each.
 fn fontconfig_match(pattern: &str) -> Option<Match> {
     use std::collections::HashMap;
     use std::sync::{Mutex, OnceLock};
