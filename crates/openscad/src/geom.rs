@@ -545,8 +545,9 @@ struct Fan {
     dirs: Vec<DVec3>,
     /// Per vertex, its generators (indices into `dirs`).
     gens: Vec<Vec<usize>>,
-    /// Per vertex, arcs (pairs of indices into `dirs`) covering its cone's boundary.
-    arcs: Vec<Vec<[usize; 2]>>,
+    /// Per vertex, arcs (pairs of indices into `dirs`) covering its cone's boundary, each
+    /// with the normal of its great circle (its ends' cross product), made once.
+    arcs: Vec<Vec<([usize; 2], DVec3)>>,
     /// Per vertex, a cap holding its cone (unit centre, angular radius), None past 90°.
     caps: Vec<Option<(DVec3, f64)>>,
     /// The caps by latitude, built once: a fan is summed with many others (a mesh's
@@ -636,6 +637,13 @@ impl Fan {
         gens: Vec<Vec<usize>>,
         arcs: Vec<Vec<[usize; 2]>>,
     ) -> Fan {
+        let arcs = arcs
+            .into_iter()
+            .map(|a: Vec<[usize; 2]>| {
+                let normal = |[x, y]: [usize; 2]| dirs[x].cross(dirs[y]);
+                a.into_iter().map(|e| (e, normal(e))).collect()
+            })
+            .collect();
         let caps: Vec<_> = gens
             .iter()
             .map(|g| {
@@ -683,45 +691,87 @@ impl Fan {
     /// lie more than their radii (and 10⁻⁶) apart are skipped unseen: for each p only the
     /// q of [`CapBand::candidates`] are tried, in order.
     fn sum_vertices(&self, other: &Fan) -> Vec<DVec3> {
-        let tol = FAN_EPS * self.reach.max(other.reach).max(f64::MIN_POSITIVE);
-        // h_other[k]: the support of `other` along self.dirs[k], and the reverse.
-        let h_other = other.support(&self.dirs);
-        let h_self = self.support(&other.dirs);
-        // This fan's radii widened by the 10⁻⁶ slack: caps at angle a apart are disjoint
-        // when a > r1 + r2 + 10⁻⁶, that is cos a < cos(r1' + r2).
-        let (trig_self, trig_other) = (cap_trig(&self.caps, 1e-6), &other.trig);
+        // A large sum's vertices are found in parallel; a small one's (a mesh's triangle,
+        // the triangles summed in parallel already) in turn.
+        let parallel = self.v.len().saturating_mul(other.v.len()) >= PARALLEL_SUMS;
+        self.sum_vertices_in(other, parallel)
+    }
+
+    /// [`Fan::sum_vertices`], each of this fan's vertices apart in parallel or all in turn:
+    /// the same points in the same order.
+    fn sum_vertices_in(&self, other: &Fan, parallel: bool) -> Vec<DVec3> {
+        use rayon::prelude::*;
+        let meet = Meet {
+            tol: FAN_EPS * self.reach.max(other.reach).max(f64::MIN_POSITIVE),
+            // h_other[k]: the support of `other` along self.dirs[k], and the reverse.
+            h_other: other.support(&self.dirs),
+            h_self: self.support(&other.dirs),
+            // This fan's radii widened by the 10⁻⁶ slack: caps at angle a apart are disjoint
+            // when a > r1 + r2 + 10⁻⁶, that is cos a < cos(r1' + r2).
+            trig_self: cap_trig(&self.caps, 1e-6),
+        };
+        let at = |cand: &mut Vec<usize>, i: usize| self.sums_at(i, other, &meet, cand);
+        match parallel {
+            true => (0..self.v.len())
+                .into_par_iter()
+                .map_init(Vec::new, at)
+                .collect::<Vec<_>>()
+                .concat(),
+            false => {
+                let mut cand = vec![];
+                (0..self.v.len()).flat_map(|i| at(&mut cand, i)).collect()
+            }
+        }
+    }
+
+    /// The sums of this fan's vertex `i` with the vertices of `other` whose cones meet its
+    /// own, in order ([`Fan::sum_vertices`]); `cand` is scratch.
+    fn sums_at(&self, i: usize, other: &Fan, m: &Meet, cand: &mut Vec<usize>) -> Vec<DVec3> {
+        let p = self.v[i];
         let mut out = vec![];
-        let mut cand = vec![];
-        for (i, &p) in self.v.iter().enumerate() {
-            other.band.candidates(self.caps[i], &mut cand);
-            for &j in &cand {
-                let q = other.v[j];
-                if let (Some((c1, _)), Some((c2, _))) = (self.caps[i], other.caps[j]) {
-                    let ((cos1, sin1), (cos2, sin2)) = (trig_self[i], trig_other[j]);
-                    // Both radii are below 90°, so the sum is below 180° and cos decreases.
-                    if c1.dot(c2) < cos1 * cos2 - sin1 * sin2 {
-                        continue;
-                    }
+        other.band.candidates(self.caps[i], cand);
+        for &j in cand.iter() {
+            let q = other.v[j];
+            if let (Some((c1, _)), Some((c2, _))) = (self.caps[i], other.caps[j]) {
+                let ((cos1, sin1), (cos2, sin2)) = (m.trig_self[i], other.trig[j]);
+                // Both radii are below 90°, so the sum is below 180° and cos decreases.
+                if c1.dot(c2) < cos1 * cos2 - sin1 * sin2 {
+                    continue;
                 }
-                let meet = self.gens[i]
+            }
+            let meet = self.gens[i]
+                .iter()
+                .any(|&k| self.dirs[k].dot(q) >= m.h_other[k] - m.tol)
+                || other.gens[j]
                     .iter()
-                    .any(|&k| self.dirs[k].dot(q) >= h_other[k] - tol)
-                    || other.gens[j]
-                        .iter()
-                        .any(|&k| other.dirs[k].dot(p) >= h_self[k] - tol)
-                    || self.arcs[i].iter().any(|&[a, b]| {
-                        other.arcs[j].iter().any(|&[c, d]| {
-                            arcs_cross([self.dirs[a], self.dirs[b]], [other.dirs[c], other.dirs[d]])
-                        })
-                    });
-                if meet {
-                    out.push(p + q);
-                }
+                    .any(|&k| other.dirs[k].dot(p) >= m.h_self[k] - m.tol)
+                || self.arcs[i].iter().any(|&([a, b], n1)| {
+                    other.arcs[j].iter().any(|&([c, d], n2)| {
+                        arcs_cross(
+                            ([self.dirs[a], self.dirs[b]], n1),
+                            ([other.dirs[c], other.dirs[d]], n2),
+                        )
+                    })
+                });
+            if meet {
+                out.push(p + q);
             }
         }
         out
     }
 }
+
+/// What [`Fan::sum_vertices`] tests each pair of vertices with: the tolerance, each fan's
+/// support along the other's generators, this fan's caps' radii widened.
+struct Meet {
+    tol: f64,
+    h_other: Vec<f64>,
+    h_self: Vec<f64>,
+    trig_self: Vec<(f64, f64)>,
+}
+
+/// From this many pairs of vertices on, [`Fan::sum_vertices`] works in parallel.
+const PARALLEL_SUMS: usize = 1 << 16;
 
 /// The cosine and sine of each cap's radius plus `slack` ((0, 0) without a cap).
 fn cap_trig(caps: &[Option<(DVec3, f64)>], slack: f64) -> Vec<(f64, f64)> {
@@ -791,10 +841,10 @@ impl CapBand {
     }
 }
 
-/// Whether two great-circle arcs (each shorter than a half circle, between unit vectors)
-/// meet, counting near misses (within [`FAN_EPS`]) as meeting.
-fn arcs_cross([a, b]: [DVec3; 2], [c, d]: [DVec3; 2]) -> bool {
-    let (n1, n2) = (a.cross(b), c.cross(d));
+/// Whether two great-circle arcs (each shorter than a half circle, between unit vectors,
+/// each with its ends' cross product) meet, counting near misses (within [`FAN_EPS`]) as
+/// meeting.
+fn arcs_cross(([a, b], n1): ([DVec3; 2], DVec3), ([c, d], n2): ([DVec3; 2], DVec3)) -> bool {
     let apart = |s: f64, t: f64| (s > FAN_EPS && t > FAN_EPS) || (s < -FAN_EPS && t < -FAN_EPS);
     if apart(n1.dot(c), n1.dot(d)) || apart(n2.dot(a), n2.dot(b)) {
         return false;
@@ -1214,6 +1264,24 @@ mod tests {
         // Fewer points than all sums.
         let kept = Fan::of(&b).unwrap().sum_vertices(&Fan::of(&s).unwrap());
         assert!(kept.len() * 4 < b.len() * s.len(), "{}", kept.len());
+    }
+
+    #[test]
+    fn fan_sums_in_parallel_are_the_sums_in_turn() {
+        let s = Fan::of(&sphere(2.797, 45, DVec3::ZERO)).unwrap();
+        let t = Fan::of(&sphere(1.0, 12, DVec3::new(5.0, 0.0, 1.0))).unwrap();
+        let b = Fan::of(&corners(DVec3::ZERO, DVec3::new(1.0, 2.0, 0.5))).unwrap();
+        for (x, y) in [(&s, &t), (&t, &s), (&b, &s), (&s, &b)] {
+            let bits = |v: Vec<DVec3>| v.iter().map(|p| p.to_array().map(f64::to_bits)).collect();
+            let (a, c): (Vec<_>, Vec<_>) = (
+                bits(x.sum_vertices_in(y, true)),
+                bits(x.sum_vertices_in(y, false)),
+            );
+            assert!(a.len() > x.v.len().max(y.v.len()), "{}", a.len());
+            assert_eq!(a, c);
+        }
+        // The sphere pair is past the size summed in parallel.
+        assert!(s.v.len() * t.v.len() >= PARALLEL_SUMS);
     }
 
     #[test]

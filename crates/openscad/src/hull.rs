@@ -66,7 +66,12 @@ struct Face {
 impl Face {
     fn new(points: &[DVec3], v: [usize; 3]) -> Face {
         let [a, b, c] = v.map(|i| points[i]);
-        let n = (b - a).cross(c - a).normalize_or_zero();
+        Face::with_normal(a, v, (b - a).cross(c - a).normalize_or_zero())
+    }
+
+    /// The face on corners `v`, the first at `a`, with unit normal `n` made as [`Face::new`]
+    /// makes it.
+    fn with_normal(a: DVec3, v: [usize; 3], n: DVec3) -> Face {
         Face {
             v,
             n,
@@ -104,6 +109,8 @@ struct Hull<'a> {
     visible: Vec<usize>,
     horizon: Vec<(usize, usize, usize)>,
     folds: Vec<usize>,
+    /// The unit normal of the new face each `horizon` edge would make ([`Self::folds`]).
+    normals: Vec<DVec3>,
     moved: Vec<usize>,
     new: Vec<usize>,
 }
@@ -122,6 +129,7 @@ impl<'a> Hull<'a> {
             visible: vec![],
             horizon: vec![],
             folds: vec![],
+            normals: vec![],
             moved: vec![],
             new: vec![],
         };
@@ -292,20 +300,22 @@ impl<'a> Hull<'a> {
     /// The unseen faces of `horizon` a new face to `at` would fold back over: that face's
     /// third corner above it, or, `at` all but on that face's plane, facing the other way
     /// (`at` on the face's side of the edge). Those faces go too, into `folds`.
-    fn folds(&self, horizon: &[(usize, usize, usize)], at: DVec3, folds: &mut Vec<usize>) {
+    fn folds(&mut self, horizon: &[(usize, usize, usize)], at: DVec3, folds: &mut Vec<usize>) {
         folds.clear();
-        let found = horizon
-            .iter()
-            .filter(|&&(a, b, h)| {
-                let [pa, pb] = [a, b].map(|i| self.points[i]);
-                let face = &self.faces[h];
-                let n = (pb - pa).cross(at - pa).normalize_or_zero();
-                let c = face.v.into_iter().find(|&i| i != a && i != b);
-                c.is_some_and(|c| n.dot(self.points[c] - pa) > self.eps)
-                    || (face.distance(at) > -self.eps && n.dot(face.n) < 0.0)
-            })
-            .map(|&(_, _, h)| h);
-        folds.extend(found);
+        self.normals.clear();
+        for &(a, b, h) in horizon {
+            let [pa, pb] = [a, b].map(|i| self.points[i]);
+            let face = &self.faces[h];
+            // The new face's normal, as `Face::new` makes it for [a, b, at].
+            let n = (pb - pa).cross(at - pa).normalize_or_zero();
+            self.normals.push(n);
+            let c = face.v.into_iter().find(|&i| i != a && i != b);
+            if c.is_some_and(|c| n.dot(self.points[c] - pa) > self.eps)
+                || (face.distance(at) > -self.eps && n.dot(face.n) < 0.0)
+            {
+                folds.push(h);
+            }
+        }
     }
 
     /// Whether `horizon` is one loop: every horizon vertex starts exactly one edge, and the
@@ -349,8 +359,9 @@ impl<'a> Hull<'a> {
             self.free.push(g);
         }
         new.clear();
-        for &(a, b, _) in horizon {
-            new.push(self.add_face(Face::new(self.points, [a, b, p])));
+        for (k, &(a, b, _)) in horizon.iter().enumerate() {
+            let face = Face::with_normal(self.points[a], [a, b, p], self.normals[k]);
+            new.push(self.add_face(face));
         }
         for (n, &(a, b, h)) in horizon.iter().enumerate() {
             let face = new[n];
