@@ -550,24 +550,27 @@ fn check_convex(vertices: &[Vec3], faces: &[Vec<usize>]) -> csgpix_scene::Result
     // in a pass over some of its faces, before every plane is made or the volume summed.
     // The same test as the last pass, so the same answer.
     const NEAR: usize = 4;
-    let (mut planes, mut units) = (Vec::with_capacity(faces.len()), vec![]);
+    // Each face's unit normal with its plane.
+    let mut planes: Vec<(Vec3, Plane)> = Vec::with_capacity(faces.len());
     for (k, face) in faces.iter().enumerate() {
         let p = face_plane(vertices, face, extent).ok_or(Error::FaceWithoutArea { face: k })?;
-        units.push(p.normal.map(|c| c / norm(p.normal)));
-        planes.push(p);
+        planes.push((p.normal.map(|c| c / norm(p.normal)), p));
         for f in (1..=NEAR).map(|j| &faces[(k + j) % faces.len()]) {
             f.iter()
-                .try_for_each(|&i| outside(vertices, (&units[k], &planes[k]), tolerance, k, i))?;
+                .try_for_each(|&i| outside(vertices, &planes[k], tolerance, k, i))?;
         }
     }
-    let volume: f64 = planes.iter().map(|p| dot(p.centre, p.normal) / 6.0).sum();
+    let volume: f64 = planes
+        .iter()
+        .map(|(_, p)| dot(p.centre, p.normal) / 6.0)
+        .sum();
     let has_volume = volume > 1e-12 * extent * extent * extent;
     if !has_volume {
         return Err(Error::WrongWinding);
     }
-    for k in 0..faces.len() {
+    for (k, plane) in planes.iter().enumerate() {
         used.iter()
-            .try_for_each(|&i| outside(vertices, (&units[k], &planes[k]), tolerance, k, i))?;
+            .try_for_each(|&i| outside(vertices, plane, tolerance, k, i))?;
     }
     Ok(())
 }
@@ -583,7 +586,7 @@ fn used_points(points: usize, faces: &[Vec<usize>]) -> Vec<usize> {
 /// `tolerance`.
 fn outside(
     vertices: &[Vec3],
-    (unit, plane): (&Vec3, &Plane),
+    (unit, plane): &(Vec3, Plane),
     tolerance: f64,
     k: usize,
     i: usize,
