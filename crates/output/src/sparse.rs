@@ -35,6 +35,9 @@ pub struct Sparse<'f> {
     skipped: u64,
     /// Zeros seen and not yet written, ending at `at`: a hole if the run reaches `hole`.
     zeros: u64,
+    /// The file's own offset, as the last seek or write left it: a write that follows
+    /// another needs no seek (a volume's slices would otherwise cost two `lseek`s each).
+    offset: u64,
 }
 
 impl<'f> Sparse<'f> {
@@ -50,6 +53,7 @@ impl<'f> Sparse<'f> {
             written: 0,
             skipped: 0,
             zeros: 0,
+            offset: at,
         })
     }
 
@@ -57,7 +61,7 @@ impl<'f> Sparse<'f> {
     /// Returns the bytes written and the bytes skipped as holes.
     pub fn finish(mut self) -> std::io::Result<(u64, u64)> {
         let head = std::mem::take(&mut self.head);
-        self.put(&head)?;
+        self.put(&[&head])?;
         self.at += head.len() as u64;
         // Trailing zeros are a hole at any length: the file's length covers them.
         self.skipped += std::mem::take(&mut self.zeros);
@@ -68,16 +72,41 @@ impl<'f> Sparse<'f> {
         Ok((self.written, self.skipped))
     }
 
-    /// Writes `bytes` at `at` unless they are all zeros, which join the run of zeros in hand.
-    fn put(&mut self, bytes: &[u8]) -> std::io::Result<()> {
-        if zeros(bytes) {
-            self.zeros += bytes.len() as u64;
+    /// Writes `pieces` (contiguous in the file) at `at` unless they are all zeros, which
+    /// join the run of zeros in hand.
+    fn put(&mut self, pieces: &[&[u8]]) -> std::io::Result<()> {
+        let len: usize = pieces.iter().map(|p| p.len()).sum();
+        if pieces.iter().all(|p| zeros(p)) {
+            self.zeros += len as u64;
             return Ok(());
         }
         self.end_zeros()?;
-        self.file.seek(SeekFrom::Start(self.at))?;
-        self.file.write_all(bytes)?;
-        self.written += bytes.len() as u64;
+        self.write_at(self.at, pieces)?;
+        self.written += len as u64;
+        Ok(())
+    }
+
+    /// Writes `pieces` one after another from file offset `to`, in one call where the system
+    /// takes them all, seeking there only when the file's offset is elsewhere.
+    fn write_at(&mut self, to: u64, pieces: &[&[u8]]) -> std::io::Result<()> {
+        use std::io::IoSlice;
+        if self.offset != to {
+            self.file.seek(SeekFrom::Start(to))?;
+        }
+        // Unknown after an error: the next write seeks.
+        self.offset = u64::MAX;
+        let mut slices: Vec<IoSlice> = pieces.iter().map(|p| IoSlice::new(p)).collect();
+        let mut left = &mut slices[..];
+        let mut at = to;
+        while !left.is_empty() {
+            let n = self.file.write_vectored(left)?;
+            if n == 0 {
+                return Err(std::io::ErrorKind::WriteZero.into());
+            }
+            at += n as u64;
+            IoSlice::advance_slices(&mut left, n);
+        }
+        self.offset = at;
         Ok(())
     }
 
@@ -89,31 +118,36 @@ impl<'f> Sparse<'f> {
             self.skipped += n;
             return Ok(());
         }
-        self.file.seek(SeekFrom::Start(self.at - n))?;
         static ZEROS: [u8; 64 * 1024] = [0; 64 * 1024];
         let mut left = n;
         while left > 0 {
             let k = left.min(ZEROS.len() as u64);
-            self.file.write_all(&ZEROS[..k as usize])?;
+            self.write_at(self.at - left, &[&ZEROS[..k as usize]])?;
             left -= k;
         }
         self.written += n;
         Ok(())
     }
 
-    /// Whole blocks from a block boundary: runs of zero blocks skipped, runs of the others
-    /// written in one call each.
-    fn blocks(&mut self, mut data: &[u8]) -> std::io::Result<()> {
+    /// `head` (bytes up to a block boundary, or none), then whole blocks `data`: runs of zero
+    /// blocks skipped, runs of the others written in one call each, the head with the run
+    /// it begins (a slice's first block and the rest of it in one call).
+    fn blocks(&mut self, head: &[u8], mut data: &[u8]) -> std::io::Result<()> {
         let b = BLOCK as usize;
-        while !data.is_empty() {
-            let zero = zeros(&data[..b]);
-            let mut n = b;
+        let mut first = head;
+        while !(first.is_empty() && data.is_empty()) {
+            let zero = match first.is_empty() {
+                true => zeros(&data[..b]),
+                false => zeros(first),
+            };
+            let mut n = 0;
             while n < data.len() && zeros(&data[n..n + b]) == zero {
                 n += b;
             }
-            self.put(&data[..n])?;
-            self.at += n as u64;
+            self.put(&[first, &data[..n]])?;
+            self.at += (first.len() + n) as u64;
             data = &data[n..];
+            first = &[];
         }
         Ok(())
     }
@@ -125,6 +159,7 @@ impl Write for Sparse<'_> {
         let start = self.at + self.head.len() as u64;
         // Complete the block in hand up to the next boundary.
         let to_boundary = (BLOCK - start % BLOCK) % BLOCK;
+        let mut head = Vec::new();
         if !self.head.is_empty() || to_boundary != 0 {
             let take = (to_boundary as usize).min(data.len());
             self.head.extend_from_slice(&data[..take]);
@@ -132,12 +167,10 @@ impl Write for Sparse<'_> {
             if !(self.at + self.head.len() as u64).is_multiple_of(BLOCK) {
                 return Ok(len);
             }
-            let head = std::mem::take(&mut self.head);
-            self.put(&head)?;
-            self.at += head.len() as u64;
+            head = std::mem::take(&mut self.head);
         }
         let whole = data.len() / BLOCK as usize * BLOCK as usize;
-        self.blocks(&data[..whole])?;
+        self.blocks(&head, &data[..whole])?;
         self.head.extend_from_slice(&data[whole..]);
         Ok(len)
     }
