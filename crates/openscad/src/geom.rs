@@ -710,25 +710,37 @@ impl Fan {
             // when a > r1 + r2 + 10⁻⁶, that is cos a < cos(r1' + r2).
             trig_self: cap_trig(&self.caps, 1e-6),
         };
-        let at = |cand: &mut Vec<usize>, i: usize| self.sums_at(i, other, &meet, cand);
+        let (mut cand, mut out) = (vec![], vec![]);
         match parallel {
             true => (0..self.v.len())
                 .into_par_iter()
-                .map_init(Vec::new, at)
+                .map_init(Vec::new, |cand, i| {
+                    let mut out = vec![];
+                    self.sums_at(i, other, &meet, cand, &mut out);
+                    out
+                })
                 .collect::<Vec<_>>()
                 .concat(),
             false => {
-                let mut cand = vec![];
-                (0..self.v.len()).flat_map(|i| at(&mut cand, i)).collect()
+                for i in 0..self.v.len() {
+                    self.sums_at(i, other, &meet, &mut cand, &mut out);
+                }
+                out
             }
         }
     }
 
     /// The sums of this fan's vertex `i` with the vertices of `other` whose cones meet its
-    /// own, in order ([`Fan::sum_vertices`]); `cand` is scratch.
-    fn sums_at(&self, i: usize, other: &Fan, m: &Meet, cand: &mut Vec<usize>) -> Vec<DVec3> {
+    /// own, in order, onto `out` ([`Fan::sum_vertices`]); `cand` is scratch.
+    fn sums_at(
+        &self,
+        i: usize,
+        other: &Fan,
+        m: &Meet,
+        cand: &mut Vec<usize>,
+        out: &mut Vec<DVec3>,
+    ) {
         let p = self.v[i];
-        let mut out = vec![];
         other.band.candidates(self.caps[i], cand);
         for &j in cand.iter() {
             let q = other.v[j];
@@ -757,7 +769,6 @@ impl Fan {
                 out.push(p + q);
             }
         }
-        out
     }
 }
 

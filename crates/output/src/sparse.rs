@@ -61,7 +61,7 @@ impl<'f> Sparse<'f> {
     /// Returns the bytes written and the bytes skipped as holes.
     pub fn finish(mut self) -> std::io::Result<(u64, u64)> {
         let head = std::mem::take(&mut self.head);
-        self.put(&[&head])?;
+        self.put([&head, &[]])?;
         self.at += head.len() as u64;
         // Trailing zeros are a hole at any length: the file's length covers them.
         self.skipped += std::mem::take(&mut self.zeros);
@@ -74,7 +74,7 @@ impl<'f> Sparse<'f> {
 
     /// Writes `pieces` (contiguous in the file) at `at` unless they are all zeros, which
     /// join the run of zeros in hand.
-    fn put(&mut self, pieces: &[&[u8]]) -> std::io::Result<()> {
+    fn put(&mut self, pieces: [&[u8]; 2]) -> std::io::Result<()> {
         let len: usize = pieces.iter().map(|p| p.len()).sum();
         if pieces.iter().all(|p| zeros(p)) {
             self.zeros += len as u64;
@@ -88,14 +88,14 @@ impl<'f> Sparse<'f> {
 
     /// Writes `pieces` one after another from file offset `to`, in one call where the system
     /// takes them all, seeking there only when the file's offset is elsewhere.
-    fn write_at(&mut self, to: u64, pieces: &[&[u8]]) -> std::io::Result<()> {
+    fn write_at(&mut self, to: u64, pieces: [&[u8]; 2]) -> std::io::Result<()> {
         use std::io::IoSlice;
         if self.offset != to {
             self.file.seek(SeekFrom::Start(to))?;
         }
         // Unknown after an error: the next write seeks.
         self.offset = u64::MAX;
-        let mut slices: Vec<IoSlice> = pieces.iter().map(|p| IoSlice::new(p)).collect();
+        let mut slices = pieces.map(IoSlice::new);
         let mut left = &mut slices[..];
         let mut at = to;
         while !left.is_empty() {
@@ -122,7 +122,7 @@ impl<'f> Sparse<'f> {
         let mut left = n;
         while left > 0 {
             let k = left.min(ZEROS.len() as u64);
-            self.write_at(self.at - left, &[&ZEROS[..k as usize]])?;
+            self.write_at(self.at - left, [&ZEROS[..k as usize], &[]])?;
             left -= k;
         }
         self.written += n;
@@ -144,7 +144,7 @@ impl<'f> Sparse<'f> {
             while n < data.len() && zeros(&data[n..n + b]) == zero {
                 n += b;
             }
-            self.put(&[first, &data[..n]])?;
+            self.put([first, &data[..n]])?;
             self.at += (first.len() + n) as u64;
             data = &data[n..];
             first = &[];
