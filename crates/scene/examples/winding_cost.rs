@@ -3,6 +3,9 @@
 //!
 //! `cargo run --release -p csgpix-scene --example winding_cost -- 64 256`
 //!
+//! Words among the arguments pick the meshes by their first word (`holey`, `loose`; both
+//! when none is given): `-- 256 holey` times the holey sphere alone.
+//!
 //! - `holey sphere`: a sphere of 3,936 triangles (its poles' degenerate ones dropped), 40
 //!   of them cut out and every seventh wound the wrong way (its boundary: the hole's rim);
 //! - `loose soup`: 4,000 triangles sharing no corner (every edge on the boundary: the
@@ -84,10 +87,14 @@ fn measure(name: &str, tris: &[[[f64; 3]; 3]], n: usize) {
 }
 
 fn main() {
-    let sizes: Vec<usize> = std::env::args()
-        .skip(1)
-        .filter_map(|a| a.parse().ok())
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let sizes: Vec<usize> = args.iter().filter_map(|a| a.parse().ok()).collect();
+    let picked: Vec<&String> = args
+        .iter()
+        .filter(|a| a.parse::<usize>().is_err())
         .collect();
+    let wanted =
+        |name: &str| picked.is_empty() || picked.iter().any(|p| name.starts_with(p.as_str()));
     let mut holey = sphere(36, 56);
     holey.drain(1000..1040);
     for k in (0..holey.len()).step_by(7) {
@@ -95,7 +102,10 @@ fn main() {
     }
     let loose = soup(4000);
     for &n in &sizes {
-        measure("holey sphere", &holey, n);
-        measure("loose soup", &loose, n);
+        for (name, tris) in [("holey sphere", &holey), ("loose soup", &loose)] {
+            if wanted(name) {
+                measure(name, tris, n);
+            }
+        }
     }
 }

@@ -26,10 +26,11 @@
 //! boundary is the mesh's, so `S − K` is closed and its winding number at `p` is the signed
 //! count of crossings of any ray from `p`; the ray down from `p` misses `K` (every cone
 //! triangle meets the column only at `q`), so it is `X(p)`. And `w_S = w_{S−K} + w_K`, with
-//! `w_K(p)` the sum above (a solid angle depends on directions only, `q − p ∥ ẑ`). The cost
-//! is the mesh's footprint columns × the voxels of its depth range × its boundary edges:
-//! nothing beyond the crossings for a mesh with a small hole, and the direct sum's order
-//! (three boundary edges per triangle) for a soup of loose triangles.
+//! `w_K(p)` the sum above (a solid angle depends on directions only, `q − p ∥ ẑ`). Summed at
+//! every sample, the cost would be the mesh's footprint columns × the voxels of its depth
+//! range × its boundary edges; most samples are decided without the sum (below), so a mesh
+//! with holes costs little beyond its crossings, and only a soup of loose triangles (three
+//! boundary edges per triangle, every column near many) keeps the direct sum's order.
 //!
 //! The crossings are [`TriMesh::crossings`]' own, exact on shared edges and vertices. The
 //! boundary term jumps by 1 where the column passes a boundary edge above which `p` lies,
@@ -38,6 +39,32 @@
 //! edge function at the same perturbed pixel centre, so the two stay in step; a boundary edge
 //! seen end-on adds nothing, like its triangles. The denominator is evaluated in a form free
 //! of cancellation for edges far below `p` (`boundary_angle`).
+//!
+//! # Skipping along a column
+//!
+//! Along one column the boundary term `B(z) = Σ_e m_e Ω_e(z) / 4π` is smooth: each cone
+//! triangle is a vertical strip over its edge, which the column meets only where it passes
+//! the edge (the crossings' business). Its rate is bounded: the gradient of a surface's solid
+//! angle is the Biot–Savart integral round its boundary, `∇Ω = ∮ dl × r / |r|³` (`r` from the
+//! point to the curve), and of a strip's boundary only the edge has a depth component (the
+//! two vertical sides give `ẑ × r ⊥ ẑ`; the side at infinity nothing), so
+//! `|dΩ_e/dz| ≤ ∫_e |dl_xy| |r_xy| / |r|³ ≤ ℓ_e / d_e²`, with `ℓ_e` the edge's length across
+//! the depth axis and `d_e` its distance from the column there (scene proportions). Summed,
+//! `|B(z) − B(z')| ≤ |z − z'| Σ_e |m_e| ℓ_e / d_e² / 4π`. Where that leaves too much room
+//! over a column, each block of 16 samples takes its own bound, an edge whose depth range is
+//! `h` away from the block's counted at `max_{ρ ≥ d_e} ρ / (ρ² + h²)^{3/2}` (the same integral
+//! with `|r|² = ρ² + r_z²`, `r_z ≥ h`) instead of `1 / d_e²`; `h` is taken 1e-6 short, so
+//! that an edge's angle turning where its computed denominator changes sign (near its own
+//! depths, for a column just off its shadow) is always inside `h = 0`. An edge seen end-on
+//! adds nothing at any depth and is left out. A sample whose winding number,
+//! taken with `B` of the last sample where the boundary was summed (exact crossings of its
+//! own), is farther from 1/2 than the bounds allow since then plus `SLACK` (1e-9, far above the
+//! rounding of a sum of a few hundred angles) is on the same side of 1/2 as the full sum
+//! would put it, so it is decided without the sum; any other sample is summed edge by edge in
+//! the same order as before (the same bits) and becomes the next anchor. Far from the
+//! boundary and from the level `w = 1/2` most samples are decided this way; near either, every
+//! one is summed. The runs are those of the sum at every sample (a property test holds them
+//! to it).
 //!
 //! # Orientation
 //!
@@ -51,7 +78,7 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
-use glam::{DMat3, DVec3};
+use glam::{DMat3, DVec2, DVec3};
 use rayon::prelude::*;
 
 use crate::trimesh::{edges, Edge, Projected, Raster, TriMesh, Window, FRAC_BITS};
@@ -254,6 +281,10 @@ impl OpenMesh {
     }
 }
 
+/// How far from 1/2 a winding number taken by the bound must be (module docs, "Skipping along
+/// a column"): far above the rounding of the summed angles, far below a voxel's worth.
+const SLACK: f64 = 1e-9;
+
 /// One column's crossings: depth and the winding number's jump there, sorted by depth.
 type Crossed = Vec<(f64, i32)>;
 
@@ -327,11 +358,34 @@ impl Column {
     }
 
     /// The runs of inside samples on the column through fixed-point `(px, py)`, given its
-    /// signed crossings.
+    /// signed crossings: the samples where [`Column::winding`] is at least 1/2, found without
+    /// evaluating the boundary at every sample (module docs, "Skipping along a column").
     fn runs(&self, px: i64, py: i64, crossed: &[(f64, i32)]) -> Vec<(u32, u32)> {
         let mut runs: Vec<(u32, u32)> = vec![];
-        for (k, w) in self.winding(px, py, crossed).into_iter().enumerate() {
-            if w >= 0.5 {
+        let t = |k: usize| self.zs[k] / self.iso.scale.z;
+        let seen = self.seen(px, py);
+        let rates = self.block_rates(&seen);
+        // The last sample where the boundary's angles were summed: the sum, and the most
+        // they can have changed since (radians).
+        let mut anchor: Option<(f64, f64)> = None;
+        let (mut x, mut j) = (0i64, 0);
+        for (k, &z) in self.zs.iter().enumerate() {
+            while j < crossed.len() && crossed[j].0 < z {
+                x += i64::from(crossed[j].1);
+                j += 1;
+            }
+            let known = anchor.as_mut().and_then(|(oa, room)| {
+                *room += rates[k / BLOCK] * (t(k) - t(k - 1));
+                let w = self.iso.sign * (x as f64 + *oa / (4.0 * PI));
+                let r = *room / (4.0 * PI) + SLACK;
+                (w - r >= 0.5 || w + r < 0.5).then_some(w >= 0.5)
+            });
+            let inside = known.unwrap_or_else(|| {
+                let o = self.omega_at(&seen, z);
+                anchor = Some((o, 0.0));
+                self.iso.sign * (x as f64 + o / (4.0 * PI)) >= 0.5
+            });
+            if inside {
                 let k = self.first + k as u32;
                 match runs.last_mut() {
                     Some(r) if r.1 + 1 == k => r.1 = k,
@@ -342,12 +396,67 @@ impl Column {
         runs
     }
 
+    /// The boundary edges as the column through fixed-point `(px, py)` sees them, in order,
+    /// those seen end-on left out (their cone triangles add nothing there).
+    fn seen(&self, px: i64, py: i64) -> Vec<Seen> {
+        let s = self.iso.scale;
+        let seen = self.boundary.iter().filter_map(|e| {
+            let side = e.edge.side(px, py);
+            let (a, b) = (self.across(e.a, px, py), self.across(e.b, px, py));
+            (side != 0).then_some(Seen {
+                a,
+                b,
+                z: (e.a.z / s.z, e.b.z / s.z),
+                m: e.m,
+                side,
+            })
+        });
+        seen.collect()
+    }
+
+    /// For each block of [`BLOCK`] samples, a bound on the rate of the boundary's summed
+    /// angles (radians per unit of depth in scene proportions) from the sample before the
+    /// block to its last. One bound for the whole column (every edge taken at its nearest)
+    /// where that leaves less than [`SMALL`] of room over the column; otherwise one a block.
+    fn block_rates(&self, near: &[Seen]) -> Vec<f64> {
+        let n = self.zs.len();
+        let t = |k: usize| self.zs[k] / self.iso.scale.z;
+        let whole = rate(near, None);
+        let blocks = n.div_ceil(BLOCK);
+        if n == 0 || whole * (t(n - 1) - t(0)) / (4.0 * PI) < SMALL {
+            return vec![whole; blocks];
+        }
+        (0..blocks)
+            .map(|b| {
+                let (lo, hi) = ((b * BLOCK).saturating_sub(1), ((b + 1) * BLOCK).min(n) - 1);
+                rate(near, Some((t(lo), t(hi))))
+            })
+            .collect()
+    }
+
+    /// Vertex `v` seen from the column through fixed-point `(px, py)`, across the depth axis
+    /// and in scene proportions.
+    fn across(&self, v: Projected, px: i64, py: i64) -> DVec2 {
+        let (s, one) = (self.iso.scale, f64::from(1u32 << FRAC_BITS));
+        DVec2::new((v.x - px) as f64 / one / s.x, (v.y - py) as f64 / one / s.y)
+    }
+
+    /// The boundary's summed angles at the sample at depth `z` of the column that sees the
+    /// boundary as `seen`: the sum [`Column::winding`] makes there, edge by edge in the same
+    /// order, so the same bits.
+    fn omega_at(&self, seen: &[Seen], z: f64) -> f64 {
+        let z = z / self.iso.scale.z;
+        seen.iter().fold(0.0, |o, e| o + e.m * e.angle(z))
+    }
+
     /// The winding number at each sample of the column through fixed-point `(px, py)`,
     /// given its signed crossings: `X` plus the boundary's cone angles (module docs).
     fn winding(&self, px: i64, py: i64, crossed: &[(f64, i32)]) -> Vec<f64> {
         let mut omega = vec![0.0; self.zs.len()];
-        for e in &self.boundary {
-            self.add_boundary(e, px, py, &mut omega);
+        for e in &self.seen(px, py) {
+            for (o, &z) in omega.iter_mut().zip(&self.zs) {
+                *o += e.m * e.angle(z / self.iso.scale.z);
+            }
         }
         let (mut x, mut j) = (0i64, 0);
         let mut out = Vec::with_capacity(omega.len());
@@ -360,29 +469,66 @@ impl Column {
         }
         out
     }
+}
 
-    /// Adds edge `e`'s cone angle at every sample of the column to `omega`.
-    fn add_boundary(&self, e: &Boundary, px: i64, py: i64, omega: &mut [f64]) {
-        let side = e.edge.side(px, py);
-        if side == 0 {
-            // Seen end-on: its cone triangle meets the column only at its apex.
-            return;
-        }
-        let s = self.iso.scale;
-        let one = f64::from(1u32 << FRAC_BITS);
-        let xy = |v: Projected| {
-            let (dx, dy) = ((v.x - px) as f64 / one, (v.y - py) as f64 / one);
-            (dx / s.x, dy / s.y)
-        };
-        let (a, b) = (xy(e.a), xy(e.b));
-        let (az, bz) = (e.a.z / s.z, e.b.z / s.z);
-        for (o, &z) in omega.iter_mut().zip(&self.zs) {
-            let z = z / s.z;
-            let u = DVec3::new(a.0, a.1, az - z);
-            let v = DVec3::new(b.0, b.1, bz - z);
-            *o += e.m * boundary_angle(u, v, side);
-        }
+/// A boundary edge seen from a column, in scene proportions: its ends across the depth axis
+/// from the column, their depths, its multiplicity and the exact sign of its cone angle's
+/// numerator (never 0: an edge seen end-on is left out).
+struct Seen {
+    a: DVec2,
+    b: DVec2,
+    z: (f64, f64),
+    m: f64,
+    side: i32,
+}
+
+impl Seen {
+    /// The edge's cone angle at depth `z` (scene proportions) on the column.
+    fn angle(&self, z: f64) -> f64 {
+        let u = DVec3::new(self.a.x, self.a.y, self.z.0 - z);
+        let v = DVec3::new(self.b.x, self.b.y, self.z.1 - z);
+        boundary_angle(u, v, self.side)
     }
+}
+
+/// Samples a rate bound covers on a column where one bound for the whole column is not enough.
+const BLOCK: usize = 16;
+
+/// The room (in winding number) below which one rate bound serves a whole column.
+const SMALL: f64 = 0.05;
+
+/// A bound on `|dΩ/dz|` of the cone triangles over `seen`, summed, for depths in `within`
+/// (every depth where `None`): `Σ |m| ℓ · max_{ρ ≥ d} ρ / (ρ² + h²)^{3/2}`, `ℓ` an edge's
+/// length across the depth axis, `d` its distance from the column there and `h` the gap
+/// between `within` and its depth range less 1e-6 (module docs, "Skipping along a column").
+fn rate(seen: &[Seen], within: Option<(f64, f64)>) -> f64 {
+    seen.iter()
+        .map(|e| {
+            let (lo_z, hi_z) = (e.z.0.min(e.z.1), e.z.0.max(e.z.1));
+            let gap = within.map_or(0.0, |(lo, hi)| (lo_z - hi).max(lo - hi_z));
+            let d = segment_distance(e.a, e.b);
+            let h = (gap - 1e-6).max(0.0);
+            let (d2, h2) = (d * d, h * h);
+            let most = match (h > 0.0, 2.0 * d2 >= h2) {
+                (false, _) => 1.0 / d2,
+                (true, true) => d / ((d2 + h2) * (d2 + h2).sqrt()),
+                // ρ / (ρ² + h²)^{3/2} is largest at ρ = h / √2.
+                (true, false) => 2.0 / (3.0 * 3f64.sqrt() * h2),
+            };
+            e.m.abs() * (e.b - e.a).length() * most
+        })
+        .sum()
+}
+
+/// The distance from the origin to the segment `ab`.
+fn segment_distance(a: DVec2, b: DVec2) -> f64 {
+    let ab = b - a;
+    let len2 = ab.length_squared();
+    let t = match len2 > 0.0 {
+        true => (-a.dot(ab) / len2).clamp(0.0, 1.0),
+        false => 0.0,
+    };
+    (a + ab * t).length()
 }
 
 /// The signed solid angle of the triangle `(u, v, ∞·ẑ)` seen from the origin: van Oosterom
