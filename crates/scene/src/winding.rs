@@ -361,39 +361,44 @@ impl Column {
     /// signed crossings: the samples where [`Column::winding`] is at least 1/2, found without
     /// evaluating the boundary at every sample (module docs, "Skipping along a column").
     fn runs(&self, px: i64, py: i64, crossed: &[(f64, i32)]) -> Vec<(u32, u32)> {
-        let mut runs: Vec<(u32, u32)> = vec![];
         let t = |k: usize| self.zs[k] / self.iso.scale.z;
         let seen = self.seen(px, py);
         let rates = self.block_rates(&seen);
+        if self.every_sample_summed(&rates) {
+            // Summed edge by edge over the column, as the bound would have it at every sample.
+            let w = self.winding_seen(&seen, crossed);
+            return inside_runs(w.into_iter().map(|w| w >= 0.5), self.first);
+        }
         // The last sample where the boundary's angles were summed: the sum, and the most
         // they can have changed since (radians).
         let mut anchor: Option<(f64, f64)> = None;
-        let (mut x, mut j) = (0i64, 0);
-        for (k, &z) in self.zs.iter().enumerate() {
-            while j < crossed.len() && crossed[j].0 < z {
-                x += i64::from(crossed[j].1);
-                j += 1;
-            }
+        let mut crossings = Crossings::new(crossed);
+        let inside = self.zs.iter().enumerate().map(|(k, &z)| {
+            let x = crossings.below(z);
             let known = anchor.as_mut().and_then(|(oa, room)| {
                 *room += rates[k / BLOCK] * (t(k) - t(k - 1));
                 let w = self.iso.sign * (x as f64 + *oa / (4.0 * PI));
                 let r = *room / (4.0 * PI) + SLACK;
                 (w - r >= 0.5 || w + r < 0.5).then_some(w >= 0.5)
             });
-            let inside = known.unwrap_or_else(|| {
+            known.unwrap_or_else(|| {
                 let o = self.omega_at(&seen, z);
                 anchor = Some((o, 0.0));
                 self.iso.sign * (x as f64 + o / (4.0 * PI)) >= 0.5
-            });
-            if inside {
-                let k = self.first + k as u32;
-                match runs.last_mut() {
-                    Some(r) if r.1 + 1 == k => r.1 = k,
-                    _ => runs.push((k, k)),
-                }
-            }
+            })
+        });
+        inside_runs(inside, self.first)
+    }
+
+    /// Whether the rate bounds `rates` leave more than a whole winding number of room
+    /// between any two neighbouring samples (so every sample would be summed anyway).
+    fn every_sample_summed(&self, rates: &[f64]) -> bool {
+        let n = self.zs.len();
+        if n < 2 {
+            return false;
         }
-        runs
+        let step = (self.zs[n - 1] - self.zs[0]) / self.iso.scale.z / (n - 1) as f64;
+        rates.iter().all(|r| r * step / (4.0 * PI) > 1.0)
     }
 
     /// The boundary edges as the column through fixed-point `(px, py)` sees them, in order,
@@ -403,12 +408,16 @@ impl Column {
         let seen = self.boundary.iter().filter_map(|e| {
             let side = e.edge.side(px, py);
             let (a, b) = (self.across(e.a, px, py), self.across(e.b, px, py));
-            (side != 0).then_some(Seen {
+            let z = (e.a.z / s.z, e.b.z / s.z);
+            (side != 0).then(|| Seen {
                 a,
                 b,
-                z: (e.a.z / s.z, e.b.z / s.z),
+                z,
                 m: e.m,
                 side,
+                weight: e.m.abs() * (b - a).length(),
+                d: segment_distance(a, b),
+                span: (z.0.min(z.1), z.0.max(z.1)),
             })
         });
         seen.collect()
@@ -452,23 +461,63 @@ impl Column {
     /// The winding number at each sample of the column through fixed-point `(px, py)`,
     /// given its signed crossings: `X` plus the boundary's cone angles (module docs).
     fn winding(&self, px: i64, py: i64, crossed: &[(f64, i32)]) -> Vec<f64> {
+        self.winding_seen(&self.seen(px, py), crossed)
+    }
+
+    /// [`Column::winding`] on the column that sees the boundary as `seen`: each edge's
+    /// angles over the column in turn.
+    fn winding_seen(&self, seen: &[Seen], crossed: &[(f64, i32)]) -> Vec<f64> {
         let mut omega = vec![0.0; self.zs.len()];
-        for e in &self.seen(px, py) {
+        for e in seen {
             for (o, &z) in omega.iter_mut().zip(&self.zs) {
                 *o += e.m * e.angle(z / self.iso.scale.z);
             }
         }
-        let (mut x, mut j) = (0i64, 0);
-        let mut out = Vec::with_capacity(omega.len());
-        for (&z, &o) in self.zs.iter().zip(&omega) {
-            while j < crossed.len() && crossed[j].0 < z {
-                x += i64::from(crossed[j].1);
-                j += 1;
-            }
-            out.push(self.iso.sign * (x as f64 + o / (4.0 * PI)));
-        }
-        out
+        let mut crossings = Crossings::new(crossed);
+        let w = self.zs.iter().zip(&omega);
+        w.map(|(&z, &o)| self.iso.sign * (crossings.below(z) as f64 + o / (4.0 * PI)))
+            .collect()
     }
+}
+
+/// A column's signed crossings, counted up the column: the samples' depths must ascend.
+struct Crossings<'a> {
+    crossed: &'a [(f64, i32)],
+    next: usize,
+    x: i64,
+}
+
+impl<'a> Crossings<'a> {
+    fn new(crossed: &'a [(f64, i32)]) -> Self {
+        Crossings {
+            crossed,
+            next: 0,
+            x: 0,
+        }
+    }
+
+    /// The signed count of crossings below depth `z` (no lower than the last asked).
+    fn below(&mut self, z: f64) -> i64 {
+        while let Some(&(_, s)) = self.crossed.get(self.next).filter(|c| c.0 < z) {
+            self.x += i64::from(s);
+            self.next += 1;
+        }
+        self.x
+    }
+}
+
+/// The runs `(first, last)` of the true samples among `inside`, the first sample numbered
+/// `first`.
+fn inside_runs(inside: impl Iterator<Item = bool>, first: u32) -> Vec<(u32, u32)> {
+    let mut runs: Vec<(u32, u32)> = vec![];
+    for (k, _) in inside.enumerate().filter(|&(_, i)| i) {
+        let k = first + k as u32;
+        match runs.last_mut() {
+            Some(r) if r.1 + 1 == k => r.1 = k,
+            _ => runs.push((k, k)),
+        }
+    }
+    runs
 }
 
 /// A boundary edge seen from a column, in scene proportions: its ends across the depth axis
@@ -480,6 +529,11 @@ struct Seen {
     z: (f64, f64),
     m: f64,
     side: i32,
+    /// `|m|` times the edge's length across the depth axis, its distance from the column
+    /// there, and its depth range: what the rate bound needs ([`rate`]).
+    weight: f64,
+    d: f64,
+    span: (f64, f64),
 }
 
 impl Seen {
@@ -501,21 +555,21 @@ const SMALL: f64 = 0.05;
 /// (every depth where `None`): `Σ |m| ℓ · max_{ρ ≥ d} ρ / (ρ² + h²)^{3/2}`, `ℓ` an edge's
 /// length across the depth axis, `d` its distance from the column there and `h` the gap
 /// between `within` and its depth range less 1e-6 (module docs, "Skipping along a column").
+/// Where `d ≥ h / √2` the maximum, at `ρ = d`, is bounded by `d / ((d² + h²) max(d, h))`,
+/// which needs no square root.
 fn rate(seen: &[Seen], within: Option<(f64, f64)>) -> f64 {
     seen.iter()
         .map(|e| {
-            let (lo_z, hi_z) = (e.z.0.min(e.z.1), e.z.0.max(e.z.1));
-            let gap = within.map_or(0.0, |(lo, hi)| (lo_z - hi).max(lo - hi_z));
-            let d = segment_distance(e.a, e.b);
-            let h = (gap - 1e-6).max(0.0);
+            let gap = within.map_or(0.0, |(lo, hi)| (e.span.0 - hi).max(lo - e.span.1));
+            let (d, h) = (e.d, (gap - 1e-6).max(0.0));
             let (d2, h2) = (d * d, h * h);
             let most = match (h > 0.0, 2.0 * d2 >= h2) {
                 (false, _) => 1.0 / d2,
-                (true, true) => d / ((d2 + h2) * (d2 + h2).sqrt()),
+                (true, true) => d / ((d2 + h2) * d.max(h)),
                 // ρ / (ρ² + h²)^{3/2} is largest at ρ = h / √2.
                 (true, false) => 2.0 / (3.0 * 3f64.sqrt() * h2),
             };
-            e.m.abs() * (e.b - e.a).length() * most
+            e.weight * most
         })
         .sum()
 }
