@@ -700,3 +700,81 @@ fn boundary(tris: &[[u32; 3]]) -> Vec<([u32; 2], i32)> {
     out.sort_unstable();
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A soup of small loose triangles packed into a corner of the box, all the way up
+    /// (columns there pass near many boundary edges at every depth), in a closed box reaching
+    /// beyond it (inside samples on those columns and on others away from the soup), and one
+    /// large loose triangle across the far corner.
+    fn corner_soup() -> OpenMesh {
+        let mut s = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut tris: Vec<[[f64; 3]; 3]> = (0..200)
+            .map(|_| {
+                let c = [0.6, 0.6, 3.6].map(|r| 0.2 + r * next());
+                [0; 3].map(|_| [0, 1, 2].map(|a| c[a] + 0.3 * (next() - 0.5)))
+            })
+            .collect();
+        tris.push([[1.5, 2.0, 0.5], [4.0, 2.5, 3.5], [2.0, 4.0, 2.0]]);
+        let (lo, hi) = ([0.15; 3], [2.5, 0.85, 3.85]);
+        let corner = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 1 { hi[a] } else { lo[a] });
+        for [a, b, c, d] in [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ] {
+            tris.push([corner(a), corner(b), corner(c)]);
+            tris.push([corner(a), corner(c), corner(d)]);
+        }
+        OpenMesh::new(&TriMesh::from_f64(&tris))
+    }
+
+    /// Both of [`Column::runs`]' ways (samples decided by the rate bound, and a column the
+    /// bound cannot skip summed whole) give the runs of the sum at every sample, and the
+    /// mesh takes both.
+    #[test]
+    fn both_ways_give_the_runs_of_the_sums_at_every_sample() {
+        let m = corner_soup();
+        let n = 24;
+        let to_frame = |p: DVec3| p * (n as f64 / 4.0);
+        let depths: Vec<f64> = (0..2 * n).map(|k| k as f64 / 2.0).collect();
+        let win = Window {
+            x0: 0,
+            y0: 0,
+            w: n,
+            h: n,
+        };
+        let (column, crossings) = m.prepare(to_frame, win, &depths).expect("samples in range");
+        let (mut whole, mut skipped) = (0, 0);
+        for (i, crossed) in crossings.iter().enumerate() {
+            let Some((px, py)) = column.centre(win, i) else {
+                continue;
+            };
+            let sums = column.winding(px, py, crossed).into_iter();
+            let want = inside_runs(sums.map(|w| w >= 0.5), column.first);
+            assert_eq!(column.runs(px, py, crossed), want, "column {i}");
+            let rates = column.block_rates(&column.seen(px, py));
+            match (column.every_sample_summed(&rates), want.is_empty()) {
+                (true, false) => whole += 1,
+                (false, false) => skipped += 1,
+                (_, true) => {}
+            }
+        }
+        // Columns with inside samples, each way.
+        assert!(
+            whole > 5 && skipped > 20,
+            "{whole} summed whole, {skipped} skipped"
+        );
+    }
+}
