@@ -706,8 +706,8 @@ mod tests {
     use super::*;
 
     /// A soup of small loose triangles packed into a corner of the box, all the way up
-    /// (columns there pass near many boundary edges at every depth), in a closed box reaching
-    /// beyond it (inside samples on those columns and on others away from the soup), and one
+    /// (columns there pass near many boundary edges at every depth), in a closed tetrahedron
+    /// reaching beyond it (inside samples on those columns and on others away from the soup), and one
     /// large loose triangle across the far corner.
     fn corner_soup() -> OpenMesh {
         let mut s = 0x2545_f491_4f6c_dd1du64;
@@ -724,19 +724,13 @@ mod tests {
             })
             .collect();
         tris.push([[1.5, 2.0, 0.5], [4.0, 2.5, 3.5], [2.0, 4.0, 2.0]]);
-        let (lo, hi) = ([0.15; 3], [2.5, 0.85, 3.85]);
-        let corner = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 1 { hi[a] } else { lo[a] });
-        for [a, b, c, d] in [
-            [0, 2, 3, 1],
-            [4, 5, 7, 6],
-            [0, 1, 5, 4],
-            [2, 6, 7, 3],
-            [0, 4, 6, 2],
-            [1, 3, 7, 5],
-        ] {
-            tris.push([corner(a), corner(b), corner(c)]);
-            tris.push([corner(a), corner(c), corner(d)]);
-        }
+        let [a, b, c, d] = [
+            [0.05, 0.05, 0.05],
+            [3.8, 0.05, 0.05],
+            [0.05, 1.5, 0.05],
+            [0.3, 0.3, 3.9],
+        ];
+        tris.extend([[a, c, b], [a, b, d], [b, c, d], [c, a, d]]);
         OpenMesh::new(&TriMesh::from_f64(&tris))
     }
 

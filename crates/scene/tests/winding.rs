@@ -276,6 +276,17 @@ fn turned(angles: [f64; 3], scale: [f64; 3], mirror: bool, lo: f64, hi: f64, n: 
     }
 }
 
+/// A sphere with 1 to 39 triangles cut out and up to `loose − 1` loose triangles beside it,
+/// ready for the winding number.
+fn holey_with_loose(loose: usize) -> impl Strategy<Value = OpenMesh> {
+    let tri = prop::array::uniform3(prop::array::uniform3(4.0..16.0f64));
+    (1usize..40, prop::collection::vec(tri, 0..loose)).prop_map(|(holes, extra)| {
+        let mut tris = holey_sphere(holes);
+        tris.extend(extra);
+        OpenMesh::new(&TriMesh::from_f64(&tris))
+    })
+}
+
 fn frame() -> impl Strategy<Value = ([f64; 3], [f64; 3], bool)> {
     (
         prop::array::uniform3(-3.2..3.2f64),
@@ -292,12 +303,8 @@ proptest! {
     #[test]
     fn the_voxelizers_winding_number_is_the_direct_sum(
         (angles, scale, mirror) in frame(),
-        holes in 1usize..40,
-        extra in prop::collection::vec(prop::array::uniform3(prop::array::uniform3(4.0..16.0f64)), 0..6),
+        m in holey_with_loose(6),
     ) {
-        let mut tris = holey_sphere(holes);
-        tris.extend(extra);
-        let m = OpenMesh::new(&TriMesh::from_f64(&tris));
         let n = 12;
         let f = turned(angles, scale, mirror, 2.0, 18.0, n);
         let depths: Vec<f64> = (0..n).map(|k| k as f64).collect();
@@ -343,12 +350,8 @@ proptest! {
     #[test]
     fn the_runs_are_the_full_sums_at_every_sample(
         (angles, scale, mirror) in frame(),
-        holes in 1usize..40,
-        extra in prop::collection::vec(prop::array::uniform3(prop::array::uniform3(4.0..16.0f64)), 0..4),
+        m in holey_with_loose(4),
     ) {
-        let mut tris = holey_sphere(holes);
-        tris.extend(extra);
-        let m = OpenMesh::new(&TriMesh::from_f64(&tris));
         let n = 24;
         let f = turned(angles, scale, mirror, 2.0, 18.0, n);
         let depths: Vec<f64> = (0..4 * n).map(|k| k as f64 / 4.0).collect();
