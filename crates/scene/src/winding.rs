@@ -154,17 +154,35 @@ impl OpenMesh {
         win: Window,
         depths: &[f64],
     ) -> Vec<Vec<(u32, u32)>> {
+        self.inside_runs_ticking(to_frame, win, depths, &|| ())
+    }
+
+    /// [`OpenMesh::inside_runs_in`], calling `row` once for each row of `win` as it is done
+    /// (`win.h` calls in all): a soup of loose triangles can take minutes, and a progress
+    /// display counts these.
+    pub fn inside_runs_ticking(
+        &self,
+        to_frame: impl Fn(DVec3) -> DVec3,
+        win: Window,
+        depths: &[f64],
+        row: &(dyn Fn() + Sync),
+    ) -> Vec<Vec<(u32, u32)>> {
         let mut out = vec![vec![]; win.w.saturating_mul(win.h)];
-        if let Some((column, crossings)) = self.prepare(to_frame, win, depths) {
-            out.par_iter_mut()
-                .zip(crossings.par_iter())
-                .enumerate()
-                .for_each(|(i, (runs, crossed))| {
-                    if let Some((px, py)) = column.centre(win, i) {
+        let Some((column, crossings)) = self.prepare(to_frame, win, depths) else {
+            (0..win.h).for_each(|_| row());
+            return out;
+        };
+        out.par_chunks_mut(win.w)
+            .zip(crossings.par_chunks(win.w))
+            .enumerate()
+            .for_each(|(y, (runs, crossed))| {
+                for (x, (runs, crossed)) in runs.iter_mut().zip(crossed).enumerate() {
+                    if let Some((px, py)) = column.centre(win, y * win.w + x) {
                         *runs = column.runs(px, py, crossed);
                     }
-                });
-        }
+                }
+                row();
+            });
         out
     }
 

@@ -351,15 +351,15 @@ fn source_for(slicer: &Slicer, route: Route, set: &EquationSet) -> Result<Source
         .sampled
         .iter()
         .enumerate()
-        .map(
-            |(j, s)| match sampled_runs_in(slicer, &s.shape, Window { x0: 0, y0: 0, w, h }) {
+        .map(|(j, s)| {
+            match sampled_runs_in(slicer, &s.shape, Window { x0: 0, y0: 0, w, h }, &|| ()) {
                 Some(runs) => {
                     let toggles = runs.toggles(nz);
                     SampledSource::Runs(runs, toggles)
                 }
                 None => SampledSource::Dataset(j),
-            },
-        )
+            }
+        })
         .collect();
     Ok(Source {
         convex: convex_source(slicer, route, set)?,

@@ -425,11 +425,17 @@ pub fn mesh_runs(slicer: &Slicer, mesh: &TriMesh) -> SlabRuns {
 
 /// The runs of a sampled primitive that is a surface or a footprint over the pixels of `win`
 /// (as [`mesh_runs_in`]): a closed mesh's, an open mesh's or a footprint's; None for a
-/// dataset, which is sampled voxel by voxel.
-pub fn sampled_runs_in(slicer: &Slicer, shape: &Shape, win: Window) -> Option<SlabRuns> {
+/// dataset, which is sampled voxel by voxel. An open mesh calls `row` once a row of `win`
+/// ([`open_mesh_runs_in`]); the others never.
+pub fn sampled_runs_in(
+    slicer: &Slicer,
+    shape: &Shape,
+    win: Window,
+    row: &(dyn Fn() + Sync),
+) -> Option<SlabRuns> {
     match shape {
         Shape::Mesh(m) => Some(mesh_runs_in(slicer, m, win)),
-        Shape::OpenMesh(m, _) => Some(open_mesh_runs_in(slicer, m, win)),
+        Shape::OpenMesh(m, _) => Some(open_mesh_runs_in(slicer, m, win, row)),
         Shape::Footprint(f) => Some(footprint_runs_in(slicer, f, win)),
         Shape::Dataset { .. } => None,
     }
@@ -453,11 +459,18 @@ pub fn mesh_runs_in(slicer: &Slicer, mesh: &TriMesh, win: Window) -> SlabRuns {
 /// ([`OpenMesh::inside_runs_in`]). The centre of slab k is the depth word Z-plane(k) + half a
 /// slab, the point centre sampling classifies; slab sampling takes the same points here (a
 /// winding number has no segment to meet), so both routes and both samplings read one set.
-pub fn open_mesh_runs_in(slicer: &Slicer, mesh: &OpenMesh, win: Window) -> SlabRuns {
+/// `row` is called once a row of `win` as it is done.
+pub fn open_mesh_runs_in(
+    slicer: &Slicer,
+    mesh: &OpenMesh,
+    win: Window,
+    row: &(dyn Fn() + Sync),
+) -> SlabRuns {
     let depths: Vec<f64> = (0..slicer.grid.dims[2])
         .map(|k| slicer.fmt.to_real(slicer.z_plane(k) + slicer.slab_raw / 2))
         .collect();
-    SlabRuns::of_pixels(mesh.inside_runs_in(|p| slicer.frame.to_pixel(p), win, &depths))
+    let to_pixel = |p| slicer.frame.to_pixel(p);
+    SlabRuns::of_pixels(mesh.inside_runs_ticking(to_pixel, win, &depths, row))
 }
 
 /// Per pixel of `win` (as [`mesh_runs_in`]), the slabs a footprint fills: its depth range,

@@ -31,6 +31,7 @@ use crate::dataset_runs::DatasetColumns;
 use crate::error::Result;
 use crate::pixel_box::PixelBox;
 use crate::ranges::{sampled_runs_in, FloatPlanes, WordPlanes};
+use crate::sampled::Shape;
 use crate::slabs::SlabRuns;
 use crate::slice::{Mask, OpCounts, SliceEval};
 use crate::slicer::{Slicer, DEFAULT_PANEL};
@@ -171,8 +172,9 @@ pub struct Columns<'a> {
 
 impl<'a> Columns<'a> {
     /// Every primitive's source of runs (a mesh's crossings over its outline, computed here,
-    /// in parallel) and the primitives of each panel.
-    pub fn new(slicer: &'a Slicer, float: bool) -> Result<Columns<'a>> {
+    /// in parallel) and the primitives of each panel; `tick` once a row of each open mesh's
+    /// outline as its winding numbers are done ([`open_mesh_ticks`]).
+    pub fn new(slicer: &'a Slicer, float: bool, tick: &(dyn Fn() + Sync)) -> Result<Columns<'a>> {
         let solids = slicer.lists.len();
         // Every solid's words are compiled here, so a plane the word cannot hold is refused
         // before the run; only those of solids over many panels are kept.
@@ -193,7 +195,7 @@ impl<'a> Columns<'a> {
         let sampled: Vec<Depths> = (slicer.sampled.par_iter().enumerate())
             .map(|(j, s)| {
                 let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
-                match sampled_runs_in(slicer, &s.shape, window(b)) {
+                match sampled_runs_in(slicer, &s.shape, window(b), tick) {
                     Some(runs) => Depths::Sampled(SampledDepths::Mesh(runs, b)),
                     None => {
                         let d = DatasetColumns::new(s, &slicer.grid).expect("a dataset");
@@ -696,9 +698,41 @@ fn bands(slicer: &Slicer) -> Vec<(usize, usize)> {
         .collect()
 }
 
-/// Ticks [`voxelize_runs`] makes: one per band of rows.
+/// Ticks [`voxelize_runs`] and [`sweep_slices`] make: one per band of rows, and one per row
+/// of each open mesh's outline ([`open_mesh_ticks`]).
 pub fn ticks(slicer: &Slicer) -> usize {
-    bands(slicer).len()
+    bands(slicer).len() + open_mesh_ticks(slicer)
+}
+
+/// The rows of the open meshes' outlines: [`Columns::new`] ticks once for each as its
+/// winding numbers are done.
+pub fn open_mesh_ticks(slicer: &Slicer) -> usize {
+    open_mesh_outlines(slicer).map(|(b, _)| b.height()).sum()
+}
+
+/// The boundary edges an open mesh's winding number sums, times the voxels of its outline's
+/// columns, over every open mesh: how much work the winding numbers may be (the soup's
+/// order, docs/volume-scenes.md, "Open and non-manifold meshes").
+pub fn open_mesh_work(slicer: &Slicer) -> u64 {
+    let nz = slicer.grid.dims[2] as u64;
+    let each = open_mesh_outlines(slicer).map(|(b, edges)| b.pixels() as u64 * nz * edges as u64);
+    each.fold(0, u64::saturating_add)
+}
+
+/// Each open mesh's outline and boundary edges.
+fn open_mesh_outlines(slicer: &Slicer) -> impl Iterator<Item = (PixelBox, usize)> + '_ {
+    let solids = slicer.lists.len();
+    slicer
+        .sampled
+        .iter()
+        .enumerate()
+        .filter_map(move |(j, s)| match &s.shape {
+            Shape::OpenMesh(m, _) => {
+                let b = slicer.outlines[solids + j].unwrap_or(EMPTY_BOX);
+                Some((b, m.boundary_edges()))
+            }
+            _ => None,
+        })
 }
 
 /// The whole volume by the run route, bands of rows in parallel, each band's runs written
@@ -712,7 +746,7 @@ pub fn voxelize_runs(
     mut work: Work,
 ) -> Result<(Volume, Work)> {
     let [nx, ny, nz] = slicer.grid.dims;
-    let columns = Columns::new(slicer, float)?;
+    let columns = Columns::new(slicer, float, tick)?;
     let bands = bands(slicer);
     let mut voxels = csgpix_output::try_zeroed(nx * ny * nz)?;
     // Every (y, z) row of the volume, grouped by band: band b owns rows y0..y1 of every slab.
@@ -800,7 +834,7 @@ pub fn voxelize_brick(
             dims: [nx, ny, nz],
         });
     }
-    let runs = Columns::new(slicer, float)?.brick(eval, columns);
+    let runs = Columns::new(slicer, float, &|| ())?.brick(eval, columns);
     let filled = runs.filled(slabs.clone());
     let mut voxels = vec![0u8; columns.pixels() * slabs.len()];
     runs.write(slabs, &mut voxels);
@@ -900,7 +934,7 @@ pub fn sweep_slices<E: From<crate::Error>>(
     mut work: Work,
 ) -> Result<Work, E> {
     let [nx, ny, _] = slicer.grid.dims;
-    let columns = Columns::new(slicer, float)?;
+    let columns = Columns::new(slicer, float, tick)?;
     let mut cur = vec![0u8; nx * ny];
     let bands = bands(slicer);
     // The bands are whole panels of rows, so each writes its own rows of `cur`.
@@ -1270,7 +1304,7 @@ mod tests {
             let grid = Grid::of_scene(&scene, dims).unwrap();
             let opts = SlicerOptions { panel: Some(panel), ..SlicerOptions::default() };
             let slicer = Slicer::new(&scene, grid, opts).unwrap();
-            let columns = Columns::new(&slicer, false).unwrap();
+            let columns = Columns::new(&slicer, false, &|| ()).unwrap();
             let lists = panel_lists(&slicer, panel);
             let counts = DatasetCounts::of(&slicer, panel, &lists);
             for (i, l) in lists.iter().enumerate() {

@@ -141,3 +141,36 @@ fn an_open_stl_import_carries_its_warning() {
     // Voxel centres at −0.1875 + 0.625·i: 0.4375 … 3.5625 inside, 6 a side.
     assert_eq!(filled(&v), 6 * 6 * 6);
 }
+
+/// The run route's progress counts an open mesh's winding numbers: both of its whole-volume
+/// and streamed sweeps tick as often as `runs::ticks` says, once a band of rows and once a
+/// row of each open mesh's outline.
+#[test]
+fn the_run_routes_ticks_count_an_open_meshs_rows() {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let l = load_scene(&vector("open-box.csg")).unwrap();
+    let n = 24;
+    let (lo, hi) = (-1.0, 11.0);
+    let grid = Grid::new([n; 3], DVec3::splat(lo), DVec3::splat(hi)).unwrap();
+    let opts = SlicerOptions {
+        sampled: l.sampled.clone(),
+        ..SlicerOptions::default()
+    };
+    let slicer = Slicer::new(&l.scene, grid, opts).unwrap();
+    let rows = csgpix_voxel::runs::open_mesh_ticks(&slicer);
+    let want = csgpix_voxel::runs::ticks(&slicer);
+    assert!(rows > n / 2 && want > rows, "{rows} rows of {want} ticks");
+    let eval = BlistEval::new(&l.scene.root);
+    let route = Route::Runs { float: false };
+    let ticked = AtomicUsize::new(0);
+    let tick = || {
+        ticked.fetch_add(1, Ordering::Relaxed);
+    };
+    let (whole, _) = voxelize(&slicer, route, Equations::Derived.set(), &eval, &tick).unwrap();
+    assert_eq!(ticked.swap(0, Ordering::Relaxed), want);
+    assert!(filled(&whole) > 0);
+    let mut sink = |_: usize, _: &[u8]| -> Result<(), csgpix_voxel::Error> { Ok(()) };
+    let set = Equations::Derived.set();
+    csgpix_voxel::voxelize_streaming(&slicer, route, set, &eval, &tick, &mut sink).unwrap();
+    assert_eq!(ticked.load(Ordering::Relaxed), want);
+}

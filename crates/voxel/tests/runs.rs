@@ -269,7 +269,7 @@ fn a_tiles_estimate_counts_its_datasets_runs() {
         memory_estimate_bricks(&slicer, &eval, 1, tile, Some(grid)),
         whole
     );
-    let columns = Columns::new(&slicer, false).unwrap();
+    let columns = Columns::new(&slicer, false, &|| ()).unwrap();
     let mut least = u64::MAX;
     for (x, y) in (0..3).flat_map(|j| (0..3).map(move |i| (i * 32, j * 32))) {
         let t = PixelBox::new(x, y, x + 32, y + 32);

@@ -875,7 +875,7 @@ pub fn voxelize_bricks(
         return Err(Error::NoRunRoute);
     }
     let all = volume.chunk_rows();
-    let columns = csgpix_voxel::runs::Columns::new(slicer, float)?;
+    let columns = csgpix_voxel::runs::Columns::new(slicer, float, &|| ())?;
     let mut work = Work::default();
     // One buffer for every brick: a fresh one a brick costs its pages' faults each time.
     let mut voxels: Vec<u8> = vec![];

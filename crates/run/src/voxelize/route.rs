@@ -51,15 +51,23 @@ pub struct Ran {
     pub to_stdout: bool,
 }
 
+/// Boundary edges × voxels of the open meshes' outlines past which the run route shows its
+/// progress whatever the grid's size: about a second of winding numbers where every sample
+/// is summed (docs/volume-scenes.md, "Open and non-manifold meshes").
+const OPEN_MESH_HEAVY: u64 = 200_000_000;
+
 /// The progress of a run that takes a while: slices on the slab routes, bands of rows on
-/// the run route (which ticks once per band), bricks for a Zarr store by bricks (`bricks`).
-/// Light runs show none.
+/// the run route (which ticks once per band, and once per row of an open mesh's outline),
+/// bricks for a Zarr store by bricks (`bricks`). Light runs show none.
 fn stage(slicer: &Slicer, route: Route, bricks: Option<usize>, progress: &dyn Progress) {
     let [_, _, nz] = slicer.grid.dims;
     let voxels = slicer.grid.slice_len() * nz;
     let heavy = match route {
         Route::Array { .. } => true,
-        Route::Runs { .. } => voxels > 100_000_000,
+        // An open mesh's winding numbers can outlast the voxels (a soup of loose triangles).
+        Route::Runs { .. } => {
+            voxels > 100_000_000 || csgpix_voxel::runs::open_mesh_work(slicer) > OPEN_MESH_HEAVY
+        }
         _ => voxels * slicer.primitive_count() > 50_000_000,
     };
     if !heavy {
@@ -342,5 +350,60 @@ impl Plan {
                 .collect(),
             to_stdout: ran.to_stdout,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Mutex;
+
+    use csgpix_scene::grid::Grid;
+    use csgpix_voxel::sampled::load_scene;
+    use csgpix_voxel::SlicerOptions;
+    use glam::DVec3;
+
+    use super::*;
+
+    /// A sink that keeps the stages it is told of.
+    #[derive(Default)]
+    struct Stages(Mutex<Vec<(String, u64)>>);
+
+    impl Progress for Stages {
+        fn stage(&self, what: &str, total: u64) {
+            self.0.lock().unwrap().push((what.to_string(), total));
+        }
+    }
+
+    /// The stages the run route shows for `vectors/openmesh/open-box.csg` (a box open at
+    /// the top: 4 boundary edges) on an `n`³ grid.
+    fn open_box_stages(n: usize) -> (Vec<(String, u64)>, usize) {
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../vectors/openmesh/open-box.csg"
+        );
+        let l = load_scene(std::path::Path::new(path)).unwrap();
+        let grid = Grid::new([n; 3], DVec3::splat(-1.0), DVec3::splat(11.0)).unwrap();
+        let opts = SlicerOptions {
+            sampled: l.sampled.clone(),
+            ..SlicerOptions::default()
+        };
+        let slicer = Slicer::new(&l.scene, grid, opts).unwrap();
+        let kept = Stages::default();
+        stage(&slicer, Route::Runs { float: false }, None, &kept);
+        let stages = kept.0.into_inner().unwrap();
+        (stages, csgpix_voxel::runs::ticks(&slicer))
+    }
+
+    /// A grid under the voxels that make a run heavy shows its progress when an open mesh's
+    /// winding numbers are work enough (the soup's case), with a tick for each row of the
+    /// mesh's outline; a small one shows none.
+    #[test]
+    fn an_open_meshs_winding_numbers_make_a_run_heavy() {
+        let (stages, _) = open_box_stages(32);
+        assert!(stages.is_empty(), "{stages:?}");
+        // 440³ is 85 million voxels (light by voxels); the box's outline, about 367² columns
+        // of 440 samples and 4 boundary edges, 2.4e8 edge-samples (heavy).
+        let (stages, ticks) = open_box_stages(440);
+        assert_eq!(stages, [("row bands".to_string(), ticks as u64)]);
     }
 }
