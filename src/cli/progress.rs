@@ -27,7 +27,9 @@ impl Bars {
 impl Progress for Bars {
     fn stage(&self, what: &str, total: u64) {
         let bar = ProgressBar::new(total);
-        let template = format!("{{elapsed_precise}} [{{bar:40}}] {{pos}}/{{len}} {what}");
+        // The time left is indicatif's estimate from the steps' rate so far.
+        let template =
+            format!("{{elapsed_precise}} [{{bar:40}}] {{pos}}/{{len}} {what}, {{eta}} left");
         if let Ok(style) = ProgressStyle::with_template(&template) {
             bar.set_style(style);
         }
