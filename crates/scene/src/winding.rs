@@ -66,6 +66,27 @@
 //! one is summed. The runs are those of the sum at every sample (a property test holds them
 //! to it).
 //!
+//! # Seams
+//!
+//! A mesh made of pieces whose shared corners differ by rounding (1.8e-15 in a public
+//! design's two polyhedra: BOSL2's `bosl2-ring-hook`) is closed in all but name: its
+//! boundary is two loops over the same line, run opposite ways, whose cone angles cancel
+//! to within the gap between them. The rate bound above adds their edges' terms instead,
+//! twice an open loop's, and a column near such a seam summed nearly every sample. So two
+//! boundary edges over the same projected segment whose chains cancel (opposite ways with
+//! the same multiplicity, `Term::Two`) take one term: with the two short vertical
+//! segments between their ends (which add nothing: a vertical edge's cone has no area) they
+//! close a loop round the quadrilateral `Q` between them, so their summed angles are an
+//! integer (fixed along a column that misses `Q`'s shadow) less `Ω_Q`, and
+//! `|∇Ω_Q| ≤ ∫_Q |∇(n·r/|r|³)| dA ≤ ∫_Q 2/|r|³ dA ≤ 2 A_Q / D³`, `D` the distance from the
+//! column's samples to `Q` (at least the column's distance from the segment less 1e-6, and
+//! the depth gap as above). `A_Q ≤ (ℓ + |δb|)(|δa| + |δb|)/2` for depth gaps `δa`, `δb` at
+//! the two ends. The term is the lesser of that and the two edges' own, so it never
+//! loosens the bound. On `bosl2-ring-hook` (one polyhedron's 34 boundary edges are 17 such
+//! pairs, 1.8e-15 apart) the whole
+//! 256³ voxelization takes 0.12 s instead of 0.83, and `csgpix print` 4.7 s instead of 18.3,
+//! every voxel and pixel the same.
+//!
 //! # Orientation
 //!
 //! Solid angles are signed, so a triangle wound the wrong way cancels its neighbour.
@@ -243,8 +264,10 @@ impl OpenMesh {
             .iter()
             .map(|&([a, b], m)| Boundary::new(projected[a as usize], projected[b as usize], m))
             .collect();
+        let terms = terms(&boundary, iso);
         let column = Column {
             iso,
+            terms,
             boundary,
             zs: depths[k0..k1].to_vec(),
             first: k0 as u32,
@@ -343,6 +366,16 @@ struct Boundary {
 }
 
 impl Boundary {
+    /// Its ends' depths in scene proportions.
+    fn depths(&self, iso: Iso) -> (f64, f64) {
+        (self.a.z / iso.scale.z, self.b.z / iso.scale.z)
+    }
+
+    /// Whether the edge is seen end-on (no projected length), from every column.
+    fn end_on(&self) -> bool {
+        (self.a.x, self.a.y) == (self.b.x, self.b.y)
+    }
+
     fn new(a: Projected, b: Projected, m: i32) -> Boundary {
         Boundary {
             edge: Edge::new(a, b),
@@ -357,6 +390,9 @@ impl Boundary {
 struct Column {
     iso: Iso,
     boundary: Vec<Boundary>,
+    /// The terms of the rate bound, over the boundary's edges as every column sees them
+    /// ([`Column::seen`]: all but those seen end-on, which are the same for every column).
+    terms: Vec<Term>,
     /// The sample depths within the mesh's depth range; the first is sample `first`.
     zs: Vec<f64>,
     first: u32,
@@ -420,13 +456,14 @@ impl Column {
     }
 
     /// The boundary edges as the column through fixed-point `(px, py)` sees them, in order,
-    /// those seen end-on left out (their cone triangles add nothing there).
+    /// those seen end-on left out (their cone triangles add nothing there): those of no
+    /// projected length ([`Boundary::end_on`]), the same for every column, so that
+    /// [`Column::terms`] index this list.
     fn seen(&self, px: i64, py: i64) -> Vec<Seen> {
-        let s = self.iso.scale;
         let seen = self.boundary.iter().filter_map(|e| {
             let side = e.edge.side(px, py);
             let (a, b) = (self.across(e.a, px, py), self.across(e.b, px, py));
-            let z = (e.a.z / s.z, e.b.z / s.z);
+            let z = e.depths(self.iso);
             (side != 0).then(|| Seen {
                 a,
                 b,
@@ -448,7 +485,7 @@ impl Column {
     fn block_rates(&self, near: &[Seen]) -> Vec<f64> {
         let n = self.zs.len();
         let t = |k: usize| self.zs[k] / self.iso.scale.z;
-        let whole = rate(near, None);
+        let whole = rate(near, &self.terms, None);
         let blocks = n.div_ceil(BLOCK);
         if n == 0 || whole * (t(n - 1) - t(0)) / (4.0 * PI) < SMALL {
             return vec![whole; blocks];
@@ -456,7 +493,7 @@ impl Column {
         (0..blocks)
             .map(|b| {
                 let (lo, hi) = ((b * BLOCK).saturating_sub(1), ((b + 1) * BLOCK).min(n) - 1);
-                rate(near, Some((t(lo), t(hi))))
+                rate(near, &self.terms, Some((t(lo), t(hi))))
             })
             .collect()
     }
@@ -575,21 +612,133 @@ const SMALL: f64 = 0.05;
 /// between `within` and its depth range less 1e-6 (module docs, "Skipping along a column").
 /// Where `d ≥ h / √2` the maximum, at `ρ = d`, is bounded by `d / ((d² + h²) max(d, h))`,
 /// which needs no square root.
-fn rate(seen: &[Seen], within: Option<(f64, f64)>) -> f64 {
-    seen.iter()
-        .map(|e| {
-            let gap = within.map_or(0.0, |(lo, hi)| (e.span.0 - hi).max(lo - e.span.1));
-            let (d, h) = (e.d, (gap - 1e-6).max(0.0));
-            let (d2, h2) = (d * d, h * h);
-            let most = match (h > 0.0, 2.0 * d2 >= h2) {
-                (false, _) => 1.0 / d2,
-                (true, true) => d / ((d2 + h2) * d.max(h)),
-                // ρ / (ρ² + h²)^{3/2} is largest at ρ = h / √2.
-                (true, false) => 2.0 / (3.0 * 3f64.sqrt() * h2),
-            };
-            e.weight * most
+fn rate(seen: &[Seen], terms: &[Term], within: Option<(f64, f64)>) -> f64 {
+    let one = |e: &Seen| {
+        let (d, h) = (e.d, gap(e.span, within));
+        let (d2, h2) = (d * d, h * h);
+        let most = match (h > 0.0, 2.0 * d2 >= h2) {
+            (false, _) => 1.0 / d2,
+            (true, true) => d / ((d2 + h2) * d.max(h)),
+            // ρ / (ρ² + h²)^{3/2} is largest at ρ = h / √2.
+            (true, false) => 2.0 / (3.0 * 3f64.sqrt() * h2),
+        };
+        e.weight * most
+    };
+    terms
+        .iter()
+        .map(|t| match *t {
+            Term::One(k) => one(&seen[k]),
+            Term::Two(k, l, q) => (one(&seen[k]) + one(&seen[l])).min(q.rate(seen[k].d, within)),
         })
         .sum()
+}
+
+/// The gap between the depths `within` (all of them where `None`) and the depth range
+/// `span`, taken 1e-6 short and never below 0 (module docs, "Skipping along a column").
+fn gap(span: (f64, f64), within: Option<(f64, f64)>) -> f64 {
+    let gap = within.map_or(0.0, |(lo, hi)| (span.0 - hi).max(lo - span.1));
+    (gap - 1e-6).max(0.0)
+}
+
+/// A term of the rate bound: one boundary edge (an index into [`Column::seen`]'s list), or
+/// two whose chains all but cancel (module docs, "Seams").
+#[derive(Clone, Copy, Debug)]
+enum Term {
+    One(usize),
+    Two(usize, usize, Quad),
+}
+
+/// The quadrilateral between two boundary edges over the same line across the depth axis,
+/// run opposite ways: its area bound (times 2 and the edges' multiplicity) and its depth range,
+/// in scene proportions.
+#[derive(Clone, Copy, Debug)]
+struct Quad {
+    area: f64,
+    span: (f64, f64),
+}
+
+impl Quad {
+    /// A bound on the rate of the two edges' summed cone angles on a column `d` across the
+    /// depth axis from their projection, over the depths `within` (as [`rate`]): the solid
+    /// angle of the quadrilateral, whose gradient is at most 2/r³ per unit of its area; none
+    /// (infinite) within 1e-6 of the projection.
+    fn rate(&self, d: f64, within: Option<(f64, f64)>) -> f64 {
+        let (d, h) = (d - 1e-6, gap(self.span, within));
+        match d > 0.0 {
+            true => {
+                let r2 = d * d + h * h;
+                self.area / (r2 * r2.sqrt())
+            }
+            false => f64::INFINITY,
+        }
+    }
+}
+
+/// The terms of the rate bound over `boundary`'s edges as seen ([`Term`]): two edges over
+/// the same projected segment whose chains cancel (run opposite ways with the same
+/// multiplicity) make one term; any other edge seen makes its own.
+fn terms(boundary: &[Boundary], iso: Iso) -> Vec<Term> {
+    let seen: Vec<&Boundary> = boundary.iter().filter(|e| !e.end_on()).collect();
+    let key = |e: &Boundary| {
+        let (a, b) = ((e.a.x, e.a.y), (e.b.x, e.b.y));
+        (a.min(b), a.max(b))
+    };
+    let mut open: HashMap<_, Vec<usize>> = HashMap::new();
+    let mut partner = vec![None; seen.len()];
+    for (l, e) in seen.iter().enumerate() {
+        let waiting = open.entry(key(e)).or_default();
+        match waiting.iter().position(|&k| cancels(seen[k], e)) {
+            Some(at) => partner[waiting.swap_remove(at)] = Some(l),
+            None => waiting.push(l),
+        }
+    }
+    let mut out = vec![];
+    let mut taken = vec![false; seen.len()];
+    for k in 0..seen.len() {
+        match (taken[k], partner[k]) {
+            (true, _) => {}
+            (false, Some(l)) => {
+                taken[l] = true;
+                out.push(Term::Two(k, l, quad(seen[k], seen[l], iso)));
+            }
+            (false, None) => out.push(Term::One(k)),
+        }
+    }
+    out
+}
+
+/// Whether the chains of edges `e` and `f` (over the same projected segment) cancel.
+fn cancels(e: &Boundary, f: &Boundary) -> bool {
+    let same = (e.a.x, e.a.y) == (f.a.x, f.a.y);
+    match same {
+        true => e.m == -f.m,
+        false => e.m == f.m,
+    }
+}
+
+/// The [`Quad`] between edges `e` and `f` over the same projected segment: its corners are
+/// their ends, each end of `e` above or below one of `f`'s, so its area is at most
+/// `(ℓ + |δb|)(|δa| + |δb|) / 2`, `ℓ` the length of `e` and `δa`, `δb` the depth gaps at
+/// its ends.
+fn quad(e: &Boundary, f: &Boundary, iso: Iso) -> Quad {
+    let (ez, fz) = (e.depths(iso), f.depths(iso));
+    let fz = match (e.a.x, e.a.y) == (f.a.x, f.a.y) {
+        true => fz,
+        false => (fz.1, fz.0),
+    };
+    let (one, s) = (f64::from(1u32 << FRAC_BITS), iso.scale);
+    let across = DVec2::new(
+        (e.b.x - e.a.x) as f64 / one / s.x,
+        (e.b.y - e.a.y) as f64 / one / s.y,
+    );
+    let l = across.length().hypot(ez.1 - ez.0);
+    let (da, db) = ((fz.0 - ez.0).abs(), (fz.1 - ez.1).abs());
+    let lo = ez.0.min(ez.1).min(fz.0).min(fz.1);
+    let hi = ez.0.max(ez.1).max(fz.0).max(fz.1);
+    Quad {
+        area: e.m.abs() * (l + db) * (da + db) * (1.0 + 1e-9),
+        span: (lo, hi),
+    }
 }
 
 /// The distance from the origin to the segment `ab`.
@@ -750,6 +899,100 @@ mod tests {
         ];
         tris.extend([[a, c, b], [a, b, d], [b, c, d], [c, a, d]]);
         OpenMesh::new(&TriMesh::from_f64(&tris))
+    }
+
+    /// A unit cube of 12 triangles, its top face lifted by `lift` along z: a seam of four
+    /// pairs of boundary edges over the top face's outline, run opposite ways.
+    fn lifted_top(lift: f64) -> OpenMesh {
+        let c = |i: u32| {
+            let z = f64::from(i >> 2 & 1);
+            [f64::from(i & 1), f64::from(i >> 1 & 1), z]
+        };
+        let faces = [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ];
+        let mut tris = vec![];
+        for (n, f) in faces.iter().enumerate() {
+            let v = |k: usize| {
+                let mut p = c(f[k]);
+                p[2] += if n == 1 { lift } else { 0.0 };
+                p
+            };
+            tris.push([v(0), v(1), v(2)]);
+            tris.push([v(0), v(2), v(3)]);
+        }
+        OpenMesh::new(&TriMesh::from_f64(&tris))
+    }
+
+    /// The frame of [`lifted_top`]'s tests: the cube at pixels 8-16 of a 24-pixel window,
+    /// and the column through pixel (4, 12), half the cube's side from its nearest edge.
+    fn lifted_column(m: &OpenMesh) -> (Column, Vec<Seen>) {
+        let to_frame = |p: DVec3| p * 8.0 + DVec3::new(8.0, 8.0, 8.0);
+        let depths: Vec<f64> = (0..96).map(|k| k as f64 / 4.0).collect();
+        let win = Window {
+            x0: 0,
+            y0: 0,
+            w: 24,
+            h: 24,
+        };
+        let (column, _) = m.prepare(to_frame, win, &depths).expect("samples in range");
+        let seen = column.seen(4 << FRAC_BITS, 12 << FRAC_BITS);
+        (column, seen)
+    }
+
+    /// A seam's edges pair up, and on a column away from it their rate bound is the
+    /// quadrilateral's, far below the edges' own.
+    #[test]
+    fn a_seams_edges_pair_up_and_their_bound_is_the_gap_between_them() {
+        let m = lifted_top(1e-12);
+        assert_eq!(m.boundary_edges(), 8);
+        let (column, seen) = lifted_column(&m);
+        let pairs = column
+            .terms
+            .iter()
+            .filter(|t| matches!(t, Term::Two(..)))
+            .count();
+        assert_eq!((pairs, column.terms.len()), (4, 4));
+        let ones: Vec<Term> = (0..seen.len()).map(Term::One).collect();
+        let (paired, alone) = (rate(&seen, &column.terms, None), rate(&seen, &ones, None));
+        assert!(paired < 1e-9 && alone > 1.0, "{paired} against {alone}");
+    }
+
+    /// The quadrilateral's bound holds: the two edges' summed cone angles change no faster
+    /// than [`Quad::rate`] between any two depths of the column, above, across and below the
+    /// seam (lifted a fifth of the cube's side, so that the change is far above rounding).
+    #[test]
+    fn the_quadrilaterals_bound_holds_along_a_column() {
+        let m = lifted_top(0.2);
+        let (column, seen) = lifted_column(&m);
+        let mut checked = 0;
+        for t in &column.terms {
+            let &Term::Two(k, l, q) = t else {
+                panic!("every edge pairs")
+            };
+            let sum = |z: f64| seen[k].m * seen[k].angle(z) + seen[l].m * seen[l].angle(z);
+            for (lo, hi) in [(-1.0, 0.5), (0.5, 1.1), (1.1, 3.0), (-1.0, 3.0)] {
+                let zs: Vec<f64> = (0..=200)
+                    .map(|i| lo + (hi - lo) * f64::from(i) / 200.0)
+                    .collect();
+                let bound = q.rate(seen[k].d, Some((lo, hi)));
+                for w in zs.windows(2) {
+                    let change = (sum(w[1]) - sum(w[0])).abs();
+                    assert!(
+                        change <= bound * (w[1] - w[0]) + 1e-12,
+                        "{change} over {w:?}: {bound}"
+                    );
+                    checked += 1;
+                }
+                assert!(bound < rate(&seen, &[Term::One(k), Term::One(l)], Some((lo, hi))));
+            }
+        }
+        assert_eq!(checked, 4 * 4 * 200);
     }
 
     /// Both of [`Column::runs`]' ways (samples decided by the rate bound, and a column the

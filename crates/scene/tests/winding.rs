@@ -276,12 +276,17 @@ fn turned(angles: [f64; 3], scale: [f64; 3], mirror: bool, lo: f64, hi: f64, n: 
     }
 }
 
-/// A sphere with 1 to 39 triangles cut out and up to `loose − 1` loose triangles beside it,
-/// ready for the winding number.
+/// A sphere with 1 to 39 triangles cut out, its first 100-299 triangles lifted 1e-12 along
+/// z or not (a seam: two boundary loops that all but cancel, module docs "Seams"), and up to
+/// `loose − 1` loose triangles beside it, ready for the winding number.
 fn holey_with_loose(loose: usize) -> impl Strategy<Value = OpenMesh> {
     let tri = prop::array::uniform3(prop::array::uniform3(4.0..16.0f64));
-    (1usize..40, prop::collection::vec(tri, 0..loose)).prop_map(|(holes, extra)| {
+    let seam = prop::option::of(100usize..300);
+    (1usize..40, seam, prop::collection::vec(tri, 0..loose)).prop_map(|(holes, seam, extra)| {
         let mut tris = holey_sphere(holes);
+        for t in &mut tris[..seam.unwrap_or(0)] {
+            t.iter_mut().for_each(|v| v[2] += 1e-12);
+        }
         tris.extend(extra);
         OpenMesh::new(&TriMesh::from_f64(&tris))
     })
