@@ -270,6 +270,7 @@ impl OpenMesh {
             terms,
             boundary,
             zs: depths[k0..k1].to_vec(),
+            ts: depths[k0..k1].iter().map(|z| z / iso.scale.z).collect(),
             first: k0 as u32,
             lo,
             hi,
@@ -395,6 +396,8 @@ struct Column {
     terms: Vec<Term>,
     /// The sample depths within the mesh's depth range; the first is sample `first`.
     zs: Vec<f64>,
+    /// The same depths in scene proportions.
+    ts: Vec<f64>,
     first: u32,
     /// The mesh's box in the frame: fixed-point x and y, depth.
     lo: DVec3,
@@ -415,7 +418,6 @@ impl Column {
     /// signed crossings: the samples where [`Column::winding`] is at least 1/2, found without
     /// evaluating the boundary at every sample (module docs, "Skipping along a column").
     fn runs(&self, px: i64, py: i64, crossed: &[(f64, i32)]) -> Vec<(u32, u32)> {
-        let t = |k: usize| self.zs[k] / self.iso.scale.z;
         let seen = self.seen(px, py);
         let rates = self.block_rates(&seen);
         if self.every_sample_summed(&rates) {
@@ -427,21 +429,55 @@ impl Column {
         // they can have changed since (radians).
         let mut anchor: Option<(f64, f64)> = None;
         let mut crossings = Crossings::new(crossed);
-        let inside = self.zs.iter().enumerate().map(|(k, &z)| {
-            let x = crossings.below(z);
-            let known = anchor.as_mut().and_then(|(oa, room)| {
-                *room += rates[k / BLOCK] * (t(k) - t(k - 1));
-                let w = self.iso.sign * (x as f64 + *oa / (4.0 * PI));
-                let r = *room / (4.0 * PI) + SLACK;
-                (w - r >= 0.5 || w + r < 0.5).then_some(w >= 0.5)
-            });
-            known.unwrap_or_else(|| {
-                let o = self.omega_at(&seen, z);
-                anchor = Some((o, 0.0));
-                self.iso.sign * (x as f64 + o / (4.0 * PI)) >= 0.5
-            })
-        });
-        inside_runs(inside, self.first)
+        let mut out = Ranges::new(self.first);
+        let mut k = 0;
+        while k < self.zs.len() {
+            let x = crossings.below(self.zs[k]) as f64;
+            let w = |o: f64| self.iso.sign * (x + o / (4.0 * PI));
+            if let Some((o, room)) = anchor.as_mut() {
+                let end = self.skip(k, room, w(*o), crossings.next(), &rates);
+                if end > k {
+                    out.push(k..end, w(*o) >= 0.5);
+                    k = end;
+                    continue;
+                }
+            }
+            let o = self.omega_at(&seen, self.zs[k]);
+            out.push(k..k + 1, w(o) >= 0.5);
+            anchor = Some((o, 0.0));
+            k += 1;
+        }
+        out.runs
+    }
+
+    /// From sample `k` (past an anchor, whose winding number with the crossings below `k` is
+    /// `w`), the end of the samples the rate bounds `rates` decide as `w` is: each one's room
+    /// (`room`, radians, accumulated sample by sample as the bound grows) at most
+    /// `|w − 1/2|` less [`SLACK`], and none past the next crossing at depth `next` (where
+    /// the crossings' count changes). Block by block: within one the room grows by the
+    /// block's rate times the depth walked, so its last sample in reach is found by search.
+    fn skip(&self, k: usize, room: &mut f64, w: f64, next: f64, rates: &[f64]) -> usize {
+        let allowed = ((w - 0.5).abs() - SLACK) * 4.0 * PI;
+        let (n, mut j) = (self.zs.len(), k);
+        while j < n {
+            let b = j / BLOCK;
+            let end = ((b + 1) * BLOCK).min(n);
+            let before = self.zs[j..end].partition_point(|&z| z <= next);
+            // Samples i of the block with room + rate · (t(i) − t(j − 1)) below `allowed`
+            // (a rate of 0 reaches every one, an infinite rate none).
+            let from = self.ts[j - 1];
+            let most = from + (allowed - *room) / rates[b];
+            let reach = self.ts[j..j + before].partition_point(|&t| t < most);
+            if reach > 0 {
+                *room += rates[b] * (self.ts[j + reach - 1] - from);
+            }
+            let whole = reach == end - j;
+            j += reach;
+            if !whole {
+                break;
+            }
+        }
+        j
     }
 
     /// Whether the rate bounds `rates` leave more than a whole winding number of room
@@ -551,6 +587,11 @@ impl<'a> Crossings<'a> {
         }
     }
 
+    /// The depth of the next crossing not yet counted (infinite past the last).
+    fn next(&self) -> f64 {
+        self.crossed.get(self.next).map_or(f64::INFINITY, |c| c.0)
+    }
+
     /// The signed count of crossings below depth `z` (no lower than the last asked).
     fn below(&mut self, z: f64) -> i64 {
         while let Some(&(_, s)) = self.crossed.get(self.next).filter(|c| c.0 < z) {
@@ -573,6 +614,34 @@ fn inside_runs(inside: impl Iterator<Item = bool>, first: u32) -> Vec<(u32, u32)
         }
     }
     runs
+}
+
+/// Runs `(first, last)` of inside samples built from ranges of samples decided alike, the
+/// first sample numbered `first`.
+struct Ranges {
+    first: u32,
+    runs: Vec<(u32, u32)>,
+}
+
+impl Ranges {
+    fn new(first: u32) -> Ranges {
+        Ranges {
+            first,
+            runs: vec![],
+        }
+    }
+
+    /// Samples `ks` (in order after those pushed before), inside or not.
+    fn push(&mut self, ks: std::ops::Range<usize>, inside: bool) {
+        if !inside || ks.is_empty() {
+            return;
+        }
+        let (a, b) = (self.first + ks.start as u32, self.first + ks.end as u32 - 1);
+        match self.runs.last_mut() {
+            Some(r) if r.1 + 1 == a => r.1 = b,
+            _ => self.runs.push((a, b)),
+        }
+    }
 }
 
 /// A boundary edge seen from a column, in scene proportions: its ends across the depth axis
