@@ -518,3 +518,23 @@ fn materials_only_where_the_scene_has_colours() {
     let z = zip::ZipArchive::new(f).unwrap();
     assert!(z.file_names().all(|n| !n.contains("material")));
 }
+
+/// A scene's warnings reach stderr once: told as the scene is read, not again with the
+/// summary (an open polyhedron's, which the print voxelizes by its winding number).
+#[test]
+fn a_warning_is_told_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("open.sl1");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("vectors/openmesh/open-box.csg");
+    let r = csgpix(&[
+        "print",
+        scene.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let stderr = String::from_utf8_lossy(&r.stderr);
+    let told: Vec<&str> = stderr.lines().filter(|l| l.contains("warning")).collect();
+    assert_eq!(told.len(), 1, "{stderr}");
+    assert!(told[0].contains("polyhedron is not closed"), "{stderr}");
+}

@@ -138,10 +138,9 @@ pub fn run(a: Args) -> csgpix_run::Result<ExitCode> {
     super::print(a.json, &report, print_text)
 }
 
+/// The summary line; the reader's warnings were told as the scene was read (`--json` carries
+/// them too).
 fn print_text(r: &PrintReport) {
-    for w in &r.warnings {
-        eprintln!("csgpix: warning: {w}");
-    }
     let line = format!(
         "{}: {} layers of {}x{} ({}, part {}x{} pixels, aa {}); {:.2} ml, print {:.0} min; {:.3} s wall",
         r.out.display(),
