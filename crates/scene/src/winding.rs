@@ -521,10 +521,10 @@ impl Column {
     /// angles (radians per unit of depth in scene proportions) from the sample before the
     /// block to its last. One bound for the whole column (every edge taken at its nearest)
     /// where that leaves less than [`SMALL`] of room over the column; otherwise one a block.
-    fn block_rates(&self, near: &[Seen]) -> Vec<f64> {
+    fn block_rates(&self, seen: &[Seen]) -> Vec<f64> {
         let n = self.zs.len();
-        let t = |k: usize| self.zs[k] / self.iso.scale.z;
-        let whole = rate(near, &self.terms, None);
+        let t = |k: usize| self.ts[k];
+        let whole = rate(seen, &self.terms, None);
         let blocks = n.div_ceil(BLOCK);
         if n == 0 || whole * (t(n - 1) - t(0)) / (4.0 * PI) < SMALL {
             return vec![whole; blocks];
@@ -532,7 +532,7 @@ impl Column {
         (0..blocks)
             .map(|b| {
                 let (lo, hi) = ((b * BLOCK).saturating_sub(1), ((b + 1) * BLOCK).min(n) - 1);
-                rate(near, &self.terms, Some((t(lo), t(hi))))
+                rate(seen, &self.terms, Some((t(lo), t(hi))))
             })
             .collect()
     }
