@@ -608,15 +608,9 @@ impl<'a> Crossings<'a> {
 /// The runs `(first, last)` of the true samples among `inside`, the first sample numbered
 /// `first`.
 fn inside_runs(inside: impl Iterator<Item = bool>, first: u32) -> Vec<(u32, u32)> {
-    let mut runs: Vec<(u32, u32)> = vec![];
-    for (k, _) in inside.enumerate().filter(|&(_, i)| i) {
-        let k = first + k as u32;
-        match runs.last_mut() {
-            Some(r) if r.1 + 1 == k => r.1 = k,
-            _ => runs.push((k, k)),
-        }
-    }
-    runs
+    let mut out = Ranges::new(first);
+    inside.enumerate().for_each(|(k, i)| out.push(k..k + 1, i));
+    out.runs
 }
 
 /// Runs `(first, last)` of inside samples built from ranges of samples decided alike, the
@@ -781,11 +775,15 @@ fn terms(boundary: &[Boundary], iso: Iso) -> Vec<Term> {
 
 /// Whether the chains of edges `e` and `f` (over the same projected segment) cancel.
 fn cancels(e: &Boundary, f: &Boundary) -> bool {
-    let same = (e.a.x, e.a.y) == (f.a.x, f.a.y);
-    match same {
+    match same_way(e, f) {
         true => e.m == -f.m,
         false => e.m == f.m,
     }
+}
+
+/// Whether edges `e` and `f` over the same projected segment start at the same end of it.
+fn same_way(e: &Boundary, f: &Boundary) -> bool {
+    (e.a.x, e.a.y) == (f.a.x, f.a.y)
 }
 
 /// The [`Quad`] between edges `e` and `f` over the same projected segment: its corners are
@@ -794,7 +792,7 @@ fn cancels(e: &Boundary, f: &Boundary) -> bool {
 /// its ends.
 fn quad(e: &Boundary, f: &Boundary, iso: Iso) -> Quad {
     let (ez, fz) = (e.depths(iso), f.depths(iso));
-    let fz = match (e.a.x, e.a.y) == (f.a.x, f.a.y) {
+    let fz = match same_way(e, f) {
         true => fz,
         false => (fz.1, fz.0),
     };
