@@ -23,7 +23,10 @@
 //! * Convex ⊕ convex: the convex hull of the pairwise vertex sums (one convex solid the array
 //!   draws; in 2D one convex polygon). In 3D only the sums p + q whose normal cones meet are
 //!   hulled ([`Fan`]): the others are never vertices of the sum, and a sphere of a thousand
-//!   vertices plus a 32-vertex hull is 33 000 sums of which about 1 500 are kept.
+//!   vertices plus a 32-vertex hull is 33 000 sums of which about 1 500 are kept. A convex
+//!   operand is a [`Polytope`] with its faces (a solid's own, or the hull's that made it), so
+//!   its fan is read from them and the sum's solid keeps its hull's faces: no hull is taken
+//!   twice.
 //! * A non-convex X (a difference, an intersection, a closed mesh primitive) ⊕ a convex C:
 //!
 //!   X ⊕ C = (X + c0) ∪ ⋃_{triangles T of ∂X} hull(T ⊕ C), for any point c0 of C.
@@ -234,10 +237,67 @@ fn triangles(m: &Manifold) -> Mesh {
 /// An operand of a 3D Minkowski sum.
 #[derive(Clone, Debug)]
 pub(crate) enum Piece {
-    /// A convex polytope, by its vertices.
-    Convex(Vec<DVec3>),
+    /// A convex polytope.
+    Convex(Polytope),
     /// A closed mesh, outward.
     Mesh(Mesh),
+}
+
+/// A convex polytope with its faces, each counter-clockwise seen from outside: a convex
+/// solid's own, or a hull's as [`hull3`] made it. A sum's normal fans ([`Fan`]) are read from
+/// the faces and a sum's solid keeps its hull's faces, so no hull is taken twice (a sphere of
+/// 7,200 vertices took 7-9 ms to hull again, each time).
+#[derive(Clone, Debug)]
+pub(crate) struct Polytope {
+    pub(crate) v: Vec<DVec3>,
+    pub(crate) faces: Vec<Vec<usize>>,
+}
+
+impl Polytope {
+    /// The hull of `points`.
+    pub(crate) fn hull(points: &[DVec3]) -> csgpix_scene::Result<Polytope> {
+        let (v, faces) = hull3(points)?;
+        Ok(Polytope { v, faces })
+    }
+
+    /// A convex solid's corners and faces.
+    pub(crate) fn of_solid(s: &ConvexSolid) -> Polytope {
+        Polytope {
+            v: s.vertices.iter().map(|&v| DVec3::from(v)).collect(),
+            faces: s.faces.to_vecs(),
+        }
+    }
+
+    /// As the solid the array draws.
+    pub(crate) fn solid(self, colour: Option<[f64; 4]>, line: usize) -> ConvexSolid {
+        ConvexSolid {
+            vertices: self.v.iter().map(|v| v.to_array()).collect(),
+            faces: self.faces.into(),
+            colour,
+            line,
+        }
+    }
+
+    /// Whether its faces can give its normal fan as they stand: four or more, and every
+    /// corner on three or more (a flat or degenerate solid's fan is made from a hull of its
+    /// corners instead, which refuses it as [`Fan::of`] does).
+    fn faces_hold_fan(&self) -> bool {
+        let mut on = vec![0u32; self.v.len()];
+        for f in &self.faces {
+            for &i in f {
+                on[i] += 1;
+            }
+        }
+        self.faces.len() >= 4 && on.iter().all(|&n| n >= 3)
+    }
+
+    /// Its normal fan: from its faces ([`Self::faces_hold_fan`]), else as [`Fan::of`] makes it.
+    fn fan(&self) -> Option<Fan> {
+        match self.faces_hold_fan() {
+            true => Some(Fan::polytope(self.v.clone(), &self.faces)),
+            false => Fan::of(&self.v),
+        }
+    }
 }
 
 /// An operand of `minkowski()` as a union of pieces: unions distributed, a convex solid as
@@ -259,9 +319,7 @@ pub(crate) fn pieces(
                     kind: "solid",
                     index: *i,
                 })?;
-                out.push(Piece::Convex(
-                    s.vertices.iter().map(|&v| DVec3::from(v)).collect(),
-                ));
+                out.push(Piece::Convex(Polytope::of_solid(s)));
             }
             CsgNode::Solid(i) => out.push(mesh_piece(leaf_mesh(*i, solids, imports)?)),
             _ => {
@@ -280,7 +338,7 @@ pub(crate) fn pieces(
 /// rather than one hull per triangle; else the mesh.
 fn mesh_piece(m: Mesh) -> Piece {
     match convex_hull_of(&m) {
-        Some(v) => Piece::Convex(v),
+        Some(p) => Piece::Convex(p),
         None => Piece::Mesh(m),
     }
 }
@@ -288,11 +346,11 @@ fn mesh_piece(m: Mesh) -> Piece {
 /// Most vertex-plane tests [`convex_hull_of`] makes; past them a mesh stays a mesh.
 const CONVEX_TESTS: usize = 1 << 24;
 
-/// The hull's vertices when closed mesh `m` is convex: every vertex of `m` on the hull's
-/// surface and the volumes equal. The mesh lies within its hull, so equal volumes leave only
+/// The hull when closed mesh `m` is convex: every vertex of `m` on the hull's surface and
+/// the volumes equal. The mesh lies within its hull, so equal volumes leave only
 /// a difference of no volume, and a cavity or dent, however thin, has a vertex inside the hull.
 /// Tolerances are relative, as the hull's ([`hull3`]).
-pub(crate) fn convex_hull_of(m: &Mesh) -> Option<Vec<DVec3>> {
+pub(crate) fn convex_hull_of(m: &Mesh) -> Option<Polytope> {
     const EPS: f64 = 1e-9;
     let points = distinct(m.iter().flatten().copied());
     let (v, faces) = hull3(&points).ok()?;
@@ -321,7 +379,7 @@ pub(crate) fn convex_hull_of(m: &Mesh) -> Option<Vec<DVec3>> {
         .sum();
     let mesh_volume: f64 = m.iter().map(|t| t[0].dot(t[1].cross(t[2])) / 6.0).sum();
     let same = (hull_volume - mesh_volume).abs() <= EPS * hull_volume;
-    (same && points.iter().all(on_surface)).then_some(v)
+    (same && points.iter().all(on_surface)).then_some(Polytope { v, faces })
 }
 
 /// A convex face's unit outward normal n and offset d (n·x = d on it), by Newell's method.
@@ -404,9 +462,9 @@ pub(crate) fn minkowski3(
 /// The most vertices the sum of pieces `p` and `q` brings (the budget's count).
 fn pair_vertices(p: &Piece, q: &Piece) -> usize {
     match (p, q) {
-        (Piece::Convex(x), Piece::Convex(y)) => x.len().saturating_mul(y.len()),
+        (Piece::Convex(x), Piece::Convex(y)) => x.v.len().saturating_mul(y.v.len()),
         (Piece::Mesh(x), Piece::Convex(c)) | (Piece::Convex(c), Piece::Mesh(x)) => {
-            x.len().saturating_mul(3 * c.len() + 3)
+            x.len().saturating_mul(3 * c.v.len() + 3)
         }
         (Piece::Mesh(x), Piece::Mesh(y)) => {
             let verts = distinct(x.iter().flatten().copied());
@@ -435,7 +493,7 @@ fn pair_sum(p: &Piece, q: &Piece) -> csgpix_scene::Result<Vec<Piece>> {
             for t in x {
                 for u in y {
                     // Parallel triangles sum to a flat hull: dropped (module docs).
-                    if let Ok(p) = convex_sum(t, u) {
+                    if let Ok(p) = hull_piece(&sum_points(t, u, || (Fan::of(t), Fan::of(u)))) {
                         out.push(p);
                     }
                 }
@@ -463,20 +521,20 @@ pub(crate) fn over_budget() -> Error {
 }
 
 /// X ⊕ C = (X + c0) ∪ ⋃ hull(T ⊕ C).
-fn mesh_plus_convex(x: &Mesh, c: &[DVec3], out: &mut Vec<Piece>) -> csgpix_scene::Result<()> {
+fn mesh_plus_convex(x: &Mesh, c: &Polytope, out: &mut Vec<Piece>) -> csgpix_scene::Result<()> {
     use rayon::prelude::*;
-    let Some(&c0) = c.first() else {
+    let Some(&c0) = c.v.first() else {
         return Ok(());
     };
     out.push(Piece::Mesh(translated(x, c0)));
     // C's normal fan once, for every triangle; the triangles' hulls in parallel, in order.
-    let fan = Fan::of(c);
+    let fan = c.fan();
     let hulls: Vec<csgpix_scene::Result<Piece>> = x
         .par_iter()
         .map(|t| {
             let points = match (&fan, Fan::of(t)) {
                 (Some(f), Some(ft)) => ft.sum_vertices(f),
-                _ => all_sums(t, c),
+                _ => all_sums(t, &c.v),
             };
             hull_piece(&points)
         })
@@ -487,27 +545,30 @@ fn mesh_plus_convex(x: &Mesh, c: &[DVec3], out: &mut Vec<Piece>) -> csgpix_scene
     Ok(())
 }
 
-/// The hull of the pairwise sums of two convex point sets.
-fn convex_sum(x: &[DVec3], y: &[DVec3]) -> csgpix_scene::Result<Piece> {
-    hull_piece(&sum_points(x, y))
+/// The hull of the pairwise sums of two convex polytopes.
+fn convex_sum(x: &Polytope, y: &Polytope) -> csgpix_scene::Result<Piece> {
+    hull_piece(&sum_points(&x.v, &y.v, || (x.fan(), y.fan())))
 }
 
 fn hull_piece(points: &[DVec3]) -> csgpix_scene::Result<Piece> {
-    let (v, _) = hull3(points)?;
-    Ok(Piece::Convex(v))
+    Polytope::hull(points).map(Piece::Convex)
 }
 
 /// Below this many pairwise sums the hull takes them all.
 const FEW_SUMS: usize = 64;
 
 /// Points whose convex hull is hull(x ⊕ y): every vertex of that hull among them. Large
-/// operands go through their normal fans ([`Fan::sum_vertices`]); small or flat ones (other
-/// than a triangle) give all pairwise sums.
-fn sum_points(x: &[DVec3], y: &[DVec3]) -> Vec<DVec3> {
+/// operands go through their normal fans ([`Fan::sum_vertices`], the two `fans` makes);
+/// small or flat ones (other than a triangle) give all pairwise sums.
+fn sum_points(
+    x: &[DVec3],
+    y: &[DVec3],
+    fans: impl FnOnce() -> (Option<Fan>, Option<Fan>),
+) -> Vec<DVec3> {
     if x.len().saturating_mul(y.len()) <= FEW_SUMS {
         return all_sums(x, y);
     }
-    match (Fan::of(x), Fan::of(y)) {
+    match fans() {
         (Some(a), Some(b)) => a.sum_vertices(&b),
         _ => all_sums(x, y),
     }
@@ -528,16 +589,23 @@ const FAN_EPS: f64 = 1e-9;
 /// p + q is a vertex of P ⊕ Q only where the cones of p and q share an open set of
 /// directions (the sum's support in a direction is the sum of the supports), so
 /// [`Fan::sum_vertices`] keeps the sums of the pairs whose cones meet: that is all the
-/// hull's vertices among some |P| + |Q| + (crossing edge pairs) points instead of |P|·|Q|
+/// hull's vertices among about as many points, instead of |P|·|Q|
 /// (a 32-vertex hull ⊕ a sphere of 1035 vertices: about 1500 points in place of 33 000).
 ///
-/// Two cones meet when a generator of one lies in the other, or else when their boundaries
-/// cross. A cone is given by its generators (unit vectors: the normals of the faces around
+/// A cone is given twice: by its generators (unit vectors: the normals of the faces around
 /// the vertex; for a triangle's corner, ±its normal and the outward normals of its two
-/// edges) and arcs between generators that lie in the cone and cover its boundary (all pairs
-/// for a pointed cone). "Direction h lies in the cone of v" is "v is a support point in
-/// direction h", with a tolerance, so touching cones count as meeting: extra points cost
-/// time only, never the hull.
+/// edges), and by its faces, one per edge e of the vertex (the directions d with d · e ≤ 0,
+/// e the unit vector along the edge). Two cones share no open set of directions when every
+/// generator of one lies on the far side of a face plane of the other, or on that plane
+/// ([`Fan::beyond_an_edge`]): the plane separates them. Such pairs are dropped; every other
+/// pair is kept, a vertex of the sum or not (a pair apart by no face plane of either is
+/// kept though its cones may be disjoint: extra points cost time only, never the hull).
+/// Cones that only touch, along a ray or a plane, are so dropped: a 150-sided cylinder's
+/// rims and a 50-fragment sphere's polar rings share the axis, and counting touching cones
+/// as meeting gave 23,000 points for a hull of 3,900 (now 3,900). A plane "on" within
+/// [`FAN_EPS`] drops pairs whose shared directions are thinner than that: their sum is
+/// within that angle times an edge's length of the hull of the rest, below [`hull3`]'s own
+/// tolerance (10⁻⁹ of the extent).
 struct Fan {
     /// The vertices.
     v: Vec<DVec3>,
@@ -545,9 +613,9 @@ struct Fan {
     dirs: Vec<DVec3>,
     /// Per vertex, its generators (indices into `dirs`).
     gens: Vec<Vec<usize>>,
-    /// Per vertex, arcs (pairs of indices into `dirs`) covering its cone's boundary, each
-    /// with the normal of its great circle (its ends' cross product), made once.
-    arcs: Vec<Vec<([usize; 2], DVec3)>>,
+    /// Per vertex, the unit vectors along its edges (to each neighbour): its cone is the
+    /// directions d with d · e ≤ 0 for each.
+    edges: Vec<Vec<DVec3>>,
     /// Per vertex, a cap holding its cone (unit centre, angular radius), None past 90°.
     caps: Vec<Option<(DVec3, f64)>>,
     /// The caps by latitude, built once: a fan is summed with many others (a mesh's
@@ -555,8 +623,6 @@ struct Fan {
     band: CapBand,
     /// Per vertex, the cosine and sine of its cap's radius ((0, 0) without a cap).
     trig: Vec<(f64, f64)>,
-    /// The largest coordinate magnitude over the vertices.
-    reach: f64,
 }
 
 impl Fan {
@@ -590,19 +656,26 @@ impl Fan {
             }
             dirs.push(n);
         }
-        let arcs = gens
-            .iter()
-            .map(|g| {
-                let mut a = vec![];
-                for x in 0..g.len() {
-                    for y in x + 1..g.len() {
-                        a.push([g[x], g[y]]);
-                    }
-                }
-                a
+        let mut next: Vec<Vec<usize>> = vec![vec![]; v.len()];
+        for f in faces {
+            for k in 0..f.len() {
+                let (a, b) = (f[k], f[(k + 1) % f.len()]);
+                next[a].push(b);
+                next[b].push(a);
+            }
+        }
+        let edges = next
+            .iter_mut()
+            .enumerate()
+            .map(|(i, n)| {
+                n.sort_unstable();
+                n.dedup();
+                n.iter()
+                    .map(|&j| (v[j] - v[i]).normalize_or_zero())
+                    .collect()
             })
             .collect();
-        Fan::with_caps(v, dirs, gens, arcs)
+        Fan::with_caps(v, dirs, gens, edges)
     }
 
     fn triangle(t: [DVec3; 3]) -> Option<Fan> {
@@ -619,31 +692,21 @@ impl Fan {
         }
         // Corner k touches edges k and k + 2 (the one ending at it).
         let gens: Vec<Vec<usize>> = (0..3).map(|k| vec![0, 1, 2 + k, 2 + (k + 2) % 3]).collect();
-        // The lune's boundary: n to -n through each edge normal, and the chord between the
-        // edge normals; never the (undefined) arc from n to -n.
-        let arcs = gens
-            .iter()
-            .map(|g| {
-                let (e, f) = (g[2], g[3]);
-                vec![[0, e], [e, 1], [1, f], [f, 0], [e, f]]
+        let edges = (0..3)
+            .map(|k| {
+                let to = |j: usize| (t[(k + j) % 3] - t[k]).normalize_or_zero();
+                vec![to(1), to(2)]
             })
             .collect();
-        Some(Fan::with_caps(t.to_vec(), dirs, gens, arcs))
+        Some(Fan::with_caps(t.to_vec(), dirs, gens, edges))
     }
 
     fn with_caps(
         v: Vec<DVec3>,
         dirs: Vec<DVec3>,
         gens: Vec<Vec<usize>>,
-        arcs: Vec<Vec<[usize; 2]>>,
+        edges: Vec<Vec<DVec3>>,
     ) -> Fan {
-        let arcs = arcs
-            .into_iter()
-            .map(|a: Vec<[usize; 2]>| {
-                let normal = |[x, y]: [usize; 2]| dirs[x].cross(dirs[y]);
-                a.into_iter().map(|e| (e, normal(e))).collect()
-            })
-            .collect();
         let caps: Vec<_> = gens
             .iter()
             .map(|g| {
@@ -658,32 +721,15 @@ impl Fan {
             .collect();
         let band = CapBand::of(&caps);
         let trig = cap_trig(&caps, 0.0);
-        let reach = v.iter().map(|v| v.abs().max_element()).fold(0.0, f64::max);
         Fan {
             v,
             dirs,
             gens,
-            arcs,
+            edges,
             caps,
             band,
             trig,
-            reach,
         }
-    }
-
-    /// For each unit direction of `dirs`, the largest d · v over this fan's vertices. The
-    /// vertex that attains it has d in its cone, so in its cap: only the candidates the
-    /// band gives for a cap of radius 0 at d are tried.
-    fn support(&self, dirs: &[DVec3]) -> Vec<f64> {
-        let mut cand = vec![];
-        dirs.iter()
-            .map(|d| {
-                self.band.candidates(Some((*d, 0.0)), &mut cand);
-                cand.iter()
-                    .map(|&j| d.dot(self.v[j]))
-                    .fold(f64::NEG_INFINITY, f64::max)
-            })
-            .collect()
     }
 
     /// The sums p + q of this fan's vertex p and `other`'s vertex q whose cones meet: all
@@ -701,15 +747,9 @@ impl Fan {
     /// the same points in the same order.
     fn sum_vertices_in(&self, other: &Fan, parallel: bool) -> Vec<DVec3> {
         use rayon::prelude::*;
-        let meet = Meet {
-            tol: FAN_EPS * self.reach.max(other.reach).max(f64::MIN_POSITIVE),
-            // h_other[k]: the support of `other` along self.dirs[k], and the reverse.
-            h_other: other.support(&self.dirs),
-            h_self: self.support(&other.dirs),
-            // This fan's radii widened by the 10⁻⁶ slack: caps at angle a apart are disjoint
-            // when a > r1 + r2 + 10⁻⁶, that is cos a < cos(r1' + r2).
-            trig_self: cap_trig(&self.caps, 1e-6),
-        };
+        // This fan's radii widened by the 10⁻⁶ slack: caps at angle a apart are disjoint
+        // when a > r1 + r2 + 10⁻⁶, that is cos a < cos(r1' + r2).
+        let meet = cap_trig(&self.caps, 1e-6);
         let (mut cand, mut out) = (vec![], vec![]);
         match parallel {
             true => (0..self.v.len())
@@ -732,11 +772,22 @@ impl Fan {
 
     /// The sums of this fan's vertex `i` with the vertices of `other` whose cones meet its
     /// own, in order, onto `out` ([`Fan::sum_vertices`]); `cand` is scratch.
+    /// Whether `other`'s cone at its vertex `j` lies beyond the plane of one of the faces of
+    /// this fan's cone at vertex `i` (every generator of it on that plane or past it, within
+    /// [`FAN_EPS`]): then the two cones share no open set of directions.
+    fn beyond_an_edge(&self, i: usize, other: &Fan, j: usize) -> bool {
+        self.edges[i].iter().any(|e| {
+            other.gens[j]
+                .iter()
+                .all(|&k| other.dirs[k].dot(*e) >= -FAN_EPS)
+        })
+    }
+
     fn sums_at(
         &self,
         i: usize,
         other: &Fan,
-        m: &Meet,
+        trig_self: &[(f64, f64)],
         cand: &mut Vec<usize>,
         out: &mut Vec<DVec3>,
     ) {
@@ -745,40 +796,18 @@ impl Fan {
         for &j in cand.iter() {
             let q = other.v[j];
             if let (Some((c1, _)), Some((c2, _))) = (self.caps[i], other.caps[j]) {
-                let ((cos1, sin1), (cos2, sin2)) = (m.trig_self[i], other.trig[j]);
+                let ((cos1, sin1), (cos2, sin2)) = (trig_self[i], other.trig[j]);
                 // Both radii are below 90°, so the sum is below 180° and cos decreases.
                 if c1.dot(c2) < cos1 * cos2 - sin1 * sin2 {
                     continue;
                 }
             }
-            let meet = self.gens[i]
-                .iter()
-                .any(|&k| self.dirs[k].dot(q) >= m.h_other[k] - m.tol)
-                || other.gens[j]
-                    .iter()
-                    .any(|&k| other.dirs[k].dot(p) >= m.h_self[k] - m.tol)
-                || self.arcs[i].iter().any(|&([a, b], n1)| {
-                    other.arcs[j].iter().any(|&([c, d], n2)| {
-                        arcs_cross(
-                            ([self.dirs[a], self.dirs[b]], n1),
-                            ([other.dirs[c], other.dirs[d]], n2),
-                        )
-                    })
-                });
-            if meet {
+            let apart = self.beyond_an_edge(i, other, j) || other.beyond_an_edge(j, self, i);
+            if !apart {
                 out.push(p + q);
             }
         }
     }
-}
-
-/// What [`Fan::sum_vertices`] tests each pair of vertices with: the tolerance, each fan's
-/// support along the other's generators, this fan's caps' radii widened.
-struct Meet {
-    tol: f64,
-    h_other: Vec<f64>,
-    h_self: Vec<f64>,
-    trig_self: Vec<(f64, f64)>,
 }
 
 /// From this many pairs of vertices on, [`Fan::sum_vertices`] works in parallel.
@@ -852,26 +881,6 @@ impl CapBand {
     }
 }
 
-/// Whether two great-circle arcs (each shorter than a half circle, between unit vectors,
-/// each with its ends' cross product) meet, counting near misses (within [`FAN_EPS`]) as
-/// meeting.
-fn arcs_cross(([a, b], n1): ([DVec3; 2], DVec3), ([c, d], n2): ([DVec3; 2], DVec3)) -> bool {
-    let apart = |s: f64, t: f64| (s > FAN_EPS && t > FAN_EPS) || (s < -FAN_EPS && t < -FAN_EPS);
-    if apart(n1.dot(c), n1.dot(d)) || apart(n2.dot(a), n2.dot(b)) {
-        return false;
-    }
-    let x = n1.cross(n2);
-    if x.length() <= FAN_EPS {
-        // On one great circle (or degenerate arcs): count as meeting.
-        return true;
-    }
-    let x = x.normalize();
-    let on = |[p, q]: [DVec3; 2], n: DVec3, x: DVec3| {
-        p.cross(x).dot(n) >= -FAN_EPS && x.cross(q).dot(n) >= -FAN_EPS
-    };
-    (on([a, b], n1, x) && on([c, d], n2, x)) || (on([a, b], n1, -x) && on([c, d], n2, -x))
-}
-
 fn translated(x: &Mesh, d: DVec3) -> Mesh {
     x.iter().map(|t| t.map(|v| v + d)).collect()
 }
@@ -880,21 +889,6 @@ fn distinct(it: impl Iterator<Item = DVec3>) -> Vec<DVec3> {
     let mut seen = std::collections::HashSet::new();
     it.filter(|v| seen.insert(v.to_array().map(f64::to_bits)))
         .collect()
-}
-
-/// A convex piece as the solid the array draws.
-pub(crate) fn convex_solid(
-    v: &[DVec3],
-    colour: Option<[f64; 4]>,
-    line: usize,
-) -> csgpix_scene::Result<ConvexSolid> {
-    let (vertices, faces) = hull3(v)?;
-    Ok(ConvexSolid {
-        vertices: vertices.iter().map(|v| v.to_array()).collect(),
-        faces: faces.into(),
-        colour,
-        line,
-    })
 }
 
 /// An operand of a 2D Minkowski sum.
@@ -1028,23 +1022,21 @@ mod tests {
         ];
         let cut = |k| CsgNode::Difference(vec![CsgNode::Solid(0), CsgNode::Solid(k)]);
         let p = pieces(&cut(1), &s, &[]).unwrap();
-        let [Piece::Convex(v)] = &p[..] else {
+        let [Piece::Convex(half)] = &p[..] else {
             panic!("a half cube is one convex piece")
         };
-        assert_eq!(v.len(), 8);
+        assert_eq!(half.v.len(), 8);
         for k in [2, 3] {
             let p = pieces(&cut(k), &s, &[]).unwrap();
             assert!(matches!(&p[..], [Piece::Mesh(_)]), "cut {k} is not convex");
         }
         // Its sum with a cube is one hull: the box [0,1]x[0,2]x[0,2] grown by 1.
-        let q = [Piece::Convex(
-            s[0].vertices.iter().map(|&v| DVec3::from(v)).collect(),
-        )];
+        let q = [Piece::Convex(Polytope::of_solid(&s[0]))];
         let (sum, _) = minkowski3(&p_half(&s), &q, 1 << 20).unwrap();
-        let [Piece::Convex(v)] = &sum[..] else {
+        let [Piece::Convex(sum)] = &sum[..] else {
             panic!("one hull")
         };
-        let hi = v.iter().fold(DVec3::NEG_INFINITY, |a, &b| a.max(b));
+        let hi = sum.v.iter().fold(DVec3::NEG_INFINITY, |a, &b| a.max(b));
         assert_eq!(hi, DVec3::new(3.0, 4.0, 4.0));
     }
 
@@ -1144,11 +1136,7 @@ mod tests {
             &[],
         )
         .unwrap();
-        let c: Vec<DVec3> = cube([0.0; 3], [1.0; 3])
-            .vertices
-            .iter()
-            .map(|&v| DVec3::from(v))
-            .collect();
+        let c = Polytope::of_solid(&cube([0.0; 3], [1.0; 3]));
         let (pieces, _) = minkowski3(&[Piece::Mesh(x)], &[Piece::Convex(c)], 1 << 20).unwrap();
         // The union of the pieces, through mesh_of: the L of arms 3 wide... = 3×3×2 minus
         // the 1×1×2 corner at [2,3]².
@@ -1157,8 +1145,8 @@ mod tests {
         let mut leaves = vec![];
         for p in &pieces {
             match p {
-                Piece::Convex(v) => {
-                    solids.push(convex_solid(v, None, 1).unwrap());
+                Piece::Convex(p) => {
+                    solids.push(p.clone().solid(None, 1));
                     leaves.push(CsgNode::Solid(solids.len() - 1));
                 }
                 Piece::Mesh(m) => {
@@ -1188,11 +1176,16 @@ mod tests {
 
     /// hull(sum_points(x, y)) is hull(all_sums(x, y)): the same vertices, the same volume.
     fn same_sum(x: &[DVec3], y: &[DVec3]) {
+        same_sum_of_fans(x, y, (Fan::of(x), Fan::of(y)));
+    }
+
+    /// [`same_sum`] with the two fans given.
+    fn same_sum_of_fans(x: &[DVec3], y: &[DVec3], fans: (Option<Fan>, Option<Fan>)) {
         let all = all_sums(x, y);
         let Ok((v0, f0)) = hull3(&all) else {
             return;
         };
-        let kept = match (Fan::of(x), Fan::of(y)) {
+        let kept = match fans {
             (Some(a), Some(b)) => a.sum_vertices(&b),
             _ => return,
         };
@@ -1301,15 +1294,63 @@ mod tests {
         let s = sphere(0.7, 20, DVec3::new(0.1, 0.0, 0.0));
         let x = solid_triangles(&cube([0.0; 3], [2.0, 3.0, 1.0]));
         let mut out = vec![];
-        mesh_plus_convex(&x, &s, &mut out).unwrap();
+        mesh_plus_convex(&x, &Polytope::hull(&s).unwrap(), &mut out).unwrap();
         assert_eq!(out.len(), x.len() + 1);
         for (t, p) in x.iter().zip(&out[1..]) {
-            let Piece::Convex(v) = p else { panic!() };
+            let Piece::Convex(p) = p else { panic!() };
             let (v0, f0) = hull3(&all_sums(t, &s)).unwrap();
-            let (v1, f1) = hull3(v).unwrap();
-            let (a, b) = (hull_volume(&v0, &f0), hull_volume(&v1, &f1));
+            let (v1, f1) = (&p.v, &p.faces);
+            let (a, b) = (hull_volume(&v0, &f0), hull_volume(v1, f1));
             assert!((a - b).abs() < 1e-9, "{a} vs {b}");
         }
+    }
+
+    #[test]
+    fn a_solids_own_faces_give_the_fan_of_its_hull() {
+        // Primitives as the reader makes them, each fan read from the solid's faces: every
+        // pair sums to the hull of all pairwise sums.
+        let text = "sphere(r = 2, $fn = 24); cylinder(h = 3, r1 = 2, r2 = 0, $fn = 30); \
+                    multmatrix([[0.6,0,0.8,1],[0,1,0,2],[-0.8,0,0.6,0],[0,0,0,1]]) \
+                    cylinder(h = 5, r = 1, $fn = 40); cube([1, 2, 3]); \
+                    polyhedron(points = [[0,0,0],[2,0,0],[0,2,0],[0,0,2]], \
+                    faces = [[0,1,2],[0,3,1],[0,2,3],[1,3,2]]);";
+        let scene = crate::parse_csg(text, "t.csg").unwrap();
+        let solids: Vec<Polytope> = scene.solids.iter().map(Polytope::of_solid).collect();
+        assert_eq!(solids.len(), 5);
+        for (i, x) in solids.iter().enumerate() {
+            assert!(x.faces_hold_fan(), "solid {i}");
+            for y in &solids {
+                same_sum_of_fans(&x.v, &y.v, (x.fan(), y.fan()));
+            }
+        }
+        // A flat polytope's faces do not: its fan is refused as the hull refuses it.
+        let square = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ];
+        let flat = Polytope {
+            v: square.iter().map(|&p| DVec3::from(p)).collect(),
+            faces: vec![vec![0, 1, 2, 3], vec![3, 2, 1, 0]],
+        };
+        assert!(!flat.faces_hold_fan());
+        assert!(flat.fan().is_none());
+    }
+
+    #[test]
+    fn cones_that_only_touch_are_not_summed() {
+        // A cylinder's rim and a sphere's rings share the axis and the sphere's meridians
+        // every third side: cones touching along a ray or a plane, not sums' vertices. The
+        // fan keeps the hull's vertices alone (counting touching cones as meeting kept 6×).
+        let text = "cylinder(h = 7, r = 30.5, center = true, $fn = 150); sphere(r = 2, $fn = 50);";
+        let scene = crate::parse_csg(text, "t.csg").unwrap();
+        let [x, y] = [0, 1].map(|k| Polytope::of_solid(&scene.solids[k]));
+        let kept = x.fan().unwrap().sum_vertices(&y.fan().unwrap());
+        let hull = Polytope::hull(&kept).unwrap();
+        assert_eq!(hull.v.len(), 3900);
+        assert!(kept.len() <= hull.v.len() + 100, "{} kept", kept.len());
+        same_sum_of_fans(&x.v, &y.v, (x.fan(), y.fan()));
     }
 
     use proptest::prelude::*;

@@ -6,9 +6,7 @@ use crate::extrude::{
     convex_prism, flatten, linear_mesh, map_region, region_bytes, rotate_mesh, Linear, Poly2,
     Region,
 };
-use crate::geom::{
-    convex_solid, leaf_mesh, mesh_of, minkowski2, minkowski3, pieces, pieces2, Piece, Piece2,
-};
+use crate::geom::{leaf_mesh, mesh_of, minkowski2, minkowski3, pieces, pieces2, Piece, Piece2};
 use crate::hull::hull3;
 use crate::{
     consts_::*,
@@ -100,20 +98,19 @@ enum SumPart {
 }
 
 impl Sum {
-    /// The pieces made: each convex piece's hull taken once, the pieces in parallel (a
-    /// concave operand's sum has hundreds of hulls of thousands of vertices), in order.
-    fn of(pieces: Vec<Piece>, need: usize) -> Result<Sum, Error> {
-        use rayon::prelude::*;
+    /// The pieces made, in order: each convex piece the solid of its hull (taken when the
+    /// piece was summed), each mesh its triangles.
+    fn of(pieces: Vec<Piece>, need: usize) -> Sum {
         let parts = pieces
-            .into_par_iter()
+            .into_iter()
             .map(|p| match p {
-                Piece::Convex(v) => convex_solid(&v, None, 0).map(SumPart::Convex),
-                Piece::Mesh(m) => Ok(SumPart::Mesh(std::sync::Arc::new(
+                Piece::Convex(p) => SumPart::Convex(p.solid(None, 0)),
+                Piece::Mesh(m) => SumPart::Mesh(std::sync::Arc::new(
                     m.iter().map(|t| t.map(|v| v.to_array())).collect(),
-                ))),
+                )),
             })
-            .collect::<Result<_, _>>()?;
-        Ok(Sum { parts, need })
+            .collect();
+        Sum { parts, need }
     }
 
     fn bytes(&self) -> u64 {
@@ -1287,7 +1284,7 @@ impl<'a> Reader<'a> {
                 }
             });
         }
-        Sum::of(acc.unwrap_or_default(), need)
+        Ok(Sum::of(acc.unwrap_or_default(), need))
     }
 
     /// A sum's parts as the scene's leaves, in `colour`, made by the statement at `pos`:
