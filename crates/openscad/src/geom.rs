@@ -37,6 +37,9 @@
 //!   the path crosses ∂X at some t, q(t) ∈ T for a triangle T of ∂X, and
 //!   p = q(t) + (c0 + t(c − c0)) with c0 + t(c − c0) ∈ C (C is convex): p ∈ T ⊕ C. ∎
 //!
+//!   The proof needs only convex parts of ∂X covering it, so coplanar neighbouring triangles
+//!   whose union is convex are taken as one ([`convex_patches`]).
+//!
 //!   X + c0 is X's mesh translated (a closed mesh primitive), each hull(T ⊕ C) a convex
 //!   solid: a mesh of n triangles becomes n convex solids of up to 3·|C| vertices each. That
 //!   is exact but many primitives (a sphere minus a cylinder at `$fn = 12` has a few hundred
@@ -520,21 +523,21 @@ pub(crate) fn over_budget() -> Error {
     Error::MinkowskiTooLarge
 }
 
-/// X ⊕ C = (X + c0) ∪ ⋃ hull(T ⊕ C).
+/// X ⊕ C = (X + c0) ∪ ⋃ hull(F ⊕ C), F the convex patches of ∂X ([`convex_patches`]).
 fn mesh_plus_convex(x: &Mesh, c: &Polytope, out: &mut Vec<Piece>) -> csgpix_scene::Result<()> {
     use rayon::prelude::*;
     let Some(&c0) = c.v.first() else {
         return Ok(());
     };
     out.push(Piece::Mesh(translated(x, c0)));
-    // C's normal fan once, for every triangle; the triangles' hulls in parallel, in order.
+    // C's normal fan once, for every patch; the patches' hulls in parallel, in order.
     let fan = c.fan();
-    let hulls: Vec<csgpix_scene::Result<Piece>> = x
+    let hulls: Vec<csgpix_scene::Result<Piece>> = convex_patches(x)
         .par_iter()
-        .map(|t| {
-            let points = match (&fan, Fan::of(t)) {
-                (Some(f), Some(ft)) => ft.sum_vertices(f),
-                _ => all_sums(t, &c.v),
+        .map(|f| {
+            let points = match (&fan, Fan::flat(f)) {
+                (Some(fc), Some(ff)) => ff.sum_vertices(fc),
+                _ => all_sums(f, &c.v),
             };
             hull_piece(&points)
         })
@@ -543,6 +546,77 @@ fn mesh_plus_convex(x: &Mesh, c: &Polytope, out: &mut Vec<Piece>) -> csgpix_scen
         out.push(h?);
     }
     Ok(())
+}
+
+/// The triangles of `x` joined into convex polygons, in order: from each triangle not yet
+/// taken, the neighbour across an edge of the polygon is added while it lies in the polygon's
+/// plane (its far corner within 10⁻¹² of the extent) beyond that edge and the polygon stays
+/// convex. Each polygon is then the union of its triangles, so a convex part of ∂X, and the
+/// polygons cover ∂X: the path argument of the module documentation holds for them as for
+/// triangles, and an extrusion's wall of two triangles is one hull instead of two (a flat
+/// polygon ⊕ C has about as many vertices as a triangle ⊕ C: C's vertices shared out among
+/// the corners' cones). Counter-clockwise seen from outside, as the triangles are.
+fn convex_patches(x: &Mesh) -> Vec<Vec<DVec3>> {
+    let key = |p: DVec3| p.to_array().map(f64::to_bits);
+    let mut by_edge = std::collections::HashMap::with_capacity(3 * x.len());
+    for (i, t) in x.iter().enumerate() {
+        for k in 0..3 {
+            by_edge.insert((key(t[k]), key(t[(k + 1) % 3])), i);
+        }
+    }
+    let (lo, hi) = x
+        .iter()
+        .flatten()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| {
+            (lo.min(p), hi.max(p))
+        });
+    let tol = 1e-12 * (hi - lo).max_element();
+    let mut taken = vec![false; x.len()];
+    let mut out = Vec::with_capacity(x.len());
+    for (i, t) in x.iter().enumerate() {
+        if taken[i] {
+            continue;
+        }
+        taken[i] = true;
+        let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
+        let mut poly = t.to_vec();
+        let mut k = 0;
+        while n != DVec3::ZERO && k < poly.len() {
+            let (a, b) = (poly[k], poly[(k + 1) % poly.len()]);
+            let grown = by_edge
+                .get(&(key(b), key(a)))
+                .filter(|&&j| !taken[j])
+                .and_then(|&j| {
+                    let c = x[j]
+                        .into_iter()
+                        .find(|&p| key(p) != key(a) && key(p) != key(b))?;
+                    grows(&poly, k, c, n, tol).then_some((j, c))
+                });
+            match grown {
+                Some((j, c)) => {
+                    taken[j] = true;
+                    poly.insert(k + 1, c);
+                }
+                None => k += 1,
+            }
+        }
+        out.push(poly);
+    }
+    out
+}
+
+/// Whether convex polygon `poly` (counter-clockwise about `n`) with point `c` put after
+/// corner `k` is a convex polygon in the same plane: `c` within `tol` of the plane, strictly
+/// beyond edge k, and no corner turned the other way.
+fn grows(poly: &[DVec3], k: usize, c: DVec3, n: DVec3, tol: f64) -> bool {
+    let m = poly.len();
+    let at = |i: usize| poly[(i + m) % m];
+    let (a, b) = (at(k), at(k + 1));
+    let turn = |p: DVec3, q: DVec3, r: DVec3| (q - p).cross(r - q).dot(n);
+    (n.dot(c - a)).abs() <= tol
+        && turn(a, c, b) > 0.0
+        && turn(at(k + m - 1), a, c) >= 0.0
+        && turn(c, b, at(k + 2)) >= 0.0
 }
 
 /// The hull of the pairwise sums of two convex polytopes.
@@ -679,23 +753,44 @@ impl Fan {
     }
 
     fn triangle(t: [DVec3; 3]) -> Option<Fan> {
-        let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
-        if n == DVec3::ZERO {
+        Fan::flat(&t)
+    }
+
+    /// The fan of a flat convex polygon (a triangle, or a patch of [`convex_patches`]):
+    /// each corner's cone is the wedge of ±the normal and the outward normals of its two
+    /// edges. None when it has no area.
+    fn flat(t: &[DVec3]) -> Option<Fan> {
+        let m = t.len();
+        let n = match m {
+            3 => (t[1] - t[0]).cross(t[2] - t[0]),
+            // Newell's normal.
+            _ => (0..m).map(|k| t[k].cross(t[(k + 1) % m])).sum(),
+        }
+        .normalize_or_zero();
+        if m < 3 || n == DVec3::ZERO {
             return None;
         }
+        // A point inside, to turn each edge normal outward.
+        let inner = match m {
+            3 => None,
+            _ => Some(t.iter().sum::<DVec3>() / m as f64),
+        };
         // dirs: n, -n, then the outward in-plane normal of edge k (from t[k] to t[k+1]).
         let mut dirs = vec![n, -n];
-        for k in 0..3 {
-            let (a, b, c) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
+        for k in 0..m {
+            let (a, b) = (t[k], t[(k + 1) % m]);
+            let c = inner.unwrap_or(t[(k + 2) % m]);
             let w = (b - a).cross(n).normalize_or_zero();
             dirs.push(if w.dot(c - a) > 0.0 { -w } else { w });
         }
-        // Corner k touches edges k and k + 2 (the one ending at it).
-        let gens: Vec<Vec<usize>> = (0..3).map(|k| vec![0, 1, 2 + k, 2 + (k + 2) % 3]).collect();
-        let edges = (0..3)
+        // Corner k touches edges k and k - 1 (the one ending at it).
+        let gens: Vec<Vec<usize>> = (0..m)
+            .map(|k| vec![0, 1, 2 + k, 2 + (k + m - 1) % m])
+            .collect();
+        let edges = (0..m)
             .map(|k| {
-                let to = |j: usize| (t[(k + j) % 3] - t[k]).normalize_or_zero();
-                vec![to(1), to(2)]
+                let to = |j: usize| (t[(k + j) % m] - t[k]).normalize_or_zero();
+                vec![to(1), to(m - 1)]
             })
             .collect();
         Some(Fan::with_caps(t.to_vec(), dirs, gens, edges))
@@ -1290,19 +1385,88 @@ mod tests {
 
     #[test]
     fn a_mesh_plus_a_sphere_is_the_union_of_the_same_pieces() {
-        // mesh_plus_convex through the fans against the hulls of all sums.
+        // mesh_plus_convex through the fans against the hulls of all sums, patch by patch.
         let s = sphere(0.7, 20, DVec3::new(0.1, 0.0, 0.0));
         let x = solid_triangles(&cube([0.0; 3], [2.0, 3.0, 1.0]));
+        let patches = convex_patches(&x);
         let mut out = vec![];
         mesh_plus_convex(&x, &Polytope::hull(&s).unwrap(), &mut out).unwrap();
-        assert_eq!(out.len(), x.len() + 1);
-        for (t, p) in x.iter().zip(&out[1..]) {
+        assert_eq!(out.len(), patches.len() + 1);
+        for (f, p) in patches.iter().zip(&out[1..]) {
             let Piece::Convex(p) = p else { panic!() };
-            let (v0, f0) = hull3(&all_sums(t, &s)).unwrap();
+            let (v0, f0) = hull3(&all_sums(f, &s)).unwrap();
             let (v1, f1) = (&p.v, &p.faces);
             let (a, b) = (hull_volume(&v0, &f0), hull_volume(v1, f1));
             assert!((a - b).abs() < 1e-9, "{a} vs {b}");
         }
+    }
+
+    /// Area of a flat polygon (Newell's normal's length, halved).
+    fn area(f: &[DVec3]) -> f64 {
+        let n: DVec3 = (0..f.len()).map(|k| f[k].cross(f[(k + 1) % f.len()])).sum();
+        n.length() / 2.0
+    }
+
+    #[test]
+    fn patches_are_convex_and_cover_the_triangles() {
+        // A cube's twelve triangles are its six squares.
+        let cube = solid_triangles(&cube([0.0; 3], [2.0, 3.0, 1.0]));
+        let p = convex_patches(&cube);
+        assert_eq!(p.iter().map(Vec::len).collect::<Vec<_>>(), [4; 6]);
+        // An L-shaped prism (an extrusion of a concave outline, as the reader makes it):
+        // each wall one rectangle, each cap convex pieces; every patch flat and convex
+        // counter-clockwise about its triangles' normal, and the areas summed per plane
+        // the triangles' own.
+        let scene = crate::parse_csg(
+            "linear_extrude(height = 2) polygon([[0,0],[3,0],[3,1],[1,1],[1,3],[0,3]]);",
+            "t.csg",
+        )
+        .unwrap();
+        let x: Mesh = match &scene.imports[..] {
+            [i] => i
+                .mesh
+                .as_ref()
+                .unwrap()
+                .iter()
+                .map(|t| t.map(DVec3::from))
+                .collect(),
+            _ => scene.solids.iter().flat_map(solid_triangles).collect(),
+        };
+        let mut p = convex_patches(&x);
+        assert!(
+            p.len() < x.len(),
+            "{} patches of {} triangles",
+            p.len(),
+            x.len()
+        );
+        assert!(p.iter().filter(|f| f.len() == 4).count() >= 6);
+        // A sphere's faces meet at angles of a few degrees, convex ones: each its own patch.
+        let ball = crate::parse_csg("sphere(r = 1, $fn = 24);", "t.csg").unwrap();
+        let ball = &ball.solids[0];
+        let t = solid_triangles(ball);
+        let q = convex_patches(&t);
+        assert_eq!(q.len(), ball.faces.len());
+        p.extend(q);
+        let x: Mesh = x.into_iter().chain(t).collect();
+        let plane = |n: DVec3| n.to_array().map(|c| (c * 1e6).round() as i64);
+        let mut by_plane = std::collections::HashMap::new();
+        for t in &x {
+            let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize();
+            *by_plane.entry(plane(n)).or_insert(0.0) += area(t);
+        }
+        for f in &p {
+            let n = (f[1] - f[0]).cross(f[2] - f[0]).normalize();
+            for k in 0..f.len() {
+                let [a, b, c] = [0, 1, 2].map(|j| f[(k + j) % f.len()]);
+                assert!((b - a).cross(c - b).dot(n) >= -1e-12, "a corner turns back");
+                assert!(n.dot(f[k] - f[0]).abs() < 1e-12, "off the plane");
+            }
+            *by_plane.get_mut(&plane(n)).unwrap() -= area(f);
+        }
+        assert!(
+            by_plane.values().all(|a: &f64| a.abs() < 1e-9),
+            "{by_plane:?}"
+        );
     }
 
     #[test]
