@@ -236,11 +236,28 @@ pub(crate) fn shadow(
 /// square of the shadow's extent (slivers of walls seen edge-on), are dropped: the overlay
 /// snaps to an integer grid about 1e-9 of the extent fine, where slivers break its result into
 /// thousands of fragments, and what they cover is below that grid.
+///
+/// A closed surface's shadow is covered by the triangles that face up alone (a vertical line
+/// through the solid leaves it through one of them; or by those facing down, whichever way
+/// it is wound), so of a closed mesh ([`closed`]) only the triangles turned counter-clockwise
+/// go to the sweep: the others cover the same ground with outlines along the same lines,
+/// which the sweep splits pair by pair (openscad-geb's letters seen from two sides: 62 and
+/// 36 ms, now 0.5 ms each).
 pub(crate) fn triangles_shadow(tris: impl Iterator<Item = [DVec3; 3]>) -> Poly2 {
+    let tris: Vec<[DVec3; 3]> = tris.collect();
+    shadow_of(&tris, closed(&tris))
+}
+
+/// The union of the shadows of `tris`' triangles, or of those turned counter-clockwise alone
+/// when `one_side` ([`triangles_shadow`]).
+fn shadow_of(tris: &[[DVec3; 3]], one_side: bool) -> Poly2 {
     use i_overlay::core::fill_rule::FillRule;
     use i_overlay::core::overlay_rule::OverlayRule;
     use i_overlay::float::single::SingleFloatOverlay;
-    let flat: Vec<[DVec2; 3]> = tris.map(|t| t.map(|p| DVec2::new(p.x, p.y))).collect();
+    let flat: Vec<[DVec2; 3]> = tris
+        .iter()
+        .map(|t| t.map(|p| DVec2::new(p.x, p.y)))
+        .collect();
     let (lo, hi) = flat
         .iter()
         .flatten()
@@ -253,7 +270,7 @@ pub(crate) fn triangles_shadow(tris: impl Iterator<Item = [DVec3; 3]>) -> Poly2 
         let area = 0.5 * (b - a).perp_dot(c - a);
         if area > least {
             subj.push(vec![a.to_array(), b.to_array(), c.to_array()]);
-        } else if area < -least {
+        } else if area < -least && !one_side {
             subj.push(vec![a.to_array(), c.to_array(), b.to_array()]);
         }
     }
@@ -266,6 +283,25 @@ pub(crate) fn triangles_shadow(tris: impl Iterator<Item = [DVec3; 3]>) -> Poly2 
             .map(|c| c.into_iter().map(DVec2::from).collect())
             .collect(),
     }
+}
+
+/// Whether every edge of `tris` is run as often one way as the other (corners equal bit for
+/// bit): a closed surface.
+fn closed(tris: &[[DVec3; 3]]) -> bool {
+    let key = |p: DVec3| p.to_array().map(|c| (c + 0.0).to_bits());
+    let mut runs: std::collections::HashMap<_, i64> =
+        std::collections::HashMap::with_capacity(3 * tris.len());
+    for t in tris {
+        for k in 0..3 {
+            let (a, b) = (key(t[k]), key(t[(k + 1) % 3]));
+            match a.cmp(&b) {
+                std::cmp::Ordering::Less => *runs.entry((a, b)).or_default() += 1,
+                std::cmp::Ordering::Greater => *runs.entry((b, a)).or_default() -= 1,
+                std::cmp::Ordering::Equal => {}
+            }
+        }
+    }
+    runs.values().all(|&n| n == 0)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -663,6 +699,31 @@ mod tests {
         let tris = mesh_of(&s.root, &s.solids, &[]).unwrap();
         let p = triangles_shadow(tris.into_iter());
         assert!((area(&Region::Poly(p)) - 4.0 * 2f64.sqrt()).abs() < 1e-6);
+    }
+
+    #[test]
+    fn a_closed_meshs_shadow_is_that_of_its_triangles_facing_one_way() {
+        // Overhangs (a wide cap on a stem, a notch from below), a rotation, either winding:
+        // the shadow of the counter-clockwise triangles alone is that of all of them.
+        let texts = [
+            "union() { cylinder(h = 4, r = 1, $fn = 12); \
+             multmatrix([[1,0,0,0],[0,1,0,0],[0,0,1,4],[0,0,0,1]]) cylinder(h = 1, r = 3, $fn = 12); }",
+            "multmatrix([[0.6,0,0.8,0],[0,1,0,0],[-0.8,0,0.6,0],[0,0,0,1]]) difference() { \
+             cube(size = [4, 3, 2]); multmatrix([[1,0,0,1],[0,1,0,-1],[0,0,1,-1],[0,0,0,1]]) \
+             cube(size = [1, 5, 2]); }",
+        ];
+        for text in texts {
+            let s = scene(text);
+            let tris = mesh_of(&s.root, &s.solids, &[]).unwrap();
+            assert!(closed(&tris));
+            let all = area(&Region::Poly(shadow_of(&tris, false)));
+            let up = area(&Region::Poly(shadow_of(&tris, true)));
+            let turned: Vec<_> = tris.iter().map(|&[a, b, c]| [a, c, b]).collect();
+            let down = area(&Region::Poly(shadow_of(&turned, true)));
+            assert!(all > 1.0 && (up - all).abs() < 1e-9 && (down - all).abs() < 1e-9);
+            // Without a triangle it is open: every triangle counts.
+            assert!(!closed(&tris[1..]));
+        }
     }
 
     #[test]
