@@ -830,7 +830,7 @@ impl Fan {
     /// The sums p + q of this fan's vertex p and `other`'s vertex q whose cones meet: all
     /// the vertices of hull(P ⊕ Q) among them (the type's documentation). Pairs whose caps
     /// lie more than their radii (and 10⁻⁶) apart are skipped unseen: for each p only the
-    /// q of [`CapBand::candidates`] are tried, in order.
+    /// q of [`CapBand::candidates`] are tried, and the kept put in order.
     fn sum_vertices(&self, other: &Fan) -> Vec<DVec3> {
         // A large sum's vertices are found in parallel; a small one's (a mesh's triangle,
         // the triangles summed in parallel already) in turn.
@@ -886,22 +886,20 @@ impl Fan {
         cand: &mut Vec<usize>,
         out: &mut Vec<DVec3>,
     ) {
-        let p = self.v[i];
         other.band.candidates(self.caps[i], cand);
-        for &j in cand.iter() {
-            let q = other.v[j];
+        cand.retain(|&j| {
             if let (Some((c1, _)), Some((c2, _))) = (self.caps[i], other.caps[j]) {
                 let ((cos1, sin1), (cos2, sin2)) = (trig_self[i], other.trig[j]);
                 // Both radii are below 90°, so the sum is below 180° and cos decreases.
                 if c1.dot(c2) < cos1 * cos2 - sin1 * sin2 {
-                    continue;
+                    return false;
                 }
             }
-            let apart = self.beyond_an_edge(i, other, j) || other.beyond_an_edge(j, self, i);
-            if !apart {
-                out.push(p + q);
-            }
-        }
+            !(self.beyond_an_edge(i, other, j) || other.beyond_an_edge(j, self, i))
+        });
+        // In `other`'s order: the few kept sorted, not the many tried.
+        cand.sort_unstable();
+        out.extend(cand.iter().map(|&j| self.v[i] + other.v[j]));
     }
 }
 
@@ -944,8 +942,8 @@ impl CapBand {
         CapBand { by_z, wide }
     }
 
-    /// Into `out`, in increasing order: the vertices whose caps may meet `cap` (every
-    /// vertex when it is None).
+    /// Into `out`, the wide first, then the narrow by latitude: the vertices whose caps may
+    /// meet `cap` (every vertex when it is None).
     fn candidates(&self, cap: Option<(DVec3, f64)>, out: &mut Vec<usize>) {
         out.clear();
         out.extend_from_slice(&self.wide);
@@ -972,7 +970,6 @@ impl CapBand {
         let a = self.by_z.partition_point(|e| e.0 < lo);
         let b = self.by_z.partition_point(|e| e.0 <= hi);
         out.extend(self.by_z[a..b].iter().map(|e| e.1));
-        out.sort_unstable();
     }
 }
 
