@@ -33,7 +33,8 @@
 //! scene's own font files ([`crate::ReadOptions::fonts`]: those a `.scad` names in
 //! `use <x.ttf>`, or those beside a `.csg` file), the directories of `CSGPIX_FONT_PATH`
 //! (colon-separated), the bundled `vectors/fonts` (when it exists beside the sources this
-//! crate was built from), then the system fonts. `font = ""` is OpenSCAD's default,
+//! crate was built from), then the system fonts, scanned only when a lookup needs them
+//! ([`Fonts::find`]). `font = ""` is OpenSCAD's default,
 //! `Liberation Sans:style=Regular`. A family or style not found there is asked of fontconfig
 //! itself (`fc-match`, which answers as OpenSCAD's `FontCache::find_face_fontconfig` does:
 //! the name parsed as a fontconfig pattern, the configuration's substitutions and defaults,
@@ -68,8 +69,19 @@ const UNSCALE: f64 = 1.024e5;
 /// The fonts csgpix can draw, in lookup order.
 pub struct Fonts {
     db: fontdb::Database,
-    /// Looked up after `db`: a scene's own fonts come first, then [`Fonts::standard`].
-    then: Option<&'static Fonts>,
+    /// Looked up after `db`: a scene's own fonts come first, then [`Fonts::standard`], then
+    /// [`Fonts::system`].
+    then: Option<Then>,
+    /// Whether these are a scene's own font files.
+    scene: bool,
+}
+
+/// The set looked up after another: made when first asked for, and, when `lazy`, asked for
+/// only where the sets before cannot settle a lookup ([`Fonts::find`]).
+#[derive(Clone, Copy)]
+struct Then {
+    set: fn() -> &'static Fonts,
+    lazy: bool,
 }
 
 /// A face [`Fonts::find`] found: which set of the lookup order, and the face in it.
@@ -95,7 +107,11 @@ impl Fonts {
         if system {
             db.load_system_fonts();
         }
-        Fonts { db, then: None }
+        Fonts {
+            db,
+            then: None,
+            scene: false,
+        }
     }
 
     /// A scene's own font files, looked up before [`Fonts::standard`] (which stays shared
@@ -110,7 +126,11 @@ impl Fonts {
         }
         Fonts {
             db,
-            then: Some(Fonts::standard()),
+            then: Some(Then {
+                set: Fonts::standard,
+                lazy: false,
+            }),
+            scene: true,
         }
     }
 
@@ -121,7 +141,11 @@ impl Fonts {
         if collection_fits(&data) {
             db.load_font_data(data);
         }
-        Fonts { db, then: None }
+        Fonts {
+            db,
+            then: None,
+            scene: false,
+        }
     }
 
     /// The family names of every face, in order.
@@ -132,21 +156,30 @@ impl Fonts {
             .collect()
     }
 
-    /// The sets of the lookup order: this one's faces, then those it defers to.
-    fn layers(&self) -> Vec<&Fonts> {
+    /// The sets of the lookup order: this one's faces, then those it defers to; with
+    /// `lazy`, the sets made only when needed too (which makes them).
+    fn layers(&self, lazy: bool) -> Vec<&Fonts> {
         let mut layers = vec![self];
         while let Some(next) = layers[layers.len() - 1].then {
-            layers.push(next);
+            if next.lazy && !lazy {
+                break;
+            }
+            layers.push((next.set)());
         }
         layers
     }
 
-    /// The font data of a face [`Fonts::find`] returned.
+    /// The font data of a face [`Fonts::find`] returned (its set was made to find it).
     fn with_face_data<T>(&self, face: FaceId, f: impl FnOnce(&[u8], u32) -> T) -> Option<T> {
-        self.layers().get(face.layer)?.db.with_face_data(face.id, f)
+        let mut set = self;
+        for _ in 0..face.layer {
+            set = (set.then?.set)();
+        }
+        set.db.with_face_data(face.id, f)
     }
 
-    /// `CSGPIX_FONT_PATH`, the bundled fonts, the system fonts; loaded once per process.
+    /// `CSGPIX_FONT_PATH` and the bundled fonts, loaded once per process, then the system
+    /// fonts, scanned when first needed.
     pub fn standard() -> &'static Fonts {
         static FONTS: OnceLock<Fonts> = OnceLock::new();
         FONTS.get_or_init(|| {
@@ -158,13 +191,58 @@ impl Fonts {
                 })
                 .unwrap_or_default();
             dirs.extend(bundled_font_dir());
-            Fonts::new(&dirs, true)
+            Fonts {
+                then: Some(Then {
+                    set: Fonts::system,
+                    lazy: true,
+                }),
+                ..Fonts::new(&dirs, false)
+            }
         })
     }
 
+    /// The system's fonts, scanned once per process, and only when a lookup needs them:
+    /// parsing every installed face took about 7 ms of a `text()` design's run, whose font
+    /// (OpenSCAD's default, Liberation Sans) is most often bundled.
+    fn system() -> &'static Fonts {
+        static FONTS: OnceLock<Fonts> = OnceLock::new();
+        FONTS.get_or_init(|| Fonts::new(&[], true))
+    }
+
     /// The face a fontconfig-style name (`"Liberation Sans:style=Bold"`, `"DejaVu Sans:bold"`)
-    /// names; `""` is [`DEFAULT_FONT`]. The first face found in lookup order wins.
+    /// names; `""` is [`DEFAULT_FONT`]. The first face found in lookup order wins. The sets
+    /// made only when needed (the system's fonts) are looked in when the others give no face
+    /// or one that a face after them could beat (a weight not the one asked): a face with
+    /// the asked style, or of the asked weight, is the first of its kind, as with them.
     pub fn find(&self, name: &str) -> csgpix_scene::Result<FaceId> {
+        let (eager, all) = (self.layers(false), self.then_count());
+        if eager.len() < all {
+            if let Ok((face, true)) = self.find_in(&eager, name) {
+                return Ok(face);
+            }
+        }
+        self.find_in(&self.layers(true), name).map(|(face, _)| face)
+    }
+
+    /// How many sets the lookup order has, made or not.
+    fn then_count(&self) -> usize {
+        let mut n = 1;
+        let mut next = self.then;
+        while let Some(t) = next {
+            n += 1;
+            // A lazy set is last: its own `then` is not needed to count it.
+            next = match t.lazy {
+                true => None,
+                false => (t.set)().then,
+            };
+        }
+        n
+    }
+
+    /// [`Fonts::find`] over `layers`, and whether no face of a later set could be picked
+    /// instead: the first family named has faces here, and the style named matched or the
+    /// weight asked was found.
+    fn find_in(&self, layers: &[&Fonts], name: &str) -> csgpix_scene::Result<(FaceId, bool)> {
         let trimmed = name.trim();
         let lookup = if trimmed.is_empty() {
             DEFAULT_FONT
@@ -173,7 +251,8 @@ impl Fonts {
         };
         let (families, props) = lookup.split_once(':').unwrap_or((lookup, ""));
         let props = FontProps::parse(name, props)?;
-        let layers = self.layers();
+        // Whether a family named before had no face here (a later set may have one).
+        let mut passed = false;
         for family in families.split(',').map(str::trim).filter(|f| !f.is_empty()) {
             // The faces of the family, in lookup order.
             let faces: Vec<(usize, &fontdb::FaceInfo)> = layers
@@ -187,13 +266,17 @@ impl Fonts {
                 })
                 .collect();
             if faces.is_empty() {
+                passed = true;
                 continue;
             }
-            return match props.pick(&layers, &faces) {
-                Some((layer, f)) => Ok(FaceId {
-                    layer: *layer,
-                    id: f.id,
-                }),
+            return match props.pick(layers, &faces) {
+                Some((layer, f)) => Ok((
+                    FaceId {
+                        layer: *layer,
+                        id: f.id,
+                    },
+                    !passed && (props.style.is_some() || f.weight.0 == props.weight.unwrap_or(400)),
+                )),
                 None => Err(Error::NoSuchStyle {
                     family: family.to_string(),
                 }
@@ -202,7 +285,7 @@ impl Fonts {
         }
         Err(Error::FontNotFound {
             font: name.to_string(),
-            scene: self.then.is_some(),
+            scene: self.scene,
         })
     }
 }
@@ -300,7 +383,7 @@ impl Fonts {
         let Some(m) = fontconfig_match(lookup) else {
             return Err(missing);
         };
-        let layers = self.layers();
+        let layers = self.layers(true);
         let face = layers.iter().enumerate().find_map(|(layer, fonts)| {
             fonts
                 .db
@@ -974,6 +1057,63 @@ mod tests {
             .all(|w| w.to_string().contains("fontconfig's match")));
         let asked = ASKED_FONTCONFIG.lock().unwrap();
         assert_eq!(asked.iter().filter(|p| *p == name).count(), 1, "{asked:?}");
+    }
+
+    /// Times [`later`] was asked for its set.
+    static LATER_ASKED: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+
+    /// The bundled fonts, as a set after [`sans_alone`].
+    fn later() -> &'static Fonts {
+        static SET: OnceLock<Fonts> = OnceLock::new();
+        LATER_ASKED.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+        SET.get_or_init(fonts)
+    }
+
+    /// One bundled font file alone, then [`later`], lazily or not.
+    fn alone(file: &str, lazy: bool) -> Fonts {
+        let dir = bundled_font_dir().expect("vectors/fonts");
+        let data = std::fs::read(dir.join(file)).unwrap();
+        Fonts {
+            then: Some(Then { set: later, lazy }),
+            ..Fonts::of_data(data)
+        }
+    }
+
+    /// A set made only when needed is asked for only where the sets before it leave the
+    /// answer open, and every answer is the one of the whole lookup order.
+    #[test]
+    fn a_lazy_set_is_made_only_when_a_lookup_needs_it() {
+        use std::sync::atomic::Ordering::SeqCst;
+        let sans = "LiberationSans-Regular.ttf";
+        let (lazy, eager) = (alone(sans, true), alone(sans, false));
+        let asked = |name: &str| {
+            let before = LATER_ASKED.load(SeqCst);
+            let face = lazy.find(name).unwrap();
+            let made = LATER_ASKED.load(SeqCst) > before;
+            assert_eq!(face, eager.find(name).unwrap(), "{name}");
+            (face.layer, made)
+        };
+        // Found, of the weight asked, before the lazy set: it is not made.
+        assert_eq!(asked("Liberation Sans"), (0, false));
+        assert_eq!(asked("Liberation Sans:style=Regular"), (0, false));
+        // A style, a weight or a family only the lazy set has.
+        assert_eq!(asked("Liberation Sans:style=Bold"), (1, true));
+        assert_eq!(asked("Liberation Sans:bold"), (1, true));
+        assert_eq!(asked("Liberation Serif"), (1, true));
+        // A family named first that the sets before lack: the lazy set may have it.
+        assert_eq!(asked("Liberation Serif,Liberation Sans"), (1, true));
+        let e = lazy.find("Csgpix Nowhere").unwrap_err().to_string();
+        assert!(e.contains("not found"), "{e}");
+        // The bold face alone is not the regular one asked: the lazy set has a nearer.
+        let bold = alone("LiberationSans-Bold.ttf", true);
+        let face = bold.find("Liberation Sans").unwrap();
+        assert_eq!(
+            face,
+            fonts()
+                .find("Liberation Sans")
+                .map(|f| FaceId { layer: 1, ..f })
+                .unwrap()
+        );
     }
 
     fn draw(spec: &TextSpec) -> Poly2 {
