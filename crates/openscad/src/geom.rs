@@ -704,7 +704,7 @@ impl Fan {
     /// for degenerate (flat, collinear) sets other than a triangle.
     fn of(points: &[DVec3]) -> Option<Fan> {
         match points.len() {
-            3 => Fan::triangle([points[0], points[1], points[2]]),
+            3 => Fan::flat(points),
             n if n >= 4 => {
                 let (v, faces) = hull3(points).ok()?;
                 Some(Fan::polytope(v, &faces))
@@ -750,10 +750,6 @@ impl Fan {
             })
             .collect();
         Fan::with_caps(v, dirs, gens, edges)
-    }
-
-    fn triangle(t: [DVec3; 3]) -> Option<Fan> {
-        Fan::flat(&t)
     }
 
     /// The fan of a flat convex polygon (a triangle, or a patch of [`convex_patches`]):

@@ -215,28 +215,14 @@ impl Fonts {
     /// or one that a face after them could beat (a weight not the one asked): a face with
     /// the asked style, or of the asked weight, is the first of its kind, as with them.
     pub fn find(&self, name: &str) -> csgpix_scene::Result<FaceId> {
-        let (eager, all) = (self.layers(false), self.then_count());
-        if eager.len() < all {
+        let eager = self.layers(false);
+        // The last set made has a `then` only when that set is one made when needed.
+        if eager[eager.len() - 1].then.is_some() {
             if let Ok((face, true)) = self.find_in(&eager, name) {
                 return Ok(face);
             }
         }
         self.find_in(&self.layers(true), name).map(|(face, _)| face)
-    }
-
-    /// How many sets the lookup order has, made or not.
-    fn then_count(&self) -> usize {
-        let mut n = 1;
-        let mut next = self.then;
-        while let Some(t) = next {
-            n += 1;
-            // A lazy set is last: its own `then` is not needed to count it.
-            next = match t.lazy {
-                true => None,
-                false => (t.set)().then,
-            };
-        }
-        n
     }
 
     /// [`Fonts::find`] over `layers`, and whether no face of a later set could be picked
