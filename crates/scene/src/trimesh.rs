@@ -293,7 +293,7 @@ impl TriMesh {
         let hits: Vec<Vec<(usize, f64)>> = tris
             .par_chunks(256)
             .map(|chunk| {
-                let mut out = Vec::new();
+                let mut out = Vec::with_capacity(chunk.iter().map(|t| t.pixels_hint(win)).sum());
                 for t in chunk {
                     t.rasterize(win, &mut out);
                 }
@@ -512,6 +512,28 @@ impl Raster {
             lo: (a.x.min(b.x).min(c.x), a.y.min(b.y).min(c.y)),
             hi: (a.x.max(b.x).max(c.x), a.y.max(b.y).max(c.y)),
         })
+    }
+
+    /// About how many pixel centres of `win` the triangle covers, never many fewer: its
+    /// area plus half its perimeter plus one, in pixels (a convex set holds at most that many
+    /// lattice points), or its bounding box within `win` when that is smaller. A capacity for
+    /// [`Raster::rasterize`]'s output, so the hits are not copied as they grow.
+    pub(crate) fn pixels_hint(&self, win: Window) -> usize {
+        let Some((x0, x1)) = pixel_span(self.lo.0, self.hi.0, win.x0, win.w) else {
+            return 0;
+        };
+        let Some((y0, y1)) = pixel_span(self.lo.1, self.hi.1, win.y0, win.h) else {
+            return 0;
+        };
+        let one = f64::from(1u32 << FRAC_BITS);
+        let perimeter: f64 = self
+            .edges
+            .iter()
+            .map(|e| (e.dx as f64).hypot(e.dy as f64))
+            .sum();
+        let bound = self.area / 2.0 / (one * one) + perimeter / one / 2.0 + 1.0;
+        let bbox = (x1 - x0 + 1) as f64 * (y1 - y0 + 1) as f64;
+        bound.min(bbox) as usize
     }
 
     /// Appends `(pixel index in win, depth)` for every covered pixel centre of `win`.

@@ -265,6 +265,8 @@ impl<'a> Columns<'a> {
             let Some((first, _)) = made.first() else {
                 continue;
             };
+            out.runs
+                .reserve(made.iter().map(|(_, runs)| runs.runs.len()).sum());
             for y in first.y0..first.y1 {
                 for (b, runs) in &made {
                     for x in b.x0..b.x1 {
@@ -982,7 +984,16 @@ impl BandSweep {
         // A band spans whole rows: its width is the slice's.
         let nx = runs.columns.width();
         let b = runs.columns;
-        let mut changes: Vec<Vec<(u32, u8)>> = vec![vec![]; slabs.len()];
+        // Each slab's changes counted first, so none of the lists grows by copying.
+        let mut count = vec![0usize; slabs.len()];
+        for r in &runs.runs {
+            // A run from the first slab on is in `first`, not a change.
+            let at = (r.k as usize).checked_sub(slabs.start).filter(|&i| i > 0);
+            if let Some(c) = at.and_then(|i| count.get_mut(i)) {
+                *c += 1;
+            }
+        }
+        let mut changes: Vec<Vec<(u32, u8)>> = count.into_iter().map(Vec::with_capacity).collect();
         for y in b.y0..b.y1 {
             for x in b.x0..b.x1 {
                 let col = runs.column(x, y);
