@@ -64,6 +64,7 @@ use glam::{DVec2, DVec3};
 
 use boolmesh::prelude::{compute_boolean, Manifold, OpType};
 
+use crate::clip::{convex_intersection, Clipped};
 use crate::extrude::{flatten, Poly2, Region};
 use crate::hull::{hull2, hull3};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, Import, IMPORTED};
@@ -304,8 +305,9 @@ impl Polytope {
 }
 
 /// An operand of `minkowski()` as a union of pieces: unions distributed, a convex solid as
-/// itself, a closed mesh primitive as its triangles, a difference or intersection as its
-/// [`mesh_of`].
+/// itself, an intersection of convex solids as the polytope they bound
+/// ([`convex_intersection`]), a closed mesh primitive as its triangles, any other difference
+/// or intersection as its [`mesh_of`].
 pub(crate) fn pieces(
     node: &CsgNode,
     solids: &[ConvexSolid],
@@ -325,12 +327,16 @@ pub(crate) fn pieces(
                 out.push(Piece::Convex(Polytope::of_solid(s)));
             }
             CsgNode::Solid(i) => out.push(mesh_piece(leaf_mesh(*i, solids, imports)?)),
-            _ => {
-                let m = mesh_of(n, solids, imports)?;
-                if !m.is_empty() {
-                    out.push(mesh_piece(m));
+            _ => match convex_intersection(n, solids) {
+                Clipped::Convex(p) => out.push(Piece::Convex(p)),
+                Clipped::Empty => {}
+                Clipped::NotConvex => {
+                    let m = mesh_of(n, solids, imports)?;
+                    if !m.is_empty() {
+                        out.push(mesh_piece(m));
+                    }
                 }
-            }
+            },
         }
     }
     Ok(out)
@@ -386,7 +392,7 @@ pub(crate) fn convex_hull_of(m: &Mesh) -> Option<Polytope> {
 }
 
 /// A convex face's unit outward normal n and offset d (n·x = d on it), by Newell's method.
-fn face_plane(v: &[DVec3], f: &[usize]) -> (DVec3, f64) {
+pub(crate) fn face_plane(v: &[DVec3], f: &[usize]) -> (DVec3, f64) {
     let n = (0..f.len())
         .map(|i| {
             let (a, b) = (v[f[i]], v[f[(i + 1) % f.len()]]);

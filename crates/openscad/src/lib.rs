@@ -122,6 +122,7 @@
 #![warn(missing_docs)]
 
 mod cap;
+mod clip;
 mod consts_;
 mod dxf;
 mod export;

@@ -2,6 +2,7 @@
 
 use glam::DVec3;
 
+use crate::clip::{convex_intersection, Clipped};
 use crate::extrude::{
     convex_prism, flatten, linear_mesh, map_region, region_bytes, rotate_mesh, Linear, Poly2,
     Region,
@@ -1153,9 +1154,10 @@ impl<'a> Reader<'a> {
     }
 
     /// A finished `hull()` of solids: one convex solid over every vertex of the solids and
-    /// generated meshes below it (through unions), and of the computed mesh of each
-    /// difference or intersection among them ([`crate::geom::mesh_of`]); all of them leave
-    /// the scene.
+    /// generated meshes below it (through unions), of each intersection of convex solids
+    /// among them ([`crate::clip::convex_intersection`]) and of the computed mesh of each
+    /// other difference or intersection ([`crate::geom::mesh_of`]); all of them leave the
+    /// scene.
     fn hull3(&mut self, frame: Frame) -> Result<Item, Fail> {
         let pos = frame.pos;
         let at = |problem: Error| Fail { pos, problem };
@@ -1170,11 +1172,15 @@ impl<'a> Reader<'a> {
                         .map_err(|e| at(e.context("hull()")))?;
                     pts.extend(mesh.iter().flatten());
                 }
-                _ => {
-                    let mesh = mesh_of(n, &self.solids, &self.imports)
-                        .map_err(|e| at(e.context("hull()")))?;
-                    pts.extend(mesh.iter().flatten());
-                }
+                _ => match convex_intersection(n, &self.solids) {
+                    Clipped::Convex(p) => pts.extend(p.v),
+                    Clipped::Empty => {}
+                    Clipped::NotConvex => {
+                        let mesh = mesh_of(n, &self.solids, &self.imports)
+                            .map_err(|e| at(e.context("hull()")))?;
+                        pts.extend(mesh.iter().flatten());
+                    }
+                },
             }
         }
         for c in &frame.children {
