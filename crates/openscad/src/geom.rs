@@ -1,6 +1,7 @@
 //! The exact geometry of a CSG subtree, for the nodes that need more than its leaves:
 //! `hull()` of a difference or intersection, `minkowski()` of a non-convex operand (and, on
-//! branch `proj`, `projection()` and `resize()`).
+//! branch `proj`, `projection()` and `resize()`). An intersection of convex solids is
+//! clipped into one polytope instead ([`crate::clip`]).
 //!
 //! [`mesh_of`] evaluates a subtree to one closed triangle mesh: a convex solid's faces are
 //! fanned into triangles, a closed mesh primitive (an [`Import`] holding triangles) is taken as
