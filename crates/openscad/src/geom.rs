@@ -68,6 +68,7 @@ use boolmesh::prelude::{compute_boolean, Manifold, OpType};
 use crate::clip::{convex_intersection, Clipped};
 use crate::extrude::{flatten, Poly2, Region};
 use crate::hull::{hull2, hull3};
+use crate::memo::MeshMemo;
 use csgpix_scene::solid::{ConvexSolid, CsgNode, Import, IMPORTED};
 
 /// A closed triangle mesh, outward by the right-hand rule.
@@ -313,6 +314,7 @@ pub(crate) fn pieces(
     node: &CsgNode,
     solids: &[ConvexSolid],
     imports: &[Import],
+    memo: &mut MeshMemo,
 ) -> csgpix_scene::Result<Vec<Piece>> {
     let mut out = vec![];
     let mut stack = vec![node];
@@ -332,7 +334,7 @@ pub(crate) fn pieces(
                 Clipped::Convex(p) => out.push(Piece::Convex(p)),
                 Clipped::Empty => {}
                 Clipped::NotConvex => {
-                    let m = mesh_of(n, solids, imports)?;
+                    let m = memo.mesh_of(n, solids, imports)?;
                     if !m.is_empty() {
                         out.push(mesh_piece(m));
                     }
@@ -1116,13 +1118,13 @@ mod tests {
             cube([0.999, -1.0, 1.0], [1.001, 3.0, 3.0]), // a thin slot from the top
         ];
         let cut = |k| CsgNode::Difference(vec![CsgNode::Solid(0), CsgNode::Solid(k)]);
-        let p = pieces(&cut(1), &s, &[]).unwrap();
+        let p = pieces(&cut(1), &s, &[], &mut MeshMemo::default()).unwrap();
         let [Piece::Convex(half)] = &p[..] else {
             panic!("a half cube is one convex piece")
         };
         assert_eq!(half.v.len(), 8);
         for k in [2, 3] {
-            let p = pieces(&cut(k), &s, &[]).unwrap();
+            let p = pieces(&cut(k), &s, &[], &mut MeshMemo::default()).unwrap();
             assert!(matches!(&p[..], [Piece::Mesh(_)]), "cut {k} is not convex");
         }
         // Its sum with a cube is one hull: the box [0,1]x[0,2]x[0,2] grown by 1.
@@ -1137,7 +1139,7 @@ mod tests {
 
     fn p_half(s: &[ConvexSolid]) -> Vec<Piece> {
         let cut = CsgNode::Difference(vec![CsgNode::Solid(0), CsgNode::Solid(1)]);
-        pieces(&cut, s, &[]).unwrap()
+        pieces(&cut, s, &[], &mut MeshMemo::default()).unwrap()
     }
 
     #[test]

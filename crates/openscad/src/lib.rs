@@ -135,6 +135,7 @@ pub mod hull;
 mod import;
 mod lex;
 mod linalg;
+mod memo;
 mod node;
 mod primitives;
 mod project;

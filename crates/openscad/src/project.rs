@@ -29,8 +29,8 @@ use glam::{DVec2, DVec3};
 
 use crate::cap::key;
 use crate::extrude::{flatten, map_region, Poly2, Region};
-use crate::geom::mesh_of;
 use crate::hull::hull2;
+use crate::memo::MeshMemo;
 use crate::{frame::*, lex::*, linalg::*, node::*, primitives::*, tree::*};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, Import, IMPORTED};
 
@@ -203,12 +203,13 @@ pub(crate) fn shadow(
     node: &CsgNode,
     solids: &[ConvexSolid],
     imports: &[Import],
+    memo: &mut MeshMemo,
 ) -> csgpix_scene::Result<Region> {
     Ok(match node {
         CsgNode::Empty => empty(),
         CsgNode::Union(c) => Region::Union(
             c.iter()
-                .map(|c| shadow(c, solids, imports))
+                .map(|c| shadow(c, solids, imports, memo))
                 .collect::<Result<_, _>>()?,
         ),
         CsgNode::Solid(i) => match leaf(*i, solids, imports) {
@@ -225,7 +226,7 @@ pub(crate) fn shadow(
             Leaf::File(f) => return Err(file_refused("projection()", f)),
         },
         _ => {
-            let tris = mesh_of(node, solids, imports)?;
+            let tris = memo.mesh_of(node, solids, imports)?;
             Region::Poly(triangles_shadow(tris.into_iter()))
         }
     })
@@ -328,19 +329,20 @@ pub(crate) fn bbox3(
     node: &CsgNode,
     solids: &[ConvexSolid],
     imports: &[Import],
+    memo: &mut MeshMemo,
 ) -> csgpix_scene::Result<Option<Box3>> {
     match node {
         CsgNode::Empty => Ok(None),
-        CsgNode::Union(c) => c
-            .iter()
-            .try_fold(None, |acc, c| Ok(join(acc, bbox3(c, solids, imports)?))),
+        CsgNode::Union(c) => c.iter().try_fold(None, |acc, c| {
+            Ok(join(acc, bbox3(c, solids, imports, memo)?))
+        }),
         CsgNode::Solid(i) => match leaf(*i, solids, imports) {
             Leaf::Convex(s) => Ok(box_of(s.vertices.iter().map(|&p| DVec3::from(p)))),
             Leaf::Mesh(m) => Ok(box_of(m.iter().flatten().map(|&p| DVec3::from(p)))),
             Leaf::File(f) => Err(file_refused("resize()", f)),
         },
         _ => Ok(box_of(
-            mesh_of(node, solids, imports)?.into_iter().flatten(),
+            memo.mesh_of(node, solids, imports)?.into_iter().flatten(),
         )),
     }
 }
@@ -448,6 +450,7 @@ pub(crate) fn projection(
     frame: Frame,
     solids: &[ConvexSolid],
     imports: &[Import],
+    memo: &mut MeshMemo,
 ) -> Result<(Item, CsgNode), Fail> {
     let pos = frame.pos;
     if !frame.flats.is_empty() {
@@ -462,7 +465,7 @@ pub(crate) fn projection(
     let region = if cut {
         section(&node, solids, imports)
     } else {
-        shadow(&node, solids, imports)
+        shadow(&node, solids, imports, memo)
     }
     .map_err(|problem| Fail { pos, problem })?;
     let m = plane_part(frame.placement.as_ref());
@@ -477,6 +480,7 @@ pub(crate) fn resize(
     frame: Frame,
     solids: &mut [ConvexSolid],
     imports: &mut [Import],
+    memo: &mut MeshMemo,
 ) -> Result<Item, Fail> {
     let pos = frame.pos;
     let Spec::Resize { newsize, auto } = frame.spec else {
@@ -486,7 +490,7 @@ pub(crate) fn resize(
         return Ok(resize_flat(frame, newsize, auto));
     }
     let node = combine(Op::Union, frame.children);
-    let bbox = bbox3(&node, solids, imports).map_err(|problem| Fail { pos, problem })?;
+    let bbox = bbox3(&node, solids, imports, memo).map_err(|problem| Fail { pos, problem })?;
     // OpenSCAD resizes one primitive's mesh (a PolySet) and a boolean's result (a Nef
     // polyhedron) by different rules, which differ only for a negative entry.
     let rule = match node {
@@ -590,6 +594,7 @@ pub(crate) fn move_leaves(
 mod tests {
     use super::*;
     use crate::extrude::signed_area;
+    use crate::geom::mesh_of;
     use crate::{parse_csg, parse_csg_with, ReadOptions};
     use csgpix_scene::solid::CsgScene;
 
@@ -692,7 +697,7 @@ mod tests {
         let text = format!(
             "multmatrix([[1,0,0,0],[0,{c},-{c},0],[0,{c},{c},0],[0,0,0,1]]) cube(size = 2, center = true);"
         );
-        let r = tree_region(&text, shadow).unwrap();
+        let r = tree_region(&text, |n, s, i| shadow(n, s, i, &mut MeshMemo::default())).unwrap();
         assert!((area(&r) - 4.0 * 2f64.sqrt()).abs() < 1e-6, "{}", area(&r));
         // The same cube as a mesh: the union of its triangles' shadows.
         let s = scene(&text);
@@ -815,12 +820,16 @@ mod tests {
         let text = "difference() { cube(size = 10); \
                     multmatrix([[1,0,0,5],[0,1,0,-1],[0,0,1,-1],[0,0,0,1]]) cube(size = 12); }";
         let s = scene(text);
-        let (lo, hi) = bbox3(&s.root, &s.solids, &s.imports).unwrap().unwrap();
+        let (lo, hi) = bbox3(&s.root, &s.solids, &s.imports, &mut MeshMemo::default())
+            .unwrap()
+            .unwrap();
         assert!((lo - DVec3::ZERO).abs().max_element() < 1e-9);
         assert!((hi - DVec3::new(5.0, 10.0, 10.0)).abs().max_element() < 1e-9);
         // Through unions, the leaves' boxes.
         let s = scene("cube(1); multmatrix([[1,0,0,3],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) sphere(r = 1, $fn = 4);");
-        let (lo, hi) = bbox3(&s.root, &s.solids, &s.imports).unwrap().unwrap();
+        let (lo, hi) = bbox3(&s.root, &s.solids, &s.imports, &mut MeshMemo::default())
+            .unwrap()
+            .unwrap();
         assert_eq!(lo.x, 0.0);
         assert!((hi.x - (3.0 + 0.5f64.sqrt())).abs() < 1e-12, "{hi}");
     }

@@ -7,8 +7,9 @@ use crate::extrude::{
     convex_prism, flatten, linear_mesh, map_region, region_bytes, rotate_mesh, Linear, Poly2,
     Region,
 };
-use crate::geom::{leaf_mesh, mesh_of, minkowski2, minkowski3, pieces, pieces2, Piece, Piece2};
+use crate::geom::{leaf_mesh, minkowski2, minkowski3, pieces, pieces2, Piece, Piece2};
 use crate::hull::hull3;
+use crate::memo::MeshMemo;
 use crate::{
     consts_::*,
     flat::*,
@@ -82,6 +83,8 @@ pub(crate) struct Reader<'a> {
     outlines: std::collections::HashMap<String, Region>,
     /// The bytes [`Self::sums`] and [`Self::outlines`] hold ([`CsgScene::reading_bytes`]).
     kept_bytes: u64,
+    /// The meshes of the booleans evaluated so far ([`MeshMemo`]).
+    pub(crate) meshes: MeshMemo,
 }
 
 /// A `minkowski()`'s sum in its own coordinates, as the scene's solids and meshes (without
@@ -153,6 +156,7 @@ impl<'a> Reader<'a> {
             drawing_bytes: 0,
             flat_bytes: 0,
             scene_fonts: std::cell::OnceCell::new(),
+            meshes: MeshMemo::default(),
             sums: std::collections::HashMap::new(),
             outlines: std::collections::HashMap::new(),
             kept_bytes: 0,
@@ -222,7 +226,8 @@ impl<'a> Reader<'a> {
                     reading_bytes: self
                         .drawing_bytes
                         .saturating_add(self.flat_bytes)
-                        .saturating_add(self.kept_bytes),
+                        .saturating_add(self.kept_bytes)
+                        .saturating_add(self.meshes.bytes()),
                 })
             }
             Some(frame) => fail(pos, unclosed(&frame, "end of file")),
@@ -433,7 +438,8 @@ impl<'a> Reader<'a> {
             NodeKind::Minkowski => self.minkowski2(frame),
             NodeKind::Offset => self.offset(frame),
             NodeKind::Projection => {
-                let (item, below) = projection(frame, &self.solids, &self.imports)?;
+                let (item, below) =
+                    projection(frame, &self.solids, &self.imports, &mut self.meshes)?;
                 self.consume(&below);
                 Ok(Some(item))
             }
@@ -446,7 +452,7 @@ impl<'a> Reader<'a> {
                         self.warnings.push((pos, msg.to_string()));
                     }
                 }
-                resize(frame, &mut self.solids, &mut self.imports).map(Some)
+                resize(frame, &mut self.solids, &mut self.imports, &mut self.meshes).map(Some)
             }
             _ if frame.dim == Some(Dim::Flat) => {
                 Ok(Some(Item::Flat(region_of(kind.op(), frame.flats), flat_at)))
@@ -1176,7 +1182,7 @@ impl<'a> Reader<'a> {
                     Clipped::Convex(p) => pts.extend(p.v),
                     Clipped::Empty => {}
                     Clipped::NotConvex => {
-                        let mesh = mesh_of(n, &self.solids, &self.imports)
+                        let mesh = (self.meshes.mesh_of(n, &self.solids, &self.imports))
                             .map_err(|e| at(e.context("hull()")))?;
                         pts.extend(mesh.iter().flatten());
                     }
@@ -1273,11 +1279,11 @@ impl<'a> Reader<'a> {
     }
 
     /// The left fold of `children`'s sums, and the most vertices a step was counted to bring.
-    fn sum_children(&self, children: &[CsgNode], budget: usize) -> Result<Sum, Error> {
+    fn sum_children(&mut self, children: &[CsgNode], budget: usize) -> Result<Sum, Error> {
         let mut acc: Option<Vec<Piece>> = None;
         let mut need = 0;
         for c in children {
-            let p = pieces(c, &self.solids, &self.imports)?;
+            let p = pieces(c, &self.solids, &self.imports, &mut self.meshes)?;
             if p.is_empty() {
                 continue;
             }
