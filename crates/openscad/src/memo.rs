@@ -148,22 +148,31 @@ impl Leaf {
     }
 }
 
-/// A subtree evaluated: its shape (node kinds and child counts, in pre-order), its leaves
-/// and its mesh.
+/// A subtree evaluated: its leaves and its mesh.
 struct Seen {
-    shape: Vec<u32>,
     leaves: Vec<Leaf>,
     mesh: Mesh,
+}
+
+/// What a subtree shares with every turn of it, so that only those subtrees are compared:
+/// its shape (node kinds and child counts, in pre-order) and per leaf its kind, its points
+/// and its box's three sides in order (a turn permutes them, exactly).
+fn signature(shape: &[u32], leaves: &[Leaf]) -> Vec<u64> {
+    let mut key: Vec<u64> = shape.iter().map(|&k| u64::from(k)).collect();
+    for l in leaves {
+        let (lo, hi) = l.bounds(Turn::IDENTITY);
+        let mut sides = bits(hi - lo);
+        sides.sort_unstable();
+        key.extend([u64::from(matches!(l, Leaf::Corners(_))), l.points() as u64]);
+        key.extend(sides);
+    }
+    key
 }
 
 impl Seen {
     /// The turn taking this subtree's leaves to `leaves`, if one does: the turns whose boxes
     /// agree tried in full.
     fn turn_to(&self, leaves: &[Leaf]) -> Option<Turn> {
-        let kind = |l: &Leaf| (matches!(l, Leaf::Corners(_)), l.points());
-        if !self.leaves.iter().map(kind).eq(leaves.iter().map(kind)) {
-            return None;
-        }
         let same_boxes = |t: &Turn| {
             (self.leaves.iter().zip(leaves)).all(|(a, b)| a.bounds(*t) == b.bounds(Turn::IDENTITY))
         };
@@ -181,7 +190,8 @@ impl Seen {
 /// The meshes of the subtrees evaluated while a scene is read.
 #[derive(Default)]
 pub(crate) struct MeshMemo {
-    seen: Vec<Seen>,
+    /// By [`signature`].
+    seen: std::collections::HashMap<Vec<u64>, Vec<Seen>>,
     held: usize,
 }
 
@@ -205,22 +215,29 @@ impl MeshMemo {
         let leaves = (leaf_ids.iter())
             .map(|&i| Leaf::of(i, solids, imports))
             .collect::<csgpix_scene::Result<Vec<Leaf>>>()?;
-        let mut same_shape = self.seen.iter().filter(|s| s.shape == shape);
-        if let Some((s, t)) = same_shape.find_map(|s| Some((s, s.turn_to(&leaves)?))) {
+        let key = signature(&shape, &leaves);
+        let alike = self.seen.get(&key).into_iter().flatten();
+        if let Some((s, t)) = alike
+            .into_iter()
+            .find_map(|s| Some((s, s.turn_to(&leaves)?)))
+        {
             return Ok(t.mesh(&s.mesh));
         }
         let mesh = mesh_of(node, solids, imports)?;
-        let seen = Seen {
-            shape,
-            leaves,
-            mesh,
-        };
+        let seen = Seen { leaves, mesh };
         if self.held + seen.points() > HELD {
             return Ok(seen.mesh);
         }
         self.held += seen.points();
-        self.seen.push(seen);
-        Ok(self.seen.last().map(|s| s.mesh.clone()).unwrap_or_default())
+        let mesh = seen.mesh.clone();
+        self.seen.entry(key).or_default().push(seen);
+        Ok(mesh)
+    }
+
+    /// How many subtrees it holds.
+    #[cfg(test)]
+    fn taken(&self) -> usize {
+        self.seen.values().map(Vec::len).sum()
     }
 }
 
@@ -296,7 +313,7 @@ mod tests {
         let direct = (copies.iter())
             .map(|c| mesh_of(c, &s.solids, &s.imports).unwrap())
             .collect();
-        (remembered, direct, memo.seen.len())
+        (remembered, direct, memo.taken())
     }
 
     #[test]
