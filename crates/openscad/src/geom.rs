@@ -1,7 +1,8 @@
 //! The exact geometry of a CSG subtree, for the nodes that need more than its leaves:
 //! `hull()` of a difference or intersection, `minkowski()` of a non-convex operand (and, on
 //! branch `proj`, `projection()` and `resize()`). An intersection of convex solids is
-//! clipped into one polytope instead ([`crate::clip`]).
+//! clipped into one polytope instead ([`crate::clip`]); `minkowski()`'s operands are split
+//! into pieces by [`crate::pieces`].
 //!
 //! [`mesh_of`] evaluates a subtree to one closed triangle mesh: a convex solid's faces are
 //! fanned into triangles, a closed mesh primitive (an [`Import`] holding triangles) is taken as
@@ -65,10 +66,8 @@ use glam::{DVec2, DVec3};
 
 use boolmesh::prelude::{compute_boolean, Manifold, OpType};
 
-use crate::clip::{convex_intersection, Clipped};
 use crate::extrude::{flatten, Poly2, Region};
 use crate::hull::{hull2, hull3};
-use crate::memo::MeshMemo;
 use csgpix_scene::solid::{ConvexSolid, CsgNode, Import, IMPORTED};
 
 /// A closed triangle mesh, outward by the right-hand rule.
@@ -303,55 +302,6 @@ impl Polytope {
             true => Some(Fan::polytope(self.v.clone(), &self.faces)),
             false => Fan::of(&self.v),
         }
-    }
-}
-
-/// An operand of `minkowski()` as a union of pieces: unions distributed, a convex solid as
-/// itself, an intersection of convex solids as the polytope they bound
-/// ([`convex_intersection`]), a closed mesh primitive as its triangles, any other difference
-/// or intersection as its [`mesh_of`].
-pub(crate) fn pieces(
-    node: &CsgNode,
-    solids: &[ConvexSolid],
-    imports: &[Import],
-    memo: &mut MeshMemo,
-) -> csgpix_scene::Result<Vec<Piece>> {
-    let mut out = vec![];
-    let mut stack = vec![node];
-    while let Some(n) = stack.pop() {
-        match n {
-            CsgNode::Empty => {}
-            CsgNode::Union(c) => stack.extend(c.iter()),
-            CsgNode::Solid(i) if *i < IMPORTED => {
-                let s = solids.get(*i).ok_or(Error::NoPrimitive {
-                    kind: "solid",
-                    index: *i,
-                })?;
-                out.push(Piece::Convex(Polytope::of_solid(s)));
-            }
-            CsgNode::Solid(i) => out.push(mesh_piece(leaf_mesh(*i, solids, imports)?)),
-            _ => match convex_intersection(n, solids) {
-                Clipped::Convex(p) => out.push(Piece::Convex(p)),
-                Clipped::Empty => {}
-                Clipped::NotConvex => {
-                    let m = memo.mesh_of(n, solids, imports)?;
-                    if !m.is_empty() {
-                        out.push(mesh_piece(m));
-                    }
-                }
-            },
-        }
-    }
-    Ok(out)
-}
-
-/// A closed mesh as a piece: convex by its hull's vertices when it is its own hull (a sphere
-/// cut by a plane, a box with a chamfer), so that its sum with a convex piece is one hull
-/// rather than one hull per triangle; else the mesh.
-fn mesh_piece(m: Mesh) -> Piece {
-    match convex_hull_of(&m) {
-        Some(p) => Piece::Convex(p),
-        None => Piece::Mesh(m),
     }
 }
 
@@ -1079,6 +1029,8 @@ fn shifted(p: &Poly2, d: DVec2) -> Poly2 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::memo::MeshMemo;
+    use crate::pieces::pieces;
 
     fn cube(lo: [f64; 3], hi: [f64; 3]) -> ConvexSolid {
         let v = |i: usize| {

@@ -137,6 +137,7 @@ mod lex;
 mod linalg;
 mod memo;
 mod node;
+mod pieces;
 mod primitives;
 mod project;
 mod reader;

@@ -7,9 +7,10 @@ use crate::extrude::{
     convex_prism, flatten, linear_mesh, map_region, region_bytes, rotate_mesh, Linear, Poly2,
     Region,
 };
-use crate::geom::{leaf_mesh, minkowski2, minkowski3, pieces, pieces2, Piece, Piece2};
+use crate::geom::{leaf_mesh, minkowski2, minkowski3, pieces2, Piece, Piece2};
 use crate::hull::hull3;
 use crate::memo::MeshMemo;
+use crate::pieces::pieces;
 use crate::{
     consts_::*,
     flat::*,
