@@ -28,7 +28,8 @@ const CLIP_TESTS: usize = 1 << 26;
 pub(crate) enum Clipped {
     /// Not an intersection of convex solids (or too large to clip): take its mesh.
     NotConvex,
-    /// An intersection of no volume.
+    /// An intersection of nothing: the solids are apart, or meet only where a face plane of
+    /// one has every corner left of the other on it or beyond.
     Empty,
     /// The intersection, a convex polytope.
     Convex(Polytope),
@@ -77,9 +78,11 @@ pub(crate) fn convex_intersection(node: &CsgNode, solids: &[ConvexSolid]) -> Cli
             None => return Clipped::Empty,
         }
     }
+    // Corners left that span no volume (a sliver thinner than the hull's tolerance) go the
+    // mesh path, as they went before: their sum with a solid has volume.
     match Polytope::hull(&p.v) {
         Ok(p) => Clipped::Convex(p),
-        Err(_) => Clipped::Empty,
+        Err(_) => Clipped::NotConvex,
     }
 }
 
