@@ -12,7 +12,8 @@
 
 use glam::DVec3;
 
-use crate::geom::{leaf_mesh, mesh_of, Mesh};
+use crate::clip::{convex_intersection, Clipped};
+use crate::geom::{leaf_mesh, mesh_of, Mesh, Polytope};
 use csgpix_scene::solid::{ConvexSolid, CsgNode, Import, IMPORTED};
 
 /// Most points the memo holds (the leaves' and the results' together, 24 bytes each): past
@@ -169,22 +170,52 @@ fn signature(shape: &[u32], leaves: &[Leaf]) -> Vec<u64> {
     key
 }
 
+/// The leaves of a subtree looked up, with their boxes and (once a turn's boxes agree)
+/// their canonical forms, each made once however many subtrees and turns are tried.
+struct Asked<'a> {
+    leaves: &'a [Leaf],
+    boxes: Vec<(DVec3, DVec3)>,
+    canonical: std::cell::OnceCell<Vec<Vec<[u64; 3]>>>,
+}
+
+impl<'a> Asked<'a> {
+    fn of(leaves: &'a [Leaf]) -> Self {
+        Asked {
+            leaves,
+            boxes: leaves.iter().map(|l| l.bounds(Turn::IDENTITY)).collect(),
+            canonical: std::cell::OnceCell::new(),
+        }
+    }
+
+    fn canonical(&self) -> &[Vec<[u64; 3]>] {
+        self.canonical.get_or_init(|| {
+            (self.leaves.iter())
+                .map(|l| l.canonical(Turn::IDENTITY))
+                .collect()
+        })
+    }
+}
+
 impl Seen {
-    /// The turn taking this subtree's leaves to `leaves`, if one does: the turns whose boxes
-    /// agree tried in full.
-    fn turn_to(&self, leaves: &[Leaf]) -> Option<Turn> {
-        let same_boxes = |t: &Turn| {
-            (self.leaves.iter().zip(leaves)).all(|(a, b)| a.bounds(*t) == b.bounds(Turn::IDENTITY))
-        };
+    /// The turn taking this subtree's leaves to the asked ones, if one does: the turns whose
+    /// boxes agree tried in full.
+    fn turn_to(&self, asked: &Asked) -> Option<Turn> {
+        let same_boxes =
+            |t: &Turn| (self.leaves.iter().zip(&asked.boxes)).all(|(a, b)| a.bounds(*t) == *b);
         Turn::all().filter(same_boxes).find(|&t| {
-            (self.leaves.iter().zip(leaves))
-                .all(|(a, b)| a.canonical(t) == b.canonical(Turn::IDENTITY))
+            (self.leaves.iter().zip(asked.canonical())).all(|(a, b)| a.canonical(t) == *b)
         })
     }
 
     fn points(&self) -> usize {
         3 * self.mesh.len() + self.leaves.iter().map(Leaf::points).sum::<usize>()
     }
+}
+
+/// A subtree's solid ([`MeshMemo::solid_of`]).
+pub(crate) enum Solid {
+    Convex(Polytope),
+    Mesh(Mesh),
 }
 
 /// The meshes of the subtrees evaluated while a scene is read.
@@ -216,11 +247,9 @@ impl MeshMemo {
             .map(|&i| Leaf::of(i, solids, imports))
             .collect::<csgpix_scene::Result<Vec<Leaf>>>()?;
         let key = signature(&shape, &leaves);
-        let alike = self.seen.get(&key).into_iter().flatten();
-        if let Some((s, t)) = alike
-            .into_iter()
-            .find_map(|s| Some((s, s.turn_to(&leaves)?)))
-        {
+        let asked = Asked::of(&leaves);
+        let mut alike = self.seen.get(&key).into_iter().flatten();
+        if let Some((s, t)) = alike.find_map(|s| Some((s, s.turn_to(&asked)?))) {
             return Ok(t.mesh(&s.mesh));
         }
         let mesh = mesh_of(node, solids, imports)?;
@@ -232,6 +261,22 @@ impl MeshMemo {
         let mesh = seen.mesh.clone();
         self.seen.entry(key).or_default().push(seen);
         Ok(mesh)
+    }
+
+    /// The solid of a difference or intersection `node`: an intersection of convex solids
+    /// clipped into one polytope ([`convex_intersection`]), anything else its mesh (empty for
+    /// nothing), through the memo.
+    pub(crate) fn solid_of(
+        &mut self,
+        node: &CsgNode,
+        solids: &[ConvexSolid],
+        imports: &[Import],
+    ) -> csgpix_scene::Result<Solid> {
+        Ok(match convex_intersection(node, solids) {
+            Clipped::Convex(p) => Solid::Convex(p),
+            Clipped::Empty => Solid::Mesh(vec![]),
+            Clipped::NotConvex => Solid::Mesh(self.mesh_of(node, solids, imports)?),
+        })
     }
 
     /// How many subtrees it holds.

@@ -4,13 +4,12 @@
 use csgpix_scene::solid::{ConvexSolid, CsgNode, Import, IMPORTED};
 use csgpix_scene::Error;
 
-use crate::clip::{convex_intersection, Clipped};
 use crate::geom::{convex_hull_of, leaf_mesh, Mesh, Piece, Polytope};
-use crate::memo::MeshMemo;
+use crate::memo::{MeshMemo, Solid};
 
 /// An operand of `minkowski()` as a union of pieces: unions distributed, a convex solid as
 /// itself, an intersection of convex solids as the polytope they bound
-/// ([`convex_intersection`]), a closed mesh primitive as its triangles, any other difference
+/// ([`crate::clip::convex_intersection`]), a closed mesh primitive as its triangles, any other difference
 /// or intersection as its [`crate::geom::mesh_of`] (through the memo).
 pub(crate) fn pieces(
     node: &CsgNode,
@@ -32,15 +31,10 @@ pub(crate) fn pieces(
                 out.push(Piece::Convex(Polytope::of_solid(s)));
             }
             CsgNode::Solid(i) => out.push(mesh_piece(leaf_mesh(*i, solids, imports)?)),
-            _ => match convex_intersection(n, solids) {
-                Clipped::Convex(p) => out.push(Piece::Convex(p)),
-                Clipped::Empty => {}
-                Clipped::NotConvex => {
-                    let m = memo.mesh_of(n, solids, imports)?;
-                    if !m.is_empty() {
-                        out.push(mesh_piece(m));
-                    }
-                }
+            _ => match memo.solid_of(n, solids, imports)? {
+                Solid::Convex(p) => out.push(Piece::Convex(p)),
+                Solid::Mesh(m) if m.is_empty() => {}
+                Solid::Mesh(m) => out.push(mesh_piece(m)),
             },
         }
     }

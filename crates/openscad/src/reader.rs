@@ -2,14 +2,13 @@
 
 use glam::DVec3;
 
-use crate::clip::{convex_intersection, Clipped};
 use crate::extrude::{
     convex_prism, flatten, linear_mesh, map_region, region_bytes, rotate_mesh, Linear, Poly2,
     Region,
 };
 use crate::geom::{leaf_mesh, minkowski2, minkowski3, pieces2, Piece, Piece2};
 use crate::hull::hull3;
-use crate::memo::MeshMemo;
+use crate::memo::{MeshMemo, Solid};
 use crate::pieces::pieces;
 use crate::{
     consts_::*,
@@ -1179,14 +1178,11 @@ impl<'a> Reader<'a> {
                         .map_err(|e| at(e.context("hull()")))?;
                     pts.extend(mesh.iter().flatten());
                 }
-                _ => match convex_intersection(n, &self.solids) {
-                    Clipped::Convex(p) => pts.extend(p.v),
-                    Clipped::Empty => {}
-                    Clipped::NotConvex => {
-                        let mesh = (self.meshes.mesh_of(n, &self.solids, &self.imports))
-                            .map_err(|e| at(e.context("hull()")))?;
-                        pts.extend(mesh.iter().flatten());
-                    }
+                _ => match (self.meshes.solid_of(n, &self.solids, &self.imports))
+                    .map_err(|e| at(e.context("hull()")))?
+                {
+                    Solid::Convex(p) => pts.extend(p.v),
+                    Solid::Mesh(m) => pts.extend(m.iter().flatten()),
                 },
             }
         }
