@@ -52,7 +52,8 @@ impl From<ReadArgs> for ReadSettings {
 /// `--threads` and `--fallback`, flattened into each command that voxelizes a scene.
 #[derive(clap::Args, Debug, Clone, Copy)]
 pub struct SweepArgs {
-    /// Worker threads, 1 to 256 (default: all cores). The output does not depend on it;
+    /// Worker threads, 1 to 256 (default: all cores), on which the scene is read (its
+    /// imports and meshes in parallel) and voxelized. The output does not depend on it;
     /// each thread holds a slab's masks, counted in the memory estimate.
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
     threads: Option<u16>,

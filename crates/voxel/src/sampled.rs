@@ -296,11 +296,12 @@ pub fn load_imports_warned(
     dir: &Path,
     samples: SampleLimit,
 ) -> Result<(Vec<Sampled>, Vec<csgpix_scene::Error>)> {
+    use rayon::prelude::*;
     let first = scene.solids.len();
-    let mut warnings = vec![];
-    let sampled = scene
-        .imports
-        .iter()
+    // The imports in parallel (a file's parse and weld, an extrusion's weld and closure
+    // check), then taken in order: the first failing import's error, every warning in the
+    // order the imports come, as when they were read one by one.
+    let each: Vec<(Result<Sampled>, Vec<csgpix_scene::Error>)> = (scene.imports.par_iter())
         .enumerate()
         .map(|(j, imp)| {
             let at = Location {
@@ -308,16 +309,18 @@ pub fn load_imports_warned(
                 line: imp.line,
                 col: imp.col,
             };
-            load_import(
-                imp,
-                first + j,
-                &Origin::Scene(at),
-                dir,
-                samples,
-                &mut warnings,
-            )
+            let mut warnings = vec![];
+            let origin = Origin::Scene(at);
+            let r = load_import(imp, first + j, &origin, dir, samples, &mut warnings);
+            (r, warnings)
         })
-        .collect::<Result<_>>()?;
+        .collect();
+    let mut warnings = vec![];
+    let mut sampled = Vec::with_capacity(each.len());
+    for (r, w) in each {
+        warnings.extend(w);
+        sampled.push(r?);
+    }
     Ok((sampled, warnings))
 }
 

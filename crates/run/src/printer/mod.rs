@@ -128,7 +128,10 @@ impl PrintJob {
             archive::Kind::Stack => outs.dir("-o", &self.out)?,
         };
         let vjob = self.voxelize_job();
-        let loaded = vjob.load(progress)?;
+        // Read on the threads asked, as `voxelize` reads.
+        let pool = crate::voxelize::Workers::new(self.threads)?;
+        let loaded = pool.install(|| vjob.load(progress))?;
+        drop(pool);
         let part = part_box(&loaded).map_err(|m| Error::options("SCENE", m))?;
         let part = self.placed_box(&vjob, &loaded, part)?;
         let done = self.print_at(&mut outs, out, kind, (&vjob, &loaded, progress), part)?;

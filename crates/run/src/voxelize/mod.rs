@@ -36,7 +36,7 @@ pub mod zarr;
 pub use self::zarr::ZarrReport;
 pub use crate::grid::{grid_spec, parse_bounds, parse_res, Resolution};
 pub use outputs::{mesh, MeshReport};
-pub use plan::thread_pool;
+pub use plan::Workers;
 pub use route::StoreReport;
 
 /// Without Zarr stores (the `zarr` feature off) the report's `zarr` is always null.
@@ -310,8 +310,9 @@ impl VoxelizeJob {
     pub fn run(&self, progress: &dyn crate::progress::Progress) -> crate::Result<VoxelizeReport> {
         self.check_format()?;
         let staged = outputs::Staged::name(self)?;
-        let loaded = self.load(progress)?;
-        let plan = self.plan(&loaded)?;
+        let pool = plan::Workers::new(self.threads)?;
+        let loaded = pool.install(|| self.load(progress))?;
+        let plan = self.plan_with(&loaded, pool)?;
         let budget = plan.budget(self, &loaded.scene)?;
         self.max_memory
             .check(budget.need, "this run", self.memory_fix())?;

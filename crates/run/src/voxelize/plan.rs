@@ -24,10 +24,30 @@ use csgpix_voxel::PixelBox;
 #[cfg(feature = "zarr")]
 use csgpix_zarr::Layout;
 
-/// The voxelizer's worker threads: `threads` of them, or by default one per core (rayon's).
-pub fn thread_pool(threads: Option<usize>) -> crate::Result<rayon::ThreadPool> {
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads.unwrap_or(0));
-    Ok(pool.build()?)
+/// A job's worker threads: rayon's global pool (one thread per core) by default, or a pool
+/// of the `--threads` asked. The job reads its scene, plans and runs on them, so the count
+/// asked holds for all three and the default makes no second pool beside the global one.
+pub struct Workers(Option<rayon::ThreadPool>);
+
+impl Workers {
+    /// The global pool (`threads` None), or a pool of `threads`.
+    pub fn new(threads: Option<usize>) -> crate::Result<Workers> {
+        let pool = threads.map(|n| rayon::ThreadPoolBuilder::new().num_threads(n).build());
+        Ok(Workers(pool.transpose()?))
+    }
+
+    /// `f` run with these threads as rayon's.
+    pub fn install<R: Send>(&self, f: impl FnOnce() -> R + Send) -> R {
+        match &self.0 {
+            Some(pool) => pool.install(f),
+            None => f(),
+        }
+    }
+
+    /// How many there are.
+    pub fn count(&self) -> usize {
+        self.install(rayon::current_num_threads)
+    }
 }
 
 /// A voxelization planned on a loaded scene.
@@ -41,7 +61,7 @@ pub struct Plan {
     /// Worker threads.
     pub threads: usize,
     /// Their pool.
-    pub pool: rayon::ThreadPool,
+    pub pool: Workers,
 }
 
 /// What the plan holds in memory, and how the NRRD output goes.
@@ -125,26 +145,39 @@ pub(super) fn route_name(route: Route) -> &'static str {
 impl VoxelizeJob {
     /// The plan on `loaded`, its errors in the command line's words and said of the input.
     pub fn plan(&self, loaded: &Loaded) -> crate::Result<Plan> {
+        self.plan_with(loaded, Workers::new(self.threads)?)
+    }
+
+    /// [`VoxelizeJob::plan`] on the threads `pool` (those the scene was read on).
+    pub fn plan_with(&self, loaded: &Loaded, pool: Workers) -> crate::Result<Plan> {
         let name = self.name();
         let grid = self.grid.grid(loaded).map_err(voxel_error);
         let grid = grid.map_err(|e| e.context(&name))?;
-        let plan = self.plan_on(loaded, grid);
-        plan.map_err(|e| Error::from(e).context(&name))?
+        let plan = self.plan_in(loaded, grid, pool);
+        plan.map_err(|e| Error::from(e).context(&name))
     }
 
     /// The plan on `loaded` and `grid`: the voxelizer's error (outer), or the pool's (inner).
     pub fn plan_on(&self, loaded: &Loaded, grid: Grid) -> Result<crate::Result<Plan>, VoxelError> {
-        let threads = self.threads.unwrap_or_else(rayon::current_num_threads);
-        let slicer = self.voxels.slicer(loaded, grid, self.grid.sampling)?;
+        match Workers::new(self.threads) {
+            Ok(pool) => self.plan_in(loaded, grid, pool).map(Ok),
+            Err(e) => Ok(Err(e)),
+        }
+    }
+
+    /// The plan on `loaded` and `grid` with the threads `pool`, the slicer made on them.
+    pub fn plan_in(&self, loaded: &Loaded, grid: Grid, pool: Workers) -> Result<Plan, VoxelError> {
+        let threads = pool.count();
+        let slicer = pool.install(|| self.voxels.slicer(loaded, grid, self.grid.sampling))?;
         let eval = self.voxels.evaluator(&loaded.scene);
         let route = self.voxels.route(&slicer);
-        Ok(thread_pool(Some(threads)).map(|pool| Plan {
+        Ok(Plan {
             slicer,
             eval,
             route,
             threads,
             pool,
-        }))
+        })
     }
 }
 
@@ -341,4 +374,25 @@ pub fn zarr_estimate(
     let prims = slicer.primitive_count();
     let rows = csgpix_zarr::memory_estimate(grid, layout, prims, threads)?;
     Ok(rows.saturating_add(imports_estimate(slicer)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Workers;
+
+    /// `--threads n` gives a pool of n, whose threads the work installed sees as rayon's;
+    /// no count runs on the global pool, in the caller's thread.
+    #[test]
+    fn workers_are_the_threads_asked_or_the_global_pool() {
+        for n in [1, 3] {
+            let w = Workers::new(Some(n)).unwrap();
+            assert_eq!(w.count(), n);
+            let inside = w.install(|| rayon::current_thread_index());
+            assert!(inside.is_some_and(|i| i < n), "{inside:?}");
+        }
+        let w = Workers::new(None).unwrap();
+        assert_eq!(w.count(), rayon::current_num_threads());
+        let caller = std::thread::current().id();
+        assert_eq!(w.install(|| std::thread::current().id()), caller);
+    }
 }
