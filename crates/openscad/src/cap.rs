@@ -348,7 +348,8 @@ pub(crate) fn outward(tris: &mut [Tri3]) {
 
 /// Each triangle's corners as numbers, equal for corners equal bit for bit ([`key`]).
 fn corner_ids(tris: &[Tri3]) -> Vec<[u32; 3]> {
-    let mut number: HashMap<[u64; 3], u32> = HashMap::with_capacity(tris.len());
+    let fast = foldhash::fast::RandomState::default();
+    let mut number: HashMap<[u64; 3], u32, _> = HashMap::with_capacity_and_hasher(tris.len(), fast);
     tris.iter()
         .map(|t| {
             t.map(|p| {

@@ -140,8 +140,9 @@ type EdgeKey = ([u64; 3], [u64; 3]);
 /// through the edges they cross (an edge of a closed mesh is in two triangles).
 fn mesh_loops(tris: &[[[f64; 3]; 3]], up: impl Fn(f64) -> bool) -> Poly2 {
     use std::collections::HashMap;
+    type Fast = foldhash::fast::RandomState;
     let mut ends: Vec<[EdgeKey; 2]> = vec![];
-    let mut points: HashMap<EdgeKey, DVec2> = HashMap::new();
+    let mut points: HashMap<EdgeKey, DVec2, Fast> = HashMap::default();
     for t in tris {
         let t = t.map(DVec3::from);
         let mut cut = vec![];
@@ -161,7 +162,7 @@ fn mesh_loops(tris: &[[[f64; 3]; 3]], up: impl Fn(f64) -> bool) -> Poly2 {
             ends.push([e0, e1]);
         }
     }
-    let mut at: HashMap<EdgeKey, Vec<usize>> = HashMap::new();
+    let mut at: HashMap<EdgeKey, Vec<usize>, Fast> = HashMap::default();
     for (s, e) in ends.iter().enumerate() {
         at.entry(e[0]).or_default().push(s);
         at.entry(e[1]).or_default().push(s);
@@ -290,8 +291,11 @@ fn shadow_of(tris: &[[DVec3; 3]], one_side: bool) -> Poly2 {
 /// bit): a closed surface.
 fn closed(tris: &[[DVec3; 3]]) -> bool {
     let key = |p: DVec3| p.to_array().map(|c| (c + 0.0).to_bits());
-    let mut runs: std::collections::HashMap<_, i64> =
-        std::collections::HashMap::with_capacity(3 * tris.len());
+    let mut runs: std::collections::HashMap<_, i64, _> =
+        std::collections::HashMap::with_capacity_and_hasher(
+            3 * tris.len(),
+            foldhash::fast::RandomState::default(),
+        );
     for t in tris {
         for k in 0..3 {
             let (a, b) = (key(t[k]), key(t[(k + 1) % 3]));
