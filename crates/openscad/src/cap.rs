@@ -41,8 +41,26 @@ pub(crate) type Corner = (usize, usize);
 /// up that encloses it, and a hole no such outline encloses (outlines crossing each other, as
 /// a raw `polygon` with several `paths` may have) is capped on its own, which by parity is
 /// the even-odd fill.
+///
+/// The outlines are matched with their holes in order first; the shapes are then
+/// triangulated in parallel (a line of text has one per glyph, and more for its holes) and
+/// their triangles joined in that order.
 pub(crate) fn cap(rings: &[Ring]) -> Vec<[Corner; 3]> {
-    let mut out = vec![];
+    use rayon::prelude::*;
+    let shapes = shapes(rings);
+    let each = |(o, holes): &(usize, Vec<usize>)| ear_clipped_or_fan(rings, *o, holes);
+    // A shape or two of a few corners each (a square, a ring) is capped where it is.
+    let corners: usize = rings.iter().map(|r| r.points.len()).sum();
+    match shapes.len() > 1 && corners >= PARALLEL_CORNERS {
+        true => shapes.par_iter().map(each).collect::<Vec<_>>().concat(),
+        false => shapes.iter().flat_map(each).collect(),
+    }
+}
+
+/// The shapes a cap triangulates, in order: each outer outline with the holes it takes,
+/// then each hole no outline took, alone.
+fn shapes(rings: &[Ring]) -> Vec<(usize, Vec<usize>)> {
+    let mut shapes: Vec<(usize, Vec<usize>)> = vec![];
     let mut capped = vec![false; rings.len()];
     for (o, outer) in rings.iter().enumerate() {
         if outer.is_hole() {
@@ -55,13 +73,19 @@ pub(crate) fn cap(rings: &[Ring]) -> Vec<[Corner; 3]> {
             .filter(|&h| encloses(&outer.points, &rings[h].points))
             .collect();
         holes.iter().for_each(|&h| capped[h] = true);
-        out.extend(ear_clipped_or_fan(rings, o, &holes));
+        shapes.push((o, holes));
     }
     for h in (0..rings.len()).filter(|&h| rings[h].is_hole() && !capped[h]) {
-        out.extend(ear_clipped_or_fan(rings, h, &[]));
+        shapes.push((h, vec![]));
     }
-    out
+    shapes
 }
+
+/// The fewest corners of a cap whose shapes are triangulated in parallel.
+const PARALLEL_CORNERS: usize = 256;
+
+/// The fewest edges [`neighbours`] sorts in parallel.
+const PARALLEL_EDGES: usize = 1 << 14;
 
 /// Outline `o` with `holes` ear-clipped, or as fans where that fails.
 fn ear_clipped_or_fan(rings: &[Ring], o: usize, holes: &[usize]) -> Vec<[Corner; 3]> {
@@ -370,7 +394,11 @@ fn neighbours(ids: &[[u32; 3]]) -> Vec<[u32; 3]> {
             edges.push((undirected(c[k], c[(k + 1) % 3]), (3 * t + k) as u32));
         }
     }
-    edges.sort_unstable();
+    // Each entry is unique (its triangle and edge), so either sort gives the same order.
+    match edges.len() >= PARALLEL_EDGES {
+        true => rayon::slice::ParallelSliceMut::par_sort_unstable(&mut edges[..]),
+        false => edges.sort_unstable(),
+    }
     let mut out = vec![[u32::MAX; 3]; ids.len()];
     for run in edges.chunk_by(|x, y| x.0 == y.0) {
         if let [(_, s), (_, r)] = run {
@@ -446,6 +474,79 @@ mod tests {
         tris.iter()
             .map(|t| 0.5 * (at(t[1]) - at(t[0])).perp_dot(at(t[2]) - at(t[0])))
             .sum()
+    }
+
+    /// A grid of `n`² square rings of `k` points a side, each with a square hole holding
+    /// an island: enough corners for the shapes to be capped in parallel.
+    fn plate(n: usize, k: usize) -> Vec<Ring> {
+        let square = |c: DVec2, h: f64, depth: usize| {
+            let side =
+                |a: DVec2, b: DVec2| (0..k).map(move |i| a + (b - a) * (i as f64 / k as f64));
+            let p = [(-h, -h), (h, -h), (h, h), (-h, h)].map(|(x, y)| c + DVec2::new(x, y));
+            let mut points: Vec<DVec2> = (0..4).flat_map(|i| side(p[i], p[(i + 1) % 4])).collect();
+            if depth % 2 == 1 {
+                points.reverse();
+            }
+            Ring { points, depth }
+        };
+        let centres = (0..n * n).map(|i| DVec2::new((i % n) as f64, (i / n) as f64) * 10.0);
+        centres
+            .flat_map(|c| [square(c, 4.0, 0), square(c, 2.0, 1), square(c, 1.0, 2)])
+            .collect()
+    }
+
+    #[test]
+    fn shapes_capped_in_parallel_are_those_capped_in_order() {
+        let rings = plate(6, 8);
+        assert!(rings.iter().map(|r| r.points.len()).sum::<usize>() >= PARALLEL_CORNERS);
+        let shapes = shapes(&rings);
+        // Each outer square with its hole, each island alone: 72 shapes.
+        assert_eq!(shapes.len(), 72);
+        let in_order: Vec<[Corner; 3]> = shapes
+            .iter()
+            .flat_map(|(o, holes)| ear_clipped_or_fan(&rings, *o, holes))
+            .collect();
+        assert_eq!(cap(&rings), in_order);
+        // 36 frames of area 64 - 16 and 36 islands of area 4.
+        assert!((area(&rings, &in_order) - 36.0 * 52.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn neighbours_sorted_in_parallel_are_each_edges_other_triangle() {
+        // A strip of 2·m triangles over a row of m + 1 by 2 corners, closed into a band:
+        // every edge but the band's two rims is shared by two triangles.
+        let m = PARALLEL_EDGES;
+        let at = |i: usize, top: bool| (2 * (i % m) + usize::from(top)) as u32;
+        let ids: Vec<[u32; 3]> = (0..m)
+            .flat_map(|i| {
+                [
+                    [at(i, false), at(i + 1, false), at(i + 1, true)],
+                    [at(i, false), at(i + 1, true), at(i, true)],
+                ]
+            })
+            .collect();
+        assert!(3 * ids.len() >= PARALLEL_EDGES);
+        let found = neighbours(&ids);
+        // The reference: each undirected edge's triangles, from a map.
+        let mut by_edge: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
+        for (t, c) in ids.iter().enumerate() {
+            for k in 0..3 {
+                let (a, b) = (c[k], c[(k + 1) % 3]);
+                by_edge.entry((a.min(b), a.max(b))).or_default().push(t);
+            }
+        }
+        let rims = found.iter().flatten().filter(|&&n| n == u32::MAX).count();
+        assert_eq!(rims, 2 * m);
+        for (t, n) in found.iter().enumerate() {
+            for k in 0..3 {
+                let (a, b) = (ids[t][k], ids[t][(k + 1) % 3]);
+                let expected = match by_edge[&(a.min(b), a.max(b))][..] {
+                    [u, v] => (if u == t { v } else { u }) as u32,
+                    _ => u32::MAX,
+                };
+                assert_eq!(n[k], expected, "triangle {t} edge {k}");
+            }
+        }
     }
 
     #[test]
