@@ -4,35 +4,8 @@
 
 use std::path::Path;
 
+use csgpix_testkit::box_stl;
 use csgpix_voxel::sampled::{load_scene, Shape};
-
-/// An ASCII STL of the box [0, s]³, its top face left out when `open`.
-fn box_stl(s: f32, open: bool) -> String {
-    let c = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 1 { s } else { 0.0 });
-    let mut quads = vec![
-        [0, 2, 3, 1],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    if !open {
-        quads.push([4, 5, 7, 6]);
-    }
-    let facet = |t: [[f32; 3]; 3]| {
-        let v: String = t
-            .iter()
-            .map(|p| format!("vertex {} {} {}\n", p[0], p[1], p[2]))
-            .collect();
-        format!("facet normal 0 0 0\nouter loop\n{v}endloop\nendfacet\n")
-    };
-    let body: String = quads
-        .iter()
-        .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
-        .map(facet)
-        .collect();
-    format!("solid b\n{body}endsolid b\n")
-}
 
 /// A scene in `dir` importing `files`, one a line from line 2, column 3.
 fn scene(dir: &Path, files: &[String]) -> std::path::PathBuf {

@@ -103,31 +103,8 @@ fn a_welded_soup_is_openscads_cube() {
 #[test]
 fn an_open_stl_import_carries_its_warning() {
     let dir = tempfile::tempdir().unwrap();
-    let facet = |t: [[f32; 3]; 3]| {
-        let v: String = t
-            .iter()
-            .map(|p| format!("vertex {} {} {}\n", p[0], p[1], p[2]))
-            .collect();
-        format!("facet normal 0 0 0\nouter loop\n{v}endloop\nendfacet\n")
-    };
-    let c = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 1 { 4.0f32 } else { 0.0 });
-    let quads = [
-        [0, 2, 3, 1],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let body: String = quads
-        .iter()
-        .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
-        .map(facet)
-        .collect();
-    std::fs::write(
-        dir.path().join("open.stl"),
-        format!("solid o\n{body}endsolid o\n"),
-    )
-    .unwrap();
+    let stl = csgpix_testkit::box_stl(4.0, true);
+    std::fs::write(dir.path().join("open.stl"), stl).unwrap();
     let scene = dir.path().join("s.csg");
     std::fs::write(&scene, "group() {\n  import(file = \"open.stl\");\n}\n").unwrap();
     let l = load_scene(&scene).unwrap();

@@ -387,7 +387,7 @@ mod tests {
         for n in [1, 3] {
             let w = Workers::new(Some(n)).unwrap();
             assert_eq!(w.count(), n);
-            let inside = w.install(|| rayon::current_thread_index());
+            let inside = w.install(rayon::current_thread_index);
             assert!(inside.is_some_and(|i| i < n), "{inside:?}");
         }
         let w = Workers::new(None).unwrap();
