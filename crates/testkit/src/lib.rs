@@ -102,6 +102,34 @@ pub fn iou(a: &[bool], b: &[bool]) -> f64 {
     }
 }
 
+/// An ASCII STL of the box [0, `side`]³ as 12 triangles (two a face), its top face (z = side)
+/// left out when `open`.
+pub fn box_stl(side: f32, open: bool) -> String {
+    let c = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 1 { side } else { 0.0 });
+    let quads = [
+        [0, 2, 3, 1],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+        [4, 5, 7, 6],
+    ];
+    let facet = |t: [[f32; 3]; 3]| {
+        let v: String = t
+            .iter()
+            .map(|p| format!("vertex {} {} {}\n", p[0], p[1], p[2]))
+            .collect();
+        format!("facet normal 0 0 0\nouter loop\n{v}endloop\nendfacet\n")
+    };
+    let faces = if open { &quads[..5] } else { &quads[..] };
+    let body: String = faces
+        .iter()
+        .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
+        .map(facet)
+        .collect();
+    format!("solid b\n{body}endsolid b\n")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -172,32 +200,4 @@ mod tests {
         let every: Vec<_> = (0..3).flat_map(|a| [(a, false), (a, true)]).collect();
         assert_eq!(axes, every);
     }
-}
-
-/// An ASCII STL of the box [0, `side`]³ as 12 triangles (two a face), its top face (z = side)
-/// left out when `open`.
-pub fn box_stl(side: f32, open: bool) -> String {
-    let c = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 1 { side } else { 0.0 });
-    let quads = [
-        [0, 2, 3, 1],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-        [4, 5, 7, 6],
-    ];
-    let facet = |t: [[f32; 3]; 3]| {
-        let v: String = t
-            .iter()
-            .map(|p| format!("vertex {} {} {}\n", p[0], p[1], p[2]))
-            .collect();
-        format!("facet normal 0 0 0\nouter loop\n{v}endloop\nendfacet\n")
-    };
-    let faces = if open { &quads[..5] } else { &quads[..] };
-    let body: String = faces
-        .iter()
-        .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
-        .map(facet)
-        .collect();
-    format!("solid b\n{body}endsolid b\n")
 }
