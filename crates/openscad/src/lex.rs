@@ -163,6 +163,57 @@ impl<'a> Lexer<'a> {
         }
     }
 
+    /// The next token, taken, with its position, when it is one of the symbols `set`; else
+    /// the lexer is left before it (past the white space and comments before it, which
+    /// [`Lexer::next_token`] would skip the same).
+    pub(crate) fn sym_among(&mut self, set: &[u8]) -> Option<(u8, Pos)> {
+        let (at, pos) = (self.at, self.pos);
+        if self.skip_trivia().is_err() {
+            (self.at, self.pos) = (at, pos);
+            return None;
+        }
+        let b = self.byte(0).filter(|b| set.contains(b))?;
+        let pos = self.pos;
+        self.bump();
+        Some((b, pos))
+    }
+
+    /// Numbers, each perhaps right after a `-`, separated by commas (white space and
+    /// comments around them), pushed to `items` as the tokens `-` and a number make them;
+    /// the lexer is left just after the last one read, or where it was when none is. A
+    /// number whose text is bad is left for [`Lexer::next_token`] to refuse.
+    pub(crate) fn numbers(&mut self, items: &mut Vec<crate::value::Value>) {
+        let mut after = (self.at, self.pos);
+        while self.skip_trivia().is_ok() {
+            let (start, pos) = (self.at, self.pos);
+            let bytes = self.text.as_bytes();
+            let negative = bytes.get(start) == Some(&b'-');
+            let digits = start + negative as usize;
+            let number_starts = match bytes.get(digits) {
+                Some(b) if b.is_ascii_digit() => true,
+                Some(b'.') => bytes.get(digits + 1).is_some_and(u8::is_ascii_digit),
+                _ => false,
+            };
+            if !number_starts {
+                break;
+            }
+            if negative {
+                self.bump();
+            }
+            let Ok(Tok::Num(v)) = self.number(self.pos) else {
+                break;
+            };
+            let kind = crate::value::Kind::Num(if negative { -v } else { v });
+            items.push(crate::value::Value { kind, pos });
+            after = (self.at, self.pos);
+            if self.skip_trivia().is_err() || self.byte(0) != Some(b',') {
+                break;
+            }
+            self.bump();
+        }
+        (self.at, self.pos) = after;
+    }
+
     pub(crate) fn ident(&mut self) -> Tok {
         let start = self.at;
         self.bump();

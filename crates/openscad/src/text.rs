@@ -473,6 +473,10 @@ const NAMES_AHEAD: usize = 16;
 pub(crate) fn font_names(csg: &str) -> Vec<String> {
     const KEY: &str = "font = \"";
     let mut names: Vec<String> = vec![];
+    // `contains` is the quicker search: a large polyhedron's text holds no `text(`.
+    if !csg.contains("text(") {
+        return names;
+    }
     for (at, _) in csg.match_indices(KEY) {
         if names.len() == NAMES_AHEAD {
             break;

@@ -69,6 +69,9 @@ pub(crate) struct Parser<'a> {
     pub(crate) ahead: VecDeque<Token>,
     /// The byte after the last token taken.
     pub(crate) last_end: usize,
+    /// Whether runs of plain numbers are read straight from the text ([`Parser::numbers`]);
+    /// the tests turn it off to read them token by token.
+    pub(crate) numbers_from_text: bool,
 }
 
 impl<'a> Parser<'a> {
@@ -77,6 +80,7 @@ impl<'a> Parser<'a> {
             lexer: Lexer::new(text),
             ahead: VecDeque::new(),
             last_end: 0,
+            numbers_from_text: true,
         }
     }
 
@@ -161,21 +165,31 @@ impl<'a> Parser<'a> {
         Ok(Some((name, pos)))
     }
 
-    /// A value, vectors included; nested vectors are read with an explicit stack.
+    /// A value, vectors included; nested vectors are read with an explicit stack. Runs of
+    /// plain numbers in a vector are read straight from the text ([`Parser::numbers`]).
     pub(crate) fn value(&mut self) -> Result<Value, Fail> {
         let mut open: Vec<(Pos, Vec<Value>)> = Vec::new();
         loop {
             let token = self.next()?;
-            if token.tok == Tok::Sym(b'[') && !self.at_sym(b']')? {
-                if open.len() >= MAX_VECTOR_NESTING {
-                    let problem = CsgError::NestedTooDeep {
-                        what: "vectors",
-                        limit: MAX_VECTOR_NESTING,
-                    };
-                    return fail(token.pos, problem);
+            if token.tok == Tok::Sym(b'[') {
+                let mut items = Vec::new();
+                let read = self.numbers(&mut items);
+                if read > 0 || !self.at_sym(b']')? {
+                    if open.len() >= MAX_VECTOR_NESTING {
+                        let problem = CsgError::NestedTooDeep {
+                            what: "vectors",
+                            limit: MAX_VECTOR_NESTING,
+                        };
+                        return fail(token.pos, problem);
+                    }
+                    open.push((token.pos, items));
+                    if read > 0 {
+                        if let Some(value) = self.separators(&mut open)? {
+                            return Ok(value);
+                        }
+                    }
+                    continue;
                 }
-                open.push((token.pos, Vec::new()));
-                continue;
             }
             let element = self.scalar_or_empty(token)?;
             if let Some(value) = self.attach(&mut open, element)? {
@@ -184,34 +198,125 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// Adds a finished element to the innermost open vector, closing the vectors that end after
-    /// it; returns the whole value once nothing is left open.
+    /// Adds a finished element to the innermost open vector and reads what follows it
+    /// ([`Parser::separators`]); returns the whole value once nothing is left open.
     pub(crate) fn attach(
         &mut self,
         open: &mut Vec<(Pos, Vec<Value>)>,
-        mut done: Value,
+        done: Value,
     ) -> Result<Option<Value>, Fail> {
-        while let Some((pos, mut items)) = open.pop() {
-            items.push(done);
-            let token = self.next()?;
-            let closed = match token.tok {
-                Tok::Sym(b',') => self.eat_sym(b']')?.is_some(),
-                Tok::Sym(b']') => true,
-                other => {
-                    let expected = "',' or ']' in a vector";
-                    return fail(token.pos, expected_found(expected, &other));
+        match open.last_mut() {
+            None => Ok(Some(done)),
+            Some((_, items)) => {
+                items.push(done);
+                self.separators(open)
+            }
+        }
+    }
+
+    /// After an element of the innermost open vector: the `,` or `]` that follows, and the
+    /// runs of numbers after a `,`, closing the vectors that end (each an element of the one
+    /// around it); the whole value once nothing is left open, None where an element that is
+    /// not a plain number comes next.
+    fn separators(&mut self, open: &mut Vec<(Pos, Vec<Value>)>) -> Result<Option<Value>, Fail> {
+        loop {
+            let sym = match self.take_sym(b",]") {
+                Some(sym) => sym,
+                None => {
+                    let token = self.next()?;
+                    match token.tok {
+                        Tok::Sym(c @ (b',' | b']')) => c,
+                        other => {
+                            let expected = "',' or ']' in a vector";
+                            return fail(token.pos, expected_found(expected, &other));
+                        }
+                    }
                 }
             };
+            let closed = match sym {
+                b',' => {
+                    if let Some((_, items)) = open.last_mut() {
+                        if self.numbers(items) > 0 {
+                            continue;
+                        }
+                    }
+                    if let Some((pos, items)) = self.vector_of_numbers() {
+                        if open.len() >= MAX_VECTOR_NESTING {
+                            let problem = CsgError::NestedTooDeep {
+                                what: "vectors",
+                                limit: MAX_VECTOR_NESTING,
+                            };
+                            return fail(pos, problem);
+                        }
+                        open.push((pos, items));
+                        continue;
+                    }
+                    self.take_sym(b"]").is_some() || self.eat_sym(b']')?.is_some()
+                }
+                _ => true,
+            };
             if !closed {
-                open.push((pos, items));
                 return Ok(None);
             }
-            done = Value {
+            let Some((pos, items)) = open.pop() else {
+                return Ok(None);
+            };
+            let done = Value {
                 kind: Kind::List(items),
                 pos,
             };
+            match open.last_mut() {
+                None => return Ok(Some(done)),
+                Some((_, outer)) => outer.push(done),
+            }
         }
-        Ok(Some(done))
+    }
+
+    /// Reads into `items` the plain numbers that come next (each perhaps after a `-`), with
+    /// the commas between them, when no token has been looked at ahead; stops after a number
+    /// (the token after it is left unread) or where anything else comes. Each value is the
+    /// one the tokens would make ([`Parser::scalar_or_empty`]), at the same position: a
+    /// polyhedron's points and faces are most of a large `.csg`, and this skips a token and
+    /// its look-ahead per number. Returns how many were read.
+    /// The next token, taken, when it is one of the symbols `set` and no token has been
+    /// looked at ahead: as [`Parser::next`] would take it, without making the token.
+    fn take_sym(&mut self, set: &[u8]) -> Option<u8> {
+        if !self.ahead.is_empty() || !self.numbers_from_text {
+            return None;
+        }
+        let (sym, _) = self.lexer.sym_among(set)?;
+        self.last_end = self.lexer.at;
+        Some(sym)
+    }
+
+    /// A `[` and the plain numbers after it ([`Parser::numbers`], at least one), taken when
+    /// no token has been looked at ahead; the `[`'s position and the numbers. Nothing is
+    /// taken otherwise.
+    fn vector_of_numbers(&mut self) -> Option<(Pos, Vec<Value>)> {
+        if !self.ahead.is_empty() || !self.numbers_from_text {
+            return None;
+        }
+        let before = (self.lexer.at, self.lexer.pos);
+        let (_, pos) = self.lexer.sym_among(b"[")?;
+        let mut items = Vec::new();
+        if self.numbers(&mut items) == 0 {
+            (self.lexer.at, self.lexer.pos) = before;
+            return None;
+        }
+        Some((pos, items))
+    }
+
+    fn numbers(&mut self, items: &mut Vec<Value>) -> usize {
+        if !self.ahead.is_empty() || !self.numbers_from_text {
+            return 0;
+        }
+        let before = items.len();
+        self.lexer.numbers(items);
+        let read = items.len() - before;
+        if read > 0 {
+            self.last_end = self.lexer.at;
+        }
+        read
     }
 
     /// A number, boolean, `undef`, string or `[]`, starting with `token`.
@@ -279,5 +384,100 @@ fn non_finite(name: &str) -> Option<f64> {
         "inf" => Some(f64::INFINITY),
         "nan" => Some(f64::NAN),
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// What reading a value gives: the value, or the error and where; then where the reading
+    /// left off (the last token's end and the next token).
+    fn read(text: &str, from_text: bool) -> String {
+        let mut p = Parser::new(text);
+        p.numbers_from_text = from_text;
+        let value = match p.value() {
+            Ok(v) => format!("{v:?}"),
+            Err(e) => return format!("{} at {}", e.problem, e.pos),
+        };
+        let end = p.last_end;
+        let next = match p.next() {
+            Ok(t) => format!("{:?} at {}", t.tok, t.pos),
+            Err(e) => format!("{} at {}", e.problem, e.pos),
+        };
+        format!("{value}; last end {end}; next {next}")
+    }
+
+    /// White space and comments between tokens.
+    fn trivia() -> impl Strategy<Value = String> {
+        prop_oneof![
+            4 => Just(String::new()),
+            4 => Just(" ".to_string()),
+            1 => Just("\n  ".to_string()),
+            1 => Just("/* c */".to_string()),
+            1 => Just("// x\n".to_string()),
+            1 => Just("\t\r\n".to_string()),
+        ]
+    }
+
+    fn number() -> impl Strategy<Value = String> {
+        prop_oneof![
+            (-1e6f64..1e6).prop_map(|v| format!("{v}")),
+            (-1e-3f64..1e-3).prop_map(|v| format!("{v:e}")),
+            (0u32..1000).prop_map(|v| format!("{v}")),
+            Just(".5".to_string()),
+            Just("5.".to_string()),
+            Just("- 3".to_string()),
+            Just("+2".to_string()),
+            Just("-inf".to_string()),
+            Just("1e400".to_string()),
+            Just("2.5E+10".to_string()),
+            Just("1.2.3".to_string()),
+            Just("7x".to_string()),
+            Just("true".to_string()),
+            Just("\"s\"".to_string()),
+        ]
+    }
+
+    /// Nested vectors of numbers (and now and then something else), trailing commas and
+    /// trivia included.
+    fn value_text() -> impl Strategy<Value = String> {
+        let leaf = (trivia(), number()).prop_map(|(t, n)| format!("{t}{n}"));
+        leaf.prop_recursive(5, 200, 8, |inner| {
+            (
+                proptest::collection::vec((inner, trivia()), 0..8),
+                any::<bool>(),
+                trivia(),
+            )
+                .prop_map(|(items, trailing, t)| {
+                    let body: Vec<String> = items.iter().map(|(v, t)| format!("{v}{t}")).collect();
+                    let comma = if trailing && !body.is_empty() {
+                        ","
+                    } else {
+                        ""
+                    };
+                    format!("{t}[{}{comma}]", body.join(","))
+                })
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(600))]
+
+        /// Numbers read straight from the text give the values, positions, errors and the
+        /// place reading left off that reading every token gives, also in damaged text.
+        #[test]
+        fn numbers_from_the_text_are_those_of_the_tokens(
+            text in value_text(),
+            cut in any::<proptest::sample::Index>(),
+            damage in proptest::sample::select(vec!["", "]", ",", "[", ";", "-", "/*", "é", ")"]),
+            tail in proptest::sample::select(vec!["", ";", ")", ", 5", "]"]),
+        ) {
+            let at = cut.index(text.len() + 1);
+            let at = (0..=at).rev().find(|&i| text.is_char_boundary(i)).unwrap_or(0);
+            let damaged = format!("{}{damage}{}{tail}", &text[..at], &text[at..]);
+            prop_assert_eq!(read(&damaged, true), read(&damaged, false), "{}", damaged);
+        }
     }
 }
