@@ -505,7 +505,8 @@ pub(crate) fn look_ahead(names: Vec<String>) {
     if names.is_empty() {
         return;
     }
-    std::thread::spawn(move || {
+    // A thread the system cannot make leaves the lookups to the reading, as without one.
+    let _ = std::thread::Builder::new().spawn(move || {
         let fonts = Fonts::standard();
         let eager = fonts.layers(false);
         let open: Vec<&String> = names
@@ -515,9 +516,10 @@ pub(crate) fn look_ahead(names: Vec<String>) {
         let asks: Vec<_> = open
             .iter()
             .take(ASKED_AHEAD)
-            .map(|n| {
+            .filter_map(|n| {
                 let pattern = lookup_name(n).to_string();
-                std::thread::spawn(move || fontconfig_match(&pattern).is_some())
+                let ask = move || fontconfig_match(&pattern).is_some();
+                std::thread::Builder::new().spawn(ask).ok()
             })
             .collect();
         if !open.is_empty() {
