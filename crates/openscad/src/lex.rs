@@ -179,10 +179,10 @@ impl<'a> Lexer<'a> {
     }
 
     /// Numbers, each perhaps right after a `-`, separated by commas (white space and
-    /// comments around them), pushed to `items` as the tokens `-` and a number make them;
-    /// the lexer is left just after the last one read, or where it was when none is. A
-    /// number whose text is bad is left for [`Lexer::next_token`] to refuse.
-    pub(crate) fn numbers(&mut self, items: &mut Vec<crate::value::Value>) {
+    /// comments around them), each given to `number` with where it starts, as the tokens `-`
+    /// and a number make it; the lexer is left just after the last one read, or where it was
+    /// when none is. A number whose text is bad is left for [`Lexer::next_token`] to refuse.
+    pub(crate) fn numbers(&mut self, mut number: impl FnMut(f64, Pos)) {
         let mut after = (self.at, self.pos);
         while self.skip_trivia().is_ok() {
             let (start, pos) = (self.at, self.pos);
@@ -203,8 +203,7 @@ impl<'a> Lexer<'a> {
             let Ok(Tok::Num(v)) = self.number(self.pos) else {
                 break;
             };
-            let kind = crate::value::Kind::Num(if negative { -v } else { v });
-            items.push(crate::value::Value { kind, pos });
+            number(if negative { -v } else { v }, pos);
             after = (self.at, self.pos);
             if self.skip_trivia().is_err() || self.byte(0) != Some(b',') {
                 break;

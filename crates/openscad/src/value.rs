@@ -311,7 +311,10 @@ impl<'a> Parser<'a> {
             return 0;
         }
         let before = items.len();
-        self.lexer.numbers(items);
+        self.lexer.numbers(|v, pos| {
+            let kind = Kind::Num(v);
+            items.push(Value { kind, pos })
+        });
         let read = items.len() - before;
         if read > 0 {
             self.last_end = self.lexer.at;
