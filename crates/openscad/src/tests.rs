@@ -521,6 +521,13 @@ fn deep_nesting_is_refused_not_a_crash() {
         13 + MAX_VECTOR_NESTING,
         "vectors nested deeper than 64",
     );
+    // The same limit where numbers follow the `[` (read straight from the text): right
+    // after it, and after a `,`.
+    let numbers = "cube(size = ".to_string() + &"[".repeat(100) + "1";
+    let deep = "vectors nested deeper than 64";
+    assert_err(&numbers, 1, 13 + MAX_VECTOR_NESTING, deep);
+    let after_commas = "cube(size = ".to_string() + &"[1, ".repeat(100);
+    assert_err(&after_commas, 1, 13 + 4 * MAX_VECTOR_NESTING, deep);
 }
 
 #[test]

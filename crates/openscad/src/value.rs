@@ -175,14 +175,7 @@ impl<'a> Parser<'a> {
                 let mut items = Vec::new();
                 let read = self.numbers(&mut items);
                 if read > 0 || !self.at_sym(b']')? {
-                    if open.len() >= MAX_VECTOR_NESTING {
-                        let problem = CsgError::NestedTooDeep {
-                            what: "vectors",
-                            limit: MAX_VECTOR_NESTING,
-                        };
-                        return fail(token.pos, problem);
-                    }
-                    open.push((token.pos, items));
+                    open_vector(&mut open, token.pos, items)?;
                     if read > 0 {
                         if let Some(value) = self.separators(&mut open)? {
                             return Ok(value);
@@ -241,14 +234,7 @@ impl<'a> Parser<'a> {
                         }
                     }
                     if let Some((pos, items)) = self.vector_of_numbers() {
-                        if open.len() >= MAX_VECTOR_NESTING {
-                            let problem = CsgError::NestedTooDeep {
-                                what: "vectors",
-                                limit: MAX_VECTOR_NESTING,
-                            };
-                            return fail(pos, problem);
-                        }
-                        open.push((pos, items));
+                        open_vector(open, pos, items)?;
                         continue;
                     }
                     self.take_sym(b"]").is_some() || self.eat_sym(b']')?.is_some()
@@ -362,6 +348,20 @@ impl<'a> Parser<'a> {
 }
 
 // ---------------------------------------------------------------------------------------------
+
+/// A vector opened at `pos` with its first `items`, inside those `open`; an error when that
+/// nests vectors deeper than [`MAX_VECTOR_NESTING`].
+fn open_vector(open: &mut Vec<(Pos, Vec<Value>)>, pos: Pos, items: Vec<Value>) -> Result<(), Fail> {
+    if open.len() >= MAX_VECTOR_NESTING {
+        let problem = CsgError::NestedTooDeep {
+            what: "vectors",
+            limit: MAX_VECTOR_NESTING,
+        };
+        return fail(pos, problem);
+    }
+    open.push((pos, items));
+    Ok(())
+}
 
 /// `what must rule`.
 pub(crate) fn must(what: &str, rule: Rule) -> CsgError {
