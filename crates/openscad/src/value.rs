@@ -258,12 +258,6 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// Reads into `items` the plain numbers that come next (each perhaps after a `-`), with
-    /// the commas between them, when no token has been looked at ahead; stops after a number
-    /// (the token after it is left unread) or where anything else comes. Each value is the
-    /// one the tokens would make ([`Parser::scalar_or_empty`]), at the same position: a
-    /// polyhedron's points and faces are most of a large `.csg`, and this skips a token and
-    /// its look-ahead per number. Returns how many were read.
     /// The next token, taken, when it is one of the symbols `set` and no token has been
     /// looked at ahead: as [`Parser::next`] would take it, without making the token.
     fn take_sym(&mut self, set: &[u8]) -> Option<u8> {
@@ -292,6 +286,12 @@ impl<'a> Parser<'a> {
         Some((pos, items))
     }
 
+    /// Reads into `items` the plain numbers that come next (each perhaps after a `-`), with
+    /// the commas between them, when no token has been looked at ahead; stops after a number
+    /// (the token after it is left unread) or where anything else comes. Each value is the
+    /// one the tokens would make ([`Parser::scalar_or_empty`]), at the same position: a
+    /// polyhedron's points and faces are most of a large `.csg`, and this skips a token and
+    /// its look-ahead per number. Returns how many were read.
     fn numbers(&mut self, items: &mut Vec<Value>) -> usize {
         if !self.ahead.is_empty() || !self.numbers_from_text {
             return 0;
