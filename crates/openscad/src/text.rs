@@ -1117,8 +1117,9 @@ mod tests {
 
     /// Fonts looked up ahead (beside the reading, the test harness's pool having more than
     /// one thread) give the scene and warnings of fonts looked up in turn (a pool of one
-    /// thread looks nothing up ahead): a missing font, a style the bundled family lacks, and
-    /// bundled fonts, each named twice. Each order is read first in turn on its own names.
+    /// thread looks nothing up ahead): a missing font, a style the bundled family lacks (which
+    /// the system may have), and bundled fonts, each named twice. Each order is read first in
+    /// turn on its own names.
     #[test]
     fn fonts_looked_up_ahead_are_those_looked_up_in_turn() {
         if fontconfig_match("Csgpix Absent Probe").is_none() {
@@ -1162,7 +1163,15 @@ mod tests {
             let (a, t) = (a.unwrap(), t.unwrap());
             assert_eq!(a.imports, t.imports, "{tag}");
             assert_eq!(a.warnings, t.warnings, "{tag}");
-            assert_eq!(a.warnings.len(), 4, "{:?}", a.warnings);
+            // The absent font warns at both its `text()`s, drawn in fontconfig's match; the
+            // bold italic style warns too where the system has no such face.
+            let absent = |w: &&Error| w.to_string().contains("Csgpix Absent");
+            assert_eq!(
+                a.warnings.iter().filter(absent).count(),
+                2,
+                "{:?}",
+                a.warnings
+            );
         }
     }
 
