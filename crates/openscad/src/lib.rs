@@ -337,11 +337,6 @@ pub fn parse_csg_with(
     file: &str,
     options: &ReadOptions,
 ) -> csgpix_scene::Result<CsgScene> {
-    // The fonts of the scene's text looked up beside the reading, unless the scene has fonts
-    // of its own or the job asked for one thread.
-    if options.fonts.is_empty() && rayon::current_num_threads() > 1 {
-        text::look_ahead(text::font_names(text));
-    }
     let mut scene = Reader::new(text, options)
         .run()
         .map_err(|fail| fail.problem.located(file, fail.pos.line, fail.pos.col))?;

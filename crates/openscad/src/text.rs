@@ -229,7 +229,12 @@ impl Fonts {
     /// instead: the first family named has faces here, and the style named matched or the
     /// weight asked was found.
     fn find_in(&self, layers: &[&Fonts], name: &str) -> csgpix_scene::Result<(FaceId, bool)> {
-        let lookup = lookup_name(name);
+        let trimmed = name.trim();
+        let lookup = if trimmed.is_empty() {
+            DEFAULT_FONT
+        } else {
+            trimmed
+        };
         let (families, props) = lookup.split_once(':').unwrap_or((lookup, ""));
         let props = FontProps::parse(name, props)?;
         // Whether a family named before had no face here (a later set may have one).
@@ -356,7 +361,11 @@ impl Fonts {
             Ok(id) => return Ok((id, None)),
             Err(e) => e,
         };
-        let lookup = lookup_name(name);
+        let lookup = if name.trim().is_empty() {
+            DEFAULT_FONT
+        } else {
+            name.trim()
+        };
         let Some(m) = fontconfig_match(lookup) else {
             return Err(missing);
         };
@@ -444,99 +453,19 @@ impl Match {
 ///
 /// Each pattern is asked once a process, as [`Fonts::standard`] scans the fonts once: a
 /// design naming a missing font in every `text()` started an `fc-match` (about 8 ms) for each.
-///
-/// A pattern being asked is asked once: a second caller (the reading, while
-/// [`look_ahead`] asks on its own thread) waits for the first one's answer.
 fn fontconfig_match(pattern: &str) -> Option<Match> {
     use std::collections::HashMap;
-    use std::sync::{Arc, Mutex, OnceLock};
-    type Answer = Arc<OnceLock<Option<Match>>>;
-    static ASKED: OnceLock<Mutex<HashMap<String, Answer>>> = OnceLock::new();
+    use std::sync::{Mutex, OnceLock};
+    static ASKED: OnceLock<Mutex<HashMap<String, Option<Match>>>> = OnceLock::new();
     let asked = ASKED.get_or_init(Mutex::default);
-    let answer = match asked.lock() {
-        Ok(mut a) => a.entry(pattern.to_string()).or_default().clone(),
-        Err(_) => Answer::default(),
-    };
-    answer.get_or_init(|| ask_fontconfig(pattern)).clone()
-}
-
-/// Most `fc-match` runs [`look_ahead`] starts at once, before knowing that the system's
-/// fonts lack the font.
-const ASKED_AHEAD: usize = 4;
-
-/// Most font names [`font_names`] gathers.
-const NAMES_AHEAD: usize = 16;
-
-/// The font names of a `.csg` text's `text()` nodes (`font = "…"` after a space or a `(`,
-/// as OpenSCAD writes them), each once, in order, the first [`NAMES_AHEAD`]. A hint only:
-/// a string holding such words would add a name looked up for nothing.
-pub(crate) fn font_names(csg: &str) -> Vec<String> {
-    const KEY: &str = "font = \"";
-    let mut names: Vec<String> = vec![];
-    // `contains` is the quicker search: a large polyhedron's text holds no `text(`.
-    if !csg.contains("text(") {
-        return names;
+    if let Some(m) = asked.lock().ok().and_then(|a| a.get(pattern).cloned()) {
+        return m;
     }
-    for (at, _) in csg.match_indices(KEY) {
-        if names.len() == NAMES_AHEAD {
-            break;
-        }
-        if !matches!(csg.as_bytes().get(at.wrapping_sub(1)), Some(b' ' | b'(')) {
-            continue;
-        }
-        let mut lexer = crate::lex::Lexer::new(csg);
-        lexer.at = at + KEY.len() - 1;
-        if let Ok(crate::lex::Tok::Str(name)) = lexer.string(lexer.pos) {
-            if !names.contains(&name) {
-                names.push(name);
-            }
-        }
+    let m = ask_fontconfig(pattern);
+    if let Ok(mut a) = asked.lock() {
+        a.insert(pattern.to_string(), m.clone());
     }
-    names
-}
-
-/// Starts, on a thread beside the reading, what looking up `names` in the standard fonts
-/// ([`Fonts::standard`]) will need: the bundled fonts loaded and, for a name they do not
-/// settle, the system's fonts scanned while fontconfig is asked for its match (the first
-/// [`ASKED_AHEAD`] such names; an `fc-match` takes about 8 ms, the scan about 3). The
-/// answers are those the reading's own lookups would get, which wait for them rather than
-/// ask again, so only when they are ready changes. Nothing is started for no name.
-pub(crate) fn look_ahead(names: Vec<String>) {
-    if names.is_empty() {
-        return;
-    }
-    // A thread the system cannot make leaves the lookups to the reading, as without one.
-    let _ = std::thread::Builder::new().spawn(move || {
-        let fonts = Fonts::standard();
-        let eager = fonts.layers(false);
-        let open: Vec<&String> = names
-            .iter()
-            .filter(|n| !matches!(fonts.find_in(&eager, n), Ok((_, true))))
-            .collect();
-        let asks: Vec<_> = open
-            .iter()
-            .take(ASKED_AHEAD)
-            .filter_map(|n| {
-                let pattern = lookup_name(n).to_string();
-                let ask = move || fontconfig_match(&pattern).is_some();
-                std::thread::Builder::new().spawn(ask).ok()
-            })
-            .collect();
-        if !open.is_empty() {
-            fonts.layers(true);
-        }
-        for ask in asks {
-            let _ = ask.join();
-        }
-    });
-}
-
-/// The name fontconfig is asked for: `name` trimmed, [`DEFAULT_FONT`] for none.
-fn lookup_name(name: &str) -> &str {
-    match name.trim() {
-        "" => DEFAULT_FONT,
-        trimmed => trimmed,
-    }
+    m
 }
 
 /// The patterns [`ask_fontconfig`] ran `fc-match` for, in the tests.
@@ -1094,85 +1023,6 @@ mod tests {
         assert!(direct.warnings.is_empty(), "{:?}", direct.warnings);
         assert_eq!(s.imports, direct.imports);
         assert_eq!(s.solids, direct.solids);
-    }
-
-    /// The names [`look_ahead`] is given: each `text()`'s font once, in order, its escapes
-    /// read as the lexer reads them, at most [`NAMES_AHEAD`].
-    #[test]
-    fn font_names_are_the_text_nodes_fonts_once_in_order() {
-        let csg = concat!(
-            "text(text = \"a\", font = \"B \\\"q\\\"\");\n",
-            "text(text = \"font = \", font = \"A:style=Bold\");\n",
-            "text(text = \"c\", font = \"B \\\"q\\\"\");\n",
-            "text(text = \"d\", font = \"unterminated"
-        );
-        assert_eq!(font_names(csg), ["B \"q\"", "A:style=Bold"]);
-        let many: String = (0..40)
-            .map(|i| format!("text(text = \"x\", font = \"F{i}\");\n"))
-            .collect();
-        let names = font_names(&many);
-        assert_eq!(names.len(), NAMES_AHEAD);
-        assert_eq!(names[NAMES_AHEAD - 1], format!("F{}", NAMES_AHEAD - 1));
-    }
-
-    /// Fonts looked up ahead (beside the reading, the test harness's pool having more than
-    /// one thread) give the scene and warnings of fonts looked up in turn (a pool of one
-    /// thread looks nothing up ahead): a missing font, a style the bundled family lacks (which
-    /// the system may have), and bundled fonts, each named twice. Each order is read first in
-    /// turn on its own names.
-    #[test]
-    fn fonts_looked_up_ahead_are_those_looked_up_in_turn() {
-        if fontconfig_match("Csgpix Absent Probe").is_none() {
-            eprintln!("fc-match is not on PATH: skipped");
-            return;
-        }
-        let scene = |tag: &str| {
-            [
-                format!("Csgpix Absent {tag}"),
-                "Liberation Sans:style=Bold Italic".to_string(),
-                "Liberation Sans".to_string(),
-                String::new(),
-            ]
-            .iter()
-            .chain(["Liberation Sans:style=Bold".to_string()].iter())
-            .map(|f| format!("linear_extrude(height = 1) text(text = \"ab\", font = \"{f}\");\n"))
-            .collect::<String>()
-            .repeat(2)
-        };
-        let one = rayon::ThreadPoolBuilder::new()
-            .num_threads(1)
-            .build()
-            .unwrap();
-        let in_turn = |s: &str| one.install(|| crate::parse_csg(s, "t.csg"));
-        let ahead = |s: &str| {
-            assert!(
-                rayon::current_num_threads() > 1,
-                "the harness has one thread"
-            );
-            crate::parse_csg(s, "t.csg")
-        };
-        for (tag, ahead_first) in [("Turn", false), ("Ahead", true)] {
-            let s = scene(tag);
-            let (a, t) = match ahead_first {
-                true => (ahead(&s), in_turn(&s)),
-                false => {
-                    let t = in_turn(&s);
-                    (ahead(&s), t)
-                }
-            };
-            let (a, t) = (a.unwrap(), t.unwrap());
-            assert_eq!(a.imports, t.imports, "{tag}");
-            assert_eq!(a.warnings, t.warnings, "{tag}");
-            // The absent font warns at both its `text()`s, drawn in fontconfig's match; the
-            // bold italic style warns too where the system has no such face.
-            let absent = |w: &&Error| w.to_string().contains("Csgpix Absent");
-            assert_eq!(
-                a.warnings.iter().filter(absent).count(),
-                2,
-                "{:?}",
-                a.warnings
-            );
-        }
     }
 
     /// A missing font named by three `text()`s: fontconfig is asked once (each ask starts an
