@@ -113,8 +113,7 @@ impl<'a> Lexer<'a> {
         let tok = match self.byte(0) {
             None => Tok::Eof,
             Some(b) if b.is_ascii_alphabetic() || b == b'_' || b == b'$' => self.ident(),
-            Some(b) if b.is_ascii_digit() => self.number(pos)?,
-            Some(b'.') if self.byte(1).is_some_and(|b| b.is_ascii_digit()) => self.number(pos)?,
+            Some(_) if number_starts(self.text.as_bytes(), self.at) => self.number(pos)?,
             Some(b'"') => self.string(pos)?,
             Some(b) if b"()[]{},;=-+%#!*".contains(&b) => {
                 self.bump();
@@ -188,13 +187,7 @@ impl<'a> Lexer<'a> {
             let (start, pos) = (self.at, self.pos);
             let bytes = self.text.as_bytes();
             let negative = bytes.get(start) == Some(&b'-');
-            let digits = start + negative as usize;
-            let number_starts = match bytes.get(digits) {
-                Some(b) if b.is_ascii_digit() => true,
-                Some(b'.') => bytes.get(digits + 1).is_some_and(u8::is_ascii_digit),
-                _ => false,
-            };
-            if !number_starts {
+            if !number_starts(bytes, start + negative as usize) {
                 break;
             }
             if negative {
@@ -284,6 +277,15 @@ fn bad_number(text: &str, out_of_range: bool) -> CsgError {
     CsgError::BadNumber {
         text: text.to_string(),
         out_of_range,
+    }
+}
+
+/// Whether a number token starts at `at`: a digit, or a `.` followed by a digit (`.5`).
+fn number_starts(bytes: &[u8], at: usize) -> bool {
+    match bytes.get(at) {
+        Some(b) if b.is_ascii_digit() => true,
+        Some(b'.') => bytes.get(at + 1).is_some_and(u8::is_ascii_digit),
+        _ => false,
     }
 }
 

@@ -258,10 +258,16 @@ impl<'a> Parser<'a> {
         }
     }
 
+    /// Whether the next item may be read straight from the text: no token has been looked at
+    /// ahead (the lexer stands where the parser does) and the tests have not turned it off.
+    fn reads_straight(&self) -> bool {
+        self.ahead.is_empty() && self.numbers_from_text
+    }
+
     /// The next token, taken, when it is one of the symbols `set` and no token has been
     /// looked at ahead: as [`Parser::next`] would take it, without making the token.
     fn take_sym(&mut self, set: &[u8]) -> Option<u8> {
-        if !self.ahead.is_empty() || !self.numbers_from_text {
+        if !self.reads_straight() {
             return None;
         }
         let (sym, _) = self.lexer.sym_among(set)?;
@@ -273,7 +279,7 @@ impl<'a> Parser<'a> {
     /// no token has been looked at ahead; the `[`'s position and the numbers. Nothing is
     /// taken otherwise.
     fn vector_of_numbers(&mut self) -> Option<(Pos, Vec<Value>)> {
-        if !self.ahead.is_empty() || !self.numbers_from_text {
+        if !self.reads_straight() {
             return None;
         }
         let before = (self.lexer.at, self.lexer.pos);
@@ -293,7 +299,7 @@ impl<'a> Parser<'a> {
     /// polyhedron's points and faces are most of a large `.csg`, and this skips a token and
     /// its look-ahead per number. Returns how many were read.
     fn numbers(&mut self, items: &mut Vec<Value>) -> usize {
-        if !self.ahead.is_empty() || !self.numbers_from_text {
+        if !self.reads_straight() {
             return 0;
         }
         let before = items.len();
