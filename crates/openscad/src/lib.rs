@@ -129,6 +129,7 @@ mod export;
 pub mod extrude;
 mod fallback;
 mod flat;
+mod fontscan;
 mod frame;
 mod geom;
 pub mod hull;

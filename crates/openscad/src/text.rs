@@ -102,10 +102,10 @@ impl Fonts {
     pub fn new(dirs: &[PathBuf], system: bool) -> Fonts {
         let mut db = fontdb::Database::new();
         for d in dirs {
-            db.load_fonts_dir(d);
+            crate::fontscan::load_dir(&mut db, d);
         }
         if system {
-            db.load_system_fonts();
+            crate::fontscan::load_system(&mut db);
         }
         Fonts {
             db,
@@ -203,7 +203,8 @@ impl Fonts {
 
     /// The system's fonts, scanned once per process, and only when a lookup needs them:
     /// parsing every installed face took about 7 ms of a `text()` design's run, whose font
-    /// (OpenSCAD's default, Liberation Sans) is most often bundled.
+    /// (OpenSCAD's default, Liberation Sans) is most often bundled. The scan reads of each
+    /// file only the tables fontdb parses ([`crate::fontscan`]).
     fn system() -> &'static Fonts {
         static FONTS: OnceLock<Fonts> = OnceLock::new();
         FONTS.get_or_init(|| Fonts::new(&[], true))
