@@ -7,28 +7,34 @@
 //! and unmaps it; the mapping, its page faults and the unmapping cost more than the
 //! parsing (3.6 ms for the scan in all, more than a fifth of a small text design's run).
 //!
-//! Here a single font is read in small pieces: its table directory, then those three
-//! tables. They are laid after the directory in one buffer, the directory's offsets for
-//! them moved to where they now are, and fontdb parses that buffer. fontdb reads nothing
-//! else of a face ([`fontdb`] 0.24, `parse_face_info`), so it finds the faces it finds in
-//! the whole file; each is then named by the file, as fontdb's scan names it. A collection
-//! (`ttcf`), rare among system fonts, is left to fontdb whole. The files are read in
-//! parallel, and their faces added in the order of fontdb's own walk of the folders.
+//! Here a single font is read in small pieces: its table directory, then the tables fontdb
+//! parses and those [`style_names`] needs (`name`, `OS/2`, `post`; `head`, `hhea` and `maxp`,
+//! which a face must have to parse). They are laid after the directory in one buffer, each
+//! record of theirs moved to its copy, and fontdb parses that buffer. fontdb reads nothing
+//! else of a face ([`fontdb`] 0.24, `parse_face_info`), so it finds the faces it finds in the
+//! whole file; each is then named by the file, as fontdb's scan names it. The face's style
+//! names are read from the same buffer, so that a lookup by style (`Inter:style=Bold`) need
+//! not open and parse each face of the family again. A collection (`ttcf`), rare among
+//! system fonts, is left to fontdb whole. The files are read in parallel, and their faces
+//! added in the order of fontdb's own walk of the folders.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::fs::File;
 use std::io::{Read, Seek, SeekFrom};
 use std::path::{Path, PathBuf};
 
-use fontdb::{Database, FaceInfo, Source};
+use fontdb::{Database, FaceInfo, Source, ID};
 use rayon::prelude::*;
 use ttf_parser::Tag;
 
-/// The tables of a face fontdb parses.
-const PARSED: [Tag; 3] = [
+/// The tables of a face that fontdb and [`style_names`] read.
+const READ: [Tag; 6] = [
     Tag::from_bytes(b"name"),
     Tag::from_bytes(b"OS/2"),
     Tag::from_bytes(b"post"),
+    Tag::from_bytes(b"head"),
+    Tag::from_bytes(b"hhea"),
+    Tag::from_bytes(b"maxp"),
 ];
 
 /// A table directory's header: the magic, the table count and three fields fontdb skips.
@@ -36,15 +42,35 @@ const HEADER: usize = 12;
 /// One table record: tag, checksum, offset, length.
 const RECORD: usize = 16;
 
+/// The style names of the faces a scan read, by their ID in its database (a face of a
+/// collection is not among them).
+pub(crate) type Styles = HashMap<ID, Vec<String>>;
+
+/// A face's style names (typographic subfamily and subfamily, every language), from its
+/// font data; none when the face does not parse.
+pub(crate) fn style_names(data: &[u8], index: u32) -> Vec<String> {
+    let Ok(face) = ttf_parser::Face::parse(data, index) else {
+        return vec![];
+    };
+    face.names()
+        .into_iter()
+        .filter(|n| {
+            n.name_id == ttf_parser::name_id::SUBFAMILY
+                || n.name_id == ttf_parser::name_id::TYPOGRAPHIC_SUBFAMILY
+        })
+        .filter_map(|n| n.to_string())
+        .collect()
+}
+
 /// The faces of the font files under `dir`, as `Database::load_fonts_dir` adds them.
-pub(crate) fn load_dir(db: &mut Database, dir: &Path) {
+pub(crate) fn load_dir(db: &mut Database, styles: &mut Styles, dir: &Path) {
     let mut files = vec![];
     walk(dir, &mut HashSet::new(), &mut files);
-    push_faces(db, &files);
+    push_faces(db, styles, &files);
 }
 
 /// The system's fonts, as `Database::load_system_fonts` adds them.
-pub(crate) fn load_system(db: &mut Database) {
+pub(crate) fn load_system(db: &mut Database, styles: &mut Styles) {
     #[cfg(all(
         unix,
         not(any(target_os = "macos", target_os = "ios", target_os = "android"))
@@ -63,21 +89,33 @@ pub(crate) fn load_system(db: &mut Database) {
         for d in &dirs {
             walk(d, &mut seen, &mut files);
         }
-        push_faces(db, &files);
+        push_faces(db, styles, &files);
     }
     #[cfg(not(all(
         unix,
         not(any(target_os = "macos", target_os = "ios", target_os = "android"))
     )))]
-    db.load_system_fonts();
+    {
+        let _ = styles;
+        db.load_system_fonts();
+    }
 }
 
 /// The faces of `files`, read in parallel, added in order.
-fn push_faces(db: &mut Database, files: &[PathBuf]) {
-    let faces: Vec<Vec<FaceInfo>> = files.par_iter().map(|f| faces_of(f)).collect();
+fn push_faces(db: &mut Database, styles: &mut Styles, files: &[PathBuf]) {
+    let faces: Vec<Vec<Face>> = files.par_iter().map(|f| faces_of(f)).collect();
     for face in faces.into_iter().flatten() {
-        db.push_face_info(face);
+        let id = db.push_face_info(face.info);
+        if let Some(names) = face.styles {
+            styles.insert(id, names);
+        }
     }
+}
+
+/// A face a file holds, and its style names when they were read with it.
+struct Face {
+    info: FaceInfo,
+    styles: Option<Vec<String>>,
 }
 
 /// The font files under `dir` in the order fontdb's `load_fonts_dir_impl` loads them:
@@ -131,30 +169,35 @@ fn followed(
 }
 
 /// The faces fontdb finds in the font file `path`, named by it.
-fn faces_of(path: &Path) -> Vec<FaceInfo> {
+fn faces_of(path: &Path) -> Vec<Face> {
     let mut db = Database::new();
-    match parsed_tables(path) {
+    let read = match read_tables(path) {
         Ok(Some(data)) => {
             db.load_font_data(data);
+            true
         }
         Ok(None) => {
             let _ = db.load_font_file(path);
+            false
         }
         Err(_) => return vec![],
-    }
+    };
     db.faces()
-        .map(|f| FaceInfo {
-            source: Source::File(path.to_path_buf()),
-            ..f.clone()
+        .map(|f| Face {
+            styles: read.then(|| db.with_face_data(f.id, style_names)).flatten(),
+            info: FaceInfo {
+                source: Source::File(path.to_path_buf()),
+                ..f.clone()
+            },
         })
         .collect()
 }
 
-/// Of a single font, its table directory followed by the [`PARSED`] tables, the
-/// directory's offsets moved to them; a table that does not lie within the file is left
-/// where it cannot be read, as it cannot in the file. None for a collection (or a file too
-/// large for a table's new offset), which is read whole.
-fn parsed_tables(path: &Path) -> std::io::Result<Option<Vec<u8>>> {
+/// Of a single font, its table directory followed by the [`READ`] tables, each record of
+/// theirs moved to its copy; a table that does not lie within the file is moved where it
+/// cannot be read, as it cannot in the file. None for a collection (or a file too large for
+/// a table's new offset), which is read whole.
+fn read_tables(path: &Path) -> std::io::Result<Option<Vec<u8>>> {
     let mut file = File::open(path)?;
     let len = file.metadata()?.len();
     let mut buf = read_at(&mut file, 0, HEADER as u64, len)?;
@@ -171,16 +214,15 @@ fn parsed_tables(path: &Path) -> std::io::Result<Option<Vec<u8>>> {
         tables * RECORD as u64,
         len,
     )?);
-    let found: Vec<(usize, u64, u64)> = match ttf_parser::RawFace::parse(&buf, 0) {
-        Ok(raw) => PARSED
-            .iter()
-            .filter_map(|&tag| raw.table_records.binary_search_by(|r| r.tag.cmp(&tag)))
-            .map(|(i, r)| (i as usize, u64::from(r.offset), u64::from(r.length)))
+    let read: Vec<(usize, u64, u64)> = match ttf_parser::RawFace::parse(&buf, 0) {
+        Ok(raw) => (raw.table_records.into_iter().enumerate())
+            .filter(|(_, r)| READ.contains(&r.tag))
+            .map(|(i, r)| (i, u64::from(r.offset), u64::from(r.length)))
             .collect(),
         // fontdb finds no face in the file either: it parses the same directory.
         Err(_) => return Ok(Some(buf)),
     };
-    for (i, offset, length) in found {
+    for (i, offset, length) in read {
         let at = HEADER + RECORD * i + 8;
         let moved = if offset + length <= len {
             let Ok(moved) = u32::try_from(buf.len()) else {
@@ -210,11 +252,13 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    /// What a scan found, face by face in order, every field but the ID.
-    fn found(db: &Database) -> Vec<String> {
+    /// What a scan found, face by face in order, every field but the ID, and the face's
+    /// style names: those read with the scan (`styles`), else read from the whole file.
+    fn found(db: &Database, styles: &Styles) -> Vec<String> {
         db.faces()
             .map(|f| {
                 let FaceInfo {
+                    id,
                     source,
                     index,
                     families,
@@ -223,30 +267,31 @@ mod tests {
                     weight,
                     stretch,
                     monospaced,
-                    ..
                 } = f;
                 let file = match source {
                     Source::File(p) => p.display().to_string(),
                     _ => "not a file".to_string(),
                 };
+                let names =
+                    (styles.get(id).cloned()).or_else(|| db.with_face_data(*id, style_names));
                 format!(
                     "{file} {index} {families:?} {post_script_name} {style:?} {weight:?} \
-                     {stretch:?} {monospaced}"
+                     {stretch:?} {monospaced} {names:?}"
                 )
             })
             .collect()
     }
 
     fn scanned(dir: &Path) -> Vec<String> {
-        let mut db = Database::new();
-        load_dir(&mut db, dir);
-        found(&db)
+        let (mut db, mut styles) = (Database::new(), Styles::new());
+        load_dir(&mut db, &mut styles, dir);
+        found(&db, &styles)
     }
 
     fn fontdb_scanned(dir: &Path) -> Vec<String> {
         let mut db = Database::new();
         db.load_fonts_dir(dir);
-        found(&db)
+        found(&db, &Styles::new())
     }
 
     fn bundled() -> PathBuf {
@@ -257,11 +302,17 @@ mod tests {
     fn the_bundled_and_the_system_fonts_are_those_fontdb_finds() {
         let faces = scanned(&bundled());
         assert_eq!(faces.len(), 3, "{faces:#?}");
+        let (mut db, mut styles) = (Database::new(), Styles::new());
+        load_dir(&mut db, &mut styles, &bundled());
+        let bold = db
+            .faces()
+            .find(|f| f.post_script_name == "LiberationSans-Bold");
+        assert_eq!(styles[&bold.unwrap().id], ["Bold"], "read with the scan");
         assert_eq!(faces, fontdb_scanned(&bundled()));
-        let (mut ours, mut theirs) = (Database::new(), Database::new());
-        load_system(&mut ours);
+        let (mut ours, mut styles, mut theirs) = (Database::new(), Styles::new(), Database::new());
+        load_system(&mut ours, &mut styles);
         theirs.load_system_fonts();
-        assert_eq!(found(&ours), found(&theirs));
+        assert_eq!(found(&ours, &styles), found(&theirs, &Styles::new()));
     }
 
     #[test]
@@ -294,11 +345,13 @@ mod tests {
         Cut(f64),
         /// A byte of the directory (header and records) set.
         Directory(usize, u8),
-        /// A parsed table's record pointed at this offset (a fraction of the file's length,
+        /// A read table's record pointed at this offset (a fraction of the file's length,
         /// past its end above 1), with this length.
         Moved(usize, f64, u32),
-        /// A byte of a parsed table set.
+        /// A byte of a read table set.
         InTable(usize, usize, u8),
+        /// A record's tag made that of a read table (which it then has twice).
+        Tagged(usize, usize),
         /// Made to read as a collection.
         Collection,
     }
@@ -313,15 +366,16 @@ mod tests {
                 prop_oneof![Just(0u32), 0..4096u32, Just(u32::MAX)]
             )
                 .prop_map(|(t, at, n)| Damage::Moved(t, at, n)),
-            (0..3usize, 0..64usize, any::<u8>()).prop_map(|(t, i, b)| Damage::InTable(t, i, b)),
+            (0..6usize, 0..64usize, any::<u8>()).prop_map(|(t, i, b)| Damage::InTable(t, i, b)),
+            (0..20usize, 0..6usize).prop_map(|(r, t)| Damage::Tagged(r, t)),
             Just(Damage::Collection),
         ]
     }
 
-    /// Where the record of parsed table `t` lies in `font`'s directory, if it has one.
+    /// Where the record of read table `t` lies in `font`'s directory, if it has one.
     fn record_of(font: &[u8], t: usize) -> Option<usize> {
         let raw = ttf_parser::RawFace::parse(font, 0).ok()?;
-        let (i, _) = (raw.table_records).binary_search_by(|r| r.tag.cmp(&PARSED[t]))?;
+        let (i, _) = (raw.table_records).binary_search_by(|r| r.tag.cmp(&READ[t]))?;
         Some(HEADER + RECORD * i as usize)
     }
 
@@ -347,6 +401,12 @@ mod tests {
                         if let Some(x) = font.get_mut(start as usize + i) {
                             *x = b;
                         }
+                    }
+                }
+                Damage::Tagged(r, t) => {
+                    let at = HEADER + RECORD * r;
+                    if let Some(x) = font.get_mut(at..at + 4) {
+                        x.copy_from_slice(&READ[t].to_bytes());
                     }
                 }
                 Damage::Collection => {

@@ -74,6 +74,9 @@ pub struct Fonts {
     then: Option<Then>,
     /// Whether these are a scene's own font files.
     scene: bool,
+    /// The style names of the faces read by [`crate::fontscan`] (the others' are read when
+    /// a lookup asks).
+    styles: crate::fontscan::Styles,
 }
 
 /// The set looked up after another: made when first asked for, and, when `lazy`, asked for
@@ -100,17 +103,18 @@ pub fn bundled_font_dir() -> Option<PathBuf> {
 impl Fonts {
     /// The fonts of the given directories, in order, then (if `system`) the system's.
     pub fn new(dirs: &[PathBuf], system: bool) -> Fonts {
-        let mut db = fontdb::Database::new();
+        let (mut db, mut styles) = (fontdb::Database::new(), crate::fontscan::Styles::new());
         for d in dirs {
-            crate::fontscan::load_dir(&mut db, d);
+            crate::fontscan::load_dir(&mut db, &mut styles, d);
         }
         if system {
-            crate::fontscan::load_system(&mut db);
+            crate::fontscan::load_system(&mut db, &mut styles);
         }
         Fonts {
             db,
             then: None,
             scene: false,
+            styles,
         }
     }
 
@@ -131,6 +135,7 @@ impl Fonts {
                 lazy: false,
             }),
             scene: true,
+            styles: Default::default(),
         }
     }
 
@@ -145,6 +150,7 @@ impl Fonts {
             db,
             then: None,
             scene: false,
+            styles: Default::default(),
         }
     }
 
@@ -167,6 +173,17 @@ impl Fonts {
             layers.push((next.set)());
         }
         layers
+    }
+
+    /// A face's style names ([`crate::fontscan::style_names`]): read with the scan, else
+    /// from its font data.
+    fn style_names(&self, f: &fontdb::FaceInfo) -> std::borrow::Cow<'_, [String]> {
+        match self.styles.get(&f.id) {
+            Some(names) => names.into(),
+            None => (self.db.with_face_data(f.id, crate::fontscan::style_names))
+                .unwrap_or_default()
+                .into(),
+        }
     }
 
     /// The font data of a face [`Fonts::find`] returned (its set was made to find it).
@@ -336,7 +353,8 @@ impl FontProps {
     ) -> Option<&'f (usize, &'d fontdb::FaceInfo)> {
         if let Some(style) = &self.style {
             return faces.iter().find(|(layer, f)| {
-                style_names(&layers[*layer].db, f)
+                layers[*layer]
+                    .style_names(f)
                     .iter()
                     .any(|s| s.eq_ignore_ascii_case(style))
             });
@@ -502,24 +520,6 @@ fn ask_fontconfig(pattern: &str) -> Option<Match> {
         family,
         style,
     })
-}
-
-/// A face's style names (typographic subfamily and subfamily, every language).
-fn style_names(db: &fontdb::Database, f: &fontdb::FaceInfo) -> Vec<String> {
-    db.with_face_data(f.id, |data, index| {
-        let Ok(face) = ttf_parser::Face::parse(data, index) else {
-            return vec![];
-        };
-        face.names()
-            .into_iter()
-            .filter(|n| {
-                n.name_id == ttf_parser::name_id::SUBFAMILY
-                    || n.name_id == ttf_parser::name_id::TYPOGRAPHIC_SUBFAMILY
-            })
-            .filter_map(|n| n.to_string())
-            .collect()
-    })
-    .unwrap_or_default()
 }
 
 /// The arguments of one `text()` node.
