@@ -943,21 +943,25 @@ pub fn region_points(r: &Region, out: &mut Vec<DVec2>) -> Result<()> {
     Ok(())
 }
 
+/// A heap block of `bytes`, with an allocator's 16 bytes.
+fn block(bytes: usize) -> u64 {
+    bytes as u64 + 16
+}
+
+/// The heap bytes a shape's outlines hold (each outline's points and vector, and its list
+/// of outlines), as [`region_bytes`] counts them.
+pub(crate) fn poly_bytes(p: &Poly2) -> u64 {
+    let outlines: u64 = p.paths.iter().map(|c| block(c.capacity() * 16)).sum();
+    block(p.paths.capacity() * 24) + outlines
+}
+
 /// The heap bytes a 2D tree's outlines hold (each outline's points and vector, each shape's
 /// list of outlines, with an allocator's 16 bytes a block), walked without recursion.
 pub(crate) fn region_bytes(r: &Region) -> u64 {
-    let block = |bytes: usize| bytes as u64 + 16;
     let (mut total, mut stack) = (0u64, vec![r]);
     while let Some(r) = stack.pop() {
         match r {
-            Region::Poly(p) => {
-                total += block(p.paths.capacity() * 24);
-                total += p
-                    .paths
-                    .iter()
-                    .map(|c| block(c.capacity() * 16))
-                    .sum::<u64>();
-            }
+            Region::Poly(p) => total += poly_bytes(p),
             Region::Union(c) | Region::Intersection(c) | Region::Difference(c) => {
                 total += block(c.capacity() * std::mem::size_of::<Region>());
                 stack.extend(c.iter());

@@ -207,6 +207,7 @@ pub(crate) fn flat_shape<'f>(
     fonts: impl FnOnce() -> &'f crate::text::Fonts,
     budget: usize,
     notes: &mut Vec<String>,
+    drawn: &mut crate::text::Drawn,
 ) -> Result<Option<Poly2>, Fail> {
     match p.node {
         NodeKind::Square => {
@@ -235,7 +236,7 @@ pub(crate) fn flat_shape<'f>(
             check_budget(n, budget, p.pos)?;
             Ok(Some(unit_circle(n, |unit| Poly2::circle_of(r, unit))))
         }
-        NodeKind::Text => crate::text::text_shape(p, fonts(), budget, notes).map(Some),
+        NodeKind::Text => crate::text::text_shape(p, fonts(), budget, notes, drawn).map(Some),
         _ => polygon(p, budget).map(Some),
     }
 }

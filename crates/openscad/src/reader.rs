@@ -85,6 +85,8 @@ pub(crate) struct Reader<'a> {
     kept_bytes: u64,
     /// The meshes of the booleans evaluated so far ([`MeshMemo`]).
     pub(crate) meshes: MeshMemo,
+    /// The `text()`s drawn so far ([`crate::text::Drawn`]).
+    texts: crate::text::Drawn,
 }
 
 /// A `minkowski()`'s sum in its own coordinates, as the scene's solids and meshes (without
@@ -157,6 +159,7 @@ impl<'a> Reader<'a> {
             flat_bytes: 0,
             scene_fonts: std::cell::OnceCell::new(),
             meshes: MeshMemo::default(),
+            texts: Default::default(),
             sums: std::collections::HashMap::new(),
             outlines: std::collections::HashMap::new(),
             kept_bytes: 0,
@@ -227,6 +230,7 @@ impl<'a> Reader<'a> {
                         .drawing_bytes
                         .saturating_add(self.flat_bytes)
                         .saturating_add(self.kept_bytes)
+                        .saturating_add(self.texts.bytes)
                         .saturating_add(self.meshes.bytes()),
                 })
             }
@@ -838,7 +842,17 @@ impl<'a> Reader<'a> {
     /// vertex `budget`, placed in the plane.
     fn flat_leaf(&mut self, head: &Head, ctx: &Ctx, budget: usize) -> Result<Option<Item>, Fail> {
         let mut notes = vec![];
-        let shape = flat_shape(&head.params, || self.fonts(), budget, &mut notes)?;
+        // Taken out while the shape is drawn: the font lookup borrows the reader.
+        let mut drawn = std::mem::take(&mut self.texts);
+        let shape = flat_shape(
+            &head.params,
+            || self.fonts(),
+            budget,
+            &mut notes,
+            &mut drawn,
+        );
+        self.texts = drawn;
+        let shape = shape?;
         if !ctx.skip {
             self.warnings
                 .extend(notes.into_iter().map(|n| (head.pos, n)));

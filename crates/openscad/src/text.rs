@@ -688,6 +688,12 @@ pub fn render_in(
     id: FaceId,
     max_points: usize,
 ) -> csgpix_scene::Result<Poly2> {
+    check_alignment(spec)?;
+    render_counted(spec, fonts, id, max_points).map(|(poly, _)| poly)
+}
+
+/// An error for a `halign` or `valign` OpenSCAD does not know.
+fn check_alignment(spec: &TextSpec) -> csgpix_scene::Result<()> {
     if !matches!(spec.halign.as_str(), "left" | "right" | "center") {
         return Err(Error::UnknownAlignment {
             axis: "halign",
@@ -705,6 +711,17 @@ pub fn render_in(
             allowed: "top, center, baseline or bottom",
         });
     }
+    Ok(())
+}
+
+/// [`render_in`] once its alignments are known, and the outline points the glyphs made
+/// (what `max_points` bounds).
+fn render_counted(
+    spec: &TextSpec,
+    fonts: &Fonts,
+    id: FaceId,
+    max_points: usize,
+) -> csgpix_scene::Result<(Poly2, usize)> {
     fonts
         .with_face_data(id, |data, index| render_face(spec, data, index, max_points))
         .unwrap_or_else(|| {
@@ -722,7 +739,7 @@ fn render_face(
     data: &[u8],
     index: u32,
     max_points: usize,
-) -> csgpix_scene::Result<Poly2> {
+) -> csgpix_scene::Result<(Poly2, usize)> {
     let face = rustybuzz::Face::from_slice(data, index).ok_or_else(|| Error::FontUnreadable {
         font: spec.font.clone(),
         parsed: true,
@@ -749,7 +766,13 @@ fn render_face(
         _ => 0.0,
     };
     let offset = DVec2::new(x_offset, y_offset);
-    Ok(nonzero_union(place_glyphs(spec, &glyphs, offset, pos_to26)))
+    let points = (glyphs.iter())
+        .map(|(o, _)| o.contours.iter().map(Vec::len).sum::<usize>())
+        .sum();
+    Ok((
+        nonzero_union(place_glyphs(spec, &glyphs, offset, pos_to26)),
+        points,
+    ))
 }
 
 /// A glyph position in whole 26.6 units (hb-ft's), from font units scaled by `pos_to26`.
@@ -933,6 +956,7 @@ pub(crate) fn text_shape(
     fonts: &Fonts,
     budget: usize,
     notes: &mut Vec<String>,
+    drawn: &mut Drawn,
 ) -> Result<Poly2, Fail> {
     let size = match p.number("size")? {
         None => 10.0,
@@ -967,12 +991,92 @@ pub(crate) fn text_shape(
     let process = (crate::PROCESS_BYTES / crate::BYTES_PER_SCENE_VERTEX) as usize;
     let budget = budget.saturating_sub(process);
     let points = budget / TEXT_POINT_VERTICES;
-    let poly = render_noting(&spec, fonts, points, notes).map_err(|problem| Fail {
+    let poly = (drawn.render(&spec, fonts, points, notes)).map_err(|problem| Fail {
         pos: p.pos,
         problem,
     })?;
     check_budget(charged_vertices(poly.points().count()), budget, p.pos)?;
     Ok(poly)
+}
+
+/// The `text()`s a scene has drawn, by their arguments: a text met again (a module called
+/// again, a shadow drawn beside its letters) is drawn once in a reading. The font lookup is
+/// the reader's for the whole scene, so the same arguments give the same outline.
+#[derive(Default)]
+pub(crate) struct Drawn {
+    texts: std::collections::HashMap<TextKey, Drawing>,
+    /// The bytes the outlines kept hold ([`csgpix_scene::solid::CsgScene::reading_bytes`]).
+    pub(crate) bytes: u64,
+}
+
+/// A text's arguments, its numbers by their bits.
+#[derive(PartialEq, Eq, Hash)]
+struct TextKey {
+    words: [String; 7],
+    numbers: [u64; 2],
+    segments: usize,
+}
+
+impl TextKey {
+    fn of(s: &TextSpec) -> TextKey {
+        let words = [
+            &s.text,
+            &s.font,
+            &s.direction,
+            &s.language,
+            &s.script,
+            &s.halign,
+            &s.valign,
+        ];
+        TextKey {
+            words: words.map(String::clone),
+            numbers: [s.size.to_bits(), s.spacing.to_bits()],
+            segments: s.segments,
+        }
+    }
+}
+
+/// A text drawn: its outline, the notes the font lookup gave, and the outline points its
+/// glyphs made (which a smaller `max_points` refuses).
+struct Drawing {
+    poly: Poly2,
+    notes: Vec<String>,
+    points: usize,
+}
+
+impl Drawn {
+    /// [`render_noting`] of `spec`, or, for a text drawn before, what it gave then: the same
+    /// outline and notes, or the error drawing it again gives where its points pass
+    /// `max_points`.
+    fn render(
+        &mut self,
+        spec: &TextSpec,
+        fonts: &Fonts,
+        max_points: usize,
+        notes: &mut Vec<String>,
+    ) -> csgpix_scene::Result<Poly2> {
+        let key = TextKey::of(spec);
+        if let Some(d) = self.texts.get(&key) {
+            if d.points > max_points {
+                return Err(Error::TextTooDetailed { limit: max_points });
+            }
+            notes.extend(d.notes.iter().cloned());
+            return Ok(d.poly.clone());
+        }
+        let (id, note) = fonts.find_or_substitute(&spec.font)?;
+        notes.extend(note.clone());
+        check_alignment(spec)?;
+        let (poly, points) = render_counted(spec, fonts, id, max_points)?;
+        self.bytes += crate::extrude::poly_bytes(&poly);
+        let notes = note.into_iter().collect();
+        let drawing = Drawing {
+            poly: poly.clone(),
+            notes,
+            points,
+        };
+        self.texts.insert(key, drawing);
+        Ok(poly)
+    }
 }
 
 /// The scene vertices a text outline of `points` points is charged while drawn
@@ -1024,6 +1128,38 @@ mod tests {
         assert!(direct.warnings.is_empty(), "{:?}", direct.warnings);
         assert_eq!(s.imports, direct.imports);
         assert_eq!(s.solids, direct.solids);
+    }
+
+    /// A text drawn again ([`Drawn`]) is what drawing it afresh gives: the same outline,
+    /// and under a point limit its points pass, the same error; other arguments are drawn
+    /// anew.
+    #[test]
+    fn a_text_drawn_again_is_the_text_drawn_afresh() {
+        let f = fonts();
+        let spec = TextSpec::new("Björn", 10.0);
+        let mut drawn = Drawn::default();
+        let fresh = render(&spec, &f, usize::MAX).unwrap();
+        assert_eq!(
+            drawn.render(&spec, &f, usize::MAX, &mut vec![]),
+            Ok(fresh.clone())
+        );
+        assert_eq!(
+            drawn.render(&spec, &f, usize::MAX, &mut vec![]),
+            Ok(fresh.clone())
+        );
+        assert_eq!(drawn.texts.len(), 1);
+        let points = drawn.texts.values().next().unwrap().points;
+        assert!(points > fresh.points().count() / 2, "{points}");
+        for limit in [points - 1, points] {
+            let again = drawn.render(&spec, &f, limit, &mut vec![]);
+            assert_eq!(again, render(&spec, &f, limit), "{limit}");
+        }
+        assert!(drawn.render(&spec, &f, points - 1, &mut vec![]).is_err());
+        let larger = TextSpec::new("Björn", 11.0);
+        let other = drawn.render(&larger, &f, usize::MAX, &mut vec![]).unwrap();
+        assert_eq!(other, render(&larger, &f, usize::MAX).unwrap());
+        assert_ne!(other, fresh);
+        assert_eq!(drawn.texts.len(), 2);
     }
 
     /// A missing font named by three `text()`s: fontconfig is asked once (each ask starts an
