@@ -276,6 +276,8 @@ def bench_scene(path, resolutions, csgpix, meshes_bin, work):
             if c != 0:
                 g["csgpix_error"] = e.strip().splitlines()[-1] if e.strip() else f"exit {c}"
                 return None
+            if SUBSTITUTED in e:
+                g["font_substituted"] = True
             return w, r
 
         b = best_of(run_csgpix)
@@ -348,10 +350,17 @@ def floor_s(n, csgpix, work):
     return b[0] if b else None
 
 
+# What csgpix's warning says of a `text()` whose font is not installed (text.rs,
+# `Fonts::find_or_substitute`): the run drew fontconfig's match after asking `fc-match`, which
+# costs milliseconds and draws a face other than the one OpenSCAD's reference mesh has.
+SUBSTITUTED = "fontconfig's match"
+
+
 def target_summary(rows, n, floor):
     """On the designs whose mesh takes at least SLOW_MESH: the median of mesh / csgpix at n³,
-    how many are below 1× and 2×, the lowest three, and the same ratios were every csgpix run
-    at the floor (`floor` seconds): the most any whole process writing the volume can show."""
+    how many are below 1× and 2×, the lowest three, those drawn in a substitute font (their
+    times depend on the fonts installed), and the same ratios were every csgpix run at the
+    floor (`floor` seconds): the most any whole process writing the volume can show."""
     gs = [(r["design"], r["mesh_s"], r["grids"][str(n)]) for r in rows
           if "vectors/designs/" in r["file"] and r.get("mesh_s", 0) >= SLOW_MESH
           and "ratio_mesh" in r["grids"].get(str(n), {})]
@@ -364,6 +373,7 @@ def target_summary(rows, n, floor):
         "below_1x": sum(x < 1 for x, _ in ratios),
         "below_2x": sum(x < 2 for x, _ in ratios),
         "lowest": [[d, x] for x, d in ratios[:3]],
+        "font_substituted": [d for d, _, g in gs if g.get("font_substituted")],
     }
     if floor:
         bound = [m / floor for _, m, _ in gs]
@@ -497,6 +507,10 @@ def print_targets(targets):
         print(f"\n{n}³, the {t['designs']} designs whose Manifold mesh takes ≥ {SLOW_MESH * 1000:.0f} ms: "
               f"median mesh / csgpix {t['median_mesh_over_csgpix']:.2f}, {t['below_1x']} below 1×, "
               f"{t['below_2x']} below 2× (lowest: {low})")
+        if t.get("font_substituted"):
+            print(f"  drawn in a substitute font (the font named is not installed; .ci/run installs "
+                  f"the designs' fonts), their times with fontconfig's lookup: "
+                  f"{', '.join(t['font_substituted'])}")
         if "floor_s" in t:
             print(f"  floor (one cube, the whole process) {t['floor_s']:.3f} s: at the floor the median "
                   f"would be {t['median_mesh_over_floor']:.2f}, {t['below_2x_at_floor']} below 2×")

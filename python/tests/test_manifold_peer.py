@@ -34,6 +34,14 @@ def test_the_target_counts_only_designs_whose_mesh_takes_50_ms():
     assert t["below_2x_at_floor"] == 0
 
 
+def test_designs_drawn_in_a_substitute_font_are_named():
+    rows = [row("tag", 0.10, 0.05), row("plain", 0.10, 0.05)]
+    rows[0]["grids"]["256"]["font_substituted"] = True
+    assert target_summary(rows, 256, None)["font_substituted"] == ["tag"]
+    del rows[0]["grids"]["256"]["font_substituted"]
+    assert target_summary(rows, 256, None)["font_substituted"] == []
+
+
 def test_no_design_over_50_ms_gives_no_summary():
     assert target_summary([row("quick", 0.01, 0.10)], 256, 0.02) is None
 
