@@ -688,7 +688,6 @@ pub fn render_in(
     id: FaceId,
     max_points: usize,
 ) -> csgpix_scene::Result<Poly2> {
-    check_alignment(spec)?;
     render_counted(spec, fonts, id, max_points).map(|(poly, _)| poly)
 }
 
@@ -714,14 +713,14 @@ fn check_alignment(spec: &TextSpec) -> csgpix_scene::Result<()> {
     Ok(())
 }
 
-/// [`render_in`] once its alignments are known, and the outline points the glyphs made
-/// (what `max_points` bounds).
+/// [`render_in`], and the outline points the glyphs made (what `max_points` bounds).
 fn render_counted(
     spec: &TextSpec,
     fonts: &Fonts,
     id: FaceId,
     max_points: usize,
 ) -> csgpix_scene::Result<(Poly2, usize)> {
+    check_alignment(spec)?;
     fonts
         .with_face_data(id, |data, index| render_face(spec, data, index, max_points))
         .unwrap_or_else(|| {
@@ -1065,7 +1064,6 @@ impl Drawn {
         }
         let (id, note) = fonts.find_or_substitute(&spec.font)?;
         notes.extend(note.clone());
-        check_alignment(spec)?;
         let (poly, points) = render_counted(spec, fonts, id, max_points)?;
         self.bytes += crate::extrude::poly_bytes(&poly);
         let notes = note.into_iter().collect();
