@@ -8,7 +8,8 @@ turns the CSG scene into one mesh, which is then voxelized on the same grid.
     python python/bench/manifold_peer.py --generated 10000   # generated scenes of 10,000 primitives
 
 For every scene (default: every vectors/designs/meshes/*.csg and *.csg.gz, the latter gunzipped
-to a temporary file, plus vectors/scenes/{twelve,csg-logo,figure-5.2}.csg) and every grid:
+to a temporary file, beside the design's own font files where it ships them (`scene_file`),
+plus vectors/scenes/{twelve,csg-logo,figure-5.2}.csg) and every grid:
 
 - csgpix: the wall time of the whole process `csgpix voxelize SCENE --res N -o out.nrrd --json`
   and its peak RSS (one more run under `/usr/bin/time -f %M`).
@@ -229,6 +230,30 @@ def design_name(p):
     return n
 
 
+def scene_file(path, work):
+    """The file the bench reads for scene `path`: the file itself, or a copy in a folder of its
+    own under `work`, gunzipped, with its design's own font files beside it. A `.csg` has lost
+    the `use <x.ttf>` lines of its `.scad`, and csgpix reads the font files in the `.csg`'s
+    folder instead (docs/volume-scenes.md, "Fonts"): a design that ships its font
+    (vectors/designs/NAME/*.ttf) is then drawn in it, not in fontconfig's substitute."""
+    name = design_name(path)
+    fonts = []
+    if path.parent == ROOT / "vectors/designs/meshes":
+        own = ROOT / "vectors/designs" / name
+        fonts = sorted(f for f in own.glob("*") if f.suffix.lower() in (".ttf", ".otf"))
+    if not fonts and not path.name.endswith(".gz"):
+        return path
+    folder = work / name
+    folder.mkdir(exist_ok=True)
+    scene = folder / f"{name}.csg"
+    opener = gzip.open if path.name.endswith(".gz") else open
+    with opener(path, "rb") as f, open(scene, "wb") as g:
+        shutil.copyfileobj(f, g)
+    for f in fonts:
+        shutil.copy(f, folder / f.name)
+    return scene
+
+
 def fmt(x, nd=3):
     return "—" if x is None else f"{x:.{nd}f}"
 
@@ -236,11 +261,7 @@ def fmt(x, nd=3):
 def bench_scene(path, resolutions, csgpix, meshes_bin, work):
     name = design_name(path)
     row = {"design": name, "file": str(path.relative_to(ROOT) if path.is_relative_to(ROOT) else path)}
-    scene = path
-    if path.name.endswith(".gz"):
-        scene = work / f"{name}.csg"
-        with gzip.open(path, "rb") as f, open(scene, "wb") as g:
-            shutil.copyfileobj(f, g)
+    scene = scene_file(path, work)
     # (a) the scene read: the example and the JSON parse (in the child).
     js = work / f"{name}.json"
     t_read, rss_read, code, err = run_timed([str(meshes_bin), str(scene)], stdout_path=js)

@@ -1,11 +1,12 @@
 """The Manifold bench's summary of issue 41's target (python/bench/manifold_peer.py)."""
 
+import subprocess
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "python" / "bench"))
 
-from manifold_peer import floor_s, target_summary  # noqa: E402
+from manifold_peer import ROOT, floor_s, scene_file, target_summary  # noqa: E402
 
 from conftest import cli_binary  # noqa: E402
 
@@ -50,3 +51,18 @@ def test_the_floor_is_a_whole_process_writing_the_volume(tmp_path):
     f = floor_s(32, cli_binary(), tmp_path)
     assert f is not None and 0 < f < 30
     assert not (tmp_path / "floor.nrrd").exists()
+
+
+def test_a_design_that_ships_its_font_is_read_beside_it(tmp_path):
+    meshes = ROOT / "vectors/designs/meshes"
+    plain = meshes / "allen-key-handle.csg"
+    assert scene_file(plain, tmp_path) == plain
+    heart = scene_file(meshes / "birthday-heart.csg.gz", tmp_path)
+    assert heart == tmp_path / "birthday-heart" / "birthday-heart.csg"
+    assert (heart.parent / "Magiera Script.ttf").is_file()
+    assert "Magiera" in heart.read_text()
+    # csgpix draws it in that font: no fontconfig substitute, no warning about the font.
+    run = subprocess.run([str(cli_binary()), "voxelize", str(heart), "--res", "16",
+                          "-o", str(tmp_path / "heart.nrrd")], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert "font" not in run.stderr, run.stderr
