@@ -58,6 +58,14 @@ use crate::{consts_::*, lex::*};
 /// OpenSCAD's default font (`FontCache::DEFAULT_FONT`).
 pub const DEFAULT_FONT: &str = "Liberation Sans:style=Regular";
 
+/// The name a font is looked up by: `name` trimmed, or [`DEFAULT_FONT`] where it is blank.
+fn lookup_name(name: &str) -> &str {
+    match name.trim() {
+        "" => DEFAULT_FONT,
+        trimmed => trimmed,
+    }
+}
+
 /// `FreetypeRenderer::scale`: outline coordinates (26.6) are divided by it.
 const SCALE: f64 = 1e5;
 /// The em in 26.6 units: OpenSCAD's character size [`SCALE`] points at 100 dpi, as
@@ -247,12 +255,7 @@ impl Fonts {
     /// instead: the first family named has faces here, and the style named matched or the
     /// weight asked was found.
     fn find_in(&self, layers: &[&Fonts], name: &str) -> csgpix_scene::Result<(FaceId, bool)> {
-        let trimmed = name.trim();
-        let lookup = if trimmed.is_empty() {
-            DEFAULT_FONT
-        } else {
-            trimmed
-        };
+        let lookup = lookup_name(name);
         let (families, props) = lookup.split_once(':').unwrap_or((lookup, ""));
         let props = FontProps::parse(name, props)?;
         // Whether a family named before had no face here (a later set may have one).
@@ -380,11 +383,7 @@ impl Fonts {
             Ok(id) => return Ok((id, None)),
             Err(e) => e,
         };
-        let lookup = if name.trim().is_empty() {
-            DEFAULT_FONT
-        } else {
-            name.trim()
-        };
+        let lookup = lookup_name(name);
         let Some(m) = fontconfig_match(lookup) else {
             return Err(missing);
         };
