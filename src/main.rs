@@ -14,6 +14,9 @@ use csgpix_output::OneLine;
 static ALLOC: csgpix_output::ExitOnOom = csgpix_output::ExitOnOom;
 
 fn main() -> ExitCode {
+    // A child started to hold an old output until this process ends exits here
+    // (crates/output/src/release.rs).
+    csgpix_output::hold_if_asked();
     csgpix_output::one_arena_under_address_limit();
     let args = match cli::Cli::try_parse() {
         Ok(args) => args,
@@ -49,6 +52,10 @@ fn main() -> ExitCode {
     if let Err(e) = csgpix_output::install_signal_cleanup() {
         eprintln!("csgpix: cannot watch for signals: {e}");
         return ExitCode::from(2);
+    }
+    // The old files of replaced outputs are freed after this process ends, not during it.
+    if let Ok(exe) = std::env::current_exe() {
+        csgpix_output::release_after_exit(exe);
     }
     let code = match cli::run(args) {
         Ok(code) => code,

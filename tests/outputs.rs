@@ -796,6 +796,141 @@ fn a_volume_file_leaves_its_empty_slices_as_holes() {
     }
 }
 
+/// Every process's descriptor of the file with inode `ino` on device `dev`, as
+/// `/proc/PID/fd/N` (the processes this user may read).
+#[cfg(target_os = "linux")]
+fn holders(dev: u64, ino: u64) -> Vec<String> {
+    use std::os::unix::fs::MetadataExt;
+    let mut found = Vec::new();
+    for pid in std::fs::read_dir("/proc").unwrap().flatten() {
+        let Ok(fds) = std::fs::read_dir(pid.path().join("fd")) else {
+            continue;
+        };
+        for fd in fds.flatten() {
+            if std::fs::metadata(fd.path()).is_ok_and(|m| (m.dev(), m.ino()) == (dev, ino)) {
+                found.push(fd.path().display().to_string());
+            }
+        }
+    }
+    found
+}
+
+/// A replaced output's old file leaves the directory before the run returns, and its blocks
+/// are freed after (crates/output/src/release.rs): no process holds it for long once the run
+/// has ended. The new file is whole, and nothing else is left beside it.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_replaced_outputs_old_file_is_gone_at_once_and_held_by_nothing_after_the_run() {
+    use std::os::unix::fs::MetadataExt;
+    use std::time::{Duration, Instant};
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("v.nrrd");
+    let run = || {
+        let r = csgpix(&["voxelize", TWELVE, "--res", "64", "-o", s(&out)]);
+        assert!(r.status.success(), "{r:?}");
+    };
+    run();
+    let first = std::fs::read(&out).unwrap();
+    let old = std::fs::metadata(&out).unwrap();
+    run();
+    let new = std::fs::metadata(&out).unwrap();
+    assert_ne!(
+        new.ino(),
+        old.ino(),
+        "the output was replaced, not rewritten"
+    );
+    assert_eq!(std::fs::read(&out).unwrap(), first);
+    assert_eq!(names(dir.path()), ["v.nrrd"]);
+    let start = Instant::now();
+    loop {
+        let held = holders(old.dev(), old.ino());
+        if held.is_empty() {
+            break;
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(10),
+            "the old file is still held 10 s after the run: {held:?}"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// The binary as the holder of a released file ([`csgpix_output::HOLD`] set): it keeps the
+/// file open on its standard output while its standard input is open, says nothing, and ends
+/// with status 0 when its input ends. A pipe it inherited as descriptor 100 (as a run inherits
+/// its caller's `-o /dev/fd/N`) it closes at once: the reader sees its end while the holder
+/// still waits.
+#[cfg(target_os = "linux")]
+#[test]
+fn the_binary_holds_a_released_file_until_its_input_ends() {
+    use std::os::unix::fs::MetadataExt;
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("old.nrrd");
+    std::fs::write(&path, [1u8; 4096]).unwrap();
+    let file = std::fs::File::open(&path).unwrap();
+    let ino = file.metadata().unwrap().ino();
+    std::fs::remove_file(&path).unwrap();
+    let mut fds = [0; 2];
+    // SAFETY: pipe2(2) into an array this frame owns; close-on-exec, so that no other test's
+    // child inherits it.
+    assert_eq!(unsafe { libc::pipe2(fds.as_mut_ptr(), libc::O_CLOEXEC) }, 0);
+    let [read_end, write_end] = fds;
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_csgpix"));
+    cmd.env(csgpix::output::HOLD, "1")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::from(file))
+        .stderr(Stdio::piped());
+    // SAFETY: dup2(2) and fcntl(2) between fork and exec, async-signal-safe: the write end
+    // as descriptor 100, without close-on-exec (dup2 onto itself would keep the flag).
+    unsafe {
+        use std::os::unix::process::CommandExt;
+        cmd.pre_exec(move || {
+            let r = match write_end {
+                100 => libc::fcntl(100, libc::F_SETFD, 0),
+                _ => libc::dup2(write_end, 100),
+            };
+            match r {
+                -1 => Err(std::io::Error::last_os_error()),
+                _ => Ok(()),
+            }
+        });
+    }
+    let mut child = cmd.spawn().unwrap();
+    // SAFETY: this process's copy of the write end, which it no longer uses; the read end is
+    // owned from here by the File.
+    let mut reader = unsafe {
+        use std::os::fd::FromRawFd;
+        libc::close(write_end);
+        std::fs::File::from_raw_fd(read_end)
+    };
+    // The reader sees the pipe's end within 5 s: no process holds the write end any more.
+    let mut ready = libc::pollfd {
+        fd: read_end,
+        events: libc::POLLIN,
+        revents: 0,
+    };
+    // SAFETY: poll(2) on one descriptor this frame owns.
+    assert_eq!(
+        unsafe { libc::poll(&mut ready, 1, 5000) },
+        1,
+        "the pipe stays open"
+    );
+    let mut rest = Vec::new();
+    std::io::Read::read_to_end(&mut reader, &mut rest).unwrap();
+    assert!(rest.is_empty());
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    assert!(
+        child.try_wait().unwrap().is_none(),
+        "it waits for its input"
+    );
+    let held = std::fs::metadata(format!("/proc/{}/fd/1", child.id())).unwrap();
+    assert_eq!((held.ino(), held.nlink()), (ino, 0));
+    drop(child.stdin.take());
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success(), "{out:?}");
+    assert!(out.stderr.is_empty(), "{out:?}");
+}
+
 /// A signal that ends a `--fallback openscad` run ends openscad with it (its process group:
 /// here a stand-in script and its `sleep`) and removes the statement written beside the scene
 /// and openscad's scratch directory in TMPDIR; they were left, and openscad kept running.

@@ -9,7 +9,8 @@
 //! twelve.csg, docs/voxelize-bench.md). So a new staged file is never truncated
 //! (`Outputs::emptied`), and an existing target is swapped with the staged file in one
 //! atomic step (`renameat2(RENAME_EXCHANGE)`, which ext4 does not flush), the old file then
-//! removed from the staged name.
+//! removed from the staged name (its blocks freed after the run where the binary asks:
+//! [`crate::release`]).
 //!
 //! A run that must survive a power cut asks for it ([`sync_outputs`], `csgpix --sync`): every
 //! staged file is then synced before it replaces anything and its directory after.
@@ -43,10 +44,9 @@ pub(crate) fn put_file(staged: &Path, target: &Path) -> std::io::Result<()> {
     }
     match exchange(staged, target) {
         // The old file now has the staged name; were it left there (the system refusing to
-        // remove it), the next run naming the output would clear it (`leftover`).
-        Ok(()) => {
-            let _ = std::fs::remove_file(staged);
-        }
+        // remove it), the next run naming the output would clear it (`leftover`). Its blocks
+        // may be freed after the run (`release`).
+        Ok(()) => crate::release::remove_file(staged),
         // No target to swap with (or no exchange here): a rename, which flushes nothing
         // when it replaces nothing.
         Err(_) => std::fs::rename(staged, target)?,
