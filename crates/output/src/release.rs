@@ -3,7 +3,8 @@
 //! Replacing a file leaves the old one under the staged name ([`crate::replace`]), and
 //! removing it is most of what a replacing run pays past its own work: at 1024³ the `unlink`
 //! of the old 1 GiB volume took 0.16-0.27 s (`strace -T`, twelve.csg, ext4 mounted with
-//! `discard`), of which about 0.1 s is its page cache and the rest its extents. The name
+//! `discard`), about a third of it the page cache (0.15-0.16 s remained when
+//! `posix_fadvise(DONTNEED)` had dropped that first) and the rest the extents. The name
 //! goes at once; the blocks go when the last descriptor of the file is closed. So the
 //! command line ([`release_after_exit`]) has a child hold one: the old file is opened,
 //! unlinked, and given to a child of the `csgpix` binary ([`hold_if_asked`]) as its standard
@@ -41,8 +42,8 @@ pub fn release_after_exit(program: PathBuf) {
 
 /// In a child started to hold a released file (the [`HOLD`] variable set): close every
 /// descriptor but the standard three, wait until standard input ends, then exit with status
-/// 0, closing the file on standard output.
-/// Otherwise return at once. Call first thing in `main`.
+/// 0, closing the file on standard output. Otherwise return at once. Call first thing in
+/// `main`.
 pub fn hold_if_asked() {
     if std::env::var_os(HOLD).is_none() {
         return;
