@@ -816,8 +816,9 @@ fn holders(dev: u64, ino: u64) -> Vec<String> {
 }
 
 /// A replaced output's old file leaves the directory before the run returns, and its blocks
-/// are freed after (crates/output/src/release.rs): no process holds it for long once the run
-/// has ended. The new file is whole, and nothing else is left beside it.
+/// are freed after (crates/output/src/release.rs; a file of 16 MiB, so that a child holds
+/// it): no process holds it for long once the run has ended. The new file is whole, and
+/// nothing else is left beside it.
 #[cfg(target_os = "linux")]
 #[test]
 fn a_replaced_outputs_old_file_is_gone_at_once_and_held_by_nothing_after_the_run() {
@@ -825,13 +826,16 @@ fn a_replaced_outputs_old_file_is_gone_at_once_and_held_by_nothing_after_the_run
     use std::time::{Duration, Instant};
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("v.nrrd");
+    let cube = dir.path().join("cube.csg");
+    std::fs::write(&cube, "cube([1, 1, 1]);\n").unwrap();
     let run = || {
-        let r = csgpix(&["voxelize", TWELVE, "--res", "64", "-o", s(&out)]);
+        let r = csgpix(&["voxelize", s(&cube), "--res", "256x256x256", "-o", s(&out)]);
         assert!(r.status.success(), "{r:?}");
     };
     run();
     let first = std::fs::read(&out).unwrap();
     let old = std::fs::metadata(&out).unwrap();
+    assert!(old.blocks() * 512 >= csgpix::output::WORTH_A_CHILD);
     run();
     let new = std::fs::metadata(&out).unwrap();
     assert_ne!(
@@ -840,7 +844,7 @@ fn a_replaced_outputs_old_file_is_gone_at_once_and_held_by_nothing_after_the_run
         "the output was replaced, not rewritten"
     );
     assert_eq!(std::fs::read(&out).unwrap(), first);
-    assert_eq!(names(dir.path()), ["v.nrrd"]);
+    assert_eq!(names(dir.path()), ["cube.csg", "v.nrrd"]);
     let start = Instant::now();
     loop {
         let held = holders(old.dev(), old.ino());

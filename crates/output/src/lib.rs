@@ -49,7 +49,7 @@ mod sparse;
 pub use ending::{finish, stdout_failed};
 pub use error::{Error, IoError, OneLine, Refusal, Result};
 pub use oom::{fallible, one_arena_under_address_limit, try_zeroed, AllocFailed, ExitOnOom};
-pub use release::{hold_if_asked, release_after_exit, HOLD};
+pub use release::{hold_if_asked, release_after_exit, HOLD, WORTH_A_CHILD};
 pub use replace::sync_outputs;
 pub use scratch::{child, scratch, Child, Scratch};
 pub use sparse::{Sparse, BLOCK};
