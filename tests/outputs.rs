@@ -796,8 +796,9 @@ fn a_volume_file_leaves_its_empty_slices_as_holes() {
     }
 }
 
-/// Every process's descriptor of the file with inode `ino` on device `dev`, as
-/// `/proc/PID/fd/N` (the processes this user may read).
+/// Every process's descriptor of the unlinked file with inode `ino` on device `dev`, as
+/// `/proc/PID/fd/N` (the processes this user may read). Unlinked only: once the file is
+/// freed, its inode number may name a new file of another test.
 #[cfg(target_os = "linux")]
 fn holders(dev: u64, ino: u64) -> Vec<String> {
     use std::os::unix::fs::MetadataExt;
@@ -807,7 +808,8 @@ fn holders(dev: u64, ino: u64) -> Vec<String> {
             continue;
         };
         for fd in fds.flatten() {
-            if std::fs::metadata(fd.path()).is_ok_and(|m| (m.dev(), m.ino()) == (dev, ino)) {
+            let held = |m: std::fs::Metadata| (m.dev(), m.ino(), m.nlink()) == (dev, ino, 0);
+            if std::fs::metadata(fd.path()).is_ok_and(held) {
                 found.push(fd.path().display().to_string());
             }
         }

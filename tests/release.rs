@@ -1,7 +1,7 @@
 //! The old file of a replaced output of 16 MiB or more is freed by a child after the run
-//! (crates/output `release`). A test binary of its own: it makes this process the reaper of the children its
-//! `csgpix` runs leave (`PR_SET_CHILD_SUBREAPER`) and waits for any child, which would take
-//! the exit statuses of other tests' runs in a shared binary.
+//! (crates/output `release`). A test binary of its own: it makes this process the reaper of
+//! the children its `csgpix` runs leave (`PR_SET_CHILD_SUBREAPER`) and waits for any child,
+//! which would take the exit statuses of other tests' runs in a shared binary.
 
 #![cfg(target_os = "linux")]
 

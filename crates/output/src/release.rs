@@ -28,10 +28,9 @@ use std::sync::{Mutex, OnceLock};
 /// The least space an old file takes (its allocated blocks) for a child to free it. A child
 /// costs its start, 1-2 ms of the run's time here (a replacing `--res 64` run, 256 KiB:
 /// 4.4 ms before, 6.2 ms with a child, least of 25 in alternation beside a build). Removing
-/// a file costs
-/// about 0.07 ms a MiB of page cache, and where its blocks are on the disk and the file
-/// system discards them, milliseconds more (an `unlink` after `sync`: 3.5-3.9 ms at 4 MiB,
-/// 4.5-8.3 ms at 16 MiB, 16-20 ms at 64 MiB on this disk).
+/// a file costs about 0.07 ms a MiB of page cache, and where its blocks are on the disk and
+/// the file system discards them, milliseconds more (an `unlink` after `sync`: 3.5-3.9 ms at
+/// 4 MiB, 4.5-8.3 ms at 16 MiB, 16-20 ms at 64 MiB on this disk).
 pub const WORTH_A_CHILD: u64 = 16 << 20;
 
 /// The environment variable that makes the `csgpix` binary the holder of a released file:
